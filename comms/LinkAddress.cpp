@@ -1,0 +1,61 @@
+#include "comms/LinkAddress.h"
+
+#include <charconv>
+
+namespace hsmu::comms {
+
+namespace {
+std::optional<LinkAddress> fail(std::string* error, const std::string& text, const char* why)
+{
+    if (error)
+        *error = "controller address '" + text + "': " + why +
+                 " (expected 'builtin' or 'tcp://HOST:PORT')";
+    return std::nullopt;
+}
+} // namespace
+
+std::optional<LinkAddress> LinkAddress::parse(const std::string& text, std::string* error)
+{
+    if (text.empty() || text == "builtin")
+        return LinkAddress{};
+    const std::string scheme = "tcp://";
+    if (text.rfind(scheme, 0) != 0)
+        return fail(error, text, "unknown scheme");
+    std::string rest = text.substr(scheme.size());
+    std::string host;
+    std::string portText;
+    if (!rest.empty() && rest.front() == '[') { // [IPv6]:port
+        const auto close = rest.find(']');
+        if (close == std::string::npos || close + 1 >= rest.size() || rest[close + 1] != ':')
+            return fail(error, text, "malformed IPv6 literal");
+        host = rest.substr(1, close - 1);
+        portText = rest.substr(close + 2);
+    } else {
+        const auto colon = rest.rfind(':');
+        if (colon == std::string::npos)
+            return fail(error, text, "missing port");
+        host = rest.substr(0, colon);
+        portText = rest.substr(colon + 1);
+    }
+    if (host.empty())
+        return fail(error, text, "missing host");
+    unsigned value = 0;
+    const auto [ptr, ec] = std::from_chars(portText.data(), portText.data() + portText.size(), value);
+    if (ec != std::errc() || ptr != portText.data() + portText.size() || value == 0 || value > 65535)
+        return fail(error, text, "port must be a number in 1..65535");
+    LinkAddress a;
+    a.kind = Kind::Tcp;
+    a.host = host;
+    a.port = static_cast<std::uint16_t>(value);
+    return a;
+}
+
+std::string LinkAddress::toString() const
+{
+    if (kind == Kind::Builtin)
+        return "builtin";
+    const bool v6 = host.find(':') != std::string::npos;
+    return "tcp://" + (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+}
+
+} // namespace hsmu::comms

@@ -1,0 +1,270 @@
+#include "core/config/ConfigLoader.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace hsmu {
+
+namespace {
+
+MaterialSpec parseMaterial(const JsonCursor& c)
+{
+    c.requireObject();
+    MaterialSpec m;
+    m.law = c.string("law");
+    for (auto it = c.node().begin(); it != c.node().end(); ++it) {
+        if (it.key() == "law")
+            continue;
+        m.params[it.key()] = c.number(it.key());
+    }
+    return m;
+}
+
+SafetyLimits parseLimits(const JsonCursor& c)
+{
+    c.allowOnly({"deformation", "force", "increment"});
+    SafetyLimits l;
+    l.maxDeformation = c.number("deformation", l.maxDeformation);
+    l.maxForce = c.number("force", l.maxForce);
+    l.maxIncrement = c.number("increment", l.maxIncrement);
+    for (const char* k : {"deformation", "force", "increment"})
+        if (c.has(k) && !(c.number(k) > 0.0))
+            c.fail(k, "expected a positive limit");
+    return l;
+}
+
+SpecimenSpec parseSpecimen(const JsonCursor& c)
+{
+    c.allowOnly({"material", "forceNoiseStd", "deformationNoiseStd", "seed", "actuator",
+                 "fracture", "interlock"});
+    SpecimenSpec s;
+    s.trueMaterial = parseMaterial(c.child("material"));
+    auto& o = s.options;
+    o.forceNoiseStd = c.number("forceNoiseStd", 0.0);
+    o.deformationNoiseStd = c.number("deformationNoiseStd", 0.0);
+    if (o.forceNoiseStd < 0.0)
+        c.fail("forceNoiseStd", "expected a standard deviation >= 0");
+    if (o.deformationNoiseStd < 0.0)
+        c.fail("deformationNoiseStd", "expected a standard deviation >= 0");
+    o.seed = static_cast<std::uint64_t>(c.integer("seed", 1));
+    if (c.has("actuator")) {
+        const JsonCursor a = c.child("actuator");
+        a.allowOnly({"type", "timeConstant", "delay"});
+        const std::string type = a.string("type", "ideal");
+        if (type == "ideal")
+            o.actuator.type = ActuatorModel::Type::Ideal;
+        else if (type == "lag") {
+            o.actuator.type = ActuatorModel::Type::Lag;
+            o.actuator.timeConstant = a.number("timeConstant");
+            if (!(o.actuator.timeConstant > 0.0))
+                a.fail("timeConstant", "expected a time constant > 0 s");
+        } else if (type == "delay") {
+            o.actuator.type = ActuatorModel::Type::Delay;
+            o.actuator.delay = a.number("delay");
+            if (o.actuator.delay < 0.0)
+                a.fail("delay", "expected a delay >= 0 s");
+        } else
+            a.fail("type", "expected 'ideal', 'lag' or 'delay', found '" + type + "'");
+    }
+    if (c.has("fracture")) {
+        const JsonCursor f = c.child("fracture");
+        f.allowOnly({"atCumulativeDeformation", "atTime", "strengthLoss"});
+        o.fracture.atCumulativeDeformation =
+            f.number("atCumulativeDeformation", o.fracture.atCumulativeDeformation);
+        o.fracture.atTime = f.number("atTime", o.fracture.atTime);
+        o.fracture.strengthLoss = f.number("strengthLoss", 0.5);
+        if (!o.fracture.enabled())
+            f.fail("", "expected atCumulativeDeformation or atTime");
+        if (o.fracture.strengthLoss < 0.0 || o.fracture.strengthLoss > 1.0)
+            f.fail("strengthLoss", "expected a fraction in [0, 1]");
+    }
+    if (c.has("interlock"))
+        o.interlock = parseLimits(c.child("interlock"));
+    return s;
+}
+
+int parseDof(const JsonCursor& c, const nlohmann::json& v, const std::vector<DofSpec>& dofs,
+             const std::string& key)
+{
+    if (v.is_number_integer()) {
+        const int i = v.get<int>();
+        if (i < 0 || i >= static_cast<int>(dofs.size()))
+            c.fail(key, "DOF index " + std::to_string(i) + " out of range 0.." +
+                            std::to_string(dofs.size() - 1));
+        return i;
+    }
+    if (v.is_string()) {
+        for (std::size_t i = 0; i < dofs.size(); ++i)
+            if (dofs[i].name == v.get<std::string>())
+                return static_cast<int>(i);
+        c.fail(key, "no DOF named '" + v.get<std::string>() + "'");
+    }
+    c.fail(key, "expected a DOF name or index");
+}
+
+ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
+{
+    c.allowOnly({"name", "type", "dof", "dofs", "height", "ei", "material", "experimental",
+                 "specimen", "limits"});
+    ElementSpec e;
+    e.name = c.string("name");
+    e.type = c.string("type");
+    if (e.type == "truss") {
+        const JsonCursor d = c.child("dofs");
+        if (d.size() != 2)
+            d.fail("", "expected two DOFs [from, to]");
+        e.dofs = {parseDof(c, d.node()[0], dofs, "dofs"), parseDof(c, d.node()[1], dofs, "dofs")};
+    } else if (e.type == "lateralSpring" || e.type == "rotationalBaseSpring") {
+        if (!c.has("dof"))
+            c.fail("dof", "missing (expected the DOF the element acts on)");
+        e.dofs = {parseDof(c, c.node().at("dof"), dofs, "dof")};
+    } else {
+        c.fail("type", "expected 'lateralSpring', 'rotationalBaseSpring' or 'truss', found '" +
+                           e.type + "'");
+    }
+    if (e.type == "rotationalBaseSpring") {
+        e.height = c.number("height");
+        if (!(e.height > 0.0))
+            c.fail("height", "expected a column height > 0 m");
+        if (c.has("ei")) {
+            e.ei = c.number("ei");
+            if (!(e.ei > 0.0))
+                c.fail("ei", "expected EI > 0 kN m^2 (omit it for a rigid column)");
+        }
+    }
+    e.material = parseMaterial(c.child("material"));
+    e.experimental = c.boolean("experimental", false);
+    if (e.experimental) {
+        if (e.type == "truss")
+            c.fail("experimental", "a truss cannot be a specimen here");
+        if (std::isfinite(e.ei))
+            c.fail("ei", "a specimen's column is part of the specimen: omit ei");
+        e.specimen = parseSpecimen(c.child("specimen"));
+        if (c.has("limits"))
+            e.limits = parseLimits(c.child("limits"));
+    } else if (c.has("specimen")) {
+        c.fail("specimen", "only allowed with \"experimental\": true");
+    }
+    return e;
+}
+
+} // namespace
+
+TestConfig parseConfig(const nlohmann::json& document, const std::string& sourceName)
+{
+    const JsonCursor root(document, sourceName);
+    root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis"});
+    TestConfig cfg;
+    cfg.sourcePath = sourceName;
+    cfg.raw = document;
+    cfg.name = root.string("name", "unnamed test");
+    cfg.description = root.string("description", "");
+
+    const JsonCursor s = root.child("structure");
+    s.allowOnly({"dofs", "equalDofs", "damping", "elements"});
+    const JsonCursor dofs = s.child("dofs");
+    if (dofs.size() == 0)
+        dofs.fail("", "expected at least one DOF");
+    for (std::size_t i = 0; i < dofs.size(); ++i) {
+        const JsonCursor d = dofs.at(i);
+        d.allowOnly({"name", "mass"});
+        DofSpec spec{d.string("name", "DOF " + std::to_string(i + 1)), d.number("mass")};
+        if (!(spec.mass > 0.0))
+            d.fail("mass", "expected a mass > 0 t");
+        cfg.dofs.push_back(spec);
+    }
+    if (s.has("equalDofs")) {
+        const JsonCursor eq = s.child("equalDofs");
+        for (std::size_t i = 0; i < eq.size(); ++i) {
+            const JsonCursor q = eq.at(i);
+            q.allowOnly({"master", "slave"});
+            if (!q.has("master") || !q.has("slave"))
+                q.fail("", "expected {\"master\": DOF, \"slave\": DOF}");
+            cfg.equalDofs.emplace_back(parseDof(q, q.node().at("master"), cfg.dofs, "master"),
+                                       parseDof(q, q.node().at("slave"), cfg.dofs, "slave"));
+        }
+    }
+    if (s.has("damping")) {
+        const JsonCursor d = s.child("damping");
+        d.allowOnly({"ratio", "modes", "a0", "a1"});
+        if (d.has("ratio")) {
+            cfg.damping.kind = DampingSpec::Kind::ModalRatio;
+            cfg.damping.ratio = d.number("ratio");
+            if (cfg.damping.ratio < 0.0 || cfg.damping.ratio >= 1.0)
+                d.fail("ratio", "expected a damping ratio in [0, 1)");
+            if (d.has("modes")) {
+                const JsonCursor m = d.child("modes");
+                if (m.size() != 2 || !m.node()[0].is_number_integer() ||
+                    !m.node()[1].is_number_integer() || m.node()[0].get<int>() < 1 ||
+                    m.node()[1].get<int>() < 1)
+                    m.fail("", "expected two mode numbers >= 1, e.g. [1, 2]");
+                cfg.damping.modeI = m.node()[0].get<int>();
+                cfg.damping.modeJ = m.node()[1].get<int>();
+            }
+        } else {
+            cfg.damping.kind = DampingSpec::Kind::Coefficients;
+            cfg.damping.a0 = d.number("a0", 0.0);
+            cfg.damping.a1 = d.number("a1", 0.0);
+        }
+    }
+    const JsonCursor elements = s.child("elements");
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        cfg.elements.push_back(parseElement(elements.at(i), cfg.dofs));
+        for (std::size_t j = 0; j + 1 < cfg.elements.size(); ++j)
+            if (cfg.elements[j].name == cfg.elements.back().name)
+                elements.at(i).fail("name", "duplicate element name '" +
+                                                cfg.elements.back().name + "'");
+    }
+
+    if (root.has("groundMotion")) {
+        const JsonCursor g = root.child("groundMotion");
+        g.allowOnly({"builtin", "file", "format", "units", "dt", "scale", "seed"});
+        auto& gm = cfg.groundMotion;
+        gm.builtin = g.string("builtin", gm.builtin);
+        gm.file = g.string("file", "");
+        gm.format = g.string("format", gm.format);
+        gm.units = g.string("units", "");
+        gm.dt = g.number("dt", 0.0);
+        gm.scale = g.number("scale", 1.0);
+        gm.seed = static_cast<unsigned>(g.integer("seed", static_cast<int>(gm.seed)));
+        if (gm.file.empty() && gm.builtin != "synthetic")
+            g.fail("builtin", "expected \"synthetic\" (the only built-in record)");
+        if (gm.format != "auto" && gm.format != "at2" && gm.format != "time-acc" &&
+            gm.format != "single")
+            g.fail("format", "expected auto, at2, time-acc or single");
+    }
+    if (root.has("analysis")) {
+        const JsonCursor a = root.child("analysis");
+        a.allowOnly({"integrator", "alpha", "dt", "duration", "allowUnstable"});
+        auto& an = cfg.analysis;
+        an.integrator = a.string("integrator", an.integrator);
+        if (an.integrator != "explicitNewmark" && an.integrator != "alphaOS")
+            a.fail("integrator", "expected 'explicitNewmark' or 'alphaOS'");
+        an.alpha = a.number("alpha", an.alpha);
+        if (an.alpha < -1.0 / 3.0 - 1e-12 || an.alpha > 0.0)
+            a.fail("alpha", "expected alpha in [-1/3, 0]");
+        an.dt = a.number("dt", an.dt);
+        if (!(an.dt > 0.0))
+            a.fail("dt", "expected a time step > 0 s");
+        an.duration = a.number("duration", 0.0);
+        an.allowUnstable = a.boolean("allowUnstable", false);
+    }
+    return cfg;
+}
+
+TestConfig loadConfigFile(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw ConfigError(path + ": cannot open the configuration file");
+    nlohmann::json doc;
+    try {
+        doc = nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw ConfigError(path + ": not valid JSON (" + std::string(e.what()) + ")");
+    }
+    return parseConfig(doc, path);
+}
+
+} // namespace hsmu

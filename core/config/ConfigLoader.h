@@ -1,0 +1,18 @@
+#pragma once
+// ConfigLoader: reads a test configuration (JSON, schema in docs/configuration.md) into a
+// TestConfig. Every error is a ConfigError naming the file, the field and what was expected.
+
+#include "core/config/JsonCursor.h"
+#include "core/config/TestConfig.h"
+
+#include <string>
+
+namespace hsmu {
+
+/// Read and parse a file. Throws ConfigError (unreadable file, JSON syntax with line/column,
+/// schema violations).
+TestConfig loadConfigFile(const std::string& path);
+/// Parse a document; sourceName is used in messages and to resolve relative paths.
+TestConfig parseConfig(const nlohmann::json& document, const std::string& sourceName);
+
+} // namespace hsmu

@@ -1,0 +1,86 @@
+#pragma once
+// TestConfig: a hybrid test as the configuration file describes it (docs/configuration.md),
+// parsed but not yet built. Plain data; ConfigLoader fills it, TestFactory builds from it.
+// Units: kN, m, s, t (tonne) throughout; rotations in rad, moments in kN m.
+
+#include "core/experimental/SafetyLimits.h"
+#include "core/experimental/VirtualSpecimen.h"
+
+#include <nlohmann/json.hpp>
+
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct MaterialSpec {
+    std::string law = "elastic";          ///< "boucWen", "bilinear", "elastic"
+    std::map<std::string, double> params; ///< law parameters by name
+};
+
+struct SpecimenSpec {
+    MaterialSpec trueMaterial;       ///< the virtual specimen's own law
+    VirtualSpecimenOptions options;  ///< noise, actuator, fracture, interlock
+};
+
+struct ElementSpec {
+    std::string name;
+    /// "lateralSpring" (dofs[0]), "truss" (dofs[0] -> dofs[1]),
+    /// "rotationalBaseSpring" (dofs[0], height, optional ei for an elastic column)
+    std::string type;
+    std::vector<int> dofs;                                      ///< full-DOF indices
+    double height = 0.0;                                        ///< column height [m]
+    double ei = std::numeric_limits<double>::infinity();        ///< column EI [kN m^2]; inf = rigid
+    MaterialSpec material;       ///< numerical model (for a specimen: its initial model)
+    bool experimental = false;
+    SpecimenSpec specimen;       ///< when experimental
+    SafetyLimits limits;         ///< when experimental
+};
+
+struct DofSpec {
+    std::string name;
+    double mass = 0.0; ///< [t]
+};
+
+struct DampingSpec {
+    enum class Kind { None, ModalRatio, Coefficients };
+    Kind kind = Kind::None;
+    double ratio = 0.0;     ///< for ModalRatio
+    int modeI = 1, modeJ = 2;
+    double a0 = 0.0, a1 = 0.0; ///< for Coefficients
+};
+
+struct GroundMotionSpec {
+    std::string builtin = "synthetic"; ///< used when file is empty
+    std::string file;                  ///< path (relative to the configuration's folder)
+    std::string format = "auto";       ///< auto, at2, time-acc, single
+    std::string units;                 ///< g, m/s^2, cm/s^2 ("" = from the file / g)
+    double dt = 0.0;                   ///< for single-column files [s]
+    double scale = 1.0;
+    unsigned seed = 1940;              ///< for the synthetic record
+};
+
+struct AnalysisSpec {
+    std::string integrator = "explicitNewmark"; ///< or "alphaOS"
+    double alpha = -0.05;                       ///< alphaOS only, [-1/3, 0]
+    double dt = 0.01;                           ///< [s]
+    double duration = 0.0;                      ///< [s]; <= 0 whole record
+    bool allowUnstable = false;
+};
+
+struct TestConfig {
+    std::string name;
+    std::string description;
+    std::string sourcePath; ///< file it was read from ("" if built in code)
+    std::vector<DofSpec> dofs;
+    std::vector<std::pair<int, int>> equalDofs; ///< (master, slave)
+    DampingSpec damping;
+    std::vector<ElementSpec> elements;
+    GroundMotionSpec groundMotion;
+    AnalysisSpec analysis;
+    nlohmann::json raw; ///< the document as read (for records and reports)
+};
+
+} // namespace hsmu

@@ -1,0 +1,129 @@
+#include "core/config/TestFactory.h"
+
+#include "core/config/JsonCursor.h"
+#include "core/experimental/ExperimentalElement.h"
+#include "core/groundmotion/GroundMotionReader.h"
+#include "core/groundmotion/SyntheticGroundMotion.h"
+#include "core/hysteresis/LawFactory.h"
+#include "core/integration/AlphaOS.h"
+#include "core/integration/ExplicitNewmark.h"
+#include "core/structure/FlexibleColumnSpring.h"
+#include "core/structure/SpringElement.h"
+#include "core/structure/Structure.h"
+#include "core/test/HybridTest.h"
+
+#include <cmath>
+#include <filesystem>
+
+namespace hsmu {
+
+std::unique_ptr<HysteresisLaw> buildLaw(const MaterialSpec& m, const std::string& where)
+{
+    try {
+        return makeLaw(m.law, m.params);
+    } catch (const std::exception& e) {
+        throw ConfigError(where + ": " + e.what());
+    }
+}
+
+std::unique_ptr<ExperimentalControl> buildVirtualSpecimen(const ElementSpec& spec)
+{
+    auto law = buildLaw(spec.specimen.trueMaterial, "element '" + spec.name + "' specimen");
+    return std::make_unique<VirtualSpecimen>(std::move(law), spec.specimen.options);
+}
+
+std::unique_ptr<Structure> buildStructure(const TestConfig& cfg, const ControlFactory& controls)
+{
+    auto s = std::make_unique<Structure>();
+    for (const auto& d : cfg.dofs)
+        s->addDof(d.name, d.mass);
+    for (const auto& [m, sl] : cfg.equalDofs)
+        s->addEqualDof(m, sl);
+    for (const auto& e : cfg.elements) {
+        const std::string where = cfg.sourcePath + ": element '" + e.name + "'";
+        auto law = buildLaw(e.material, where);
+        if (e.experimental) {
+            std::vector<DofTerm> terms{{e.dofs[0], 1.0}};
+            if (e.type == "rotationalBaseSpring")
+                terms[0].coefficient = 1.0 / e.height;
+            auto control = controls ? controls(e) : buildVirtualSpecimen(e);
+            if (!control)
+                throw ConfigError(where + ": no experimental control could be made");
+            s->addElement(std::make_unique<ExperimentalElement>(
+                e.name, e.type, terms, std::move(control), e.limits, law->initialTangent()));
+        } else if (e.type == "lateralSpring") {
+            s->addElement(SpringElement::lateral(e.name, e.dofs[0], std::move(law)));
+        } else if (e.type == "truss") {
+            s->addElement(SpringElement::truss(e.name, e.dofs[0], e.dofs[1], std::move(law)));
+        } else if (std::isfinite(e.ei)) {
+            s->addElement(std::make_unique<FlexibleColumnSpring>(e.name, e.dofs[0], e.height,
+                                                                 e.ei, std::move(law)));
+        } else {
+            s->addElement(SpringElement::rotationalRigid(e.name, e.dofs[0], e.height,
+                                                         std::move(law)));
+        }
+    }
+    switch (cfg.damping.kind) {
+    case DampingSpec::Kind::None: break;
+    case DampingSpec::Kind::ModalRatio:
+        s->setModalDamping(cfg.damping.ratio, cfg.damping.modeI, cfg.damping.modeJ);
+        break;
+    case DampingSpec::Kind::Coefficients:
+        s->setRayleigh({cfg.damping.a0, cfg.damping.a1});
+        break;
+    }
+    return s;
+}
+
+std::unique_ptr<Integrator> buildIntegrator(const AnalysisSpec& a)
+{
+    if (a.integrator == "alphaOS")
+        return std::make_unique<AlphaOS>(a.alpha);
+    return std::make_unique<ExplicitNewmark>();
+}
+
+GroundMotion buildGroundMotion(const GroundMotionSpec& g, const std::string& configPath)
+{
+    GroundMotion gm;
+    if (g.file.empty()) {
+        gm = makeSyntheticGroundMotion(g.seed);
+    } else {
+        std::filesystem::path p(g.file);
+        if (p.is_relative() && !configPath.empty() && !std::filesystem::exists(p))
+            p = std::filesystem::path(configPath).parent_path() / p;
+        GroundMotionFormat format = GroundMotionFormat::Auto;
+        if (g.format == "at2")
+            format = GroundMotionFormat::At2;
+        else if (g.format == "time-acc")
+            format = GroundMotionFormat::TimeAcceleration;
+        else if (g.format == "single")
+            format = GroundMotionFormat::SingleColumn;
+        std::optional<AccelerationUnit> unit;
+        if (!g.units.empty()) {
+            unit = parseAccelerationUnit(g.units);
+            if (!unit)
+                throw ConfigError(configPath + ": groundMotion.units: expected g, m/s^2 or cm/s^2, "
+                                               "found '" + g.units + "'");
+        }
+        std::optional<double> dt;
+        if (g.dt > 0.0)
+            dt = g.dt;
+        gm = readGroundMotion(p, format, unit, dt);
+    }
+    if (g.scale != 1.0)
+        gm = gm.scaled(g.scale);
+    return gm;
+}
+
+std::unique_ptr<HybridTest> buildHybridTest(const TestConfig& cfg, const ControlFactory& controls)
+{
+    HybridTestOptions o;
+    o.dt = cfg.analysis.dt;
+    o.duration = cfg.analysis.duration;
+    o.allowUnstable = cfg.analysis.allowUnstable;
+    return std::make_unique<HybridTest>(buildStructure(cfg, controls),
+                                        buildIntegrator(cfg.analysis),
+                                        buildGroundMotion(cfg.groundMotion, cfg.sourcePath), o);
+}
+
+} // namespace hsmu

@@ -1,0 +1,127 @@
+#include "core/experimental/VirtualSpecimen.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace hsmu {
+
+VirtualSpecimen::VirtualSpecimen(std::unique_ptr<HysteresisLaw> trueLaw,
+                                 const VirtualSpecimenOptions& options)
+    : m_law(std::move(trueLaw)), m_opt(options), m_random(options.seed)
+{
+}
+
+std::string VirtualSpecimen::description() const
+{
+    char buf[200];
+    const char* act = m_opt.actuator.type == ActuatorModel::Type::Lag     ? "lag"
+                      : m_opt.actuator.type == ActuatorModel::Type::Delay ? "delay"
+                                                                          : "ideal";
+    std::snprintf(buf, sizeof buf, "virtual specimen (%s law, force noise std %.3g, %s actuator%s)",
+                  m_law->lawName().c_str(), m_opt.forceNoiseStd, act,
+                  m_opt.fracture.enabled() ? ", fracture event" : "");
+    return buf;
+}
+
+ControlResult VirtualSpecimen::prepare(double dt)
+{
+    if (!(dt > 0.0))
+        return ControlResult::fault("virtual specimen: dt must be > 0");
+    m_dt = dt;
+    m_delayLine.clear();
+    if (m_opt.actuator.type == ActuatorModel::Type::Delay) {
+        const auto steps = static_cast<std::size_t>(std::lround(m_opt.actuator.delay / dt));
+        m_delayLine.assign(steps, m_committedAchieved);
+    }
+    return ControlResult::success();
+}
+
+void VirtualSpecimen::hold(const std::string& reason)
+{
+    m_holding = true;
+    m_holdReason = reason;
+    m_law->revert();
+    m_achieved = m_committedAchieved;
+}
+
+void VirtualSpecimen::resume()
+{
+    m_holding = false;
+    m_holdReason.clear();
+}
+
+double VirtualSpecimen::actuatorResponse(double target)
+{
+    switch (m_opt.actuator.type) {
+    case ActuatorModel::Type::Lag: {
+        if (!(m_opt.actuator.timeConstant > 0.0))
+            return target;
+        const double k = 1.0 - std::exp(-m_dt / m_opt.actuator.timeConstant);
+        return m_committedAchieved + (target - m_committedAchieved) * k;
+    }
+    case ActuatorModel::Type::Delay:
+        return m_delayLine.empty() ? target : m_delayLine.front();
+    case ActuatorModel::Type::Ideal:
+        break;
+    }
+    return target;
+}
+
+ControlResult VirtualSpecimen::setTarget(double d)
+{
+    if (m_holding)
+        return ControlResult::fault("virtual specimen is holding: " + m_holdReason);
+    if (auto why = m_opt.interlock.violationOfTarget(d, m_lastTarget)) {
+        hold("interlock: " + *why);
+        return ControlResult::fault(m_holdReason);
+    }
+    m_lastTarget = d;
+    m_achieved = actuatorResponse(d);
+    if (m_law->setTrialDeformation(m_achieved) != LawStatus::Ok) {
+        hold("specimen law did not converge at deformation " + std::to_string(m_achieved));
+        return ControlResult::fault(m_holdReason);
+    }
+    const double cumulative = m_cumulative + std::abs(m_achieved - m_committedAchieved);
+    m_trialFractured = m_fractured || cumulative >= m_opt.fracture.atCumulativeDeformation ||
+                       m_time + m_dt >= m_opt.fracture.atTime;
+    return ControlResult::success();
+}
+
+ControlResult VirtualSpecimen::measure(ControlMeasurement& out)
+{
+    if (m_holding)
+        return ControlResult::fault("virtual specimen is holding: " + m_holdReason);
+    const double factor = m_trialFractured ? 1.0 - m_opt.fracture.strengthLoss : 1.0;
+    out.deformation = m_achieved;
+    out.force = m_law->trialForce() * factor;
+    if (m_opt.deformationNoiseStd > 0.0)
+        out.deformation += m_opt.deformationNoiseStd * m_random.normal();
+    if (m_opt.forceNoiseStd > 0.0)
+        out.force += m_opt.forceNoiseStd * m_random.normal();
+    if (auto why = m_opt.interlock.violationOfForce(out.force)) {
+        hold("interlock: " + *why);
+        return ControlResult::fault(m_holdReason);
+    }
+    return ControlResult::success();
+}
+
+ControlResult VirtualSpecimen::commit()
+{
+    if (m_holding)
+        return ControlResult::fault("virtual specimen is holding: " + m_holdReason);
+    m_law->commit();
+    m_cumulative += std::abs(m_achieved - m_committedAchieved);
+    m_committedAchieved = m_achieved;
+    m_time += m_dt;
+    if (m_trialFractured && !m_fractured) {
+        m_fractured = true;
+        m_fractureTime = m_time;
+    }
+    if (m_opt.actuator.type == ActuatorModel::Type::Delay && !m_delayLine.empty()) {
+        m_delayLine.pop_front();
+        m_delayLine.push_back(m_lastTarget);
+    }
+    return ControlResult::success();
+}
+
+} // namespace hsmu

@@ -1,0 +1,103 @@
+#pragma once
+// Bouc-Wen hysteresis with Baber-Noori degradation (METHOD.md section 4, paper Eqs 1-6),
+// in the convention of OpenSees `uniaxialMaterial BoucWen`:
+//
+//   F     = alpha k0 x + (1 - alpha) k0 z                                   (Eq. 1)
+//   dz/dx = [ A - |z|^n (beta sgn(dx z) + gamma) nu ] / eta                 (Eq. 2)
+//   de/dx = (1 - alpha) k0 z                                                (Eq. 3)
+//   A = A0 - deltaA e,  nu = 1 + deltaNu e,  eta = 1 + deltaEta e           (Eqs 4-6)
+//
+// The law runs on normalized variables x = u / uRef and f = F / fRef; k0 is then the
+// normalized stiffness and the physical initial stiffness is k0 fRef / uRef. With the default
+// uRef = fRef = 1 the law is in the caller's units (k0 in force per deformation).
+//
+// Integration over an increment dx from the committed (z, e): backward Euler in z (and e)
+// solved by Newton from the committed z; when Newton fails or the increment is large the
+// increment is split into sub-steps (recursively, up to maxSubdivisions halvings). Failure is
+// reported as LawStatus::NoConvergence and leaves the committed state untouched.
+
+#include "core/hysteresis/HysteresisLaw.h"
+
+namespace hsmu {
+
+struct BoucWenParameters {
+    double k0 = 1.0;       ///< initial stiffness (normalized when uRef/fRef are set)
+    double alpha = 0.02;   ///< post-yield to initial stiffness ratio [-]
+    double n = 2.0;        ///< smoothness of the transition, >= 1 recommended [-]
+    double beta = 3.0;     ///< loop shape [-]
+    double gamma = 1.0;    ///< loop shape [-]
+    double A0 = 1.0;       ///< initial value of A [-]
+    double deltaA = 0.0;   ///< degradation of A with e
+    double deltaNu = 0.0;  ///< strength degradation with e
+    double deltaEta = 0.0; ///< stiffness degradation with e
+    double uRef = 1.0;     ///< deformation reference scale (physical units), > 0
+    double fRef = 1.0;     ///< force reference scale (physical units), > 0
+};
+
+/// The law's internal state (normalized units).
+struct BoucWenState {
+    double z = 0.0; ///< hysteretic variable (normalized deformation units)
+    double e = 0.0; ///< dissipated-energy measure (normalized)
+};
+
+/// Result of integrating z, e over one normalized increment.
+struct BoucWenIncrement {
+    LawStatus status = LawStatus::Ok;
+    BoucWenState state; ///< state at the end of the increment
+    double dzdx = 0.0;  ///< continuous dz/dx at the end state (for the tangent)
+    int subSteps = 1;   ///< how many sub-steps were used
+};
+
+class BoucWen final : public HysteresisLaw {
+public:
+    explicit BoucWen(const BoucWenParameters& p = {});
+
+    /// Integrate the evolution equations over the normalized increment dx from `from`
+    /// (pure function: no object state; also used by the UKF's sigma points).
+    static BoucWenIncrement integrate(const BoucWenParameters& p, const BoucWenState& from,
+                                      double dx, int maxSubdivisions = 12);
+    /// Ultimate |z| of the non-degraded law: (A0 / (nu (beta + gamma)))^(1/n) with nu = 1.
+    static double ultimateZ(const BoucWenParameters& p);
+
+    const BoucWenParameters& parameters() const { return m_p; }
+    /// Replace all parameters; the committed (z, e) is kept. False if inadmissible.
+    bool setParameters(const BoucWenParameters& p);
+    static bool admissible(const BoucWenParameters& p);
+
+    BoucWenState committedState() const { return m_committed; }
+    BoucWenState trialState() const { return m_trial; }
+    /// Set the committed (and trial) state, e.g. to continue a saved specimen.
+    void setCommittedState(const BoucWenState& s, double committedDeformation);
+
+    // HysteresisLaw
+    std::string lawName() const override { return "boucWen"; }
+    LawStatus setTrialDeformation(double u) override;
+    double trialDeformation() const override { return m_uTrial; }
+    double trialForce() const override { return m_fTrial; }
+    double trialTangent() const override { return m_kTrial; }
+    double committedDeformation() const override { return m_uCommitted; }
+    double committedForce() const override { return m_fCommitted; }
+    double initialTangent() const override;
+    void commit() override;
+    void revert() override;
+    void revertToStart() override;
+    std::unique_ptr<HysteresisLaw> clone() const override;
+    std::vector<std::string> parameterNames() const override;
+    std::optional<double> parameter(const std::string& name) const override;
+    bool setParameter(const std::string& name, double value) override;
+
+private:
+    double forceOf(double x, const BoucWenState& s) const; // physical force
+    /// Physical tangent at state s when moving in direction dir (+1 or -1).
+    double tangentOf(const BoucWenState& s, double dir) const;
+    BoucWenParameters m_p;
+    BoucWenState m_committed, m_trial;
+    double m_uCommitted = 0.0, m_uTrial = 0.0;
+    double m_fCommitted = 0.0, m_fTrial = 0.0;
+    double m_kCommitted = 0.0, m_kTrial = 0.0;
+    /// Direction (+1 / -1) of the last non-zero increment; used for the tangent when the
+    /// trial increment is zero (sgn(dx z) in Eq. 2 is otherwise undefined).
+    double m_dirCommitted = 1.0, m_dirTrial = 1.0;
+};
+
+} // namespace hsmu

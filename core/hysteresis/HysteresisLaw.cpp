@@ -1,0 +1,17 @@
+#include "core/hysteresis/HysteresisLaw.h"
+
+namespace hsmu {
+
+const char* toString(LawStatus status) {
+    switch (status) {
+    case LawStatus::Ok:
+        return "ok";
+    case LawStatus::NoConvergence:
+        return "no convergence";
+    case LawStatus::InvalidInput:
+        return "invalid input";
+    }
+    return "unknown status";
+}
+
+} // namespace hsmu

@@ -1,0 +1,65 @@
+#pragma once
+// HysteresisLaw: a uniaxial force-deformation law with trial / commit / revert state.
+//
+// Units are the caller's: a rotational spring uses rad and kN m, a lateral spring m and kN.
+// The contract (same as an OpenSees UniaxialMaterial):
+//   setTrialDeformation(u) evaluates the law for total deformation u starting from the
+//   *committed* state; it may be called any number of times before commit() and never
+//   changes the committed state. commit() accepts the last trial, revert() drops it,
+//   revertToStart() returns to the virgin state.
+// Thread rules: none; an instance is used by one thread at a time.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+/// Outcome of a trial evaluation. Anything but Ok leaves the law at its committed state.
+enum class LawStatus {
+    Ok,
+    NoConvergence, ///< the local solver did not converge even after sub-stepping
+    InvalidInput   ///< deformation is not finite
+};
+
+/// Words for a status (for messages; the GUI translates its own).
+const char* toString(LawStatus status);
+
+class HysteresisLaw {
+public:
+    virtual ~HysteresisLaw() = default;
+
+    /// Short law identifier as used in configurations: "boucWen", "bilinear", "elastic".
+    virtual std::string lawName() const = 0;
+
+    /// Evaluate at total deformation u from the committed state.
+    virtual LawStatus setTrialDeformation(double u) = 0;
+    virtual double trialDeformation() const = 0;
+    virtual double trialForce() const = 0;
+    /// Tangent dF/du at the trial state (force units per deformation unit).
+    virtual double trialTangent() const = 0;
+
+    virtual double committedDeformation() const = 0;
+    virtual double committedForce() const = 0;
+
+    /// Tangent of the virgin law at zero deformation.
+    virtual double initialTangent() const = 0;
+
+    virtual void commit() = 0;
+    virtual void revert() = 0;
+    virtual void revertToStart() = 0;
+
+    /// Deep copy including the current committed and trial state.
+    virtual std::unique_ptr<HysteresisLaw> clone() const = 0;
+
+    /// Parameter access by name (the names used in configurations).
+    virtual std::vector<std::string> parameterNames() const = 0;
+    virtual std::optional<double> parameter(const std::string& name) const = 0;
+    /// Set a parameter; false if the name is unknown or the value is not admissible.
+    /// The committed state (e.g. z, e of Bouc-Wen) is kept, so the force stays continuous
+    /// apart from what the new parameters imply.
+    virtual bool setParameter(const std::string& name, double value) = 0;
+};
+
+} // namespace hsmu

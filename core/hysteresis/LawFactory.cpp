@@ -1,0 +1,132 @@
+#include "core/hysteresis/LawFactory.h"
+
+#include "core/hysteresis/Bilinear.h"
+#include "core/hysteresis/BoucWen.h"
+#include "core/hysteresis/LinearElastic.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace hsmu {
+
+namespace {
+
+// One named parameter of a law's parameter struct P, with its single-value admissibility.
+template <typename P> struct ParameterSpec {
+    const char* name;
+    double P::*field;
+    bool (*ok)(double);
+    const char* expected;
+};
+
+bool anyFinite(double v) {
+    return std::isfinite(v);
+}
+bool positive(double v) {
+    return std::isfinite(v) && v > 0.0;
+}
+bool nonNegative(double v) {
+    return std::isfinite(v) && v >= 0.0;
+}
+bool unitInterval(double v) {
+    return std::isfinite(v) && v >= 0.0 && v <= 1.0;
+}
+bool belowOne(double v) {
+    return std::isfinite(v) && v >= 0.0 && v < 1.0;
+}
+
+const ParameterSpec<BoucWenParameters> kBoucWenSpecs[] = {
+    {"k0", &BoucWenParameters::k0, positive, "a finite number > 0"},
+    {"alpha", &BoucWenParameters::alpha, unitInterval, "a number in [0, 1]"},
+    {"n", &BoucWenParameters::n, positive, "a finite number > 0"},
+    {"beta", &BoucWenParameters::beta, anyFinite, "a finite number"},
+    {"gamma", &BoucWenParameters::gamma, anyFinite, "a finite number"},
+    {"A0", &BoucWenParameters::A0, positive, "a finite number > 0"},
+    {"deltaA", &BoucWenParameters::deltaA, nonNegative, "a finite number >= 0"},
+    {"deltaNu", &BoucWenParameters::deltaNu, nonNegative, "a finite number >= 0"},
+    {"deltaEta", &BoucWenParameters::deltaEta, nonNegative, "a finite number >= 0"},
+    {"uRef", &BoucWenParameters::uRef, positive, "a finite number > 0"},
+    {"fRef", &BoucWenParameters::fRef, positive, "a finite number > 0"},
+};
+
+const ParameterSpec<BilinearParameters> kBilinearSpecs[] = {
+    {"k0", &BilinearParameters::k0, positive, "a finite number > 0"},
+    {"fy", &BilinearParameters::fy, positive, "a finite number > 0"},
+    {"b", &BilinearParameters::b, belowOne, "a number with 0 <= b < 1"},
+};
+
+struct ElasticParameters {
+    double k = 1.0;
+};
+const ParameterSpec<ElasticParameters> kElasticSpecs[] = {
+    {"k", &ElasticParameters::k, positive, "a finite number > 0"},
+};
+
+std::string formatValue(double v) {
+    char buffer[40];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+}
+
+template <typename P, std::size_t N>
+P fillParameters(const std::string& law, const ParameterSpec<P> (&specs)[N],
+                 const std::map<std::string, double>& params) {
+    P p{};
+    for (const auto& [name, value] : params) {
+        const auto* spec = std::find_if(std::begin(specs), std::end(specs),
+                                        [&](const auto& s) { return name == s.name; });
+        if (spec == std::end(specs)) {
+            std::string list;
+            for (const auto& s : specs) {
+                list += list.empty() ? s.name : std::string(", ") + s.name;
+            }
+            throw std::invalid_argument(law + ": unknown parameter '" + name +
+                                        "' (expected one of " + list + ")");
+        }
+        if (!spec->ok(value)) {
+            throw std::invalid_argument(law + ": parameter '" + name + "' = " + formatValue(value) +
+                                        " is not admissible (expected " + spec->expected + ")");
+        }
+        p.*(spec->field) = value;
+    }
+    return p;
+}
+
+std::string lowerCase(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+} // namespace
+
+std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
+                                       const std::map<std::string, double>& params) {
+    const std::string key = lowerCase(lawName);
+    if (key == "boucwen" || key == "bouc-wen") {
+        const auto p = fillParameters("boucWen", kBoucWenSpecs, params);
+        if (!(p.beta + p.gamma > 0.0)) {
+            throw std::invalid_argument(
+                "boucWen: parameters 'beta' + 'gamma' = " + formatValue(p.beta + p.gamma) +
+                " is not admissible (expected beta + gamma > 0 for a bounded z)");
+        }
+        return std::make_unique<BoucWen>(p);
+    }
+    if (key == "bilinear") {
+        return std::make_unique<Bilinear>(fillParameters("bilinear", kBilinearSpecs, params));
+    }
+    if (key == "elastic") {
+        return std::make_unique<LinearElastic>(fillParameters("elastic", kElasticSpecs, params).k);
+    }
+    throw std::invalid_argument("unknown hysteresis law '" + lawName +
+                                "' (expected one of boucWen, bouc-wen, bilinear, elastic)");
+}
+
+std::vector<std::string> knownLaws() {
+    return {"boucWen", "bilinear", "elastic"};
+}
+
+} // namespace hsmu

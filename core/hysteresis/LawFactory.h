@@ -1,0 +1,31 @@
+#pragma once
+// LawFactory: builds a HysteresisLaw from a law name and named parameters, as given in a
+// configuration file or on the `hsmu material` command line.
+//
+// Law names (case-insensitive): "boucWen" (also "bouc-wen"), "bilinear", "elastic".
+// Parameter names are those of each law's parameterNames():
+//   boucWen   k0, alpha, n, beta, gamma, A0, deltaA, deltaNu, deltaEta, uRef, fRef
+//             (defaults of BoucWenParameters; see BoucWen.h for the equations)
+//   bilinear  k0, fy, b   (defaults of BilinearParameters: 1, 1, 0.1)
+//   elastic   k           (default 1)
+// Unspecified parameters take the defaults.
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+class HysteresisLaw;
+
+/// Throws std::invalid_argument, with a sentence naming the law, the parameter and what was
+/// expected, for an unknown law name, an unknown parameter name or an inadmissible value, e.g.
+/// "bilinear: unknown parameter 'fyy' (expected one of k0, fy, b)".
+std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
+                                       const std::map<std::string, double>& params);
+
+/// The canonical law names: "boucWen", "bilinear", "elastic".
+std::vector<std::string> knownLaws();
+
+} // namespace hsmu

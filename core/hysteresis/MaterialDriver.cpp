@@ -1,0 +1,189 @@
+#include "core/hysteresis/MaterialDriver.h"
+
+#include "core/hysteresis/HysteresisLaw.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <istream>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string_view>
+
+namespace hsmu {
+
+namespace {
+
+bool isBlank(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && isBlank(s.front())) {
+        s.remove_prefix(1);
+    }
+    while (!s.empty() && isBlank(s.back())) {
+        s.remove_suffix(1);
+    }
+    return s;
+}
+
+// Splits on commas when the line has any, otherwise on runs of blanks.
+std::vector<std::string_view> splitFields(std::string_view line) {
+    std::vector<std::string_view> fields;
+    if (line.find(',') != std::string_view::npos) {
+        std::size_t start = 0;
+        while (true) {
+            const std::size_t comma = line.find(',', start);
+            fields.push_back(trim(line.substr(start, comma - start)));
+            if (comma == std::string_view::npos) {
+                break;
+            }
+            start = comma + 1;
+        }
+        return fields;
+    }
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && isBlank(line[i])) {
+            ++i;
+        }
+        const std::size_t start = i;
+        while (i < line.size() && !isBlank(line[i])) {
+            ++i;
+        }
+        if (i > start) {
+            fields.push_back(line.substr(start, i - start));
+        }
+    }
+    return fields;
+}
+
+// Locale-independent parse of a whole field as a finite double.
+std::optional<double> parseNumber(std::string_view field) {
+    if (!field.empty() && field.front() == '+') {
+        field.remove_prefix(1);
+    }
+    if (field.empty()) {
+        return std::nullopt;
+    }
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+    if (error != std::errc{} || end != field.data() + field.size() || !std::isfinite(value)) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+// %.17g without the C locale's decimal separator (the GUI process sets LC_NUMERIC).
+std::string formatExact(double v) {
+    char buffer[40];
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, 17);
+    return std::string(buffer, result.ptr);
+}
+
+[[noreturn]] void fail(const std::string& source, std::size_t lineNumber, const std::string& what) {
+    throw std::runtime_error(source + ", line " + std::to_string(lineNumber) + ": " + what);
+}
+
+} // namespace
+
+std::vector<double> parseDeformationHistory(std::istream& in, const std::string& sourceName) {
+    std::vector<double> deformations;
+    std::size_t columns = 0;
+    std::size_t lineNumber = 0;
+    std::string raw;
+    while (std::getline(in, raw)) {
+        ++lineNumber;
+        std::string_view line = raw;
+        if (lineNumber == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") {
+            line.remove_prefix(3);
+        }
+        line = trim(line);
+        if (line.empty() || line.front() == '#') {
+            continue;
+        }
+        const auto fields = splitFields(line);
+        if (columns == 0 && !parseNumber(fields.front())) {
+            continue; // header line
+        }
+        if (columns == 0) {
+            columns = fields.size();
+            if (columns > 2) {
+                fail(sourceName, lineNumber,
+                     "expected 1 column (deformation) or 2 columns (time, deformation), found " +
+                         std::to_string(columns));
+            }
+        }
+        if (fields.size() != columns) {
+            fail(sourceName, lineNumber,
+                 "expected " + std::to_string(columns) +
+                     " column(s) like the first data line, found " + std::to_string(fields.size()));
+        }
+        for (const auto field : fields) {
+            if (!parseNumber(field)) {
+                std::string what = "'";
+                what.append(field);
+                what.append("' is not a finite number");
+                fail(sourceName, lineNumber, what);
+            }
+        }
+        deformations.push_back(*parseNumber(fields.back()));
+    }
+    if (in.bad()) {
+        throw std::runtime_error(sourceName + ": read error after line " +
+                                 std::to_string(lineNumber));
+    }
+    if (deformations.empty()) {
+        throw std::runtime_error(sourceName + ": no deformation data found");
+    }
+    return deformations;
+}
+
+std::vector<double> readDeformationHistory(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) {
+        throw std::runtime_error(path + ": cannot open the deformation history file");
+    }
+    return parseDeformationHistory(in, path);
+}
+
+std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations) {
+    std::vector<MaterialSample> samples;
+    samples.reserve(deformations.size());
+    for (std::size_t i = 0; i < deformations.size(); ++i) {
+        const LawStatus status = law.setTrialDeformation(deformations[i]);
+        if (status != LawStatus::Ok) {
+            throw std::runtime_error(law.lawName() + ": " + toString(status) + " at point " +
+                                     std::to_string(i) + " (deformation " +
+                                     formatExact(deformations[i]) + ")");
+        }
+        samples.push_back({deformations[i], law.trialForce(), law.trialTangent()});
+        law.commit();
+    }
+    return samples;
+}
+
+void writeMaterialCsv(std::ostream& out, const std::vector<MaterialSample>& samples) {
+    out << "deformation,force,tangent\n";
+    for (const MaterialSample& s : samples) {
+        out << formatExact(s.deformation) << ',' << formatExact(s.force) << ','
+            << formatExact(s.tangent) << '\n';
+    }
+}
+
+void writeMaterialCsv(const std::string& path, const std::vector<MaterialSample>& samples) {
+    std::ofstream out(path);
+    if (!out) {
+        throw std::runtime_error(path + ": cannot open for writing");
+    }
+    writeMaterialCsv(out, samples);
+    out.flush();
+    if (!out) {
+        throw std::runtime_error(path + ": write failed");
+    }
+}
+
+} // namespace hsmu

@@ -1,0 +1,48 @@
+#pragma once
+// MaterialDriver: the core of the `hsmu material` command (like OpenSees' uniaxial material
+// tester): read a deformation history, drive a HysteresisLaw through it point by point
+// (trial + commit), write deformation, force and tangent as CSV.
+// Units are the law's: deformations in the law's deformation unit, forces in its force unit.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+class HysteresisLaw;
+
+/// One evaluated point of a history.
+struct MaterialSample {
+    double deformation = 0.0; ///< imposed total deformation
+    double force = 0.0;       ///< force after the point was committed
+    double tangent = 0.0;     ///< tangent dF/du at that point
+};
+
+/// Reads a deformation history from a text/CSV file.
+/// Format: one column (deformation) or two columns (time, deformation), fields separated by a
+/// comma (surrounding blanks allowed) or by spaces/tabs; every data line must have the same
+/// number of columns as the first one. Blank lines and lines whose first non-blank character
+/// is '#' are skipped anywhere; before the first data line, lines whose first field is not a
+/// number are header lines and are skipped. Values must be finite. CRLF endings are accepted.
+/// Throws std::runtime_error naming the file and the 1-based line number for malformed
+/// content, and naming the file if it cannot be opened or holds no data.
+std::vector<double> readDeformationHistory(const std::string& path);
+
+/// Same as readDeformationHistory for an already open stream; sourceName is used in messages.
+std::vector<double> parseDeformationHistory(std::istream& in, const std::string& sourceName);
+
+/// Drives `law` from its current committed state through `deformations`: for each point,
+/// setTrialDeformation then commit, and records the trial force and tangent.
+/// Throws std::runtime_error naming the 0-based point index (and the deformation) if the law
+/// does not return LawStatus::Ok; the law is then left committed at the previous point.
+std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations);
+
+/// Writes the header "deformation,force,tangent" and one line per sample, every value with
+/// 17 significant digits like "%.17g" (round-trips exactly), always with a '.' decimal point
+/// whatever the C locale.
+void writeMaterialCsv(std::ostream& out, const std::vector<MaterialSample>& samples);
+/// Same, to a file; throws std::runtime_error naming the file if it cannot be written.
+void writeMaterialCsv(const std::string& path, const std::vector<MaterialSample>& samples);
+
+} // namespace hsmu

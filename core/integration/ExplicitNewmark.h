@@ -1,0 +1,31 @@
+#pragma once
+// Explicit Newmark (beta = 0, gamma = 1/2), the paper's scheme (METHOD.md section 1):
+//
+//   u[n+1] = u[n] + dt v[n] + dt^2/2 a[n]                              (predict; to specimen)
+//   (M + gamma dt C) a[n+1] = F[n+1] - R[n+1] - C (v[n] + (1-gamma) dt a[n])
+//   v[n+1] = v[n] + dt ((1-gamma) a[n] + gamma a[n+1])
+//
+// Conditionally stable: omega_max dt <= 2 (undamped); second-order accurate.
+
+#include "core/integration/Integrator.h"
+
+#include <Eigen/Cholesky>
+
+namespace hsmu {
+
+class ExplicitNewmark final : public Integrator {
+public:
+    std::string name() const override { return "explicitNewmark"; }
+    bool isExplicit() const override { return true; }
+    double stabilityLimit() const override { return 2.0; }
+    void initialize(const Structure& s, double dt, const Eigen::VectorXd& u0,
+                    const Eigen::VectorXd& v0, double ag0, const Eigen::VectorXd& r0) override;
+    Eigen::VectorXd predict() const override;
+    bool correct(const Eigen::VectorXd& rTrial, double agNext) override;
+
+private:
+    static constexpr double kGamma = 0.5;
+    Eigen::LDLT<Eigen::MatrixXd> m_lhs; // M + gamma dt C, factored once
+};
+
+} // namespace hsmu

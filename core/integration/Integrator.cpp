@@ -1,0 +1,20 @@
+#include "core/integration/Integrator.h"
+
+#include "core/structure/Structure.h"
+
+#include <Eigen/Cholesky>
+
+namespace hsmu {
+
+void Integrator::initialize(const Structure& s, double dt, const Eigen::VectorXd& u0,
+                            const Eigen::VectorXd& v0, double ag0, const Eigen::VectorXd& r0)
+{
+    m_s = &s;
+    m_dt = dt;
+    m_u = u0;
+    m_v = v0;
+    const Eigen::VectorXd f = -s.influence() * ag0 - s.damping() * v0 - r0;
+    m_a = s.mass().ldlt().solve(f);
+}
+
+} // namespace hsmu

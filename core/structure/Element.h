@@ -1,0 +1,77 @@
+#pragma once
+// Element: one member of the structural model, numerical or experimental.
+//
+// An element sees the structure through DofTerms: its generalized deformation is
+// q = sum_k c_k u[dof_k] (full-DOF indices), and a generalized force P puts c_k P on DOF k.
+// Examples: lateral spring q = u_i (c = 1); rotational base spring under a rigid column of
+// height L, q = theta = u_i / L (c = 1/L, P = moment); truss q = u_j - u_i.
+//
+// Trial / commit / revert like a hysteresis law: setTrial() never changes committed state.
+
+#include "core/hysteresis/HysteresisLaw.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct DofTerm {
+    int dof = 0;              ///< full-DOF index
+    double coefficient = 1.0; ///< dq/du_dof
+};
+
+/// Outcome of an element evaluation; message says why when !ok.
+struct ElementStatus {
+    bool ok = true;
+    std::string message;
+    static ElementStatus success() { return {}; }
+    static ElementStatus failure(std::string why) { return {false, std::move(why)}; }
+};
+
+class Element {
+public:
+    explicit Element(std::string name, std::vector<DofTerm> terms);
+    virtual ~Element() = default;
+    Element(const Element&) = delete;
+    Element& operator=(const Element&) = delete;
+
+    const std::string& name() const { return m_name; }
+    const std::vector<DofTerm>& terms() const { return m_terms; }
+    /// Configuration type name, e.g. "lateralSpring".
+    virtual std::string typeName() const = 0;
+    virtual bool isExperimental() const { return false; }
+
+    /// Generalized deformation q = sum c_k u[dof_k] for full-DOF displacements u.
+    double kinematicDeformation(const Eigen::VectorXd& uFull) const;
+
+    /// Evaluate at full-DOF displacements u from the committed state.
+    virtual ElementStatus setTrial(const Eigen::VectorXd& uFull) = 0;
+    /// Deformation of the element's own law (rotation, displacement) at the trial state.
+    virtual double deformation() const = 0;
+    /// Force of the element's own law (moment, force) at the trial state.
+    virtual double force() const = 0;
+    /// Generalized force P conjugate to q (equals force() unless the element is compound).
+    virtual double generalizedForce() const { return force(); }
+    /// Tangent dP/dq of the virgin element (for the initial stiffness matrix).
+    virtual double initialGeneralizedStiffness() const = 0;
+
+    virtual ElementStatus commit() = 0;
+    virtual void revert() = 0;
+
+    /// The law an updating scheme may change; nullptr if none (e.g. experimental).
+    virtual HysteresisLaw* law() { return nullptr; }
+    virtual const HysteresisLaw* law() const { return nullptr; }
+
+    /// Add c_k P to R[dof_k] (full DOFs).
+    void addNodalForces(Eigen::VectorXd& rFull) const;
+    /// Add c c^T k0 to K (full DOFs).
+    void addInitialStiffness(Eigen::MatrixXd& kFull) const;
+
+private:
+    std::string m_name;
+    std::vector<DofTerm> m_terms;
+};
+
+} // namespace hsmu

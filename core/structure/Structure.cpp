@@ -1,0 +1,171 @@
+#include "core/structure/Structure.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hsmu {
+
+RayleighDamping RayleighDamping::fromRatio(double zeta, double w1, double w2)
+{
+    if (std::abs(w1 - w2) < 1e-12 * std::max(w1, w2))
+        return {zeta * w1, zeta / w1};
+    return {2.0 * zeta * w1 * w2 / (w1 + w2), 2.0 * zeta / (w1 + w2)};
+}
+
+int Structure::addDof(std::string name, double mass)
+{
+    m_dofNames.push_back(std::move(name));
+    m_masses.push_back(mass);
+    return static_cast<int>(m_dofNames.size()) - 1;
+}
+
+void Structure::addElement(std::unique_ptr<Element> element)
+{
+    m_elements.push_back(std::move(element));
+}
+
+void Structure::addEqualDof(int master, int slave) { m_equalDofs.emplace_back(master, slave); }
+
+void Structure::setModalDamping(double zeta, int modeI, int modeJ)
+{
+    m_modalZeta = zeta;
+    m_modeI = modeI;
+    m_modeJ = modeJ;
+}
+
+Element* Structure::element(const std::string& name) const
+{
+    for (const auto& e : m_elements)
+        if (e->name() == name)
+            return e.get();
+    return nullptr;
+}
+
+void Structure::finalize()
+{
+    const int n = fullDofCount();
+    if (n == 0)
+        throw std::invalid_argument("structure has no DOFs");
+    auto checkDof = [n](int d, const std::string& where) {
+        if (d < 0 || d >= n)
+            throw std::invalid_argument(where + ": DOF index " + std::to_string(d) +
+                                        " is outside 0.." + std::to_string(n - 1));
+    };
+    std::vector<int> master(n);
+    for (int i = 0; i < n; ++i)
+        master[i] = i;
+    for (const auto& [m, s] : m_equalDofs) {
+        checkDof(m, "equalDof master");
+        checkDof(s, "equalDof slave");
+        if (m == s)
+            throw std::invalid_argument("equalDof: master and slave are both DOF " +
+                                        std::to_string(m));
+        if (master[s] != s)
+            throw std::invalid_argument("equalDof: DOF " + std::to_string(s) +
+                                        " is constrained twice");
+        master[s] = m;
+    }
+    // Resolve chains (a slave's master may itself be a slave), detecting cycles.
+    for (int i = 0; i < n; ++i) {
+        int r = i;
+        for (int hops = 0; master[r] != r; ++hops) {
+            if (hops > n)
+                throw std::invalid_argument("equalDof constraints form a cycle through DOF " +
+                                            std::to_string(i));
+            r = master[r];
+        }
+        master[i] = r;
+    }
+    std::vector<int> freeIndex(n, -1);
+    int nFree = 0;
+    for (int i = 0; i < n; ++i)
+        if (master[i] == i)
+            freeIndex[i] = nFree++;
+    m_t = Eigen::MatrixXd::Zero(n, nFree);
+    for (int i = 0; i < n; ++i)
+        m_t(i, freeIndex[master[i]]) = 1.0;
+
+    Eigen::VectorXd mFull(n);
+    for (int i = 0; i < n; ++i) {
+        if (!(m_masses[i] >= 0.0) || !std::isfinite(m_masses[i]))
+            throw std::invalid_argument("DOF '" + m_dofNames[i] + "': mass must be >= 0");
+        mFull[i] = m_masses[i];
+    }
+    m_m = m_t.transpose() * mFull.asDiagonal() * m_t;
+    for (int j = 0; j < nFree; ++j)
+        if (!(m_m(j, j) > 0.0))
+            throw std::invalid_argument(
+                "free DOF " + std::to_string(j) +
+                " has no mass (an explicit integrator needs a positive mass on every DOF)");
+    m_influence = m_t.transpose() * mFull;
+
+    Eigen::MatrixXd kFull = Eigen::MatrixXd::Zero(n, n);
+    for (const auto& e : m_elements) {
+        for (const auto& t : e->terms())
+            checkDof(t.dof, "element '" + e->name() + "'");
+        e->addInitialStiffness(kFull);
+    }
+    m_k0 = m_t.transpose() * kFull * m_t;
+
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(m_k0, m_m);
+    if (eig.info() != Eigen::Success)
+        throw std::invalid_argument("eigenvalue analysis of the initial stiffness failed");
+    m_omega = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+
+    if (m_modalZeta >= 0.0) {
+        auto w = [&](int mode) {
+            const int idx = std::clamp(mode, 1, nFree) - 1;
+            return m_omega[idx];
+        };
+        const double w1 = w(m_modeI), w2 = w(m_modeJ);
+        if (!(w1 > 0.0) || !(w2 > 0.0))
+            throw std::invalid_argument("modal damping needs positive frequencies (is a DOF "
+                                        "without stiffness?)");
+        m_rayleigh = RayleighDamping::fromRatio(m_modalZeta, w1, w2);
+    }
+    m_c = m_rayleigh.a0 * m_m + m_rayleigh.a1 * m_k0;
+}
+
+ElementStatus Structure::setTrial(const Eigen::VectorXd& uFree)
+{
+    const Eigen::VectorXd u = toFull(uFree);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (auto& e : m_elements) {
+            if (e->isExperimental() != (pass == 0))
+                continue;
+            ElementStatus s = e->setTrial(u);
+            if (!s.ok)
+                return s;
+        }
+    }
+    return ElementStatus::success();
+}
+
+Eigen::VectorXd Structure::restoringForce() const
+{
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(fullDofCount());
+    for (const auto& e : m_elements)
+        e->addNodalForces(r);
+    return m_t.transpose() * r;
+}
+
+ElementStatus Structure::commit()
+{
+    for (auto& e : m_elements) {
+        ElementStatus s = e->commit();
+        if (!s.ok)
+            return s;
+    }
+    return ElementStatus::success();
+}
+
+void Structure::revert()
+{
+    for (auto& e : m_elements)
+        e->revert();
+}
+
+} // namespace hsmu

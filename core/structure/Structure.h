@@ -1,0 +1,87 @@
+#pragma once
+// Structure: N-DOF lumped-mass model with elements, Rayleigh damping and equal-DOF
+// constraints (METHOD.md section 6: condition 1's rigid truss is the constraint u_slave =
+// u_master, not a huge stiffness).
+//
+// Units: a consistent set; the presets use kN, m, s and t (tonne = kN s^2/m).
+// Coordinates: "full" DOFs are the ones the user declares; constraints merge slaves into
+// their masters, leaving the "free" DOFs the integrator works on: u_full = T u_free with T a
+// 0/1 matrix (one 1 per row). All matrices returned here are over the free DOFs.
+
+#include "core/structure/Element.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct RayleighDamping {
+    double a0 = 0.0; ///< mass-proportional coefficient [1/s]
+    double a1 = 0.0; ///< initial-stiffness-proportional coefficient [s]
+    /// Coefficients giving damping ratio zeta at circular frequencies w1, w2 [rad/s]
+    /// (zeta_i = a0 / (2 w_i) + a1 w_i / 2). With w1 == w2: a0 = zeta w, a1 = zeta / w.
+    static RayleighDamping fromRatio(double zeta, double w1, double w2);
+};
+
+class Structure {
+public:
+    Structure() = default;
+    Structure(const Structure&) = delete;
+    Structure& operator=(const Structure&) = delete;
+
+    /// Add a DOF with lumped mass [t]; returns its full index.
+    int addDof(std::string name, double mass);
+    void addElement(std::unique_ptr<Element> element);
+    /// Constrain u[slave] = u[master].
+    void addEqualDof(int master, int slave);
+    void setRayleigh(const RayleighDamping& d) { m_rayleigh = d; }
+    /// Rayleigh damping with ratio zeta at modes i and j (1-based, of the initial-stiffness
+    /// model); resolved in finalize(). A mode beyond the free DOF count is clamped.
+    void setModalDamping(double zeta, int modeI, int modeJ);
+
+    /// Validate and build T, M, K0, C. Throws std::invalid_argument with a clear sentence
+    /// (bad DOF index, mass <= 0 on a free DOF, constraint cycle, no DOFs).
+    void finalize();
+
+    int fullDofCount() const { return static_cast<int>(m_dofNames.size()); }
+    int freeDofCount() const { return static_cast<int>(m_t.cols()); }
+    const std::vector<std::string>& dofNames() const { return m_dofNames; }
+    const std::vector<std::unique_ptr<Element>>& elements() const { return m_elements; }
+    Element* element(const std::string& name) const;
+
+    const Eigen::MatrixXd& transform() const { return m_t; } ///< T, full x free
+    const Eigen::MatrixXd& mass() const { return m_m; }      ///< M (free) [t]
+    const Eigen::MatrixXd& initialStiffness() const { return m_k0; } ///< K0 (free) [kN/m]
+    const Eigen::MatrixXd& damping() const { return m_c; }   ///< C (free) [kN s/m]
+    const RayleighDamping& rayleigh() const { return m_rayleigh; }
+    /// Effective earthquake load per unit ground acceleration: T^T M_full iota [t].
+    const Eigen::VectorXd& influence() const { return m_influence; }
+    /// Undamped circular frequencies [rad/s] of (K0, M), ascending.
+    const Eigen::VectorXd& frequencies() const { return m_omega; }
+
+    Eigen::VectorXd toFull(const Eigen::VectorXd& uFree) const { return m_t * uFree; }
+
+    /// Set every element's trial at free displacements u; experimental elements first (their
+    /// targets go out before any numerical work). Returns the first failure.
+    ElementStatus setTrial(const Eigen::VectorXd& uFree);
+    /// Restoring force over the free DOFs at the current trial state.
+    Eigen::VectorXd restoringForce() const;
+    ElementStatus commit();
+    void revert();
+
+private:
+    std::vector<std::string> m_dofNames;
+    std::vector<double> m_masses;
+    std::vector<std::unique_ptr<Element>> m_elements;
+    std::vector<std::pair<int, int>> m_equalDofs;
+    RayleighDamping m_rayleigh;
+    double m_modalZeta = -1.0;
+    int m_modeI = 1, m_modeJ = 2;
+    Eigen::MatrixXd m_t, m_m, m_k0, m_c;
+    Eigen::VectorXd m_influence, m_omega;
+};
+
+} // namespace hsmu

@@ -1,0 +1,28 @@
+#include "core/test/Alarm.h"
+
+namespace hsmu {
+
+const char* toString(AlarmSeverity s)
+{
+    switch (s) {
+    case AlarmSeverity::Info: return "info";
+    case AlarmSeverity::Warning: return "warning";
+    case AlarmSeverity::Critical: return "critical";
+    }
+    return "?";
+}
+
+const char* toString(AlarmKind k)
+{
+    switch (k) {
+    case AlarmKind::LimitExceeded: return "limit exceeded";
+    case AlarmKind::ControlFault: return "control fault";
+    case AlarmKind::ElementFault: return "element fault";
+    case AlarmKind::IntegratorFault: return "integrator fault";
+    case AlarmKind::OperatorHold: return "operator hold";
+    case AlarmKind::Stability: return "stability";
+    }
+    return "?";
+}
+
+} // namespace hsmu

@@ -1,0 +1,31 @@
+#pragma once
+// Alarm: something the operator must know, with the test time, a severity and a reason.
+// core returns enums and text in English; the GUI chooses how to show (and translate) kinds.
+
+#include <string>
+
+namespace hsmu {
+
+enum class AlarmSeverity { Info, Warning, Critical };
+
+enum class AlarmKind {
+    LimitExceeded,   ///< a target or measured force past a safety limit: held, nothing sent
+    ControlFault,    ///< the experimental control reported a fault
+    ElementFault,    ///< a numerical element failed (e.g. law non-convergence)
+    IntegratorFault, ///< non-finite response
+    OperatorHold,    ///< the operator held the test
+    Stability        ///< explicit scheme forced past its stability limit
+};
+
+struct Alarm {
+    double time = 0.0; ///< test time [s]
+    int step = 0;
+    AlarmSeverity severity = AlarmSeverity::Info;
+    AlarmKind kind = AlarmKind::ElementFault;
+    std::string message;
+};
+
+const char* toString(AlarmSeverity s);
+const char* toString(AlarmKind k);
+
+} // namespace hsmu

@@ -1,0 +1,208 @@
+#include "core/test/HybridTest.h"
+
+#include "core/experimental/ExperimentalElement.h"
+#include "core/integration/Integrator.h"
+#include "core/structure/Structure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hsmu {
+
+const char* toString(HybridTest::State s)
+{
+    switch (s) {
+    case HybridTest::State::Created: return "created";
+    case HybridTest::State::Ready: return "ready";
+    case HybridTest::State::Running: return "running";
+    case HybridTest::State::Holding: return "holding";
+    case HybridTest::State::Finished: return "finished";
+    case HybridTest::State::Failed: return "failed";
+    }
+    return "?";
+}
+
+HybridTest::HybridTest(std::unique_ptr<Structure> structure,
+                       std::unique_ptr<Integrator> integrator, const GroundMotion& groundMotion,
+                       const HybridTestOptions& options)
+    : m_structure(std::move(structure)), m_integrator(std::move(integrator)),
+      m_groundMotion(groundMotion), m_options(options)
+{
+}
+
+HybridTest::~HybridTest() = default;
+
+void HybridTest::addObserver(StepObserver* observer) { m_observers.push_back(observer); }
+
+void HybridTest::removeObserver(StepObserver* observer)
+{
+    m_observers.erase(std::remove(m_observers.begin(), m_observers.end(), observer),
+                      m_observers.end());
+}
+
+void HybridTest::raise(AlarmSeverity severity, AlarmKind kind, const std::string& message)
+{
+    m_alarms.push_back({time(), m_step, severity, kind, message});
+}
+
+bool HybridTest::prepare()
+{
+    auto fail = [this](const std::string& why) {
+        m_lastError = why;
+        m_state = State::Failed;
+        return false;
+    };
+    if (m_state != State::Created)
+        return fail("prepare() was already called");
+    if (!(m_options.dt > 0.0) || !std::isfinite(m_options.dt))
+        return fail("the integration step dt must be a positive number of seconds");
+    if (m_groundMotion.acceleration.size() < 2 || !(m_groundMotion.dt > 0.0))
+        return fail("the ground motion has fewer than two samples");
+    try {
+        if (std::abs(m_groundMotion.dt - m_options.dt) > 1e-12 * m_options.dt)
+            m_groundMotion = m_groundMotion.resampled(m_options.dt);
+        m_structure->finalize();
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    const double duration = m_options.duration > 0.0
+                                ? std::min(m_options.duration, m_groundMotion.duration())
+                                : m_groundMotion.duration();
+    m_totalSteps = static_cast<int>(std::floor(duration / m_options.dt + 1e-9));
+    m_totalSteps = std::min<int>(m_totalSteps, int(m_groundMotion.acceleration.size()) - 1);
+
+    m_stability = checkStability(*m_structure, *m_integrator, m_options.dt);
+    if (!m_stability.stable) {
+        if (!m_options.allowUnstable)
+            return fail(m_stability.message);
+        raise(AlarmSeverity::Warning, AlarmKind::Stability,
+              m_stability.message + " (forced by the operator)");
+    }
+    for (const auto& e : m_structure->elements()) {
+        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get())) {
+            if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
+                return fail(x->name() + ": " + r.reason);
+        }
+    }
+    // Initial state at rest: elements at zero deformation, no measurement taken yet.
+    const int nf = m_structure->freeDofCount();
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(nf);
+    m_integrator->initialize(*m_structure, m_options.dt, zero, zero,
+                             m_groundMotion.acceleration[0], zero);
+    m_step = 0;
+    m_state = State::Ready;
+    publish();
+    return true;
+}
+
+void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
+{
+    m_structure->revert();
+    for (const auto& e : m_structure->elements())
+        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
+            x->control().hold(reason);
+    raise(AlarmSeverity::Critical, kind, "test held: " + reason);
+    m_state = State::Holding;
+}
+
+void HybridTest::hold(const std::string& reason)
+{
+    if (m_state != State::Ready && m_state != State::Running)
+        return;
+    enterHold(AlarmKind::OperatorHold, reason.empty() ? "operator hold" : reason);
+}
+
+void HybridTest::resume()
+{
+    if (m_state != State::Holding)
+        return;
+    for (const auto& e : m_structure->elements())
+        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
+            x->control().resume();
+    raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed");
+    m_state = State::Running;
+}
+
+HybridTest::StepResult HybridTest::step()
+{
+    switch (m_state) {
+    case State::Created:
+    case State::Failed: return StepResult::NotReady;
+    case State::Holding: return StepResult::Held;
+    case State::Finished: return StepResult::Finished;
+    case State::Ready:
+    case State::Running: break;
+    }
+    if (m_step >= m_totalSteps) {
+        m_state = State::Finished;
+        return StepResult::Finished;
+    }
+    m_state = State::Running;
+    const double agNext = m_groundMotion.acceleration[m_step + 1];
+    const Eigen::VectorXd uTrial = m_integrator->predict();
+    if (!uTrial.allFinite()) {
+        enterHold(AlarmKind::IntegratorFault, "predicted displacement is not finite");
+        return StepResult::Held;
+    }
+    // Every target is checked before any is sent: nothing leaves a limit, ever.
+    const Eigen::VectorXd uFull = m_structure->toFull(uTrial);
+    for (const auto& e : m_structure->elements()) {
+        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get())) {
+            if (auto why = x->targetViolation(uFull)) {
+                enterHold(AlarmKind::LimitExceeded, *why);
+                return StepResult::Held;
+            }
+        }
+    }
+    if (ElementStatus s = m_structure->setTrial(uTrial); !s.ok) {
+        const bool limit = s.message.find("exceeds the limit") != std::string::npos;
+        enterHold(limit ? AlarmKind::LimitExceeded : AlarmKind::ControlFault, s.message);
+        return StepResult::Held;
+    }
+    const Eigen::VectorXd r = m_structure->restoringForce();
+    if (!r.allFinite() || !m_integrator->correct(r, agNext)) {
+        enterHold(AlarmKind::IntegratorFault, "restoring force or response is not finite");
+        return StepResult::Held;
+    }
+    if (ElementStatus s = m_structure->commit(); !s.ok) {
+        enterHold(AlarmKind::ControlFault, s.message);
+        return StepResult::Held;
+    }
+    ++m_step;
+    publish();
+    if (m_step >= m_totalSteps) {
+        m_state = State::Finished;
+        return StepResult::Finished;
+    }
+    return StepResult::Advanced;
+}
+
+void HybridTest::publish()
+{
+    StepRecord& rec = m_record;
+    rec.step = m_step;
+    rec.time = time();
+    rec.groundAcceleration = m_groundMotion.acceleration[m_step];
+    rec.u = m_structure->toFull(m_integrator->displacement());
+    rec.v = m_structure->toFull(m_integrator->velocity());
+    rec.a = m_structure->toFull(m_integrator->acceleration());
+    const auto& elements = m_structure->elements();
+    rec.elements.resize(elements.size());
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        const Element& e = *elements[i];
+        ElementSample& s = rec.elements[i];
+        if (m_step == 0) {
+            s = ElementSample{};
+        } else {
+            s.deformation = e.deformation();
+            s.force = e.force();
+        }
+        if (const auto* x = dynamic_cast<const ExperimentalElement*>(&e))
+            s.commanded = m_step == 0 ? 0.0 : x->commandedDeformation();
+    }
+    for (StepObserver* o : m_observers)
+        o->onStep(rec);
+}
+
+} // namespace hsmu

@@ -1,0 +1,94 @@
+#pragma once
+// HybridTest: the step loop of ARCHITECTURE.md ("Data flow of one integration step").
+//
+//   integrator predicts u[n+1]
+//   every specimen target is checked against its limits before any is sent (else: hold)
+//   experimental elements: setTarget / measure; numerical elements: trial forces
+//   integrator solves a[n+1], v[n+1]; commit all elements
+//   StepRecord -> observers
+//
+// Single-threaded, no sleeps: the caller (CLI loop or the GUI's worker thread) calls step().
+// A fault never throws out of step(): the test goes to State::Holding with an Alarm saying
+// why, every committed step has already reached the observers, and resume() retries the
+// same step (after the operator changed what caused the hold).
+
+#include "core/groundmotion/GroundMotion.h"
+#include "core/integration/StabilityCheck.h"
+#include "core/test/Alarm.h"
+#include "core/test/StepRecord.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+class Integrator;
+class Structure;
+
+struct HybridTestOptions {
+    double dt = 0.01;           ///< integration step [s]
+    double duration = 0.0;      ///< test duration [s]; <= 0: the whole record
+    bool allowUnstable = false; ///< run an explicit scheme past omega_max dt anyway
+};
+
+class HybridTest {
+public:
+    enum class State { Created, Ready, Running, Holding, Finished, Failed };
+    enum class StepResult { Advanced, Finished, Held, NotReady };
+
+    /// groundMotion is resampled to options.dt if its interval differs.
+    HybridTest(std::unique_ptr<Structure> structure, std::unique_ptr<Integrator> integrator,
+               const GroundMotion& groundMotion, const HybridTestOptions& options);
+    ~HybridTest();
+    HybridTest(const HybridTest&) = delete;
+    HybridTest& operator=(const HybridTest&) = delete;
+
+    /// Finalize the structure, check stability, evaluate the initial state, emit step 0.
+    /// False (state Failed) with lastError() set if the test cannot start.
+    bool prepare();
+    StepResult step();
+    /// Operator's emergency hold between steps.
+    void hold(const std::string& reason);
+    /// Leave a hold; the held step is retried by the next step().
+    void resume();
+
+    State state() const { return m_state; }
+    int currentStep() const { return m_step; }
+    int totalSteps() const { return m_totalSteps; }
+    double time() const { return m_step * m_options.dt; }
+    double dt() const { return m_options.dt; }
+    const std::string& lastError() const { return m_lastError; }
+    const StabilityReport& stability() const { return m_stability; }
+    const std::vector<Alarm>& alarms() const { return m_alarms; }
+    const GroundMotion& groundMotion() const { return m_groundMotion; }
+    Structure& structure() { return *m_structure; }
+    const Structure& structure() const { return *m_structure; }
+    const Integrator& integrator() const { return *m_integrator; }
+
+    /// Observers are not owned; they must outlive the test or be removed.
+    void addObserver(StepObserver* observer);
+    void removeObserver(StepObserver* observer);
+
+private:
+    void enterHold(AlarmKind kind, const std::string& reason);
+    void raise(AlarmSeverity severity, AlarmKind kind, const std::string& message);
+    void publish();
+
+    std::unique_ptr<Structure> m_structure;
+    std::unique_ptr<Integrator> m_integrator;
+    GroundMotion m_groundMotion;
+    HybridTestOptions m_options;
+    State m_state = State::Created;
+    int m_step = 0;
+    int m_totalSteps = 0;
+    std::string m_lastError;
+    StabilityReport m_stability;
+    std::vector<Alarm> m_alarms;
+    std::vector<StepObserver*> m_observers;
+    StepRecord m_record;
+};
+
+const char* toString(HybridTest::State s);
+
+} // namespace hsmu

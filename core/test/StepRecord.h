@@ -1,0 +1,35 @@
+#pragma once
+// StepRecord: everything one integration step produced, handed to observers (recorder, plot
+// feed, CSV writer, statistics). Vectors are over the *full* DOFs; element entries follow the
+// structure's element order. Units: those of the structure (presets: m, s, kN, rad, kN m).
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <vector>
+
+namespace hsmu {
+
+struct ElementSample {
+    double deformation = 0.0; ///< law deformation (measured for a specimen)
+    double force = 0.0;       ///< law force (measured for a specimen)
+    /// Commanded deformation for a specimen; NaN for a numerical element.
+    double commanded = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct StepRecord {
+    int step = 0;                   ///< 0 is the initial state
+    double time = 0.0;              ///< [s]
+    double groundAcceleration = 0.0; ///< [m/s^2]
+    Eigen::VectorXd u, v, a;        ///< DOF displacement [m], velocity [m/s], acceleration [m/s^2]
+    std::vector<ElementSample> elements;
+};
+
+/// Receives every committed step. Called on the thread that runs HybridTest::step().
+class StepObserver {
+public:
+    virtual ~StepObserver() = default;
+    virtual void onStep(const StepRecord& record) = 0;
+};
+
+} // namespace hsmu

@@ -1,0 +1,427 @@
+// Tests of BoucWen (core/hysteresis/BoucWen.h) against closed forms, against itself under step
+// refinement and against an independent RK4 integration of the ODE (BoucWenReference.h).
+
+#include "core/hysteresis/BoucWen.h"
+
+#include "BoucWenReference.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+using namespace hsmu;
+
+namespace {
+
+// Paper-like normalized parameters (Table III ranges): ultimate z = (1/4)^(1/2) = 0.5, so the
+// yield deformation is x = 0.5 (u = 0.01 rad with uRef = 0.02 rad).
+BoucWenParameters paperParameters(double deltaNu = 0.0, double deltaEta = 0.0) {
+    BoucWenParameters p;
+    p.k0 = 1.0;
+    p.alpha = 0.02;
+    p.n = 2.0;
+    p.beta = 3.0;
+    p.gamma = 1.0;
+    p.deltaNu = deltaNu;
+    p.deltaEta = deltaEta;
+    p.uRef = 0.02; // rad
+    p.fRef = 20.0; // kN m
+    return p;
+}
+
+// u(t) = amplitude sin(2 pi t) at t = i / pointsPerCycle, i = 1 .. cycles * pointsPerCycle.
+std::vector<double> sineHistory(double amplitude, int cycles, int pointsPerCycle) {
+    std::vector<double> u;
+    for (int i = 1; i <= cycles * pointsPerCycle; ++i) {
+        u.push_back(amplitude * std::sin(2.0 * std::numbers::pi * i / pointsPerCycle));
+    }
+    return u;
+}
+
+struct Run {
+    std::vector<double> force, tangent;
+    bool ok = true;
+};
+
+Run drive(HysteresisLaw& law, const std::vector<double>& u) {
+    Run run;
+    for (const double ui : u) {
+        if (law.setTrialDeformation(ui) != LawStatus::Ok) {
+            run.ok = false;
+            return run;
+        }
+        run.force.push_back(law.trialForce());
+        run.tangent.push_back(law.trialTangent());
+        law.commit();
+    }
+    return run;
+}
+
+Run drive(const BoucWenParameters& p, const std::vector<double>& u) {
+    BoucWen law(p);
+    return drive(law, u);
+}
+
+double peakAbs(const std::vector<double>& v) {
+    double m = 0.0;
+    for (const double x : v) {
+        m = std::max(m, std::abs(x));
+    }
+    return m;
+}
+
+// Max |a[i * strideA] - b[i * strideB]| over the common points.
+double maxDifference(const std::vector<double>& a, int strideA, const std::vector<double>& b,
+                     int strideB) {
+    double m = 0.0;
+    for (std::size_t i = 0; (i + 1) * strideA <= a.size() && (i + 1) * strideB <= b.size(); ++i) {
+        m = std::max(m, std::abs(a[(i + 1) * strideA - 1] - b[(i + 1) * strideB - 1]));
+    }
+    return m;
+}
+
+} // namespace
+
+class TestBoucWen : public QObject {
+    Q_OBJECT
+
+private slots:
+    void tinyCycleIsElastic();
+    void monotonicLoadingReachesUltimateZ();
+    void cyclesDissipateEnergy();
+    void degradationLowersStrengthAndStiffness();
+    void backwardEulerConvergesAtFirstOrder();
+    void matchesIndependentRk4();
+    void commitRevertAndCloneAreExact();
+    void hugeIncrementIsSubStepped();
+    void normalizationEqualsScaledParameters();
+    void invalidInputKeepsCommittedState();
+    void tangentMatchesFiniteDifference();
+    void parametersByName();
+};
+
+void TestBoucWen::tinyCycleIsElastic() {
+    // |u| = 1e-6 uRef << yield (0.5 uRef): z = x - O(|x|^3), so F = k_phys u to ~(1e-6)^2
+    // relative; tolerance 1e-9 of the peak force.
+    BoucWenParameters p = paperParameters();
+    const double kPhys = p.k0 * p.fRef / p.uRef; // alpha + (1 - alpha) A0 = 1
+    BoucWen law(p);
+    QCOMPARE(law.initialTangent(), kPhys);
+    const auto u = sineHistory(1e-6 * p.uRef, 2, 100);
+    const Run run = drive(law, u);
+    QVERIFY(run.ok);
+    for (std::size_t i = 0; i < u.size(); ++i) {
+        QVERIFY(std::abs(run.force[i] - kPhys * u[i]) <= 1e-9 * kPhys * 1e-6 * p.uRef);
+        QVERIFY(std::abs(run.tangent[i] - kPhys) <= 1e-9 * kPhys);
+    }
+}
+
+void TestBoucWen::monotonicLoadingReachesUltimateZ() {
+    for (const double n : {1.0, 2.0, 3.0}) {
+        BoucWenParameters p = paperParameters();
+        p.n = n;
+        p.beta = 2.5;
+        p.gamma = 1.5;
+        const double closedForm = std::pow(p.A0 / (p.beta + p.gamma), 1.0 / n);
+        QCOMPARE(BoucWen::ultimateZ(p), closedForm);
+        // Up to x = 40 in steps of 0.01: z - zu decays like exp(-x), far below 1e-12 at x = 40
+        // (and zu is an exact fixed point of the backward-Euler map).
+        BoucWen law(p);
+        for (int i = 1; i <= 4000; ++i) {
+            QCOMPARE(law.setTrialDeformation(i * 0.01 * p.uRef), LawStatus::Ok);
+            law.commit();
+        }
+        QVERIFY(std::abs(law.committedState().z - closedForm) <= 1e-12 * closedForm);
+        const double expected = p.fRef * p.k0 * (p.alpha * 40.0 + (1.0 - p.alpha) * closedForm);
+        QVERIFY(std::abs(law.committedForce() - expected) <= 1e-12 * expected);
+        // At saturation only the elastic part alpha k0 remains in the tangent.
+        QVERIFY(std::abs(law.trialTangent() - p.alpha * p.k0 * p.fRef / p.uRef) <=
+                1e-9 * p.k0 * p.fRef / p.uRef);
+    }
+}
+
+void TestBoucWen::cyclesDissipateEnergy() {
+    // Trapezoidal integral of F du over each full cycle of a +-4 yield sine: the hysteretic
+    // loop has area of order 4 zu (1 - alpha) k0 * 2 x_max in normalized units; require at least
+    // a tenth of that bound per cycle (a positive area, not round-off).
+    const BoucWenParameters p = paperParameters(0.02, 0.02);
+    const int perCycle = 400;
+    std::vector<double> u{0.0};
+    for (const double ui : sineHistory(4.0 * 0.5 * p.uRef, 3, perCycle)) {
+        u.push_back(ui);
+    }
+    const Run run = drive(p, std::vector<double>(u.begin() + 1, u.end()));
+    QVERIFY(run.ok);
+    std::vector<double> f{0.0};
+    f.insert(f.end(), run.force.begin(), run.force.end());
+    const double scale = 4.0 * 0.5 * 2.0 * 2.0 * p.fRef * p.uRef;
+    for (int c = 0; c < 3; ++c) {
+        double energy = 0.0;
+        for (int i = c * perCycle; i < (c + 1) * perCycle; ++i) {
+            energy += 0.5 * (f[i] + f[i + 1]) * (u[i + 1] - u[i]);
+        }
+        qInfo() << "DBG energy" << energy / scale;
+        QVERIFY2(energy > 0.1 * scale, qPrintable(QString::number(energy / scale)));
+    }
+}
+
+void TestBoucWen::degradationLowersStrengthAndStiffness() {
+    // Cycles of +-8 yield deformations; compare the third cycle with and without degradation.
+    const double amplitude = 4.0 * paperParameters().uRef;
+    const int perCycle = 800;
+    const auto u = sineHistory(amplitude, 3, perCycle);
+    const auto thirdCyclePeak = [&](const Run& r) {
+        return peakAbs(std::vector<double>(r.force.begin() + 2 * perCycle, r.force.end()));
+    };
+    // Unloading stiffness: secant over the first step after the peak of the third cycle
+    // (u at t = 2.25 is the peak, i = 2 perCycle + perCycle / 4 - 1).
+    const std::size_t iPeak = 2 * perCycle + perCycle / 4 - 1;
+    const auto unloadingStiffness = [&](const Run& r) {
+        return (r.force[iPeak] - r.force[iPeak + 1]) / (u[iPeak] - u[iPeak + 1]);
+    };
+    const Run plain = drive(paperParameters(), u);
+    const Run strength = drive(paperParameters(0.05, 0.0), u);
+    const Run stiffness = drive(paperParameters(0.0, 0.05), u);
+    QVERIFY(plain.ok && strength.ok && stiffness.ok);
+    // Strength: nu grows with e, so z saturates lower; expect a drop of more than 10 %.
+    QVERIFY2(thirdCyclePeak(strength) < 0.9 * thirdCyclePeak(plain),
+             qPrintable(QString::number(thirdCyclePeak(strength) / thirdCyclePeak(plain))));
+    // Stiffness: eta grows with e and divides dz/dx; expect a drop of more than 10 %.
+    QVERIFY2(
+        unloadingStiffness(stiffness) < 0.9 * unloadingStiffness(plain),
+        qPrintable(QString::number(unloadingStiffness(stiffness) / unloadingStiffness(plain))));
+    QVERIFY(unloadingStiffness(plain) > 0.0);
+    qInfo() << "DBG degr" << thirdCyclePeak(strength) / thirdCyclePeak(plain)
+            << unloadingStiffness(stiffness) / unloadingStiffness(plain)
+            << unloadingStiffness(plain);
+}
+
+void TestBoucWen::backwardEulerConvergesAtFirstOrder() {
+    // Two cycles of +-8 yields with degradation, N = 400, 800, 1600 points per cycle against a
+    // reference with 51200 points per cycle. Backward Euler is first order: each halving of
+    // the step should halve the max force error; accept ratios in [1.7, 2.3].
+    const BoucWenParameters p = paperParameters(0.05, 0.05);
+    const double amplitude = 4.0 * p.uRef;
+    const int reference = 51200;
+    const Run ref = drive(p, sineHistory(amplitude, 2, reference));
+    QVERIFY(ref.ok);
+    double errors[3];
+    for (int k = 0; k < 3; ++k) {
+        const int n = 400 << k;
+        const Run run = drive(p, sineHistory(amplitude, 2, n));
+        QVERIFY(run.ok);
+        errors[k] = maxDifference(run.force, 1, ref.force, reference / n);
+    }
+    const double r1 = errors[0] / errors[1], r2 = errors[1] / errors[2];
+    qInfo() << "DBG conv" << errors[0] << errors[1] << errors[2] << r1 << r2;
+    QVERIFY2(
+        r1 > 1.7 && r1 < 2.3 && r2 > 1.7 && r2 < 2.3,
+        qPrintable(QStringLiteral("errors %1 %2 %3").arg(errors[0]).arg(errors[1]).arg(errors[2])));
+}
+
+void TestBoucWen::matchesIndependentRk4() {
+    // Two cycles of +-8 yields with degradation. RK4 with 4 sub-steps per point on 20000 points
+    // per cycle is accurate to far below 1e-6 of the peak; backward Euler on the same points has
+    // a first-order error of about 4e-4 of the peak: require 1e-3. The Richardson extrapolation
+    // 2 F(2N) - F(N) of the backward-Euler runs removes the first-order term: require 2e-5.
+    const BoucWenParameters p = paperParameters(0.05, 0.05);
+    const int perCycle = 20000;
+    const auto u = sineHistory(4.0 * p.uRef, 2, perCycle);
+    const Run run = drive(p, u);
+    const Run run2 = drive(p, sineHistory(4.0 * p.uRef, 2, 2 * perCycle));
+    QVERIFY(run.ok && run2.ok);
+    const auto rk4 = testref::rk4Forces(p, u, 4);
+    const double peak = peakAbs(rk4);
+    const double diff = maxDifference(run.force, 1, rk4, 1);
+    QVERIFY2(diff <= 1e-3 * peak, qPrintable(QString::number(diff / peak)));
+    std::vector<double> extrapolated(run.force.size());
+    for (std::size_t i = 0; i < u.size(); ++i) {
+        extrapolated[i] = 2.0 * run2.force[2 * i + 1] - run.force[i];
+    }
+    const double diffExtrapolated = maxDifference(extrapolated, 1, rk4, 1);
+    qInfo() << "DBG rk4" << diff / peak << diffExtrapolated / peak << peak;
+    QVERIFY2(diffExtrapolated <= 2e-5 * peak, qPrintable(QString::number(diffExtrapolated / peak)));
+}
+
+void TestBoucWen::commitRevertAndCloneAreExact() {
+    // Bit-identical results (operator==, not QCOMPARE's fuzzy comparison).
+    const BoucWenParameters p = paperParameters(0.05, 0.05);
+    const auto u = sineHistory(4.0 * p.uRef, 2, 200);
+    BoucWen law(p);
+    QVERIFY(drive(law, std::vector<double>(u.begin(), u.begin() + 150)).ok);
+    const BoucWenState committed = law.committedState();
+    const double fCommitted = law.committedForce();
+
+    QCOMPARE(law.setTrialDeformation(u[150]), LawStatus::Ok);
+    const double f1 = law.trialForce(), k1 = law.trialTangent();
+    const BoucWenState s1 = law.trialState();
+    QVERIFY(law.committedState().z == committed.z && law.committedState().e == committed.e);
+    law.revert();
+    QVERIFY(law.trialForce() == fCommitted && law.trialState().z == committed.z);
+    QCOMPARE(law.setTrialDeformation(u[150]), LawStatus::Ok);
+    QVERIFY(law.trialForce() == f1 && law.trialTangent() == k1 && law.trialState().z == s1.z &&
+            law.trialState().e == s1.e);
+    // Another trial without revert also starts from the committed state.
+    QCOMPARE(law.setTrialDeformation(u[150] + 0.5 * p.uRef), LawStatus::Ok);
+    QCOMPARE(law.setTrialDeformation(u[150]), LawStatus::Ok);
+    QVERIFY(law.trialForce() == f1 && law.trialTangent() == k1);
+
+    // A clone carries the pending trial and reproduces the rest of the history exactly.
+    auto copy = law.clone();
+    QVERIFY(copy->trialForce() == f1 && copy->committedForce() == fCommitted);
+    const std::vector<double> rest(u.begin() + 150, u.end());
+    const Run a = drive(law, rest), b = drive(*copy, rest);
+    QVERIFY(a.ok && b.ok);
+    QVERIFY(a.force == b.force && a.tangent == b.tangent);
+
+    law.revertToStart();
+    QVERIFY(law.committedForce() == 0.0 && law.committedState().z == 0.0 &&
+            law.committedState().e == 0.0 && law.trialTangent() == law.initialTangent());
+}
+
+void TestBoucWen::hugeIncrementIsSubStepped() {
+    // From the virgin state to 50 yield deformations (x = 25) in one step, then back to -25.
+    for (const double degradation : {0.0, 0.05}) {
+        const BoucWenParameters p = paperParameters(degradation, degradation);
+        const BoucWenIncrement inc = BoucWen::integrate(p, BoucWenState{}, 25.0);
+        QCOMPARE(inc.status, LawStatus::Ok);
+        QVERIFY(inc.subSteps >= 64 && inc.subSteps <= 4096);
+
+        BoucWen coarse(p);
+        const Run c = drive(coarse, {25.0 * p.uRef, -25.0 * p.uRef});
+        QVERIFY(c.ok);
+        std::vector<double> fine;
+        for (int i = 1; i <= 2500; ++i) {
+            fine.push_back(i * 0.01 * p.uRef);
+        }
+        for (int i = 2499; i >= -2500; --i) {
+            fine.push_back(i * 0.01 * p.uRef);
+        }
+        const Run f = drive(p, fine);
+        QVERIFY(f.ok);
+        // Without degradation both runs end saturated at +-zu: equal to 1e-10 of the force.
+        // With degradation nu(e) differs by the backward-Euler error in e accumulated with
+        // sub-steps of up to 0.25 yield deformations: allow 1e-3 (measured 7e-5).
+        const double tol = degradation == 0.0 ? 1e-10 : 1e-3;
+        const double fPeak = f.force[2499], fEnd = f.force.back();
+        qInfo() << "DBG huge" << inc.subSteps << c.force[0] / fPeak - 1.0
+                << c.force[1] / fEnd - 1.0;
+        QVERIFY2(std::abs(c.force[0] - fPeak) <= tol * std::abs(fPeak),
+                 qPrintable(QString::number(c.force[0] / fPeak - 1.0)));
+        QVERIFY2(std::abs(c.force[1] - fEnd) <= tol * std::abs(fEnd),
+                 qPrintable(QString::number(c.force[1] / fEnd - 1.0)));
+    }
+    // Without sub-stepping the same increment fails, and the start state is returned.
+    const BoucWenState from{0.1, 0.2};
+    const BoucWenIncrement failed = BoucWen::integrate(paperParameters(), from, 1000.0, 0);
+    QCOMPARE(failed.status, LawStatus::NoConvergence);
+    QVERIFY(failed.state.z == from.z && failed.state.e == from.e);
+}
+
+void TestBoucWen::normalizationEqualsScaledParameters() {
+    // With z' = uRef z and e' = fRef uRef e, the law in physical units has
+    // k0' = k0 fRef / uRef, beta' = beta / uRef^n, gamma' = gamma / uRef^n and
+    // deltaX' = deltaX / (fRef uRef). Same forces to 1e-9 of the peak (round-off only).
+    const BoucWenParameters p = paperParameters(0.05, 0.03);
+    BoucWenParameters q = p;
+    q.uRef = 1.0;
+    q.fRef = 1.0;
+    q.k0 = p.k0 * p.fRef / p.uRef;
+    q.beta = p.beta / std::pow(p.uRef, p.n);
+    q.gamma = p.gamma / std::pow(p.uRef, p.n);
+    q.deltaNu = p.deltaNu / (p.fRef * p.uRef);
+    q.deltaEta = p.deltaEta / (p.fRef * p.uRef);
+    const auto u = sineHistory(4.0 * p.uRef, 2, 300);
+    const Run a = drive(p, u), b = drive(q, u);
+    QVERIFY(a.ok && b.ok);
+    const double diff = maxDifference(a.force, 1, b.force, 1);
+    QVERIFY2(diff <= 1e-9 * peakAbs(a.force), qPrintable(QString::number(diff)));
+    QVERIFY(maxDifference(a.tangent, 1, b.tangent, 1) <= 1e-9 * peakAbs(a.tangent));
+}
+
+void TestBoucWen::invalidInputKeepsCommittedState() {
+    const BoucWenParameters p = paperParameters(0.05, 0.05);
+    BoucWen law(p);
+    QVERIFY(drive(law, sineHistory(2.0 * p.uRef, 1, 50)).ok);
+    const BoucWenState committed = law.committedState();
+    const double u = law.committedDeformation(), f = law.committedForce();
+    for (const double bad :
+         {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity()}) {
+        QVERIFY(law.setTrialDeformation(u + 0.1 * p.uRef) == LawStatus::Ok);
+        QCOMPARE(law.setTrialDeformation(bad), LawStatus::InvalidInput);
+        QVERIFY(law.committedState().z == committed.z && law.committedState().e == committed.e);
+        QVERIFY(law.committedDeformation() == u && law.committedForce() == f);
+        QVERIFY(law.trialDeformation() == u && law.trialForce() == f);
+        law.commit(); // commits the committed state again: nothing changes
+        QVERIFY(law.committedForce() == f && law.committedState().z == committed.z);
+    }
+    const BoucWenIncrement inc =
+        BoucWen::integrate(p, committed, std::numeric_limits<double>::quiet_NaN());
+    QCOMPARE(inc.status, LawStatus::InvalidInput);
+    QCOMPARE(std::string(toString(LawStatus::InvalidInput)), std::string("invalid input"));
+}
+
+void TestBoucWen::tangentMatchesFiniteDifference() {
+    // In the yield transition (x = 0.3, z about 0.27), trials at u +- h with h = 1e-7 uRef:
+    // (F(u + h) - F(u)) / h differs from the analytic tangent by O(h) plus round-off
+    // eps F / h, both below 1e-5 of the tangent.
+    const BoucWenParameters p = paperParameters(0.05, 0.05);
+    BoucWen law(p);
+    for (int i = 1; i <= 30; ++i) {
+        QCOMPARE(law.setTrialDeformation(i * 0.01 * p.uRef), LawStatus::Ok);
+        law.commit();
+    }
+    const double u = law.committedDeformation(), f = law.committedForce();
+    const double h = 1e-7 * p.uRef;
+    QCOMPARE(law.setTrialDeformation(u + h), LawStatus::Ok);
+    const double kLoading = law.trialTangent();
+    QVERIFY(std::abs((law.trialForce() - f) / h - kLoading) <= 1e-5 * kLoading);
+    QCOMPARE(law.setTrialDeformation(u - h), LawStatus::Ok);
+    const double kUnloading = law.trialTangent();
+    QVERIFY(std::abs((f - law.trialForce()) / h - kUnloading) <= 1e-5 * kUnloading);
+    QVERIFY(kUnloading > 1.1 * kLoading); // beta > gamma: unloading is stiffer
+    // Zero increment: the tangent follows the direction of the last committed increment.
+    QCOMPARE(law.setTrialDeformation(u), LawStatus::Ok);
+    QVERIFY(std::abs(law.trialTangent() - kLoading) <= 1e-5 * kLoading);
+    QCOMPARE(law.setTrialDeformation(u - h), LawStatus::Ok);
+    law.commit();
+    QCOMPARE(law.setTrialDeformation(u - h), LawStatus::Ok);
+    QVERIFY(std::abs(law.trialTangent() - kUnloading) <= 1e-5 * kUnloading);
+}
+
+void TestBoucWen::parametersByName() {
+    const BoucWenParameters p = paperParameters(0.05, 0.05);
+    BoucWen law(p);
+    const std::vector<std::string> expected{"k0",     "alpha",   "n",        "beta", "gamma", "A0",
+                                            "deltaA", "deltaNu", "deltaEta", "uRef", "fRef"};
+    QVERIFY(law.parameterNames() == expected);
+    QCOMPARE(law.lawName(), std::string("boucWen"));
+    QCOMPARE(*law.parameter("beta"), 3.0);
+    QVERIFY(!law.parameter("delta").has_value());
+    QVERIFY(drive(law, sineHistory(3.0 * p.uRef, 1, 100)).ok);
+    const BoucWenState s = law.committedState();
+    const double f = law.committedForce();
+    // k0 scales the force at fixed (x, z): the committed force doubles, z and e are kept.
+    QVERIFY(law.setParameter("k0", 2.0 * p.k0));
+    QVERIFY(law.committedState().z == s.z && law.committedState().e == s.e);
+    QVERIFY(std::abs(law.committedForce() - 2.0 * f) <= 1e-14 * std::abs(f));
+    QVERIFY(law.trialForce() == law.committedForce());
+    // Rejected values leave the parameters unchanged.
+    QVERIFY(!law.setParameter("alpha", 1.5));
+    QVERIFY(!law.setParameter("gamma", -3.5)); // beta + gamma <= 0
+    QVERIFY(!law.setParameter("uRef", 0.0));
+    QVERIFY(!law.setParameter("n", std::numeric_limits<double>::quiet_NaN()));
+    QVERIFY(!law.setParameter("nope", 1.0));
+    QCOMPARE(*law.parameter("alpha"), p.alpha);
+    QCOMPARE(*law.parameter("gamma"), p.gamma);
+    QVERIFY(!BoucWen::admissible(BoucWenParameters{.k0 = -1.0}));
+    QVERIFY(BoucWen::admissible(BoucWenParameters{}));
+}
+
+QTEST_APPLESS_MAIN(TestBoucWen)
+#include "TestBoucWen.moc"
