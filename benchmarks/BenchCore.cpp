@@ -1,0 +1,86 @@
+// Core compute benchmarks (issue targets on the 2-core dev machine):
+//   Bouc-Wen trial + commit per step      <= 0.3 us
+//   one HybridTest step, condition-3 frame <= 2 us
+//   the whole 31 s El Centro run, frame     <= 20 ms (compute only: no output observers)
+// Run: build/bin/hsmu_bench [--benchmark_repetitions=5]
+
+#include "core/config/ConfigLoader.h"
+#include "core/config/TestFactory.h"
+#include "core/hysteresis/BoucWen.h"
+#include "core/test/HybridTest.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace {
+
+using namespace hsmu;
+
+const std::string kPreset = std::string(HSMU_SOURCE_DIR) + "/resources/presets/paper-condition-3.json";
+const std::string kElCentro =
+    std::string(HSMU_SHARED_DATA_DIR) + "/elcentro/elCentro_Peknold_NS_0.02s.AT2";
+
+void bmBoucWenStep(benchmark::State& state)
+{
+    BoucWenParameters p;
+    p.k0 = 1.0; p.alpha = 0.03; p.n = 2.0; p.beta = 2.5; p.gamma = 0.5;
+    p.deltaNu = 0.03; p.deltaEta = 0.03; p.uRef = 0.02; p.fRef = 20.0;
+    BoucWen law(p);
+    // A cyclic history of amplitude 0.04 rad in 400 steps per cycle (increments ~4e-4 rad,
+    // the size of a 0.01 s step of the frame).
+    long i = 0;
+    for (auto _ : state) {
+        const double u = 0.04 * std::sin(2.0 * M_PI * double(i++) / 400.0);
+        benchmark::DoNotOptimize(law.setTrialDeformation(u));
+        law.commit();
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(bmBoucWenStep);
+
+TestConfig frameConfig(bool elCentro)
+{
+    TestConfig cfg = loadConfigFile(kPreset);
+    if (elCentro)
+        cfg.groundMotion.file = kElCentro;
+    return cfg;
+}
+
+void bmFrameStep(benchmark::State& state)
+{
+    const TestConfig cfg = frameConfig(false);
+    auto test = buildHybridTest(cfg);
+    test->prepare();
+    for (auto _ : state) {
+        if (test->step() != HybridTest::StepResult::Advanced) {
+            state.PauseTiming();
+            test = buildHybridTest(cfg);
+            test->prepare();
+            state.ResumeTiming();
+        }
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(bmFrameStep);
+
+void bmWholeElCentroRun(benchmark::State& state)
+{
+    const bool have = std::filesystem::exists(kElCentro);
+    if (!have)
+        state.SetLabel("El Centro absent: built-in synthetic 30 s record");
+    const TestConfig cfg = frameConfig(have);
+    for (auto _ : state) {
+        auto test = buildHybridTest(cfg);
+        test->prepare();
+        while (test->step() == HybridTest::StepResult::Advanced) {
+        }
+        benchmark::DoNotOptimize(test->currentStep());
+    }
+}
+BENCHMARK(bmWholeElCentroRun)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+BENCHMARK_MAIN();
