@@ -2,7 +2,7 @@
 
 namespace hsmu {
 
-const char* toString(LawStatus status) {
+const char* lawStatusName(LawStatus status) {
     switch (status) {
     case LawStatus::Ok:
         return "ok";

@@ -23,8 +23,9 @@ enum class LawStatus {
     InvalidInput   ///< deformation is not finite
 };
 
-/// Words for a status (for messages; the GUI translates its own).
-const char* toString(LawStatus status);
+/// Words for a status (for messages; the GUI translates its own). Not named toString: Qt Test
+/// would find it by ADL in QCOMPARE and delete[] the literal.
+const char* lawStatusName(LawStatus status);
 
 class HysteresisLaw {
 public:

@@ -156,7 +156,7 @@ std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<doubl
     for (std::size_t i = 0; i < deformations.size(); ++i) {
         const LawStatus status = law.setTrialDeformation(deformations[i]);
         if (status != LawStatus::Ok) {
-            throw std::runtime_error(law.lawName() + ": " + toString(status) + " at point " +
+            throw std::runtime_error(law.lawName() + ": " + lawStatusName(status) + " at point " +
                                      std::to_string(i) + " (deformation " +
                                      formatExact(deformations[i]) + ")");
         }

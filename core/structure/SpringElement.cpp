@@ -37,7 +37,7 @@ ElementStatus SpringElement::setTrial(const Eigen::VectorXd& uFull)
 {
     const LawStatus s = m_law->setTrialDeformation(kinematicDeformation(uFull));
     if (s != LawStatus::Ok)
-        return ElementStatus::failure(name() + ": " + toString(s));
+        return ElementStatus::failure(name() + ": " + lawStatusName(s));
     return ElementStatus::success();
 }
 

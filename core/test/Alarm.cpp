@@ -2,7 +2,7 @@
 
 namespace hsmu {
 
-const char* toString(AlarmSeverity s)
+const char* alarmSeverityName(AlarmSeverity s)
 {
     switch (s) {
     case AlarmSeverity::Info: return "info";
@@ -12,7 +12,7 @@ const char* toString(AlarmSeverity s)
     return "?";
 }
 
-const char* toString(AlarmKind k)
+const char* alarmKindName(AlarmKind k)
 {
     switch (k) {
     case AlarmKind::LimitExceeded: return "limit exceeded";

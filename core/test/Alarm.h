@@ -25,7 +25,7 @@ struct Alarm {
     std::string message;
 };
 
-const char* toString(AlarmSeverity s);
-const char* toString(AlarmKind k);
+const char* alarmSeverityName(AlarmSeverity s);
+const char* alarmKindName(AlarmKind k);
 
 } // namespace hsmu

@@ -10,7 +10,7 @@
 
 namespace hsmu {
 
-const char* toString(HybridTest::State s)
+const char* testStateName(HybridTest::State s)
 {
     switch (s) {
     case HybridTest::State::Created: return "created";

@@ -89,6 +89,6 @@ private:
     StepRecord m_record;
 };
 
-const char* toString(HybridTest::State s);
+const char* testStateName(HybridTest::State s);
 
 } // namespace hsmu

@@ -4,16 +4,16 @@
 #include "core/hysteresis/BoucWen.h"
 
 #include "BoucWenReference.h"
+#include "LawTestSupport.h"
 
 #include <QtTest>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <vector>
 
 using namespace hsmu;
+using namespace hsmu::testsupport;
 
 namespace {
 
@@ -33,55 +33,11 @@ BoucWenParameters paperParameters(double deltaNu = 0.0, double deltaEta = 0.0) {
     return p;
 }
 
-// u(t) = amplitude sin(2 pi t) at t = i / pointsPerCycle, i = 1 .. cycles * pointsPerCycle.
-std::vector<double> sineHistory(double amplitude, int cycles, int pointsPerCycle) {
-    std::vector<double> u;
-    for (int i = 1; i <= cycles * pointsPerCycle; ++i) {
-        u.push_back(amplitude * std::sin(2.0 * std::numbers::pi * i / pointsPerCycle));
-    }
-    return u;
-}
-
-struct Run {
-    std::vector<double> force, tangent;
-    bool ok = true;
-};
-
-Run drive(HysteresisLaw& law, const std::vector<double>& u) {
-    Run run;
-    for (const double ui : u) {
-        if (law.setTrialDeformation(ui) != LawStatus::Ok) {
-            run.ok = false;
-            return run;
-        }
-        run.force.push_back(law.trialForce());
-        run.tangent.push_back(law.trialTangent());
-        law.commit();
-    }
-    return run;
-}
+using testsupport::drive;
 
 Run drive(const BoucWenParameters& p, const std::vector<double>& u) {
     BoucWen law(p);
     return drive(law, u);
-}
-
-double peakAbs(const std::vector<double>& v) {
-    double m = 0.0;
-    for (const double x : v) {
-        m = std::max(m, std::abs(x));
-    }
-    return m;
-}
-
-// Max |a[i * strideA] - b[i * strideB]| over the common points.
-double maxDifference(const std::vector<double>& a, int strideA, const std::vector<double>& b,
-                     int strideB) {
-    double m = 0.0;
-    for (std::size_t i = 0; (i + 1) * strideA <= a.size() && (i + 1) * strideB <= b.size(); ++i) {
-        m = std::max(m, std::abs(a[(i + 1) * strideA - 1] - b[(i + 1) * strideB - 1]));
-    }
-    return m;
 }
 
 } // namespace
@@ -132,7 +88,7 @@ void TestBoucWen::monotonicLoadingReachesUltimateZ() {
         // (and zu is an exact fixed point of the backward-Euler map).
         BoucWen law(p);
         for (int i = 1; i <= 4000; ++i) {
-            QCOMPARE(law.setTrialDeformation(i * 0.01 * p.uRef), LawStatus::Ok);
+            QVERIFY(law.setTrialDeformation(i * 0.01 * p.uRef) == LawStatus::Ok);
             law.commit();
         }
         QVERIFY(std::abs(law.committedState().z - closedForm) <= 1e-12 * closedForm);
@@ -145,27 +101,24 @@ void TestBoucWen::monotonicLoadingReachesUltimateZ() {
 }
 
 void TestBoucWen::cyclesDissipateEnergy() {
-    // Trapezoidal integral of F du over each full cycle of a +-4 yield sine: the hysteretic
-    // loop has area of order 4 zu (1 - alpha) k0 * 2 x_max in normalized units; require at least
-    // a tenth of that bound per cycle (a positive area, not round-off).
+    // Trapezoidal integral of F du over each closed cycle of a +-4 yield sine (x_max = 2).
+    // The elastic part alpha k0 x does no net work; the hysteretic part lies inside the
+    // rectangle |z| <= zu, |x| <= x_max, so 0 < W < (2 zu)(2 x_max)(1 - alpha) k0 fRef uRef.
+    // Require W above 0.3 of that bound (a real loop, not round-off; measured 0.68).
     const BoucWenParameters p = paperParameters(0.02, 0.02);
     const int perCycle = 400;
     std::vector<double> u{0.0};
-    for (const double ui : sineHistory(4.0 * 0.5 * p.uRef, 3, perCycle)) {
+    for (const double ui : sineHistory(2.0 * p.uRef, 3, perCycle)) {
         u.push_back(ui);
     }
     const Run run = drive(p, std::vector<double>(u.begin() + 1, u.end()));
     QVERIFY(run.ok);
     std::vector<double> f{0.0};
     f.insert(f.end(), run.force.begin(), run.force.end());
-    const double scale = 4.0 * 0.5 * 2.0 * 2.0 * p.fRef * p.uRef;
-    for (int c = 0; c < 3; ++c) {
-        double energy = 0.0;
-        for (int i = c * perCycle; i < (c + 1) * perCycle; ++i) {
-            energy += 0.5 * (f[i] + f[i + 1]) * (u[i + 1] - u[i]);
-        }
-        qInfo() << "DBG energy" << energy / scale;
-        QVERIFY2(energy > 0.1 * scale, qPrintable(QString::number(energy / scale)));
+    const double bound = 2.0 * 0.5 * 2.0 * 2.0 * (1.0 - p.alpha) * p.k0 * p.fRef * p.uRef;
+    for (std::size_t c = 0; c < 3; ++c) {
+        const double w = work(u, f, c * perCycle, (c + 1) * perCycle);
+        QVERIFY2(w > 0.3 * bound && w < bound, qPrintable(QString::number(w / bound)));
     }
 }
 
@@ -195,9 +148,6 @@ void TestBoucWen::degradationLowersStrengthAndStiffness() {
         unloadingStiffness(stiffness) < 0.9 * unloadingStiffness(plain),
         qPrintable(QString::number(unloadingStiffness(stiffness) / unloadingStiffness(plain))));
     QVERIFY(unloadingStiffness(plain) > 0.0);
-    qInfo() << "DBG degr" << thirdCyclePeak(strength) / thirdCyclePeak(plain)
-            << unloadingStiffness(stiffness) / unloadingStiffness(plain)
-            << unloadingStiffness(plain);
 }
 
 void TestBoucWen::backwardEulerConvergesAtFirstOrder() {
@@ -217,7 +167,6 @@ void TestBoucWen::backwardEulerConvergesAtFirstOrder() {
         errors[k] = maxDifference(run.force, 1, ref.force, reference / n);
     }
     const double r1 = errors[0] / errors[1], r2 = errors[1] / errors[2];
-    qInfo() << "DBG conv" << errors[0] << errors[1] << errors[2] << r1 << r2;
     QVERIFY2(
         r1 > 1.7 && r1 < 2.3 && r2 > 1.7 && r2 < 2.3,
         qPrintable(QStringLiteral("errors %1 %2 %3").arg(errors[0]).arg(errors[1]).arg(errors[2])));
@@ -227,7 +176,8 @@ void TestBoucWen::matchesIndependentRk4() {
     // Two cycles of +-8 yields with degradation. RK4 with 4 sub-steps per point on 20000 points
     // per cycle is accurate to far below 1e-6 of the peak; backward Euler on the same points has
     // a first-order error of about 4e-4 of the peak: require 1e-3. The Richardson extrapolation
-    // 2 F(2N) - F(N) of the backward-Euler runs removes the first-order term: require 2e-5.
+    // 2 F(2N) - F(N) of the backward-Euler runs removes the first-order term: require 1e-6
+    // (measured 1.7e-7).
     const BoucWenParameters p = paperParameters(0.05, 0.05);
     const int perCycle = 20000;
     const auto u = sineHistory(4.0 * p.uRef, 2, perCycle);
@@ -243,8 +193,7 @@ void TestBoucWen::matchesIndependentRk4() {
         extrapolated[i] = 2.0 * run2.force[2 * i + 1] - run.force[i];
     }
     const double diffExtrapolated = maxDifference(extrapolated, 1, rk4, 1);
-    qInfo() << "DBG rk4" << diff / peak << diffExtrapolated / peak << peak;
-    QVERIFY2(diffExtrapolated <= 2e-5 * peak, qPrintable(QString::number(diffExtrapolated / peak)));
+    QVERIFY2(diffExtrapolated <= 1e-6 * peak, qPrintable(QString::number(diffExtrapolated / peak)));
 }
 
 void TestBoucWen::commitRevertAndCloneAreExact() {
@@ -256,18 +205,18 @@ void TestBoucWen::commitRevertAndCloneAreExact() {
     const BoucWenState committed = law.committedState();
     const double fCommitted = law.committedForce();
 
-    QCOMPARE(law.setTrialDeformation(u[150]), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u[150]) == LawStatus::Ok);
     const double f1 = law.trialForce(), k1 = law.trialTangent();
     const BoucWenState s1 = law.trialState();
     QVERIFY(law.committedState().z == committed.z && law.committedState().e == committed.e);
     law.revert();
     QVERIFY(law.trialForce() == fCommitted && law.trialState().z == committed.z);
-    QCOMPARE(law.setTrialDeformation(u[150]), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u[150]) == LawStatus::Ok);
     QVERIFY(law.trialForce() == f1 && law.trialTangent() == k1 && law.trialState().z == s1.z &&
             law.trialState().e == s1.e);
     // Another trial without revert also starts from the committed state.
-    QCOMPARE(law.setTrialDeformation(u[150] + 0.5 * p.uRef), LawStatus::Ok);
-    QCOMPARE(law.setTrialDeformation(u[150]), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u[150] + 0.5 * p.uRef) == LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u[150]) == LawStatus::Ok);
     QVERIFY(law.trialForce() == f1 && law.trialTangent() == k1);
 
     // A clone carries the pending trial and reproduces the rest of the history exactly.
@@ -288,7 +237,7 @@ void TestBoucWen::hugeIncrementIsSubStepped() {
     for (const double degradation : {0.0, 0.05}) {
         const BoucWenParameters p = paperParameters(degradation, degradation);
         const BoucWenIncrement inc = BoucWen::integrate(p, BoucWenState{}, 25.0);
-        QCOMPARE(inc.status, LawStatus::Ok);
+        QVERIFY(inc.status == LawStatus::Ok);
         QVERIFY(inc.subSteps >= 64 && inc.subSteps <= 4096);
 
         BoucWen coarse(p);
@@ -308,17 +257,16 @@ void TestBoucWen::hugeIncrementIsSubStepped() {
         // sub-steps of up to 0.25 yield deformations: allow 1e-3 (measured 7e-5).
         const double tol = degradation == 0.0 ? 1e-10 : 1e-3;
         const double fPeak = f.force[2499], fEnd = f.force.back();
-        qInfo() << "DBG huge" << inc.subSteps << c.force[0] / fPeak - 1.0
-                << c.force[1] / fEnd - 1.0;
         QVERIFY2(std::abs(c.force[0] - fPeak) <= tol * std::abs(fPeak),
                  qPrintable(QString::number(c.force[0] / fPeak - 1.0)));
         QVERIFY2(std::abs(c.force[1] - fEnd) <= tol * std::abs(fEnd),
                  qPrintable(QString::number(c.force[1] / fEnd - 1.0)));
     }
     // Without sub-stepping the same increment fails, and the start state is returned.
-    const BoucWenState from{0.1, 0.2};
+    // (From z = 0 the first Newton iterate is z = dx A0 = 1000, far beyond the ultimate z.)
+    const BoucWenState from{};
     const BoucWenIncrement failed = BoucWen::integrate(paperParameters(), from, 1000.0, 0);
-    QCOMPARE(failed.status, LawStatus::NoConvergence);
+    QVERIFY(failed.status == LawStatus::NoConvergence);
     QVERIFY(failed.state.z == from.z && failed.state.e == from.e);
 }
 
@@ -353,7 +301,7 @@ void TestBoucWen::invalidInputKeepsCommittedState() {
          {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
           -std::numeric_limits<double>::infinity()}) {
         QVERIFY(law.setTrialDeformation(u + 0.1 * p.uRef) == LawStatus::Ok);
-        QCOMPARE(law.setTrialDeformation(bad), LawStatus::InvalidInput);
+        QVERIFY(law.setTrialDeformation(bad) == LawStatus::InvalidInput);
         QVERIFY(law.committedState().z == committed.z && law.committedState().e == committed.e);
         QVERIFY(law.committedDeformation() == u && law.committedForce() == f);
         QVERIFY(law.trialDeformation() == u && law.trialForce() == f);
@@ -362,8 +310,8 @@ void TestBoucWen::invalidInputKeepsCommittedState() {
     }
     const BoucWenIncrement inc =
         BoucWen::integrate(p, committed, std::numeric_limits<double>::quiet_NaN());
-    QCOMPARE(inc.status, LawStatus::InvalidInput);
-    QCOMPARE(std::string(toString(LawStatus::InvalidInput)), std::string("invalid input"));
+    QVERIFY(inc.status == LawStatus::InvalidInput);
+    QCOMPARE(std::string(lawStatusName(LawStatus::InvalidInput)), std::string("invalid input"));
 }
 
 void TestBoucWen::tangentMatchesFiniteDifference() {
@@ -373,24 +321,24 @@ void TestBoucWen::tangentMatchesFiniteDifference() {
     const BoucWenParameters p = paperParameters(0.05, 0.05);
     BoucWen law(p);
     for (int i = 1; i <= 30; ++i) {
-        QCOMPARE(law.setTrialDeformation(i * 0.01 * p.uRef), LawStatus::Ok);
+        QVERIFY(law.setTrialDeformation(i * 0.01 * p.uRef) == LawStatus::Ok);
         law.commit();
     }
     const double u = law.committedDeformation(), f = law.committedForce();
     const double h = 1e-7 * p.uRef;
-    QCOMPARE(law.setTrialDeformation(u + h), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u + h) == LawStatus::Ok);
     const double kLoading = law.trialTangent();
     QVERIFY(std::abs((law.trialForce() - f) / h - kLoading) <= 1e-5 * kLoading);
-    QCOMPARE(law.setTrialDeformation(u - h), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u - h) == LawStatus::Ok);
     const double kUnloading = law.trialTangent();
     QVERIFY(std::abs((f - law.trialForce()) / h - kUnloading) <= 1e-5 * kUnloading);
     QVERIFY(kUnloading > 1.1 * kLoading); // beta > gamma: unloading is stiffer
     // Zero increment: the tangent follows the direction of the last committed increment.
-    QCOMPARE(law.setTrialDeformation(u), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u) == LawStatus::Ok);
     QVERIFY(std::abs(law.trialTangent() - kLoading) <= 1e-5 * kLoading);
-    QCOMPARE(law.setTrialDeformation(u - h), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u - h) == LawStatus::Ok);
     law.commit();
-    QCOMPARE(law.setTrialDeformation(u - h), LawStatus::Ok);
+    QVERIFY(law.setTrialDeformation(u - h) == LawStatus::Ok);
     QVERIFY(std::abs(law.trialTangent() - kUnloading) <= 1e-5 * kUnloading);
 }
 

@@ -1,0 +1,35 @@
+#include "core/output/RunStatistics.h"
+
+#include <cmath>
+
+namespace hsmu {
+
+namespace {
+void keepPeak(double& peak, double value)
+{
+    if (std::isfinite(value) && std::abs(value) > peak)
+        peak = std::abs(value);
+}
+} // namespace
+
+RunStatistics::RunStatistics(RunLayout layout)
+    : m_layout(std::move(layout)), m_peakU(m_layout.dofNames.size(), 0.0),
+      m_peakForce(m_layout.elements.size(), 0.0),
+      m_peakDeformation(m_layout.elements.size(), 0.0)
+{
+}
+
+void RunStatistics::onStep(const StepRecord& record)
+{
+    ++m_count;
+    m_last = record;
+    keepPeak(m_peakAg, record.groundAcceleration);
+    for (std::size_t i = 0; i < m_peakU.size() && Eigen::Index(i) < record.u.size(); ++i)
+        keepPeak(m_peakU[i], record.u[Eigen::Index(i)]);
+    for (std::size_t i = 0; i < m_peakForce.size() && i < record.elements.size(); ++i) {
+        keepPeak(m_peakForce[i], record.elements[i].force);
+        keepPeak(m_peakDeformation[i], record.elements[i].deformation);
+    }
+}
+
+} // namespace hsmu

@@ -1,0 +1,41 @@
+#pragma once
+// RunSummary: the summary of a run as JSON (DIR/summary.json of `hsmu run`), built from the
+// test and the RunStatistics that observed it. Keys (units in the names or beside values):
+//   config {name, file}, state, steps, total_steps, test_time_s, wall_time_s, dt_s,
+//   integrator, stability {omega_max_rad_s, omega_dt, limit, stable, message},
+//   final {step, time_s, displacement_m {dof: m}, force {element: {value, unit}}},
+//   peak_ground_acceleration_m_s2,
+//   peak_displacement_m {dof: m}, peak_force {element: {value, unit}},
+//   peak_deformation {element: {value, unit}},
+//   alarms [{time_s, step, severity, kind, message}], hold_reason (string or null).
+// Non-finite numbers (e.g. an unconditional stability limit) are written as null.
+// Thread rules: call once the test stopped stepping.
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace hsmu {
+
+class HybridTest;
+class RunStatistics;
+
+struct RunInfo {
+    std::string configName; ///< TestConfig::name
+    std::string configFile; ///< path or "preset <name>"
+    double wallTimeS = 0.0; ///< wall-clock time spent stepping [s]
+};
+
+/// The reason the test is holding (the last critical alarm), if it is holding.
+std::optional<std::string> holdReason(const HybridTest& test);
+
+nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats,
+                              const RunInfo& info);
+
+/// makeRunSummary written with 2-space indentation. Throws std::runtime_error naming the file
+/// if it cannot be written.
+void writeSummaryJson(const std::string& path, const HybridTest& test,
+                      const RunStatistics& stats, const RunInfo& info);
+
+} // namespace hsmu

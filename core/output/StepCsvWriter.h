@@ -1,0 +1,54 @@
+#pragma once
+// StepCsvWriter: a StepObserver writing one CSV row per committed step to a file.
+//
+// Header (units in the column names, element units from ElementUnits):
+//   time_s,ag_m_s2,<dof>_u_m,<dof>_v_m_s,<dof>_a_m_s2 (per DOF),
+//   <element>_deformation_<unit>,<element>_force_<unit> (per element),
+//   <element>_commanded_<unit> (specimens only, after their force column)
+// e.g. "Element 1_deformation_rad,Element 1_force_kNm,Element 1_commanded_rad".
+// Values are written like "%.10g" with a '.' decimal point whatever the locale.
+// The file is flushed every kFlushInterval rows and by finish() / the destructor, so an
+// interrupted run keeps (almost) every committed step.
+//
+// Thread rules: onStep() runs on the test's thread; construct, finish and destroy on the same
+// thread or after the test has stopped stepping.
+
+#include "core/output/RunLayout.h"
+#include "core/test/StepRecord.h"
+
+#include <fstream>
+#include <string>
+
+namespace hsmu {
+
+class StepCsvWriter final : public StepObserver {
+public:
+    static constexpr int kFlushInterval = 1000;
+
+    /// Opens (truncates) path and writes the header. Throws std::runtime_error naming the file
+    /// if it cannot be opened.
+    StepCsvWriter(const std::string& path, const RunLayout& layout);
+    ~StepCsvWriter() override;
+    StepCsvWriter(const StepCsvWriter&) = delete;
+    StepCsvWriter& operator=(const StepCsvWriter&) = delete;
+
+    /// The header line (without the newline) for a layout.
+    static std::string header(const RunLayout& layout);
+
+    void onStep(const StepRecord& record) override;
+    /// Flush and close. False if any write failed (disk full, ...).
+    bool finish();
+
+    int rowsWritten() const { return m_rows; }
+    const std::string& path() const { return m_path; }
+
+private:
+    std::string m_path;
+    RunLayout m_layout;
+    std::ofstream m_out;
+    std::string m_line;
+    int m_rows = 0;
+    bool m_failed = false;
+};
+
+} // namespace hsmu
