@@ -13,10 +13,10 @@ namespace hsmu {
 
 namespace {
 
+using detail::excerpt;
 using detail::formatNumber;
 using detail::kBlanks;
 using detail::parseNumber;
-using detail::excerpt;
 using detail::splitFields;
 
 constexpr std::size_t kHeaderLines = 4;
@@ -28,8 +28,12 @@ struct At2Header {
     std::string dtText;
 };
 
-bool isAlpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool isAlpha(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) != 0;
+}
+bool isDigit(char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
 
 // A number followed only by letters ("SEC"), as written after "DT=".
 bool parseLeadingNumber(std::string_view token, double& value) {
@@ -168,7 +172,8 @@ bool parseGluedAtSigns(const std::vector<std::string_view>& fields, std::vector<
     for (std::string_view field : fields) {
         std::size_t start = 0;
         for (std::size_t i = 1; i < field.size(); ++i) {
-            const char prev = static_cast<char>(std::toupper(static_cast<unsigned char>(field[i - 1])));
+            const char prev =
+                static_cast<char>(std::toupper(static_cast<unsigned char>(field[i - 1])));
             if ((field[i] == '-' || field[i] == '+') && prev != 'E' && prev != 'D') {
                 pieces.push_back(field.substr(start, i - start));
                 start = i;
@@ -208,12 +213,11 @@ GroundMotion readAt2(const std::filesystem::path& path, std::optional<Accelerati
                                 "expected 'NPTS=..., DT=...' header (or 'n dt NPTS, DT'), found " +
                                     excerpt(lines[3]));
     if (!(header.npts >= 1.0 && header.npts <= 1e9 && std::floor(header.npts) == header.npts))
-        throw GroundMotionError(name, 4,
-                                "NPTS must be a positive whole number, found " +
-                                    excerpt(header.nptsText));
+        throw GroundMotionError(
+            name, 4, "NPTS must be a positive whole number, found " + excerpt(header.nptsText));
     if (!(std::isfinite(header.dt) && header.dt > 0.0))
-        throw GroundMotionError(name, 4, "DT must be a time step > 0 s, found " +
-                                             excerpt(header.dtText));
+        throw GroundMotionError(name, 4,
+                                "DT must be a time step > 0 s, found " + excerpt(header.dtText));
     const auto npts = static_cast<std::size_t>(header.npts);
 
     const std::string upperHeader =

@@ -10,9 +10,9 @@ namespace hsmu {
 
 namespace {
 
+using detail::excerpt;
 using detail::formatNumber;
 using detail::parseNumber;
-using detail::excerpt;
 using detail::splitFields;
 using detail::stripComment;
 
@@ -60,7 +60,9 @@ void checkDt(const std::string& name, double dt) {
         throw GroundMotionError(name, 0, "the time step dt must be > 0 s, got " + formatNumber(dt));
 }
 
-bool sameStep(double a, double b) { return std::abs(a - b) <= kUniformStepTolerance * b; }
+bool sameStep(double a, double b) {
+    return std::abs(a - b) <= kUniformStepTolerance * b;
+}
 
 } // namespace
 
@@ -99,12 +101,12 @@ GroundMotion readTimeAcceleration(const std::filesystem::path& path, Acceleratio
     }
     if (!sameStep(dt + worstDeviation, dt)) {
         const double step = samples[worst].values[0] - samples[worst - 1].values[0];
-        throw GroundMotionError(
-            file.name, samples[worst].line,
-            "non-uniform time step: " + formatNumber(samples[worst].values[0]) + " s follows " +
-                formatNumber(samples[worst - 1].values[0]) + " s (step " + formatNumber(step) +
-                " s, mean step " + formatNumber(dt) +
-                " s); a uniform step is required (tolerance 1e-6 relative)");
+        throw GroundMotionError(file.name, samples[worst].line,
+                                "non-uniform time step: " + formatNumber(samples[worst].values[0]) +
+                                    " s follows " + formatNumber(samples[worst - 1].values[0]) +
+                                    " s (step " + formatNumber(step) + " s, mean step " +
+                                    formatNumber(dt) +
+                                    " s); a uniform step is required (tolerance 1e-6 relative)");
     }
 
     GroundMotion motion;
@@ -140,7 +142,10 @@ GroundMotionFormat detectGroundMotionFormat(const std::filesystem::path& path) {
         return GroundMotionFormat::At2;
     const std::size_t headerLines = std::min<std::size_t>(4, file.lines.size());
     for (std::size_t i = 0; i < headerLines; ++i) {
-        if (detail::toUpper(file.lines[i]).find("NPTS") != std::string::npos)
+        const std::string& line = file.lines[i];
+        const std::size_t first = line.find_first_not_of(detail::kBlanks);
+        const bool comment = first != std::string::npos && line[first] == '#';
+        if (!comment && detail::toUpper(line).find("NPTS") != std::string::npos)
             return GroundMotionFormat::At2;
     }
     for (const std::string& line : file.lines) {

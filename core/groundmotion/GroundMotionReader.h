@@ -49,9 +49,10 @@ GroundMotion readTimeAcceleration(const std::filesystem::path& path,
 GroundMotion readSingleColumn(const std::filesystem::path& path, double dt,
                               AccelerationUnit unit = AccelerationUnit::G);
 
-/// Format by content: At2 if any of the first 4 lines contains "NPTS" (or the extension is
-/// .at2); otherwise by the number of fields on the first data line: 2 -> TimeAcceleration,
-/// 1 -> SingleColumn, other counts -> SingleColumn (values in reading order).
+/// Format by content: At2 if the extension is .at2 (any case) or one of the first 4 lines,
+/// not a '#' comment, contains "NPTS"; otherwise by the number of fields on the first data
+/// line: 2 -> TimeAcceleration, any other count -> SingleColumn (values in reading order).
+/// Throws GroundMotionError for a missing or empty file.
 GroundMotionFormat detectGroundMotionFormat(const std::filesystem::path& path);
 
 /// Read any supported file. unit: for At2 overrides the header, for the text formats it is the

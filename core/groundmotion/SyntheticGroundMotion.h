@@ -30,9 +30,9 @@ inline constexpr double kSyntheticOmegaG = 15.707963267948966; ///< 5 pi rad/s (
 inline constexpr double kSyntheticZetaG = 0.6;
 inline constexpr double kSyntheticOmegaF = 1.5707963267948966; ///< 0.5 pi rad/s (0.25 Hz)
 inline constexpr double kSyntheticZetaF = 0.6;
-inline constexpr double kSyntheticRiseTime = 2.0;    ///< end of the quadratic ramp [s]
-inline constexpr double kSyntheticStrongEnd = 12.0;  ///< end of the strong phase [s]
-inline constexpr double kSyntheticDecayRate = 0.3;   ///< envelope decay after it [1/s]
+inline constexpr double kSyntheticRiseTime = 2.0;   ///< end of the quadratic ramp [s]
+inline constexpr double kSyntheticStrongEnd = 12.0; ///< end of the strong phase [s]
+inline constexpr double kSyntheticDecayRate = 0.3;  ///< envelope decay after it [1/s]
 
 /// The synthetic record: floor(duration / dt + 1e-9) + 1 samples at dt [s], peak |a| =
 /// pgaG [g]. name "synthetic Kanai-Tajimi (seed N)", source "builtin".

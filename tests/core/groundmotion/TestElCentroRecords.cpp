@@ -54,8 +54,8 @@ private slots:
         QVERIFY(std::abs(g.pga() / kStandardGravity - 0.31882) < 1e-4);
         QVERIFY(std::abs(g.pga() - 3.127) < 1e-3);
         QVERIFY(std::abs(g.pgaTime() - 2.02) < 1e-9); // index 101
-        QVERIFY(g.acceleration[101] < 0.0);            // the peak is negative
-        QCOMPARE(g.acceleration.back(), 0.0);          // the artificial ramp ends at 0.00000
+        QVERIFY(g.acceleration[101] < 0.0);           // the peak is negative
+        QCOMPARE(g.acceleration.back(), 0.0);         // the artificial ramp ends at 0.00000
         QVERIFY(std::abs(g.acceleration.front() - 0.00630 * kStandardGravity) < 1e-15);
     }
 
@@ -73,8 +73,8 @@ private slots:
 
     void textConversionsMatchAt2() {
         REQUIRE_DATA();
-        for (const auto& [at2, text] : {std::pair{kPeknoldAt2, kPeknoldText},
-                                        std::pair{kPeerAt2, kPeerText}}) {
+        for (const auto& [at2, text] :
+             {std::pair{kPeknoldAt2, kPeknoldText}, std::pair{kPeerAt2, kPeerText}}) {
             const GroundMotion a = readAt2(at2);
             const GroundMotion b = readTimeAcceleration(text, AccelerationUnit::G);
             QCOMPARE(b.acceleration.size(), a.acceleration.size());
@@ -111,9 +111,9 @@ private slots:
         QCOMPARE(readGroundMotion(kPeknoldAt2, GroundMotionFormat::Auto, std::nullopt, 0.02)
                      .acceleration.size(),
                  std::size_t(1559));
-        QVERIFY_THROWS_EXCEPTION(GroundMotionError,
-                                 readGroundMotion(kPeknoldAt2, GroundMotionFormat::Auto,
-                                                  std::nullopt, 0.01));
+        QVERIFY_THROWS_EXCEPTION(
+            GroundMotionError,
+            readGroundMotion(kPeknoldAt2, GroundMotionFormat::Auto, std::nullopt, 0.01));
     }
 };
 

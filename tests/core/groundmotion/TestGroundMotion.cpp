@@ -22,8 +22,12 @@ GroundMotion sampled(double dt, std::size_t n, double (*f)(double)) {
     return g;
 }
 
-double ramp(double t) { return 0.5 + 3.0 * t; }
-double sine(double t) { return std::sin(2.0 * std::numbers::pi * t); }
+double ramp(double t) {
+    return 0.5 + 3.0 * t;
+}
+double sine(double t) {
+    return std::sin(2.0 * std::numbers::pi * t);
+}
 
 } // namespace
 

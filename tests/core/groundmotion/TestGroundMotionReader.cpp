@@ -18,7 +18,9 @@ namespace {
 
 const double g = kStandardGravity;
 
-bool near(double a, double b, double tol = 1e-12) { return std::abs(a - b) <= tol; }
+bool near(double a, double b, double tol = 1e-12) {
+    return std::abs(a - b) <= tol;
+}
 
 } // namespace
 
@@ -35,13 +37,14 @@ private slots:
     void initTestCase() { QVERIFY(m_dir.isValid()); }
 
     void ngaWest2Layout() {
-        const std::string path = write("RSN_TEST.AT2", "PEER NGA STRONG MOTION DATABASE RECORD\n"
-                                                       "Test event, 1/1/2000, Test station, 090\n"
-                                                       "ACCELERATION TIME SERIES IN UNITS OF G\n"
-                                                       "NPTS=    7, DT=   .0050 SEC\n"
-                                                       "  .1000000E-01 -.2000000E-01  .3000000E+00\n"
-                                                       " -.4000000E-02  .5000000E-02\n"
-                                                       "  .6000000E-03 -.7000000E-01\n");
+        const std::string path =
+            write("RSN_TEST.AT2", "PEER NGA STRONG MOTION DATABASE RECORD\n"
+                                  "Test event, 1/1/2000, Test station, 090\n"
+                                  "ACCELERATION TIME SERIES IN UNITS OF G\n"
+                                  "NPTS=    7, DT=   .0050 SEC\n"
+                                  "  .1000000E-01 -.2000000E-01  .3000000E+00\n"
+                                  " -.4000000E-02  .5000000E-02\n"
+                                  "  .6000000E-03 -.7000000E-01\n");
         const GroundMotion m = readAt2(path);
         QCOMPARE(m.acceleration.size(), std::size_t(7));
         QCOMPARE(m.dt, 0.005);
@@ -106,7 +109,8 @@ private slots:
 
     void unitsFromHeader() {
         const auto header = [](const char* unitsLine) {
-            return std::string("title\nstation\n") + unitsLine + "\nNPTS=  2, DT= .01 SEC\n1.0 -2.0\n";
+            return std::string("title\nstation\n") + unitsLine +
+                   "\nNPTS=  2, DT= .01 SEC\n1.0 -2.0\n";
         };
         struct Case {
             const char* file;
@@ -133,7 +137,8 @@ private slots:
     void textFormatsAndUnits() {
         const std::string twoCol = write("two.csv", "# time, accel\n"
                                                     "1.00, 10\n1.02; -20\n1.04\t30  # comment\n\n");
-        const GroundMotion m = readTimeAcceleration(twoCol, AccelerationUnit::CentimetersPerSecond2);
+        const GroundMotion m =
+            readTimeAcceleration(twoCol, AccelerationUnit::CentimetersPerSecond2);
         QCOMPARE(m.acceleration.size(), std::size_t(3));
         QVERIFY(near(m.dt, 0.02));
         QVERIFY(near(m.acceleration[1], -0.2, 1e-15)); // cm/s^2 -> m/s^2
@@ -145,8 +150,8 @@ private slots:
         QCOMPARE(s.acceleration, (std::vector<double>{0.1, -0.2, 0.3}));
         QCOMPARE(s.dt, 0.005);
         QCOMPARE(detectGroundMotionFormat(oneCol), GroundMotionFormat::SingleColumn);
-        const GroundMotion viaAuto = readGroundMotion(oneCol, GroundMotionFormat::Auto,
-                                                      AccelerationUnit::G, 0.01);
+        const GroundMotion viaAuto =
+            readGroundMotion(oneCol, GroundMotionFormat::Auto, AccelerationUnit::G, 0.01);
         QVERIFY(near(viaAuto.acceleration[2], 0.3 * g, 1e-15));
         QCOMPARE(viaAuto.name, std::string("one.txt"));
         QCOMPARE(viaAuto.source, oneCol);
@@ -222,19 +227,19 @@ private slots:
 
     void emptyAndMissingFiles() {
         const std::string empty = write("empty.AT2", "");
-        for (const std::string& msg : {errorOf([&] { readAt2(empty); }),
-                                       errorOf([&] { readTimeAcceleration(empty); }),
-                                       errorOf([&] { readSingleColumn(empty, 0.01); }),
-                                       errorOf([&] { readGroundMotion(empty); })})
-            QVERIFY2(containsAll(msg, {"empty.AT2", "empty"}), msg.c_str());
+        for (const std::string& msg :
+             {errorOf([&] { readAt2(empty); }), errorOf([&] { readTimeAcceleration(empty); }),
+              errorOf([&] { readSingleColumn(empty, 0.01); }),
+              errorOf([&] { readGroundMotion(empty); })})
+            QVERIFY2(containsAll(msg, {"empty.AT2", "file is empty"}), msg.c_str());
 
         const std::string comments = write("comments.txt", "# nothing here\n\n");
         const std::string msg = errorOf([&] { readTimeAcceleration(comments); });
         QVERIFY2(containsAll(msg, {"comments.txt", "no data lines"}), msg.c_str());
 
         const std::string missing = QDir(m_dir.path()).filePath("missing.AT2").toStdString();
-        for (const std::string& msg2 : {errorOf([&] { readAt2(missing); }),
-                                        errorOf([&] { readGroundMotion(missing); })})
+        for (const std::string& msg2 :
+             {errorOf([&] { readAt2(missing); }), errorOf([&] { readGroundMotion(missing); })})
             QVERIFY2(containsAll(msg2, {"missing.AT2", "does not exist"}), msg2.c_str());
     }
 
