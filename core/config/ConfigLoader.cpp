@@ -1,5 +1,8 @@
 #include "core/config/ConfigLoader.h"
 
+#include "core/hysteresis/HysteresisLaw.h"
+#include "core/hysteresis/LawFactory.h"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -17,6 +20,11 @@ MaterialSpec parseMaterial(const JsonCursor& c)
         if (it.key() == "law")
             continue;
         m.params[it.key()] = c.number(it.key());
+    }
+    try { // validate now, so the message carries the field path
+        makeLaw(m.law, m.params);
+    } catch (const std::exception& e) {
+        c.fail("", e.what());
     }
     return m;
 }

@@ -89,7 +89,7 @@ GroundMotion buildGroundMotion(const GroundMotionSpec& g, const std::string& con
         gm = makeSyntheticGroundMotion(g.seed);
     } else {
         std::filesystem::path p(g.file);
-        if (p.is_relative() && !configPath.empty() && !std::filesystem::exists(p))
+        if (p.is_relative() && !configPath.empty())
             p = std::filesystem::path(configPath).parent_path() / p;
         GroundMotionFormat format = GroundMotionFormat::Auto;
         if (g.format == "at2")

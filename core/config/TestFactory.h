@@ -29,7 +29,8 @@ std::unique_ptr<ExperimentalControl> buildVirtualSpecimen(const ElementSpec& spe
 std::unique_ptr<Structure> buildStructure(const TestConfig& cfg,
                                           const ControlFactory& controls = {});
 std::unique_ptr<Integrator> buildIntegrator(const AnalysisSpec& a);
-/// The record the spec names: a file (relative paths from the configuration's folder) or the
+/// The record the spec names: a file (a relative path is taken from the configuration's
+/// folder; callers that take a path from the command line make it absolute first) or the
 /// built-in synthetic record; scaled, not yet resampled.
 GroundMotion buildGroundMotion(const GroundMotionSpec& g, const std::string& configPath);
 std::unique_ptr<HybridTest> buildHybridTest(const TestConfig& cfg,

@@ -22,7 +22,7 @@ ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
 {
     // Defence in depth: the test checks every target before sending any, and so do we.
     if (auto why = targetViolation(uFull))
-        return ElementStatus::failure(*why);
+        return ElementStatus::limitReached(*why);
     const double target = kinematicDeformation(uFull);
     if (ControlResult r = m_control->setTarget(target); !r.ok)
         return ElementStatus::failure(name() + ": " + r.reason);
@@ -32,7 +32,7 @@ ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
         return ElementStatus::failure(name() + ": " + r.reason);
     m_measured = m;
     if (auto why = m_limits.violationOfForce(m.force))
-        return ElementStatus::failure(name() + ": " + *why);
+        return ElementStatus::limitReached(name() + ": " + *why);
     return ElementStatus::success();
 }
 

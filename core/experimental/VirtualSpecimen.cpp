@@ -82,8 +82,11 @@ ControlResult VirtualSpecimen::setTarget(double d)
         return ControlResult::fault(m_holdReason);
     }
     const double cumulative = m_cumulative + std::abs(m_achieved - m_committedAchieved);
+    // Time from a step count (not a running sum) so that atTime = 0.1 with dt = 0.01 fires at
+    // step 10, not 11; the 1e-9 dt slack absorbs the rounding of the product.
+    const double trialTime = double(m_steps + 1) * m_dt;
     m_trialFractured = m_fractured || cumulative >= m_opt.fracture.atCumulativeDeformation ||
-                       m_time + m_dt >= m_opt.fracture.atTime;
+                       trialTime >= m_opt.fracture.atTime - 1e-9 * m_dt;
     return ControlResult::success();
 }
 
@@ -112,10 +115,10 @@ ControlResult VirtualSpecimen::commit()
     m_law->commit();
     m_cumulative += std::abs(m_achieved - m_committedAchieved);
     m_committedAchieved = m_achieved;
-    m_time += m_dt;
+    ++m_steps;
     if (m_trialFractured && !m_fractured) {
         m_fractured = true;
-        m_fractureTime = m_time;
+        m_fractureTime = time();
     }
     if (m_opt.actuator.type == ActuatorModel::Type::Delay && !m_delayLine.empty()) {
         m_delayLine.pop_front();

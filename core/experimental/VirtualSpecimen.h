@@ -66,7 +66,7 @@ public:
     const std::string& holdReason() const { return m_holdReason; }
     bool fractured() const { return m_fractured; }
     double fractureTime() const { return m_fractureTime; }
-    double time() const { return m_time; }
+    double time() const { return double(m_steps) * m_dt; } ///< [s] at the last commit
     /// Deformation the actuator actually reached at the last target (noise-free).
     double achievedDeformation() const { return m_achieved; }
     const HysteresisLaw& trueLaw() const { return *m_law; }
@@ -77,7 +77,7 @@ private:
     VirtualSpecimenOptions m_opt;
     PortableRandom m_random;
     double m_dt = 0.0;
-    double m_time = 0.0;
+    long m_steps = 0; // committed steps
     double m_lastTarget = 0.0;
     double m_achieved = 0.0, m_committedAchieved = 0.0;
     double m_cumulative = 0.0;

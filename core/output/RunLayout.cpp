@@ -4,8 +4,7 @@
 
 namespace hsmu {
 
-RunLayout RunLayout::of(const Structure& structure)
-{
+RunLayout RunLayout::of(const Structure& structure) {
     RunLayout layout;
     layout.dofNames = structure.dofNames();
     for (const auto& e : structure.elements()) {

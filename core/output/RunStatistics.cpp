@@ -5,8 +5,7 @@
 namespace hsmu {
 
 namespace {
-void keepPeak(double& peak, double value)
-{
+void keepPeak(double& peak, double value) {
     if (std::isfinite(value) && std::abs(value) > peak)
         peak = std::abs(value);
 }
@@ -14,13 +13,10 @@ void keepPeak(double& peak, double value)
 
 RunStatistics::RunStatistics(RunLayout layout)
     : m_layout(std::move(layout)), m_peakU(m_layout.dofNames.size(), 0.0),
-      m_peakForce(m_layout.elements.size(), 0.0),
-      m_peakDeformation(m_layout.elements.size(), 0.0)
-{
+      m_peakForce(m_layout.elements.size(), 0.0), m_peakDeformation(m_layout.elements.size(), 0.0) {
 }
 
-void RunStatistics::onStep(const StepRecord& record)
-{
+void RunStatistics::onStep(const StepRecord& record) {
     ++m_count;
     m_last = record;
     keepPeak(m_peakAg, record.groundAcceleration);

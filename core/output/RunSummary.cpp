@@ -12,20 +12,17 @@ namespace hsmu {
 
 namespace {
 
-nlohmann::json number(double x)
-{
+nlohmann::json number(double x) {
     return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
-nlohmann::json withUnit(double value, const std::string& unit)
-{
+nlohmann::json withUnit(double value, const std::string& unit) {
     return {{"value", number(value)}, {"unit", unit}};
 }
 
 } // namespace
 
-std::optional<std::string> holdReason(const HybridTest& test)
-{
+std::optional<std::string> holdReason(const HybridTest& test) {
     if (test.state() != HybridTest::State::Holding)
         return std::nullopt;
     const auto& alarms = test.alarms();
@@ -36,8 +33,7 @@ std::optional<std::string> holdReason(const HybridTest& test)
 }
 
 nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats,
-                              const RunInfo& info)
-{
+                              const RunInfo& info) {
     const RunLayout& layout = stats.layout();
     const StabilityReport& st = test.stability();
     nlohmann::json j;
@@ -96,9 +92,8 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     return j;
 }
 
-void writeSummaryJson(const std::string& path, const HybridTest& test,
-                      const RunStatistics& stats, const RunInfo& info)
-{
+void writeSummaryJson(const std::string& path, const HybridTest& test, const RunStatistics& stats,
+                      const RunInfo& info) {
     std::ofstream out(path, std::ios::out | std::ios::trunc);
     if (!out)
         throw std::runtime_error(path + ": cannot be opened for writing");

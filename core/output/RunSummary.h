@@ -35,7 +35,7 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
 
 /// makeRunSummary written with 2-space indentation. Throws std::runtime_error naming the file
 /// if it cannot be written.
-void writeSummaryJson(const std::string& path, const HybridTest& test,
-                      const RunStatistics& stats, const RunInfo& info);
+void writeSummaryJson(const std::string& path, const HybridTest& test, const RunStatistics& stats,
+                      const RunInfo& info);
 
 } // namespace hsmu

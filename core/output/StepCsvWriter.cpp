@@ -8,8 +8,7 @@ namespace hsmu {
 
 namespace {
 
-void appendValue(std::string& line, double value)
-{
+void appendValue(std::string& line, double value) {
     char buf[32];
     // std::to_chars is locale-independent; general format with 10 digits equals "%.10g".
     const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, 10);
@@ -19,8 +18,7 @@ void appendValue(std::string& line, double value)
 
 } // namespace
 
-std::string StepCsvWriter::header(const RunLayout& layout)
-{
+std::string StepCsvWriter::header(const RunLayout& layout) {
     std::string h = "time_s,ag_m_s2";
     for (const auto& d : layout.dofNames)
         h += "," + d + "_u_m," + d + "_v_m_s," + d + "_a_m_s2";
@@ -35,17 +33,17 @@ std::string StepCsvWriter::header(const RunLayout& layout)
 }
 
 StepCsvWriter::StepCsvWriter(const std::string& path, const RunLayout& layout)
-    : m_path(path), m_layout(layout), m_out(path, std::ios::out | std::ios::trunc)
-{
+    : m_path(path), m_layout(layout), m_out(path, std::ios::out | std::ios::trunc) {
     if (!m_out)
         throw std::runtime_error(path + ": cannot be opened for writing");
     m_out << header(m_layout) << '\n';
 }
 
-StepCsvWriter::~StepCsvWriter() { finish(); }
+StepCsvWriter::~StepCsvWriter() {
+    finish();
+}
 
-void StepCsvWriter::onStep(const StepRecord& record)
-{
+void StepCsvWriter::onStep(const StepRecord& record) {
     if (!m_out.is_open())
         return;
     m_line.clear();
@@ -75,8 +73,7 @@ void StepCsvWriter::onStep(const StepRecord& record)
         m_failed = true;
 }
 
-bool StepCsvWriter::finish()
-{
+bool StepCsvWriter::finish() {
     if (m_out.is_open()) {
         m_out.flush();
         if (!m_out)

@@ -22,12 +22,15 @@ struct DofTerm {
     double coefficient = 1.0; ///< dq/du_dof
 };
 
-/// Outcome of an element evaluation; message says why when !ok.
+/// Outcome of an element evaluation; message says why when !ok, limit tells a safety limit
+/// (nothing past it was sent) from any other fault.
 struct ElementStatus {
     bool ok = true;
     std::string message;
+    bool limit = false;
     static ElementStatus success() { return {}; }
-    static ElementStatus failure(std::string why) { return {false, std::move(why)}; }
+    static ElementStatus failure(std::string why) { return {false, std::move(why), false}; }
+    static ElementStatus limitReached(std::string why) { return {false, std::move(why), true}; }
 };
 
 class Element {

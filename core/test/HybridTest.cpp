@@ -79,12 +79,13 @@ bool HybridTest::prepare()
         raise(AlarmSeverity::Warning, AlarmKind::Stability,
               m_stability.message + " (forced by the operator)");
     }
-    for (const auto& e : m_structure->elements()) {
-        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get())) {
-            if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
-                return fail(x->name() + ": " + r.reason);
-        }
-    }
+    m_specimens.clear();
+    for (const auto& e : m_structure->elements())
+        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
+            m_specimens.push_back(x);
+    for (ExperimentalElement* x : m_specimens)
+        if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
+            return fail(x->name() + ": " + r.reason);
     // Initial state at rest: elements at zero deformation, no measurement taken yet.
     const int nf = m_structure->freeDofCount();
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(nf);
@@ -99,9 +100,8 @@ bool HybridTest::prepare()
 void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
 {
     m_structure->revert();
-    for (const auto& e : m_structure->elements())
-        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
-            x->control().hold(reason);
+    for (ExperimentalElement* x : m_specimens)
+        x->control().hold(reason);
     raise(AlarmSeverity::Critical, kind, "test held: " + reason);
     m_state = State::Holding;
 }
@@ -117,9 +117,8 @@ void HybridTest::resume()
 {
     if (m_state != State::Holding)
         return;
-    for (const auto& e : m_structure->elements())
-        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
-            x->control().resume();
+    for (ExperimentalElement* x : m_specimens)
+        x->control().resume();
     raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed");
     m_state = State::Running;
 }
@@ -147,17 +146,14 @@ HybridTest::StepResult HybridTest::step()
     }
     // Every target is checked before any is sent: nothing leaves a limit, ever.
     const Eigen::VectorXd uFull = m_structure->toFull(uTrial);
-    for (const auto& e : m_structure->elements()) {
-        if (auto* x = dynamic_cast<ExperimentalElement*>(e.get())) {
-            if (auto why = x->targetViolation(uFull)) {
-                enterHold(AlarmKind::LimitExceeded, *why);
-                return StepResult::Held;
-            }
+    for (ExperimentalElement* x : m_specimens) {
+        if (auto why = x->targetViolation(uFull)) {
+            enterHold(AlarmKind::LimitExceeded, *why);
+            return StepResult::Held;
         }
     }
     if (ElementStatus s = m_structure->setTrial(uTrial); !s.ok) {
-        const bool limit = s.message.find("exceeds the limit") != std::string::npos;
-        enterHold(limit ? AlarmKind::LimitExceeded : AlarmKind::ControlFault, s.message);
+        enterHold(s.limit ? AlarmKind::LimitExceeded : AlarmKind::ControlFault, s.message);
         return StepResult::Held;
     }
     const Eigen::VectorXd r = m_structure->restoringForce();
@@ -198,8 +194,9 @@ void HybridTest::publish()
             s.deformation = e.deformation();
             s.force = e.force();
         }
-        if (const auto* x = dynamic_cast<const ExperimentalElement*>(&e))
-            s.commanded = m_step == 0 ? 0.0 : x->commandedDeformation();
+        if (e.isExperimental())
+            s.commanded = m_step == 0 ? 0.0
+                                      : static_cast<const ExperimentalElement&>(e).commandedDeformation();
     }
     for (StepObserver* o : m_observers)
         o->onStep(rec);

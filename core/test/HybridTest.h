@@ -23,6 +23,7 @@
 
 namespace hsmu {
 
+class ExperimentalElement;
 class Integrator;
 class Structure;
 
@@ -86,6 +87,7 @@ private:
     StabilityReport m_stability;
     std::vector<Alarm> m_alarms;
     std::vector<StepObserver*> m_observers;
+    std::vector<ExperimentalElement*> m_specimens; // owned by the structure
     StepRecord m_record;
 };
 
