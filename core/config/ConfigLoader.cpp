@@ -1,4 +1,5 @@
 #include "core/config/ConfigLoader.h"
+#include "core/config/UpdatingConfig.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
@@ -162,7 +163,9 @@ ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 TestConfig parseConfig(const nlohmann::json& document, const std::string& sourceName)
 {
     const JsonCursor root(document, sourceName);
-    root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis"});
+    // "controller" is read by hsmu-controller (comms/controller/ControllerSettings.h), not here.
+    root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis",
+                    "controller", "updating"});
     TestConfig cfg;
     cfg.sourcePath = sourceName;
     cfg.raw = document;
@@ -258,6 +261,8 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
         an.duration = a.number("duration", 0.0);
         an.allowUnstable = a.boolean("allowUnstable", false);
     }
+    if (root.has("updating"))
+        cfg.updating = parseUpdating(root.child("updating"), cfg);
     return cfg;
 }
 

@@ -5,11 +5,15 @@
 
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
+#include "core/updating/Inspector.h"
+#include "core/updating/ParameterSet.h"
+#include "core/updating/Reporter.h"
 
 #include <nlohmann/json.hpp>
 
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +74,32 @@ struct AnalysisSpec {
     bool allowUnstable = false;
 };
 
+/// Online model updating (METHOD.md sections 2-5); absent or enabled = false: no updating.
+struct UpdatingSpec {
+    bool enabled = false;
+    std::string specimen;            ///< the experimental element identified
+    std::string method = "ukf";      ///< "ukf" (Bouc-Wen) or "nelderMead" (Bouc-Wen, bilinear)
+    ParameterBoundsMap bounds;       ///< per parameter; ukf default: Table III
+    std::vector<std::string> parameters; ///< nelderMead: the fitted parameters
+    // UKF settings (defaults: the paper's a, b, kappa = 3 - L)
+    double ukfA = 1e-4, ukfB = 2.0;
+    std::optional<double> ukfKappa;
+    double forceNoise = 0.01;        ///< expected noise std of F / fRef
+    double parameterNoise = 2e-4;    ///< random-walk std per step, fraction of bound width
+    double initialStdFraction = 0.25;
+    // Nelder-Mead
+    int maxEvaluations = 300;
+    double cooldown = 1.0;           ///< [s] between triggers
+    double fitWindow = 0.0;          ///< [s] of history weighted in the fit; 0 = all
+    InspectorSettings inspector;
+    ReporterPolicy policy = ReporterPolicy::EveryStep;
+    int everyN = 10;
+    std::vector<ReporterTarget> targets;
+    /// Headless decision for the onApproval policy: "manual" (queue), "approveAll", "rejectAll".
+    std::string approval = "manual";
+    int maxConsecutiveRejections = 20;
+};
+
 struct TestConfig {
     std::string name;
     std::string description;
@@ -80,6 +110,7 @@ struct TestConfig {
     std::vector<ElementSpec> elements;
     GroundMotionSpec groundMotion;
     AnalysisSpec analysis;
+    UpdatingSpec updating;
     nlohmann::json raw; ///< the document as read (for records and reports)
 };
 

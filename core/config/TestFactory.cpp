@@ -1,6 +1,8 @@
 #include "core/config/TestFactory.h"
 
 #include "core/config/JsonCursor.h"
+#include "core/config/UpdatingConfig.h"
+#include "core/updating/ModelUpdater.h"
 #include "core/experimental/ExperimentalElement.h"
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/groundmotion/SyntheticGroundMotion.h"
@@ -121,9 +123,11 @@ std::unique_ptr<HybridTest> buildHybridTest(const TestConfig& cfg, const Control
     o.dt = cfg.analysis.dt;
     o.duration = cfg.analysis.duration;
     o.allowUnstable = cfg.analysis.allowUnstable;
-    return std::make_unique<HybridTest>(buildStructure(cfg, controls),
-                                        buildIntegrator(cfg.analysis),
-                                        buildGroundMotion(cfg.groundMotion, cfg.sourcePath), o);
+    auto test = std::make_unique<HybridTest>(buildStructure(cfg, controls),
+                                             buildIntegrator(cfg.analysis),
+                                             buildGroundMotion(cfg.groundMotion, cfg.sourcePath), o);
+    test->setUpdater(buildModelUpdater(cfg));
+    return test;
 }
 
 } // namespace hsmu

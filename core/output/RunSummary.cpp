@@ -26,9 +26,12 @@ std::optional<std::string> holdReason(const HybridTest& test) {
     if (test.state() != HybridTest::State::Holding)
         return std::nullopt;
     const auto& alarms = test.alarms();
-    for (auto it = alarms.rbegin(); it != alarms.rend(); ++it)
-        if (it->severity == AlarmSeverity::Critical)
-            return it->message;
+    for (auto it = alarms.rbegin(); it != alarms.rend(); ++it) {
+        if (it->severity != AlarmSeverity::Critical)
+            continue;
+        static const std::string prefix = "test held: "; // HybridTest's wording of a hold
+        return it->message.rfind(prefix, 0) == 0 ? it->message.substr(prefix.size()) : it->message;
+    }
     return std::string("held");
 }
 

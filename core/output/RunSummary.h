@@ -27,7 +27,8 @@ struct RunInfo {
     double wallTimeS = 0.0; ///< wall-clock time spent stepping [s]
 };
 
-/// The reason the test is holding (the last critical alarm), if it is holding.
+/// The reason the test is holding (the last critical alarm's message without a leading
+/// "test held: "), if it is holding.
 std::optional<std::string> holdReason(const HybridTest& test);
 
 nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats,

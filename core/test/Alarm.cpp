@@ -21,6 +21,12 @@ const char* alarmKindName(AlarmKind k)
     case AlarmKind::IntegratorFault: return "integrator fault";
     case AlarmKind::OperatorHold: return "operator hold";
     case AlarmKind::Stability: return "stability";
+    case AlarmKind::FitError: return "model error";
+    case AlarmKind::Fracture: return "fracture";
+    case AlarmKind::EstimatorRejected: return "estimator rejected";
+    case AlarmKind::ParameterPinned: return "parameter at bound";
+    case AlarmKind::TrackingError: return "tracking error";
+    case AlarmKind::ModelUpdate: return "model update";
     }
     return "?";
 }

@@ -14,7 +14,13 @@ enum class AlarmKind {
     ElementFault,    ///< a numerical element failed (e.g. law non-convergence)
     IntegratorFault, ///< non-finite response
     OperatorHold,    ///< the operator held the test
-    Stability        ///< explicit scheme forced past its stability limit
+    Stability,       ///< explicit scheme forced past its stability limit
+    FitError,        ///< the model's error above the inspector's threshold
+    Fracture,        ///< sudden strength loss of a specimen
+    EstimatorRejected, ///< the identifier rejected an update or diverged
+    ParameterPinned, ///< an identified parameter stayed at a bound
+    TrackingError,   ///< actuator tracking (J1-J3) out of tolerance
+    ModelUpdate      ///< parameters applied to (or refused by) a numerical element
 };
 
 struct Alarm {

@@ -3,6 +3,7 @@
 #include "core/experimental/ExperimentalElement.h"
 #include "core/integration/Integrator.h"
 #include "core/structure/Structure.h"
+#include "core/updating/ModelUpdater.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,18 @@ HybridTest::HybridTest(std::unique_ptr<Structure> structure,
 }
 
 HybridTest::~HybridTest() = default;
+
+void HybridTest::setUpdater(std::unique_ptr<ModelUpdater> updater)
+{
+    m_updater = std::move(updater);
+}
+
+bool HybridTest::approveUpdate(int proposalId)
+{
+    return m_updater && m_updater->approve(proposalId, *m_structure, m_step, time(), m_alarms);
+}
+
+bool HybridTest::rejectUpdate(int proposalId) { return m_updater && m_updater->reject(proposalId); }
 
 void HybridTest::addObserver(StepObserver* observer) { m_observers.push_back(observer); }
 
@@ -86,6 +99,11 @@ bool HybridTest::prepare()
     for (ExperimentalElement* x : m_specimens)
         if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
             return fail(x->name() + ": " + r.reason);
+    if (m_updater) {
+        std::string why;
+        if (!m_updater->attach(*m_structure, m_options.dt, &why))
+            return fail(why);
+    }
     // Initial state at rest: elements at zero deformation, no measurement taken yet.
     const int nf = m_structure->freeDofCount();
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(nf);
@@ -166,7 +184,15 @@ HybridTest::StepResult HybridTest::step()
         return StepResult::Held;
     }
     ++m_step;
+    std::optional<std::string> updaterHold;
+    if (m_updater)
+        updaterHold = m_updater->afterCommit(m_step, time(), *m_structure, m_alarms,
+                                             m_record.updating);
     publish();
+    if (updaterHold) {
+        enterHold(AlarmKind::EstimatorRejected, *updaterHold);
+        return StepResult::Held;
+    }
     if (m_step >= m_totalSteps) {
         m_state = State::Finished;
         return StepResult::Finished;
@@ -197,6 +223,16 @@ void HybridTest::publish()
         if (e.isExperimental())
             s.commanded = m_step == 0 ? 0.0
                                       : static_cast<const ExperimentalElement&>(e).commandedDeformation();
+    }
+    rec.hasUpdating = m_updater != nullptr;
+    if (m_updater && m_step == 0) {
+        rec.updating = UpdatingSample{};
+        const ParameterValues est = m_updater->identifier().estimate();
+        const ParameterValues sd = m_updater->identifier().standardDeviation();
+        for (const auto& name : m_updater->parameterNames()) {
+            rec.updating.parameters.push_back(est.count(name) ? est.at(name) : 0.0);
+            rec.updating.stddev.push_back(sd.count(name) ? sd.at(name) : 0.0);
+        }
     }
     for (StepObserver* o : m_observers)
         o->onStep(rec);

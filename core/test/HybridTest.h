@@ -24,6 +24,7 @@
 namespace hsmu {
 
 class ExperimentalElement;
+class ModelUpdater;
 class Integrator;
 class Structure;
 
@@ -67,6 +68,14 @@ public:
     const Structure& structure() const { return *m_structure; }
     const Integrator& integrator() const { return *m_integrator; }
 
+    /// Online model updating (optional; set before prepare()).
+    void setUpdater(std::unique_ptr<ModelUpdater> updater);
+    ModelUpdater* updater() { return m_updater.get(); }
+    const ModelUpdater* updater() const { return m_updater.get(); }
+    /// Operator decision on a pending update proposal (between steps).
+    bool approveUpdate(int proposalId);
+    bool rejectUpdate(int proposalId);
+
     /// Observers are not owned; they must outlive the test or be removed.
     void addObserver(StepObserver* observer);
     void removeObserver(StepObserver* observer);
@@ -88,6 +97,7 @@ private:
     std::vector<Alarm> m_alarms;
     std::vector<StepObserver*> m_observers;
     std::vector<ExperimentalElement*> m_specimens; // owned by the structure
+    std::unique_ptr<ModelUpdater> m_updater;
     StepRecord m_record;
 };
 

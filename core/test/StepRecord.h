@@ -3,6 +3,8 @@
 // feed, CSV writer, statistics). Vectors are over the *full* DOFs; element entries follow the
 // structure's element order. Units: those of the structure (presets: m, s, kN, rad, kN m).
 
+#include "core/updating/ModelUpdater.h"
+
 #include <Eigen/Core>
 
 #include <limits>
@@ -23,6 +25,8 @@ struct StepRecord {
     double groundAcceleration = 0.0; ///< [m/s^2]
     Eigen::VectorXd u, v, a;        ///< DOF displacement [m], velocity [m/s], acceleration [m/s^2]
     std::vector<ElementSample> elements;
+    bool hasUpdating = false; ///< the test runs online model updating
+    UpdatingSample updating;  ///< valid when hasUpdating (step 0: initial estimate)
 };
 
 /// Receives every committed step. Called on the thread that runs HybridTest::step().

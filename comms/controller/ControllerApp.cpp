@@ -1,0 +1,94 @@
+#include "comms/controller/ControllerApp.h"
+
+#include "comms/controller/ControllerSettings.h"
+#include "core/config/ConfigLoader.h"
+
+#include <cstdio>
+
+namespace hsmu::comms {
+
+ControllerApp::ControllerApp(ControllerCommandLine commandLine) : m_cmd(std::move(commandLine)) {}
+
+ControllerApp::~ControllerApp() = default;
+
+bool ControllerApp::start(std::string& error) {
+    std::vector<std::unique_ptr<SpecimenStation>> stations;
+    ControllerSettings settings;
+    try {
+        const TestConfig cfg = loadConfigFile(m_cmd.config);
+        settings = parseControllerSettings(cfg);
+        if (!m_cmd.state.empty())
+            m_journal = std::make_unique<StateJournal>();
+        std::vector<JournalElement> identities;
+        const auto pace =
+            m_cmd.fast ? SpecimenStation::Pace::Fast : SpecimenStation::Pace::RealTime;
+        const auto& rawElements = cfg.raw.at("structure").at("elements");
+        for (std::size_t i = 0; i < cfg.elements.size(); ++i) {
+            const ElementSpec& e = cfg.elements[i];
+            if (!e.experimental)
+                continue;
+            const int index = static_cast<int>(stations.size());
+            stations.push_back(
+                std::make_unique<SpecimenStation>(index, e, settings, pace, m_journal.get()));
+            identities.push_back(
+                {e.name, StateJournal::fingerprint(e.name + "\n" +
+                                                   rawElements.at(i).at("specimen").dump())});
+            m_names += (m_names.empty() ? "" : ", ") + e.name;
+        }
+        if (stations.empty()) {
+            error = m_cmd.config + ": no experimental element (\"experimental\": true) to emulate";
+            return false;
+        }
+        if (m_journal) {
+            std::vector<JournalRecord> records;
+            if (!m_journal->open(m_cmd.state, identities, records, error))
+                return false;
+            for (const JournalRecord& r : records)
+                if (!stations[static_cast<std::size_t>(r.element)]->replay(r, error)) {
+                    error = m_cmd.state + ": " + error;
+                    return false;
+                }
+        }
+    } catch (const std::exception& e) { // ConfigError, json errors
+        error = e.what();
+        return false;
+    }
+    for (const auto& st : stations)
+        if (st->committedSteps() > 0)
+            std::fprintf(stderr, "hsmu-controller: specimen '%s' continues after step %llu\n",
+                         st->name().c_str(), static_cast<unsigned long long>(st->committedSteps()));
+    ControllerServerOptions o;
+    o.bind = m_cmd.bind;
+    o.port = m_cmd.port;
+    o.token = m_cmd.token;
+    o.idleTimeout = settings.idleTimeout;
+    o.rate = settings.rate;
+    o.realTime = !m_cmd.fast;
+    o.quiet = m_cmd.quiet;
+    const std::size_t count = stations.size();
+    m_server = std::make_unique<ControllerServer>(o, std::move(stations));
+    if (!m_server->listen(error))
+        return false;
+    std::printf("hsmu-controller: listening on %s:%u (%s pace, %zu specimen%s: %s)\n",
+                m_cmd.bind.c_str(), unsigned(m_server->port()), m_cmd.fast ? "fast" : "real-time",
+                count, count == 1 ? "" : "s", m_names.c_str());
+    std::fflush(stdout);
+    return true;
+}
+
+std::uint16_t ControllerApp::port() const {
+    return m_server ? m_server->port() : 0;
+}
+
+int ControllerApp::run() {
+    m_server->run();
+    const ControllerStatistics s = m_server->statistics();
+    std::printf(
+        "hsmu-controller: stopped; %lld ticks, %lld deadline misses (max lateness %.3f ms), "
+        "%lld sessions admitted, %lld refused\n",
+        s.ticks, s.deadlineMisses, s.maxLateness * 1e3, s.sessionsAdmitted, s.sessionsRefused);
+    std::fflush(stdout);
+    return 0;
+}
+
+} // namespace hsmu::comms

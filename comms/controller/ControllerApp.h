@@ -1,0 +1,35 @@
+#pragma once
+// ControllerApp: hsmu-controller assembled from its command line: reads the configuration
+// (core's ConfigLoader), makes one SpecimenStation per experimental element (in the order of
+// the configuration), opens the state journal and replays it, and serves.
+// Output: one line on stdout once listening,
+//   "hsmu-controller: listening on 127.0.0.1:PORT (fast pace, 1 specimen: Element 1)"
+// and the loop statistics on stdout when stopped; errors on stderr.
+
+#include "comms/controller/ControllerCommandLine.h"
+#include "comms/controller/ControllerServer.h"
+
+#include <memory>
+#include <string>
+
+namespace hsmu::comms {
+
+class ControllerApp {
+public:
+    explicit ControllerApp(ControllerCommandLine commandLine);
+    ~ControllerApp();
+
+    /// Build everything and listen; false with a sentence in error.
+    bool start(std::string& error);
+    /// Serve until SIGINT / SIGTERM; returns the process exit code.
+    int run();
+    std::uint16_t port() const;
+
+private:
+    ControllerCommandLine m_cmd;
+    std::unique_ptr<StateJournal> m_journal;
+    std::unique_ptr<ControllerServer> m_server;
+    std::string m_names;
+};
+
+} // namespace hsmu::comms

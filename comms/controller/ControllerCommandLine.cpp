@@ -1,0 +1,88 @@
+#include "comms/controller/ControllerCommandLine.h"
+
+#include <cstdlib>
+
+namespace hsmu::comms {
+
+const char* ControllerCommandLine::usage() {
+    return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR] "
+           "[--pace realtime|fast] [--token T] [--state FILE] [--quiet]\n"
+           "  --config FILE   the console's test configuration (JSON); its experimental\n"
+           "                  elements' specimen sections and the optional controller section\n"
+           "  --port PORT     TCP port, 0 = any free port (printed on stdout)\n"
+           "  --bind ADDR     address to listen on (default 127.0.0.1)\n"
+           "  --pace P        realtime (wall clock, default) or fast (simulated clock)\n"
+           "  --token T       shared secret the console's hello must carry\n"
+           "  --state FILE    journal of committed steps: a restart continues the specimen\n"
+           "  --quiet         no session log on stderr\n";
+}
+
+std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, const char* const* argv,
+                                                                  std::string& error) {
+    ControllerCommandLine c;
+    bool havePort = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&](std::string& out) {
+            if (i + 1 >= argc) {
+                error = a + " needs a value";
+                return false;
+            }
+            out = argv[++i];
+            return true;
+        };
+        std::string v;
+        if (a == "--help" || a == "-h") {
+            c.help = true;
+        } else if (a == "--quiet") {
+            c.quiet = true;
+        } else if (a == "--config") {
+            if (!value(c.config))
+                return std::nullopt;
+        } else if (a == "--bind") {
+            if (!value(c.bind))
+                return std::nullopt;
+        } else if (a == "--token") {
+            if (!value(c.token))
+                return std::nullopt;
+        } else if (a == "--state") {
+            if (!value(c.state))
+                return std::nullopt;
+        } else if (a == "--port") {
+            if (!value(v))
+                return std::nullopt;
+            char* end = nullptr;
+            const long p = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end != '\0' || p < 0 || p > 65535) {
+                error = "--port: expected 0..65535, found '" + v + "'";
+                return std::nullopt;
+            }
+            c.port = static_cast<std::uint16_t>(p);
+            havePort = true;
+        } else if (a == "--pace") {
+            if (!value(v))
+                return std::nullopt;
+            if (v != "realtime" && v != "fast") {
+                error = "--pace: expected realtime or fast, found '" + v + "'";
+                return std::nullopt;
+            }
+            c.fast = v == "fast";
+        } else {
+            error = "unknown argument '" + a + "'";
+            return std::nullopt;
+        }
+    }
+    if (c.help)
+        return c;
+    if (c.config.empty()) {
+        error = "--config FILE is required";
+        return std::nullopt;
+    }
+    if (!havePort) {
+        error = "--port PORT is required (0 = any free port)";
+        return std::nullopt;
+    }
+    return c;
+}
+
+} // namespace hsmu::comms

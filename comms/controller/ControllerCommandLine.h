@@ -1,0 +1,32 @@
+#pragma once
+// ControllerCommandLine: the arguments of hsmu-controller.
+//
+//   hsmu-controller --config FILE --port PORT [--bind ADDR] [--pace realtime|fast]
+//                   [--token T] [--state FILE] [--quiet]
+//
+// --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
+// --bind defaults to 127.0.0.1: exposing the controller is an explicit choice.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace hsmu::comms {
+
+struct ControllerCommandLine {
+    std::string config;
+    std::string bind = "127.0.0.1";
+    std::uint16_t port = 0;
+    bool fast = false; ///< --pace fast: simulated clock (as fast as possible)
+    std::string token;
+    std::string state;
+    bool quiet = false;
+    bool help = false;
+
+    /// nullopt with a sentence in error when the arguments are wrong.
+    static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,
+                                                      std::string& error);
+    static const char* usage();
+};
+
+} // namespace hsmu::comms

@@ -1,0 +1,270 @@
+#include "comms/controller/ControllerServer.h"
+
+#include "comms/controller/ControllerSession.h"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
+#include <boost/asio/signal_set.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <set>
+
+namespace hsmu::comms {
+
+namespace asio = boost::asio;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+constexpr std::size_t kMaxConnections = 16;
+}
+
+struct ControllerServer::Impl final : SessionHost {
+    ControllerServerOptions opt;
+    std::vector<std::unique_ptr<SpecimenStation>> stations;
+    asio::io_context io{1};
+    asio::ip::tcp::acceptor acceptor{io};
+    asio::signal_set signals{io};
+    asio::steady_timer ticker{io};
+    std::set<std::shared_ptr<ControllerSession>> sessions;
+    std::vector<ControllerSession*> stationSession; // the admitted connection per station
+    bool hasOwner = false;
+    std::uint64_t owner = 0;
+    bool ticking = false;
+    Clock::time_point nextTick;
+    Clock::duration period;
+    ControllerStatistics stats;
+
+    Impl(const ControllerServerOptions& o, std::vector<std::unique_ptr<SpecimenStation>> st)
+        : opt(o), stations(std::move(st)), stationSession(stations.size(), nullptr),
+          period(std::chrono::duration_cast<Clock::duration>(
+              std::chrono::duration<double>(1.0 / o.rate))) {}
+
+    void log(const std::string& line) const {
+        if (!opt.quiet)
+            std::fprintf(stderr, "hsmu-controller: %s\n", line.c_str());
+    }
+
+    void accept() {
+        acceptor.async_accept(
+            [this](const boost::system::error_code& ec, asio::ip::tcp::socket socket) {
+                if (ec == asio::error::operation_aborted)
+                    return;
+                if (!ec) {
+                    auto s = std::make_shared<ControllerSession>(std::move(socket), *this);
+                    sessions.insert(s);
+                    s->start();
+                    if (sessions.size() > kMaxConnections)
+                        s->refuse({ErrorCode::Busy, "busy: too many connections"});
+                }
+                accept();
+            });
+    }
+
+    bool ownerConnected() const {
+        for (const auto& s : sessions)
+            if (s->admitted() && s->sessionId() == owner)
+                return true;
+        return false;
+    }
+
+    std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello,
+                                  HelloAckMsg& ack) override {
+        auto refuse = [&](ErrorCode c, std::string why) {
+            ++stats.sessionsRefused;
+            log("refused " + s.peer() + ": " + why);
+            return std::optional<ErrorMsg>(ErrorMsg{c, std::move(why)});
+        };
+        if (!opt.token.empty() && hello.token != opt.token)
+            return refuse(ErrorCode::Unauthorized, "wrong token");
+        int index = hello.element.empty() ? 0 : -1;
+        for (std::size_t i = 0; i < stations.size() && index < 0; ++i)
+            if (stations[i]->name() == hello.element)
+                index = static_cast<int>(i);
+        if (index < 0 || stations.empty())
+            return refuse(ErrorCode::UnknownElement,
+                          "this controller has no specimen named '" + hello.element + "'");
+        if (hasOwner && owner != hello.sessionId && ownerConnected())
+            return refuse(ErrorCode::Busy,
+                          "busy: another console session is running a test on this controller "
+                          "(one session at a time)");
+        if (ControllerSession* old = stationSession[static_cast<std::size_t>(index)]) {
+            log("connection " + old->peer() + " replaced by " + s.peer());
+            old->send(ByeMsg{"replaced by a new connection of the same session"});
+            old->close();
+        }
+        hasOwner = true;
+        owner = hello.sessionId;
+        s.setStation(index);
+        stationSession[static_cast<std::size_t>(index)] = &s;
+        ++stats.sessionsAdmitted;
+        ack = stations[static_cast<std::size_t>(index)]->status();
+        log("session " + s.peer() + " on specimen '" + ack.element + "' at step " +
+            std::to_string(ack.committedSteps));
+        return std::nullopt;
+    }
+
+    std::optional<Message> handle(ControllerSession& s, const Message& m) override {
+        SpecimenStation& st = *stations[static_cast<std::size_t>(s.station())];
+        std::optional<Message> reply;
+        if (const auto* c = std::get_if<ConfigureMsg>(&m))
+            reply = st.configure(*c);
+        else if (const auto* t = std::get_if<TargetMsg>(&m)) {
+            if (opt.realTime)
+                catchUp(); // the ticks due before this target arrived come first
+            reply = st.target(*t);
+        } else if (const auto* c = std::get_if<CommitMsg>(&m))
+            reply = st.commit(*c);
+        else if (const auto* h = std::get_if<HoldMsg>(&m))
+            reply = st.hold(h->reason);
+        else if (std::holds_alternative<ResumeMsg>(m))
+            reply = st.resume();
+        else if (std::holds_alternative<ResetMsg>(m))
+            reply = st.reset();
+        else
+            reply = ErrorMsg{ErrorCode::ProtocolViolation, std::string("unexpected ") +
+                                                               messageTypeName(messageTypeOf(m)) +
+                                                               " from a console"};
+        if (reply)
+            if (const auto* e = std::get_if<ErrorMsg>(&*reply);
+                e && (e->code == ErrorCode::Interlock || e->code == ErrorCode::SpecimenFault))
+                log(e->reason);
+        if (opt.realTime)
+            armTicker();
+        return reply;
+    }
+
+    void closed(ControllerSession& s) override {
+        for (auto& p : stationSession)
+            if (p == &s)
+                p = nullptr;
+        // Deferred: the session may be inside one of its own handlers.
+        asio::post(io, [this, self = s.shared_from_this()] {
+            sessions.erase(self);
+            if (hasOwner && !ownerConnected())
+                hasOwner = false;
+        });
+    }
+
+    double idleTimeout() const override { return opt.idleTimeout; }
+
+    bool anyNeedsTicks() const {
+        for (const auto& st : stations)
+            if (st->needsTicks())
+                return true;
+        return false;
+    }
+
+    void tickAll() {
+        ++stats.ticks;
+        for (std::size_t i = 0; i < stations.size(); ++i)
+            if (auto m = stations[i]->tick())
+                if (stationSession[i])
+                    stationSession[i]->send(*m);
+    }
+
+    void catchUp() {
+        if (!ticking)
+            return;
+        const auto now = Clock::now();
+        while (nextTick <= now) {
+            const auto late = now - nextTick;
+            if (late > period)
+                ++stats.deadlineMisses;
+            stats.maxLateness =
+                std::max(stats.maxLateness, std::chrono::duration<double>(late).count());
+            tickAll();
+            nextTick += period;
+        }
+    }
+
+    void armTicker() {
+        if (ticking || !anyNeedsTicks())
+            return;
+        ticking = true;
+        nextTick = Clock::now() + period;
+        waitTick();
+    }
+
+    void waitTick() {
+        ticker.expires_at(nextTick);
+        ticker.async_wait([this](const boost::system::error_code& ec) {
+            if (ec)
+                return;
+            catchUp();
+            if (anyNeedsTicks()) {
+                waitTick();
+            } else {
+                ticking = false;
+            }
+        });
+    }
+};
+
+ControllerServer::ControllerServer(const ControllerServerOptions& options,
+                                   std::vector<std::unique_ptr<SpecimenStation>> stations)
+    : d(std::make_unique<Impl>(options, std::move(stations))) {}
+
+ControllerServer::~ControllerServer() = default;
+
+bool ControllerServer::listen(std::string& error) {
+    boost::system::error_code ec;
+    const auto address = asio::ip::make_address(d->opt.bind, ec);
+    if (ec) {
+        error = "--bind: '" + d->opt.bind + "' is not an IP address";
+        return false;
+    }
+    const asio::ip::tcp::endpoint ep(address, d->opt.port);
+    d->acceptor.open(ep.protocol(), ec);
+    if (!ec)
+        d->acceptor.set_option(asio::socket_base::reuse_address(true), ec);
+    if (!ec)
+        d->acceptor.bind(ep, ec);
+    if (!ec)
+        d->acceptor.listen(asio::socket_base::max_listen_connections, ec);
+    if (ec) {
+        error = "cannot listen on " + d->opt.bind + ":" + std::to_string(d->opt.port) + ": " +
+                ec.message();
+        return false;
+    }
+    d->accept();
+    return true;
+}
+
+std::uint16_t ControllerServer::port() const {
+    boost::system::error_code ec;
+    const auto ep = d->acceptor.local_endpoint(ec);
+    return ec ? 0 : ep.port();
+}
+
+void ControllerServer::run() {
+    d->signals.add(SIGINT);
+    d->signals.add(SIGTERM);
+    d->signals.async_wait([this](const boost::system::error_code& ec, int) {
+        if (!ec)
+            stop();
+    });
+    if (d->opt.realTime)
+        d->armTicker();
+    d->io.run();
+}
+
+void ControllerServer::stop() {
+    asio::post(d->io, [this] {
+        boost::system::error_code ec;
+        d->acceptor.close(ec);
+        d->ticker.cancel();
+        d->signals.cancel();
+        for (const auto& s : std::set<std::shared_ptr<ControllerSession>>(d->sessions)) {
+            s->send(ByeMsg{"controller shutting down"});
+            s->close();
+        }
+        d->io.stop();
+    });
+}
+
+ControllerStatistics ControllerServer::statistics() const {
+    return d->stats;
+}
+
+} // namespace hsmu::comms

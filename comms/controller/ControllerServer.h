@@ -1,0 +1,59 @@
+#pragma once
+// ControllerServer: the network side of hsmu-controller. Listens (127.0.0.1 by default),
+// admits one console session at a time (a session may hold one connection per specimen; its
+// reconnects, identified by the hello's session id, replace the old connection; anyone else
+// gets Error(Busy)), checks the optional token, routes specimen messages to the
+// SpecimenStations and, in real-time pace, runs their loop at the settings' rate from a
+// steady-clock timer (ticks that come due while the thread was busy are run at once; each
+// tick run more than one period late counts as a deadline miss).
+// Thread rules: construct, listen() and run() on one thread; stop() from any thread.
+
+#include "comms/controller/SpecimenStation.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsmu::comms {
+
+struct ControllerServerOptions {
+    std::string bind = "127.0.0.1";
+    std::uint16_t port = 0; ///< 0: any free port (see port() after listen())
+    std::string token;      ///< "" accepts any hello
+    double idleTimeout = 10.0;
+    double rate = 1024.0; ///< loop rate [Hz] (real-time pace)
+    bool realTime = true;
+    bool quiet = false; ///< no session log lines on stderr
+};
+
+struct ControllerStatistics {
+    long long ticks = 0;
+    long long deadlineMisses = 0; ///< ticks run more than one period after they were due
+    double maxLateness = 0.0;     ///< [s]
+    long long sessionsAdmitted = 0;
+    long long sessionsRefused = 0;
+};
+
+class ControllerServer {
+public:
+    ControllerServer(const ControllerServerOptions& options,
+                     std::vector<std::unique_ptr<SpecimenStation>> stations);
+    ~ControllerServer();
+    ControllerServer(const ControllerServer&) = delete;
+    ControllerServer& operator=(const ControllerServer&) = delete;
+
+    /// Bind and listen; false with a sentence in error.
+    bool listen(std::string& error);
+    std::uint16_t port() const;
+    /// Serve until stop(), SIGINT or SIGTERM.
+    void run();
+    void stop();
+    ControllerStatistics statistics() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> d;
+};
+
+} // namespace hsmu::comms

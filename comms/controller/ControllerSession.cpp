@@ -1,0 +1,187 @@
+#include "comms/controller/ControllerSession.h"
+
+#include <boost/asio/write.hpp>
+
+#include <chrono>
+
+namespace hsmu::comms {
+
+namespace asio = boost::asio;
+
+namespace {
+constexpr double kHelloTimeout = 5.0; // [s]
+}
+
+ControllerSession::ControllerSession(asio::ip::tcp::socket socket, SessionHost& host)
+    : m_socket(std::move(socket)), m_idle(m_socket.get_executor()), m_host(host) {
+    boost::system::error_code ec;
+    m_socket.set_option(asio::ip::tcp::no_delay(true), ec);
+    const auto ep = m_socket.remote_endpoint(ec);
+    m_peer = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
+}
+
+void ControllerSession::start() {
+    m_lastActivity = std::chrono::steady_clock::now();
+    armIdle(kHelloTimeout);
+    read();
+}
+
+void ControllerSession::armIdle(double seconds) {
+    // One timer wait per timeout period, not per frame: on expiry the wait is renewed for what
+    // is left since the last frame.
+    using namespace std::chrono;
+    m_idleSeconds = seconds;
+    const auto left = duration_cast<steady_clock::duration>(duration<double>(seconds)) -
+                      (steady_clock::now() - m_lastActivity);
+    m_idle.expires_after(left);
+    m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
+        if (ec || self->m_closed || self->m_closeAfterWrite)
+            return;
+        const auto silent = steady_clock::now() - self->m_lastActivity;
+        if (silent < duration<double>(self->m_idleSeconds)) {
+            self->armIdle(self->m_idleSeconds);
+            return;
+        }
+        const int s = static_cast<int>(self->m_idleSeconds);
+        self->refuse({ErrorCode::Timeout, self->m_admitted
+                                              ? "no frame for " + std::to_string(s) + " s"
+                                              : "no hello within " + std::to_string(s) + " s"});
+    });
+}
+
+void ControllerSession::read() {
+    m_socket.async_read_some(asio::buffer(m_readBuffer), [self = shared_from_this()](
+                                                             const boost::system::error_code& ec,
+                                                             std::size_t n) {
+        if (self->m_closed)
+            return;
+        if (ec) {
+            self->close();
+            return;
+        }
+        // After a refusal the input is drained, not decoded, until the peer closes: closing
+        // with unread input would send a reset that can destroy the error frame in flight.
+        if (!self->m_closeAfterWrite) {
+            self->m_decoder.append(self->m_readBuffer.data(), n);
+            Frame f;
+            for (;;) {
+                const auto st = self->m_decoder.next(f);
+                if (st == FrameDecoder::Status::NeedMore)
+                    break;
+                if (st == FrameDecoder::Status::Error) {
+                    self->refuse({self->m_decoder.error().code, self->m_decoder.error().reason});
+                    break;
+                }
+                self->onFrame(f);
+                if (self->m_closed || self->m_closeAfterWrite)
+                    break;
+            }
+        }
+        if (!self->m_closed)
+            self->read();
+    });
+}
+
+void ControllerSession::onFrame(const Frame& f) {
+    m_lastActivity = std::chrono::steady_clock::now();
+    if (!m_admitted) {
+        const auto* hello = std::get_if<HelloMsg>(&f.message);
+        if (!hello) {
+            refuse({ErrorCode::ProtocolViolation, std::string("expected hello, received ") +
+                                                      messageTypeName(messageTypeOf(f.message))});
+            return;
+        }
+        if (hello->version != kProtocolVersion) {
+            refuse({ErrorCode::UnsupportedVersion,
+                    "protocol version " + std::to_string(hello->version) +
+                        " is not supported (this controller speaks version " +
+                        std::to_string(kProtocolVersion) + ")"});
+            return;
+        }
+        HelloAckMsg ack;
+        if (auto refusal = m_host.admit(*this, *hello, ack)) {
+            refuse(*refusal);
+            return;
+        }
+        m_admitted = true;
+        m_sessionId = hello->sessionId;
+        armIdle(m_host.idleTimeout());
+        send(ack);
+        return;
+    }
+    if (const auto* hb = std::get_if<HeartbeatMsg>(&f.message)) {
+        send(*hb);
+        return;
+    }
+    if (std::holds_alternative<ByeMsg>(f.message)) {
+        close();
+        return;
+    }
+    if (std::holds_alternative<ErrorMsg>(f.message))
+        return; // the console's complaint; it will act on it
+    if (auto reply = m_host.handle(*this, f.message))
+        send(*reply);
+}
+
+void ControllerSession::send(const Message& m) {
+    if (m_closed || m_closeAfterWrite)
+        return; // nothing follows a refusal
+    std::vector<std::uint8_t> bytes;
+    encodeFrame(m, m_sequence++, bytes);
+    m_writes.push_back(std::move(bytes));
+    write();
+}
+
+void ControllerSession::refuse(const ErrorMsg& e) {
+    if (m_closed || m_closeAfterWrite)
+        return;
+    send(e);
+    m_closeAfterWrite = true;
+}
+
+void ControllerSession::finish() {
+    // All written: half-close, and give the peer a moment to read and close its side.
+    boost::system::error_code ec;
+    m_socket.shutdown(asio::ip::tcp::socket::shutdown_send, ec);
+    m_idle.expires_after(std::chrono::seconds(2));
+    m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& e) {
+        if (!e)
+            self->close();
+    });
+}
+
+void ControllerSession::write() {
+    if (m_writing || m_writes.empty() || m_closed)
+        return;
+    m_writing = true;
+    asio::async_write(
+        m_socket, asio::buffer(m_writes.front()),
+        [self = shared_from_this()](const boost::system::error_code& ec, std::size_t) {
+            self->m_writing = false;
+            if (self->m_closed)
+                return;
+            if (ec) {
+                self->close();
+                return;
+            }
+            self->m_writes.pop_front();
+            if (self->m_writes.empty() && self->m_closeAfterWrite)
+                self->finish();
+            else
+                self->write();
+        });
+}
+
+void ControllerSession::close() {
+    if (m_closed)
+        return;
+    m_closed = true;
+    boost::system::error_code ec;
+    m_idle.cancel();
+    m_socket.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
+    m_socket.close(ec);
+    m_writes.clear();
+    m_host.closed(*this);
+}
+
+} // namespace hsmu::comms

@@ -1,0 +1,83 @@
+#pragma once
+// ControllerSession: one console connection to hsmu-controller (internal to the controller:
+// this header includes Asio and is not part of any public API).
+//
+// Life: accepted -> Hello within 5 s (else Error(Timeout), close) -> admitted by the host
+// (token, version, element, one console session at a time) -> frames are handed to the host
+// and its replies sent back; Heartbeat is echoed here; silence past the idle timeout, a
+// malformed frame or Bye closes it. A frame that must close the connection (Error with a
+// closing code) is written completely before the socket is shut down.
+// Thread rules: the controller's single io thread.
+
+#include "comms/protocol/FrameDecoder.h"
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include <array>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace hsmu::comms {
+
+class ControllerSession;
+
+/// What a session needs from the server.
+class SessionHost {
+public:
+    virtual ~SessionHost() = default;
+    /// Admit a hello: fill ack, or return the refusal (the session sends it and closes).
+    virtual std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello,
+                                          HelloAckMsg& ack) = 0;
+    /// A frame of an admitted session (not Hello, Heartbeat or Bye); the reply, if any.
+    virtual std::optional<Message> handle(ControllerSession& s, const Message& m) = 0;
+    /// The connection is gone (called once).
+    virtual void closed(ControllerSession& s) = 0;
+    virtual double idleTimeout() const = 0;
+};
+
+class ControllerSession : public std::enable_shared_from_this<ControllerSession> {
+public:
+    ControllerSession(boost::asio::ip::tcp::socket socket, SessionHost& host);
+    void start();
+    void send(const Message& m);
+    /// Send a final error frame, then close.
+    void refuse(const ErrorMsg& e);
+    /// Close now (pending writes are dropped).
+    void close();
+
+    bool admitted() const { return m_admitted; }
+    std::uint64_t sessionId() const { return m_sessionId; }
+    int station() const { return m_station; }
+    void setStation(int index) { m_station = index; }
+    const std::string& peer() const { return m_peer; }
+
+private:
+    void read();
+    void onFrame(const Frame& f);
+    void write();
+    void finish();
+    void armIdle(double seconds);
+
+    boost::asio::ip::tcp::socket m_socket;
+    boost::asio::steady_timer m_idle;
+    SessionHost& m_host;
+    FrameDecoder m_decoder;
+    std::array<std::uint8_t, 8192> m_readBuffer{};
+    std::deque<std::vector<std::uint8_t>> m_writes;
+    bool m_writing = false;
+    bool m_closeAfterWrite = false;
+    bool m_closed = false;
+    bool m_admitted = false;
+    std::uint32_t m_sequence = 1;
+    std::uint64_t m_sessionId = 0;
+    int m_station = -1;
+    std::string m_peer;
+    std::chrono::steady_clock::time_point m_lastActivity;
+    double m_idleSeconds = 5.0;
+};
+
+} // namespace hsmu::comms

@@ -1,0 +1,336 @@
+#include "comms/controller/SpecimenStation.h"
+
+#include "core/config/TestFactory.h"
+#include "core/hysteresis/HysteresisLaw.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace hsmu::comms {
+
+namespace {
+
+double tighter(double a, double b) {
+    const bool aOn = a > 0.0 && std::isfinite(a), bOn = b > 0.0 && std::isfinite(b);
+    if (aOn && bOn)
+        return std::min(a, b);
+    return aOn ? a : bOn ? b : std::numeric_limits<double>::infinity();
+}
+
+ErrorMsg error(ErrorCode code, std::string reason) {
+    return ErrorMsg{code, std::move(reason)};
+}
+
+} // namespace
+
+SpecimenStation::SpecimenStation(int index, const ElementSpec& spec,
+                                 const ControllerSettings& settings, Pace pace,
+                                 StateJournal* journal)
+    : m_index(index), m_spec(spec), m_settings(settings), m_pace(pace), m_journal(journal),
+      m_actuator(spec.specimen.options.actuator, settings.rate),
+      m_limits(spec.specimen.options.interlock) {
+    makeSpecimen();
+}
+
+SpecimenStation::~SpecimenStation() = default;
+
+void SpecimenStation::makeSpecimen() {
+    // The station models the actuator (at the loop rate) and the interlock itself; the core
+    // specimen contributes the law, the noise and the fracture event.
+    VirtualSpecimenOptions o = m_spec.specimen.options;
+    o.actuator = ActuatorModel{};
+    o.interlock = SafetyLimits{};
+    m_specimen = std::make_unique<VirtualSpecimen>(
+        buildLaw(m_spec.specimen.trueMaterial, "element '" + m_spec.name + "' specimen"), o);
+    if (m_dt > 0.0)
+        m_specimen->prepare(m_dt);
+}
+
+HelloAckMsg SpecimenStation::status() const {
+    HelloAckMsg a;
+    a.committedSteps = m_committed;
+    a.lastCommittedTarget = m_h0;
+    a.holding = m_holding;
+    a.element = m_spec.name;
+    a.holdReason = m_holdReason;
+    const auto& o = m_spec.specimen.options;
+    const char* act = o.actuator.type == ActuatorModel::Type::Lag     ? "lag"
+                      : o.actuator.type == ActuatorModel::Type::Delay ? "delay"
+                                                                      : "ideal";
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "specimen '%s' on hsmu-controller (%s law, force noise std %.3g, %s actuator, "
+                  "%s pace, %.0f Hz predictor-corrector%s), %llu committed steps",
+                  m_spec.name.c_str(), m_spec.specimen.trueMaterial.law.c_str(), o.forceNoiseStd,
+                  act, m_pace == Pace::Fast ? "fast" : "real-time", m_settings.rate,
+                  o.fracture.enabled() ? ", fracture event" : "",
+                  static_cast<unsigned long long>(m_committed));
+    a.description = buf;
+    return a;
+}
+
+bool SpecimenStation::replay(const JournalRecord& r, std::string& error) {
+    const std::string where = "specimen '" + m_spec.name + "': ";
+    switch (r.kind) {
+    case JournalRecord::Kind::Configure:
+        m_dt = r.dt;
+        m_specimen->prepare(m_dt);
+        return true;
+    case JournalRecord::Kind::Reset:
+        makeSpecimen();
+        m_committed = 0;
+        m_h0 = m_h1 = m_h2 = 0.0;
+        m_last = m_trial = Trial{};
+        m_actuator.reset(0.0);
+        m_pc.beginStep(0.0, 0.0, 0.0, 0.0);
+        return true;
+    case JournalRecord::Kind::Commit:
+        break;
+    }
+    if (!(m_dt > 0.0) || r.step != m_committed + 1) {
+        error = where + "journaled step " + std::to_string(r.step) + " does not follow step " +
+                std::to_string(m_committed);
+        return false;
+    }
+    ControlMeasurement cm;
+    if (!m_specimen->setTarget(r.achieved).ok || !m_specimen->measure(cm).ok ||
+        !m_specimen->commit().ok || cm.deformation != r.deformation || cm.force != r.force) {
+        error = where + "replaying step " + std::to_string(r.step) +
+                " does not give the recorded measurement (was the configuration changed?)";
+        return false;
+    }
+    m_last.valid = true;
+    m_last.step = r.step;
+    m_last.target = r.target;
+    m_last.achieved = r.achieved;
+    m_last.measurement = MeasurementMsg{r.step, r.deformation, r.force, r.target, 0, 0};
+    m_h2 = m_h1;
+    m_h1 = m_h0;
+    m_h0 = r.target;
+    m_committed = r.step;
+    m_actuator.reset(r.achieved);
+    m_pc.beginStep(r.achieved, m_h0, m_h1, m_h2); // a restarted rig rests where it stopped
+    return true;
+}
+
+Message SpecimenStation::configure(const ConfigureMsg& m) {
+    if (!(m.dt > 0.0) || !std::isfinite(m.dt))
+        return error(ErrorCode::ProtocolViolation, "configure: dt must be a positive number");
+    const SafetyLimits& own = m_spec.specimen.options.interlock;
+    m_limits.maxDeformation = tighter(own.maxDeformation, m.maxDeformation);
+    m_limits.maxForce = tighter(own.maxForce, m.maxForce);
+    m_limits.maxIncrement = tighter(own.maxIncrement, m.maxIncrement);
+    if (m.dt != m_dt) {
+        m_dt = m.dt;
+        m_specimen->prepare(m_dt);
+        if (m_journal) {
+            JournalRecord r;
+            r.kind = JournalRecord::Kind::Configure;
+            r.element = m_index;
+            r.dt = m_dt;
+            if (Message e = journal(r); std::holds_alternative<ErrorMsg>(e))
+                return e;
+        }
+    }
+    m_pc.setTiming(m_settings.ticksPerStep(m_dt), m_settings.predictTicks(m_dt));
+    if (!m_configured) {
+        m_configured = true;
+        if (!m_trial.valid)
+            beginStep();
+    }
+    return AckMsg{MessageType::Configure, m_committed};
+}
+
+void SpecimenStation::beginStep() {
+    m_pc.beginStep(m_pc.command(), m_h0, m_h1, m_h2);
+}
+
+std::optional<Message> SpecimenStation::advance() {
+    m_pc.tick();
+    const double a = m_actuator.tick(m_pc.command());
+    const double limit = m_limits.maxDeformation;
+    if (!std::isfinite(a) || (limit > 0.0 && std::isfinite(limit) && std::abs(a) > limit)) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "actuator position |d| = %.6g exceeds the limit %.6g",
+                      std::abs(a), limit);
+        return trip(ErrorCode::Interlock, buf);
+    }
+    return std::nullopt;
+}
+
+Message SpecimenStation::trip(ErrorCode code, const std::string& reason) {
+    m_holding = true;
+    m_holdReason = (code == ErrorCode::Interlock       ? "interlock: "
+                    : code == ErrorCode::SpecimenFault ? "specimen fault: "
+                                                       : "controller fault: ") +
+                   reason;
+    m_pc.stop();
+    m_pending = false;
+    ++m_trips;
+    return error(code, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
+}
+
+Message SpecimenStation::finishStep() {
+    const double achieved = m_actuator.position();
+    if (ControlResult r = m_specimen->setTarget(achieved); !r.ok) {
+        m_specimen->resume();
+        return trip(ErrorCode::SpecimenFault, r.reason);
+    }
+    ControlMeasurement cm;
+    if (ControlResult r = m_specimen->measure(cm); !r.ok)
+        return trip(ErrorCode::SpecimenFault, r.reason);
+    if (auto why = m_limits.violationOfForce(cm.force))
+        return trip(ErrorCode::Interlock, *why);
+    m_trial.valid = true;
+    m_trial.step = m_pendingStep;
+    m_trial.target = m_pc.target();
+    m_trial.achieved = achieved;
+    MeasurementMsg& mm = m_trial.measurement;
+    mm.step = m_pendingStep;
+    mm.deformation = cm.deformation;
+    mm.force = cm.force;
+    mm.commanded = m_pc.command();
+    mm.heldTicks = static_cast<std::uint32_t>(m_pc.heldTicks());
+    mm.flags = m_specimen->fractured() ? kFlagFractured : 0u;
+    m_totalHeld += m_pc.heldTicks();
+    m_pending = false;
+    return mm;
+}
+
+std::optional<Message> SpecimenStation::target(const TargetMsg& m) {
+    if (!m_configured)
+        return error(ErrorCode::NotConfigured, "target before configure");
+    if (m_holding)
+        return error(ErrorCode::Holding, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
+    const double d = m.deformation;
+    if (m.step == m_committed && m_last.valid) {
+        if (d != m_last.target)
+            return error(ErrorCode::StateMismatch,
+                         "step " + std::to_string(m.step) + " is committed with another target");
+        MeasurementMsg mm = m_last.measurement;
+        mm.flags |= kFlagReplayed;
+        return mm;
+    }
+    if (m.step != m_committed + 1)
+        return error(ErrorCode::ProtocolViolation, "target for step " + std::to_string(m.step) +
+                                                       ", expected step " +
+                                                       std::to_string(m_committed + 1));
+    if (m_trial.valid && m_trial.step == m.step && m_trial.target == d) {
+        MeasurementMsg mm = m_trial.measurement;
+        mm.flags |= kFlagReplayed;
+        return mm;
+    }
+    if (m_pending && m_pendingStep == m.step && m_pc.target() == d)
+        return std::nullopt; // already on its way
+    if (auto why = m_limits.violationOfTarget(d, m_h0))
+        return trip(ErrorCode::Interlock, *why);
+    m_trial.valid = false;
+    m_pendingStep = m.step;
+    if (m_pace == Pace::RealTime) {
+        m_pc.setTarget(d);
+        m_pending = true;
+        return std::nullopt;
+    }
+    // Fast pace, simulated clock: the target is taken to arrive when prediction ends.
+    while (m_pc.phase() == PredictorCorrector::Phase::Predicting)
+        if (auto e = advance())
+            return e;
+    m_pc.setTarget(d);
+    while (m_pc.phase() == PredictorCorrector::Phase::Correcting)
+        if (auto e = advance())
+            return e;
+    return finishStep();
+}
+
+std::optional<Message> SpecimenStation::tick() {
+    if (!needsTicks())
+        return std::nullopt;
+    if (auto e = advance())
+        return e;
+    if (m_pending && m_pc.phase() == PredictorCorrector::Phase::Arrived)
+        return finishStep();
+    return std::nullopt;
+}
+
+bool SpecimenStation::needsTicks() const {
+    using P = PredictorCorrector::Phase;
+    const P p = m_pc.phase();
+    return m_pace == Pace::RealTime && m_configured && !m_holding &&
+           (p == P::Predicting || p == P::Late || p == P::Correcting);
+}
+
+Message SpecimenStation::commit(const CommitMsg& m) {
+    if (m_holding)
+        return error(ErrorCode::Holding, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
+    if (m.step == m_committed && m_last.valid)
+        return AckMsg{MessageType::Commit, m_committed};
+    if (m.step != m_committed + 1 || !m_trial.valid || m_trial.step != m.step)
+        return error(ErrorCode::ProtocolViolation,
+                     "commit of step " + std::to_string(m.step) + " without its measurement");
+    if (ControlResult r = m_specimen->commit(); !r.ok)
+        return trip(ErrorCode::SpecimenFault, r.reason);
+    m_last = m_trial;
+    m_trial = Trial{};
+    m_h2 = m_h1;
+    m_h1 = m_h0;
+    m_h0 = m_last.target;
+    m_committed = m.step;
+    beginStep();
+    if (m_journal) {
+        JournalRecord r;
+        r.element = m_index;
+        r.step = m_committed;
+        r.target = m_last.target;
+        r.achieved = m_last.achieved;
+        r.deformation = m_last.measurement.deformation;
+        r.force = m_last.measurement.force;
+        if (Message e = journal(r); std::holds_alternative<ErrorMsg>(e))
+            return e;
+    }
+    return AckMsg{MessageType::Commit, m_committed};
+}
+
+Message SpecimenStation::journal(const JournalRecord& r) {
+    std::string why;
+    if (m_journal->append(r, why))
+        return AckMsg{};
+    // The step stands, but a restart would forget it: stop until the operator looks.
+    return trip(ErrorCode::Internal, why);
+}
+
+Message SpecimenStation::hold(const std::string& reason) {
+    m_holding = true;
+    m_holdReason = reason.empty() ? "console hold" : reason;
+    m_pc.stop();
+    m_pending = false;
+    return AckMsg{MessageType::Hold, m_committed};
+}
+
+Message SpecimenStation::resume() {
+    m_holding = false;
+    m_holdReason.clear();
+    m_specimen->resume();
+    return AckMsg{MessageType::Resume, m_committed};
+}
+
+Message SpecimenStation::reset() {
+    makeSpecimen();
+    m_committed = 0;
+    m_h0 = m_h1 = m_h2 = 0.0;
+    m_last = m_trial = Trial{};
+    m_pending = false;
+    m_holding = false;
+    m_holdReason.clear();
+    m_actuator.reset(0.0);
+    m_pc.beginStep(0.0, 0.0, 0.0, 0.0);
+    if (m_journal) {
+        JournalRecord r;
+        r.kind = JournalRecord::Kind::Reset;
+        r.element = m_index;
+        if (Message e = journal(r); std::holds_alternative<ErrorMsg>(e))
+            return e;
+    }
+    return AckMsg{MessageType::Reset, 0};
+}
+
+} // namespace hsmu::comms

@@ -1,0 +1,116 @@
+#pragma once
+// SpecimenStation: one specimen on the virtual rig of hsmu-controller: the core
+// VirtualSpecimen (its own true law, sensor noise, fracture event), the actuator dynamics
+// and the predictor-corrector at the loop rate, the interlock, and the state journal.
+// It answers the protocol's specimen messages; sockets and clocks live in ControllerServer.
+//
+// Step protocol (step indices count the specimen's committed steps, c = committedSteps()):
+//   Target(c + 1, d)   checked against the interlock, then the command is corrected toward d
+//                      (fast pace: at once on a simulated clock; real time: over the next
+//                      ticks, and tick() returns the Measurement when d is reached);
+//                      re-sent with the same d it answers the same measurement again
+//                      (kFlagReplayed) without a new trial: nothing is measured twice.
+//   Target(c, d)       the committed step again (its commit ack was lost): its measurement.
+//   Commit(c + 1)      the specimen commits, the journal records it, then Ack(c + 1).
+//   Commit(c)          a repeated commit: Ack(c), nothing else.
+// The specimen is evaluated once per step, at the position the actuator holds when the step
+// ends: a law's trial always starts from its committed state (HysteresisLaw), so with an ideal
+// actuator every measurement equals the in-process VirtualSpecimen's for the same targets.
+//
+// Interlock (SafetyLimits; the specimen section's `interlock`, tightened by the limits the
+// console configures): a target past the deformation or increment limit (increment from the
+// last committed target), an actuator position past the deformation limit at any tick, or a
+// measured force past the force limit -> the station holds and answers Error(Interlock)
+// whose text names the limit. Targets are refused (Error(Holding)) until Resume.
+// Thread rules: one thread (the controller's io thread).
+
+#include "comms/controller/ActuatorDynamics.h"
+#include "comms/controller/ControllerSettings.h"
+#include "comms/controller/PredictorCorrector.h"
+#include "comms/controller/StateJournal.h"
+#include "comms/protocol/Messages.h"
+#include "core/config/TestConfig.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace hsmu::comms {
+
+class SpecimenStation {
+public:
+    enum class Pace { RealTime, Fast };
+
+    /// index: the element's position among the configuration's specimens (journal key).
+    /// journal may be null (no state file). Throws ConfigError if the law cannot be built.
+    SpecimenStation(int index, const ElementSpec& spec, const ControllerSettings& settings,
+                    Pace pace, StateJournal* journal);
+    ~SpecimenStation();
+
+    /// Re-apply a journaled record at start-up (no journal write). False + error if the
+    /// replayed specimen does not measure what was recorded.
+    bool replay(const JournalRecord& r, std::string& error);
+
+    const std::string& name() const { return m_spec.name; }
+    /// committedSteps, lastCommittedTarget, holding, element, description, holdReason.
+    HelloAckMsg status() const;
+
+    Message configure(const ConfigureMsg& m);
+    /// A measurement or an error now, or nullopt: the step is under way (real time), tick()
+    /// delivers its measurement.
+    std::optional<Message> target(const TargetMsg& m);
+    /// One tick of the loop (real time). A Measurement when a step ends, an Error when the
+    /// interlock trips, else nullopt.
+    std::optional<Message> tick();
+    /// True when tick() has work (a step is being predicted, waited for or corrected).
+    bool needsTicks() const;
+    Message commit(const CommitMsg& m);
+    Message hold(const std::string& reason);
+    Message resume();
+    /// A fresh specimen (virgin law, step count 0), recorded in the journal.
+    Message reset();
+
+    std::uint64_t committedSteps() const { return m_committed; }
+    bool holding() const { return m_holding; }
+    const std::string& holdReason() const { return m_holdReason; }
+    long totalHeldTicks() const { return m_totalHeld; }
+    int interlockTrips() const { return m_trips; }
+
+private:
+    struct Trial {
+        bool valid = false;
+        std::uint64_t step = 0;
+        double target = 0.0, achieved = 0.0;
+        MeasurementMsg measurement;
+    };
+    void makeSpecimen();
+    void beginStep();
+    /// One tick of predictor + actuator with the deformation interlock; an error on a trip.
+    std::optional<Message> advance();
+    Message finishStep();
+    Message trip(ErrorCode code, const std::string& reason);
+    Message journal(const JournalRecord& r);
+
+    int m_index;
+    ElementSpec m_spec;
+    ControllerSettings m_settings;
+    Pace m_pace;
+    StateJournal* m_journal;
+    std::unique_ptr<VirtualSpecimen> m_specimen;
+    ActuatorDynamics m_actuator;
+    PredictorCorrector m_pc;
+    SafetyLimits m_limits;
+    double m_dt = 0.0;
+    bool m_configured = false;
+    std::uint64_t m_committed = 0;
+    double m_h0 = 0.0, m_h1 = 0.0, m_h2 = 0.0; // last committed targets, newest first
+    Trial m_trial, m_last;                     // uncommitted measured trial; last committed step
+    bool m_pending = false;
+    std::uint64_t m_pendingStep = 0;
+    bool m_holding = false;
+    std::string m_holdReason;
+    long m_totalHeld = 0;
+    int m_trips = 0;
+};
+
+} // namespace hsmu::comms

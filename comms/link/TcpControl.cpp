@@ -1,0 +1,300 @@
+#include "comms/link/TcpControl.h"
+
+#include "comms/link/LinkClient.h"
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+namespace hsmu::comms {
+
+namespace {
+
+bool closesConnection(ErrorCode c) {
+    switch (c) {
+    case ErrorCode::Malformed:
+    case ErrorCode::UnsupportedVersion:
+    case ErrorCode::Unauthorized:
+    case ErrorCode::Busy:
+    case ErrorCode::UnknownElement:
+    case ErrorCode::Timeout:
+        return true;
+    default:
+        return false;
+    }
+}
+
+} // namespace
+
+TcpControl::TcpControl(std::string host, std::uint16_t port, std::string element,
+                       const SafetyLimits& limits, const TcpControlOptions& options)
+    : m_link(std::make_unique<LinkClient>(
+          LinkClientOptions{options.heartbeatInterval, options.silenceTimeout})),
+      m_host(std::move(host)), m_port(port), m_element(std::move(element)), m_limits(limits),
+      m_opt(options) {}
+
+TcpControl::~TcpControl() {
+    if (m_link->isOpen()) {
+        std::string ignore;
+        m_link->send(ByeMsg{"test finished"}, ignore);
+    }
+    m_link->close();
+}
+
+std::string TcpControl::where() const {
+    const bool v6 = m_host.find(':') != std::string::npos;
+    return "tcp://" + (v6 ? "[" + m_host + "]" : m_host) + ":" + std::to_string(m_port);
+}
+
+std::string TcpControl::description() const {
+    return "TCP link " + where() + " to " +
+           (m_controllerDescription.empty() ? "specimen '" + m_element + "'"
+                                            : m_controllerDescription);
+}
+
+bool TcpControl::linkUp() const {
+    return m_link->isOpen();
+}
+
+ControlResult TcpControl::linkFault(const std::string& what) {
+    m_link->close();
+    m_linkError = what;
+    m_awaitingMeasurement = false;
+    return ControlResult::fault("link to " + where() + ": " + what);
+}
+
+ControlResult TcpControl::refused(const ErrorMsg& e) {
+    const std::string text = std::string(errorCodeName(e.code)) + ": " + e.reason;
+    if (closesConnection(e.code)) {
+        m_link->close();
+        m_linkError = text;
+    }
+    return ControlResult::fault("controller at " + where() + ": " + text);
+}
+
+ControlResult TcpControl::await(MessageType acked, double timeout) {
+    std::string error;
+    const auto m = m_link->receive(timeout, error);
+    if (!m)
+        return linkFault(std::string("no ") + messageTypeName(acked) +
+                         " acknowledgement: " + error);
+    if (const auto* e = std::get_if<ErrorMsg>(&*m))
+        return refused(*e);
+    const auto* a = std::get_if<AckMsg>(&*m);
+    if (!a || a->acked != acked)
+        return linkFault(std::string("expected the ") + messageTypeName(acked) +
+                         " acknowledgement, received " + messageTypeName(messageTypeOf(*m)));
+    if (acked == MessageType::Commit && a->step != m_committed + 1)
+        return linkFault("commit acknowledged for step " + std::to_string(a->step) + ", expected " +
+                         std::to_string(m_committed + 1));
+    return ControlResult::success();
+}
+
+ControlResult TcpControl::handshake(bool initial) {
+    std::string error;
+    m_awaitingMeasurement = false;
+    m_connectFailed = false;
+    if (!m_link->connect(m_host, m_port, m_opt.connectTimeout, error)) {
+        m_connectFailed = true;
+        m_linkError = error;
+        return ControlResult::fault("link to " + where() + ": " + error);
+    }
+    HelloMsg hello;
+    hello.sessionId = m_opt.sessionId;
+    hello.token = m_opt.token;
+    hello.element = m_element;
+    if (!m_link->send(hello, error))
+        return linkFault(error);
+    const auto m = m_link->receive(m_opt.stepDeadline, error);
+    if (!m)
+        return linkFault("no answer to the hello: " + error);
+    if (const auto* e = std::get_if<ErrorMsg>(&*m))
+        return refused(*e);
+    const auto* ack = std::get_if<HelloAckMsg>(&*m);
+    if (!ack)
+        return linkFault(std::string("expected hello-ack, received ") +
+                         messageTypeName(messageTypeOf(*m)));
+    m_controllerDescription = ack->description;
+    m_controllerCommitted = ack->committedSteps;
+    if (initial) {
+        m_committed = ack->committedSteps;
+        if (m_committed > 0 && m_opt.freshSpecimen) {
+            if (!m_link->send(ResetMsg{}, error))
+                return linkFault(error);
+            if (ControlResult r = await(MessageType::Reset, m_opt.stepDeadline); !r.ok)
+                return r;
+            m_committed = 0;
+        }
+    } else if (ack->committedSteps != m_committed && ack->committedSteps != m_committed + 1) {
+        // +1: the controller committed the step whose acknowledgement was lost; the retried
+        // step gets that step's measurement and commit again, idempotently.
+        return linkFault("the controller's specimen is at step " +
+                         std::to_string(ack->committedSteps) + " but the test committed " +
+                         std::to_string(m_committed) +
+                         " (was it restarted without its --state file?); cannot resume "
+                         "without a jump");
+    }
+    ConfigureMsg c;
+    c.dt = m_dt;
+    c.maxDeformation = m_limits.maxDeformation;
+    c.maxForce = m_limits.maxForce;
+    c.maxIncrement = m_limits.maxIncrement;
+    if (!m_link->send(c, error))
+        return linkFault(error);
+    if (ControlResult r = await(MessageType::Configure, m_opt.stepDeadline); !r.ok)
+        return r;
+    m_linkError.clear();
+    return ControlResult::success();
+}
+
+ControlResult TcpControl::reconnect() {
+    const int attempts = std::max(1, m_opt.reconnectAttempts);
+    ControlResult last;
+    for (int i = 0; i < attempts; ++i) {
+        if (i > 0)
+            std::this_thread::sleep_for(std::chrono::duration<double>(m_opt.reconnectDelay));
+        last = handshake(false);
+        if (last.ok) {
+            ++m_reconnects;
+            return last;
+        }
+        if (!m_connectFailed)
+            break; // refused, or the specimen is not where the test left it
+    }
+    return last;
+}
+
+ControlResult TcpControl::prepare(double dt) {
+    if (!(dt > 0.0))
+        return ControlResult::fault("TCP link: dt must be > 0");
+    m_dt = dt;
+    const int attempts = std::max(1, m_opt.reconnectAttempts);
+    ControlResult r;
+    for (int i = 0; i < attempts; ++i) {
+        if (i > 0)
+            std::this_thread::sleep_for(std::chrono::duration<double>(m_opt.reconnectDelay));
+        r = handshake(true);
+        if (r.ok || !m_connectFailed) // a refusal (busy, token, ...) is not retried
+            break;
+    }
+    return r;
+}
+
+ControlResult TcpControl::setTarget(double d) {
+    if (m_holding)
+        return ControlResult::fault("TCP link is holding: " + m_holdReason);
+    if (!m_link->isOpen())
+        return ControlResult::fault("link to " + where() + " is down (" + m_linkError +
+                                    "); resume to reconnect");
+    std::string error;
+    if (!m_link->send(TargetMsg{m_committed + 1, d}, error))
+        return linkFault(error);
+    m_sentTarget = d;
+    m_awaitingMeasurement = true;
+    return ControlResult::success();
+}
+
+ControlResult TcpControl::measure(ControlMeasurement& out) {
+    if (!m_awaitingMeasurement)
+        return ControlResult::fault("TCP link: measure() without a target");
+    m_awaitingMeasurement = false;
+    std::string error;
+    const auto m = m_link->receive(m_opt.stepDeadline, error);
+    if (!m)
+        return linkFault("no measurement for step " + std::to_string(m_committed + 1) + ": " +
+                         error);
+    if (const auto* e = std::get_if<ErrorMsg>(&*m))
+        return refused(*e);
+    const auto* mm = std::get_if<MeasurementMsg>(&*m);
+    if (!mm)
+        return linkFault(std::string("expected a measurement, received ") +
+                         messageTypeName(messageTypeOf(*m)));
+    if (mm->step != m_committed + 1)
+        return linkFault("measurement for step " + std::to_string(mm->step) + ", expected " +
+                         std::to_string(m_committed + 1));
+    m_last = *mm;
+    out.deformation = mm->deformation;
+    out.force = mm->force;
+    return ControlResult::success();
+}
+
+ControlResult TcpControl::commit() {
+    if (!m_link->isOpen())
+        return recoverCommit("link down (" + m_linkError + ")");
+    std::string error;
+    if (!m_link->send(CommitMsg{m_committed + 1}, error))
+        return recoverCommit(error);
+    ControlResult r = await(MessageType::Commit, m_opt.stepDeadline);
+    if (r.ok) {
+        ++m_committed;
+        return r;
+    }
+    return m_link->isOpen() ? r : recoverCommit(m_linkError);
+}
+
+ControlResult TcpControl::recoverCommit(const std::string& why) {
+    // The integrator has already completed this step when commit() is called, so a lost
+    // commit is settled here rather than by holding and retrying the step: reconnect, and
+    // either the controller did commit (its step count says so) or the step is measured again
+    // (same target, no new trial on a running controller; a restarted one recomputes it from
+    // its journal, which must give the very same measurement) and committed.
+    const int attempts = std::max(1, m_opt.reconnectAttempts);
+    ControlResult last = ControlResult::fault("link to " + where() + ": commit lost: " + why);
+    for (int i = 0; i < attempts; ++i) {
+        if (i > 0)
+            std::this_thread::sleep_for(std::chrono::duration<double>(m_opt.reconnectDelay));
+        if (ControlResult h = handshake(false); !h.ok) {
+            last = h;
+            if (!m_connectFailed)
+                break;
+            continue;
+        }
+        ++m_reconnects;
+        if (m_controllerCommitted == m_committed + 1) {
+            ++m_committed;
+            return ControlResult::success();
+        }
+        const MeasurementMsg before = m_last;
+        ControlMeasurement again;
+        if (ControlResult t = setTarget(m_sentTarget); !t.ok)
+            return t;
+        if (ControlResult mr = measure(again); !mr.ok)
+            return mr;
+        if (again.deformation != before.deformation || again.force != before.force)
+            return ControlResult::fault("controller at " + where() + ": step " +
+                                        std::to_string(m_committed + 1) +
+                                        " measured differently after the reconnect; not committed");
+        std::string error;
+        if (!m_link->send(CommitMsg{m_committed + 1}, error))
+            return linkFault(error);
+        if (ControlResult c = await(MessageType::Commit, m_opt.stepDeadline); !c.ok)
+            return c;
+        ++m_committed;
+        return ControlResult::success();
+    }
+    return last;
+}
+
+void TcpControl::hold(const std::string& reason) {
+    m_holding = true;
+    m_holdReason = reason;
+    m_awaitingMeasurement = false;
+    if (!m_link->isOpen())
+        return;
+    std::string error;
+    if (!m_link->send(HoldMsg{reason}, error) ||
+        !await(MessageType::Hold, std::min(m_opt.stepDeadline, 2.0)).ok)
+        linkFault("no acknowledgement of the hold");
+}
+
+void TcpControl::resume() {
+    m_holding = false;
+    m_holdReason.clear();
+    if (!m_link->isOpen() && !reconnect().ok)
+        return; // setTarget reports the link as down; the test holds again
+    std::string error;
+    if (!m_link->send(ResumeMsg{}, error) || !await(MessageType::Resume, m_opt.stepDeadline).ok)
+        linkFault("no acknowledgement of the resume");
+}
+
+} // namespace hsmu::comms

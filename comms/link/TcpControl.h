@@ -1,0 +1,104 @@
+#pragma once
+// TcpControl: an ExperimentalControl over the native protocol to hsmu-controller (or any
+// controller speaking it; docs/protocol.md). Per step: setTarget sends Target(n, d),
+// measure() waits for Measurement(n), commit() for Ack(Commit, n), where n = committedSteps()
+// + 1 counts the specimen's steps. Every wait has a deadline (options.stepDeadline); the
+// LinkClient underneath sends heartbeats and declares a silent link lost.
+//
+// Faults are returned, never thrown: a lost connection, a timeout, a malformed reply or an
+// error frame (interlock, busy, wrong token ...) -> ControlResult::fault(reason). On a lost
+// link or a timeout the connection is closed (a late reply can never be taken for a later
+// step); the HybridTest then holds with every committed step kept, and sends nothing more.
+// A commit whose acknowledgement is lost is settled inside commit() (the step is complete in
+// the integrator by then): up to reconnectAttempts reconnections, then either the controller's
+// step count shows the commit, or the step's target is re-sent and must measure the same
+// before it is committed; only if that fails does commit() return a fault.
+// resume() (operator action, or a headless retry policy calling resume()) reconnects with
+// up to options.reconnectAttempts attempts, checks that the controller's specimen is where
+// the test left it (same committed step, or one step ahead when the last commit's
+// acknowledgement was lost), reconfigures and sends Resume; the held step is then retried
+// with the same target, which the controller answers without a new trial, so the test
+// continues without a jump and records every step exactly once.
+// Thread rules: one thread at a time (the test worker); all calls bounded by deadlines.
+
+#include "comms/protocol/Messages.h"
+#include "core/experimental/ExperimentalControl.h"
+#include "core/experimental/SafetyLimits.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace hsmu::comms {
+
+class LinkClient;
+
+struct TcpControlOptions {
+    std::string token;               ///< shared secret for the hello ("" = none)
+    double connectTimeout = 5.0;     ///< [s] per connection attempt
+    double stepDeadline = 10.0;      ///< [s] for each reply (measurement, acknowledgements)
+    double heartbeatInterval = 0.25; ///< [s]
+    double silenceTimeout = 5.0;     ///< [s] without any frame: the link is lost
+    int reconnectAttempts = 3;       ///< attempts per reconnect() / resume() (at least 1)
+    double reconnectDelay = 0.5;     ///< [s] between attempts
+    bool freshSpecimen = false;      ///< prepare(): reset a specimen that has history
+    std::uint64_t sessionId = 0;     ///< 0: makeControlFactory draws one per test
+};
+
+class TcpControl final : public ExperimentalControl {
+public:
+    /// element: the specimen's name in the controller's configuration; limits: the console's
+    /// limits for it (sent in Configure, the controller enforces the tighter of its own).
+    TcpControl(std::string host, std::uint16_t port, std::string element,
+               const SafetyLimits& limits, const TcpControlOptions& options);
+    ~TcpControl() override;
+
+    std::string description() const override;
+    /// Connect, hello, (reset when freshSpecimen), configure.
+    ControlResult prepare(double dt) override;
+    ControlResult setTarget(double d) override;
+    ControlResult measure(ControlMeasurement& out) override;
+    ControlResult commit() override;
+    void hold(const std::string& reason) override;
+    void resume() override;
+
+    /// Close any connection and connect again (up to reconnectAttempts attempts).
+    ControlResult reconnect();
+    bool linkUp() const;
+    /// Why the link went down last ("" if it never did).
+    const std::string& linkError() const { return m_linkError; }
+    /// The specimen's committed steps as the console knows them.
+    std::uint64_t committedSteps() const { return m_committed; }
+    /// The last measurement frame (held ticks, flags).
+    const MeasurementMsg& lastMeasurement() const { return m_last; }
+    int reconnects() const { return m_reconnects; }
+
+private:
+    ControlResult handshake(bool initial);
+    ControlResult await(MessageType acked, double timeout);
+    ControlResult linkFault(const std::string& what);
+    ControlResult recoverCommit(const std::string& why);
+    ControlResult refused(const ErrorMsg& e);
+    std::string where() const;
+
+    std::unique_ptr<LinkClient> m_link;
+    std::string m_host;
+    std::uint16_t m_port;
+    std::string m_element;
+    SafetyLimits m_limits;
+    TcpControlOptions m_opt;
+    double m_dt = 0.0;
+    std::uint64_t m_committed = 0;
+    bool m_awaitingMeasurement = false;
+    bool m_holding = false;
+    std::string m_holdReason;
+    std::string m_controllerDescription;
+    std::string m_linkError;
+    MeasurementMsg m_last;
+    int m_reconnects = 0;
+    bool m_connectFailed = false;
+    std::uint64_t m_controllerCommitted = 0; // as of the last hello-ack
+    double m_sentTarget = 0.0;
+};
+
+} // namespace hsmu::comms

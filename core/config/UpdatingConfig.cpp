@@ -1,0 +1,210 @@
+#include "core/config/UpdatingConfig.h"
+
+#include "core/config/TestFactory.h"
+#include "core/hysteresis/BoucWen.h"
+#include "core/updating/ModelUpdater.h"
+//NM#include "core/updating/NelderMeadIdentifier.h"
+#include "core/updating/UkfIdentifier.h"
+
+namespace hsmu {
+
+namespace {
+
+const ElementSpec* findElement(const TestConfig& cfg, const std::string& name)
+{
+    for (const auto& e : cfg.elements)
+        if (e.name == name)
+            return &e;
+    return nullptr;
+}
+
+std::vector<std::string> stringList(const JsonCursor& c, const std::string& key)
+{
+    std::vector<std::string> out;
+    const JsonCursor a = c.child(key);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (!a.node()[i].is_string())
+            a.fail("", "expected an array of parameter names");
+        out.push_back(a.node()[i].get<std::string>());
+    }
+    return out;
+}
+
+/// The paper updates all but A0 and deltaA.
+std::vector<std::string> defaultTargetParameters(const std::string& law)
+{
+    if (law == "boucWen")
+        return {"k0", "alpha", "n", "beta", "gamma", "deltaNu", "deltaEta"};
+    if (law == "bilinear")
+        return {"k0", "fy", "b"};
+    return {"k"};
+}
+
+} // namespace
+
+UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
+{
+    c.allowOnly({"enabled", "specimen", "method", "bounds", "ukf", "nelderMead", "inspector",
+                 "reporter", "approval", "maxConsecutiveRejections"});
+    UpdatingSpec u;
+    u.enabled = c.boolean("enabled", true);
+    u.specimen = c.string("specimen");
+    const ElementSpec* sp = findElement(cfg, u.specimen);
+    if (!sp || !sp->experimental)
+        c.fail("specimen", "expected the name of an experimental element, found '" + u.specimen + "'");
+    u.method = c.string("method", "ukf");
+    if (u.method != "ukf" && u.method != "nelderMead")
+        c.fail("method", "expected 'ukf' or 'nelderMead'");
+    if (u.method == "ukf" && sp->material.law != "boucWen")
+        c.fail("method", "the UKF identifies a boucWen model; the specimen's model is '" +
+                             sp->material.law + "' (use nelderMead)");
+    if (c.has("bounds")) {
+        const JsonCursor b = c.child("bounds");
+        b.requireObject();
+        for (auto it = b.node().begin(); it != b.node().end(); ++it) {
+            const auto& v = it.value();
+            if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+                v[0].get<double>() > v[1].get<double>())
+                b.fail(it.key(), "expected [lower, upper] with lower <= upper");
+            u.bounds[it.key()] = {v[0].get<double>(), v[1].get<double>()};
+        }
+    }
+    if (c.has("ukf")) {
+        const JsonCursor k = c.child("ukf");
+        k.allowOnly({"a", "b", "kappa", "forceNoise", "parameterNoise", "initialStdFraction"});
+        u.ukfA = k.number("a", u.ukfA);
+        u.ukfB = k.number("b", u.ukfB);
+        if (k.has("kappa"))
+            u.ukfKappa = k.number("kappa");
+        u.forceNoise = k.number("forceNoise", u.forceNoise);
+        u.parameterNoise = k.number("parameterNoise", u.parameterNoise);
+        u.initialStdFraction = k.number("initialStdFraction", u.initialStdFraction);
+        if (!(u.ukfA > 0.0))
+            k.fail("a", "expected a > 0");
+        if (!(u.forceNoise > 0.0))
+            k.fail("forceNoise", "expected a noise std > 0 (fraction of fRef)");
+        if (u.parameterNoise < 0.0 || u.initialStdFraction < 0.0)
+            k.fail("", "expected non-negative noise fractions");
+    }
+    if (c.has("nelderMead")) {
+        const JsonCursor n = c.child("nelderMead");
+        n.allowOnly({"maxEvaluations", "cooldown", "window", "parameters"});
+        u.maxEvaluations = n.integer("maxEvaluations", u.maxEvaluations);
+        u.cooldown = n.number("cooldown", u.cooldown);
+        u.fitWindow = n.number("window", u.fitWindow);
+        if (n.has("parameters"))
+            u.parameters = stringList(n, "parameters");
+        if (u.maxEvaluations < 1)
+            n.fail("maxEvaluations", "expected at least 1");
+    }
+    if (u.method == "nelderMead" && u.parameters.empty())
+        u.parameters = defaultTargetParameters(sp->material.law);
+    // No fracture is judged before the specimen carried a tenth of its reference force.
+    {
+        const auto& mp = sp->material.params;
+        const char* key = sp->material.law == "boucWen" ? "fRef" : (sp->material.law == "bilinear" ? "fy" : "");
+        if (*key)
+            u.inspector.minimumForce = 0.1 * (mp.count(key) ? mp.at(key) : 1.0);
+    }
+    if (c.has("inspector")) {
+        const JsonCursor i = c.child("inspector");
+        i.allowOnly({"window", "threshold", "fractureDrop", "minimumForce", "pinnedTime",
+                     "trackingWindow", "trackingJ2Limit", "trackingInterval"});
+        auto& s = u.inspector;
+        s.window = i.number("window", s.window);
+        s.threshold = i.number("threshold", s.threshold);
+        s.fractureDrop = i.number("fractureDrop", s.fractureDrop);
+        s.minimumForce = i.number("minimumForce", s.minimumForce);
+        s.pinnedTime = i.number("pinnedTime", s.pinnedTime);
+        s.trackingWindow = i.number("trackingWindow", s.trackingWindow);
+        s.trackingJ2Limit = i.number("trackingJ2Limit", s.trackingJ2Limit);
+        s.trackingInterval = i.number("trackingInterval", s.trackingInterval);
+        if (!(s.window > 0.0) || !(s.trackingWindow > 0.0) || !(s.trackingInterval > 0.0))
+            i.fail("", "expected positive windows and interval [s]");
+    }
+    if (c.has("reporter")) {
+        const JsonCursor r = c.child("reporter");
+        r.allowOnly({"policy", "everyN", "targets"});
+        const std::string policy = r.string("policy", "everyStep");
+        auto p = parseReporterPolicy(policy);
+        if (!p)
+            r.fail("policy", "expected everyStep, zeroCrossing, everyNSteps or onApproval");
+        u.policy = *p;
+        u.everyN = r.integer("everyN", u.everyN);
+        if (u.everyN < 1)
+            r.fail("everyN", "expected at least 1");
+        if (r.has("targets")) {
+            const JsonCursor ts = r.child("targets");
+            for (std::size_t k = 0; k < ts.size(); ++k) {
+                const JsonCursor t = ts.at(k);
+                t.allowOnly({"element", "parameters", "scale"});
+                ReporterTarget target;
+                target.element = t.string("element");
+                const ElementSpec* te = findElement(cfg, target.element);
+                if (!te || te->experimental)
+                    t.fail("element", "expected a numerical element, found '" + target.element + "'");
+                if (te->material.law != sp->material.law)
+                    t.fail("element", "its law '" + te->material.law +
+                                          "' differs from the specimen model's '" +
+                                          sp->material.law + "'");
+                target.parameters = t.has("parameters") ? stringList(t, "parameters")
+                                                        : defaultTargetParameters(te->material.law);
+                if (t.has("scale")) {
+                    const JsonCursor s = t.child("scale");
+                    s.requireObject();
+                    for (auto it = s.node().begin(); it != s.node().end(); ++it)
+                        target.scale[it.key()] = s.number(it.key());
+                }
+                u.targets.push_back(std::move(target));
+            }
+        }
+    }
+    u.approval = c.string("approval", u.approval);
+    if (u.approval != "manual" && u.approval != "approveAll" && u.approval != "rejectAll")
+        c.fail("approval", "expected manual, approveAll or rejectAll");
+    u.maxConsecutiveRejections = c.integer("maxConsecutiveRejections", u.maxConsecutiveRejections);
+    return u;
+}
+
+std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
+{
+    const UpdatingSpec& u = cfg.updating;
+    if (!u.enabled)
+        return nullptr;
+    const ElementSpec* sp = findElement(cfg, u.specimen);
+    const std::string where = cfg.sourcePath + ": updating";
+    if (!sp)
+        throw ConfigError(where + ": no element '" + u.specimen + "'");
+    auto aux = buildLaw(sp->material, where);
+    std::unique_ptr<Identifier> identifier;
+    try {
+        if (u.method == "ukf") {
+            const auto* bw = dynamic_cast<const BoucWen*>(aux.get());
+            if (!bw)
+                throw ConfigError(where + ": the UKF needs a boucWen specimen model");
+            BoucWenUkfSettings s;
+            s.ukf.a = u.ukfA;
+            s.ukf.b = u.ukfB;
+            s.ukf.kappa = u.ukfKappa;
+            s.forceNoise = u.forceNoise;
+            s.parameterNoise = u.parameterNoise;
+            s.initialStdFraction = u.initialStdFraction;
+            identifier = std::make_unique<UkfIdentifier>(bw->parameters(), s, u.bounds);
+        } else {
+            throw ConfigError(where + ": nelderMead: not yet available");
+        }
+    } catch (const std::invalid_argument& e) {
+        throw ConfigError(where + ": " + e.what());
+    }
+    auto reporter = std::make_unique<Reporter>(u.targets, u.policy, u.everyN);
+    auto updater = std::make_unique<ModelUpdater>(u.specimen, std::move(aux), std::move(identifier),
+                                                  u.inspector, std::move(reporter));
+    if (u.approval == "approveAll")
+        updater->setAutoResolve(true);
+    else if (u.approval == "rejectAll")
+        updater->setAutoResolve(false);
+    updater->setMaxConsecutiveRejections(u.maxConsecutiveRejections);
+    return updater;
+}
+
+} // namespace hsmu

@@ -1,0 +1,379 @@
+#include "core/identification/UnscentedKalmanFilter.h"
+
+#include "core/identification/UkfKernels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hsmu {
+
+namespace {
+
+std::string sizeText(Eigen::Index rows, Eigen::Index cols) {
+    return std::to_string(rows) + " x " + std::to_string(cols);
+}
+
+// Second differences below this many eps of the three function values are rounding noise.
+constexpr double kRoundingFloor = 8.0 * std::numeric_limits<double>::epsilon();
+
+} // namespace
+
+UkfStatus UnscentedKalmanFilter::init(const Vector& x0, const Matrix& P0) {
+    UkfStatus status = setState(x0, P0);
+    if (!status.ok) {
+        return status;
+    }
+    m_Q = Matrix::Zero(x0.size(), x0.size());
+    if (m_R.rows() == 0) {
+        m_R = Matrix::Identity(1, 1);
+    }
+    return status;
+}
+
+UkfStatus UnscentedKalmanFilter::setState(const Vector& x, const Matrix& P) {
+    if (x.size() == 0 || P.rows() != x.size() || P.cols() != x.size()) {
+        return {false, UkfFault::DimensionMismatch,
+                "state of size " + std::to_string(x.size()) + " with a covariance of size " +
+                    sizeText(P.rows(), P.cols())};
+    }
+    if (!x.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, "the state is not finite"};
+    }
+    Matrix symmetric = P;
+    ukfkernels::symmetrize(symmetric);
+    UkfStatus status = factor(symmetric, "the covariance");
+    if (!status.ok) {
+        return status;
+    }
+    addJitter(symmetric, status.jitter);
+    m_x = x;
+    m_P = symmetric;
+    m_sqrtIsOfP = true;
+    if (m_Q.rows() != x.size()) {
+        m_Q = Matrix::Zero(x.size(), x.size());
+    }
+    m_initialized = true;
+    return status;
+}
+
+UkfStatus UnscentedKalmanFilter::setProcessNoise(const Matrix& Q) {
+    if (m_initialized && (Q.rows() != m_x.size() || Q.cols() != m_x.size())) {
+        return {false, UkfFault::DimensionMismatch,
+                "Q is " + sizeText(Q.rows(), Q.cols()) + ", expected " +
+                    sizeText(m_x.size(), m_x.size())};
+    }
+    if (!Q.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, "Q is not finite"};
+    }
+    m_Q = Q;
+    return {};
+}
+
+UkfStatus UnscentedKalmanFilter::setMeasurementNoise(const Matrix& R) {
+    if (R.rows() == 0 || R.rows() != R.cols()) {
+        return {false, UkfFault::DimensionMismatch,
+                "R is " + sizeText(R.rows(), R.cols()) + ", expected a square matrix"};
+    }
+    if (!R.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, "R is not finite"};
+    }
+    m_R = R;
+    return {};
+}
+
+UnscentedKalmanFilter::Vector UnscentedKalmanFilter::standardDeviations() const {
+    return m_P.diagonal().cwiseMax(0.0).cwiseSqrt();
+}
+
+UkfStatus UnscentedKalmanFilter::computeWeights(Weights& w) const {
+    const double n = static_cast<double>(m_x.size());
+    const double a = m_settings.a;
+    const double kappa = m_settings.kappa.value_or(3.0 - n);
+    const double b = m_settings.b;
+    if (!(std::isfinite(a) && a > 0.0) || !std::isfinite(b) || !std::isfinite(kappa)) {
+        return {false, UkfFault::InvalidSettings, "a must be finite and > 0, b and kappa finite"};
+    }
+    if (!(n + kappa > 0.0)) {
+        return {false, UkfFault::InvalidSettings, "L + kappa must be > 0"};
+    }
+    if (!(m_settings.jitterStart > 0.0 && m_settings.jitterMax >= m_settings.jitterStart)) {
+        return {false, UkfFault::InvalidSettings, "need 0 < jitterStart <= jitterMax"};
+    }
+    const double nPlusLambda = a * a * (n + kappa);
+    w.other = 0.5 / nPlusLambda;
+    w.spread = std::sqrt(nPlusLambda);
+    if (!std::isfinite(w.other) || !std::isfinite(w.spread) || w.spread == 0.0) {
+        return {false, UkfFault::InvalidSettings, "the sigma-point weights are not finite"};
+    }
+    return {};
+}
+
+void UnscentedKalmanFilter::addJitter(Matrix& P, double jitter) const {
+    if (jitter == 0.0) {
+        return;
+    }
+    for (const int j : m_active) {
+        P(j, j) += jitter;
+    }
+}
+
+UkfStatus UnscentedKalmanFilter::factor(const Matrix& P, const char* what) {
+    m_sqrtIsOfP = false;
+    const Eigen::Index n = P.rows();
+    if (!P.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, std::string(what) + " is not finite"};
+    }
+    m_active.clear();
+    double scale = 0.0;
+    for (Eigen::Index j = 0; j < n; ++j) {
+        const double v = P(j, j);
+        if (v < 0.0) {
+            return {false, UkfFault::NotPositiveDefinite,
+                    std::string(what) + " has a negative variance at component " +
+                        std::to_string(j)};
+        }
+        if (v > 0.0) {
+            m_active.push_back(static_cast<int>(j));
+            scale += v;
+        }
+    }
+    if (m_active.empty()) {
+        m_sqrt.setZero(n, n);
+        return {};
+    }
+    scale /= static_cast<double>(m_active.size());
+    const bool allActive = static_cast<Eigen::Index>(m_active.size()) == n;
+    if (!allActive) {
+        // A zero-variance component must be uncorrelated; tolerate round-off of jitter size.
+        for (Eigen::Index j = 0; j < n; ++j) {
+            if (P(j, j) == 0.0 && P.row(j).cwiseAbs().maxCoeff() > m_settings.jitterMax * scale) {
+                return {false, UkfFault::NotPositiveDefinite,
+                        std::string(what) +
+                            " has zero variance but non-zero covariance at component " +
+                            std::to_string(j)};
+            }
+        }
+    }
+    double jitter = 0.0;
+    for (;;) {
+        if (allActive) {
+            m_sub = P;
+        } else {
+            m_sub = P(m_active, m_active);
+        }
+        m_sub.diagonal().array() += jitter;
+        if (ukfkernels::choleskyInPlace(m_sub)) {
+            break;
+        }
+        jitter = jitter == 0.0 ? m_settings.jitterStart * scale : 10.0 * jitter;
+        if (jitter > m_settings.jitterMax * scale * (1.0 + 1e-9)) {
+            return {false, UkfFault::NotPositiveDefinite,
+                    std::string(what) + " is not positive definite even with a jitter of " +
+                        std::to_string(m_settings.jitterMax) + " x the mean variance"};
+        }
+    }
+    if (allActive) {
+        m_sqrt.swap(m_sub);
+    } else {
+        m_sqrt.setZero(n, n);
+        const auto k = m_active.size();
+        for (std::size_t c = 0; c < k; ++c) {
+            for (std::size_t r = c; r < k; ++r) {
+                m_sqrt(m_active[r], m_active[c]) =
+                    m_sub(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
+            }
+        }
+    }
+    UkfStatus status;
+    status.jitter = jitter;
+    return status;
+}
+
+UkfStatus UnscentedKalmanFilter::drawSigmaPoints() {
+    if (!m_initialized) {
+        return {false, UkfFault::NotInitialized, "the filter has not been initialized"};
+    }
+    UkfStatus status = computeWeights(m_w);
+    if (!status.ok) {
+        return status;
+    }
+    if (!m_sqrtIsOfP) {
+        status = factor(m_P, "the covariance");
+        if (!status.ok) {
+            return status;
+        }
+        addJitter(m_P, status.jitter);
+        m_sqrtIsOfP = true;
+    }
+    const Eigen::Index n = m_x.size();
+    m_centre = m_x;
+    if (m_projectMean) {
+        m_projectMean(m_centre);
+    }
+    m_sigma.resize(n, 2 * n + 1);
+    m_sigma.col(0) = m_centre;
+    m_sigma.middleCols(1, n) = (m_w.spread * m_sqrt).colwise() + m_centre;
+    m_weight.setConstant(2 * n, m_w.other);
+    if (m_projectSigma) {
+        m_sigma.rightCols(n) = (-m_w.spread * m_sqrt).colwise() + m_centre;
+        m_projected = m_sigma.rightCols(2 * n);
+        for (Eigen::Index c = 0; c < 2 * n; ++c) {
+            m_projectSigma(m_projected.col(c));
+        }
+        for (Eigen::Index j = 0; j < n; ++j) {
+            shrinkPair(j);
+        }
+    }
+    // Exactly opposite deviations: (x + d) - x is exact, so each pair sums to zero and no
+    // rounding of x is multiplied by W_i.
+    m_sigma.rightCols(n) = (-(m_sigma.middleCols(1, n).colwise() - m_centre)).colwise() + m_centre;
+    return status;
+}
+
+void UnscentedKalmanFilter::shrinkPair(Eigen::Index j) {
+    const Eigen::Index n = m_x.size();
+    // Shrink factor from the components the projection moved (t = 1 if none).
+    double t = 1.0;
+    for (const Eigen::Index c : {j, n + j}) {
+        const double* projected = m_projected.data() + c * n;
+        const double* point = m_sigma.data() + (1 + c) * n;
+        for (Eigen::Index r = 0; r < n; ++r) {
+            if (projected[r] != point[r]) {
+                t = std::min(
+                    t, std::max(0.0, (projected[r] - m_centre(r)) / (point[r] - m_centre(r))));
+            }
+        }
+    }
+    // Rounding may leave the shrunk pair an ulp outside: shrink a little more.
+    for (int attempt = 0; t < 1.0 && t > 0.0; ++attempt) {
+        m_plus = m_centre + t * m_w.spread * m_sqrt.col(j);
+        m_minus = m_centre - (m_plus - m_centre);
+        m_step = m_plus;
+        m_projectSigma(m_step);
+        bool inside = m_step == m_plus;
+        m_step = m_minus;
+        m_projectSigma(m_step);
+        if (inside && m_step == m_minus) {
+            break;
+        }
+        t = attempt < 3 ? t * (1.0 - 1e-9) : 0.0;
+    }
+    if (t < 1.0) {
+        m_sigma.col(1 + j) = t > 0.0 ? m_plus : m_centre;
+        m_weight(j) = m_weight(n + j) = t > 0.0 ? m_w.other / (t * t) : 0.0;
+    }
+}
+
+void UnscentedKalmanFilter::moments(const Matrix& points, Matrix& dev, Vector& mu) const {
+    const Eigen::Index pairs = points.cols() / 2, rows = points.rows();
+    dev = points.rightCols(2 * pairs).colwise() - points.col(0);
+    // mu = sum_i w_i d_i pair by pair; a second difference d_j+ + d_j- below the rounding of
+    // the three function values is noise that W_i ~ 1e7 would turn into a mean offset.
+    mu.setZero(rows);
+    const double* centre = points.data();
+    for (Eigen::Index j = 0; j < pairs; ++j) {
+        const double w = m_weight(j);
+        if (w == 0.0) {
+            continue;
+        }
+        const double* plus = points.data() + (1 + j) * rows;
+        const double* minus = points.data() + (1 + pairs + j) * rows;
+        for (Eigen::Index r = 0; r < rows; ++r) {
+            const double second = (plus[r] - centre[r]) + (minus[r] - centre[r]);
+            const double floor = kRoundingFloor * (std::abs(plus[r]) + std::abs(minus[r]) +
+                                                   2.0 * std::abs(centre[r]));
+            if (std::abs(second) > floor) {
+                mu(r) += w * second;
+            }
+        }
+    }
+}
+
+UkfStatus UnscentedKalmanFilter::finishPredict(double jitter) {
+    if (m_Q.rows() != m_x.size() || m_Q.cols() != m_x.size()) {
+        return {false, UkfFault::DimensionMismatch,
+                "Q is " + sizeText(m_Q.rows(), m_Q.cols()) + ", expected " +
+                    sizeText(m_x.size(), m_x.size())};
+    }
+    const double cross = m_settings.b - m_settings.a * m_settings.a;
+    moments(m_out, m_dy, m_muY);
+    m_newX = m_out.col(0) + m_muY;
+    ukfkernels::weightedGram(m_dy, m_weight, m_newP);
+    m_newP.noalias() += cross * m_muY * m_muY.transpose();
+    m_newP += m_Q;
+    ukfkernels::symmetrize(m_newP); // Q may be slightly asymmetric
+    if (m_projectMean) {
+        m_projectMean(m_newX);
+    }
+    if (!m_newX.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, "the predicted mean is not finite"};
+    }
+    UkfStatus status = factor(m_newP, "the predicted covariance");
+    if (!status.ok) {
+        return status;
+    }
+    addJitter(m_newP, status.jitter);
+    m_x = m_newX;
+    m_P.swap(m_newP);
+    m_sqrtIsOfP = true;
+    status.jitter = std::max(status.jitter, jitter);
+    return status;
+}
+
+UkfStatus UnscentedKalmanFilter::finishUpdate(const Vector& z, double jitter) {
+    if (!z.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, "the measurement is not finite"};
+    }
+    const double cross = m_settings.b - m_settings.a * m_settings.a;
+    // The sigma points are exactly symmetric about the centre (drawSigmaPoints): mux = 0.
+    m_dx = m_sigma.rightCols(m_sigma.cols() - 1).colwise() - m_centre;
+    moments(m_out, m_dy, m_muY);
+    ukfkernels::weightedGram(m_dy, m_weight, m_Pyy);
+    m_Pyy.noalias() += cross * m_muY * m_muY.transpose();
+    m_Pyy += m_R;
+    ukfkernels::symmetrize(m_Pyy);
+    ukfkernels::weightedOuter(m_dx, m_dy, m_weight, m_Pxy);
+    m_yHat = m_out.col(0) + m_muY;
+    if (!m_Pyy.allFinite() || !m_Pxy.allFinite() || !m_yHat.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, "the predicted measurement is not finite"};
+    }
+    m_lowerYy = m_Pyy;
+    if (!ukfkernels::choleskyInPlace(m_lowerYy)) {
+        return {false, UkfFault::NotPositiveDefinite,
+                "the innovation covariance is not positive definite (check R)"};
+    }
+    m_gain = m_Pxy;
+    ukfkernels::solveRightInPlace(m_lowerYy, m_gain); // K = P_xy P_yy^-1
+    m_newX = m_centre;
+    m_innovation = z - m_yHat;
+    m_newX.noalias() += m_gain * m_innovation;
+    m_newP = m_P;
+    m_newP.noalias() -= m_gain * m_Pxy.transpose(); // K P_yy K^T = K P_xy^T
+    ukfkernels::symmetrize(m_newP);
+    // Components known exactly (zero variance) stay exactly known.
+    for (Eigen::Index j = 0; j < m_newP.rows(); ++j) {
+        if (m_P(j, j) == 0.0) {
+            m_newP.row(j).setZero();
+            m_newP.col(j).setZero();
+        }
+    }
+    if (m_projectMean) {
+        m_projectMean(m_newX);
+    }
+    if (!m_newX.allFinite()) {
+        return {false, UkfFault::NonFiniteValue, "the updated mean is not finite"};
+    }
+    UkfStatus status = factor(m_newP, "the updated covariance");
+    if (!status.ok) {
+        return status;
+    }
+    addJitter(m_newP, status.jitter);
+    m_x = m_newX;
+    m_P.swap(m_newP);
+    m_sqrtIsOfP = true;
+    status.jitter = std::max(status.jitter, jitter);
+    return status;
+}
+
+} // namespace hsmu

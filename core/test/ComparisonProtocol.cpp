@@ -1,0 +1,181 @@
+#include "core/test/ComparisonProtocol.h"
+
+#include "core/config/JsonCursor.h"
+#include "core/config/TestFactory.h"
+#include "core/structure/Structure.h"
+#include "core/test/HybridTest.h"
+#include "core/updating/ModelUpdater.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+namespace hsmu {
+
+namespace {
+
+ElementSpec* findElement(TestConfig& cfg, const std::string& name)
+{
+    for (auto& e : cfg.elements)
+        if (e.name == name)
+            return &e;
+    return nullptr;
+}
+
+std::string comparedElement(const TestConfig& cfg, const ComparisonOptions& o)
+{
+    if (!o.element.empty())
+        return o.element;
+    if (!cfg.updating.enabled || cfg.updating.targets.empty())
+        throw ConfigError(cfg.sourcePath + ": compare: the configuration has no updating target "
+                                           "(give the compared element explicitly)");
+    return cfg.updating.targets.front().element;
+}
+
+/// Records the compared element and DOF, and the updater's estimates.
+class Collector final : public StepObserver {
+public:
+    Collector(ComparisonRun& run, int element, int dof) : m_run(run), m_e(element), m_d(dof) {}
+    void onStep(const StepRecord& r) override
+    {
+        m_run.time.push_back(r.time);
+        m_run.deformation.push_back(r.elements[m_e].deformation);
+        m_run.force.push_back(r.elements[m_e].force);
+        m_run.displacement.push_back(r.u[m_d]);
+        if (r.hasUpdating) {
+            m_run.parameters.push_back(r.updating.parameters);
+            m_run.stddev.push_back(r.updating.stddev);
+            m_run.appliedUpdates = r.updating.appliedUpdates;
+        }
+    }
+
+private:
+    ComparisonRun& m_run;
+    int m_e, m_d;
+};
+
+ComparisonRun runOne(const std::string& name, const TestConfig& cfg, const std::string& element,
+                     const std::string& dof, const std::function<void(double)>& progress)
+{
+    ComparisonRun run;
+    run.name = name;
+    auto test = buildHybridTest(cfg);
+    const auto& elements = test->structure().elements();
+    int e = -1;
+    for (std::size_t i = 0; i < elements.size(); ++i)
+        if (elements[i]->name() == element)
+            e = static_cast<int>(i);
+    const auto& dofs = test->structure().dofNames();
+    const int d = static_cast<int>(std::find(dofs.begin(), dofs.end(), dof) - dofs.begin());
+    if (e < 0 || d >= static_cast<int>(dofs.size()))
+        throw ConfigError(cfg.sourcePath + ": compare: no element '" + element + "' or DOF '" +
+                          dof + "'");
+    Collector collector(run, e, d);
+    test->addObserver(&collector);
+    if (!test->prepare())
+        throw ConfigError(cfg.sourcePath + ": compare (" + name + "): " + test->lastError());
+    if (test->updater())
+        run.parameterNames = test->updater()->parameterNames();
+    const int total = std::max(1, test->totalSteps());
+    while (test->step() == HybridTest::StepResult::Advanced)
+        if (progress && test->currentStep() % 500 == 0)
+            progress(double(test->currentStep()) / total);
+    run.steps = test->currentStep();
+    run.finalState = testStateName(test->state());
+    for (const auto& a : test->alarms()) {
+        std::ostringstream s;
+        s << "t = " << a.time << " s: " << a.message;
+        run.alarms.push_back(s.str());
+    }
+    return run;
+}
+
+ComparisonMetric metric(const ComparisonRun& run, const ComparisonRun& ref)
+{
+    ComparisonMetric m;
+    compareSeries(run.force, ref.force, m.forceNrmse, m.forcePeakError);
+    compareSeries(run.displacement, ref.displacement, m.displacementNrmse,
+                  m.displacementPeakError);
+    return m;
+}
+
+} // namespace
+
+void compareSeries(const std::vector<double>& x, const std::vector<double>& ref, double& nrmse,
+                   double& peak)
+{
+    const std::size_t n = std::min(x.size(), ref.size());
+    double se = 0.0, sr = 0.0;
+    peak = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double d = x[i] - ref[i];
+        se += d * d;
+        sr += ref[i] * ref[i];
+        peak = std::max(peak, std::abs(d));
+    }
+    nrmse = sr > 0.0 ? std::sqrt(se / sr) : (se > 0.0 ? INFINITY : 0.0);
+}
+
+TestConfig referenceConfig(const TestConfig& cfg, const ComparisonOptions& o)
+{
+    TestConfig ref = cfg;
+    const std::string name = comparedElement(cfg, o);
+    ElementSpec* target = findElement(ref, name);
+    if (!target || target->experimental)
+        throw ConfigError(cfg.sourcePath + ": compare: '" + name + "' is not a numerical element");
+    const ElementSpec* specimen = findElement(ref, cfg.updating.specimen);
+    if (!specimen || !specimen->experimental)
+        throw ConfigError(cfg.sourcePath + ": compare: the updating specimen '" +
+                          cfg.updating.specimen + "' is not an experimental element");
+    if (target->type != specimen->type || std::isfinite(target->ei))
+        throw ConfigError(cfg.sourcePath + ": compare: '" + name +
+                          "' must have the specimen's element type (and a rigid column) to be "
+                          "replaced by a copy of the true specimen");
+    target->experimental = true;
+    target->specimen = specimen->specimen;
+    target->specimen.options.forceNoiseStd = 0.0;
+    target->specimen.options.deformationNoiseStd = 0.0;
+    target->specimen.options.seed = specimen->specimen.options.seed + 1;
+    target->limits = specimen->limits;
+    ref.updating.enabled = false;
+    return ref;
+}
+
+TestConfig initialConfig(const TestConfig& cfg)
+{
+    TestConfig c = cfg;
+    c.updating.enabled = false;
+    return c;
+}
+
+ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o,
+                               const std::function<void(int, double)>& progress)
+{
+    if (!cfg.updating.enabled)
+        throw ConfigError(cfg.sourcePath + ": compare needs an enabled \"updating\" section");
+    ComparisonResult r;
+    r.element = comparedElement(cfg, o);
+    TestConfig c = cfg;
+    const ElementSpec* e = findElement(c, r.element);
+    if (!e)
+        throw ConfigError(cfg.sourcePath + ": compare: no element '" + r.element + "'");
+    r.dof = o.dof.empty() ? cfg.dofs.at(e->dofs.back()).name : o.dof;
+    const bool rotational = e->type == "rotationalBaseSpring";
+    r.forceUnit = rotational ? "kN m" : "kN";
+    r.deformationUnit = rotational ? "rad" : "m";
+    auto p = [&](int i) {
+        return [&, i](double f) {
+            if (progress)
+                progress(i, f);
+        };
+    };
+    r.reference = runOne("reference", referenceConfig(cfg, o), r.element, r.dof, p(0));
+    r.initial = runOne("initial", initialConfig(cfg), r.element, r.dof, p(1));
+    r.updated = runOne("updated", cfg, r.element, r.dof, p(2));
+    r.initialMetric = metric(r.initial, r.reference);
+    r.updatedMetric = metric(r.updated, r.reference);
+    return r;
+}
+
+} // namespace hsmu

@@ -1,0 +1,47 @@
+#pragma once
+// Identifier: parameter identification of one specimen's law from its measured response
+// (METHOD.md sections 3 and 5). Implementations: UkfIdentifier (every step) and
+// NelderMeadIdentifier (over the stored history, when the Inspector asks).
+// Values are in the law's own units (normalized for Bouc-Wen with uRef/fRef).
+
+#include "core/updating/ParameterSet.h"
+
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct IdentificationStatus {
+    bool ok = true;       ///< false: this step's update was rejected (estimate kept)
+    bool updated = false; ///< the estimate changed at this step
+    bool refit = false;   ///< a batch fit over the whole history (replay dependent models)
+    std::string message;  ///< why, when !ok; what ran, when informative
+};
+
+class Identifier {
+public:
+    virtual ~Identifier() = default;
+    virtual std::string methodName() const = 0;
+    /// Names of the identified parameters, in a fixed order (records use it).
+    virtual std::vector<std::string> parameterNames() const = 0;
+
+    /// One committed step of the specimen: measured deformation and force (physical units).
+    /// updateRequested: the Inspector asks for an update now (Nelder-Mead runs only then).
+    virtual IdentificationStatus observe(double deformation, double force,
+                                         bool updateRequested) = 0;
+
+    virtual ParameterValues estimate() const = 0;
+    /// Standard deviations (0 where the method has none, e.g. Nelder-Mead).
+    virtual ParameterValues standardDeviation() const = 0;
+    /// The model's force predicted for the last observed step before that step's update
+    /// (physical units); NaN if the method has no running prediction.
+    virtual double predictedForce() const = 0;
+
+    virtual const ParameterBoundsMap& bounds() const = 0;
+    /// Change a bound between steps; false if the name is not identified or lower > upper.
+    virtual bool setBounds(const std::string& name, const ParameterBounds& b) = 0;
+    /// Compute time of the last update [s] (for Nelder-Mead triggers).
+    virtual double lastComputeSeconds() const { return 0.0; }
+};
+
+} // namespace hsmu

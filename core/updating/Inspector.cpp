@@ -1,0 +1,157 @@
+#include "core/updating/Inspector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace hsmu {
+
+namespace {
+std::string format(const char* fmt, double a, double b = 0.0)
+{
+    char buf[200];
+    std::snprintf(buf, sizeof buf, fmt, a, b);
+    return buf;
+}
+} // namespace
+
+Inspector::Inspector(const InspectorSettings& s, double dt) : m_s(s), m_dt(dt > 0 ? dt : 0.01) {}
+
+void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
+{
+    auto raise = [&](AlarmSeverity sev, AlarmKind kind, std::string msg) {
+        alarms.push_back({in.time, in.step, sev, kind, std::move(msg)});
+    };
+
+    // Sliding-window fit error, running sums with a periodic exact refresh against drift.
+    const double r = in.auxiliaryForce - in.measuredForce;
+    m_residual.push_back(r);
+    m_measured.push_back(in.measuredForce);
+    m_sumR2 += r * r;
+    m_sumF2 += in.measuredForce * in.measuredForce;
+    const auto windowSteps = static_cast<std::size_t>(std::max(1.0, std::round(m_s.window / m_dt)));
+    while (m_residual.size() > windowSteps) {
+        m_sumR2 -= m_residual.front() * m_residual.front();
+        m_sumF2 -= m_measured.front() * m_measured.front();
+        m_residual.pop_front();
+        m_measured.pop_front();
+    }
+    if (in.step % 1000 == 0) {
+        m_sumR2 = m_sumF2 = 0.0;
+        for (std::size_t i = 0; i < m_residual.size(); ++i) {
+            m_sumR2 += m_residual[i] * m_residual[i];
+            m_sumF2 += m_measured[i] * m_measured[i];
+        }
+    }
+    m_peakForce = std::max(m_peakForce, std::abs(in.measuredForce));
+    const double floor = 1e-6 * std::max(m_peakForce, 1e-12);
+    m_fitError = std::sqrt(std::max(m_sumR2, 0.0) / std::max(m_sumF2, floor * floor * m_residual.size()));
+    const bool above = m_residual.size() >= windowSteps / 2 && m_fitError > m_s.threshold;
+    m_updateRequested = above;
+    if (above && !m_aboveThreshold)
+        raise(AlarmSeverity::Warning, AlarmKind::FitError,
+              format("model error %.1f %% above the threshold %.1f %%", 100 * m_fitError,
+                     100 * m_s.threshold));
+    const bool fittedBefore = !m_aboveThreshold && m_residual.size() > 1;
+    m_aboveThreshold = above;
+
+    // Sudden strength loss: the measured force falls short of the model's by a large part of
+    // the peak force at one step, and by far more than the recent residual (noise, misfit).
+    const double shortfall = std::abs(in.auxiliaryForce) - std::abs(in.measuredForce);
+    const bool sameSide = in.auxiliaryForce * in.measuredForce >= 0.0;
+    const double recentRms = std::sqrt(std::max(m_sumR2 - r * r, 0.0) /
+                                       std::max<std::size_t>(m_residual.size() - 1, 1));
+    if (!m_fracture && fittedBefore && m_peakForce >= m_s.minimumForce && m_peakForce > 0.0 &&
+        sameSide && shortfall > m_s.fractureDrop * m_peakForce && shortfall > 5.0 * recentRms) {
+        m_fracture = true;
+        m_fractureTime = in.time;
+        raise(AlarmSeverity::Critical, AlarmKind::Fracture,
+              format("sudden strength loss: measured force %.3g short of the model's by %.3g",
+                     in.measuredForce, shortfall));
+    }
+    m_lastDeformation = in.measuredDeformation;
+
+    if (!in.estimatorOk)
+        raise(AlarmSeverity::Warning, AlarmKind::EstimatorRejected,
+              "identification step rejected: " + in.estimatorMessage);
+
+    if (in.parameters && in.bounds) {
+        for (const auto& [name, v] : *in.parameters) {
+            auto b = in.bounds->find(name);
+            if (b == in.bounds->end())
+                continue;
+            const double tol = 1e-6 * std::max(1e-12, b->second.upper - b->second.lower);
+            const bool pinned = std::abs(v - b->second.lower) <= tol ||
+                                std::abs(v - b->second.upper) <= tol;
+            if (!pinned) {
+                m_pinnedSince.erase(name);
+                m_pinnedRaised[name] = false;
+                continue;
+            }
+            auto [it, fresh] = m_pinnedSince.emplace(name, in.time);
+            if (!m_pinnedRaised[name] && in.time - it->second >= m_s.pinnedTime) {
+                m_pinnedRaised[name] = true;
+                raise(AlarmSeverity::Warning, AlarmKind::ParameterPinned,
+                      name + format(" has been at its bound %.4g for %.1f s", v,
+                                    in.time - it->second));
+            }
+        }
+    }
+
+    m_cmd.push_back(in.commandedDeformation);
+    m_meas.push_back(in.measuredDeformation);
+    const auto trackSteps =
+        static_cast<std::size_t>(std::max(2.0, std::round(m_s.trackingWindow / m_dt)));
+    while (m_cmd.size() > trackSteps) {
+        m_cmd.pop_front();
+        m_meas.pop_front();
+    }
+    if (in.time + 1e-12 >= m_nextTracking) {
+        m_nextTracking = in.time + m_s.trackingInterval;
+        trackingIndices();
+        const bool bad = m_tracking.j2 > m_s.trackingJ2Limit;
+        if (bad && !m_trackingRaised)
+            raise(AlarmSeverity::Warning, AlarmKind::TrackingError,
+                  format("actuator tracking error J2 = %.1f %% (delay J1 = %.4f s)",
+                         100 * m_tracking.j2, m_tracking.j1));
+        m_trackingRaised = bad;
+    }
+}
+
+void Inspector::trackingIndices()
+{
+    const std::size_t n = m_cmd.size();
+    if (n < 4)
+        return;
+    double se = 0.0, sc = 0.0, pe = 0.0, pc = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double e = m_meas[i] - m_cmd[i];
+        se += e * e;
+        sc += m_cmd[i] * m_cmd[i];
+        pe = std::max(pe, std::abs(e));
+        pc = std::max(pc, std::abs(m_cmd[i]));
+    }
+    m_tracking.j2 = sc > 0.0 ? std::sqrt(se / sc) : 0.0;
+    m_tracking.j3 = pc > 0.0 ? pe / pc : 0.0;
+    // J1: the lag (measured behind commanded) maximizing the normalized cross-correlation of
+    // the overlapping parts, up to a quarter of the window.
+    const std::size_t maxLag = n / 4;
+    double best = -INFINITY;
+    std::size_t bestLag = 0;
+    for (std::size_t lag = 0; lag <= maxLag; ++lag) {
+        double c = 0.0, mm = 0.0, cc = 0.0;
+        for (std::size_t i = lag; i < n; ++i) {
+            c += m_meas[i] * m_cmd[i - lag];
+            mm += m_meas[i] * m_meas[i];
+            cc += m_cmd[i - lag] * m_cmd[i - lag];
+        }
+        c = mm > 0.0 && cc > 0.0 ? c / std::sqrt(mm * cc) : 0.0;
+        if (c > best) {
+            best = c;
+            bestLag = lag;
+        }
+    }
+    m_tracking.j1 = double(bestLag) * m_dt;
+}
+
+} // namespace hsmu

@@ -1,0 +1,92 @@
+#pragma once
+// ModelUpdater: the paper's four modules (its Figure 4, METHOD.md section 3) around one
+// specimen, run by HybridTest after every committed step:
+//
+//   auxiliary model  <- measured deformation d_m        (its force F_aux vs measured F_m)
+//   identifier       <- (d_m, F_m)                      (UKF every step / Nelder-Mead on request)
+//   inspector        <- F_aux, F_m, d_m, d_cmd, estimate -> alarms, update request
+//   reporter         <- estimate -> target numerical elements, by policy
+//
+// The auxiliary model starts as a copy of the specimen's numerical model and takes every new
+// estimate (its z, e stay continuous); after a Nelder-Mead fit it is replayed over the stored
+// history so its state matches the fitted parameters.
+// Bounds, thresholds and policies may change between steps (effective next step).
+
+#include "core/test/Alarm.h"
+#include "core/updating/Identifier.h"
+#include "core/updating/Inspector.h"
+#include "core/updating/Reporter.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+class ExperimentalElement;
+class HysteresisLaw;
+class Structure;
+
+/// What one step of updating produced (for StepRecord and observers).
+struct UpdatingSample {
+    double auxiliaryForce = 0.0;     ///< F_aux at the step [force units]
+    double fitError = 0.0;           ///< inspector's normalized RMS error [-]
+    std::vector<double> parameters;  ///< estimate, in ModelUpdater::parameterNames() order
+    std::vector<double> stddev;      ///< standard deviations, same order
+    int appliedUpdates = 0;          ///< cumulative updates applied to targets
+    int updatesThisStep = 0;
+    int pendingProposals = 0;
+};
+
+class ModelUpdater {
+public:
+    ModelUpdater(std::string specimenElement, std::unique_ptr<HysteresisLaw> auxiliaryLaw,
+                 std::unique_ptr<Identifier> identifier, const InspectorSettings& inspector,
+                 std::unique_ptr<Reporter> reporter);
+    ~ModelUpdater();
+
+    /// Resolve the specimen in a finalized structure; false with a reason if it is missing.
+    bool attach(Structure& structure, double dt, std::string* error);
+    /// After step `step` was committed. Returns a reason when the test must hold: the
+    /// identifier rejected maxConsecutiveRejections steps in a row (a diverging estimator).
+    std::optional<std::string> afterCommit(int step, double time, Structure& structure, std::vector<Alarm>& alarms,
+                     UpdatingSample& out);
+
+    const std::string& specimenElement() const { return m_specimen; }
+    std::vector<std::string> parameterNames() const { return m_identifier->parameterNames(); }
+    Identifier& identifier() { return *m_identifier; }
+    const Identifier& identifier() const { return *m_identifier; }
+    Inspector& inspector() { return m_inspector; }
+    const Inspector& inspector() const { return m_inspector; }
+    Reporter& reporter() { return *m_reporter; }
+    const Reporter& reporter() const { return *m_reporter; }
+    const HysteresisLaw& auxiliaryModel() const { return *m_aux; }
+
+    /// Operator decisions (between steps).
+    bool approve(int proposalId, Structure& structure, int step, double time,
+                 std::vector<Alarm>& alarms);
+    bool reject(int proposalId) { return m_reporter->reject(proposalId); }
+    void setMaxConsecutiveRejections(int n) { m_maxRejections = n < 1 ? 1 : n; }
+    /// Headless flag for the OnApproval policy: approve (true) or reject every proposal.
+    void setAutoResolve(std::optional<bool> approveAll) { m_autoResolve = approveAll; }
+
+private:
+    void applyToAuxiliary(const ParameterValues& values);
+    void report(const std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms, int step,
+                double time, UpdatingSample& out);
+
+    std::string m_specimen;
+    std::unique_ptr<HysteresisLaw> m_aux;
+    std::unique_ptr<HysteresisLaw> m_auxInitial; // virgin copy for replays
+    std::unique_ptr<Identifier> m_identifier;
+    Inspector m_inspector;
+    std::unique_ptr<Reporter> m_reporter;
+    ExperimentalElement* m_element = nullptr;
+    std::vector<double> m_history; // measured deformations, for replays of the auxiliary model
+    std::optional<bool> m_autoResolve;
+    int m_rejections = 0;
+    int m_maxRejections = 20;
+};
+
+} // namespace hsmu

@@ -1,0 +1,94 @@
+#pragma once
+// Reporter (METHOD.md section 3): decides *when* identified parameters reach the target
+// numerical elements and *which* ones go, with an optional conversion for category-2 twins.
+//
+// Policies:
+//   EveryStep     apply every offer at once;
+//   ZeroCrossing  apply at the first step where the target element's force changed sign
+//                 since the last committed step (no jump in force: the paper's choice);
+//   EveryNSteps   apply every N-th step;
+//   OnApproval    queue a proposal; the operator approves or rejects it (a newer proposal for
+//                 the same element replaces an older pending one).
+// Which: each target names its parameters (the paper sends all but A0 and deltaA); a value is
+// multiplied by the target's scale factor for that parameter (default 1) before it is set.
+// Applying keeps the target law's state (z, e for Bouc-Wen): only the parameters change.
+// Nothing non-finite is ever applied; a value the law refuses is reported, not applied.
+// Thread rules: none (called from the test's thread; the GUI calls approve/reject through it).
+
+#include "core/updating/ParameterSet.h"
+
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+class Structure;
+
+enum class ReporterPolicy { EveryStep, ZeroCrossing, EveryNSteps, OnApproval };
+const char* reporterPolicyName(ReporterPolicy p);
+std::optional<ReporterPolicy> parseReporterPolicy(const std::string& text);
+
+struct ReporterTarget {
+    std::string element;                 ///< a numerical element with a law
+    std::vector<std::string> parameters; ///< names sent to it
+    ParameterValues scale;               ///< per-parameter factor (category-2 conversion)
+};
+
+struct UpdateProposal {
+    int id = 0;
+    int step = 0;
+    double time = 0.0; ///< [s]
+    std::string element;
+    ParameterValues proposed; ///< after scaling
+    ParameterValues current;  ///< the target's values when proposed
+};
+
+struct UpdateEvent {
+    int step = 0;
+    double time = 0.0;
+    std::string element;
+    ParameterValues applied;
+    bool ok = true;
+    std::string message; ///< why, when !ok
+};
+
+class Reporter {
+public:
+    Reporter(std::vector<ReporterTarget> targets, ReporterPolicy policy, int everyN = 10);
+
+    void setPolicy(ReporterPolicy p, int everyN);
+    ReporterPolicy policy() const { return m_policy; }
+    int everyN() const { return m_everyN; }
+    const std::vector<ReporterTarget>& targets() const { return m_targets; }
+
+    /// Offer the identified values after step `step` was committed. Applies or queues
+    /// according to the policy; returns the updates applied now.
+    std::vector<UpdateEvent> offer(int step, double time, const ParameterValues& identified,
+                                   Structure& structure);
+
+    const std::deque<UpdateProposal>& pending() const { return m_pending; }
+    /// Apply a pending proposal (by id) now; nullopt if there is no such proposal.
+    std::optional<UpdateEvent> approve(int id, Structure& structure, int step, double time);
+    bool reject(int id);
+    /// Apply (true) or reject (false) every pending proposal: the headless approval flag.
+    std::vector<UpdateEvent> resolveAll(bool approve, Structure& structure, int step, double time);
+
+    int appliedCount() const { return m_applied; }
+
+private:
+    ParameterValues proposalFor(const ReporterTarget& t, const ParameterValues& identified) const;
+    UpdateEvent apply(const std::string& element, const ParameterValues& values,
+                      Structure& structure, int step, double time);
+
+    std::vector<ReporterTarget> m_targets;
+    ReporterPolicy m_policy;
+    int m_everyN;
+    std::vector<double> m_lastForce; // per target, committed force at the previous offer
+    std::deque<UpdateProposal> m_pending;
+    int m_nextId = 1;
+    int m_applied = 0;
+};
+
+} // namespace hsmu

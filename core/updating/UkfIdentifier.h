@@ -1,0 +1,40 @@
+#pragma once
+// UkfIdentifier: the Identifier of a Bouc-Wen specimen by the joint state-parameter UKF
+// (BoucWenUkf, METHOD.md section 5), run every step. Parameter values and standard deviations
+// are in the law's normalized units. Identified: k0, alpha, beta, gamma, n, deltaNu, deltaEta
+// (A0 and deltaA stay fixed, as in the paper).
+
+#include "core/identification/BoucWenUkf.h"
+#include "core/updating/Identifier.h"
+
+namespace hsmu {
+
+class UkfIdentifier final : public Identifier {
+public:
+    /// bounds: per parameter name (missing names keep Table III); throws std::invalid_argument
+    /// naming the parameter if a bound is not admissible.
+    UkfIdentifier(const BoucWenParameters& initial, const BoucWenUkfSettings& settings,
+                  const ParameterBoundsMap& bounds);
+
+    std::string methodName() const override { return "UKF"; }
+    std::vector<std::string> parameterNames() const override;
+    IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
+    ParameterValues estimate() const override { return m_estimate; }
+    ParameterValues standardDeviation() const override { return m_stddev; }
+    double predictedForce() const override { return m_predicted; }
+    const ParameterBoundsMap& bounds() const override { return m_bounds; }
+    bool setBounds(const std::string& name, const ParameterBounds& b) override;
+
+    BoucWenUkf& filter() { return m_ukf; }
+    /// Lock a parameter at its current estimate (or unlock it).
+    bool setLocked(const std::string& name, bool locked);
+
+private:
+    void publish(const BoucWenUkfStep* step);
+    BoucWenUkf m_ukf;
+    ParameterBoundsMap m_bounds;
+    ParameterValues m_estimate, m_stddev;
+    double m_predicted = 0.0;
+};
+
+} // namespace hsmu

@@ -1,0 +1,96 @@
+#include "gui/Launcher.h"
+
+#include "gui/app/ConsoleCommand.h"
+#include "gui/cli/ConsoleStreams.h"
+#include "gui/cli/MaterialCommand.h"
+#include "gui/cli/RunCommand.h"
+
+#include <QApplication>
+#include <QLocale>
+#include <QTextStream>
+#include <QTranslator>
+
+#include <cstring>
+#include <exception>
+#include <initializer_list>
+
+namespace hsmu::gui {
+
+namespace {
+
+void describeApplication() {
+    QCoreApplication::setApplicationName(QStringLiteral("hsmu"));
+    QCoreApplication::setOrganizationName(QStringLiteral("HSMU"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(HSMU_VERSION));
+}
+
+void installTranslator(QCoreApplication& app) {
+    auto* translator = new QTranslator(&app);
+    if (translator->load(QLocale(), QStringLiteral("hsmu"), QStringLiteral("_"),
+                         QStringLiteral(":/i18n")))
+        QCoreApplication::installTranslator(translator);
+}
+
+bool headless() {
+    return qEnvironmentVariableIsEmpty("DISPLAY") &&
+           qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+           qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+}
+
+bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names) {
+    for (int i = 1; i < argc; ++i)
+        for (const char* n : names)
+            if (std::strcmp(argv[i], n) == 0)
+                return true;
+    return false;
+}
+
+int dispatch(int argc, char** argv) {
+    const QString sub = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
+    const bool run = sub == QLatin1String("run");
+    if (sub == QLatin1String("material") || (run && !hasArgument(argc, argv, {"--plots"}))) {
+        QCoreApplication app(argc, argv); // no windowing system needed
+        describeApplication();
+        installTranslator(app);
+        return run ? RunCommand::exec(app.arguments()) : MaterialCommand::exec(app.arguments());
+    }
+    if (!run && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
+        QTextStream(stderr) << "hsmu: unknown subcommand '" << sub
+                            << "' (available: run, material; without one the console opens)"
+                            << Qt::endl;
+        return 1;
+    }
+    if (headless()) {
+        // Plots and window grabs render offscreen; an interactive window needs a display.
+        const bool offscreenOk =
+            run || hasArgument(argc, argv, {"--screenshot", "-h", "--help", "-v", "--version"});
+        if (!offscreenOk) {
+            QTextStream(stderr) << "hsmu: no display (DISPLAY / WAYLAND_DISPLAY are not set); "
+                                   "use `hsmu run CONFIG --out DIR` to run a test headless"
+                                << Qt::endl;
+            return 1;
+        }
+        qputenv("QT_QPA_PLATFORM", "offscreen"); // before the QApplication exists
+    }
+    QApplication app(argc, argv);
+    describeApplication();
+    installTranslator(app);
+    if (run)
+        return RunCommand::exec(app.arguments());
+    return ConsoleCommand::exec(app.arguments());
+}
+
+} // namespace
+
+int Launcher::main(int argc, char** argv) {
+    try {
+        return dispatch(argc, argv);
+    } catch (const std::exception& e) { // last line of defence: a message, never an abort
+        QTextStream(stderr) << "hsmu: internal error: " << e.what() << Qt::endl;
+    } catch (...) {
+        QTextStream(stderr) << "hsmu: internal error" << Qt::endl;
+    }
+    return 1;
+}
+
+} // namespace hsmu::gui

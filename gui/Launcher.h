@@ -1,0 +1,18 @@
+#pragma once
+// Launcher: the `hsmu` executable's entry point. The first argument selects what runs:
+//   hsmu run CONFIG ...       RunCommand (a QCoreApplication; with --plots a QApplication,
+//                             on the "offscreen" platform when no display is set)
+//   hsmu material ...         MaterialCommand (QCoreApplication)
+//   hsmu [options]            ConsoleCommand (the window; without a display only --help,
+//                             --version and --screenshot, rendered offscreen, are possible)
+// Anything else is an unknown subcommand: a message and exit code 1.
+// Thread rules: main thread, once per process.
+
+namespace hsmu::gui {
+
+class Launcher {
+public:
+    static int main(int argc, char** argv);
+};
+
+} // namespace hsmu::gui

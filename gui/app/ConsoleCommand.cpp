@@ -1,0 +1,99 @@
+#include "gui/app/ConsoleCommand.h"
+
+#include "gui/app/MainWindow.h"
+#include "gui/cli/ConsoleStreams.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QPixmap>
+#include <QTextStream>
+#include <QTimer>
+
+#include <cmath>
+
+namespace hsmu::gui {
+
+namespace {
+int fail(const QString& message) {
+    ConsoleStreams::err() << "hsmu: " << message << Qt::endl;
+    return 1;
+}
+} // namespace
+
+int ConsoleCommand::exec(const QStringList& arguments) {
+    QCommandLineParser p;
+    p.setApplicationDescription(
+        tr("HSMU Console: hybrid simulation with online model updating.\n"
+           "Subcommands: run CONFIG --out DIR ..., material --law ... (see hsmu run --help)."));
+    p.addHelpOption();
+    p.addVersionOption();
+    const QCommandLineOption startOpt(QStringLiteral("start"),
+                                      tr("Load a preset or configuration and start it."),
+                                      QStringLiteral("config"));
+    const QCommandLineOption gmOpt(QStringLiteral("ground-motion"),
+                                   tr("Ground-motion record file."), QStringLiteral("file"));
+    const QCommandLineOption speedOpt(QStringLiteral("speed"),
+                                      tr("Test time per wall time (0: as fast as possible)."),
+                                      QStringLiteral("factor"));
+    const QCommandLineOption shotOpt(QStringLiteral("screenshot"),
+                                     tr("Grab the window into this PNG file, then quit."),
+                                     QStringLiteral("file"));
+    const QCommandLineOption shotAfterOpt(QStringLiteral("screenshot-after"),
+                                          tr("Seconds before the screenshot (default 4)."),
+                                          QStringLiteral("seconds"), QStringLiteral("4"));
+    p.addOptions({startOpt, gmOpt, speedOpt, shotOpt, shotAfterOpt});
+    if (!p.parse(arguments))
+        return fail(p.errorText());
+    if (p.isSet(QStringLiteral("help"))) {
+        ConsoleStreams::out() << p.helpText() << Qt::flush;
+        return 0;
+    }
+    if (p.isSet(QStringLiteral("version"))) {
+        ConsoleStreams::out() << QCoreApplication::applicationName() << ' '
+                              << QCoreApplication::applicationVersion() << Qt::endl;
+        return 0;
+    }
+    if (!p.positionalArguments().isEmpty())
+        return fail(tr("unknown subcommand '%1' (expected run or material)")
+                        .arg(p.positionalArguments().front()));
+    bool ok = true;
+    const double after = p.value(shotAfterOpt).toDouble(&ok);
+    if (!ok || !std::isfinite(after) || after < 0.0)
+        return fail(tr("--screenshot-after: expected a number of seconds"));
+    double speed = 1.0;
+    if (p.isSet(speedOpt)) {
+        speed = p.value(speedOpt).toDouble(&ok);
+        if (!ok || !std::isfinite(speed))
+            return fail(tr("--speed: expected a number"));
+    }
+
+    ConfigOverrides overrides;
+    overrides.groundMotionFile = p.value(gmOpt);
+    MainWindow window(overrides);
+    window.setSpeed(speed);
+    window.show();
+    if (p.isSet(startOpt)) {
+        QString error;
+        if (window.loadConfiguration(p.value(startOpt), &error))
+            window.startTest();
+        else
+            ConsoleStreams::err() << "hsmu: " << error << Qt::endl;
+    }
+    int code = 0;
+    if (p.isSet(shotOpt)) {
+        const QString file = p.value(shotOpt);
+        QTimer::singleShot(int(after * 1000.0), &window, [&window, file, &code] {
+            const bool saved = window.grab().save(file, "PNG");
+            if (saved)
+                ConsoleStreams::err() << "hsmu: screenshot " << file << Qt::endl;
+            else
+                ConsoleStreams::err() << "hsmu: " << file << ": cannot be written" << Qt::endl;
+            code = saved ? 0 : 1;
+            QCoreApplication::exit(code);
+        });
+    }
+    const int loop = QApplication::exec();
+    return loop != 0 ? loop : code;
+}
+
+} // namespace hsmu::gui

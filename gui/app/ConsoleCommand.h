@@ -1,0 +1,23 @@
+#pragma once
+// ConsoleCommand: `hsmu [--start CONFIG] [--ground-motion FILE] [--speed S]
+// [--screenshot FILE [--screenshot-after SECONDS]]`: the console window.
+//   --start              load a preset name or configuration file and start it at once
+//   --ground-motion      use this record for every configuration loaded
+//   --speed              test time per wall time (1 = real time, 0 = as fast as possible)
+//   --screenshot         grab the window into FILE (PNG) after --screenshot-after seconds
+//                        (default 4), then quit: exit 0 if the file was written, else 1
+// Thread rules: main thread, with a QApplication.
+
+#include <QCoreApplication>
+#include <QStringList>
+
+namespace hsmu::gui {
+
+class ConsoleCommand {
+    Q_DECLARE_TR_FUNCTIONS(ConsoleCommand)
+public:
+    /// Runs the event loop; returns the exit code.
+    static int exec(const QStringList& arguments);
+};
+
+} // namespace hsmu::gui

@@ -1,0 +1,97 @@
+#include "gui/app/ControlBar.h"
+
+#include "gui/PresetLibrary.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QLabel>
+#include <QSignalBlocker>
+
+#include <cmath>
+
+namespace hsmu::gui {
+
+ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
+    setObjectName(QStringLiteral("controlBar"));
+    setMovable(false);
+    setToolButtonStyle(Qt::ToolButtonTextOnly);
+
+    addWidget(new QLabel(tr("Preset: "), this));
+    m_presets = new QComboBox(this);
+    m_presets->setToolTip(tr("Test configurations shipped with the console"));
+    m_presets->addItem(tr("(choose a preset)"), QString());
+    for (const PresetLibrary::Preset& p : PresetLibrary::presets()) {
+        m_presets->addItem(p.id, p.id);
+        m_presets->setItemData(m_presets->count() - 1, p.title, Qt::ToolTipRole);
+    }
+    connect(m_presets, &QComboBox::activated, this, [this](int index) {
+        const QString id = m_presets->itemData(index).toString();
+        if (!id.isEmpty())
+            emit presetChosen(id);
+    });
+    addWidget(m_presets);
+
+    m_open = addAction(tr("Open configuration..."), this, &ControlBar::openRequested);
+    m_open->setShortcut(QKeySequence::Open);
+    addSeparator();
+    m_start = addAction(tr("Start"), this, &ControlBar::startRequested);
+    m_pause = addAction(tr("Pause"), this, &ControlBar::pauseRequested);
+    m_resume = addAction(tr("Resume"), this, &ControlBar::resumeRequested);
+    m_stop = addAction(tr("Stop"), this, &ControlBar::stopRequested);
+    addSeparator();
+    m_hold = addAction(tr("Emergency hold"), this, &ControlBar::emergencyHoldRequested);
+    m_hold->setShortcuts({QKeySequence(Qt::Key_Escape), QKeySequence(tr("Ctrl+H"))});
+    m_hold->setShortcutContext(Qt::ApplicationShortcut);
+    m_hold->setToolTip(tr("Hold the test at once, between two steps (Esc or Ctrl+H)"));
+    if (QWidget* button = widgetForAction(m_hold))
+        button->setStyleSheet(QStringLiteral("QToolButton { color: white; background: #c62828;"
+                                             " font-weight: bold; padding: 3px 10px; }"));
+    addSeparator();
+
+    addWidget(new QLabel(tr(" Speed: "), this));
+    m_speed = new QComboBox(this);
+    m_speed->setToolTip(tr("Test time per wall-clock time"));
+    m_speed->addItem(tr("0.5 x real time"), 0.5);
+    m_speed->addItem(tr("real time"), 1.0);
+    m_speed->addItem(tr("2 x real time"), 2.0);
+    m_speed->addItem(tr("5 x real time"), 5.0);
+    m_speed->addItem(tr("as fast as possible"), 0.0);
+    m_speed->setCurrentIndex(1);
+    connect(m_speed, &QComboBox::currentIndexChanged, this, [this] { emit speedChanged(speed()); });
+    addWidget(m_speed);
+    setRunState(RunState::Idle);
+}
+
+void ControlBar::setRunState(RunState state) {
+    const bool active =
+        state == RunState::Running || state == RunState::Paused || state == RunState::Holding;
+    m_start->setEnabled(state == RunState::Ready || state == RunState::Finished ||
+                        state == RunState::Stopped || state == RunState::Failed);
+    m_pause->setEnabled(state == RunState::Running);
+    m_resume->setEnabled(state == RunState::Paused || state == RunState::Holding);
+    m_stop->setEnabled(active);
+    m_presets->setEnabled(!active);
+    m_open->setEnabled(!active);
+    m_hold->setEnabled(true); // always: the operator's last resort
+}
+
+void ControlBar::selectPreset(const QString& id) {
+    const QSignalBlocker block(m_presets);
+    const int index = m_presets->findData(id);
+    m_presets->setCurrentIndex(index >= 0 ? index : 0);
+}
+
+double ControlBar::speed() const {
+    return m_speed->currentData().toDouble();
+}
+
+void ControlBar::setSpeed(double factor) {
+    int best = 0;
+    for (int i = 0; i < m_speed->count(); ++i)
+        if (std::abs(m_speed->itemData(i).toDouble() - factor) <
+            std::abs(m_speed->itemData(best).toDouble() - factor))
+            best = i;
+    m_speed->setCurrentIndex(best);
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,26 @@
+#pragma once
+// RecordBuffer: StepRecords handed from the test worker to the GUI (the PlotJuggler pattern):
+// the worker pushes under a short lock; the GUI takes every pending row at once, at most
+// ~30 times a second, and replots once.
+// Thread rules: push() from the worker thread, takeAll() from the GUI thread; both lock.
+
+#include "core/test/StepRecord.h"
+
+#include <mutex>
+#include <vector>
+
+namespace hsmu::gui {
+
+class RecordBuffer {
+public:
+    /// Append a copy. True if the buffer was empty before (the caller should notify once).
+    bool push(const StepRecord& record);
+    /// Move every pending row out (oldest first) and leave the buffer empty.
+    std::vector<StepRecord> takeAll();
+
+private:
+    std::mutex m_mutex;
+    std::vector<StepRecord> m_rows;
+};
+
+} // namespace hsmu::gui

@@ -1,0 +1,36 @@
+#include "gui/app/TestStatusBar.h"
+
+#include <QLabel>
+
+namespace hsmu::gui {
+
+TestStatusBar::TestStatusBar(QWidget* parent) : QStatusBar(parent) {
+    auto label = [this](int minWidth) {
+        auto* l = new QLabel(this);
+        l->setMinimumWidth(minWidth);
+        l->setFrameShape(QFrame::StyledPanel);
+        addPermanentWidget(l);
+        return l;
+    };
+    m_time = label(130);
+    m_step = label(150);
+    m_rate = label(120);
+    m_state = label(120);
+    setProgress(0, 0, 0.0, 0.0);
+    setRunState(RunState::Idle);
+}
+
+void TestStatusBar::setProgress(int step, int totalSteps, double testTime, double stepsPerSecond) {
+    m_time->setText(tr("t = %1 s").arg(QString::number(testTime, 'f', 2)));
+    m_step->setText(tr("step %1 / %2").arg(step).arg(totalSteps));
+    m_rate->setText(tr("%1 steps/s").arg(QString::number(stepsPerSecond, 'f', 0)));
+}
+
+void TestStatusBar::setRunState(RunState state) {
+    m_state->setText(describe(state));
+    const bool alarm = state == RunState::Holding || state == RunState::Failed;
+    m_state->setStyleSheet(alarm ? QStringLiteral("color: white; background: #c62828;")
+                                 : QString());
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,44 @@
+#pragma once
+// HysteresisPlot: force against deformation of chosen elements, as parametric curves (the
+// loop is not a function of deformation). The first element is drawn as the reference (for a
+// specimen: its *measured* loop), the others are overlaid (e.g. its numerical twins).
+// Axis labels carry the element units (RunLayout). Used live by the console and offscreen by
+// `hsmu run --plots`.
+// Thread rules: GUI thread only, like every widget.
+
+#include "core/output/RunLayout.h"
+#include "core/test/StepRecord.h"
+
+#include <qcustomplot.h>
+
+#include <vector>
+
+namespace hsmu::gui {
+
+class HysteresisPlot : public QCustomPlot {
+    Q_OBJECT
+public:
+    explicit HysteresisPlot(QWidget* parent = nullptr);
+
+    /// Elements to show: the specimen (first experimental element, else the first nonlinear
+    /// one) followed by the numerical nonlinear elements of the same type. Empty if none.
+    static std::vector<int> specimenWithTwins(const RunLayout& layout);
+
+    /// Replace the curves by one per element index in `elements` (indices into layout).
+    void showElements(const RunLayout& layout, const std::vector<int>& elements);
+    /// Append one point per curve per record.
+    void appendRecords(const std::vector<StepRecord>& records);
+    /// Remove every point, keep the curves.
+    void clearData();
+    /// Rescale to the data (with a margin) and replot (queued: at most once per frame).
+    void refresh();
+
+private:
+    struct Series {
+        int element = 0;
+        QCPCurve* curve = nullptr;
+    };
+    std::vector<Series> m_series;
+};
+
+} // namespace hsmu::gui

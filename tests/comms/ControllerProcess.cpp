@@ -1,0 +1,68 @@
+#include "ControllerProcess.h"
+
+#include <QDeadlineTimer>
+#include <QRegularExpression>
+
+ControllerProcess::ControllerProcess(QStringList args) : m_args(std::move(args)) {
+    m_process.setProgram(QStringLiteral(HSMU_CONTROLLER_EXE));
+    m_process.setProcessChannelMode(QProcess::MergedChannels);
+}
+
+ControllerProcess::~ControllerProcess() {
+    stop();
+}
+
+bool ControllerProcess::start(quint16 port, int timeoutMs) {
+    stop();
+    QStringList args = m_args;
+    args << QStringLiteral("--port") << QString::number(port);
+    m_process.setArguments(args);
+    m_process.start();
+    if (!m_process.waitForStarted(timeoutMs))
+        return false;
+    const QRegularExpression re(QStringLiteral("listening on \\S+:(\\d+)"));
+    QDeadlineTimer deadline(timeoutMs);
+    QString seen;
+    while (!deadline.hasExpired()) {
+        if (m_process.bytesAvailable() == 0 && !m_process.waitForReadyRead(200)) {
+            if (m_process.state() == QProcess::NotRunning)
+                break;
+            continue;
+        }
+        while (m_process.canReadLine()) {
+            const QString line = QString::fromUtf8(m_process.readLine());
+            m_log += line;
+            const auto match = re.match(line);
+            if (match.hasMatch()) {
+                m_port = static_cast<quint16>(match.captured(1).toUInt());
+                return true;
+            }
+        }
+    }
+    m_log += QString::fromUtf8(m_process.readAll());
+    return false;
+}
+
+void ControllerProcess::kill() {
+    if (m_process.state() == QProcess::NotRunning)
+        return;
+    m_process.kill(); // SIGKILL
+    m_process.waitForFinished(30000);
+    m_log += QString::fromUtf8(m_process.readAll());
+}
+
+void ControllerProcess::stop() {
+    if (m_process.state() == QProcess::NotRunning)
+        return;
+    m_process.terminate(); // SIGTERM: the controller stops and prints its statistics
+    if (!m_process.waitForFinished(10000)) {
+        m_process.kill();
+        m_process.waitForFinished(10000);
+    }
+    m_log += QString::fromUtf8(m_process.readAll());
+}
+
+QString ControllerProcess::log() {
+    m_log += QString::fromUtf8(m_process.readAll());
+    return m_log;
+}

@@ -1,0 +1,229 @@
+// The native protocol's codec (comms/protocol): every message survives a round trip through
+// the incremental decoder in any chunking, and malformed input (truncated, oversize, bad
+// magic, wrong version, unknown type, bad fields, trailing bytes, sequence gaps) is refused
+// with the right error code, without growing the buffer.
+#include "comms/protocol/FrameDecoder.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <limits>
+
+using namespace hsmu::comms;
+
+namespace {
+
+std::vector<Message> samples() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {HelloMsg{1, 0x0123456789abcdefull, "s3cret", "Element 1"},
+            HelloAckMsg{1, 42, -0.0125, true, "Element 1", "specimen 'Element 1' (boucWen)",
+                        "interlock: force"},
+            ConfigureMsg{0.01, 0.15, inf, 0.01},
+            TargetMsg{7, 1.0e-3},
+            MeasurementMsg{7, 1.0e-3, -12.5, 1.0e-3, 3, kFlagFractured | kFlagReplayed},
+            CommitMsg{7},
+            AckMsg{MessageType::Commit, 7},
+            HoldMsg{"operator hold \xc3\xa9"},
+            ResumeMsg{},
+            ResetMsg{},
+            HeartbeatMsg{99},
+            ErrorMsg{ErrorCode::Interlock, "target deformation |d| = 0.2 exceeds the limit 0.15"},
+            ByeMsg{"test finished"}};
+}
+
+std::vector<std::uint8_t> header(std::uint32_t magic, std::uint16_t version, std::uint16_t type,
+                                 std::uint32_t seq, std::uint32_t length) {
+    std::vector<std::uint8_t> out;
+    encodeRawFrame({magic, version, type, seq, length}, {}, out);
+    return out;
+}
+
+FrameDecoder::Status decodeAll(FrameDecoder& d, const std::vector<std::uint8_t>& bytes,
+                               std::vector<Frame>* frames = nullptr) {
+    d.append(bytes.data(), bytes.size());
+    Frame f;
+    FrameDecoder::Status st;
+    while ((st = d.next(f)) == FrameDecoder::Status::Frame)
+        if (frames)
+            frames->push_back(f);
+    return st;
+}
+
+} // namespace
+
+class TestFrameCodec : public QObject {
+    Q_OBJECT
+private slots:
+    void roundTripEveryMessage() {
+        const auto msgs = samples();
+        QCOMPARE(msgs.size(), std::size_t(13)); // one of each type
+        std::vector<std::uint8_t> stream;
+        for (std::size_t i = 0; i < msgs.size(); ++i)
+            encodeFrame(msgs[i], std::uint32_t(i + 1), stream);
+        FrameDecoder d;
+        std::vector<Frame> frames;
+        QCOMPARE(decodeAll(d, stream, &frames), FrameDecoder::Status::NeedMore);
+        QCOMPARE(frames.size(), msgs.size());
+        for (std::size_t i = 0; i < msgs.size(); ++i) {
+            QCOMPARE(frames[i].sequence, std::uint32_t(i + 1));
+            QVERIFY2(frames[i].message.index() == msgs[i].index(),
+                     messageTypeName(messageTypeOf(msgs[i])));
+            std::vector<std::uint8_t> a, b; // equal re-encodings = equal fields, bit for bit
+            encodeFrame(frames[i].message, 1, a);
+            encodeFrame(msgs[i], 1, b);
+            QVERIFY(a == b);
+        }
+        const auto& c = std::get<ConfigureMsg>(frames[2].message);
+        QVERIFY(std::isinf(c.maxForce));
+        QCOMPARE(std::get<HelloAckMsg>(frames[1].message).lastCommittedTarget, -0.0125);
+    }
+
+    void byteByByteChunking() {
+        std::vector<std::uint8_t> stream;
+        encodeFrame(TargetMsg{3, 0.5}, 1, stream);
+        encodeFrame(MeasurementMsg{3, 0.5, 2.0, 0.5, 0, 0}, 2, stream);
+        FrameDecoder d;
+        int frames = 0;
+        Frame f;
+        for (std::uint8_t b : stream) {
+            d.append(&b, 1);
+            while (d.next(f) == FrameDecoder::Status::Frame)
+                ++frames;
+            QVERIFY(d.buffered() <= kHeaderSize + kMaxPayload);
+        }
+        QCOMPARE(frames, 2);
+        QCOMPARE(std::get<MeasurementMsg>(f.message).force, 2.0);
+    }
+
+    void littleEndianLayout() {
+        std::vector<std::uint8_t> b;
+        encodeFrame(TargetMsg{0x0102, 1.0}, 0x0A0B0C0D, b);
+        QCOMPARE(b.size(), std::size_t(16 + 16));
+        const std::vector<std::uint8_t> head{'H',  'S',  'M',  'U',  1,  0, 4, 0,
+                                             0x0D, 0x0C, 0x0B, 0x0A, 16, 0, 0, 0};
+        QVERIFY(std::equal(head.begin(), head.end(), b.begin()));
+        QCOMPARE(int(b[16]), 0x02); // step, u64 LE
+        QCOMPARE(int(b[17]), 0x01);
+        QCOMPARE(int(b[31]), 0x3F); // 1.0 = 0x3FF0000000000000, LE: last byte 0x3F
+        QCOMPARE(int(b[30]), 0xF0);
+    }
+
+    void truncatedFrameWaits() {
+        std::vector<std::uint8_t> b;
+        encodeFrame(TargetMsg{1, 0.1}, 1, b);
+        b.resize(b.size() - 3);
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, b), FrameDecoder::Status::NeedMore);
+        QVERIFY(!d.failed());
+    }
+
+    void lengthTooShortForTheType() {
+        std::vector<std::uint8_t> b =
+            header(kFrameMagic, 1, std::uint16_t(MessageType::Target), 1, 8);
+        b.resize(b.size() + 8, 0);
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, b), FrameDecoder::Status::Error);
+        QCOMPARE(d.error().code, ErrorCode::Malformed);
+    }
+
+    void oversizeLengthRefusedAtTheHeader() {
+        FrameDecoder d;
+        QCOMPARE(
+            decodeAll(d, header(kFrameMagic, 1, std::uint16_t(MessageType::Hold), 1, 0xFFFFFFFFu)),
+            FrameDecoder::Status::Error);
+        QCOMPARE(d.error().code, ErrorCode::Malformed);
+        QVERIFY(d.error().reason.find("outside") != std::string::npos);
+        QCOMPARE(d.buffered(), std::size_t(0)); // nothing kept, nothing allocated for it
+        FrameDecoder d2;                        // just over the limit for a string message
+        QCOMPARE(decodeAll(d2, header(kFrameMagic, 1, std::uint16_t(MessageType::Bye), 1,
+                                      std::uint32_t(kMaxPayload + 1))),
+                 FrameDecoder::Status::Error);
+    }
+
+    void badMagic() {
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, header(0x48545450u /* "PTTH" */, 1, 4, 1, 16)),
+                 FrameDecoder::Status::Error);
+        QCOMPARE(d.error().code, ErrorCode::Malformed);
+        QVERIFY(d.error().reason.find("magic") != std::string::npos);
+    }
+
+    void wrongVersion() {
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, header(kFrameMagic, 2, 4, 1, 16)), FrameDecoder::Status::Error);
+        QCOMPARE(d.error().code, ErrorCode::UnsupportedVersion);
+    }
+
+    void unknownType() {
+        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(14), std::uint16_t(0xFFFF)}) {
+            FrameDecoder d;
+            QCOMPARE(decodeAll(d, header(kFrameMagic, 1, t, 1, 0)), FrameDecoder::Status::Error);
+            QCOMPARE(d.error().code, ErrorCode::Malformed);
+            QVERIFY(d.error().reason.find("unknown message type") != std::string::npos);
+        }
+    }
+
+    void badFields() {
+        // Hold whose string claims more bytes than the payload has.
+        std::vector<std::uint8_t> b;
+        encodeRawFrame({kFrameMagic, 1, std::uint16_t(MessageType::Hold), 1, 4}, {200, 0, 'a', 'b'},
+                       b);
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, b), FrameDecoder::Status::Error);
+        // Trailing bytes after the string.
+        b.clear();
+        encodeRawFrame({kFrameMagic, 1, std::uint16_t(MessageType::Hold), 1, 5},
+                       {2, 0, 'a', 'b', 'c'}, b);
+        FrameDecoder d2;
+        QCOMPARE(decodeAll(d2, b), FrameDecoder::Status::Error);
+        QVERIFY(d2.error().reason.find("trailing") != std::string::npos);
+        // HelloAck 'holding' byte must be 0 or 1.
+        b.clear();
+        encodeFrame(HelloAckMsg{}, 1, b);
+        b[16 + 2 + 8 + 8] = 7;
+        FrameDecoder d3;
+        QCOMPARE(decodeAll(d3, b), FrameDecoder::Status::Error);
+        // Ack of an unknown type.
+        b.clear();
+        encodeRawFrame({kFrameMagic, 1, std::uint16_t(MessageType::Ack), 1, 10},
+                       {99, 0, 0, 0, 0, 0, 0, 0, 0, 0}, b);
+        FrameDecoder d4;
+        QCOMPARE(decodeAll(d4, b), FrameDecoder::Status::Error);
+    }
+
+    void sequenceGapIsAViolation() {
+        std::vector<std::uint8_t> b;
+        encodeFrame(HeartbeatMsg{1}, 5, b);
+        encodeFrame(HeartbeatMsg{2}, 7, b);
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, b), FrameDecoder::Status::Error);
+        QCOMPARE(d.error().code, ErrorCode::ProtocolViolation);
+    }
+
+    void errorIsSticky() {
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, header(0, 1, 4, 1, 16)), FrameDecoder::Status::Error);
+        std::vector<std::uint8_t> good;
+        encodeFrame(HeartbeatMsg{1}, 1, good);
+        QCOMPARE(decodeAll(d, good), FrameDecoder::Status::Error);
+    }
+
+    void longStringsAreCutOnACharacterBoundary() {
+        std::string s = "x"; // so that byte 1024 falls inside a character
+        for (int i = 0; i < 600; ++i)
+            s += "\xc3\xa9"; // 1200 bytes of two-byte characters
+        std::vector<std::uint8_t> b;
+        encodeFrame(ByeMsg{s}, 1, b);
+        FrameDecoder d;
+        std::vector<Frame> frames;
+        decodeAll(d, b, &frames);
+        QCOMPARE(frames.size(), std::size_t(1));
+        const std::string& r = std::get<ByeMsg>(frames[0].message).reason;
+        QVERIFY(r.size() <= kMaxStringBytes);
+        QCOMPARE(r.size(), std::size_t(1023));
+        QVERIFY(s.compare(0, r.size(), r) == 0);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestFrameCodec)
+#include "TestFrameCodec.moc"

@@ -1,0 +1,291 @@
+// The hsmu executable as a user runs it: `hsmu run` (outputs, exit codes 0 / 1 / 2, messages)
+// and `hsmu material`. Each case starts the real binary with QProcess.
+
+#include <QColor>
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    QString out, err;
+};
+
+Result hsmu(const QStringList& args, int timeoutMs = 120000) {
+    QProcess p;
+    p.start(QStringLiteral(HSMU_EXE), args);
+    Result r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("timeout");
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2; // -2: crashed
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QJsonObject readJson(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(f.readAll()).object();
+}
+
+QStringList readLines(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+        return {};
+    QStringList lines = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'));
+    if (!lines.isEmpty() && lines.back().isEmpty())
+        lines.removeLast();
+    return lines;
+}
+
+QJsonObject preset(const QString& id) {
+    return readJson(QStringLiteral(HSMU_SOURCE_DIR "/resources/presets/") + id +
+                    QStringLiteral(".json"));
+}
+
+QString writeJson(const QTemporaryDir& dir, const QString& name, const QJsonObject& doc) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    f.open(QIODevice::WriteOnly);
+    f.write(QJsonDocument(doc).toJson());
+    return path;
+}
+
+QString report(const Result& r) {
+    return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.exitCode).arg(r.out, r.err);
+}
+
+} // namespace
+
+class TestCommandLine : public QObject {
+    Q_OBJECT
+private slots:
+    void runPresetWritesOutputsAndPlots() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString out = dir.filePath(QStringLiteral("out"));
+        const Result r = hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
+                               QStringLiteral("--out"), out, QStringLiteral("--plots"),
+                               QStringLiteral("--duration"), QStringLiteral("3")});
+        QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("100 %")), qPrintable(r.err)); // progress
+        QVERIFY2(r.out.contains(QStringLiteral("DOF 1: ")) &&
+                     r.out.contains(QStringLiteral(" kN m")),
+                 qPrintable(r.out));
+
+        const QJsonObject summary = readJson(out + QStringLiteral("/summary.json"));
+        QCOMPARE(summary.value(QStringLiteral("steps")).toInt(), 300);
+        QCOMPARE(summary.value(QStringLiteral("test_time_s")).toDouble(), 3.0);
+        QCOMPARE(summary.value(QStringLiteral("state")).toString(), QStringLiteral("finished"));
+        QVERIFY(summary.value(QStringLiteral("peak_displacement_m"))
+                    .toObject()
+                    .value(QStringLiteral("DOF 1"))
+                    .toDouble() > 0.0);
+        QCOMPARE(summary.value(QStringLiteral("peak_force"))
+                     .toObject()
+                     .value(QStringLiteral("Element 1"))
+                     .toObject()
+                     .value(QStringLiteral("unit"))
+                     .toString(),
+                 QStringLiteral("kN m"));
+
+        const QStringList lines = readLines(out + QStringLiteral("/steps.csv"));
+        QCOMPARE(lines.size(), 302); // header + steps 0..300
+        const QStringList header = lines.front().split(QLatin1Char(','));
+        QCOMPARE(header.front(), QStringLiteral("time_s"));
+        QVERIFY(header.contains(QStringLiteral("DOF 1_u_m")));
+        QVERIFY(header.contains(QStringLiteral("Element 1_deformation_rad")));
+        QVERIFY(header.contains(QStringLiteral("Element 1_force_kNm")));
+        QVERIFY(header.contains(QStringLiteral("Element 3_force_kN")));
+        QCOMPARE(lines.back().split(QLatin1Char(',')).size(), header.size());
+        QCOMPARE(lines.back().split(QLatin1Char(',')).front().toDouble(), 3.0);
+
+        const QStringList pngs = {
+            QStringLiteral("hysteresis_Element_1.png"), QStringLiteral("hysteresis_Element_2.png"),
+            QStringLiteral("displacement.png"), QStringLiteral("ground_motion.png")};
+        for (const QString& name : pngs) {
+            QImage image(out + QLatin1Char('/') + name);
+            QVERIFY2(!image.isNull(), qPrintable(name));
+            QVERIFY(image.width() >= 400 && image.height() >= 300);
+            QSet<QRgb> colours;
+            qsizetype inked = 0;
+            for (int y = 0; y < image.height(); y += 2)
+                for (int x = 0; x < image.width(); x += 2) {
+                    const QRgb c = image.pixel(x, y);
+                    colours.insert(c & 0xF0F0F0); // coarse: ignore antialiasing shades
+                    inked += c != qRgb(255, 255, 255);
+                }
+            QVERIFY2(colours.size() >= 4, qPrintable(name));
+            QVERIFY2(inked > image.width() * image.height() / 400, qPrintable(name));
+        }
+        // Element 3 is elastic: no hysteresis plot for it.
+        QVERIFY(!QFile::exists(out + QStringLiteral("/hysteresis_Element_3.png")));
+    }
+
+    void malformedConfigNamesFileAndField() {
+        QTemporaryDir dir;
+        QJsonObject doc = preset(QStringLiteral("paper-condition-3"));
+        QVERIFY(!doc.isEmpty());
+        QJsonObject structure = doc.value(QStringLiteral("structure")).toObject();
+        QJsonArray elements = structure.value(QStringLiteral("elements")).toArray();
+        QJsonObject e2 = elements.at(1).toObject();
+        e2.insert(QStringLiteral("heigth"), e2.take(QStringLiteral("height")));
+        elements.replace(1, e2);
+        structure.insert(QStringLiteral("elements"), elements);
+        doc.insert(QStringLiteral("structure"), structure);
+        const QString path = writeJson(dir, QStringLiteral("typo.json"), doc);
+        const Result r = hsmu({QStringLiteral("run"), path, QStringLiteral("--out"),
+                               dir.filePath(QStringLiteral("out"))});
+        QVERIFY2(r.exitCode == 1, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("typo.json")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("heigth")), qPrintable(r.err));
+        QVERIFY(!r.err.contains(QStringLiteral("internal error")));
+    }
+
+    void tinySpecimenLimitHoldsWithExitCode2() {
+        QTemporaryDir dir;
+        QJsonObject doc = preset(QStringLiteral("paper-condition-3"));
+        QJsonObject structure = doc.value(QStringLiteral("structure")).toObject();
+        QJsonArray elements = structure.value(QStringLiteral("elements")).toArray();
+        QJsonObject e1 = elements.at(0).toObject();
+        QJsonObject limits = e1.value(QStringLiteral("limits")).toObject();
+        limits.insert(QStringLiteral("deformation"), 0.0005);
+        e1.insert(QStringLiteral("limits"), limits);
+        elements.replace(0, e1);
+        structure.insert(QStringLiteral("elements"), elements);
+        doc.insert(QStringLiteral("structure"), structure);
+        const QString path = writeJson(dir, QStringLiteral("tiny.json"), doc);
+        const QString out = dir.filePath(QStringLiteral("out"));
+        const Result r = hsmu({QStringLiteral("run"), path, QStringLiteral("--out"), out});
+        QVERIFY2(r.exitCode == 2, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("Element 1")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("target deformation")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("limit 0.0005")), qPrintable(r.err));
+        // Outputs hold every committed step.
+        const QJsonObject summary = readJson(out + QStringLiteral("/summary.json"));
+        const int steps = summary.value(QStringLiteral("steps")).toInt();
+        QVERIFY(steps > 0 && steps < summary.value(QStringLiteral("total_steps")).toInt());
+        QCOMPARE(summary.value(QStringLiteral("state")).toString(), QStringLiteral("holding"));
+        QVERIFY(summary.value(QStringLiteral("hold_reason"))
+                    .toString()
+                    .contains(QStringLiteral("target deformation")));
+        QCOMPARE(readLines(out + QStringLiteral("/steps.csv")).size(), steps + 2);
+    }
+
+    void unstableStepIsRefused() {
+        QTemporaryDir dir;
+        const Result r = hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
+                               QStringLiteral("--out"), dir.path(), QStringLiteral("--dt"),
+                               QStringLiteral("0.5")});
+        QVERIFY2(r.exitCode == 1, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("omega_max dt")), qPrintable(r.err));
+    }
+
+    void unknownPresetOrRecordIsAnError() {
+        QTemporaryDir dir;
+        Result r = hsmu({QStringLiteral("run"), QStringLiteral("no-such-preset"),
+                         QStringLiteral("--out"), dir.path()});
+        QVERIFY2(r.exitCode == 1, qPrintable(report(r)));
+        QVERIFY(r.err.contains(QStringLiteral("paper-condition-3"))); // lists the presets
+        r = hsmu({QStringLiteral("run"), QStringLiteral("sdof-bouc-wen"), QStringLiteral("--out"),
+                  dir.path(), QStringLiteral("--ground-motion"),
+                  dir.filePath(QStringLiteral("missing.AT2"))});
+        QVERIFY2(r.exitCode == 1, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("missing.AT2")), qPrintable(r.err));
+    }
+
+    void consoleScreenshotShowsTheRunningTest() {
+        QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("console.png"));
+        const Result r =
+            hsmu({QStringLiteral("--start"), QStringLiteral("sdof-bouc-wen"),
+                  QStringLiteral("--speed"), QStringLiteral("5"), QStringLiteral("--screenshot"),
+                  png, QStringLiteral("--screenshot-after"), QStringLiteral("1.5")});
+        QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+        const QImage image(png);
+        QVERIFY(!image.isNull());
+        QVERIFY(image.width() >= 800 && image.height() >= 500);
+        // The specimen's loop is drawn in the first series colour (31, 119, 180).
+        qsizetype blue = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                blue += std::abs(c.red() - 31) < 40 && std::abs(c.green() - 119) < 40 &&
+                        std::abs(c.blue() - 180) < 40;
+            }
+        QVERIFY2(blue > 300, qPrintable(QString::number(blue)));
+    }
+
+    void materialElasticIsExact() {
+        QTemporaryDir dir;
+        const QString history = dir.filePath(QStringLiteral("history.csv"));
+        QFile f(history);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("deformation\n0\n0.1\n-0.3333333333333333\n1e-7\n12.625\n-4.1\n");
+        f.close();
+        const Result r = hsmu({QStringLiteral("material"), QStringLiteral("--law"),
+                               QStringLiteral("elastic"), QStringLiteral("--param"),
+                               QStringLiteral("k=2"), QStringLiteral("--history"), history});
+        QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+        QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 7);
+        QCOMPARE(lines.front(), QStringLiteral("deformation,force,tangent"));
+        const QList<double> expected{0, 0.1, -0.3333333333333333, 1e-7, 12.625, -4.1};
+        for (int i = 1; i < lines.size(); ++i) {
+            const QStringList v = lines[i].split(QLatin1Char(','));
+            QCOMPARE(v.size(), 3);
+            const double d = v[0].toDouble(), force = v[1].toDouble();
+            QVERIFY(d == expected[i - 1]);
+            QVERIFY2(force == 2.0 * d, qPrintable(lines[i]));
+            QVERIFY(v[2].toDouble() == 2.0);
+        }
+        // --out writes the same CSV to a file.
+        const QString csv = dir.filePath(QStringLiteral("out.csv"));
+        const Result r2 =
+            hsmu({QStringLiteral("material"), QStringLiteral("--law"), QStringLiteral("elastic"),
+                  QStringLiteral("--param"), QStringLiteral("k=2"), QStringLiteral("--history"),
+                  history, QStringLiteral("--out"), csv});
+        QVERIFY2(r2.exitCode == 0, qPrintable(report(r2)));
+        QCOMPARE(readLines(csv), lines);
+    }
+
+    void materialErrorsAreClear() {
+        QTemporaryDir dir;
+        const QString history = dir.filePath(QStringLiteral("h.csv"));
+        QFile f(history);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("0\n0.1\n");
+        f.close();
+        Result r = hsmu({QStringLiteral("material"), QStringLiteral("--law"),
+                         QStringLiteral("bilinear"), QStringLiteral("--param"),
+                         QStringLiteral("fyy=2"), QStringLiteral("--history"), history});
+        QVERIFY2(r.exitCode == 1, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("fyy")), qPrintable(r.err));
+        r = hsmu({QStringLiteral("material"), QStringLiteral("--law"), QStringLiteral("elastic"),
+                  QStringLiteral("--param"), QStringLiteral("k"), QStringLiteral("--history"),
+                  history});
+        QCOMPARE(r.exitCode, 1);
+        r = hsmu({QStringLiteral("material"), QStringLiteral("--law"), QStringLiteral("elastic"),
+                  QStringLiteral("--history"), dir.filePath(QStringLiteral("nope.csv"))});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("nope.csv")), qPrintable(r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCommandLine)
+#include "TestCommandLine.moc"
