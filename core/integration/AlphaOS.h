@@ -32,6 +32,12 @@ public:
     Eigen::VectorXd predict() const override;
     bool correct(const Eigen::VectorXd& rTrial, double agNext) override;
     double alpha() const { return m_alpha; }
+    Snapshot snapshot() const override { return {m_u, m_v, m_a, m_fPrev}; }
+    void restore(const Snapshot& s) override
+    {
+        Integrator::restore(s);
+        m_fPrev = s.extra;
+    }
 
 private:
     double m_alpha, m_beta, m_gamma;

@@ -35,6 +35,18 @@ public:
     /// Returns false (state unchanged) if the result is not finite.
     virtual bool correct(const Eigen::VectorXd& rTrial, double agNext) = 0;
 
+    /// The scheme's whole state, to undo a step whose commit failed (see HybridTest::step).
+    struct Snapshot {
+        Eigen::VectorXd u, v, a, extra;
+    };
+    virtual Snapshot snapshot() const { return {m_u, m_v, m_a, {}}; }
+    virtual void restore(const Snapshot& s)
+    {
+        m_u = s.u;
+        m_v = s.v;
+        m_a = s.a;
+    }
+
     const Eigen::VectorXd& displacement() const { return m_u; }
     const Eigen::VectorXd& velocity() const { return m_v; }
     const Eigen::VectorXd& acceleration() const { return m_a; }

@@ -154,10 +154,16 @@ Eigen::VectorXd Structure::restoringForce() const
 
 ElementStatus Structure::commit()
 {
-    for (auto& e : m_elements) {
-        ElementStatus s = e->commit();
-        if (!s.ok)
-            return s;
+    // Specimens first: a failed specimen commit leaves every numerical element uncommitted,
+    // so the step can be retried.
+    for (int pass = 0; pass < 2; ++pass) {
+        for (auto& e : m_elements) {
+            if (e->isExperimental() != (pass == 0))
+                continue;
+            ElementStatus s = e->commit();
+            if (!s.ok)
+                return s;
+        }
     }
     return ElementStatus::success();
 }

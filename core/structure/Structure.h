@@ -69,6 +69,7 @@ public:
     ElementStatus setTrial(const Eigen::VectorXd& uFree);
     /// Restoring force over the free DOFs at the current trial state.
     Eigen::VectorXd restoringForce() const;
+    /// Commit every element, specimens first; returns the first failure.
     ElementStatus commit();
     void revert();
 

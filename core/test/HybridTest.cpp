@@ -175,11 +175,14 @@ HybridTest::StepResult HybridTest::step()
         return StepResult::Held;
     }
     const Eigen::VectorXd r = m_structure->restoringForce();
+    const Integrator::Snapshot before = m_integrator->snapshot();
     if (!r.allFinite() || !m_integrator->correct(r, agNext)) {
         enterHold(AlarmKind::IntegratorFault, "restoring force or response is not finite");
         return StepResult::Held;
     }
     if (ElementStatus s = m_structure->commit(); !s.ok) {
+        // The retried step must start where this one did: undo the integrator's advance.
+        m_integrator->restore(before);
         enterHold(AlarmKind::ControlFault, s.message);
         return StepResult::Held;
     }
