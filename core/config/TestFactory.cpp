@@ -48,6 +48,8 @@ std::unique_ptr<Structure> buildStructure(const TestConfig& cfg, const ControlFa
             std::vector<DofTerm> terms{{e.dofs[0], 1.0}};
             if (e.type == "rotationalBaseSpring")
                 terms[0].coefficient = 1.0 / e.height;
+            else if (e.type == "truss") // a bearing or link between two DOFs
+                terms = {{e.dofs[0], -1.0}, {e.dofs[1], 1.0}};
             auto control = controls ? controls(e) : buildVirtualSpecimen(e);
             if (!control)
                 throw ConfigError(where + ": no experimental control could be made");

@@ -3,7 +3,7 @@
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
 #include "core/updating/ModelUpdater.h"
-//NM#include "core/updating/NelderMeadIdentifier.h"
+#include "core/updating/NelderMeadIdentifier.h"
 #include "core/updating/UkfIdentifier.h"
 
 namespace hsmu {
@@ -191,7 +191,13 @@ std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
             s.initialStdFraction = u.initialStdFraction;
             identifier = std::make_unique<UkfIdentifier>(bw->parameters(), s, u.bounds);
         } else {
-            throw ConfigError(where + ": nelderMead: not yet available");
+            NelderMeadIdentifierSettings s;
+            s.parameters = u.parameters;
+            s.bounds = u.bounds;
+            s.maxEvaluations = u.maxEvaluations;
+            s.cooldownSteps = static_cast<int>(u.cooldown / cfg.analysis.dt + 0.5);
+            s.windowSteps = static_cast<int>(u.fitWindow / cfg.analysis.dt + 0.5);
+            identifier = std::make_unique<NelderMeadIdentifier>(*aux, s);
         }
     } catch (const std::invalid_argument& e) {
         throw ConfigError(where + ": " + e.what());

@@ -1,6 +1,8 @@
 #include "core/output/RunLayout.h"
 
 #include "core/structure/Structure.h"
+#include "core/test/HybridTest.h"
+#include "core/updating/ModelUpdater.h"
 
 namespace hsmu {
 
@@ -16,6 +18,22 @@ RunLayout RunLayout::of(const Structure& structure) {
         info.nonlinear = info.experimental || (law && law->lawName() != "elastic");
         info.units = elementUnits(info.type);
         layout.elements.push_back(std::move(info));
+    }
+    return layout;
+}
+
+RunLayout RunLayout::of(const HybridTest& test) {
+    RunLayout layout = of(test.structure());
+    if (const ModelUpdater* updater = test.updater()) {
+        UpdatingInfo u;
+        u.specimen = updater->specimenElement();
+        u.method = updater->identifier().methodName();
+        u.parameters = updater->parameterNames();
+        u.units = elementUnits("");
+        for (const ElementInfo& e : layout.elements)
+            if (e.name == u.specimen)
+                u.units = e.units;
+        layout.updating = std::move(u);
     }
     return layout;
 }

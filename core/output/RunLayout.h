@@ -3,15 +3,20 @@
 // copied out of the Structure so that writers, statistics and the GUI's plots can label
 // StepRecords without touching the live Structure (which belongs to the test's thread).
 // Index i of dofs / elements matches index i of StepRecord::u / StepRecord::elements.
+// With online model updating, `updating` names the identified parameters in the order of
+// StepRecord::updating.parameters / .stddev (values in the law's own units: normalized by
+// uRef / fRef for a Bouc-Wen law) and the specimen whose units the auxiliary force carries.
 // Thread rules: plain data, copy freely.
 
 #include "core/output/ElementUnits.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace hsmu {
 
+class HybridTest;
 class Structure;
 
 struct ElementInfo {
@@ -23,12 +28,22 @@ struct ElementInfo {
     ElementUnits units;
 };
 
+struct UpdatingInfo {
+    std::string specimen;                ///< the identified experimental element
+    std::string method;                  ///< the identifier's name, e.g. "UKF"
+    std::vector<std::string> parameters; ///< identified parameters, record order
+    ElementUnits units;                  ///< the specimen's units (auxiliary force)
+};
+
 struct RunLayout {
     std::vector<std::string> dofNames; ///< full DOFs, displacement in m
     std::vector<ElementInfo> elements;
+    std::optional<UpdatingInfo> updating; ///< set when the test runs online model updating
 
-    /// Valid before or after Structure::finalize().
+    /// Valid before or after Structure::finalize(); no updating information.
     static RunLayout of(const Structure& structure);
+    /// The test's structure plus its updater's parameters (if it has an updater).
+    static RunLayout of(const HybridTest& test);
 };
 
 } // namespace hsmu

@@ -3,6 +3,7 @@
 #include "core/integration/Integrator.h"
 #include "core/output/RunStatistics.h"
 #include "core/test/HybridTest.h"
+#include "core/updating/ModelUpdater.h"
 
 #include <cmath>
 #include <fstream>
@@ -18,6 +19,24 @@ nlohmann::json number(double x) {
 
 nlohmann::json withUnit(double value, const std::string& unit) {
     return {{"value", number(value)}, {"unit", unit}};
+}
+
+nlohmann::json updatingBlock(const ModelUpdater& updater, const StepRecord& last) {
+    const std::vector<std::string> names = updater.parameterNames();
+    const UpdatingSample& u = last.updating;
+    nlohmann::json values = nlohmann::json::object(), stddev = nlohmann::json::object();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        const bool has = last.hasUpdating;
+        values[names[i]] = has && i < u.parameters.size() ? number(u.parameters[i]) : nullptr;
+        stddev[names[i]] = has && i < u.stddev.size() ? number(u.stddev[i]) : nullptr;
+    }
+    return {{"specimen", updater.specimenElement()},
+            {"method", updater.identifier().methodName()},
+            {"parameters", values},
+            {"standard_deviations", stddev},
+            {"applied_updates", updater.reporter().appliedCount()},
+            {"pending_proposals", updater.reporter().pending().size()},
+            {"final_fit_error", last.hasUpdating ? number(u.fitError) : nullptr}};
 }
 
 } // namespace
@@ -92,6 +111,8 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     j["alarms"] = alarms;
     const auto reason = holdReason(test);
     j["hold_reason"] = reason ? nlohmann::json(*reason) : nlohmann::json(nullptr);
+    if (const ModelUpdater* updater = test.updater())
+        j["updating"] = updatingBlock(*updater, last);
     return j;
 }
 

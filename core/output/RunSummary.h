@@ -7,7 +7,13 @@
 //   peak_ground_acceleration_m_s2,
 //   peak_displacement_m {dof: m}, peak_force {element: {value, unit}},
 //   peak_deformation {element: {value, unit}},
-//   alarms [{time_s, step, severity, kind, message}], hold_reason (string or null).
+//   alarms [{time_s, step, severity, kind, message}] (the updating alarms included),
+//   hold_reason (string or null),
+//   updating (only when the test runs online model updating):
+//     {specimen, method, parameters {name: final value}, standard_deviations {name: value},
+//      applied_updates, pending_proposals, final_fit_error}
+//     values in the law's own units (normalized by uRef / fRef for a Bouc-Wen law), taken
+//     from the last committed step.
 // Non-finite numbers (e.g. an unconditional stability limit) are written as null.
 // Thread rules: call once the test stopped stepping.
 

@@ -29,6 +29,13 @@ std::string StepCsvWriter::header(const RunLayout& layout) {
         if (e.experimental)
             h += "," + e.name + "_commanded_" + def;
     }
+    if (layout.updating) {
+        for (const auto& p : layout.updating->parameters)
+            h += ",param_" + p;
+        for (const auto& p : layout.updating->parameters)
+            h += ",std_" + p;
+        h += ",aux_force_" + compactUnit(layout.updating->units.force) + ",fit_error";
+    }
     return h;
 }
 
@@ -65,12 +72,28 @@ void StepCsvWriter::onStep(const StepRecord& record) {
         if (m_layout.elements[i].experimental)
             appendValue(m_line, s.commanded);
     }
+    if (m_layout.updating)
+        appendUpdating(record);
     m_line.push_back('\n');
     m_out.write(m_line.data(), std::streamsize(m_line.size()));
     if (++m_rows % kFlushInterval == 0)
         m_out.flush();
     if (!m_out)
         m_failed = true;
+}
+
+void StepCsvWriter::appendUpdating(const StepRecord& record) {
+    const std::size_t n = m_layout.updating->parameters.size();
+    const UpdatingSample& u = record.updating;
+    const auto at = [&record](const std::vector<double>& x, std::size_t i) {
+        return record.hasUpdating && i < x.size() ? x[i] : std::nan("");
+    };
+    for (std::size_t i = 0; i < n; ++i)
+        appendValue(m_line, at(u.parameters, i));
+    for (std::size_t i = 0; i < n; ++i)
+        appendValue(m_line, at(u.stddev, i));
+    appendValue(m_line, record.hasUpdating ? u.auxiliaryForce : std::nan(""));
+    appendValue(m_line, record.hasUpdating ? u.fitError : std::nan(""));
 }
 
 bool StepCsvWriter::finish() {

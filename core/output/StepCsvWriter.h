@@ -6,6 +6,13 @@
 //   <element>_deformation_<unit>,<element>_force_<unit> (per element),
 //   <element>_commanded_<unit> (specimens only, after their force column)
 // e.g. "Element 1_deformation_rad,Element 1_force_kNm,Element 1_commanded_rad".
+// With online model updating (RunLayout::updating) the row continues with
+//   param_<name> (per identified parameter, the law's own units: normalized for Bouc-Wen),
+//   std_<name> (their standard deviations, same units; 0 where the method has none),
+//   aux_force_<unit> (the auxiliary model's force, the specimen's force unit),
+//   fit_error (the inspector's normalized RMS error [-]),
+// e.g. "param_k0,...,std_k0,...,aux_force_kNm,fit_error"; a record without updating data
+// writes NaN there.
 // Values are written like "%.10g" with a '.' decimal point whatever the locale.
 // The file is flushed every kFlushInterval rows and by finish() / the destructor, so an
 // interrupted run keeps (almost) every committed step.
@@ -43,6 +50,8 @@ public:
     const std::string& path() const { return m_path; }
 
 private:
+    void appendUpdating(const StepRecord& record);
+
     std::string m_path;
     RunLayout m_layout;
     std::ofstream m_out;

@@ -121,23 +121,33 @@ TestConfig referenceConfig(const TestConfig& cfg, const ComparisonOptions& o)
 {
     TestConfig ref = cfg;
     const std::string name = comparedElement(cfg, o);
-    ElementSpec* target = findElement(ref, name);
-    if (!target || target->experimental)
-        throw ConfigError(cfg.sourcePath + ": compare: '" + name + "' is not a numerical element");
     const ElementSpec* specimen = findElement(ref, cfg.updating.specimen);
     if (!specimen || !specimen->experimental)
         throw ConfigError(cfg.sourcePath + ": compare: the updating specimen '" +
                           cfg.updating.specimen + "' is not an experimental element");
-    if (target->type != specimen->type || std::isfinite(target->ei))
-        throw ConfigError(cfg.sourcePath + ": compare: '" + name +
-                          "' must have the specimen's element type (and a rigid column) to be "
-                          "replaced by a copy of the true specimen");
-    target->experimental = true;
-    target->specimen = specimen->specimen;
-    target->specimen.options.forceNoiseStd = 0.0;
-    target->specimen.options.deformationNoiseStd = 0.0;
-    target->specimen.options.seed = specimen->specimen.options.seed + 1;
-    target->limits = specimen->limits;
+    const ElementSpec truth = *specimen;
+    // Every element the updating reaches, and the compared one, becomes a copy of the true
+    // specimen: the "exact" structure the updated run tries to approach.
+    std::vector<std::string> replaced{name};
+    for (const auto& t : cfg.updating.targets)
+        if (t.element != name)
+            replaced.push_back(t.element);
+    for (std::size_t i = 0; i < replaced.size(); ++i) {
+        ElementSpec* target = findElement(ref, replaced[i]);
+        if (!target || target->experimental)
+            throw ConfigError(cfg.sourcePath + ": compare: '" + replaced[i] +
+                              "' is not a numerical element");
+        if (target->type != truth.type || std::isfinite(target->ei))
+            throw ConfigError(cfg.sourcePath + ": compare: '" + replaced[i] +
+                              "' must have the specimen's element type (and a rigid column) to "
+                              "be replaced by a copy of the true specimen");
+        target->experimental = true;
+        target->specimen = truth.specimen;
+        target->specimen.options.forceNoiseStd = 0.0;
+        target->specimen.options.deformationNoiseStd = 0.0;
+        target->specimen.options.seed = truth.specimen.options.seed + 1 + i;
+        target->limits = truth.limits;
+    }
     ref.updating.enabled = false;
     return ref;
 }

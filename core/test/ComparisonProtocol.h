@@ -1,8 +1,9 @@
 #pragma once
 // ComparisonProtocol: the paper's test protocol (METHOD.md section 7, paper sec. 7) for one
 // configuration, three runs under the same record:
-//   reference  the compared element is a specimen too: a second copy of the true specimen
-//              (the updating specimen's `specimen` section, noise-free, its own state);
+//   reference  the compared element, and every other element the updating reaches, is a
+//              specimen too: a copy of the true specimen (the updating specimen's
+//              `specimen` section, noise-free, each with its own state);
 //   initial    the compared element is numerical with its configured (deliberately wrong)
 //              parameters, never updated;
 //   updated    the same initial parameters, updated online as the configuration says.

@@ -1,13 +1,16 @@
 #pragma once
 // Shared by the core/output tests: a small frame built from an inline configuration (a Bouc-Wen
 // specimen as a rotational base spring, a bilinear numerical base spring, an elastic truss),
-// and an observer keeping every StepRecord.
+// the paper's condition 3 with online model updating (the preset file), and an observer
+// keeping every StepRecord.
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
 #include "core/test/HybridTest.h"
 
+#include <fstream>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace hsmu::testsupport {
@@ -41,6 +44,17 @@ inline nlohmann::json smallFrameJson(double duration = 2.0, double specimenLimit
 
 inline std::unique_ptr<HybridTest> smallFrame(double duration = 2.0, double specimenLimit = 0.15) {
     return buildHybridTest(parseConfig(smallFrameJson(duration, specimenLimit), "inline.json"));
+}
+
+/// The preset paper-condition-3 (UKF updating of Element 1, reported to Element 2), cut to
+/// `duration` seconds.
+inline TestConfig condition3(double duration) {
+    const std::string path =
+        std::string(HSMU_SOURCE_DIR) + "/resources/presets/paper-condition-3.json";
+    std::ifstream in(path);
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["analysis"]["duration"] = duration;
+    return parseConfig(j, path);
 }
 
 class Collector final : public StepObserver {

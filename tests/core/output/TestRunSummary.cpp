@@ -25,7 +25,7 @@ struct Run {
 };
 
 void runToEnd(Run& run) {
-    run.stats = std::make_unique<RunStatistics>(RunLayout::of(run.test->structure()));
+    run.stats = std::make_unique<RunStatistics>(RunLayout::of(*run.test));
     run.test->addObserver(run.stats.get());
     run.test->addObserver(&run.collector);
     QVERIFY2(run.test->prepare(), run.test->lastError().c_str());
@@ -94,6 +94,32 @@ private slots:
                  run.collector.records.back().u[1]);
         QVERIFY(j.at("alarms").is_array() && j.at("alarms").empty());
         QVERIFY(j.at("hold_reason").is_null());
+        QVERIFY(!j.contains("updating")); // no updater
+    }
+
+    void updatingBlockHoldsTheFinalEstimate() {
+        Run run{buildHybridTest(condition3(2.0)), nullptr, {}};
+        runToEnd(run);
+        QCOMPARE(run.test->state(), HybridTest::State::Finished);
+        const nlohmann::json j = makeRunSummary(*run.test, *run.stats, RunInfo{});
+        QVERIFY(j.contains("updating"));
+        const nlohmann::json& u = j.at("updating");
+        QCOMPARE(u.at("specimen").get<std::string>(), std::string("Element 1"));
+        QCOMPARE(u.at("method").get<std::string>(), std::string("UKF"));
+        const UpdatingSample& last = run.collector.records.back().updating;
+        const std::vector<std::string> names = run.test->updater()->parameterNames();
+        QCOMPARE(u.at("parameters").size(), std::size_t(7));
+        QCOMPARE(u.at("standard_deviations").size(), std::size_t(7));
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            QCOMPARE(u.at("parameters").at(names[i]).get<double>(), last.parameters[i]);
+            QCOMPARE(u.at("standard_deviations").at(names[i]).get<double>(), last.stddev[i]);
+        }
+        QCOMPARE(u.at("applied_updates").get<int>(), last.appliedUpdates);
+        QVERIFY(u.at("applied_updates").get<int>() > 0);
+        QCOMPARE(u.at("pending_proposals").get<int>(), 0);
+        QCOMPARE(u.at("final_fit_error").get<double>(), last.fitError);
+        // The updater's alarms are the test's alarms, all listed.
+        QCOMPARE(j.at("alarms").size(), run.test->alarms().size());
     }
 
     void heldRunReportsReasonAndAlarm() {

@@ -106,6 +106,76 @@ private slots:
         QVERIFY(std::abs(collector.records.back().elements[0].force) > 0.0);
     }
 
+    void updatingColumnsFollowTheRecords() {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath(QStringLiteral("steps.csv")).toStdString();
+        auto test = buildHybridTest(condition3(0.5));
+        const RunLayout layout = RunLayout::of(*test);
+        QVERIFY(layout.updating.has_value());
+        QCOMPARE(layout.updating->specimen, std::string("Element 1"));
+        QCOMPARE(layout.updating->parameters.size(), std::size_t(7));
+        const std::string h = StepCsvWriter::header(layout);
+        const std::string base = StepCsvWriter::header(RunLayout::of(test->structure()));
+        QCOMPARE(QString::fromStdString(h.substr(base.size())),
+                 QStringLiteral(",param_k0,param_alpha,param_beta,param_gamma,param_n,"
+                                "param_deltaNu,param_deltaEta,std_k0,std_alpha,std_beta,std_gamma,"
+                                "std_n,std_deltaNu,std_deltaEta,aux_force_kNm,fit_error"));
+        Collector collector;
+        {
+            StepCsvWriter writer(path, layout);
+            test->addObserver(&writer);
+            test->addObserver(&collector);
+            QVERIFY2(test->prepare(), test->lastError().c_str());
+            while (test->step() == HybridTest::StepResult::Advanced) {
+            }
+            test->removeObserver(&writer);
+            QVERIFY(writer.finish());
+        }
+        const auto lines = readLines(path);
+        QCOMPARE(lines.size(), collector.records.size() + 1);
+        const std::size_t first = parseRow(lines[1]).size() - 16;
+        for (std::size_t k = 0; k < collector.records.size(); ++k) {
+            const UpdatingSample& u = collector.records[k].updating;
+            QVERIFY(collector.records[k].hasUpdating);
+            std::vector<double> expected = u.parameters;
+            expected.insert(expected.end(), u.stddev.begin(), u.stddev.end());
+            expected.insert(expected.end(), {u.auxiliaryForce, u.fitError});
+            const std::vector<double> row = parseRow(lines[k + 1]);
+            for (std::size_t c = 0; c < expected.size(); ++c)
+                QVERIFY2(sameTo10Digits(row[first + c], expected[c]),
+                         qPrintable(QStringLiteral("row %1 column %2").arg(k).arg(first + c)));
+        }
+        // The estimate moves and the auxiliary model carries force.
+        QVERIFY(collector.records.back().updating.parameters !=
+                collector.records.front().updating.parameters);
+        QVERIFY(std::abs(collector.records.back().updating.auxiliaryForce) > 0.0);
+    }
+
+    void recordWithoutUpdatingWritesNan() {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath(QStringLiteral("steps.csv")).toStdString();
+        RunLayout layout;
+        layout.dofNames = {"D"};
+        layout.updating = UpdatingInfo{"S", "UKF", {"k0"}, {"m", "kN"}};
+        StepCsvWriter writer(path, layout);
+        StepRecord r;
+        r.u = r.v = r.a = Eigen::VectorXd::Constant(1, 0.5);
+        writer.onStep(r);
+        r.hasUpdating = true;
+        r.updating.parameters = {1.25};
+        r.updating.stddev = {0.125};
+        r.updating.auxiliaryForce = -2.0;
+        r.updating.fitError = 0.03;
+        writer.onStep(r);
+        QVERIFY(writer.finish());
+        const auto lines = readLines(path);
+        QCOMPARE(lines.size(), std::size_t(3));
+        QCOMPARE(lines[0], std::string("time_s,ag_m_s2,D_u_m,D_v_m_s,D_a_m_s2,param_k0,std_k0,"
+                                       "aux_force_kN,fit_error"));
+        QCOMPARE(lines[1], std::string("0,0,0.5,0.5,0.5,nan,nan,nan,nan"));
+        QCOMPARE(lines[2], std::string("0,0,0.5,0.5,0.5,1.25,0.125,-2,0.03"));
+    }
+
     void flushesEveryThousandRows() {
         QTemporaryDir dir;
         const std::string path = dir.filePath(QStringLiteral("steps.csv")).toStdString();

@@ -184,6 +184,45 @@ private slots:
         QVERIFY(test->approveUpdate(q.id));
         QCOMPARE(*twin->parameter("k0"), q.proposed.at("k0"));
     }
+
+    void bridgeBearingBFollowsTheReference()
+    {
+        TestConfig cfg = loadConfigFile(std::string(HSMU_SOURCE_DIR) +
+                                        "/resources/presets/paper-bridge.json");
+        cfg.analysis.duration = 15.0;
+        ComparisonOptions o;
+        o.element = "Bearing B";
+        const ComparisonResult r = runComparison(cfg, o);
+        qInfo("bridge B: initial %.4f / %.4f, updated %.4f / %.4f", r.initialMetric.forceNrmse,
+              r.initialMetric.displacementNrmse, r.updatedMetric.forceNrmse,
+              r.updatedMetric.displacementNrmse);
+        QCOMPARE(r.dof, std::string("Deck"));
+        QVERIFY(r.updatedMetric.forceNrmse < 0.25 * r.initialMetric.forceNrmse);
+        QVERIFY(r.updatedMetric.displacementNrmse < 0.25 * r.initialMetric.displacementNrmse);
+    }
+
+    void bilinearNelderMeadTriggersAtThresholdsAndImprovesTheTwin()
+    {
+        TestConfig cfg = loadConfigFile(std::string(HSMU_SOURCE_DIR) +
+                                        "/resources/presets/paper-bilinear-nelder-mead.json");
+        auto test = buildHybridTest(cfg);
+        QVERIFY(test->prepare());
+        while (test->step() == HybridTest::StepResult::Advanced) {
+        }
+        int triggers = 0;
+        for (const auto& a : test->alarms())
+            triggers += a.kind == AlarmKind::ModelUpdate &&
+                        a.message.find("Nelder-Mead trigger") != std::string::npos;
+        QVERIFY(triggers >= 3);
+        // Fits happen only when the model error exceeded the threshold, at least 1 s apart:
+        // far fewer than the 30 s record's steps.
+        QVERIFY(triggers <= 30);
+        QVERIFY(test->updater()->reporter().appliedCount() >= 1);
+        const double fy = *test->structure().element("Twin")->law()->parameter("fy");
+        QVERIFY(fy != 2.8); // the twin took fitted values
+        const auto& b = test->updater()->identifier().bounds().at("fy");
+        QVERIFY(fy >= b.lower && fy <= b.upper);
+    }
 };
 
 QTEST_APPLESS_MAIN(TestOnlineUpdating)
