@@ -1,6 +1,7 @@
 #include "gui/Launcher.h"
 
 #include "gui/app/ConsoleCommand.h"
+#include "gui/cli/CompareCommand.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/MaterialCommand.h"
 #include "gui/cli/RunCommand.h"
@@ -45,25 +46,37 @@ bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names
     return false;
 }
 
+/// A headless subcommand that draws nothing unless --plots is given.
+int runHeadless(const QString& sub, const QStringList& arguments) {
+    if (sub == QLatin1String("run"))
+        return RunCommand::exec(arguments);
+    if (sub == QLatin1String("compare"))
+        return CompareCommand::exec(arguments);
+    return MaterialCommand::exec(arguments);
+}
+
 int dispatch(int argc, char** argv) {
     const QString sub = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
-    const bool run = sub == QLatin1String("run");
-    if (sub == QLatin1String("material") || (run && !hasArgument(argc, argv, {"--plots"}))) {
+    const bool plotting = sub == QLatin1String("run") || sub == QLatin1String("compare");
+    const bool plots = plotting && hasArgument(argc, argv, {"--plots"});
+    if (sub == QLatin1String("material") || (plotting && !plots)) {
         QCoreApplication app(argc, argv); // no windowing system needed
         describeApplication();
         installTranslator(app);
-        return run ? RunCommand::exec(app.arguments()) : MaterialCommand::exec(app.arguments());
+        return runHeadless(sub, app.arguments());
     }
-    if (!run && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
+    if (!plotting && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
         QTextStream(stderr) << "hsmu: unknown subcommand '" << sub
-                            << "' (available: run, material; without one the console opens)"
+                            << "' (available: run, compare, material; without one the console "
+                               "opens)"
                             << Qt::endl;
         return 1;
     }
     if (headless()) {
         // Plots and window grabs render offscreen; an interactive window needs a display.
         const bool offscreenOk =
-            run || hasArgument(argc, argv, {"--screenshot", "-h", "--help", "-v", "--version"});
+            plotting ||
+            hasArgument(argc, argv, {"--screenshot", "-h", "--help", "-v", "--version"});
         if (!offscreenOk) {
             QTextStream(stderr) << "hsmu: no display (DISPLAY / WAYLAND_DISPLAY are not set); "
                                    "use `hsmu run CONFIG --out DIR` to run a test headless"
@@ -75,8 +88,8 @@ int dispatch(int argc, char** argv) {
     QApplication app(argc, argv);
     describeApplication();
     installTranslator(app);
-    if (run)
-        return RunCommand::exec(app.arguments());
+    if (plotting)
+        return runHeadless(sub, app.arguments());
     return ConsoleCommand::exec(app.arguments());
 }
 

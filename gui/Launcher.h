@@ -2,6 +2,7 @@
 // Launcher: the `hsmu` executable's entry point. The first argument selects what runs:
 //   hsmu run CONFIG ...       RunCommand (a QCoreApplication; with --plots a QApplication,
 //                             on the "offscreen" platform when no display is set)
+//   hsmu compare CONFIG ...   CompareCommand (like run: --plots needs a QApplication)
 //   hsmu material ...         MaterialCommand (QCoreApplication)
 //   hsmu [options]            ConsoleCommand (the window; without a display only --help,
 //                             --version and --screenshot, rendered offscreen, are possible)

@@ -37,7 +37,10 @@ nlohmann::json lastOf(const std::vector<std::string>& names,
 ParameterValues trueParameters(const TestConfig& cfg, const std::vector<std::string>& names) {
     ParameterValues out;
     for (const ElementSpec& e : cfg.elements) {
-        if (e.name != cfg.updating.specimen || !e.experimental)
+        // Only a specimen whose true law is the identified model's law has comparable values
+        // (a Bouc-Wen specimen identified as bilinear has no "true" bilinear k0).
+        if (e.name != cfg.updating.specimen || !e.experimental ||
+            e.specimen.trueMaterial.law != e.material.law)
             continue;
         for (const auto& name : names)
             if (auto it = e.specimen.trueMaterial.params.find(name);

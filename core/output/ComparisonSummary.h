@@ -8,7 +8,8 @@
 //   parameters [names, the identifier's order],
 //   final_parameters {name: value}, final_standard_deviations {name: value}
 //     (the updated run's last estimate, the law's own units: normalized for Bouc-Wen),
-//   true_parameters {name: value} (the updating specimen's own law, where it has the name),
+//   true_parameters {name: value} (the updating specimen's own law, where it has the name and
+//     is the identified model's law; empty otherwise),
 //   applied_updates, steps (the updated run's committed steps),
 //   alarms {reference, initial, updated: ["t = ... s: message", ...]}.
 // NRMSE = RMS(x - x_ref) / RMS(x_ref) and peak error = max |x - x_ref| against the reference
@@ -26,7 +27,8 @@ namespace hsmu {
 
 nlohmann::json makeComparisonSummary(const ComparisonResult& result, const TestConfig& cfg);
 
-/// The updating specimen's true law parameters for the identified names (empty if none).
+/// The updating specimen's true law parameters for the identified names; empty if its true
+/// law is not the law of its model (the one identified).
 ParameterValues trueParameters(const TestConfig& cfg, const std::vector<std::string>& names);
 
 /// makeComparisonSummary written with 2-space indentation. Throws std::runtime_error naming

@@ -24,7 +24,8 @@ int ConsoleCommand::exec(const QStringList& arguments) {
     QCommandLineParser p;
     p.setApplicationDescription(
         tr("HSMU Console: hybrid simulation with online model updating.\n"
-           "Subcommands: run CONFIG --out DIR ..., material --law ... (see hsmu run --help)."));
+           "Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --law "
+           "... (see hsmu run --help, hsmu compare --help, docs/cli.md)."));
     p.addHelpOption();
     p.addVersionOption();
     const QCommandLineOption startOpt(QStringLiteral("start"),
@@ -54,7 +55,7 @@ int ConsoleCommand::exec(const QStringList& arguments) {
         return 0;
     }
     if (!p.positionalArguments().isEmpty())
-        return fail(tr("unknown subcommand '%1' (expected run or material)")
+        return fail(tr("unknown subcommand '%1' (expected run, compare or material)")
                         .arg(p.positionalArguments().front()));
     bool ok = true;
     const double after = p.value(shotAfterOpt).toDouble(&ok);

@@ -1,13 +1,23 @@
 #pragma once
 // RunCommand: `hsmu run CONFIG --out DIR [--ground-motion FILE] [--scale S] [--dt DT]
-// [--duration T] [--allow-unstable] [--plots]`: a hybrid test headless, start to end.
+// [--duration T] [--allow-unstable] [--plots] [--controller builtin|tcp://HOST:PORT]
+// [--token T] [--reconnect N] [--approval manual|approveAll|rejectAll]`: a hybrid test
+// headless, start to end (options: RunOptions; reference: docs/cli.md).
+//
+// --controller tcp://HOST:PORT runs the specimens on an actuator controller over the link
+// (comms::makeControlFactory; 2 s connect timeout); --reconnect N is the headless retry
+// policy: when the test holds on a control fault (lost link, timeout) it resumes, which
+// reconnects, up to N times in a row (the count restarts once the test advances again), each
+// attempt printed on stderr. --approval overrides the configuration's updating.approval.
 //
 // Progress on stderr (about every 5 %: percent, test time, steps/s); a short summary on stdout
-// (steps, times, peak displacement per DOF, peak force per element, alarms). Outputs in DIR:
-// summary.json, steps.csv and with --plots the PNGs of PlotExporter.
-// Exit codes: 0 finished; 1 an error (bad configuration or record, the test cannot start,
-// e.g. unstable); 2 the test went to a safe hold (limit or fault): the reason is printed and
-// the outputs hold every committed step.
+// (RunReport). Outputs in DIR: summary.json (RunSummary), steps.csv (StepCsvWriter; with
+// updating also the identified parameters, their std, the auxiliary force and the fit error)
+// and with --plots the PNGs of PlotExporter.
+// Exit codes: 0 finished; 1 an error (bad arguments, configuration, record or controller
+// address, the test cannot start, e.g. unstable or no controller listening); 2 the test went
+// to a safe hold (limit or fault, retries exhausted): the reason is printed and the outputs
+// hold every committed step.
 // Thread rules: main thread; --plots needs a QApplication (see Launcher).
 
 #include <QCoreApplication>

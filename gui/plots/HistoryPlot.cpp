@@ -44,6 +44,15 @@ void HistoryPlot::showGroundAcceleration() {
         {{tr("Ground acceleration"), [](const StepRecord& r) { return r.groundAcceleration; }}});
 }
 
+void HistoryPlot::addSeries(const QString& name, const QVector<double>& time,
+                            const QVector<double>& value) {
+    QCPGraph* g = addGraph(xAxis, yAxis);
+    g->setName(name);
+    g->setPen(PlotStyle::seriesPen(graphCount() - 1));
+    g->setData(time, value);
+    legend->setVisible(true);
+}
+
 void HistoryPlot::appendRecords(const std::vector<StepRecord>& records) {
     for (std::size_t i = 0; i < m_channels.size(); ++i) {
         QVector<double> t, y;

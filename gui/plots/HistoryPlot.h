@@ -1,7 +1,8 @@
 #pragma once
 // HistoryPlot: time histories of quantities taken from StepRecords (one graph per channel),
 // e.g. the displacement of every DOF [m] or the ground acceleration [m/s^2]. Used live by the
-// console and offscreen by `hsmu run --plots`.
+// console and offscreen by `hsmu run --plots`; with addSeries() also precomputed histories
+// (`hsmu compare --plots`: the three runs overlaid).
 // Thread rules: GUI thread only.
 
 #include "core/output/RunLayout.h"
@@ -30,6 +31,10 @@ public:
     void showDisplacements(const RunLayout& layout);
     /// One channel: the ground acceleration [m/s^2].
     void showGroundAcceleration();
+
+    /// Add a graph of precomputed samples (time [s], value), e.g. one run of `hsmu compare`;
+    /// it is not fed by appendRecords() and is removed by the next setChannels().
+    void addSeries(const QString& name, const QVector<double>& time, const QVector<double>& value);
 
     void appendRecords(const std::vector<StepRecord>& records);
     void clearData();

@@ -2,6 +2,8 @@
 
 #include "gui/plots/PlotStyle.h"
 
+#include <algorithm>
+
 namespace hsmu::gui {
 
 HysteresisPlot::HysteresisPlot(QWidget* parent) : QCustomPlot(parent) {
@@ -44,19 +46,37 @@ void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int
     }
     if (!elements.empty()) {
         const ElementInfo& first = layout.elements[std::size_t(elements.front())];
-        const bool rotational = first.units.deformation == "rad";
-        const QString def = QString::fromStdString(first.units.deformation);
-        const QString force = QString::fromStdString(first.units.force);
-        xAxis->setLabel(rotational ? tr("Rotation [%1]").arg(def)
-                                   : tr("Deformation [%1]").arg(def));
-        yAxis->setLabel(rotational ? tr("Moment [%1]").arg(force) : tr("Force [%1]").arg(force));
-        PlotStyle::setTitle(*this,
-                            elements.size() == 1
-                                ? tr("Hysteresis of %1").arg(QString::fromStdString(first.name))
-                                : tr("Hysteresis: specimen and numerical twins"));
+        setAxes(elements.size() == 1
+                    ? tr("Hysteresis of %1").arg(QString::fromStdString(first.name))
+                    : tr("Hysteresis: specimen and numerical twins"),
+                QString::fromStdString(first.units.deformation),
+                QString::fromStdString(first.units.force));
     }
     legend->setVisible(!m_series.empty());
     replot();
+}
+
+void HysteresisPlot::setAxes(const QString& title, const QString& deformationUnit,
+                             const QString& forceUnit) {
+    const bool rotational = deformationUnit == QLatin1String("rad");
+    xAxis->setLabel(rotational ? tr("Rotation [%1]").arg(deformationUnit)
+                               : tr("Deformation [%1]").arg(deformationUnit));
+    yAxis->setLabel(rotational ? tr("Moment [%1]").arg(forceUnit)
+                               : tr("Force [%1]").arg(forceUnit));
+    PlotStyle::setTitle(*this, title);
+}
+
+void HysteresisPlot::addCurve(const QString& name, const QVector<double>& deformation,
+                              const QVector<double>& force) {
+    const int index = plottableCount();
+    auto* curve = new QCPCurve(xAxis, yAxis);
+    curve->setName(name);
+    curve->setPen(PlotStyle::seriesPen(index));
+    QVector<double> t(std::min(deformation.size(), force.size()));
+    for (qsizetype i = 0; i < t.size(); ++i)
+        t[i] = double(i);
+    curve->setData(t, deformation.mid(0, t.size()), force.mid(0, t.size()));
+    legend->setVisible(true);
 }
 
 void HysteresisPlot::appendRecords(const std::vector<StepRecord>& records) {

@@ -3,7 +3,8 @@
 // loop is not a function of deformation). The first element is drawn as the reference (for a
 // specimen: its *measured* loop), the others are overlaid (e.g. its numerical twins).
 // Axis labels carry the element units (RunLayout). Used live by the console and offscreen by
-// `hsmu run --plots`.
+// `hsmu run --plots`; with setAxes() / addCurve() also for precomputed loops (`hsmu compare
+// --plots`: reference, initial and updated runs of one element overlaid).
 // Thread rules: GUI thread only, like every widget.
 
 #include "core/output/RunLayout.h"
@@ -26,6 +27,12 @@ public:
 
     /// Replace the curves by one per element index in `elements` (indices into layout).
     void showElements(const RunLayout& layout, const std::vector<int>& elements);
+    /// Title and axis labels for loops in these units ("rad" labels rotation and moment).
+    void setAxes(const QString& title, const QString& deformationUnit, const QString& forceUnit);
+    /// Add a curve of precomputed points (not fed by appendRecords(); removed by the next
+    /// showElements()). Its pen is the next series colour.
+    void addCurve(const QString& name, const QVector<double>& deformation,
+                  const QVector<double>& force);
     /// Append one point per curve per record.
     void appendRecords(const std::vector<StepRecord>& records);
     /// Remove every point, keep the curves.

@@ -1,5 +1,8 @@
-// The hsmu executable as a user runs it: `hsmu run` (outputs, exit codes 0 / 1 / 2, messages)
-// and `hsmu material`. Each case starts the real binary with QProcess.
+// The hsmu executable as a user runs it: `hsmu run` (outputs, exit codes 0 / 1 / 2, messages,
+// online model updating in the outputs, a controller over TCP) and `hsmu material`. Each case
+// starts the real binary with QProcess; the TCP cases also a real hsmu-controller.
+
+#include "CliTestSupport.h"
 
 #include <QColor>
 #include <QDir>
@@ -13,45 +16,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+using namespace clitest;
+
 namespace {
-
-struct Result {
-    int exitCode = -1;
-    QString out, err;
-};
-
-Result hsmu(const QStringList& args, int timeoutMs = 120000) {
-    QProcess p;
-    p.start(QStringLiteral(HSMU_EXE), args);
-    Result r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timeout");
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2; // -2: crashed
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
-
-QJsonObject readJson(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(f.readAll()).object();
-}
-
-QStringList readLines(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
-        return {};
-    QStringList lines = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'));
-    if (!lines.isEmpty() && lines.back().isEmpty())
-        lines.removeLast();
-    return lines;
-}
 
 QJsonObject preset(const QString& id) {
     return readJson(QStringLiteral(HSMU_SOURCE_DIR "/resources/presets/") + id +
@@ -64,10 +31,6 @@ QString writeJson(const QTemporaryDir& dir, const QString& name, const QJsonObje
     f.open(QIODevice::WriteOnly);
     f.write(QJsonDocument(doc).toJson());
     return path;
-}
-
-QString report(const Result& r) {
-    return QStringLiteral("exit %1\nstdout:\n%2\nstderr:\n%3").arg(r.exitCode).arg(r.out, r.err);
 }
 
 } // namespace
@@ -117,7 +80,8 @@ private slots:
 
         const QStringList pngs = {
             QStringLiteral("hysteresis_Element_1.png"), QStringLiteral("hysteresis_Element_2.png"),
-            QStringLiteral("displacement.png"), QStringLiteral("ground_motion.png")};
+            QStringLiteral("displacement.png"), QStringLiteral("ground_motion.png"),
+            QStringLiteral("parameters.png")}; // updating runs: the identified parameters
         for (const QString& name : pngs) {
             QImage image(out + QLatin1Char('/') + name);
             QVERIFY2(!image.isNull(), qPrintable(name));

@@ -85,6 +85,9 @@ private slots:
         QCOMPARE(trueParameters(cfg, {"alpha", "nope"}).size(), std::size_t(1));
         cfg.updating.specimen = "Element 2"; // not experimental
         QVERIFY(trueParameters(cfg, {"alpha"}).empty());
+        cfg.updating.specimen = "Element 1";
+        cfg.elements[0].material.law = "bilinear"; // another law: nothing comparable
+        QVERIFY(trueParameters(cfg, {"k0"}).empty());
     }
 
     void writesTheFile() {

@@ -1,0 +1,24 @@
+#pragma once
+// ComparisonTable: the table `hsmu compare` prints on stdout: one row per run (initial,
+// updated) with the compared element's force NRMSE [%] and peak error [force unit] and the
+// compared DOF's displacement NRMSE [%] and peak error [m], all against the reference run,
+// aligned in columns; then the updated run's final parameters (± std, and the true value
+// where known).
+// Thread rules: pure functions, any thread.
+
+#include "core/test/ComparisonProtocol.h"
+#include "core/updating/ParameterSet.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+namespace hsmu::gui {
+
+class ComparisonTable {
+    Q_DECLARE_TR_FUNCTIONS(ComparisonTable)
+public:
+    /// The whole text, lines ending in '\n'.
+    static QString format(const ComparisonResult& result, const ParameterValues& truth);
+};
+
+} // namespace hsmu::gui

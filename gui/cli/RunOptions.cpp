@@ -1,0 +1,83 @@
+#include "gui/cli/RunOptions.h"
+
+#include "gui/cli/ConsoleStreams.h"
+#include "gui/cli/OverrideOptions.h"
+
+#include <QCommandLineParser>
+#include <QTextStream>
+
+namespace hsmu::gui {
+
+std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOptions& options) {
+    QCommandLineParser p;
+    p.setApplicationDescription(tr("Run a hybrid test headless."));
+    p.addHelpOption();
+    p.addPositionalArgument(QStringLiteral("run"), tr("The subcommand."));
+    p.addPositionalArgument(QStringLiteral("config"), tr("Configuration file or preset name."));
+    const QCommandLineOption outOpt(QStringLiteral("out"), tr("Output directory."),
+                                    QStringLiteral("dir"));
+    const OverrideOptions overrides;
+    const QCommandLineOption unstableOpt(QStringLiteral("allow-unstable"),
+                                         tr("Run an explicit scheme past its stability limit."));
+    const QCommandLineOption plotsOpt(QStringLiteral("plots"), tr("Write PNG plots."));
+    const QCommandLineOption controllerOpt(
+        QStringLiteral("controller"),
+        tr("Actuator controller: builtin (in-process virtual specimens, the default) or "
+           "tcp://HOST:PORT (hsmu-controller or a lab controller)."),
+        QStringLiteral("address"), QStringLiteral("builtin"));
+    const QCommandLineOption tokenOpt(
+        QStringLiteral("token"), tr("Shared secret for the controller."), QStringLiteral("token"));
+    const QCommandLineOption reconnectOpt(
+        QStringLiteral("reconnect"),
+        tr("After a lost link or a timeout, resume (and reconnect) up to N times before giving "
+           "up (default 0: hold and exit 2)."),
+        QStringLiteral("n"), QStringLiteral("0"));
+    const QCommandLineOption approvalOpt(
+        QStringLiteral("approval"),
+        tr("Decision on update proposals of the onApproval policy: manual, approveAll or "
+           "rejectAll (default: the configuration's)."),
+        QStringLiteral("mode"));
+    p.addOption(outOpt);
+    overrides.addTo(p);
+    p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, reconnectOpt, approvalOpt});
+    if (!p.parse(arguments))
+        return p.errorText();
+    if (p.isSet(QStringLiteral("help"))) {
+        ConsoleStreams::out() << p.helpText();
+        return QString();
+    }
+    const QStringList pos = p.positionalArguments();
+    if (pos.size() != 2)
+        return tr("expected exactly one CONFIG (a file or a preset name)");
+    options.config = pos[1];
+    options.outDir = p.value(outOpt);
+    if (options.outDir.isEmpty())
+        return tr("missing --out DIR");
+    options.plots = p.isSet(plotsOpt);
+    options.overrides.allowUnstable = p.isSet(unstableOpt);
+    if (auto e = overrides.read(p, options.overrides))
+        return e;
+
+    std::string error;
+    const auto address = comms::LinkAddress::parse(p.value(controllerOpt).toStdString(), &error);
+    if (!address)
+        return tr("--controller: %1").arg(QString::fromStdString(error));
+    options.controller = *address;
+    options.token = p.value(tokenOpt);
+    bool ok = false;
+    options.reconnect = p.value(reconnectOpt).toInt(&ok);
+    if (!ok || options.reconnect < 0)
+        return tr("--reconnect: expected a whole number >= 0, found '%1'")
+            .arg(p.value(reconnectOpt));
+    if (p.isSet(approvalOpt)) {
+        options.approval = p.value(approvalOpt);
+        const QStringList modes{QStringLiteral("manual"), QStringLiteral("approveAll"),
+                                QStringLiteral("rejectAll")};
+        if (!modes.contains(options.approval))
+            return tr("--approval: expected manual, approveAll or rejectAll, found '%1'")
+                .arg(options.approval);
+    }
+    return std::nullopt;
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,36 @@
+#pragma once
+// RunOptions: the arguments of `hsmu run` (see RunCommand.h and docs/cli.md):
+//   CONFIG --out DIR [--ground-motion FILE] [--scale S] [--dt DT] [--duration T]
+//   [--allow-unstable] [--plots] [--controller builtin|tcp://HOST:PORT] [--token T]
+//   [--reconnect N] [--approval manual|approveAll|rejectAll]
+// Thread rules: plain data; parse() on the main thread.
+
+#include "comms/LinkAddress.h"
+#include "gui/ConfigOverrides.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace hsmu::gui {
+
+struct RunOptions {
+    Q_DECLARE_TR_FUNCTIONS(RunOptions)
+public:
+    QString config; ///< file or preset name
+    QString outDir;
+    bool plots = false;
+    ConfigOverrides overrides;
+    comms::LinkAddress controller; ///< builtin (in-process virtual specimens) or tcp
+    QString token;                 ///< shared secret for the controller's hello
+    int reconnect = 0;             ///< headless resumes after a link fault (per fault)
+    QString approval;              ///< "" keeps the configuration's updating.approval
+
+    /// Parse the process arguments (program, "run", ...). nullopt: options filled; an empty
+    /// string: --help was printed; otherwise the message of what is wrong.
+    static std::optional<QString> parse(const QStringList& arguments, RunOptions& options);
+};
+
+} // namespace hsmu::gui

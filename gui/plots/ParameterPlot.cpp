@@ -1,0 +1,108 @@
+#include "gui/plots/ParameterPlot.h"
+
+#include "gui/plots/PlotStyle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hsmu::gui {
+
+ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
+    PlotStyle::apply(*this);
+    xAxis->setLabel(tr("Time [s]"));
+    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+
+    const QPen valuePen = PlotStyle::seriesPen(0);
+    QColor band = valuePen.color();
+    band.setAlpha(55);
+    QColor edge = valuePen.color();
+    edge.setAlpha(90);
+
+    m_lower = addGraph(xAxis, yAxis);
+    m_lower->setPen(QPen(edge, 0));
+    m_lower->removeFromLegend();
+    m_upper = addGraph(xAxis, yAxis);
+    m_upper->setPen(QPen(edge, 0));
+    m_upper->setBrush(band);
+    m_upper->setChannelFillGraph(m_lower);
+    m_upper->setName(tr("± %1σ").arg(kBandSigmas));
+    m_value = addGraph(xAxis, yAxis);
+    m_value->setPen(valuePen);
+    m_value->setName(tr("estimate"));
+    m_true = addGraph(xAxis, yAxis);
+    QPen truePen(QColor(60, 60, 60), 1.2, Qt::DashLine);
+    m_true->setPen(truePen);
+    m_true->setName(tr("true value"));
+    m_true->removeFromLegend();
+    legend->setVisible(true);
+    QFont small = font();
+    small.setPointSizeF(std::max(6.0, small.pointSizeF() - 1.5));
+    legend->setFont(small);
+}
+
+void ParameterPlot::showParameter(const QString& name, int index) {
+    m_index = index;
+    clearData();
+    setTrueValue(qQNaN());
+    yAxis->setLabel(name);
+    PlotStyle::setTitle(*this, name);
+    replot();
+}
+
+void ParameterPlot::setTrueValue(double value) {
+    m_trueValue = value;
+    if (std::isfinite(value))
+        m_true->addToLegend();
+    else
+        m_true->removeFromLegend();
+    updateTrueLine();
+}
+
+void ParameterPlot::updateTrueLine() {
+    m_true->data()->clear();
+    if (!std::isfinite(m_trueValue) || m_value->data()->isEmpty())
+        return;
+    const double t0 = m_value->data()->constBegin()->key;
+    const double t1 = (m_value->data()->constEnd() - 1)->key;
+    m_true->addData({t0, t1}, {m_trueValue, m_trueValue}, true);
+}
+
+void ParameterPlot::appendRecords(const std::vector<StepRecord>& records) {
+    QVector<double> t, v, s;
+    const auto i = std::size_t(m_index);
+    for (const StepRecord& r : records) {
+        if (!r.hasUpdating || i >= r.updating.parameters.size())
+            continue;
+        t.push_back(r.time);
+        v.push_back(r.updating.parameters[i]);
+        s.push_back(i < r.updating.stddev.size() ? r.updating.stddev[i] : 0.0);
+    }
+    appendSamples(t, v, s);
+}
+
+void ParameterPlot::appendSamples(const QVector<double>& time, const QVector<double>& value,
+                                  const QVector<double>& sigma) {
+    const qsizetype n = std::min({time.size(), value.size(), sigma.size()});
+    QVector<double> t(time.begin(), time.begin() + n), v(value.begin(), value.begin() + n);
+    QVector<double> lo(n), hi(n);
+    for (qsizetype k = 0; k < n; ++k) {
+        lo[k] = v[k] - kBandSigmas * sigma[k];
+        hi[k] = v[k] + kBandSigmas * sigma[k];
+    }
+    m_value->addData(t, v, true);
+    m_lower->addData(t, lo, true);
+    m_upper->addData(t, hi, true);
+    updateTrueLine();
+}
+
+void ParameterPlot::clearData() {
+    for (QCPGraph* g : {m_value, m_lower, m_upper, m_true})
+        g->data()->clear();
+}
+
+void ParameterPlot::refresh() {
+    PlotStyle::rescaleWithMargin(*this);
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,51 @@
+#pragma once
+// ParameterPlot: the history of one identified parameter with its uncertainty, like the
+// paper's Figure 10: the estimate theta(t) as a line, the band theta ± kBandSigmas sigma(t)
+// shaded, and optionally the true value (the virtual specimen's own parameter) as a dashed
+// line. Values in the law's own units (normalized by uRef / fRef for Bouc-Wen).
+// Two feeds: StepRecords (the console: parameter `index` of StepRecord::updating) or
+// precomputed samples (hsmu compare).
+// Thread rules: GUI thread only, like every widget.
+
+#include "core/test/StepRecord.h"
+
+#include <qcustomplot.h>
+
+#include <vector>
+
+namespace hsmu::gui {
+
+class ParameterPlot : public QCustomPlot {
+    Q_OBJECT
+public:
+    static constexpr double kBandSigmas = 2.0;
+
+    explicit ParameterPlot(QWidget* parent = nullptr);
+
+    /// Show parameter `name`, which is entry `index` of StepRecord::updating.parameters and
+    /// .stddev; clears the data and the true value.
+    void showParameter(const QString& name, int index = 0);
+    /// Draw the true value as a dashed line over the data's time span; NaN hides it.
+    void setTrueValue(double value);
+
+    /// Append one point per record that carries updating data.
+    void appendRecords(const std::vector<StepRecord>& records);
+    /// Append samples: time [s], estimate and standard deviation (equal lengths).
+    void appendSamples(const QVector<double>& time, const QVector<double>& value,
+                       const QVector<double>& sigma);
+    void clearData();
+    /// Rescale to the data (with a margin) and replot (queued).
+    void refresh();
+
+private:
+    void updateTrueLine();
+
+    int m_index = 0;
+    double m_trueValue = qQNaN();
+    QCPGraph* m_value = nullptr;
+    QCPGraph* m_upper = nullptr;
+    QCPGraph* m_lower = nullptr;
+    QCPGraph* m_true = nullptr;
+};
+
+} // namespace hsmu::gui
