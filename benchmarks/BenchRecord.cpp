@@ -1,0 +1,105 @@
+// Recording benchmarks (issue 4 target on the 2-core dev machine):
+//   RecordWriter::onStep, amortized over buffering, extend + write + H5Fflush   <= 2 us
+//   bytes per 1000 steps of the condition-3 frame (2 DOFs, 3 elements, 7 parameters)
+// The rows are real StepRecords of the preset paper-condition-3 (UKF updating), replayed
+// into a writer on a temporary file so that only the recording is timed.
+// Run: build/bin/hsmu_bench --benchmark_filter=Record
+
+#include "core/config/ConfigLoader.h"
+#include "core/config/TestFactory.h"
+#include "core/output/RunLayout.h"
+#include "core/record/RecordWriter.h"
+#include "core/test/HybridTest.h"
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace hsmu;
+
+class Keep final : public StepObserver {
+public:
+    void onStep(const StepRecord& r) override { records.push_back(r); }
+    std::vector<StepRecord> records;
+};
+
+struct Recorded {
+    TestConfig cfg;
+    RunLayout layout;
+    std::vector<StepRecord> records;
+};
+
+/// The 30 s preset run's StepRecords (3001 rows).
+const Recorded& recorded() {
+    static const Recorded r = [] {
+        Recorded out;
+        out.cfg = loadConfigFile(std::string(HSMU_SOURCE_DIR) +
+                                 "/resources/presets/paper-condition-3.json");
+        auto test = buildHybridTest(out.cfg);
+        Keep keep;
+        test->addObserver(&keep);
+        test->prepare();
+        while (test->step() == HybridTest::StepResult::Advanced) {
+        }
+        out.layout = RunLayout::of(*test);
+        out.records = std::move(keep.records);
+        return out;
+    }();
+    return r;
+}
+
+RecordStart startOf(const TestConfig& cfg) {
+    RecordStart s;
+    s.configuration = cfg.raw.dump();
+    s.configName = cfg.name;
+    s.dt = cfg.analysis.dt;
+    return s;
+}
+
+std::string tempRecordPath() {
+    return (std::filesystem::temp_directory_path() / "hsmu_bench_record.h5").string();
+}
+
+void bmRecordStep(benchmark::State& state) {
+    const Recorded& r = recorded();
+    const std::string path = tempRecordPath();
+    {
+        RecordWriter writer(path, r.layout, startOf(r.cfg));
+        std::size_t i = 0;
+        for (auto _ : state) {
+            writer.onStep(r.records[i]);
+            if (++i == r.records.size())
+                i = 0;
+        }
+        writer.finish();
+        if (!writer.ok())
+            state.SkipWithError(writer.error().c_str());
+    }
+    state.SetItemsProcessed(state.iterations());
+    std::filesystem::remove(path);
+}
+BENCHMARK(bmRecordStep)->MinTime(2.0);
+
+void bmRecordBytesPer1000Steps(benchmark::State& state) {
+    const Recorded& r = recorded();
+    const std::string path = tempRecordPath();
+    const int steps = int(state.range(0));
+    double bytes = 0.0;
+    for (auto _ : state) {
+        RecordWriter writer(path, r.layout, startOf(r.cfg));
+        for (int k = 0; k < steps; ++k)
+            writer.onStep(r.records[std::size_t(k) % r.records.size()]);
+        writer.finish();
+        bytes = double(std::filesystem::file_size(path));
+    }
+    state.counters["bytes_per_1000_steps"] = bytes / steps * 1000.0;
+    state.counters["file_bytes"] = bytes;
+    std::filesystem::remove(path);
+}
+BENCHMARK(bmRecordBytesPer1000Steps)->Arg(3001)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+} // namespace

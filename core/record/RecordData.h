@@ -1,0 +1,56 @@
+#pragma once
+// RecordData: the content of a run record (docs/recording.md) as RecordReader returns it.
+// Row i of every per-step array is the committed step steps[i] (row 0: the initial state);
+// N = rows(). Matrices are N x nDof / N x nElem / N x nParam, columns in `layout` order.
+// Units: those of the structure (presets: m, s, kN, rad, kN m); element units per column in
+// layout.elements[j].units; identified parameters in the law's own units (normalized by
+// uRef / fRef for Bouc-Wen).
+
+#include "core/output/RunLayout.h"
+#include "core/test/Alarm.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct RecordMetadata {
+    int schemaVersion = 0;
+    std::string program;        ///< "HSMU Console"
+    std::string programVersion; ///< hsmu::versionString() of the writer
+    std::string startTime;      ///< ISO 8601 UTC, e.g. "2024-05-01T12:00:00Z"
+    std::string configuration;  ///< the configuration document as JSON text
+    std::string configName;     ///< TestConfig::name
+    std::string operatorNotes;
+    double dt = 0.0; ///< integration step [s]
+};
+
+struct RecordData {
+    RecordMetadata meta;
+    RunLayout layout; ///< names, types, units; layout.updating set when updating ran
+
+    std::vector<int> steps;             ///< [N] step index
+    Eigen::VectorXd time;               ///< [N] [s]
+    Eigen::VectorXd groundAcceleration; ///< [N] [m/s^2]
+    Eigen::MatrixXd u, v, a;            ///< [N x nDof] [m], [m/s], [m/s^2]
+    Eigen::MatrixXd deformation;        ///< [N x nElem] element units (measured for specimens)
+    Eigen::MatrixXd force;              ///< [N x nElem] element units (measured for specimens)
+    Eigen::MatrixXd commanded;          ///< [N x nElem] NaN for numerical elements
+
+    // Online model updating (empty unless layout.updating).
+    Eigen::MatrixXd parameters;        ///< [N x nParam] estimate
+    Eigen::MatrixXd stddev;            ///< [N x nParam] standard deviations (0: none)
+    Eigen::VectorXd auxiliaryForce;    ///< [N] specimen force units
+    Eigen::VectorXd fitError;          ///< [N] inspector's normalized RMS error [-]
+    std::vector<int> appliedUpdates;   ///< [N] cumulative updates applied to targets
+    std::vector<int> updatesThisStep;  ///< [N]
+    std::vector<int> pendingProposals; ///< [N]
+
+    std::vector<Alarm> alarms; ///< in the order raised
+
+    int rows() const { return int(steps.size()); }
+};
+
+} // namespace hsmu

@@ -1,0 +1,322 @@
+#include "core/record/RecordReader.h"
+
+#include "core/record/Hdf5Util.h"
+#include "core/record/RecordSchema.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace hsmu {
+
+namespace {
+
+AlarmSeverity severityFromName(const std::string& s) {
+    for (auto v : {AlarmSeverity::Info, AlarmSeverity::Warning, AlarmSeverity::Critical})
+        if (s == alarmSeverityName(v))
+            return v;
+    return AlarmSeverity::Warning;
+}
+
+AlarmKind kindFromName(const std::string& s) {
+    for (int i = 0; i <= int(AlarmKind::ModelUpdate); ++i)
+        if (s == alarmKindName(AlarmKind(i)))
+            return AlarmKind(i);
+    return AlarmKind::ElementFault;
+}
+
+/// A per-step dataset opened for reading: rows x cols (cols < 0: one-dimensional).
+struct Column {
+    h5::Id dset;
+    int cols = -1;
+    std::string name;
+
+    hsize_t rows() const {
+        const h5::Id space(H5Dget_space(dset.get()));
+        hsize_t dims[2] = {0, 0};
+        if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0)
+            return 0;
+        return dims[0];
+    }
+
+    /// Rows [r0, r1) into out (row-major), memory type mem.
+    void read(hsize_t r0, hsize_t r1, hid_t mem, void* out, const std::string& where) const {
+        if (r1 <= r0 || cols == 0)
+            return;
+        const int rank = cols >= 0 ? 2 : 1;
+        const h5::Id fileSpace = h5::check(H5Dget_space(dset.get()), where, "no dataspace");
+        const hsize_t start[2] = {r0, 0};
+        const hsize_t count[2] = {r1 - r0, hsize_t(cols > 0 ? cols : 0)};
+        h5::check(
+            H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+            where, "damaged or truncated record (cannot select rows of " + name + ")");
+        const h5::Id memSpace =
+            h5::check(H5Screate_simple(rank, count, nullptr), where, "no dataspace");
+        h5::check(H5Dread(dset.get(), mem, memSpace.get(), fileSpace.get(), H5P_DEFAULT, out),
+                  where, "damaged or truncated record (cannot read " + name + ")");
+    }
+};
+
+} // namespace
+
+struct RecordReader::Impl {
+    std::string path;
+    h5::Id file;
+    bool swmr = false;
+    RecordData data;
+    Column step, time, ag, u, v, a, def, force, cmd, par, sd, aux, fit, applied, thisStep, pending;
+    Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
+
+    void open();
+    void readMetadata();
+    Column column(const char* name, int cols);
+    std::vector<Column*> stepColumns();
+    int readNewRows();
+    void readNewAlarms();
+};
+
+void RecordReader::Impl::open() {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw RecordError(path + ": cannot be opened (no such file)");
+    if (H5Fis_hdf5(path.c_str()) <= 0)
+        throw RecordError(path + ": not an HSMU record (not an HDF5 file)");
+    hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+    swmr = id >= 0;
+    if (id < 0) // an older format (not written by us) or a damaged file
+        id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    file = h5::check(id, path, "damaged or truncated record (HDF5 cannot open it)");
+}
+
+Column RecordReader::Impl::column(const char* name, int cols) {
+    Column c;
+    c.name = name;
+    c.cols = cols;
+    c.dset = h5::check(H5Dopen2(file.get(), name, H5P_DEFAULT), path,
+                       std::string("damaged or truncated record (no dataset ") + name + ")");
+    const h5::Id space = h5::check(H5Dget_space(c.dset.get()), path, "no dataspace");
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    hsize_t dims[2] = {0, 0};
+    if (rank != (cols >= 0 ? 2 : 1) || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 ||
+        (cols >= 0 && dims[1] != hsize_t(cols)))
+        throw RecordError(path + ": damaged record (" + name + " has an unexpected shape)");
+    return c;
+}
+
+std::vector<Column*> RecordReader::Impl::stepColumns() {
+    std::vector<Column*> c = {&step, &time, &ag, &u, &v, &a, &def, &force, &cmd};
+    if (data.layout.updating)
+        for (Column* x : {&par, &sd, &aux, &fit, &applied, &thisStep, &pending})
+            c.push_back(x);
+    return c;
+}
+
+void RecordReader::Impl::readMetadata() {
+    const hid_t root = file.get();
+    const std::string& w = path;
+    if (!h5::hasAttr(root, "schema_version"))
+        throw RecordError(path + ": not an HSMU record (no schema_version attribute)");
+    RecordMetadata& m = data.meta;
+    m.schemaVersion = h5::readIntAttr(root, "schema_version", w);
+    if (m.schemaVersion > recordschema::kVersion)
+        throw RecordError(path + ": schema version " + std::to_string(m.schemaVersion) +
+                          " is newer than this program's " +
+                          std::to_string(recordschema::kVersion));
+    m.program = h5::readStringAttr(root, "program", w);
+    m.programVersion = h5::readStringAttr(root, "program_version", w);
+    m.startTime = h5::readStringAttr(root, "start_time", w);
+    m.configuration = h5::readStringAttr(root, "configuration", w);
+    m.configName = h5::readStringAttr(root, "config_name", w);
+    m.operatorNotes = h5::readStringAttr(root, "operator_notes", w);
+    m.dt = h5::readDoubleAttr(root, "dt", w);
+
+    RunLayout& layout = data.layout;
+    {
+        const h5::Id g =
+            h5::check(H5Gopen2(root, "dofs", H5P_DEFAULT), w, "damaged record (no group /dofs)");
+        layout.dofNames = h5::readStringsAttr(g.get(), "names", w);
+    }
+    const int nDof = int(layout.dofNames.size());
+    {
+        const h5::Id g = h5::check(H5Gopen2(root, "elements", H5P_DEFAULT), w,
+                                   "damaged record (no group /elements)");
+        const auto names = h5::readStringsAttr(g.get(), "names", w);
+        const auto types = h5::readStringsAttr(g.get(), "types", w);
+        const auto experimental = h5::readIntsAttr(g.get(), "experimental", w);
+        const auto nonlinear = h5::readIntsAttr(g.get(), "nonlinear", w);
+        def = column("/elements/deformation", int(names.size()));
+        force = column("/elements/force", int(names.size()));
+        const auto defUnits = h5::readStringsAttr(def.dset.get(), "units", w);
+        const auto forceUnits = h5::readStringsAttr(force.dset.get(), "units", w);
+        const std::size_t n = names.size();
+        if (types.size() != n || experimental.size() != n || nonlinear.size() != n ||
+            defUnits.size() != n || forceUnits.size() != n)
+            throw RecordError(path + ": damaged record (element attributes disagree)");
+        for (std::size_t i = 0; i < n; ++i)
+            layout.elements.push_back({names[i],
+                                       types[i],
+                                       experimental[i] != 0,
+                                       nonlinear[i] != 0,
+                                       {defUnits[i], forceUnits[i]}});
+    }
+    const int nElem = int(layout.elements.size());
+    step = column("/steps/step", -1);
+    time = column("/steps/time", -1);
+    ag = column("/steps/ground_acceleration", -1);
+    u = column("/dofs/u", nDof);
+    v = column("/dofs/v", nDof);
+    a = column("/dofs/a", nDof);
+    cmd = column("/elements/commanded", nElem);
+    if (H5Lexists(root, "updating", H5P_DEFAULT) > 0) {
+        const h5::Id g = h5::check(H5Gopen2(root, "updating", H5P_DEFAULT), w,
+                                   "damaged record (no group /updating)");
+        UpdatingInfo info;
+        info.specimen = h5::readStringAttr(g.get(), "specimen", w);
+        info.method = h5::readStringAttr(g.get(), "method", w);
+        info.parameters = h5::readStringsAttr(g.get(), "names", w);
+        info.units.deformation = h5::readStringAttr(g.get(), "deformation_units", w);
+        info.units.force = h5::readStringAttr(g.get(), "force_units", w);
+        const int nPar = int(info.parameters.size());
+        layout.updating = std::move(info);
+        par = column("/updating/parameters", nPar);
+        sd = column("/updating/stddev", nPar);
+        aux = column("/updating/auxiliary_force", -1);
+        fit = column("/updating/fit_error", -1);
+        applied = column("/updating/applied_updates", -1);
+        thisStep = column("/updating/updates_this_step", -1);
+        pending = column("/updating/pending_proposals", -1);
+    }
+    alarmTime = column("/alarms/time", -1);
+    alarmStep = column("/alarms/step", -1);
+    alarmSeverity = column("/alarms/severity", -1);
+    alarmKind = column("/alarms/kind", -1);
+    alarmMessage = column("/alarms/message", -1);
+}
+
+namespace {
+
+void appendRows(Eigen::VectorXd& out, const Column& c, hsize_t r0, hsize_t r1,
+                const std::string& w) {
+    out.conservativeResize(Eigen::Index(r1));
+    c.read(r0, r1, H5T_NATIVE_DOUBLE, out.data() + r0, w);
+}
+
+void appendRows(std::vector<int>& out, const Column& c, hsize_t r0, hsize_t r1,
+                const std::string& w) {
+    out.resize(r1);
+    c.read(r0, r1, H5T_NATIVE_INT, out.data() + r0, w);
+}
+
+void appendRows(Eigen::MatrixXd& out, const Column& c, hsize_t r0, hsize_t r1,
+                const std::string& w) {
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    RowMajor block(Eigen::Index(r1 - r0), c.cols);
+    c.read(r0, r1, H5T_NATIVE_DOUBLE, block.data(), w);
+    out.conservativeResize(Eigen::Index(r1), c.cols);
+    out.bottomRows(block.rows()) = block;
+}
+
+std::vector<std::string> readFixedStrings(const Column& c, hsize_t r0, hsize_t r1,
+                                          const std::string& w) {
+    const h5::Id type = h5::check(H5Dget_type(c.dset.get()), w, "damaged record (alarm type)");
+    const std::size_t size = H5Tget_size(type.get());
+    if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0 || size == 0)
+        throw RecordError(w + ": damaged record (" + c.name + " is not a fixed string)");
+    std::vector<char> buf(size * (r1 - r0));
+    c.read(r0, r1, type.get(), buf.data(), w);
+    std::vector<std::string> out;
+    for (hsize_t i = 0; i < r1 - r0; ++i) {
+        const char* s = buf.data() + i * size;
+        out.emplace_back(s, std::find(s, s + size, '\0'));
+    }
+    return out;
+}
+
+} // namespace
+
+int RecordReader::Impl::readNewRows() {
+    const auto columns = stepColumns();
+    hsize_t n = columns.front()->rows();
+    for (const Column* c : columns)
+        n = std::min(n, c->rows());
+    const hsize_t r0 = hsize_t(data.rows());
+    if (n <= r0)
+        return 0;
+    const std::string& w = path;
+    appendRows(data.steps, step, r0, n, w);
+    appendRows(data.time, time, r0, n, w);
+    appendRows(data.groundAcceleration, ag, r0, n, w);
+    appendRows(data.u, u, r0, n, w);
+    appendRows(data.v, v, r0, n, w);
+    appendRows(data.a, a, r0, n, w);
+    appendRows(data.deformation, def, r0, n, w);
+    appendRows(data.force, force, r0, n, w);
+    appendRows(data.commanded, cmd, r0, n, w);
+    if (data.layout.updating) {
+        appendRows(data.parameters, par, r0, n, w);
+        appendRows(data.stddev, sd, r0, n, w);
+        appendRows(data.auxiliaryForce, aux, r0, n, w);
+        appendRows(data.fitError, fit, r0, n, w);
+        appendRows(data.appliedUpdates, applied, r0, n, w);
+        appendRows(data.updatesThisStep, thisStep, r0, n, w);
+        appendRows(data.pendingProposals, pending, r0, n, w);
+    }
+    return int(n - r0);
+}
+
+void RecordReader::Impl::readNewAlarms() {
+    hsize_t n = alarmTime.rows();
+    for (const Column* c : {&alarmStep, &alarmSeverity, &alarmKind, &alarmMessage})
+        n = std::min(n, c->rows());
+    const hsize_t r0 = data.alarms.size();
+    if (n <= r0)
+        return;
+    std::vector<double> t(n - r0);
+    std::vector<int> s(n - r0);
+    alarmTime.read(r0, n, H5T_NATIVE_DOUBLE, t.data(), path);
+    alarmStep.read(r0, n, H5T_NATIVE_INT, s.data(), path);
+    const auto sev = readFixedStrings(alarmSeverity, r0, n, path);
+    const auto kind = readFixedStrings(alarmKind, r0, n, path);
+    const auto msg = readFixedStrings(alarmMessage, r0, n, path);
+    for (std::size_t i = 0; i < t.size(); ++i)
+        data.alarms.push_back(
+            {t[i], s[i], severityFromName(sev[i]), kindFromName(kind[i]), msg[i]});
+}
+
+RecordReader::RecordReader(const std::string& path) : m_d(std::make_unique<Impl>()) {
+    m_d->path = path;
+    const h5::QuietErrors quiet;
+    m_d->open();
+    m_d->readMetadata();
+    m_d->readNewRows();
+    m_d->readNewAlarms();
+}
+
+RecordReader::~RecordReader() = default;
+
+const RecordData& RecordReader::data() const {
+    return m_d->data;
+}
+const std::string& RecordReader::path() const {
+    return m_d->path;
+}
+bool RecordReader::swmr() const {
+    return m_d->swmr;
+}
+
+int RecordReader::refresh() {
+    const h5::QuietErrors quiet;
+    if (m_d->swmr) {
+        auto columns = m_d->stepColumns();
+        for (Column* c : {&m_d->alarmTime, &m_d->alarmStep, &m_d->alarmSeverity, &m_d->alarmKind,
+                          &m_d->alarmMessage})
+            columns.push_back(c);
+        for (Column* c : columns)
+            h5::check(H5Drefresh(c->dset.get()), m_d->path,
+                      "damaged or truncated record (cannot refresh " + c->name + ")");
+    }
+    const int added = m_d->readNewRows();
+    m_d->readNewAlarms();
+    return added;
+}
+
+} // namespace hsmu

@@ -1,0 +1,18 @@
+#pragma once
+// RecordSchema: names shared by RecordWriter and RecordReader (docs/recording.md is the
+// reference for every group, dataset, shape, unit and attribute).
+
+namespace hsmu::recordschema {
+
+/// Root attribute "schema_version"; a reader refuses files with a larger value.
+inline constexpr int kVersion = 1;
+/// Rows per HDF5 chunk of every per-step dataset.
+inline constexpr int kChunkRows = 1024;
+/// Rows per chunk of the alarm datasets (few rows, long strings).
+inline constexpr int kAlarmChunkRows = 32;
+/// Fixed string lengths (bytes, null-padded UTF-8) of the alarm datasets; longer texts are cut.
+inline constexpr int kSeverityChars = 16;
+inline constexpr int kKindChars = 32;
+inline constexpr int kMessageChars = 512;
+
+} // namespace hsmu::recordschema

@@ -1,0 +1,377 @@
+#include "core/record/RecordWriter.h"
+
+#include "core/Version.h"
+#include "core/record/Hdf5Util.h"
+#include "core/record/RecordSchema.h"
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+
+namespace hsmu {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+const double kNaN = std::nan("");
+
+std::string isoUtcNow() {
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+/// Copies text into a fixed field of `chars` bytes, cut at a UTF-8 character boundary.
+void putFixed(std::vector<char>& out, const std::string& text, int chars) {
+    std::size_t n = std::min(text.size(), std::size_t(chars));
+    if (n < text.size())
+        while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80)
+            --n;
+    const std::size_t at = out.size();
+    out.resize(at + std::size_t(chars), '\0');
+    text.copy(out.data() + at, n);
+}
+
+void pushVector(std::vector<double>& out, const Eigen::VectorXd& x, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i)
+        out.push_back(Eigen::Index(i) < x.size() ? x[Eigen::Index(i)] : kNaN);
+}
+
+void pushValues(std::vector<double>& out, const std::vector<double>& x, std::size_t n, bool ok) {
+    for (std::size_t i = 0; i < n; ++i)
+        out.push_back(ok && i < x.size() ? x[i] : kNaN);
+}
+
+} // namespace
+
+struct RecordWriter::Impl {
+    std::string path;
+    RunLayout layout;
+    std::size_t nDof = 0, nElem = 0, nPar = 0;
+    h5::Id file;
+    h5::Id severityType, kindType, messageType;
+    h5::Extendible step, time, ag, u, v, a, def, force, cmd;
+    h5::Extendible par, sd, aux, fit, applied, thisStep, pending;
+    h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
+
+    std::vector<int> bStep, bApplied, bThisStep, bPending;
+    std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit;
+    std::vector<Alarm> bAlarms;
+
+    const std::vector<Alarm>* tracked = nullptr;
+    std::size_t alarmsSeen = 0;
+    int received = 0, flushed = 0, alarmsFlushed = 0;
+    bool failed = false, closed = false;
+    std::string error;
+    Clock::time_point lastFlush = Clock::now();
+
+    void create(const RecordStart& start);
+    void clearBuffers();
+    void writeBuffers();
+    bool flush();
+};
+
+void RecordWriter::Impl::create(const RecordStart& start) {
+    const std::string& w = path;
+    const h5::Id fapl = h5::check(H5Pcreate(H5P_FILE_ACCESS), w, "cannot make a property list");
+    h5::check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST), w,
+              "cannot select the latest file format");
+    file = h5::check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), w,
+                     "cannot be created");
+    const hid_t root = file.get();
+    h5::writeAttr(root, "schema_version", recordschema::kVersion, w);
+    h5::writeAttr(root, "program", std::string("HSMU Console"), w);
+    h5::writeAttr(root, "program_version", std::string(versionString()), w);
+    h5::writeAttr(root, "start_time", isoUtcNow(), w);
+    h5::writeAttr(root, "configuration", start.configuration, w);
+    h5::writeAttr(root, "config_name", start.configName, w);
+    h5::writeAttr(root, "operator_notes", start.operatorNotes, w);
+    h5::writeAttr(root, "dt", start.dt, w);
+
+    const auto group = [&](const char* name) {
+        return h5::check(H5Gcreate2(root, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,
+                         std::string("cannot create group ") + name);
+    };
+    const auto units = [&](const h5::Extendible& d, const std::string& unit) {
+        h5::writeAttr(d.id(), "units", unit, w);
+    };
+    const hid_t f64 = H5T_NATIVE_DOUBLE, i32 = H5T_NATIVE_INT;
+    // Memory and file types are both native here: the file keeps the machine's (little
+    // endian IEEE) representation, which every reader converts as needed.
+    {
+        const h5::Id g = group("steps");
+        step = h5::Extendible(g.get(), "step", i32, -1, w);
+        time = h5::Extendible(g.get(), "time", f64, -1, w);
+        ag = h5::Extendible(g.get(), "ground_acceleration", f64, -1, w);
+        units(time, "s");
+        units(ag, "m/s^2");
+    }
+    {
+        const h5::Id g = group("dofs");
+        h5::writeAttr(g.get(), "names", layout.dofNames, w);
+        const int n = int(nDof);
+        u = h5::Extendible(g.get(), "u", f64, n, w);
+        v = h5::Extendible(g.get(), "v", f64, n, w);
+        a = h5::Extendible(g.get(), "a", f64, n, w);
+        for (auto* d : {&u, &v, &a})
+            h5::writeAttr(d->id(), "names", layout.dofNames, w);
+        units(u, "m");
+        units(v, "m/s");
+        units(a, "m/s^2");
+    }
+    {
+        const h5::Id g = group("elements");
+        std::vector<std::string> names, types, defUnits, forceUnits;
+        std::vector<int> experimental, nonlinear;
+        for (const ElementInfo& e : layout.elements) {
+            names.push_back(e.name);
+            types.push_back(e.type);
+            defUnits.push_back(e.units.deformation);
+            forceUnits.push_back(e.units.force);
+            experimental.push_back(e.experimental ? 1 : 0);
+            nonlinear.push_back(e.nonlinear ? 1 : 0);
+        }
+        h5::writeAttr(g.get(), "names", names, w);
+        h5::writeAttr(g.get(), "types", types, w);
+        h5::writeAttr(g.get(), "experimental", experimental, w);
+        h5::writeAttr(g.get(), "nonlinear", nonlinear, w);
+        const int n = int(nElem);
+        def = h5::Extendible(g.get(), "deformation", f64, n, w);
+        force = h5::Extendible(g.get(), "force", f64, n, w);
+        cmd = h5::Extendible(g.get(), "commanded", f64, n, w);
+        for (auto* d : {&def, &force, &cmd})
+            h5::writeAttr(d->id(), "names", names, w);
+        h5::writeAttr(def.id(), "units", defUnits, w);
+        h5::writeAttr(force.id(), "units", forceUnits, w);
+        h5::writeAttr(cmd.id(), "units", defUnits, w);
+    }
+    if (layout.updating) {
+        const UpdatingInfo& info = *layout.updating;
+        const h5::Id g = group("updating");
+        h5::writeAttr(g.get(), "specimen", info.specimen, w);
+        h5::writeAttr(g.get(), "method", info.method, w);
+        h5::writeAttr(g.get(), "names", info.parameters, w);
+        h5::writeAttr(g.get(), "deformation_units", info.units.deformation, w);
+        h5::writeAttr(g.get(), "force_units", info.units.force, w);
+        par = h5::Extendible(g.get(), "parameters", f64, int(nPar), w);
+        sd = h5::Extendible(g.get(), "stddev", f64, int(nPar), w);
+        h5::writeAttr(par.id(), "names", info.parameters, w);
+        h5::writeAttr(sd.id(), "names", info.parameters, w);
+        aux = h5::Extendible(g.get(), "auxiliary_force", f64, -1, w);
+        units(aux, info.units.force);
+        fit = h5::Extendible(g.get(), "fit_error", f64, -1, w);
+        units(fit, "1");
+        applied = h5::Extendible(g.get(), "applied_updates", i32, -1, w);
+        thisStep = h5::Extendible(g.get(), "updates_this_step", i32, -1, w);
+        pending = h5::Extendible(g.get(), "pending_proposals", i32, -1, w);
+    }
+    {
+        const h5::Id g = group("alarms");
+        severityType = h5::fixedStringType(recordschema::kSeverityChars);
+        kindType = h5::fixedStringType(recordschema::kKindChars);
+        messageType = h5::fixedStringType(recordschema::kMessageChars);
+        alarmTime = h5::Extendible(g.get(), "time", f64, -1, w, recordschema::kAlarmChunkRows);
+        units(alarmTime, "s");
+        alarmStep = h5::Extendible(g.get(), "step", i32, -1, w, recordschema::kAlarmChunkRows);
+        alarmSeverity = h5::Extendible(g.get(), "severity", severityType.get(), -1, w,
+                                       recordschema::kAlarmChunkRows);
+        alarmKind =
+            h5::Extendible(g.get(), "kind", kindType.get(), -1, w, recordschema::kAlarmChunkRows);
+        alarmMessage = h5::Extendible(g.get(), "message", messageType.get(), -1, w,
+                                      recordschema::kAlarmChunkRows);
+    }
+    h5::check(H5Fflush(root, H5F_SCOPE_GLOBAL), w, "cannot be flushed");
+    h5::check(H5Fstart_swmr_write(root), w, "cannot start SWMR writing");
+}
+
+void RecordWriter::Impl::clearBuffers() {
+    for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending})
+        b->clear();
+    for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit})
+        b->clear();
+    bAlarms.clear();
+}
+
+void RecordWriter::Impl::writeBuffers() {
+    const hsize_t n = bTime.size();
+    if (n > 0) {
+        step.append(bStep.data(), n);
+        time.append(bTime.data(), n);
+        ag.append(bAg.data(), n);
+        u.append(bU.data(), n);
+        v.append(bV.data(), n);
+        a.append(bA.data(), n);
+        def.append(bDef.data(), n);
+        force.append(bForce.data(), n);
+        cmd.append(bCmd.data(), n);
+        if (layout.updating) {
+            par.append(bPar.data(), n);
+            sd.append(bSd.data(), n);
+            aux.append(bAux.data(), n);
+            fit.append(bFit.data(), n);
+            applied.append(bApplied.data(), n);
+            thisStep.append(bThisStep.data(), n);
+            pending.append(bPending.data(), n);
+        }
+    }
+    if (!bAlarms.empty()) {
+        std::vector<double> t;
+        std::vector<int> s;
+        std::vector<char> sev, kind, msg;
+        for (const Alarm& al : bAlarms) {
+            t.push_back(al.time);
+            s.push_back(al.step);
+            putFixed(sev, alarmSeverityName(al.severity), recordschema::kSeverityChars);
+            putFixed(kind, alarmKindName(al.kind), recordschema::kKindChars);
+            putFixed(msg, al.message, recordschema::kMessageChars);
+        }
+        const hsize_t m = bAlarms.size();
+        alarmTime.append(t.data(), m);
+        alarmStep.append(s.data(), m);
+        alarmSeverity.append(sev.data(), m);
+        alarmKind.append(kind.data(), m);
+        alarmMessage.append(msg.data(), m);
+    }
+    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), path, "cannot be flushed");
+    flushed += int(n);
+    alarmsFlushed += int(bAlarms.size());
+}
+
+bool RecordWriter::Impl::flush() {
+    lastFlush = Clock::now();
+    if (failed || closed)
+        return !failed;
+    if (tracked && tracked->size() > alarmsSeen) {
+        bAlarms.insert(bAlarms.end(), tracked->begin() + long(alarmsSeen), tracked->end());
+        alarmsSeen = tracked->size();
+    }
+    try {
+        const h5::QuietErrors quiet;
+        writeBuffers();
+    } catch (const std::exception& e) {
+        failed = true;
+        error = e.what();
+    }
+    clearBuffers();
+    return !failed;
+}
+
+RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
+                           const RecordStart& start)
+    : m_d(std::make_unique<Impl>()) {
+    m_d->path = path;
+    m_d->layout = layout;
+    m_d->nDof = layout.dofNames.size();
+    m_d->nElem = layout.elements.size();
+    m_d->nPar = layout.updating ? layout.updating->parameters.size() : 0;
+    const h5::QuietErrors quiet;
+    m_d->create(start); // on a throw, Impl's handles close the partial file
+}
+
+RecordWriter::~RecordWriter() {
+    finish();
+}
+
+void RecordWriter::onStep(const StepRecord& r) {
+    Impl& d = *m_d;
+    ++d.received;
+    if (d.failed || d.closed)
+        return;
+    d.bStep.push_back(r.step);
+    d.bTime.push_back(r.time);
+    d.bAg.push_back(r.groundAcceleration);
+    pushVector(d.bU, r.u, d.nDof);
+    pushVector(d.bV, r.v, d.nDof);
+    pushVector(d.bA, r.a, d.nDof);
+    for (std::size_t i = 0; i < d.nElem; ++i) {
+        const ElementSample s = i < r.elements.size() ? r.elements[i] : ElementSample{};
+        d.bDef.push_back(s.deformation);
+        d.bForce.push_back(s.force);
+        d.bCmd.push_back(s.commanded);
+    }
+    if (d.layout.updating) {
+        const UpdatingSample& up = r.updating;
+        pushValues(d.bPar, up.parameters, d.nPar, r.hasUpdating);
+        pushValues(d.bSd, up.stddev, d.nPar, r.hasUpdating);
+        d.bAux.push_back(r.hasUpdating ? up.auxiliaryForce : kNaN);
+        d.bFit.push_back(r.hasUpdating ? up.fitError : kNaN);
+        d.bApplied.push_back(r.hasUpdating ? up.appliedUpdates : 0);
+        d.bThisStep.push_back(r.hasUpdating ? up.updatesThisStep : 0);
+        d.bPending.push_back(r.hasUpdating ? up.pendingProposals : 0);
+    }
+    if (d.bTime.size() >= std::size_t(kMaxBufferedRows) ||
+        Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
+        d.flush();
+}
+
+void RecordWriter::writeAlarms(const std::vector<Alarm>& alarms) {
+    Impl& d = *m_d;
+    // A vector other than the tracked one: its own count is the number already seen.
+    if (alarms.size() > d.alarmsSeen) {
+        d.bAlarms.insert(d.bAlarms.end(), alarms.begin() + long(d.alarmsSeen), alarms.end());
+        d.alarmsSeen = alarms.size();
+    }
+}
+
+void RecordWriter::trackAlarms(const std::vector<Alarm>* alarms) {
+    m_d->tracked = alarms;
+}
+
+void RecordWriter::flushIfDue() {
+    const Impl& d = *m_d;
+    const bool pending =
+        !d.bTime.empty() || !d.bAlarms.empty() || (d.tracked && d.tracked->size() > d.alarmsSeen);
+    if (pending && Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
+        m_d->flush();
+}
+
+bool RecordWriter::flush() {
+    return m_d->flush();
+}
+
+bool RecordWriter::finish() {
+    Impl& d = *m_d;
+    if (d.closed)
+        return !d.failed;
+    d.flush();
+    d.closed = true;
+    const h5::QuietErrors quiet;
+    for (auto* x :
+         {&d.step,          &d.time,      &d.ag,          &d.u,       &d.v,         &d.a,
+          &d.def,           &d.force,     &d.cmd,         &d.par,     &d.sd,        &d.aux,
+          &d.fit,           &d.applied,   &d.thisStep,    &d.pending, &d.alarmTime, &d.alarmStep,
+          &d.alarmSeverity, &d.alarmKind, &d.alarmMessage})
+        *x = h5::Extendible();
+    d.severityType.reset();
+    d.kindType.reset();
+    d.messageType.reset();
+    if (d.file.valid() && H5Fclose(d.file.release()) < 0 && !d.failed) {
+        d.failed = true;
+        d.error = d.path + ": cannot be closed (HDF5: " + h5::errorText() + ")";
+    }
+    return !d.failed;
+}
+
+bool RecordWriter::ok() const {
+    return !m_d->failed;
+}
+const std::string& RecordWriter::error() const {
+    return m_d->error;
+}
+const std::string& RecordWriter::path() const {
+    return m_d->path;
+}
+int RecordWriter::rowsReceived() const {
+    return m_d->received;
+}
+int RecordWriter::rowsFlushed() const {
+    return m_d->flushed;
+}
+int RecordWriter::alarmsFlushed() const {
+    return m_d->alarmsFlushed;
+}
+
+} // namespace hsmu

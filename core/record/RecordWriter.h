@@ -1,0 +1,79 @@
+#pragma once
+// RecordWriter: a StepObserver writing the HDF5 record of a run (schema: docs/recording.md).
+//
+//   /                       attributes schema_version, program, program_version, start_time,
+//                           configuration (JSON text), config_name, operator_notes, dt [s]
+//   /steps/{step,time,ground_acceleration}            [N]
+//   /dofs/{u,v,a}                                     [N x nDof]   attribute names, units
+//   /elements/{deformation,force,commanded}           [N x nElem]  attributes names, units, ...
+//   /updating/{parameters,stddev} [N x nParam], {auxiliary_force,fit_error,applied_updates,
+//            updates_this_step,pending_proposals} [N]  (only with online model updating)
+//   /alarms/{time,step,severity,kind,message}         [M]
+//
+// The file is created with the latest format and switched to SWMR write mode, so another
+// process can read it (RecordReader, h5py with swmr=True) while the run goes on. Rows are
+// buffered in memory and appended (extend + write + H5Fflush) at least every kFlushInterval
+// seconds of wall time, every kMaxBufferedRows rows, and by flush() / finish() / the
+// destructor: a process killed mid-run leaves a file holding every step flushed before.
+// onStep() only checks the clock when rows are buffered; a test that holds (no steps) should
+// have its owner call flushIfDue() now and then so the held rows reach the file.
+// Alarms: trackAlarms(&test.alarms()) makes every onStep()/flush() append the alarms raised
+// since the last call; or call writeAlarms() yourself.
+// Errors: the constructor throws RecordError naming the file; a later write failure stops
+// recording (ok() false, error() says why) and never throws out of onStep().
+//
+// Thread rules: one thread (the test's); HDF5 is not used from any other thread by core.
+
+#include "core/output/RunLayout.h"
+#include "core/test/Alarm.h"
+#include "core/test/StepRecord.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct RecordStart {
+    std::string configuration; ///< JSON text (TestConfig::raw.dump())
+    std::string configName;    ///< TestConfig::name
+    std::string operatorNotes;
+    double dt = 0.0; ///< integration step [s]
+};
+
+class RecordWriter final : public StepObserver {
+public:
+    static constexpr double kFlushInterval = 0.5; ///< [s] of wall time
+    static constexpr int kMaxBufferedRows = 16384;
+
+    /// Creates (truncates) path. Throws RecordError naming the file on failure.
+    RecordWriter(const std::string& path, const RunLayout& layout, const RecordStart& start);
+    ~RecordWriter() override;
+    RecordWriter(const RecordWriter&) = delete;
+    RecordWriter& operator=(const RecordWriter&) = delete;
+
+    void onStep(const StepRecord& record) override;
+    /// Append alarms[k..] where k is the number already written (a growing vector).
+    void writeAlarms(const std::vector<Alarm>& alarms);
+    /// Not owned; must outlive every later onStep()/flush()/finish(); nullptr to stop.
+    void trackAlarms(const std::vector<Alarm>* alarms);
+    /// Flush if rows are buffered and kFlushInterval elapsed since the last flush.
+    void flushIfDue();
+    /// Write every buffered row and alarm, then H5Fflush. False if recording failed.
+    bool flush();
+    /// Flush and close the file. False if any write failed. Idempotent.
+    bool finish();
+
+    bool ok() const;
+    const std::string& error() const;
+    const std::string& path() const;
+    int rowsReceived() const; ///< onStep() calls so far
+    int rowsFlushed() const;  ///< rows on disk (after the last successful flush)
+    int alarmsFlushed() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_d;
+};
+
+} // namespace hsmu
