@@ -5,6 +5,7 @@
 #include "core/output/RunStatistics.h"
 #include "core/output/RunSummary.h"
 #include "core/output/StepCsvWriter.h"
+#include "core/record/RecordWriter.h"
 #include "core/test/HybridTest.h"
 #include "gui/PresetLibrary.h"
 #include "gui/cli/ConsoleStreams.h"
@@ -129,8 +130,19 @@ int RunCommand::exec(const QStringList& arguments) {
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
+    // Every run writes its HDF5 record (docs/recording.md), flushed at least twice a second.
+    std::unique_ptr<RecordWriter> record;
+    try {
+        RecordStart start{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
+        record = std::make_unique<RecordWriter>(
+            dir.filePath(QStringLiteral("record.h5")).toStdString(), layout, start);
+        record->trackAlarms(&test->alarms());
+    } catch (const std::exception& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
     RunStatistics stats(layout);
     RecordCollector records;
+    test->addObserver(record.get());
     test->addObserver(csv.get());
     test->addObserver(&stats);
     if (options.plots)
@@ -165,6 +177,11 @@ int RunCommand::exec(const QStringList& arguments) {
               << Qt::endl;
     }
     test->removeObserver(csv.get());
+    test->removeObserver(record.get());
+    if (!record->finish())
+        code = fail(tr("%1: the record could not be written: %2")
+                        .arg(QString::fromStdString(record->path()),
+                             QString::fromStdString(record->error())));
     if (!csv->finish())
         code = fail(tr("%1: write failed").arg(QString::fromStdString(csv->path())));
     try {

@@ -6,6 +6,8 @@
 
 #include <QJsonArray>
 #include <QTemporaryDir>
+
+#include "core/record/RecordReader.h"
 #include <QtTest>
 
 #include <cmath>
@@ -51,7 +53,7 @@ private slots:
         QVERIFY(dir.isValid());
         const QString out = dir.filePath(QStringLiteral("out"));
         const Result r =
-            hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
+            clitest::hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
                   QStringLiteral("--duration"), QStringLiteral("3"), QStringLiteral("--out"), out});
         QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
 
@@ -69,6 +71,19 @@ private slots:
         }
         QVERIFY(u.value(QStringLiteral("applied_updates")).toInt() > 0);
         QCOMPARE(u.value(QStringLiteral("pending_proposals")).toInt(-1), 0);
+
+        // The HDF5 record holds every step, and its final estimate is the summary's.
+        hsmu::RecordReader record((out + QStringLiteral("/record.h5")).toStdString());
+        QCOMPARE(record.rows(), 301);
+        const auto& rd = record.data();
+        QVERIFY(rd.layout.updating.has_value());
+        QCOMPARE(int(rd.parameters.cols()), 7);
+        for (int i = 0; i < 7; ++i) {
+            const QString name = QString::fromStdString(rd.layout.updating->parameters.at(i));
+            QVERIFY2(std::abs(rd.parameters(300, i) - params.value(name).toDouble()) <=
+                         1e-12 * std::abs(rd.parameters(300, i)),
+                     qPrintable(name));
+        }
         QVERIFY(std::isfinite(u.value(QStringLiteral("final_fit_error")).toDouble(NAN)));
         QVERIFY(readJson(out + QStringLiteral("/summary.json"))
                     .value(QStringLiteral("alarms"))
@@ -103,7 +118,7 @@ private slots:
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("out"));
         const Result r =
-            hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-2"),
+            clitest::hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-2"),
                   QStringLiteral("--duration"), QStringLiteral("1"), QStringLiteral("--out"), out});
         QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
         QVERIFY(
@@ -122,7 +137,7 @@ private slots:
                              QStringLiteral("--out"),      out};
             if (!mode.isEmpty())
                 args << QStringLiteral("--approval") << mode;
-            const Result r = hsmu(args);
+            const Result r = clitest::hsmu(args);
             return std::make_pair(r, updatingBlock(out));
         };
         const auto [manual, m] = run(QStringLiteral("manual"));
@@ -140,7 +155,7 @@ private slots:
         QCOMPARE(x.value(QStringLiteral("applied_updates")).toInt(-1), 0);
         QCOMPARE(x.value(QStringLiteral("pending_proposals")).toInt(-1), 0);
 
-        const Result bad = hsmu({QStringLiteral("run"), config, QStringLiteral("--out"),
+        const Result bad = clitest::hsmu({QStringLiteral("run"), config, QStringLiteral("--out"),
                                  dir.filePath(QStringLiteral("bad")), QStringLiteral("--approval"),
                                  QStringLiteral("sometimes")});
         QVERIFY2(bad.exitCode == 1, qPrintable(report(bad)));
