@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -48,76 +50,152 @@ double signOf(double v) {
     return static_cast<double>((v > 0.0) - (v < 0.0));
 }
 
+struct Degradation {
+    double a, nu, eta; // A, nu, eta of Eqs 4-6
+};
+
+Degradation degradationAt(const BoucWenParameters& p, double e) {
+    return {p.A0 - p.deltaA * e, 1.0 + p.deltaNu * e, 1.0 + p.deltaEta * e};
+}
+
 // Continuous dz/dx of Eq. 2 at (z, e) when x moves in direction dir.
 double slopeAt(const BoucWenParameters& p, const BoucWenState& s, double dir) {
-    const double a = p.A0 - p.deltaA * s.e;
-    const double nu = 1.0 + p.deltaNu * s.e;
-    const double eta = 1.0 + p.deltaEta * s.e;
+    const Degradation d = degradationAt(p, s.e);
     const double psi = p.gamma + p.beta * signOf(dir * s.z);
-    return (a - std::pow(std::abs(s.z), p.n) * psi * nu) / eta;
+    return (d.a - std::pow(std::abs(s.z), p.n) * psi * d.nu) / d.eta;
 }
 
 // Deformation (normalized) at which the elastic branch of the law at energy e reaches the
 // ultimate z; the scale that decides whether an increment is "large".
 double yieldDeformation(const BoucWenParameters& p, double e) {
-    const double a = p.A0 - p.deltaA * e;
-    const double nu = 1.0 + p.deltaNu * e;
-    const double eta = 1.0 + p.deltaEta * e;
-    if (a > 0.0 && nu > 0.0 && eta > 0.0) {
-        const double zu = std::pow(a / (nu * (p.beta + p.gamma)), 1.0 / p.n);
+    const Degradation d = degradationAt(p, e);
+    if (d.a > 0.0 && d.nu > 0.0 && d.eta > 0.0) {
+        const double zu = std::pow(d.a / (d.nu * (p.beta + p.gamma)), 1.0 / p.n);
         if (std::isfinite(zu) && zu > 0.0) {
-            return zu * eta / a;
+            return zu * d.eta / d.a;
         }
     }
     return BoucWen::ultimateZ(p) / p.A0;
 }
 
-// One backward-Euler step of Eqs 2-6 solved by Newton from the committed z.
-// Residual r(z) = z - z0 - dx Phi(z, e(z)) / eta(e(z)),  e(z) = e0 + (1 - alpha) k0 z dx.
-bool backwardEulerStep(const BoucWenParameters& p, BoucWenState& state, double dx, double zBound) {
-    const double c = (1.0 - p.alpha) * p.k0;
-    const double dedz = c * dx;
-    const double z0 = state.z;
-    const double e0 = state.e;
-    double z = z0;
-    for (int iteration = 0; iteration < kMaxNewtonIterations; ++iteration) {
-        const double e = e0 + c * z * dx;
-        const double a = p.A0 - p.deltaA * e;
-        const double nu = 1.0 + p.deltaNu * e;
-        const double eta = 1.0 + p.deltaEta * e;
+// True only if x <= scale q^(1/n) with q = num / den, decided without std::pow (most of the
+// cost of a step): q^r >= q / (q + r (1 - q)) for 0 < q <= 1 and 0 < r <= 1 (Bernoulli's
+// inequality (1/q)^r <= 1 + r (1/q - 1)) and q^r >= 1 for q >= 1, so with r = 1/n
+//   x (n num + max(den - num, 0)) <= scale n num
+// suffices. The margin of 1e-9 is far above the roundings of both sides and of std::pow (the
+// guards keep q and the terms in range). False (undecided) for n outside [1, 100].
+bool surelyBelowScaledRoot(double x, double scale, double num, double den, double n) {
+    if (!(n >= 1.0 && n <= 100.0 && num > 0.0 && den > 0.0 && num <= den * 1e300 &&
+          den <= num * 1e300)) {
+        return false;
+    }
+    const double rhs = scale * n * num * (1.0 - 1e-9);
+    return std::isfinite(rhs) && x * (n * num + std::max(den - num, 0.0)) <= rhs;
+}
+
+// The two limits of one integration from `from`: the longest increment tried without halving
+// (kMaxStepInYieldDeformations yield deformations at e0) and the largest |z| of an iterate
+// (kWildJumpFactor max(|z0|, ultimateZ)). Each costs a std::pow and is computed only when the
+// cheap test (surelyBelowScaledRoot, |z| <= kWildJumpFactor |z0|) cannot decide, which for
+// ordinary increments is never. Every decision is the one the exact value gives, so the
+// integration is unchanged.
+class StepLimits {
+public:
+    StepLimits(const BoucWenParameters& p, const BoucWenState& from)
+        : m_p(p), m_e0(from.e), m_absZ0(std::abs(from.z)) {}
+
+    // |dx| <= kMaxStepInYieldDeformations yieldDeformation(p, e0)?
+    bool withinMaxStep(double absDx) {
+        if (std::isnan(m_maxStep)) {
+            // yieldDeformation = zu eta / a with zu = (a / (nu (beta + gamma)))^(1/n).
+            const Degradation d = degradationAt(m_p, m_e0);
+            if (d.a > 0.0 && d.nu > 0.0 && d.eta > 0.0 &&
+                surelyBelowScaledRoot(absDx * d.a, kMaxStepInYieldDeformations * d.eta, d.a,
+                                      d.nu * (m_p.beta + m_p.gamma), m_p.n)) {
+                return true;
+            }
+            m_maxStep = kMaxStepInYieldDeformations * yieldDeformation(m_p, m_e0);
+        }
+        return absDx <= m_maxStep;
+    }
+
+    // |z| <= kWildJumpFactor max(|z0|, ultimateZ(p))?
+    bool withinZBound(double absZ) {
+        if (std::isnan(m_zBound)) {
+            if (absZ <= kWildJumpFactor * m_absZ0 ||
+                surelyBelowScaledRoot(absZ, kWildJumpFactor, m_p.A0, m_p.beta + m_p.gamma, m_p.n)) {
+                return true;
+            }
+            m_zBound = kWildJumpFactor * std::max(m_absZ0, BoucWen::ultimateZ(m_p));
+        }
+        return absZ <= m_zBound;
+    }
+
+private:
+    static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+    const BoucWenParameters& m_p;
+    double m_e0, m_absZ0;
+    double m_maxStep = kUnknown, m_zBound = kUnknown;
+};
+
+// One backward-Euler step of Eqs 2-6 from (z0, e0) solved by Newton from z0, with the residual
+//   r(z) = z - z0 - dx Phi(z, e(z)) / eta(e(z)),  e(z) = e0 + (1 - alpha) k0 z dx,
+// one iteration per iterate(), so that several can run interleaved (integrateStates()).
+class BackwardEuler {
+public:
+    enum class Progress { Iterating, Converged, Failed };
+
+    BackwardEuler(const BoucWenParameters& p, const BoucWenState& from, double dx)
+        : m_p(&p), m_dx(dx), m_c((1.0 - p.alpha) * p.k0), m_z0(from.z), m_e0(from.e), m_z(from.z) {}
+
+    Progress iterate(StepLimits& limits) {
+        const BoucWenParameters& p = *m_p;
+        const double dx = m_dx, z0 = m_z0, z = m_z;
+        const double dedz = m_c * dx;
+        const double e = m_e0 + m_c * z * dx;
+        const Degradation d = degradationAt(p, e);
         const double absZ = std::abs(z);
         const double psi = p.gamma + p.beta * signOf(dx * z);
         const double absZn = std::pow(absZ, p.n);
-        const double phi = a - absZn * psi * nu;
-        const double r = z - z0 - dx * phi / eta;
+        const double phi = d.a - absZn * psi * d.nu;
+        const double r = z - z0 - dx * phi / d.eta;
 
         // d|z|^n/dz = n |z|^(n-1) sgn z; taken as 0 at z = 0 (kink or cusp for n <= 1).
         const double dAbsZn = absZ > 0.0 ? p.n * absZn / absZ * signOf(z) : 0.0;
-        const double dPhi = -p.deltaA * dedz - dAbsZn * psi * nu - absZn * psi * p.deltaNu * dedz;
+        const double dPhi = -p.deltaA * dedz - dAbsZn * psi * d.nu - absZn * psi * p.deltaNu * dedz;
         const double dEta = p.deltaEta * dedz;
-        const double dr = 1.0 - dx * (dPhi * eta - phi * dEta) / (eta * eta);
+        const double dr = 1.0 - dx * (dPhi * d.eta - phi * dEta) / (d.eta * d.eta);
         const double delta = r / dr;
-        z -= delta;
-        if (!std::isfinite(z) || std::abs(z) > zBound) {
-            return false;
+        m_z = z - delta;
+        if (!std::isfinite(m_z) || !limits.withinZBound(std::abs(m_z))) {
+            return Progress::Failed;
         }
-        if (std::abs(delta) <= kRelativeTolerance * std::max(std::abs(z), std::abs(z0))) {
-            state.z = z;
-            state.e = e0 + c * z * dx;
-            return std::isfinite(state.e);
+        if (std::abs(delta) <= kRelativeTolerance * std::max(std::abs(m_z), std::abs(z0))) {
+            return std::isfinite(state().e) ? Progress::Converged : Progress::Failed;
         }
+        return ++m_iterations < kMaxNewtonIterations ? Progress::Iterating : Progress::Failed;
     }
-    return false;
-}
 
-// Integrates dx from state (updated in place). Increments longer than maxStep, and those where
-// Newton fails, are halved while levelsLeft > 0; the halves run sequentially.
+    BoucWenState state() const { return {m_z, m_e0 + m_c * m_z * m_dx}; }
+
+private:
+    const BoucWenParameters* m_p;
+    double m_dx, m_c, m_z0, m_e0, m_z;
+    int m_iterations = 0;
+};
+
+// Integrates dx from state (updated in place). Increments longer than the maximum step, and
+// those where Newton fails, are halved while levelsLeft > 0; the halves run sequentially.
 bool integrateSplit(const BoucWenParameters& p, BoucWenState& state, double dx, int levelsLeft,
-                    double maxStep, double zBound, int& subSteps) {
-    if (std::abs(dx) <= maxStep || levelsLeft <= 0) {
-        BoucWenState trial = state;
-        if (backwardEulerStep(p, trial, dx, zBound)) {
-            state = trial;
+                    StepLimits& limits, int& subSteps) {
+    if (levelsLeft <= 0 || limits.withinMaxStep(std::abs(dx))) {
+        BackwardEuler newton(p, state, dx);
+        auto progress = BackwardEuler::Progress::Iterating;
+        while (progress == BackwardEuler::Progress::Iterating) {
+            progress = newton.iterate(limits);
+        }
+        if (progress == BackwardEuler::Progress::Converged) {
+            state = newton.state();
             ++subSteps;
             return true;
         }
@@ -126,8 +204,27 @@ bool integrateSplit(const BoucWenParameters& p, BoucWenState& state, double dx, 
         }
     }
     const double half = 0.5 * dx;
-    return integrateSplit(p, state, half, levelsLeft - 1, maxStep, zBound, subSteps) &&
-           integrateSplit(p, state, half, levelsLeft - 1, maxStep, zBound, subSteps);
+    return integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps) &&
+           integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps);
+}
+
+bool finiteInput(const BoucWenState& from, double dx) {
+    return std::isfinite(dx) && std::isfinite(from.z) && std::isfinite(from.e);
+}
+
+// integrateState() for parameters known to be admissible.
+BoucWenIncrement integrateAdmissible(const BoucWenParameters& p, const BoucWenState& from,
+                                     double dx, int maxSubdivisions) {
+    if (!finiteInput(from, dx)) {
+        return {LawStatus::InvalidInput, from, 0.0, 0};
+    }
+    StepLimits limits(p, from);
+    BoucWenState end = from;
+    int subSteps = 0;
+    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, subSteps)) {
+        return {LawStatus::NoConvergence, from, 0.0, 0};
+    }
+    return {LawStatus::Ok, end, 0.0, subSteps};
 }
 
 } // namespace
@@ -141,25 +238,63 @@ BoucWen::BoucWen(const BoucWenParameters& p) : m_p(p) {
 
 BoucWenIncrement BoucWen::integrate(const BoucWenParameters& p, const BoucWenState& from, double dx,
                                     int maxSubdivisions) {
-    BoucWenIncrement result;
-    result.state = from;
-    result.subSteps = 0;
-    if (!std::isfinite(dx) || !std::isfinite(from.z) || !std::isfinite(from.e) || !admissible(p)) {
-        result.status = LawStatus::InvalidInput;
-        return result;
+    BoucWenIncrement result = integrateState(p, from, dx, maxSubdivisions);
+    if (result.status == LawStatus::Ok) {
+        result.dzdx = slopeAt(p, result.state, dx < 0.0 ? -1.0 : 1.0);
     }
-    const double maxStep = kMaxStepInYieldDeformations * yieldDeformation(p, from.e);
-    const double zBound = kWildJumpFactor * std::max(std::abs(from.z), ultimateZ(p));
-    BoucWenState end = from;
-    int subSteps = 0;
-    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), maxStep, zBound, subSteps)) {
-        result.status = LawStatus::NoConvergence;
-        return result;
-    }
-    result.state = end;
-    result.subSteps = subSteps;
-    result.dzdx = slopeAt(p, end, dx < 0.0 ? -1.0 : 1.0);
     return result;
+}
+
+BoucWenIncrement BoucWen::integrateState(const BoucWenParameters& p, const BoucWenState& from,
+                                         double dx, int maxSubdivisions) {
+    if (!admissible(p)) {
+        return {LawStatus::InvalidInput, from, 0.0, 0};
+    }
+    return integrateAdmissible(p, from, dx, maxSubdivisions);
+}
+
+void BoucWen::integrateStates(std::span<const BoucWenParameters> p,
+                              std::span<const BoucWenState> from, double dx,
+                              std::span<BoucWenIncrement> out) {
+    // Chunks of up to kInterleaved problems whose Newton iterations run round-robin. A problem
+    // that is not a single plain step (invalid, an increment to halve, a Newton failure) is
+    // left to integrateState(), which repeats the same decisions and iterations.
+    constexpr std::size_t kInterleaved = 8;
+    const std::size_t count = std::min({p.size(), from.size(), out.size()});
+    for (std::size_t first = 0; first < count; first += kInterleaved) {
+        std::array<std::optional<StepLimits>, kInterleaved> limits;
+        std::array<std::optional<BackwardEuler>, kInterleaved> newton;
+        const std::size_t size = std::min(kInterleaved, count - first);
+        std::size_t running = 0;
+        for (std::size_t k = 0; k < size; ++k) {
+            const std::size_t i = first + k;
+            if (admissible(p[i]) && finiteInput(from[i], dx)) {
+                limits[k].emplace(p[i], from[i]);
+                if (limits[k]->withinMaxStep(std::abs(dx))) {
+                    newton[k].emplace(p[i], from[i], dx);
+                    ++running;
+                    continue;
+                }
+            }
+            out[i] = integrateState(p[i], from[i], dx);
+        }
+        while (running > 0) {
+            for (std::size_t k = 0; k < size; ++k) {
+                using Progress = BackwardEuler::Progress;
+                const Progress progress =
+                    newton[k] ? newton[k]->iterate(*limits[k]) : Progress::Iterating;
+                if (progress == Progress::Iterating) {
+                    continue;
+                }
+                const std::size_t i = first + k;
+                out[i] = progress == Progress::Converged
+                             ? BoucWenIncrement{LawStatus::Ok, newton[k]->state(), 0.0, 1}
+                             : integrateState(p[i], from[i], dx);
+                newton[k].reset();
+                --running;
+            }
+        }
+    }
 }
 
 double BoucWen::ultimateZ(const BoucWenParameters& p) {
@@ -167,14 +302,10 @@ double BoucWen::ultimateZ(const BoucWenParameters& p) {
 }
 
 bool BoucWen::admissible(const BoucWenParameters& p) {
-    for (const auto& [name, field] : kFields) {
-        if (!std::isfinite(p.*field)) {
-            return false;
-        }
-    }
-    return p.k0 > 0.0 && p.alpha >= 0.0 && p.alpha <= 1.0 && p.n > 0.0 && p.A0 > 0.0 &&
-           p.beta + p.gamma > 0.0 && p.deltaA >= 0.0 && p.deltaNu >= 0.0 && p.deltaEta >= 0.0 &&
-           p.uRef > 0.0 && p.fRef > 0.0;
+    const auto finite = [&](const auto& field) { return std::isfinite(p.*field.second); };
+    return std::all_of(kFields.begin(), kFields.end(), finite) && p.k0 > 0.0 && p.alpha >= 0.0 &&
+           p.alpha <= 1.0 && p.n > 0.0 && p.A0 > 0.0 && p.beta + p.gamma > 0.0 && p.deltaA >= 0.0 &&
+           p.deltaNu >= 0.0 && p.deltaEta >= 0.0 && p.uRef > 0.0 && p.fRef > 0.0;
 }
 
 bool BoucWen::setParameters(const BoucWenParameters& p) {
@@ -183,7 +314,6 @@ bool BoucWen::setParameters(const BoucWenParameters& p) {
     }
     m_p = p;
     m_fCommitted = forceOf(m_uCommitted / m_p.uRef, m_committed);
-    m_kCommitted = tangentOf(m_committed, m_dirCommitted);
     revert();
     return true;
 }
@@ -192,7 +322,6 @@ void BoucWen::setCommittedState(const BoucWenState& s, double committedDeformati
     m_committed = s;
     m_uCommitted = committedDeformation;
     m_fCommitted = forceOf(m_uCommitted / m_p.uRef, m_committed);
-    m_kCommitted = tangentOf(m_committed, m_dirCommitted);
     revert();
 }
 
@@ -202,7 +331,8 @@ LawStatus BoucWen::setTrialDeformation(double u) {
         return LawStatus::InvalidInput;
     }
     const double dx = (u - m_uCommitted) / m_p.uRef;
-    const BoucWenIncrement inc = integrate(m_p, m_committed, dx);
+    // m_p is admissible (the constructor and setParameters check it).
+    const BoucWenIncrement inc = integrateAdmissible(m_p, m_committed, dx, kDefaultMaxSubdivisions);
     if (inc.status != LawStatus::Ok) {
         revert();
         return inc.status;
@@ -211,7 +341,6 @@ LawStatus BoucWen::setTrialDeformation(double u) {
     m_uTrial = u;
     m_dirTrial = dx > 0.0 ? 1.0 : (dx < 0.0 ? -1.0 : m_dirCommitted);
     m_fTrial = forceOf(u / m_p.uRef, m_trial);
-    m_kTrial = tangentOf(m_trial, m_dirTrial);
     return LawStatus::Ok;
 }
 
@@ -223,7 +352,6 @@ void BoucWen::commit() {
     m_committed = m_trial;
     m_uCommitted = m_uTrial;
     m_fCommitted = m_fTrial;
-    m_kCommitted = m_kTrial;
     m_dirCommitted = m_dirTrial;
 }
 
@@ -231,7 +359,6 @@ void BoucWen::revert() {
     m_trial = m_committed;
     m_uTrial = m_uCommitted;
     m_fTrial = m_fCommitted;
-    m_kTrial = m_kCommitted;
     m_dirTrial = m_dirCommitted;
 }
 
@@ -239,7 +366,6 @@ void BoucWen::revertToStart() {
     m_committed = BoucWenState{};
     m_uCommitted = 0.0;
     m_fCommitted = 0.0;
-    m_kCommitted = initialTangent();
     m_dirCommitted = 1.0;
     revert();
 }

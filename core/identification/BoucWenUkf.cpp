@@ -110,7 +110,8 @@ void BoucWenUkf::reset(const BoucWenParameters& initial) {
     for (int i = 0; i < kBoucWenUkfSize; ++i) {
         P(i, i) = initialVariance(i);
     }
-    m_ukf.init(x, P); // x is finite and P diagonal >= 0: cannot fail
+    m_ukf.init(x, P); // x is finite and P diagonal >= 0: cannot fail (and zeroes Q)
+    m_refreshNeeded = true;
     m_lastX = 0.0;
     m_x = 0.0;
 }
@@ -150,6 +151,7 @@ bool BoucWenUkf::setBounds(BoucWenUkfIndex index, double lower, double upper) {
         return false;
     }
     m_bounds = candidate;
+    m_refreshNeeded = true;
     const auto u = static_cast<std::size_t>(index);
     if (m_locked[u]) {
         m_lockedValue[u] = std::clamp(m_lockedValue[u], lower, upper);
@@ -169,6 +171,7 @@ bool BoucWenUkf::setLocked(BoucWenUkfIndex index, bool lock) {
     Eigen::VectorXd x = m_ukf.state();
     Eigen::MatrixXd P = m_ukf.covariance();
     m_locked[u] = lock;
+    m_refreshNeeded = true;
     P.row(i).setZero();
     P.col(i).setZero();
     if (lock) {
@@ -226,9 +229,9 @@ BoucWenUkfStep BoucWenUkf::result(UkfStatus status, double predicted) const {
     const Eigen::VectorXd& x = m_ukf.state();
     out.estimate = parametersOf(x);
     out.state = {x(kZ), x(kE)};
-    const Eigen::VectorXd sd = m_ukf.standardDeviations();
+    const Eigen::MatrixXd& P = m_ukf.covariance(); // as standardDeviations(), without a vector
     for (int i = 0; i < kBoucWenUkfSize; ++i) {
-        out.standardDeviation[static_cast<std::size_t>(i)] = sd(i);
+        out.standardDeviation[static_cast<std::size_t>(i)] = std::sqrt(std::max(P(i, i), 0.0));
     }
     const auto force = [&](const Eigen::VectorXd& s) {
         return m_fixed.fRef * (s(kAlpha) * s(kK0) * m_x + (1.0 - s(kAlpha)) * s(kK0) * s(kZ));
@@ -250,22 +253,37 @@ BoucWenUkfStep BoucWenUkf::step(double deformation, double force) {
     m_x = deformation / m_fixed.uRef;
     const double dx = m_x - m_lastX;
     m_lastX = m_x;
-    refresh();
+    if (m_refreshNeeded) {
+        refresh();
+        m_refreshNeeded = false;
+    }
 
+    // All sigma points' integrations in one call: BoucWen::integrateStates interleaves them.
     LawStatus lawStatus = LawStatus::Ok;
     UkfStatus predicted = m_ukf.predict(
-        [&](const Eigen::Ref<const Eigen::VectorXd>& s, Eigen::Ref<Eigen::VectorXd> out) {
-            const BoucWenIncrement inc =
-                BoucWen::integrate(parametersOf(s), BoucWenState{s(kZ), s(kE)}, dx);
-            out = s;
-            out(kZ) = inc.state.z;
-            out(kE) = inc.state.e;
-            if (inc.status != LawStatus::Ok) {
-                lawStatus = inc.status;
-                return false;
+        AllSigmaPoints{[&](const Eigen::MatrixXd& points, Eigen::MatrixXd& values) -> Eigen::Index {
+            const auto count = static_cast<std::size_t>(points.cols());
+            m_sigmaParameters.resize(count);
+            m_sigmaStates.resize(count);
+            m_sigmaIncrements.resize(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                const auto column = points.col(static_cast<Eigen::Index>(i));
+                m_sigmaParameters[i] = parametersOf(column);
+                m_sigmaStates[i] = {column(kZ), column(kE)};
             }
-            return true;
-        });
+            BoucWen::integrateStates(m_sigmaParameters, m_sigmaStates, dx, m_sigmaIncrements);
+            values = points;
+            for (std::size_t i = 0; i < count; ++i) {
+                const BoucWenIncrement& inc = m_sigmaIncrements[i];
+                if (inc.status != LawStatus::Ok) {
+                    lawStatus = inc.status;
+                    return static_cast<Eigen::Index>(i);
+                }
+                values(kZ, static_cast<Eigen::Index>(i)) = inc.state.z;
+                values(kE, static_cast<Eigen::Index>(i)) = inc.state.e;
+            }
+            return -1;
+        }});
     if (!predicted.ok) {
         if (predicted.fault == UkfFault::FunctionFailed) {
             predicted.reason = std::string("Bouc-Wen integration failed (") +
@@ -275,7 +293,7 @@ BoucWenUkfStep BoucWenUkf::step(double deformation, double force) {
         // Keep z, e in step with the deformation using the estimate's own parameters.
         Eigen::VectorXd x = m_ukf.state();
         const BoucWenIncrement inc =
-            BoucWen::integrate(parametersOf(x), BoucWenState{x(kZ), x(kE)}, dx);
+            BoucWen::integrateState(parametersOf(x), BoucWenState{x(kZ), x(kE)}, dx);
         if (inc.status == LawStatus::Ok) {
             x(kZ) = inc.state.z;
             x(kE) = inc.state.e;
@@ -290,13 +308,13 @@ BoucWenUkfStep BoucWenUkf::step(double deformation, double force) {
     }
 
     const double x = m_x;
-    Eigen::VectorXd z(1);
-    z(0) = force / m_fixed.fRef;
+    m_measured.resize(1);
+    m_measured(0) = force / m_fixed.fRef;
     UkfStatus updated = m_ukf.update(
         [x](const Eigen::Ref<const Eigen::VectorXd>& s, Eigen::Ref<Eigen::VectorXd> out) {
             out(0) = s(kAlpha) * s(kK0) * x + (1.0 - s(kAlpha)) * s(kK0) * s(kZ);
         },
-        z);
+        m_measured);
     if (!updated.ok) {
         updated.reason = "update rejected: " + updated.reason;
         return result(updated, std::numeric_limits<double>::quiet_NaN());

@@ -48,6 +48,7 @@
 
 #include <array>
 #include <limits>
+#include <vector>
 
 namespace hsmu {
 
@@ -107,7 +108,10 @@ public:
 
     const BoucWenUkfSettings& settings() const { return m_settings; }
     /// Effective on the next step (initialStdFraction only on reset()).
-    void setSettings(const BoucWenUkfSettings& settings) { m_settings = settings; }
+    void setSettings(const BoucWenUkfSettings& settings) {
+        m_settings = settings;
+        m_refreshNeeded = true;
+    }
 
     const BoundsArray& bounds() const { return m_bounds; }
     /// Change one parameter's bounds (effective next step). False, and nothing changes, for
@@ -133,7 +137,8 @@ private:
     void project(Eigen::Ref<Eigen::VectorXd> x, bool mean) const;
     // The projection boxes (sigma points and means) from bounds, margin and locks.
     void refreshBoxes();
-    // Boxes, Q, R and the UKF settings from the current settings (each step).
+    // Boxes, Q, R and the UKF settings from the current settings, bounds and locks (on the
+    // first step after any of them changed).
     void refresh();
     BoucWenUkfStep result(UkfStatus status, double predicted) const;
     double initialVariance(int i) const;
@@ -147,8 +152,15 @@ private:
         m_meanUpper{};
     UnscentedKalmanFilter m_ukf;
     Eigen::MatrixXd m_Q, m_R;
-    double m_lastX = 0.0; ///< normalized deformation of the last step
-    double m_x = 0.0;     ///< normalized deformation of the step being processed
+    // The sigma points as the law's parameters and states, and their integrations (kept: no
+    // allocation per step).
+    std::vector<BoucWenParameters> m_sigmaParameters;
+    std::vector<BoucWenState> m_sigmaStates;
+    std::vector<BoucWenIncrement> m_sigmaIncrements;
+    Eigen::VectorXd m_measured;  ///< F / fRef of the step (kept: no allocation per step)
+    bool m_refreshNeeded = true; ///< settings, bounds or locks changed since refresh()
+    double m_lastX = 0.0;        ///< normalized deformation of the last step
+    double m_x = 0.0;            ///< normalized deformation of the step being processed
 };
 
 } // namespace hsmu

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace hsmu {
@@ -121,7 +122,7 @@ void UnscentedKalmanFilter::addJitter(Matrix& P, double jitter) const {
 UkfStatus UnscentedKalmanFilter::factor(const Matrix& P, const char* what) {
     m_sqrtIsOfP = false;
     const Eigen::Index n = P.rows();
-    if (!P.allFinite()) {
+    if (!ukfkernels::allFinite(P)) {
         return {false, UkfFault::NonFiniteValue, std::string(what) + " is not finite"};
     }
     m_active.clear();
@@ -211,23 +212,30 @@ UkfStatus UnscentedKalmanFilter::drawSigmaPoints() {
     if (m_projectMean) {
         m_projectMean(m_centre);
     }
+    // chi_0 = x, chi_j = x + c S_j, chi_n+j = x - c S_j.
     m_sigma.resize(n, 2 * n + 1);
-    m_sigma.col(0) = m_centre;
-    m_sigma.middleCols(1, n) = (m_w.spread * m_sqrt).colwise() + m_centre;
     m_weight.setConstant(2 * n, m_w.other);
+    double* plus = m_sigma.data() + n;
+    double* minus = plus + n * n;
+    m_sigma.col(0) = m_centre;
+    ukfkernels::offsetColumns(m_centre, m_sqrt, m_w.spread, plus);
     if (m_projectSigma) {
-        m_sigma.rightCols(n) = (-m_w.spread * m_sqrt).colwise() + m_centre;
+        ukfkernels::offsetColumns(m_centre, m_sqrt, -m_w.spread, minus);
         m_projected = m_sigma.rightCols(2 * n);
         for (Eigen::Index c = 0; c < 2 * n; ++c) {
             m_projectSigma(m_projected.col(c));
         }
-        for (Eigen::Index j = 0; j < n; ++j) {
-            shrinkPair(j);
+        // Usually no point moves, which one bytewise comparison of the whole block shows (the
+        // points are never NaN, so bytewise equal is equal); otherwise pair by pair.
+        if (std::memcmp(m_projected.data(), plus, sizeof(double) * 2 * n * n) != 0) {
+            for (Eigen::Index j = 0; j < n; ++j) {
+                shrinkPair(j);
+            }
         }
     }
     // Exactly opposite deviations: (x + d) - x is exact, so each pair sums to zero and no
     // rounding of x is multiplied by W_i.
-    m_sigma.rightCols(n) = (-(m_sigma.middleCols(1, n).colwise() - m_centre)).colwise() + m_centre;
+    ukfkernels::mirrorColumns(m_centre, plus, minus);
     return status;
 }
 
@@ -265,31 +273,6 @@ void UnscentedKalmanFilter::shrinkPair(Eigen::Index j) {
     }
 }
 
-void UnscentedKalmanFilter::moments(const Matrix& points, Matrix& dev, Vector& mu) const {
-    const Eigen::Index pairs = points.cols() / 2, rows = points.rows();
-    dev = points.rightCols(2 * pairs).colwise() - points.col(0);
-    // mu = sum_i w_i d_i pair by pair; a second difference d_j+ + d_j- below the rounding of
-    // the three function values is noise that W_i ~ 1e7 would turn into a mean offset.
-    mu.setZero(rows);
-    const double* centre = points.data();
-    for (Eigen::Index j = 0; j < pairs; ++j) {
-        const double w = m_weight(j);
-        if (w == 0.0) {
-            continue;
-        }
-        const double* plus = points.data() + (1 + j) * rows;
-        const double* minus = points.data() + (1 + pairs + j) * rows;
-        for (Eigen::Index r = 0; r < rows; ++r) {
-            const double second = (plus[r] - centre[r]) + (minus[r] - centre[r]);
-            const double floor = kRoundingFloor * (std::abs(plus[r]) + std::abs(minus[r]) +
-                                                   2.0 * std::abs(centre[r]));
-            if (std::abs(second) > floor) {
-                mu(r) += w * second;
-            }
-        }
-    }
-}
-
 UkfStatus UnscentedKalmanFilter::finishPredict(double jitter) {
     if (m_Q.rows() != m_x.size() || m_Q.cols() != m_x.size()) {
         return {false, UkfFault::DimensionMismatch,
@@ -297,10 +280,10 @@ UkfStatus UnscentedKalmanFilter::finishPredict(double jitter) {
                     sizeText(m_x.size(), m_x.size())};
     }
     const double cross = m_settings.b - m_settings.a * m_settings.a;
-    moments(m_out, m_dy, m_muY);
-    m_newX = m_out.col(0) + m_muY;
-    ukfkernels::weightedGram(m_dy, m_weight, m_newP);
-    m_newP.noalias() += cross * m_muY * m_muY.transpose();
+    ukfkernels::pairMoments(m_fOut, m_weight, kRoundingFloor, m_fDev, m_fMu);
+    m_newX = m_fOut.col(0) + m_fMu;
+    ukfkernels::weightedGram(m_fDev, m_weight, m_newP);
+    ukfkernels::addScaledOuter(m_newP, cross, m_fMu);
     m_newP += m_Q;
     ukfkernels::symmetrize(m_newP); // Q may be slightly asymmetric
     if (m_projectMean) {
@@ -327,14 +310,14 @@ UkfStatus UnscentedKalmanFilter::finishUpdate(const Vector& z, double jitter) {
     }
     const double cross = m_settings.b - m_settings.a * m_settings.a;
     // The sigma points are exactly symmetric about the centre (drawSigmaPoints): mux = 0.
-    m_dx = m_sigma.rightCols(m_sigma.cols() - 1).colwise() - m_centre;
-    moments(m_out, m_dy, m_muY);
-    ukfkernels::weightedGram(m_dy, m_weight, m_Pyy);
-    m_Pyy.noalias() += cross * m_muY * m_muY.transpose();
+    ukfkernels::deviations(m_sigma, m_dx); // column 0 is m_centre
+    ukfkernels::pairMoments(m_hOut, m_weight, kRoundingFloor, m_hDev, m_hMu);
+    ukfkernels::weightedGram(m_hDev, m_weight, m_Pyy);
+    ukfkernels::addScaledOuter(m_Pyy, cross, m_hMu);
     m_Pyy += m_R;
     ukfkernels::symmetrize(m_Pyy);
-    ukfkernels::weightedOuter(m_dx, m_dy, m_weight, m_Pxy);
-    m_yHat = m_out.col(0) + m_muY;
+    ukfkernels::weightedOuter(m_dx, m_hDev, m_weight, m_Pxy);
+    m_yHat = m_hOut.col(0) + m_hMu;
     if (!m_Pyy.allFinite() || !m_Pxy.allFinite() || !m_yHat.allFinite()) {
         return {false, UkfFault::NonFiniteValue, "the predicted measurement is not finite"};
     }

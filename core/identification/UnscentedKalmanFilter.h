@@ -47,13 +47,18 @@
 // prediction loses it (it grows again by Q). Estimators therefore keep their means a margin
 // inside the bounds (the mean hook) while sigma points may use the whole box.
 //
-// Functions: process f and measurement h are callables in one of two forms,
+// Functions: process f and measurement h are callables in one of three forms,
 //   Eigen::VectorXd f(const Eigen::VectorXd& x)                                  or
-//   R f(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> out)
+//   R f(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> out)  or
+//   AllSigmaPoints{g}: Eigen::Index g(const Eigen::MatrixXd& x, Eigen::MatrixXd& out)
 // with R void or bool (false = the function failed at that point: the step is rejected).
-// The second form writes into preallocated storage (no allocation per sigma point).
+// The second form writes into preallocated storage (no allocation per sigma point); the third
+// evaluates all sigma points (the columns of x; out is preallocated) in one call and returns
+// the first column at which it failed, or -1: for functions that gain from seeing all points
+// at once (the Bouc-Wen estimator interleaves their integrations).
 // Thread rules: none; an instance is used by one thread at a time.
 
+#include "core/identification/UkfKernels.h"
 #include "core/identification/UkfStatus.h"
 
 #include <Eigen/Core>
@@ -65,6 +70,13 @@
 #include <vector>
 
 namespace hsmu {
+
+/// Marks a function that evaluates all sigma points in one call (see the header comment).
+template <class G> struct AllSigmaPoints { G function; };
+template <class G> AllSigmaPoints(G) -> AllSigmaPoints<G>;
+
+template <class T> inline constexpr bool isAllSigmaPoints = false;
+template <class G> inline constexpr bool isAllSigmaPoints<AllSigmaPoints<G>> = true;
 
 /// Unscented-transform settings; all editable between steps (effective on the next call).
 struct UkfSettings {
@@ -140,8 +152,6 @@ private:
     UkfStatus drawSigmaPoints();
     // Shrinks pair j of m_sigma (plus point only; see the header) from the projected m_projected.
     void shrinkPair(Eigen::Index j);
-    // Deviations of the columns of `points` from the first one, and their mean offset.
-    void moments(const Matrix& points, Matrix& dev, Vector& mu) const;
     UkfStatus finishPredict(double jitter);
     UkfStatus finishUpdate(const Vector& z, double jitter);
 
@@ -157,12 +167,14 @@ private:
     Vector m_yHat;
     Matrix m_Pyy;
 
-    // Workspace (kept to avoid allocations per step).
+    // Workspace (kept to avoid allocations per step; the process (f) and the measurement (h)
+    // have their own, of their own sizes).
     Weights m_w;
     bool m_sqrtIsOfP = false; ///< m_sqrt is the factor of the current m_P
-    Matrix m_sqrt, m_sub, m_sigma, m_projected, m_dx, m_dy, m_out, m_newP, m_Pxy, m_gain;
-    Matrix m_lowerYy;
-    Vector m_centre, m_step, m_plus, m_minus, m_weight, m_muY, m_newX, m_innovation;
+    Matrix m_sqrt, m_sub, m_sigma, m_projected, m_dx, m_newP, m_Pxy, m_gain, m_lowerYy;
+    Matrix m_fOut, m_fDev, m_hOut, m_hDev; // function values, deviations from the centre's
+    Vector m_fMu, m_hMu;                   // their mean offsets
+    Vector m_centre, m_step, m_plus, m_minus, m_weight, m_newX, m_innovation;
     std::vector<int> m_active;
 };
 
@@ -172,32 +184,41 @@ bool UnscentedKalmanFilter::evaluate(F& f, const Matrix& in, Matrix& out, Eigen:
     using ConstRef = const Eigen::Ref<const Vector>&;
     using OutRef = Eigen::Ref<Vector>;
     out.resize(rows, in.cols());
-    for (Eigen::Index i = 0; i < in.cols(); ++i) {
-        bool good = true;
-        if constexpr (std::is_invocable_v<F&, ConstRef, OutRef>) {
-            OutRef column = out.col(i);
-            if constexpr (std::is_same_v<std::invoke_result_t<F&, ConstRef, OutRef>, bool>) {
-                good = f(in.col(i), column);
-            } else {
-                f(in.col(i), column);
-            }
-        } else {
-            const Vector y = f(Vector(in.col(i)));
-            if (y.size() != rows) {
-                status = {false, UkfFault::DimensionMismatch,
-                          std::string(what) + " returned a vector of size " +
-                              std::to_string(y.size()) + ", expected " + std::to_string(rows)};
-                return false;
-            }
-            out.col(i) = y;
-        }
-        if (!good) {
+    if constexpr (isAllSigmaPoints<std::remove_cvref_t<F>>) {
+        const Eigen::Index failed = f.function(in, out);
+        if (failed >= 0) {
             status = {false, UkfFault::FunctionFailed,
-                      std::string(what) + " failed at sigma point " + std::to_string(i)};
+                      std::string(what) + " failed at sigma point " + std::to_string(failed)};
             return false;
         }
+    } else {
+        for (Eigen::Index i = 0; i < in.cols(); ++i) {
+            bool good = true;
+            if constexpr (std::is_invocable_v<F&, ConstRef, OutRef>) {
+                OutRef column = out.col(i);
+                if constexpr (std::is_same_v<std::invoke_result_t<F&, ConstRef, OutRef>, bool>) {
+                    good = f(in.col(i), column);
+                } else {
+                    f(in.col(i), column);
+                }
+            } else {
+                const Vector y = f(Vector(in.col(i)));
+                if (y.size() != rows) {
+                    status = {false, UkfFault::DimensionMismatch,
+                              std::string(what) + " returned a vector of size " +
+                                  std::to_string(y.size()) + ", expected " + std::to_string(rows)};
+                    return false;
+                }
+                out.col(i) = y;
+            }
+            if (!good) {
+                status = {false, UkfFault::FunctionFailed,
+                          std::string(what) + " failed at sigma point " + std::to_string(i)};
+                return false;
+            }
+        }
     }
-    if (!out.allFinite()) {
+    if (!ukfkernels::allFinite(out)) {
         Eigen::Index i = 0;
         while (i + 1 < out.cols() && out.col(i).allFinite()) {
             ++i;
@@ -215,7 +236,7 @@ template <class F> UkfStatus UnscentedKalmanFilter::predict(F&& f) {
     if (!status.ok) {
         return status;
     }
-    if (!evaluate(f, m_sigma, m_out, m_x.size(), status, "the process function")) {
+    if (!evaluate(f, m_sigma, m_fOut, m_x.size(), status, "the process function")) {
         return status;
     }
     return finishPredict(status.jitter);
@@ -231,7 +252,7 @@ template <class H> UkfStatus UnscentedKalmanFilter::update(H&& h, const Vector& 
     if (!status.ok) {
         return status;
     }
-    if (!evaluate(h, m_sigma, m_out, m_R.rows(), status, "the measurement function")) {
+    if (!evaluate(h, m_sigma, m_hOut, m_R.rows(), status, "the measurement function")) {
         return status;
     }
     return finishUpdate(z, status.jitter);
