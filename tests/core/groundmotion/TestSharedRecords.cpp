@@ -40,7 +40,7 @@ double maxAbsDifference(const GroundMotion& a, const GroundMotion& b) {
     QSKIP("El Centro files not found in HSMU_SHARED_DATA_DIR/elcentro (" HSMU_SHARED_DATA_DIR      \
           "): the real-record checks need the shared data folder next to the source tree")
 
-class TestElCentroRecords : public QObject {
+class TestSharedRecords : public QObject {
     Q_OBJECT
 
 private slots:
@@ -117,5 +117,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestElCentroRecords)
-#include "TestElCentroRecords.moc"
+QTEST_APPLESS_MAIN(TestSharedRecords)
+#include "TestSharedRecords.moc"
