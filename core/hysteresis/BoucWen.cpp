@@ -65,25 +65,11 @@ double slopeAt(const BoucWenParameters& p, const BoucWenState& s, double dir) {
     return (d.a - std::pow(std::abs(s.z), p.n) * psi * d.nu) / d.eta;
 }
 
-// Deformation (normalized) at which the elastic branch of the law at energy e reaches the
-// ultimate z; the scale that decides whether an increment is "large".
-double yieldDeformation(const BoucWenParameters& p, double e) {
-    const Degradation d = degradationAt(p, e);
-    if (d.a > 0.0 && d.nu > 0.0 && d.eta > 0.0) {
-        const double zu = std::pow(d.a / (d.nu * (p.beta + p.gamma)), 1.0 / p.n);
-        if (std::isfinite(zu) && zu > 0.0) {
-            return zu * d.eta / d.a;
-        }
-    }
-    return BoucWen::ultimateZ(p) / p.A0;
-}
-
-// True only if x <= scale q^(1/n) with q = num / den, decided without std::pow (most of the
-// cost of a step): q^r >= q / (q + r (1 - q)) for 0 < q <= 1 and 0 < r <= 1 (Bernoulli's
-// inequality (1/q)^r <= 1 + r (1/q - 1)) and q^r >= 1 for q >= 1, so with r = 1/n
-//   x (n num + max(den - num, 0)) <= scale n num
-// suffices. The margin of 1e-9 is far above the roundings of both sides and of std::pow (the
-// guards keep q and the terms in range). False (undecided) for n outside [1, 100].
+// True only if x <= scale q^(1/n), q = num / den, decided without std::pow (most of the cost of
+// a step): q^r >= q / (q + r (1 - q)) for 0 < q <= 1, 0 < r <= 1 (Bernoulli's inequality) and
+// q^r >= 1 for q >= 1, so x (n num + max(den - num, 0)) <= scale n num suffices. Its margin of
+// 1e-9 is far above the roundings of both sides and of std::pow (the guards keep q and the
+// terms in range). False (undecided) for n outside [1, 100].
 bool surelyBelowScaledRoot(double x, double scale, double num, double den, double n) {
     if (!(n >= 1.0 && n <= 100.0 && num > 0.0 && den > 0.0 && num <= den * 1e300 &&
           den <= num * 1e300)) {
@@ -94,27 +80,29 @@ bool surelyBelowScaledRoot(double x, double scale, double num, double den, doubl
 }
 
 // The two limits of one integration from `from`: the longest increment tried without halving
-// (kMaxStepInYieldDeformations yield deformations at e0) and the largest |z| of an iterate
-// (kWildJumpFactor max(|z0|, ultimateZ)). Each costs a std::pow and is computed only when the
-// cheap test (surelyBelowScaledRoot, |z| <= kWildJumpFactor |z0|) cannot decide, which for
-// ordinary increments is never. Every decision is the one the exact value gives, so the
-// integration is unchanged.
+// and the largest |z| of an iterate. Each costs a std::pow and is computed only when a cheap
+// test (surelyBelowScaledRoot, |z| <= kWildJumpFactor |z0|) cannot decide, which for ordinary
+// increments is never. Every decision is the one the exact value gives.
 class StepLimits {
 public:
     StepLimits(const BoucWenParameters& p, const BoucWenState& from)
         : m_p(p), m_e0(from.e), m_absZ0(std::abs(from.z)) {}
 
-    // |dx| <= kMaxStepInYieldDeformations yieldDeformation(p, e0)?
+    // |dx| <= kMaxStepInYieldDeformations yield deformations zu(e0) eta / a, where the elastic
+    // branch reaches zu(e) = (a / (nu (beta + gamma)))^(1/n) (ultimateZ / A0 if undefined)?
     bool withinMaxStep(double absDx) {
         if (std::isnan(m_maxStep)) {
-            // yieldDeformation = zu eta / a with zu = (a / (nu (beta + gamma)))^(1/n).
             const Degradation d = degradationAt(m_p, m_e0);
-            if (d.a > 0.0 && d.nu > 0.0 && d.eta > 0.0 &&
-                surelyBelowScaledRoot(absDx * d.a, kMaxStepInYieldDeformations * d.eta, d.a,
-                                      d.nu * (m_p.beta + m_p.gamma), m_p.n)) {
+            const bool defined = d.a > 0.0 && d.nu > 0.0 && d.eta > 0.0;
+            const double den = d.nu * (m_p.beta + m_p.gamma);
+            const double scale = kMaxStepInYieldDeformations * d.eta;
+            if (defined && surelyBelowScaledRoot(absDx * d.a, scale, d.a, den, m_p.n)) {
                 return true;
             }
-            m_maxStep = kMaxStepInYieldDeformations * yieldDeformation(m_p, m_e0);
+            const double zu = defined ? std::pow(d.a / den, 1.0 / m_p.n) : 0.0;
+            m_maxStep = kMaxStepInYieldDeformations * (std::isfinite(zu) && zu > 0.0
+                                                           ? zu * d.eta / d.a
+                                                           : BoucWen::ultimateZ(m_p) / m_p.A0);
         }
         return absDx <= m_maxStep;
     }
@@ -208,14 +196,10 @@ bool integrateSplit(const BoucWenParameters& p, BoucWenState& state, double dx, 
            integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps);
 }
 
-bool finiteInput(const BoucWenState& from, double dx) {
-    return std::isfinite(dx) && std::isfinite(from.z) && std::isfinite(from.e);
-}
-
 // integrateState() for parameters known to be admissible.
 BoucWenIncrement integrateAdmissible(const BoucWenParameters& p, const BoucWenState& from,
                                      double dx, int maxSubdivisions) {
-    if (!finiteInput(from, dx)) {
+    if (!std::isfinite(dx) || !std::isfinite(from.z) || !std::isfinite(from.e)) {
         return {LawStatus::InvalidInput, from, 0.0, 0};
     }
     StepLimits limits(p, from);
@@ -268,15 +252,14 @@ void BoucWen::integrateStates(std::span<const BoucWenParameters> p,
         std::size_t running = 0;
         for (std::size_t k = 0; k < size; ++k) {
             const std::size_t i = first + k;
-            if (admissible(p[i]) && finiteInput(from[i], dx)) {
-                limits[k].emplace(p[i], from[i]);
-                if (limits[k]->withinMaxStep(std::abs(dx))) {
-                    newton[k].emplace(p[i], from[i], dx);
-                    ++running;
-                    continue;
-                }
+            if (admissible(p[i]) && std::isfinite(dx) && std::isfinite(from[i].z) &&
+                std::isfinite(from[i].e) &&
+                limits[k].emplace(p[i], from[i]).withinMaxStep(std::abs(dx))) {
+                newton[k].emplace(p[i], from[i], dx);
+                ++running;
+            } else {
+                out[i] = integrateState(p[i], from[i], dx);
             }
-            out[i] = integrateState(p[i], from[i], dx);
         }
         while (running > 0) {
             for (std::size_t k = 0; k < size; ++k) {

@@ -85,7 +85,7 @@ public:
     static BoucWenIncrement integrate(const BoucWenParameters& p, const BoucWenState& from,
                                       double dx, int maxSubdivisions = kDefaultMaxSubdivisions);
     /// integrate() without dzdx (left 0), for callers that need only the end state (the UKF's
-    /// sigma points): saves the std::pow of the slope, a third of the cost of a typical step.
+    /// sigma points): saves the std::pow of the slope, about a fifth of a typical step.
     static BoucWenIncrement integrateState(const BoucWenParameters& p, const BoucWenState& from,
                                            double dx,
                                            int maxSubdivisions = kDefaultMaxSubdivisions);

@@ -11,17 +11,21 @@ namespace {
 
 using Index = Eigen::Index;
 
-// Each kernel is a template on its size N (0: any size, read at run time) and is also compiled
-// for the sizes of the Bouc-Wen estimator, its state (9, kBoucWenUkfSize) and its scalar
-// measurement (1). With the bounds known the compiler unrolls and vectorizes the short loops,
-// whose set-up otherwise costs more than their work at this size. The floating-point
-// operations and their order are the same for every N, and so are the results, bit for bit.
+// The kernels are compiled for any size and also for the sizes of the Bouc-Wen estimator, its
+// state (kBoucWenUkfSize) and its scalar measurement (through dispatch(), or as the
+// fixed-size choleskyFixed() and gramFixed()). With the bounds known the compiler unrolls and
+// vectorizes the short loops, whose set-up otherwise costs more than their work at this size.
+// The floating-point operations and their order are the same for every size, and so are the
+// results, bit for bit.
+constexpr Index kStateSize = 9;
+
+// Calls kernel with std::integral_constant N = n for the sizes above, else N = 0 (any size).
 template <class Kernel> decltype(auto) dispatch(Index n, Kernel&& kernel) {
     switch (n) {
     case 1:
         return kernel(std::integral_constant<Index, 1>{});
-    case 9:
-        return kernel(std::integral_constant<Index, 9>{});
+    case kStateSize:
+        return kernel(std::integral_constant<Index, kStateSize>{});
     default:
         return kernel(std::integral_constant<Index, 0>{});
     }
@@ -31,8 +35,7 @@ template <Index N> Index sizeOr(Index dynamic) {
     return N > 0 ? N : dynamic;
 }
 
-template <Index N> bool cholesky(double* m, Index dynamicN) {
-    const Index n = sizeOr<N>(dynamicN);
+bool cholesky(double* m, Index n) {
     for (Index j = 0; j < n; ++j) {
         double* cj = m + j * n;
         double d = cj[j];
@@ -62,9 +65,10 @@ template <Index N> bool cholesky(double* m, Index dynamicN) {
     return true;
 }
 
-// cholesky() for a fixed size N, column J (a template parameter, so that its rows J..N-1 are a
-// fixed-size segment the compiler keeps in vector registers) then the next. The pivot is row J
-// of the updated segment, a_JJ - sum_k l_Jk^2 in the same order as in cholesky().
+// cholesky() for a fixed size N (the dynamic loops of varying length do not unroll), column J (a
+// template parameter, so that its rows J..N-1 are a fixed-size segment the compiler keeps in vector
+// registers) then the next. The pivot is row J of the updated segment, a_JJ - sum_k l_Jk^2 in the
+// same order as in cholesky().
 template <Index N, Index J = 0> bool choleskyFixed(double* m) {
     if constexpr (J == N) {
         return true;
@@ -126,10 +130,8 @@ void outer(const double* __restrict a, const double* __restrict b, const double*
 }
 
 // o (m x m, zeroed) += sum_c w_c a_c a_c^T on the lower triangle, then mirrored.
-template <Index M>
-void gram(const double* __restrict a, const double* __restrict w, double* __restrict o,
-          Index dynamicM, Index k) {
-    const Index m = sizeOr<M>(dynamicM);
+void gram(const double* __restrict a, const double* __restrict w, double* __restrict o, Index m,
+          Index k) {
     for (Index c = 0; c < k; ++c) {
         const double wc = w[c];
         if (wc == 0.0) {
@@ -266,10 +268,14 @@ void deviations(const Eigen::MatrixXd& points, Eigen::MatrixXd& dev) {
 }
 
 bool choleskyInPlace(Eigen::MatrixXd& a) {
-    if (a.rows() == 9) {
-        return choleskyFixed<9>(a.data());
+    switch (a.rows()) {
+    case 1:
+        return choleskyFixed<1>(a.data());
+    case kStateSize:
+        return choleskyFixed<kStateSize>(a.data());
+    default:
+        return cholesky(a.data(), a.rows());
     }
-    return dispatch(a.rows(), [&](auto n) { return cholesky<n()>(a.data(), a.rows()); });
 }
 
 void symmetrize(Eigen::MatrixXd& m) {
@@ -286,12 +292,14 @@ void weightedOuter(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, const Eig
 
 void weightedGram(const Eigen::MatrixXd& a, const Eigen::VectorXd& w, Eigen::MatrixXd& out) {
     out.setZero(a.rows(), a.rows());
-    if (a.rows() == 9) {
-        gramFixed<9>(a.data(), w.data(), out.data(), a.cols());
-        return;
+    switch (a.rows()) {
+    case 1:
+        return gramFixed<1>(a.data(), w.data(), out.data(), a.cols());
+    case kStateSize:
+        return gramFixed<kStateSize>(a.data(), w.data(), out.data(), a.cols());
+    default:
+        return gram(a.data(), w.data(), out.data(), a.rows(), a.cols());
     }
-    dispatch(a.rows(),
-             [&](auto m) { gram<m()>(a.data(), w.data(), out.data(), a.rows(), a.cols()); });
 }
 
 void pairMoments(const Eigen::MatrixXd& points, const Eigen::VectorXd& w, double noise,

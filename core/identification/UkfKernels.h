@@ -44,7 +44,8 @@ void weightedGram(const Eigen::MatrixXd& a, const Eigen::VectorXd& w, Eigen::Mat
 /// For 2p + 1 points (the columns of `points`, m x (2p + 1)): their deviations from the first,
 /// dev = points(:, 1..2p) - points(:, 0), and the mean offset mu = sum_j w_j (dev_j + dev_p+j)
 /// over the pairs j < p, leaving out each second difference dev_j + dev_p+j (per component)
-/// not above `noise` times |plus| + |minus| + 2 |centre| (rounding noise there).
+/// not above `noise` times |plus| + |minus| + 2 |centre|: rounding noise there, which the
+/// weights (~1e7 with the paper's settings) would turn into a mean offset.
 void pairMoments(const Eigen::MatrixXd& points, const Eigen::VectorXd& w, double noise,
                  Eigen::MatrixXd& dev, Eigen::VectorXd& mu);
 

@@ -225,9 +225,10 @@ UkfStatus UnscentedKalmanFilter::drawSigmaPoints() {
         for (Eigen::Index c = 0; c < 2 * n; ++c) {
             m_projectSigma(m_projected.col(c));
         }
-        // Usually no point moves, which one bytewise comparison of the whole block shows (the
-        // points are never NaN, so bytewise equal is equal); otherwise pair by pair.
-        if (std::memcmp(m_projected.data(), plus, sizeof(double) * 2 * n * n) != 0) {
+        // Usually no point moves, which one bytewise comparison of the whole block shows (with
+        // a finite centre the points are not NaN, so bytewise equal is equal); else pair by pair.
+        if (!ukfkernels::allFinite(m_centre.data(), n) ||
+            std::memcmp(m_projected.data(), plus, sizeof(double) * 2 * n * n) != 0) {
             for (Eigen::Index j = 0; j < n; ++j) {
                 shrinkPair(j);
             }

@@ -127,6 +127,7 @@ private slots:
     void invalidSettingsAndDimensions();
     void zeroVarianceComponentStaysExact();
     void projectionHoldsBounds();
+    void allSigmaPointsFormEqualsPerPointForm();
 };
 
 void TestUnscentedKalmanFilter::equalsKalmanFilterWithPaperSetting() {
@@ -342,6 +343,46 @@ void TestUnscentedKalmanFilter::projectionHoldsBounds() {
     QVERIFY(ukf.update([](const Vector& s) -> Vector { return s; }, Vector::Constant(1, 2.0)).ok);
     QCOMPARE(ukf.state()(0), 1.0);
     QCOMPARE(ukf.covariance()(0, 0), 1e-4);
+}
+
+void TestUnscentedKalmanFilter::allSigmaPointsFormEqualsPerPointForm() {
+    // The same filter through the per-point and the all-points forms: identical x and P, bit
+    // for bit (the functions do the same arithmetic per point). A failure is reported at the
+    // point the all-points function names, and x and P are kept.
+    const auto move = [](const auto& s, auto&& out) {
+        out(0) = s(0) + kDt * s(1);
+        out(1) = s(1);
+    };
+    const auto moveAll = [&](const Matrix& s, Matrix& out) -> Eigen::Index {
+        for (Eigen::Index i = 0; i < s.cols(); ++i) {
+            move(s.col(i), out.col(i));
+        }
+        return -1;
+    };
+    UnscentedKalmanFilter one, all;
+    for (UnscentedKalmanFilter* ukf : {&one, &all}) {
+        QVERIFY(ukf->init(vec2(0.3, -0.2), Matrix::Identity(2, 2)).ok);
+        QVERIFY(ukf->setProcessNoise(processNoise()).ok);
+    }
+    const auto position = [](const Eigen::Ref<const Vector>& s, Eigen::Ref<Vector> out) {
+        out(0) = s(0);
+    };
+    for (int k = 0; k < 20; ++k) {
+        const Vector z = Vector::Constant(1, 0.04 * k);
+        QVERIFY(one.predict([&](const Eigen::Ref<const Vector>& s, Eigen::Ref<Vector> out) {
+                       move(s, out);
+                   })
+                    .ok);
+        QVERIFY(all.predict(AllSigmaPoints{moveAll}).ok);
+        QVERIFY(one.update(position, z).ok && all.update(position, z).ok);
+        QVERIFY(one.state() == all.state() && one.covariance() == all.covariance());
+    }
+    const Vector x = all.state();
+    const UkfStatus failed =
+        all.predict(AllSigmaPoints{[](const Matrix&, Matrix&) -> Eigen::Index { return 3; }});
+    QVERIFY(!failed.ok && failed.fault == UkfFault::FunctionFailed);
+    QVERIFY(failed.reason.find("sigma point 3") != std::string::npos);
+    QVERIFY(all.state() == x);
 }
 
 QTEST_APPLESS_MAIN(TestUnscentedKalmanFilter)

@@ -1,0 +1,176 @@
+// Tests of the integration entry points of BoucWen (core/hysteresis/BoucWen.h): integrate(),
+// integrateState() and integrateStates() must give the same end states bit for bit, and the
+// same as a plain transcription of the documented algorithm (below) whose step limits are
+// always computed with std::pow: BoucWen decides them with cheap bounds where it can, which
+// must never change a decision.
+
+#include "core/hysteresis/BoucWen.h"
+#include "core/util/PortableRandom.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace hsmu;
+
+namespace {
+
+// The algorithm of BoucWen.h, written out: backward Euler solved by Newton from z0, halving
+// increments longer than half the yield deformation at e0 or whose Newton iteration fails.
+struct Reference {
+    BoucWenParameters p;
+    double maxStep = 0.0, zBound = 0.0;
+    int subSteps = 0;
+
+    bool step(BoucWenState& s, double dx) const {
+        const double c = (1.0 - p.alpha) * p.k0, dedz = c * dx, z0 = s.z, e0 = s.e;
+        double z = z0;
+        for (int iteration = 0; iteration < 30; ++iteration) {
+            const double e = e0 + c * z * dx;
+            const double a = p.A0 - p.deltaA * e, nu = 1.0 + p.deltaNu * e;
+            const double eta = 1.0 + p.deltaEta * e;
+            const double absZ = std::abs(z);
+            const double sgn = static_cast<double>((dx * z > 0.0) - (dx * z < 0.0));
+            const double psi = p.gamma + p.beta * sgn;
+            const double absZn = std::pow(absZ, p.n);
+            const double phi = a - absZn * psi * nu;
+            const double r = z - z0 - dx * phi / eta;
+            const double sz = static_cast<double>((z > 0.0) - (z < 0.0));
+            const double dAbsZn = absZ > 0.0 ? p.n * absZn / absZ * sz : 0.0;
+            const double dPhi =
+                -p.deltaA * dedz - dAbsZn * psi * nu - absZn * psi * p.deltaNu * dedz;
+            const double dr = 1.0 - dx * (dPhi * eta - phi * (p.deltaEta * dedz)) / (eta * eta);
+            const double delta = r / dr;
+            z -= delta;
+            if (!std::isfinite(z) || std::abs(z) > zBound) {
+                return false;
+            }
+            if (std::abs(delta) <= 1e-12 * std::max(std::abs(z), std::abs(z0))) {
+                s = {z, e0 + c * z * dx};
+                return std::isfinite(s.e);
+            }
+        }
+        return false;
+    }
+
+    bool split(BoucWenState& s, double dx, int levels) {
+        if (std::abs(dx) <= maxStep || levels <= 0) {
+            BoucWenState trial = s;
+            if (step(trial, dx)) {
+                s = trial;
+                ++subSteps;
+                return true;
+            }
+            if (levels <= 0) {
+                return false;
+            }
+        }
+        return split(s, 0.5 * dx, levels - 1) && split(s, 0.5 * dx, levels - 1);
+    }
+
+    // Status Ok with the end state and sub-steps, or NoConvergence (state unused).
+    BoucWenIncrement integrate(const BoucWenState& from, double dx) {
+        const double a = p.A0 - p.deltaA * from.e, nu = 1.0 + p.deltaNu * from.e;
+        const double eta = 1.0 + p.deltaEta * from.e;
+        double yield = BoucWen::ultimateZ(p) / p.A0;
+        if (a > 0.0 && nu > 0.0 && eta > 0.0) {
+            const double zu = std::pow(a / (nu * (p.beta + p.gamma)), 1.0 / p.n);
+            if (std::isfinite(zu) && zu > 0.0) {
+                yield = zu * eta / a;
+            }
+        }
+        maxStep = 0.5 * yield;
+        zBound = 10.0 * std::max(std::abs(from.z), BoucWen::ultimateZ(p));
+        subSteps = 0;
+        BoucWenState end = from;
+        if (!split(end, dx, 12)) {
+            return {LawStatus::NoConvergence, from, 0.0, 0};
+        }
+        return {LawStatus::Ok, end, 0.0, subSteps};
+    }
+};
+
+bool same(const BoucWenIncrement& a, const BoucWenIncrement& b) {
+    return a.status == b.status && a.state.z == b.state.z && a.state.e == b.state.e &&
+           a.subSteps == b.subSteps;
+}
+
+// Random admissible parameters around Table III, with n in [0.5, 3.5] (below 1 the cheap
+// bounds cannot decide), and a random state and increment: most increments are ordinary
+// (up to 0.1), some far beyond the yield deformation.
+struct Problem {
+    BoucWenParameters p;
+    BoucWenState from;
+    double dx;
+};
+
+Problem randomProblem(PortableRandom& random) {
+    Problem q;
+    q.p.k0 = 0.7 + 0.7 * random.uniform();
+    q.p.alpha = 0.05 * random.uniform();
+    q.p.n = 0.5 + 3.0 * random.uniform();
+    q.p.beta = 2.5 + 2.5 * random.uniform();
+    q.p.gamma = 2.5 * random.uniform() - 0.5;
+    q.p.deltaA = 0.05 * random.uniform();
+    q.p.deltaNu = 0.1 * random.uniform();
+    q.p.deltaEta = 0.1 * random.uniform();
+    q.from = {BoucWen::ultimateZ(q.p) * (2.0 * random.uniform() - 1.0), 5.0 * random.uniform()};
+    q.dx = (random.uniform() < 0.9 ? 0.1 : 20.0) * (2.0 * random.uniform() - 1.0);
+    return q;
+}
+
+} // namespace
+
+class TestBoucWenIntegration : public QObject {
+    Q_OBJECT
+
+private slots:
+    void matchesTheDocumentedAlgorithm();
+    void integrateStatesEqualsOneByOne();
+};
+
+void TestBoucWenIntegration::matchesTheDocumentedAlgorithm() {
+    PortableRandom random(5);
+    int split = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const Problem q = randomProblem(random);
+        Reference reference{q.p};
+        const BoucWenIncrement expected = reference.integrate(q.from, q.dx);
+        const BoucWenIncrement state = BoucWen::integrateState(q.p, q.from, q.dx);
+        QVERIFY2(same(state, expected), qPrintable(QString::number(k)));
+        const BoucWenIncrement full = BoucWen::integrate(q.p, q.from, q.dx);
+        QVERIFY(same(full, state) && state.dzdx == 0.0);
+        split += expected.subSteps > 1;
+    }
+    QVERIFY(split > 100); // the halving paths were exercised too
+}
+
+void TestBoucWenIntegration::integrateStatesEqualsOneByOne() {
+    // 19 problems (as the UKF's sigma points: more than one interleaved chunk) with the same
+    // increment, including an inadmissible one, a non-finite state and long increments.
+    PortableRandom random(11);
+    for (const double dx : {0.0, 0.03, -0.07, 2.5, -30.0}) {
+        std::vector<BoucWenParameters> p;
+        std::vector<BoucWenState> from;
+        for (int k = 0; k < 19; ++k) {
+            const Problem q = randomProblem(random);
+            p.push_back(q.p);
+            from.push_back(q.from);
+        }
+        p[4].k0 = -1.0;
+        from[9].z = std::numeric_limits<double>::infinity();
+        std::vector<BoucWenIncrement> out(p.size());
+        BoucWen::integrateStates(p, from, dx, out);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            QVERIFY(same(out[i], BoucWen::integrateState(p[i], from[i], dx)));
+        }
+        QVERIFY(out[4].status == LawStatus::InvalidInput);
+        QVERIFY(out[9].status == LawStatus::InvalidInput);
+    }
+}
+
+QTEST_APPLESS_MAIN(TestBoucWenIntegration)
+#include "TestBoucWenIntegration.moc"
