@@ -1,5 +1,7 @@
 #include "core/identification/UnscentedKalmanFilter.h"
 
+#include <string>
+
 #include "core/identification/UkfKernels.h"
 
 #include <algorithm>
@@ -287,22 +289,7 @@ UkfStatus UnscentedKalmanFilter::finishPredict(double jitter) {
     ukfkernels::addScaledOuter(m_newP, cross, m_fMu);
     m_newP += m_Q;
     ukfkernels::symmetrize(m_newP); // Q may be slightly asymmetric
-    if (m_projectMean) {
-        m_projectMean(m_newX);
-    }
-    if (!m_newX.allFinite()) {
-        return {false, UkfFault::NonFiniteValue, "the predicted mean is not finite"};
-    }
-    UkfStatus status = factor(m_newP, "the predicted covariance");
-    if (!status.ok) {
-        return status;
-    }
-    addJitter(m_newP, status.jitter);
-    m_x = m_newX;
-    m_P.swap(m_newP);
-    m_sqrtIsOfP = true;
-    status.jitter = std::max(status.jitter, jitter);
-    return status;
+    return acceptCandidate("predicted", jitter);
 }
 
 UkfStatus UnscentedKalmanFilter::finishUpdate(const Vector& z, double jitter) {
@@ -342,13 +329,21 @@ UkfStatus UnscentedKalmanFilter::finishUpdate(const Vector& z, double jitter) {
             m_newP.col(j).setZero();
         }
     }
+    return acceptCandidate("updated", jitter);
+}
+
+
+// Project, check and factor the candidate (m_newX, m_newP) of a phase; adopt it only if all
+// of that succeeds (otherwise the last good estimate stays).
+UkfStatus UnscentedKalmanFilter::acceptCandidate(const char* phase, double jitter) {
     if (m_projectMean) {
         m_projectMean(m_newX);
     }
     if (!m_newX.allFinite()) {
-        return {false, UkfFault::NonFiniteValue, "the updated mean is not finite"};
+        return {false, UkfFault::NonFiniteValue, std::string("the ") + phase + " mean is not finite"};
     }
-    UkfStatus status = factor(m_newP, "the updated covariance");
+    const std::string what = std::string("the ") + phase + " covariance";
+    UkfStatus status = factor(m_newP, what.c_str());
     if (!status.ok) {
         return status;
     }

@@ -153,6 +153,7 @@ private:
     // Shrinks pair j of m_sigma (plus point only; see the header) from the projected m_projected.
     void shrinkPair(Eigen::Index j);
     UkfStatus finishPredict(double jitter);
+    UkfStatus acceptCandidate(const char* phase, double jitter);
     UkfStatus finishUpdate(const Vector& z, double jitter);
 
     template <class F>

@@ -230,12 +230,7 @@ void HybridTest::publish()
     rec.hasUpdating = m_updater != nullptr;
     if (m_updater && m_step == 0) {
         rec.updating = UpdatingSample{};
-        const ParameterValues est = m_updater->identifier().estimate();
-        const ParameterValues sd = m_updater->identifier().standardDeviation();
-        for (const auto& name : m_updater->parameterNames()) {
-            rec.updating.parameters.push_back(est.count(name) ? est.at(name) : 0.0);
-            rec.updating.stddev.push_back(sd.count(name) ? sd.at(name) : 0.0);
-        }
+        m_updater->fillEstimate(rec.updating);
     }
     for (StepObserver* o : m_observers)
         o->onStep(rec);

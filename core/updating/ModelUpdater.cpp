@@ -115,13 +115,7 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
                out);
 
     out.fitError = m_inspector.fitError();
-    const ParameterValues sd = m_identifier->standardDeviation();
-    for (const auto& name : m_identifier->parameterNames()) {
-        auto e = estimate.find(name);
-        auto s = sd.find(name);
-        out.parameters.push_back(e == estimate.end() ? NAN : e->second);
-        out.stddev.push_back(s == sd.end() ? 0.0 : s->second);
-    }
+    fillEstimate(out);
     out.appliedUpdates = m_reporter->appliedCount();
     out.pendingProposals = static_cast<int>(m_reporter->pending().size());
 
@@ -133,6 +127,20 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
                st.message;
     }
     return std::nullopt;
+}
+
+void ModelUpdater::fillEstimate(UpdatingSample& out) const
+{
+    const ParameterValues estimate = m_identifier->estimate();
+    const ParameterValues sd = m_identifier->standardDeviation();
+    out.parameters.clear();
+    out.stddev.clear();
+    for (const auto& name : m_identifier->parameterNames()) {
+        auto e = estimate.find(name);
+        auto s = sd.find(name);
+        out.parameters.push_back(e == estimate.end() ? NAN : e->second);
+        out.stddev.push_back(s == sd.end() ? 0.0 : s->second);
+    }
 }
 
 bool ModelUpdater::approve(int proposalId, Structure& structure, int step, double time,

@@ -62,6 +62,8 @@ public:
     Reporter& reporter() { return *m_reporter; }
     const Reporter& reporter() const { return *m_reporter; }
     const HysteresisLaw& auxiliaryModel() const { return *m_aux; }
+    /// The current estimate and standard deviations, in parameterNames() order.
+    void fillEstimate(UpdatingSample& out) const;
 
     /// Operator decisions (between steps).
     bool approve(int proposalId, Structure& structure, int step, double time,
