@@ -5,23 +5,29 @@
 namespace hsmu::comms {
 
 namespace {
-std::optional<LinkAddress> fail(std::string* error, const std::string& text, const char* why)
-{
+std::optional<LinkAddress> fail(std::string* error, const std::string& text, const char* why) {
     if (error)
         *error = "controller address '" + text + "': " + why +
-                 " (expected 'builtin' or 'tcp://HOST:PORT')";
+                 " (expected 'builtin', 'tcp://HOST:PORT', 'simapp://HOST:PORT' or "
+                 "'generictcp://HOST:PORT')";
     return std::nullopt;
 }
 } // namespace
 
-std::optional<LinkAddress> LinkAddress::parse(const std::string& text, std::string* error)
-{
+std::optional<LinkAddress> LinkAddress::parse(const std::string& text, std::string* error) {
     if (text.empty() || text == "builtin")
         return LinkAddress{};
-    const std::string scheme = "tcp://";
-    if (text.rfind(scheme, 0) != 0)
+    const std::pair<const char*, Kind> schemes[] = {
+        {"tcp://", Kind::Tcp}, {"simapp://", Kind::SimApp}, {"generictcp://", Kind::GenericTcp}};
+    std::string rest;
+    Kind kind = Kind::Builtin;
+    for (const auto& [scheme, k] : schemes)
+        if (text.rfind(scheme, 0) == 0) {
+            rest = text.substr(std::string(scheme).size());
+            kind = k;
+        }
+    if (kind == Kind::Builtin)
         return fail(error, text, "unknown scheme");
-    std::string rest = text.substr(scheme.size());
     std::string host;
     std::string portText;
     if (!rest.empty() && rest.front() == '[') { // [IPv6]:port
@@ -40,22 +46,26 @@ std::optional<LinkAddress> LinkAddress::parse(const std::string& text, std::stri
     if (host.empty())
         return fail(error, text, "missing host");
     unsigned value = 0;
-    const auto [ptr, ec] = std::from_chars(portText.data(), portText.data() + portText.size(), value);
-    if (ec != std::errc() || ptr != portText.data() + portText.size() || value == 0 || value > 65535)
+    const auto [ptr, ec] =
+        std::from_chars(portText.data(), portText.data() + portText.size(), value);
+    if (ec != std::errc() || ptr != portText.data() + portText.size() || value == 0 ||
+        value > 65535)
         return fail(error, text, "port must be a number in 1..65535");
     LinkAddress a;
-    a.kind = Kind::Tcp;
+    a.kind = kind;
     a.host = host;
     a.port = static_cast<std::uint16_t>(value);
     return a;
 }
 
-std::string LinkAddress::toString() const
-{
+std::string LinkAddress::toString() const {
     if (kind == Kind::Builtin)
         return "builtin";
     const bool v6 = host.find(':') != std::string::npos;
-    return "tcp://" + (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+    const char* scheme = kind == Kind::SimApp       ? "simapp://"
+                         : kind == Kind::GenericTcp ? "generictcp://"
+                                                    : "tcp://";
+    return scheme + (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
 }
 
 } // namespace hsmu::comms

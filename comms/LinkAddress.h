@@ -1,6 +1,9 @@
 #pragma once
 // LinkAddress: where the console finds an actuator controller, parsed from
-// "builtin" or "tcp://HOST:PORT" (the form of `hsmu run --controller`). No Qt, no sockets.
+// "builtin", "tcp://HOST:PORT", "simapp://HOST:PORT" or "generictcp://HOST:PORT" (the form of
+// `hsmu run --controller`). tcp:// speaks the protocol the configuration's controller.protocol
+// names (native by default); simapp:// and generictcp:// force that OpenFresco protocol
+// (docs/openfresco.md). No Qt, no sockets.
 
 #include <cstdint>
 #include <optional>
@@ -9,10 +12,10 @@
 namespace hsmu::comms {
 
 struct LinkAddress {
-    enum class Kind { Builtin, Tcp };
+    enum class Kind { Builtin, Tcp, SimApp, GenericTcp };
     Kind kind = Kind::Builtin;
-    std::string host;       ///< for Tcp: host name or IPv4/IPv6 literal
-    std::uint16_t port = 0; ///< for Tcp: 1..65535
+    std::string host;       ///< for a network kind: host name or IPv4/IPv6 literal
+    std::uint16_t port = 0; ///< for a network kind: 1..65535
 
     /// Parse; on failure returns nullopt and sets *error to a sentence saying what was expected.
     static std::optional<LinkAddress> parse(const std::string& text, std::string* error = nullptr);

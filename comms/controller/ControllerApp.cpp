@@ -14,9 +14,17 @@ ControllerApp::~ControllerApp() = default;
 bool ControllerApp::start(std::string& error) {
     std::vector<std::unique_ptr<SpecimenStation>> stations;
     ControllerSettings settings;
+    std::string protocol = m_cmd.protocol;
+    int dataSize = m_cmd.dataSize;
+    double dt = 0.0;
     try {
         const TestConfig cfg = loadConfigFile(m_cmd.config);
         settings = parseControllerSettings(cfg);
+        if (protocol.empty())
+            protocol = cfg.link.protocol;
+        if (dataSize == 0)
+            dataSize = cfg.link.dataSize;
+        dt = cfg.analysis.dt;
         if (!m_cmd.state.empty())
             m_journal = std::make_unique<StateJournal>();
         std::vector<JournalElement> identities;
@@ -57,32 +65,56 @@ bool ControllerApp::start(std::string& error) {
         if (st->committedSteps() > 0)
             std::fprintf(stderr, "hsmu-controller: specimen '%s' continues after step %llu\n",
                          st->name().c_str(), static_cast<unsigned long long>(st->committedSteps()));
-    ControllerServerOptions o;
-    o.bind = m_cmd.bind;
-    o.port = m_cmd.port;
-    o.token = m_cmd.token;
-    o.idleTimeout = settings.idleTimeout;
-    o.rate = settings.rate;
-    o.realTime = !m_cmd.fast;
-    o.quiet = m_cmd.quiet;
     const std::size_t count = stations.size();
-    m_server = std::make_unique<ControllerServer>(o, std::move(stations));
-    if (!m_server->listen(error))
-        return false;
-    std::printf("hsmu-controller: listening on %s:%u (%s pace, %zu specimen%s: %s)\n",
-                m_cmd.bind.c_str(), unsigned(m_server->port()), m_cmd.fast ? "fast" : "real-time",
-                count, count == 1 ? "" : "s", m_names.c_str());
+    std::string what;
+    if (protocol != "native") {
+        OfServerOptions o;
+        o.bind = m_cmd.bind;
+        o.port = m_cmd.port;
+        o.protocol = protocol == "simapp" ? of::OfProtocol::SimApp : of::OfProtocol::GenericTcp;
+        o.siteServer = m_cmd.siteServer;
+        o.dataSize = dataSize;
+        o.dt = dt;
+        o.realTime = !m_cmd.fast;
+        o.rate = settings.rate;
+        o.quiet = m_cmd.quiet;
+        if (!m_cmd.token.empty())
+            std::fprintf(stderr, "hsmu-controller: --token is ignored: the OpenFresco protocols "
+                                 "carry no token\n");
+        m_ofServer = std::make_unique<OfServer>(o, std::move(stations));
+        if (!m_ofServer->listen(error))
+            return false;
+        what = m_ofServer->describe() + ", ";
+    } else {
+        ControllerServerOptions o;
+        o.bind = m_cmd.bind;
+        o.port = m_cmd.port;
+        o.token = m_cmd.token;
+        o.idleTimeout = settings.idleTimeout;
+        o.rate = settings.rate;
+        o.realTime = !m_cmd.fast;
+        o.quiet = m_cmd.quiet;
+        m_server = std::make_unique<ControllerServer>(o, std::move(stations));
+        if (!m_server->listen(error))
+            return false;
+    }
+    std::printf("hsmu-controller: listening on %s:%u (%s%s pace, %zu specimen%s: %s)\n",
+                m_cmd.bind.c_str(), unsigned(port()), what.c_str(),
+                m_cmd.fast ? "fast" : "real-time", count, count == 1 ? "" : "s", m_names.c_str());
     std::fflush(stdout);
     return true;
 }
 
 std::uint16_t ControllerApp::port() const {
-    return m_server ? m_server->port() : 0;
+    return m_server ? m_server->port() : m_ofServer ? m_ofServer->port() : 0;
 }
 
 int ControllerApp::run() {
-    m_server->run();
-    const ControllerStatistics s = m_server->statistics();
+    if (m_ofServer)
+        m_ofServer->run();
+    else
+        m_server->run();
+    const ControllerStatistics s = m_ofServer ? m_ofServer->statistics() : m_server->statistics();
     std::printf(
         "hsmu-controller: stopped; %lld ticks, %lld deadline misses (max lateness %.3f ms), "
         "%lld sessions admitted, %lld refused\n",

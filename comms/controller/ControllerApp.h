@@ -2,12 +2,17 @@
 // ControllerApp: hsmu-controller assembled from its command line: reads the configuration
 // (core's ConfigLoader), makes one SpecimenStation per experimental element (in the order of
 // the configuration), opens the state journal and replays it, and serves.
+// Serves the native protocol (ControllerServer) or, with --protocol / controller.protocol
+// simapp or generictcp, an OpenFresco one (OfServer).
 // Output: one line on stdout once listening,
 //   "hsmu-controller: listening on 127.0.0.1:PORT (fast pace, 1 specimen: Element 1)"
+//   "hsmu-controller: listening on 127.0.0.1:PORT (simapp element server, dataSize 256, fast
+//    pace, 1 specimen: Element 1)"
 // and the loop statistics on stdout when stopped; errors on stderr.
 
 #include "comms/controller/ControllerCommandLine.h"
 #include "comms/controller/ControllerServer.h"
+#include "comms/controller/OfServer.h"
 
 #include <memory>
 #include <string>
@@ -29,6 +34,7 @@ private:
     ControllerCommandLine m_cmd;
     std::unique_ptr<StateJournal> m_journal;
     std::unique_ptr<ControllerServer> m_server;
+    std::unique_ptr<OfServer> m_ofServer;
     std::string m_names;
 };
 

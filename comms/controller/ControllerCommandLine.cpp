@@ -7,6 +7,8 @@ namespace hsmu::comms {
 const char* ControllerCommandLine::usage() {
     return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR] "
            "[--pace realtime|fast] [--token T] [--state FILE] [--quiet]\n"
+           "                       [--protocol native|simapp|generictcp] [--data-size N] "
+           "[--simapp-site]\n"
            "  --config FILE   the console's test configuration (JSON); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
            "  --port PORT     TCP port, 0 = any free port (printed on stdout)\n"
@@ -14,7 +16,12 @@ const char* ControllerCommandLine::usage() {
            "  --pace P        realtime (wall clock, default) or fast (simulated clock)\n"
            "  --token T       shared secret the console's hello must carry\n"
            "  --state FILE    journal of committed steps: a restart continues the specimen\n"
-           "  --quiet         no session log on stderr\n";
+           "  --quiet         no session log on stderr\n"
+           "  --protocol P    native (default), simapp (OpenFresco SimApp element server) or\n"
+           "                  generictcp (a server for OpenFresco's expControl GenericTCP);\n"
+           "                  default: the configuration's controller.protocol\n"
+           "  --data-size N   OpenFresco doubles per frame (default: controller.dataSize, 256)\n"
+           "  --simapp-site   SimApp: answer as a site server (no replies to actions 12-15)\n";
 }
 
 std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, const char* const* argv,
@@ -36,6 +43,26 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
             c.help = true;
         } else if (a == "--quiet") {
             c.quiet = true;
+        } else if (a == "--simapp-site") {
+            c.siteServer = true;
+        } else if (a == "--protocol") {
+            if (!value(c.protocol))
+                return std::nullopt;
+            if (c.protocol != "native" && c.protocol != "simapp" && c.protocol != "generictcp") {
+                error =
+                    "--protocol: expected native, simapp or generictcp, found '" + c.protocol + "'";
+                return std::nullopt;
+            }
+        } else if (a == "--data-size") {
+            if (!value(v))
+                return std::nullopt;
+            char* end = nullptr;
+            const long n = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end != '\0' || n < 1 || n > (1L << 20)) {
+                error = "--data-size: expected 1..1048576 doubles, found '" + v + "'";
+                return std::nullopt;
+            }
+            c.dataSize = static_cast<int>(n);
         } else if (a == "--config") {
             if (!value(c.config))
                 return std::nullopt;

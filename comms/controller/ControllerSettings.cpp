@@ -27,7 +27,9 @@ ControllerSettings parseControllerSettings(const TestConfig& cfg) {
         return s;
     const JsonCursor root(cfg.raw, cfg.sourcePath);
     const JsonCursor c = root.child("controller");
-    c.allowOnly({"rate", "stepDuration", "predictFraction", "idleTimeout"});
+    // protocol, dataSize, ctrlSizes, daqSizes, initFile: the link (core/config/LinkConfig.h).
+    c.allowOnly({"rate", "stepDuration", "predictFraction", "idleTimeout", "protocol", "dataSize",
+                 "ctrlSizes", "daqSizes", "initFile"});
     s.rate = c.number("rate", s.rate);
     if (!(s.rate > 0.0 && s.rate <= 100000.0))
         c.fail("rate", "expected a loop rate in (0, 100000] Hz");

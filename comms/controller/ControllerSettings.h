@@ -10,6 +10,8 @@
 //                              target is due, [0, 1); past it the actuator holds (late target)
 //     "idleTimeout": 10        seconds of silence after which a console session is dropped
 //   }
+// plus the link fields both sides read (protocol, dataSize, ctrlSizes, daqSizes, initFile:
+// core/config/LinkConfig.h, docs/openfresco.md).
 //
 // Ticks per step N = max(1, round(stepDuration * rate)); prediction ticks
 // P = min(N - 1, floor(predictFraction * N)).

@@ -46,6 +46,14 @@ void SpecimenStation::makeSpecimen() {
         m_specimen->prepare(m_dt);
 }
 
+double SpecimenStation::initialStiffness() const {
+    return m_specimen->trueLaw().initialTangent();
+}
+
+double SpecimenStation::tangentStiffness() const {
+    return m_specimen->trueLaw().trialTangent();
+}
+
 HelloAckMsg SpecimenStation::status() const {
     HelloAckMsg a;
     a.committedSteps = m_committed;

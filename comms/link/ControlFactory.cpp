@@ -1,5 +1,9 @@
 #include "comms/link/ControlFactory.h"
 
+#include "comms/openfresco/GenericTcpControl.h"
+#include "comms/openfresco/SimAppControl.h"
+
+#include <algorithm>
 #include <chrono>
 #include <random>
 
@@ -12,9 +16,49 @@ std::uint64_t newSessionId() {
     return id == 0 ? 1 : id;
 }
 
+std::string linkProtocol(const LinkAddress& address, const LinkSpec& link) {
+    switch (address.kind) {
+    case LinkAddress::Kind::Builtin:
+        return "builtin";
+    case LinkAddress::Kind::SimApp:
+        return "simapp";
+    case LinkAddress::Kind::GenericTcp:
+        return "generictcp";
+    case LinkAddress::Kind::Tcp:
+        break;
+    }
+    return link.protocol;
+}
+
 ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options) {
-    if (address.kind == LinkAddress::Kind::Builtin)
+    return makeControlFactory(address, options, LinkSpec{});
+}
+
+ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options,
+                                  const LinkSpec& link) {
+    const std::string protocol = linkProtocol(address, link);
+    if (protocol == "builtin")
         return {};
+    if (protocol == "simapp" || protocol == "generictcp") {
+        of::OfControlOptions o;
+        o.sizes.ctrl = link.ctrlSizes;
+        o.sizes.daq = link.daqSizes;
+        o.sizes.dataSize = link.dataSize;
+        o.initLines = link.initLines;
+        o.connectTimeout = options.connectTimeout;
+        o.stepDeadline = options.stepDeadline;
+        o.connectAttempts = std::max(1, options.reconnectAttempts);
+        o.retryDelay = options.reconnectDelay;
+        const bool simapp = protocol == "simapp";
+        return
+            [address, o, simapp](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
+                if (simapp)
+                    return std::make_unique<of::SimAppControl>(address.host, address.port,
+                                                               spec.name, o);
+                return std::make_unique<of::GenericTcpControl>(address.host, address.port,
+                                                               spec.name, o);
+            };
+    }
     TcpControlOptions o = options;
     if (o.sessionId == 0)
         o.sessionId = newSessionId();

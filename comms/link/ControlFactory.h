@@ -8,6 +8,10 @@
 //                        configuration), with the element's limits, all sharing one session
 //                        id (options.sessionId, or one drawn here) so the controller sees one
 //                        console session.
+//   simapp://HOST:PORT, generictcp://HOST:PORT, or tcp:// with link.protocol "simapp" /
+//                     "generictcp" -> one SimAppControl / GenericTcpControl per experimental
+//                        element (comms/openfresco), with link's dataSize, sizes and init
+//                        lines; deadlines from options (connectTimeout, stepDeadline).
 // The returned controls connect in prepare(), i.e. when HybridTest::prepare() runs.
 
 #include "comms/LinkAddress.h"
@@ -18,6 +22,12 @@ namespace hsmu::comms {
 
 ControlFactory makeControlFactory(const LinkAddress& address,
                                   const TcpControlOptions& options = {});
+/// The same, with the configuration's link section choosing the protocol for tcp://.
+ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options,
+                                  const LinkSpec& link);
+/// The protocol a link to address speaks: "native", "simapp" or "generictcp" ("builtin" for
+/// the in-process specimens).
+std::string linkProtocol(const LinkAddress& address, const LinkSpec& link);
 
 /// A random non-zero 64-bit session id.
 std::uint64_t newSessionId();

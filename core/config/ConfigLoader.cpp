@@ -5,6 +5,7 @@
 #include "core/hysteresis/LawFactory.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -161,7 +162,8 @@ ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 TestConfig parseConfig(const nlohmann::json& document, const std::string& sourceName)
 {
     const JsonCursor root(document, sourceName);
-    // "controller" is read by hsmu-controller (comms/controller/ControllerSettings.h), not here.
+    // "controller": the link fields here (LinkConfig); the rest is hsmu-controller's
+    // (comms/controller/ControllerSettings.h).
     root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis",
                     "controller", "updating"});
     TestConfig cfg;
@@ -169,6 +171,9 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
     cfg.raw = document;
     cfg.name = root.string("name", "unnamed test");
     cfg.description = root.string("description", "");
+    cfg.link = parseLinkSpec(
+        root, sourceName.empty() ? std::string()
+                                 : std::filesystem::path(sourceName).parent_path().string());
 
     const JsonCursor s = root.child("structure");
     s.allowOnly({"dofs", "equalDofs", "damping", "elements"});

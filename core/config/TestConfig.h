@@ -3,6 +3,7 @@
 // parsed but not yet built. Plain data; ConfigLoader fills it, TestFactory builds from it.
 // Units: kN, m, s, t (tonne) throughout; rotations in rad, moments in kN m.
 
+#include "core/config/LinkConfig.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
 #include "core/updating/Inspector.h"
@@ -111,6 +112,7 @@ struct TestConfig {
     GroundMotionSpec groundMotion;
     AnalysisSpec analysis;
     UpdatingSpec updating;
+    LinkSpec link; ///< the console's link protocol (the "controller" section)
     nlohmann::json raw; ///< the document as read (for records and reports)
 };
 

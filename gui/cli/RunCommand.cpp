@@ -113,8 +113,8 @@ int RunCommand::exec(const QStringList& arguments) {
                       << Qt::endl;
             cfg.updating.approval = options.approval.toStdString();
         }
-        test = buildHybridTest(cfg,
-                               comms::makeControlFactory(options.controller, linkOptions(options)));
+        test = buildHybridTest(
+            cfg, comms::makeControlFactory(options.controller, linkOptions(options), cfg.link));
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
@@ -148,9 +148,10 @@ int RunCommand::exec(const QStringList& arguments) {
     if (options.plots)
         test->addObserver(&records);
 
-    if (options.controller.kind == comms::LinkAddress::Kind::Tcp)
-        err() << tr("hsmu run: connecting to %1")
-                     .arg(QString::fromStdString(options.controller.toString()))
+    if (options.controller.kind != comms::LinkAddress::Kind::Builtin)
+        err() << tr("hsmu run: connecting to %1 (%2 protocol)")
+                     .arg(QString::fromStdString(options.controller.toString()),
+                          QString::fromStdString(comms::linkProtocol(options.controller, cfg.link)))
               << Qt::endl;
     if (!test->prepare())
         return fail(tr("the test cannot start: %1").arg(QString::fromStdString(test->lastError())));

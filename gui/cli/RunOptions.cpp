@@ -22,8 +22,10 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
     const QCommandLineOption plotsOpt(QStringLiteral("plots"), tr("Write PNG plots."));
     const QCommandLineOption controllerOpt(
         QStringLiteral("controller"),
-        tr("Actuator controller: builtin (in-process virtual specimens, the default) or "
-           "tcp://HOST:PORT (hsmu-controller or a lab controller)."),
+        tr("Actuator controller: builtin (in-process virtual specimens, the default), "
+           "tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration's "
+           "controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp "
+           "server) or generictcp://HOST:PORT (a server for OpenFresco's GenericTCP)."),
         QStringLiteral("address"), QStringLiteral("builtin"));
     const QCommandLineOption tokenOpt(
         QStringLiteral("token"), tr("Shared secret for the controller."), QStringLiteral("token"));

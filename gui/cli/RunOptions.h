@@ -1,7 +1,7 @@
 #pragma once
 // RunOptions: the arguments of `hsmu run` (see RunCommand.h and docs/cli.md):
 //   CONFIG --out DIR [--ground-motion FILE] [--scale S] [--dt DT] [--duration T]
-//   [--allow-unstable] [--plots] [--controller builtin|tcp://HOST:PORT] [--token T]
+//   [--allow-unstable] [--plots] [--controller builtin|tcp://|simapp://|generictcp://HOST:PORT] [--token T]
 //   [--reconnect N] [--approval manual|approveAll|rejectAll]
 // Thread rules: plain data; parse() on the main thread.
 
@@ -23,7 +23,7 @@ public:
     QString outDir;
     bool plots = false;
     ConfigOverrides overrides;
-    comms::LinkAddress controller; ///< builtin (in-process virtual specimens) or tcp
+    comms::LinkAddress controller; ///< builtin (in-process virtual specimens) or a link
     QString token;                 ///< shared secret for the controller's hello
     int reconnect = 0;             ///< headless resumes after a link fault (per fault)
     QString approval;              ///< "" keeps the configuration's updating.approval

@@ -1,0 +1,334 @@
+#include "comms/controller/OfServer.h"
+
+#include "comms/openfresco/OfFrame.h"
+#include "comms/openfresco/OfSocket.h"
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+namespace hsmu::comms {
+
+using namespace of;
+
+namespace {
+
+constexpr double kHeaderTimeout = 10.0; // [s] from connect to the sizes header
+constexpr double kWriteTimeout = 10.0;  // [s] for a reply
+
+volatile std::sig_atomic_t g_signalled = 0;
+
+extern "C" void onSignal(int) {
+    g_signalled = 1;
+}
+
+std::string reasonOf(const Message& m) {
+    if (const auto* e = std::get_if<ErrorMsg>(&m))
+        return e->reason;
+    return std::string("unexpected ") + messageTypeName(messageTypeOf(m));
+}
+
+} // namespace
+
+OfServer::OfServer(const OfServerOptions& options,
+                   std::vector<std::unique_ptr<SpecimenStation>> stations)
+    : m_opt(options), m_stations(std::move(stations)), m_listener(std::make_unique<OfListener>()),
+      m_measured(m_stations.size()) {
+    m_listener->setCancel([this] { return m_stop.load() || g_signalled != 0; });
+}
+
+OfServer::~OfServer() = default;
+
+std::string OfServer::describe() const {
+    std::string role = m_opt.protocol == OfProtocol::GenericTcp ? "generictcp server"
+                       : m_opt.siteServer                       ? "simapp site server"
+                                                                : "simapp element server";
+    return role + ", dataSize " + std::to_string(m_opt.dataSize);
+}
+
+void OfServer::log(const std::string& line) const {
+    if (!m_opt.quiet)
+        std::fprintf(stderr, "hsmu-controller: %s\n", line.c_str());
+}
+
+bool OfServer::listen(std::string& error) {
+    if (!m_listener->listen(m_opt.bind, m_opt.port, error)) {
+        error = "--bind/--port: " + error;
+        return false;
+    }
+    return true;
+}
+
+std::uint16_t OfServer::port() const {
+    return m_listener->port();
+}
+
+void OfServer::stop() {
+    m_stop = true;
+}
+
+void OfServer::run() {
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    while (!m_stop && g_signalled == 0) {
+        OfSocket socket;
+        socket.setCancel([this] { return m_stop.load() || g_signalled != 0; });
+        std::string error;
+        if (!m_listener->accept(socket, 0.0, error)) {
+            if (!error.empty())
+                log(error);
+            continue;
+        }
+        ++m_stats.sessionsAdmitted;
+        log("session " + socket.peer() + " (" + describe() + ")");
+        serve(socket);
+        socket.close();
+    }
+    m_listener->close();
+}
+
+bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
+    std::uint8_t bytes[kSizesBytes];
+    if (!socket.read(bytes, sizeof bytes, kHeaderTimeout, why)) {
+        why = "no sizes header: " + why;
+        return false;
+    }
+    const OfSizes s = decodeSizes(bytes);
+    if (auto p = s.problem()) {
+        why = "sizes header " + s.describe() + ": " + *p;
+        return false;
+    }
+    const int n = static_cast<int>(m_stations.size());
+    auto bad = [&](const std::string& what) {
+        why = "sizes header " + s.describe() + " refused: " + what;
+        return false;
+    };
+    if (s.dataSize != m_opt.dataSize)
+        return bad("dataSize " + std::to_string(s.dataSize) + ", this server uses " +
+                   std::to_string(m_opt.dataSize));
+    if (s.ctrlSize(Resp::Disp) != n)
+        return bad("ctrl disp must be " + std::to_string(n) + " (one per specimen)");
+    for (Resp r : {Resp::Disp, Resp::Vel, Resp::Accel, Resp::Force})
+        if (s.daqSize(r) != 0 && s.daqSize(r) != n)
+            return bad("daq sizes must be 0 or " + std::to_string(n));
+    if (s.daqSize(Resp::Time) > 1)
+        return bad("daq time must be 0 or 1");
+    if (m_opt.protocol == OfProtocol::SimApp && !m_opt.siteServer && s.dataSize < n * n)
+        return bad("an element server needs dataSize >= n * n = " + std::to_string(n * n));
+    m_sizes = s;
+    return true;
+}
+
+void OfServer::serve(OfSocket& socket) {
+    std::string why;
+    if (!acceptHeader(socket, why)) {
+        ++m_stats.sessionsRefused;
+        log("refused " + socket.peer() + ": " + why);
+        return;
+    }
+    log("sizes " + m_sizes.describe());
+    // A fresh specimen per session, configured with the test's dt.
+    for (auto& st : m_stations) {
+        if (st->committedSteps() > 0 || st->holding())
+            st->reset();
+        ConfigureMsg c;
+        c.dt = m_opt.dt;
+        if (const Message m = st->configure(c); std::holds_alternative<ErrorMsg>(m)) {
+            log("cannot configure specimen '" + st->name() + "': " + reasonOf(m));
+            return;
+        }
+    }
+    m_haveTrial = false;
+    for (auto& m : m_measured)
+        m = MeasurementMsg{};
+
+    const std::size_t frameBytes = static_cast<std::size_t>(m_sizes.dataSize) * sizeof(double);
+    std::vector<std::uint8_t> buffer(std::max(frameBytes, kInitLineBytes));
+    std::vector<double> frame, reply;
+    std::vector<std::uint8_t> out;
+    const bool generic = m_opt.protocol == OfProtocol::GenericTcp;
+    bool framesStarted = false;
+    for (;;) {
+        // Sessions may idle between steps for as long as the client computes; a vanished
+        // peer is a closed socket (or TCP keep-alive), a stop request cancels the read.
+        if (generic && !framesStarted) {
+            if (!socket.read(buffer.data(), 8, 0.0, why))
+                break;
+            const bool isFrame = startsWithAction(buffer.data());
+            const std::size_t total = isFrame ? frameBytes : kInitLineBytes;
+            if (total > 8 && !socket.read(buffer.data() + 8, total - 8, 0.0, why))
+                break;
+            if (!isFrame) {
+                log("init line: " + decodeInitLine(buffer.data()));
+                continue;
+            }
+            framesStarted = true;
+        } else if (!socket.read(buffer.data(), frameBytes, 0.0, why)) {
+            break;
+        }
+        decodeFrame(buffer.data(), m_sizes.dataSize, frame);
+        const auto action = actionOf(frame[0]);
+        if (!action) {
+            log("unknown action code " + std::to_string(frame[0]) + "; session closed");
+            return;
+        }
+        reply.clear();
+        bool answer = false;
+        switch (*action) {
+        case Action::SetTrialResponse:
+            if (!trial(frame, why)) {
+                log(why + "; session closed");
+                return;
+            }
+            break;
+        case Action::CommitState:
+            if (!commitAll(why)) {
+                log(why + "; session closed");
+                return;
+            }
+            break;
+        case Action::GetDaqResponse:
+            reply = daqReply(0, 5);
+            answer = true;
+            break;
+        case Action::GetDisp:
+        case Action::GetVel:
+        case Action::GetAccel:
+        case Action::GetForce:
+        case Action::GetTime: {
+            const int k = static_cast<int>(*action) - static_cast<int>(Action::GetDisp);
+            reply = daqReply(k, k + 1);
+            answer = true;
+            break;
+        }
+        case Action::GetInitialStiff:
+        case Action::GetTangentStiff:
+        case Action::GetDamp:
+        case Action::GetMass:
+            answer = m_opt.protocol == OfProtocol::SimApp && !m_opt.siteServer;
+            if (answer)
+                reply = matrix(static_cast<int>(*action));
+            break;
+        case Action::Terminate:
+            log("session " + socket.peer() + " terminated by the client (99)");
+            return;
+        case Action::Open:
+        case Action::Setup:
+        case Action::Execute:
+            break;
+        }
+        if (answer) {
+            std::string error;
+            if (!encodeFrame(reply, m_sizes.dataSize, out, error) ||
+                !socket.write(out.data(), out.size(), kWriteTimeout, error)) {
+                log("reply not sent: " + error + "; session closed");
+                return;
+            }
+        }
+    }
+    log(socket.closedByPeer() ? "session ended: " + why : "session closed: " + why);
+}
+
+bool OfServer::trial(const std::vector<double>& frame, std::string& why) {
+    const std::size_t n = m_stations.size();
+    if (m_opt.protocol == OfProtocol::GenericTcp && m_haveTrial && !commitAll(why))
+        return false;
+    const int first = m_sizes.ctrlIndex(Resp::Disp);
+    std::vector<std::optional<Message>> result(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double d = frame[static_cast<std::size_t>(first) + i];
+        if (!std::isfinite(d)) {
+            why = "trial for specimen '" + m_stations[i]->name() + "' is not finite";
+            return false;
+        }
+        result[i] = m_stations[i]->target(TargetMsg{m_stations[i]->committedSteps() + 1, d});
+    }
+    // Real time: the step's ticks at the loop rate until every station has its measurement.
+    const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(1.0 / m_opt.rate));
+    auto next = std::chrono::steady_clock::now();
+    for (long guard = 0;; ++guard) {
+        bool waiting = false;
+        for (std::size_t i = 0; i < n; ++i)
+            if (!result[i] && m_stations[i]->needsTicks())
+                waiting = true;
+        if (!waiting)
+            break;
+        if (guard > 10'000'000) {
+            why = "a step did not finish";
+            return false;
+        }
+        next += period;
+        std::this_thread::sleep_until(next);
+        ++m_stats.ticks;
+        for (std::size_t i = 0; i < n; ++i)
+            if (!result[i])
+                result[i] = m_stations[i]->tick();
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto* mm = result[i] ? std::get_if<MeasurementMsg>(&*result[i]) : nullptr;
+        if (!mm) {
+            why = result[i] ? reasonOf(*result[i])
+                            : "specimen '" + m_stations[i]->name() + "' gave no measurement";
+            return false;
+        }
+        m_measured[i] = *mm;
+    }
+    m_haveTrial = true;
+    return true;
+}
+
+bool OfServer::commitAll(std::string& why) {
+    if (!m_haveTrial)
+        return true; // a commit without a trial (e.g. a repeated 5) changes nothing
+    for (auto& st : m_stations) {
+        const Message m = st->commit(CommitMsg{st->committedSteps() + 1});
+        if (!std::holds_alternative<AckMsg>(m)) {
+            why = reasonOf(m);
+            return false;
+        }
+    }
+    m_haveTrial = false;
+    return true;
+}
+
+std::vector<double> OfServer::daqReply(int first, int last) const {
+    // [disp..., vel..., accel..., force..., time], each part as long as its daq size (6), or
+    // n values (1 for time) when asked for alone (7-11).
+    const std::size_t n = m_stations.size();
+    const bool whole = last - first > 1;
+    std::vector<double> v;
+    for (int k = first; k < last; ++k) {
+        const Resp r = static_cast<Resp>(k);
+        const std::size_t count =
+            whole ? static_cast<std::size_t>(m_sizes.daqSize(r)) : (r == Resp::Time ? 1 : n);
+        for (std::size_t i = 0; i < count; ++i) {
+            double x = 0.0;
+            if (r == Resp::Disp)
+                x = m_measured[i].deformation;
+            else if (r == Resp::Force)
+                x = m_measured[i].force;
+            else if (r == Resp::Time)
+                x = static_cast<double>(m_stations[0]->committedSteps() + (m_haveTrial ? 1 : 0)) *
+                    m_opt.dt;
+            v.push_back(x);
+        }
+    }
+    return v;
+}
+
+std::vector<double> OfServer::matrix(int action) const {
+    const std::size_t n = m_stations.size();
+    std::vector<double> m(n * n, 0.0); // column-major; only the diagonal is non-zero
+    if (action == static_cast<int>(Action::GetInitialStiff) ||
+        action == static_cast<int>(Action::GetTangentStiff))
+        for (std::size_t i = 0; i < n; ++i)
+            m[i * n + i] = action == static_cast<int>(Action::GetInitialStiff)
+                               ? m_stations[i]->initialStiffness()
+                               : m_stations[i]->tangentStiffness();
+    return m;
+}
+
+} // namespace hsmu::comms

@@ -1,0 +1,95 @@
+#pragma once
+// OfServer: hsmu-controller speaking an OpenFresco protocol (docs/openfresco.md) instead of
+// the native one, with the same SpecimenStations (virtual specimens, actuator, interlock,
+// journal). One connection at a time, served with blocking calls (comms/openfresco/OfSocket):
+//
+//   header   11 int32 sizes within 10 s of the connect. Accepted when dataSize equals the
+//            server's, ctrl disp = n (the number of specimens, in configuration order), daq
+//            disp / vel / accel / force each 0 or n, daq time 0 or 1, and (element server)
+//            dataSize >= n * n. Otherwise the reason is logged and the connection closed, which
+//            the client sees at once (SimAppControl's probe reports it). Each accepted session
+//            starts from fresh specimens (OpenFresco has no step count to resume from).
+//   init     GenericTCP: 16385-byte init lines may come before the first frame; a message
+//            whose first 8 bytes are not a double holding an action code is such a line
+//            (logged, otherwise ignored).
+//   frames   of dataSize doubles, code in element 0:
+//            3   trial: station i moves to ctrl disp[i]; no reply. GenericTCP (no commit
+//                action) commits the previous measured trial first.
+//            5   commit every station; no reply.
+//            6   reply [daq disp (measured), vel (0), accel (0), force (measured), time].
+//            7-11  reply the daq disp / vel / accel / force / time part alone, at index 0.
+//            12-15 element server: reply the n x n column-major initial stiffness (diagonal
+//                of the laws' initial tangents), tangent stiffness, damping (0), mass (0);
+//                a site server sends nothing (as OpenFresco's site servers do).
+//            1, 2, 4  accepted, nothing to do, no reply.
+//            99  ends the session: the server closes the connection and waits for the next.
+//   faults   an interlock trip, a non-finite value, an unknown code or a peer that closes
+//            mid-frame: logged, the connection is closed, the stations keep their state.
+// Real-time pace runs a step's ticks at the loop rate when its trial arrives.
+// Thread rules: listen() and run() on one thread; stop() from any thread (and SIGINT/SIGTERM).
+
+#include "comms/controller/ControllerServer.h"
+#include "comms/controller/SpecimenStation.h"
+#include "comms/openfresco/OpenFrescoControl.h"
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsmu::comms {
+
+namespace of {
+class OfSocket;
+class OfListener;
+} // namespace of
+
+struct OfServerOptions {
+    std::string bind = "127.0.0.1";
+    std::uint16_t port = 0;
+    of::OfProtocol protocol = of::OfProtocol::SimApp;
+    bool siteServer = false; ///< SimApp: a site server (no replies to 12-15)
+    int dataSize = 256;
+    double dt = 0.01; ///< [s] the step the stations are configured with
+    bool realTime = true;
+    double rate = 1024.0; ///< loop rate [Hz] (real-time pace)
+    bool quiet = false;
+};
+
+class OfServer {
+public:
+    OfServer(const OfServerOptions& options,
+             std::vector<std::unique_ptr<SpecimenStation>> stations);
+    ~OfServer();
+    OfServer(const OfServer&) = delete;
+    OfServer& operator=(const OfServer&) = delete;
+
+    bool listen(std::string& error);
+    std::uint16_t port() const;
+    /// Serve sessions one after the other until stop(), SIGINT or SIGTERM.
+    void run();
+    void stop();
+    ControllerStatistics statistics() const { return m_stats; }
+    /// "simapp element server, dataSize 256"
+    std::string describe() const;
+
+private:
+    void serve(of::OfSocket& socket);
+    bool acceptHeader(of::OfSocket& socket, std::string& why);
+    bool trial(const std::vector<double>& frame, std::string& why);
+    bool commitAll(std::string& why);
+    std::vector<double> daqReply(int first, int last) const;
+    std::vector<double> matrix(int action) const;
+    void log(const std::string& line) const;
+
+    OfServerOptions m_opt;
+    std::vector<std::unique_ptr<SpecimenStation>> m_stations;
+    std::unique_ptr<of::OfListener> m_listener;
+    std::atomic<bool> m_stop{false};
+    of::OfSizes m_sizes;
+    std::vector<MeasurementMsg> m_measured;
+    bool m_haveTrial = false; ///< a measured trial not yet committed
+    ControllerStatistics m_stats;
+};
+
+} // namespace hsmu::comms

@@ -1,0 +1,297 @@
+#include "comms/openfresco/OfSocket.h"
+
+#include <boost/asio/connect.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/read.hpp>
+#include <boost/asio/write.hpp>
+
+#include <chrono>
+#include <cstdio>
+
+namespace hsmu::comms::of {
+
+namespace asio = boost::asio;
+using tcp = asio::ip::tcp;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr auto kSlice = std::chrono::milliseconds(200);
+
+std::string secondsText(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g s", s);
+    return buf;
+}
+
+enum class Wait { Done, TimedOut, Cancelled };
+
+/// Run io until *done, the deadline (timeout <= 0: none) or cancel; never returns with a
+/// handler of this operation still pending when the caller then aborts and drains.
+Wait runUntil(asio::io_context& io, const bool& done, double timeout,
+              const std::function<bool()>& cancel) {
+    const bool bounded = timeout > 0.0;
+    const auto deadline =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                           std::chrono::duration<double>(bounded ? timeout : 0.0));
+    while (!done) {
+        auto slice = std::chrono::duration_cast<Clock::duration>(kSlice);
+        if (bounded) {
+            const auto left = deadline - Clock::now();
+            if (left <= Clock::duration::zero())
+                return Wait::TimedOut;
+            slice = std::min(slice, left);
+        }
+        io.run_one_for(slice);
+        if (!done && cancel && cancel())
+            return Wait::Cancelled;
+    }
+    return Wait::Done;
+}
+
+} // namespace
+
+struct OfSocket::Impl {
+    std::shared_ptr<asio::io_context> io = std::make_shared<asio::io_context>(1);
+    std::unique_ptr<tcp::socket> socket = std::make_unique<tcp::socket>(*io);
+    std::function<bool()> cancel;
+    bool eof = false, timedOut = false;
+    std::string peer;
+
+    void configure() {
+        boost::system::error_code ec;
+        socket->set_option(tcp::no_delay(true), ec);
+        socket->set_option(asio::socket_base::keep_alive(true), ec);
+        const auto ep = socket->remote_endpoint(ec);
+        peer = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
+    }
+
+    void abort() {
+        boost::system::error_code ec;
+        socket->shutdown(tcp::socket::shutdown_both, ec);
+        socket->close(ec);
+        io->restart();
+        io->run(); // the aborted handler runs here, before its captures go out of scope
+        peer.clear();
+    }
+};
+
+OfSocket::OfSocket() : d(std::make_unique<Impl>()) {}
+
+OfSocket::~OfSocket() {
+    close();
+}
+
+void OfSocket::setCancel(std::function<bool()> cancelled) {
+    d->cancel = std::move(cancelled);
+}
+
+bool OfSocket::closedByPeer() const {
+    return d->eof;
+}
+
+bool OfSocket::timedOut() const {
+    return d->timedOut;
+}
+
+bool OfSocket::isOpen() const {
+    return d->socket->is_open();
+}
+
+std::string OfSocket::peer() const {
+    return d->peer;
+}
+
+void OfSocket::close() {
+    if (d->socket->is_open())
+        d->abort();
+}
+
+bool OfSocket::connect(const std::string& host, std::uint16_t port, double timeout,
+                       std::string& error) {
+    close();
+    d->eof = d->timedOut = false;
+    const std::string where = host + ":" + std::to_string(port);
+    tcp::resolver resolver(*d->io);
+    bool done = false;
+    boost::system::error_code result;
+    d->io->restart();
+    resolver.async_resolve(
+        host, std::to_string(port),
+        [&](const boost::system::error_code& ec, tcp::resolver::results_type endpoints) {
+            if (ec) {
+                result = ec;
+                done = true;
+                return;
+            }
+            asio::async_connect(*d->socket, endpoints,
+                                [&](const boost::system::error_code& ec2, const tcp::endpoint&) {
+                                    result = ec2;
+                                    done = true;
+                                });
+        });
+    const Wait w = runUntil(*d->io, done, timeout, d->cancel);
+    if (w != Wait::Done) {
+        resolver.cancel();
+        d->abort();
+        d->timedOut = w == Wait::TimedOut;
+        error = w == Wait::TimedOut
+                    ? "no connection to " + where + " within " + secondsText(timeout)
+                    : "cancelled";
+        return false;
+    }
+    if (result) {
+        d->abort();
+        error = "cannot connect to " + where + ": " + result.message();
+        return false;
+    }
+    d->configure();
+    return true;
+}
+
+bool OfSocket::write(const void* data, std::size_t n, double timeout, std::string& error) {
+    d->eof = d->timedOut = false;
+    if (!isOpen()) {
+        error = "not connected";
+        return false;
+    }
+    bool done = false;
+    boost::system::error_code result;
+    d->io->restart();
+    asio::async_write(*d->socket, asio::buffer(data, n),
+                      [&](const boost::system::error_code& ec, std::size_t) {
+                          result = ec;
+                          done = true;
+                      });
+    const Wait w = runUntil(*d->io, done, timeout, d->cancel);
+    if (w != Wait::Done) {
+        d->abort();
+        d->timedOut = w == Wait::TimedOut;
+        error = w == Wait::TimedOut ? "could not send within " + secondsText(timeout) : "cancelled";
+        return false;
+    }
+    if (result) {
+        d->abort();
+        error = "connection lost while sending: " + result.message();
+        return false;
+    }
+    return true;
+}
+
+bool OfSocket::read(void* data, std::size_t n, double timeout, std::string& error) {
+    d->eof = d->timedOut = false;
+    if (!isOpen()) {
+        error = "not connected";
+        return false;
+    }
+    bool done = false;
+    boost::system::error_code result;
+    std::size_t got = 0;
+    d->io->restart();
+    asio::async_read(*d->socket, asio::buffer(data, n),
+                     [&](const boost::system::error_code& ec, std::size_t k) {
+                         result = ec;
+                         got = k;
+                         done = true;
+                     });
+    const Wait w = runUntil(*d->io, done, timeout, d->cancel);
+    if (w != Wait::Done) {
+        d->abort();
+        d->timedOut = w == Wait::TimedOut;
+        error = w == Wait::TimedOut ? "no reply within " + secondsText(timeout) : "cancelled";
+        return false;
+    }
+    if (result) {
+        d->eof = result == asio::error::eof;
+        d->abort();
+        error = d->eof
+                    ? (got == 0 ? "the peer closed the connection"
+                                : "the peer closed the connection in the middle of a frame (" +
+                                      std::to_string(got) + " of " + std::to_string(n) + " bytes)")
+                    : "connection lost: " + result.message();
+        return false;
+    }
+    return true;
+}
+
+struct OfListener::Impl {
+    std::shared_ptr<asio::io_context> io = std::make_shared<asio::io_context>(1);
+    tcp::acceptor acceptor{*io};
+    std::function<bool()> cancel;
+};
+
+OfListener::OfListener() : d(std::make_unique<Impl>()) {}
+
+OfListener::~OfListener() {
+    close();
+}
+
+void OfListener::setCancel(std::function<bool()> cancelled) {
+    d->cancel = std::move(cancelled);
+}
+
+bool OfListener::listen(const std::string& bind, std::uint16_t port, std::string& error) {
+    boost::system::error_code ec;
+    const auto address = asio::ip::make_address(bind, ec);
+    if (ec) {
+        error = "'" + bind + "' is not an IP address";
+        return false;
+    }
+    const tcp::endpoint ep(address, port);
+    d->acceptor.open(ep.protocol(), ec);
+    if (!ec)
+        d->acceptor.set_option(asio::socket_base::reuse_address(true), ec);
+    if (!ec)
+        d->acceptor.bind(ep, ec);
+    if (!ec)
+        d->acceptor.listen(asio::socket_base::max_listen_connections, ec);
+    if (ec) {
+        error = "cannot listen on " + bind + ":" + std::to_string(port) + ": " + ec.message();
+        return false;
+    }
+    return true;
+}
+
+std::uint16_t OfListener::port() const {
+    boost::system::error_code ec;
+    const auto ep = d->acceptor.local_endpoint(ec);
+    return ec ? 0 : ep.port();
+}
+
+void OfListener::close() {
+    boost::system::error_code ec;
+    d->acceptor.close(ec);
+}
+
+bool OfListener::accept(OfSocket& out, double timeout, std::string& error) {
+    out.close();
+    // The accepted socket lives on the listener's io_context (one thread serves both).
+    out.d->io = d->io;
+    out.d->socket = std::make_unique<tcp::socket>(*d->io);
+    bool done = false;
+    boost::system::error_code result;
+    d->io->restart();
+    d->acceptor.async_accept(*out.d->socket, [&](const boost::system::error_code& ec) {
+        result = ec;
+        done = true;
+    });
+    if (runUntil(*d->io, done, timeout, d->cancel) != Wait::Done) {
+        boost::system::error_code ec;
+        d->acceptor.cancel(ec);
+        d->io->restart();
+        d->io->run();
+        out.close();
+        error.clear();
+        return false;
+    }
+    if (result) {
+        out.close();
+        error = "accept failed: " + result.message();
+        return false;
+    }
+    out.d->configure();
+    return true;
+}
+
+} // namespace hsmu::comms::of

@@ -1,0 +1,198 @@
+#include "comms/openfresco/OpenFrescoControl.h"
+
+#include "comms/openfresco/OfFrame.h"
+#include "comms/openfresco/OfSocket.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+namespace hsmu::comms::of {
+
+const char* ofProtocolName(OfProtocol p) {
+    return p == OfProtocol::SimApp ? "simapp" : "generictcp";
+}
+
+OpenFrescoControl::OpenFrescoControl(OfProtocol protocol, std::string host, std::uint16_t port,
+                                     std::string element, OfControlOptions options)
+    : m_protocol(protocol), m_socket(std::make_unique<OfSocket>()), m_host(std::move(host)),
+      m_port(port), m_element(std::move(element)), m_opt(std::move(options)) {}
+
+OpenFrescoControl::~OpenFrescoControl() {
+    if (m_socket->isOpen())
+        sendRequest(static_cast<int>(Action::Terminate), {});
+    m_socket->close();
+}
+
+std::string OpenFrescoControl::where() const {
+    const bool v6 = m_host.find(':') != std::string::npos;
+    return std::string(ofProtocolName(m_protocol)) + "://" + (v6 ? "[" + m_host + "]" : m_host) +
+           ":" + std::to_string(m_port);
+}
+
+std::string OpenFrescoControl::description() const {
+    return std::string(m_protocol == OfProtocol::SimApp ? "OpenFresco SimApp"
+                                                        : "OpenFresco GenericTCP") +
+           " link " + where() + " for specimen '" + m_element + "' (" + m_opt.sizes.describe() +
+           ")";
+}
+
+bool OpenFrescoControl::linkUp() const {
+    return m_socket->isOpen();
+}
+
+ControlResult OpenFrescoControl::linkFault(const std::string& what) {
+    m_socket->close();
+    m_linkError = what;
+    m_awaitingMeasurement = false;
+    return ControlResult::fault("link to " + where() + ": " + what);
+}
+
+ControlResult OpenFrescoControl::sendRequest(int action, const std::vector<double>& values) {
+    std::vector<double> v;
+    v.reserve(values.size() + 1);
+    v.push_back(action);
+    v.insert(v.end(), values.begin(), values.end());
+    std::string error;
+    if (!encodeFrame(v, m_opt.sizes.dataSize, m_buffer, error))
+        return ControlResult::fault("link to " + where() + ": " + error);
+    if (!m_socket->write(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error))
+        return linkFault(error);
+    return ControlResult::success();
+}
+
+ControlResult OpenFrescoControl::connectOnce() {
+    std::string error;
+    m_connectFailed = false;
+    if (!m_socket->connect(m_host, m_port, m_opt.connectTimeout, error)) {
+        m_connectFailed = true;
+        m_linkError = error;
+        return ControlResult::fault("link to " + where() + ": " + error);
+    }
+    const auto header = encodeSizes(m_opt.sizes);
+    if (!m_socket->write(header.data(), header.size(), m_opt.stepDeadline, error))
+        return linkFault("sending the sizes header: " + error);
+    if (m_protocol == OfProtocol::GenericTcp)
+        for (const std::string& line : m_opt.initLines) {
+            std::vector<std::uint8_t> bytes;
+            if (!encodeInitLine(line, bytes, error))
+                return linkFault(error);
+            if (!m_socket->write(bytes.data(), bytes.size(), m_opt.stepDeadline, error))
+                return linkFault("sending the init lines: " + error);
+        }
+    // The probe: a whole reply of dataSize doubles proves the server took the header.
+    if (ControlResult r = sendRequest(static_cast<int>(Action::GetDaqResponse), {}); !r.ok)
+        return r;
+    m_buffer.resize(static_cast<std::size_t>(m_opt.sizes.dataSize) * sizeof(double));
+    if (!m_socket->read(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error)) {
+        const bool refused = m_socket->closedByPeer();
+        return linkFault(refused ? "the server closed the connection after the sizes header (" +
+                                       m_opt.sizes.describe() +
+                                       "): it does not accept these sizes; make controller."
+                                       "dataSize and the sizes match the server's"
+                                 : "no answer to the first getDaqResponse (" +
+                                       m_opt.sizes.describe() + "): " + error +
+                                       "; a server with another dataSize waits for more bytes");
+    }
+    if (m_opt.logConnect)
+        std::fprintf(stderr, "hsmu: %s connected, specimen '%s': %s\n", where().c_str(),
+                     m_element.c_str(), m_opt.sizes.describe().c_str());
+    m_linkError.clear();
+    return ControlResult::success();
+}
+
+ControlResult OpenFrescoControl::prepare(double dt) {
+    if (!(dt > 0.0))
+        return ControlResult::fault(where() + ": dt must be > 0");
+    if (auto why = m_opt.sizes.problem())
+        return ControlResult::fault(where() + ": " + *why);
+    if (m_opt.sizes.ctrlSize(Resp::Disp) < 1 || m_opt.sizes.daqSize(Resp::Disp) < 1 ||
+        m_opt.sizes.daqSize(Resp::Force) < 1)
+        return ControlResult::fault(where() +
+                                    ": the sizes need ctrl disp, daq disp and daq "
+                                    "force of at least 1 (" +
+                                    m_opt.sizes.describe() + ")");
+    m_dt = dt;
+    ControlResult r;
+    for (int i = 0; i < std::max(1, m_opt.connectAttempts); ++i) {
+        if (i > 0)
+            std::this_thread::sleep_for(std::chrono::duration<double>(m_opt.retryDelay));
+        r = connectOnce();
+        if (r.ok || !m_connectFailed)
+            break;
+    }
+    return r;
+}
+
+ControlResult OpenFrescoControl::setTarget(double d) {
+    if (m_holding)
+        return ControlResult::fault(where() + " is holding: " + m_holdReason);
+    if (!m_socket->isOpen())
+        return ControlResult::fault(
+            "link to " + where() + " is down (" + m_linkError +
+            "); OpenFresco protocols cannot resume a lost session: restart the test");
+    if (m_protocol == OfProtocol::GenericTcp && m_measuredUncommitted)
+        return ControlResult::fault(where() +
+                                    ": GenericTCP has no commit, so a measured step cannot be "
+                                    "repeated; restart the test");
+    const OfSizes& s = m_opt.sizes;
+    std::vector<double> ctrl(static_cast<std::size_t>(s.ctrlTotal()), 0.0);
+    ctrl[static_cast<std::size_t>(s.ctrlIndex(Resp::Disp) - 1)] = d;
+    if (s.ctrlSize(Resp::Time) > 0)
+        ctrl[static_cast<std::size_t>(s.ctrlIndex(Resp::Time) - 1)] =
+            static_cast<double>(m_committed + 1) * m_dt;
+    if (ControlResult r = sendRequest(static_cast<int>(Action::SetTrialResponse), ctrl); !r.ok)
+        return r;
+    m_awaitingMeasurement = true;
+    return ControlResult::success();
+}
+
+ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
+    if (!m_awaitingMeasurement)
+        return ControlResult::fault(where() + ": measure() without a target");
+    m_awaitingMeasurement = false;
+    if (ControlResult r = sendRequest(static_cast<int>(Action::GetDaqResponse), {}); !r.ok)
+        return r;
+    std::string error;
+    m_buffer.resize(static_cast<std::size_t>(m_opt.sizes.dataSize) * sizeof(double));
+    if (!m_socket->read(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error))
+        return linkFault("no measurement for step " + std::to_string(m_committed + 1) + ": " +
+                         error);
+    decodeFrame(m_buffer.data(), m_opt.sizes.dataSize, m_values);
+    const double d = m_values[static_cast<std::size_t>(m_opt.sizes.daqIndex(Resp::Disp))];
+    const double f = m_values[static_cast<std::size_t>(m_opt.sizes.daqIndex(Resp::Force))];
+    if (!std::isfinite(d) || !std::isfinite(f))
+        return linkFault("the measured response of step " + std::to_string(m_committed + 1) +
+                         " is not finite");
+    out.deformation = d;
+    out.force = f;
+    m_measuredUncommitted = true;
+    return ControlResult::success();
+}
+
+ControlResult OpenFrescoControl::commit() {
+    if (!m_measuredUncommitted)
+        return ControlResult::fault(where() + ": commit() without a measured step");
+    if (m_protocol == OfProtocol::SimApp)
+        if (ControlResult r = sendRequest(static_cast<int>(Action::CommitState), {}); !r.ok)
+            return r;
+    m_measuredUncommitted = false;
+    ++m_committed;
+    return ControlResult::success();
+}
+
+void OpenFrescoControl::hold(const std::string& reason) {
+    // OpenFresco has no hold message: no new trial is sent, which keeps the specimen where it is.
+    m_holding = true;
+    m_holdReason = reason;
+    m_awaitingMeasurement = false;
+}
+
+void OpenFrescoControl::resume() {
+    m_holding = false;
+    m_holdReason.clear();
+}
+
+} // namespace hsmu::comms::of

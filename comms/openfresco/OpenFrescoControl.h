@@ -1,0 +1,92 @@
+#pragma once
+// OpenFrescoControl: an ExperimentalControl over one of OpenFresco's wire protocols
+// (docs/openfresco.md), the common part of SimAppControl and GenericTcpControl.
+//
+// prepare(): connect (TCP_NODELAY), send the 11-int32 sizes header, (GenericTCP) the init
+// lines, then one getDaqResponse (6) as a probe: its reply must come back whole within the
+// step deadline. A server that does not accept the sizes (ours closes the connection, see
+// OfServer) therefore fails prepare() with a message naming the sizes, instead of a stream
+// that desynchronizes later. The negotiated sizes are logged on stderr at connect.
+// Per step:
+//   setTarget(d)  [3, d at ctrl disp, zeros, time at ctrl time when sized]   (no reply)
+//   measure()     [6] -> reply: deformation = daq disp[0], force = daq force[0]
+//   commit()      SimApp: [5] (no reply); GenericTCP has no commit (nothing is sent)
+// The destructor sends [99] (terminate) on an open link. Every read and write has a deadline;
+// a timeout, a closed or vanished peer or a malformed reply closes the link and returns a
+// fault (the test holds with every committed step kept). OpenFresco has no session or step
+// count to resume from, so a lost link is not reconnected: resume() on a closed link leaves
+// setTarget() reporting it, and the test is restarted instead.
+// Thread rules: one thread at a time (the test worker).
+
+#include "comms/openfresco/OfSizes.h"
+#include "core/experimental/ExperimentalControl.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hsmu::comms::of {
+
+class OfSocket;
+
+enum class OfProtocol { SimApp, GenericTcp };
+const char* ofProtocolName(OfProtocol p);
+
+struct OfControlOptions {
+    OfSizes sizes;                      ///< must have ctrl disp, daq disp and daq force >= 1
+    std::vector<std::string> initLines; ///< GenericTCP: sent after the header
+    double connectTimeout = 5.0;        ///< [s] per connection attempt
+    double stepDeadline = 10.0;         ///< [s] for each read or write
+    int connectAttempts = 3;            ///< attempts in prepare() while nobody listens
+    double retryDelay = 0.5;            ///< [s] between them
+    bool logConnect = true;             ///< one line on stderr with the negotiated sizes
+};
+
+class OpenFrescoControl : public ExperimentalControl {
+public:
+    ~OpenFrescoControl() override;
+
+    std::string description() const override;
+    ControlResult prepare(double dt) override;
+    ControlResult setTarget(double d) override;
+    ControlResult measure(ControlMeasurement& out) override;
+    ControlResult commit() override;
+    void hold(const std::string& reason) override;
+    void resume() override;
+
+    bool linkUp() const;
+    const std::string& linkError() const { return m_linkError; }
+    std::uint64_t committedSteps() const { return m_committed; }
+    OfProtocol protocol() const { return m_protocol; }
+    /// "simapp://HOST:PORT" or "generictcp://HOST:PORT".
+    std::string where() const;
+
+protected:
+    OpenFrescoControl(OfProtocol protocol, std::string host, std::uint16_t port,
+                      std::string element, OfControlOptions options);
+
+private:
+    ControlResult connectOnce();
+    ControlResult linkFault(const std::string& what);
+    ControlResult sendRequest(int action, const std::vector<double>& values);
+
+    OfProtocol m_protocol;
+    std::unique_ptr<OfSocket> m_socket;
+    std::string m_host;
+    std::uint16_t m_port;
+    std::string m_element;
+    OfControlOptions m_opt;
+    double m_dt = 0.0;
+    std::uint64_t m_committed = 0;
+    bool m_awaitingMeasurement = false;
+    bool m_measuredUncommitted = false;
+    bool m_holding = false;
+    bool m_connectFailed = false;
+    std::string m_holdReason;
+    std::string m_linkError;
+    std::vector<std::uint8_t> m_buffer;
+    std::vector<double> m_values;
+};
+
+} // namespace hsmu::comms::of

@@ -1,0 +1,33 @@
+#pragma once
+// LinkConfig: the console's side of the "controller" section (docs/configuration.md): which
+// wire protocol links the console to a controller given as tcp://HOST:PORT, and for the
+// OpenFresco protocols the frame sizes (docs/openfresco.md). core only carries these values;
+// comms builds the link. The section's other fields (rate, stepDuration, ...) belong to
+// hsmu-controller (comms/controller/ControllerSettings.h) and are ignored here.
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+class JsonCursor;
+
+struct LinkSpec {
+    std::string protocol = "native"; ///< "native", "simapp" or "generictcp"
+    int dataSize = 256;              ///< OpenFresco: doubles per frame
+    /// OpenFresco sizes header: disp, vel, accel, force, time (ctrl: sent, daq: received).
+    std::array<int, 5> ctrlSizes{1, 0, 0, 0, 0};
+    std::array<int, 5> daqSizes{1, 0, 0, 1, 0};
+    std::string initFile;               ///< generictcp: path (resolved), "" = none
+    std::vector<std::string> initLines; ///< its lines, read when the configuration is loaded
+};
+
+/// The names of the protocol field's values, for messages.
+inline constexpr const char* kLinkProtocols = "native, simapp or generictcp";
+
+/// Read the link fields of root.controller (defaults when absent). baseDir resolves a relative
+/// initFile. Throws ConfigError naming the field.
+LinkSpec parseLinkSpec(const JsonCursor& root, const std::string& baseDir);
+
+} // namespace hsmu

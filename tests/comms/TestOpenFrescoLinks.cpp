@@ -1,0 +1,478 @@
+// The OpenFresco links (docs/openfresco.md) end to end: each console client (SimApp,
+// GenericTCP) against each of hsmu-controller's OpenFresco servers (a real process), equal to
+// the in-process run; the client's bytes checked frame by frame by a raw socket peer written
+// here; the server's replies checked by a raw client; and the failure cases: a wrong dataSize,
+// a peer that closes mid-step, code 99, an interlock.
+#include "comms/link/ControlFactory.h"
+#include "comms/openfresco/GenericTcpControl.h"
+#include "comms/openfresco/OfFrame.h"
+#include "comms/openfresco/OfSocket.h"
+#include "comms/openfresco/SimAppControl.h"
+#include "core/hysteresis/HysteresisLaw.h"
+
+#include "ControllerProcess.h"
+#include "LinkFixture.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cstring>
+#include <thread>
+
+using namespace hsmu;
+using namespace hsmu::comms;
+using namespace hsmu::comms::of;
+using namespace linkfixture;
+
+namespace {
+
+constexpr double kWait = 20.0; // [s] every socket wait (a loaded 2-core machine)
+
+TcpControlOptions patientOptions() {
+    TcpControlOptions o;
+    o.connectTimeout = 20.0;
+    o.stepDeadline = 30.0;
+    o.reconnectAttempts = 5;
+    o.reconnectDelay = 0.2;
+    return o;
+}
+
+OfControlOptions ofOptions(int dataSize = 256) {
+    OfControlOptions o;
+    o.sizes.dataSize = dataSize;
+    o.connectTimeout = kWait;
+    o.stepDeadline = kWait;
+    o.logConnect = false;
+    return o;
+}
+
+/// The header a client sends, built here from the documented layout (not with encodeSizes).
+std::vector<std::uint8_t> header(std::array<std::int32_t, 11> v) {
+    std::vector<std::uint8_t> b(44);
+    std::memcpy(b.data(), v.data(), 44);
+    return b;
+}
+
+/// A frame of dataSize doubles: values from index 0, zeros after.
+std::vector<std::uint8_t> frame(std::vector<double> values, int dataSize) {
+    values.resize(static_cast<std::size_t>(dataSize), 0.0);
+    std::vector<std::uint8_t> b(values.size() * 8);
+    std::memcpy(b.data(), values.data(), b.size());
+    return b;
+}
+
+std::vector<double> doubles(const std::vector<std::uint8_t>& b) {
+    std::vector<double> v(b.size() / 8);
+    std::memcpy(v.data(), b.data(), v.size() * 8);
+    return v;
+}
+
+/// A raw client of hsmu-controller.
+struct RawPeer {
+    OfSocket socket;
+    std::string error;
+    bool send(const std::vector<std::uint8_t>& b) {
+        return socket.write(b.data(), b.size(), kWait, error);
+    }
+    std::optional<std::vector<double>> receive(int dataSize) {
+        std::vector<std::uint8_t> b(static_cast<std::size_t>(dataSize) * 8);
+        if (!socket.read(b.data(), b.size(), kWait, error))
+            return std::nullopt;
+        return doubles(b);
+    }
+};
+
+/// A scripted server on a thread: accepts one connection and runs script(socket); what it
+/// saw goes into notes (checked by the test on the main thread after join()).
+class ScriptedServer {
+public:
+    explicit ScriptedServer(std::function<void(OfSocket&, std::vector<std::string>&)> script) {
+        std::string e;
+        m_ok = m_listener.listen("127.0.0.1", 0, e);
+        m_thread = std::thread([this, script = std::move(script)] {
+            OfSocket s;
+            std::string error;
+            if (!m_listener.accept(s, kWait, error)) {
+                notes.push_back("no connection");
+                return;
+            }
+            script(s, notes);
+        });
+    }
+    ~ScriptedServer() { join(); }
+    void join() {
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+    bool ok() const { return m_ok; }
+    std::uint16_t port() const { return m_listener.port(); }
+    std::vector<std::string> notes;
+
+private:
+    OfListener m_listener;
+    bool m_ok = false;
+    std::thread m_thread;
+};
+
+/// Read n bytes as the raw server; a note on failure.
+bool readBytes(OfSocket& s, std::vector<std::uint8_t>& b, std::size_t n,
+               std::vector<std::string>& notes, const char* what) {
+    b.assign(n, 0);
+    std::string e;
+    if (s.read(b.data(), n, kWait, e))
+        return true;
+    notes.push_back(std::string(what) + ": " + e);
+    return false;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v)
+        s += x + "; ";
+    return s;
+}
+
+} // namespace
+
+class TestOpenFrescoLinks : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    std::string m_config; // condition 3, 1 s, noise and a fracture event
+    std::string m_quiet;  // noise-free, for values computed here
+
+    ControllerProcess controller(const std::string& config, const QString& protocol,
+                                 QStringList extra = {}) {
+        return ControllerProcess(QStringList{"--config", QString::fromStdString(config), "--pace",
+                                             "fast", "--protocol", protocol} +
+                                 extra);
+    }
+
+private slots:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        m_config = writeConfig(m_dir.path(), "c3.json", condition3(1.0));
+        nlohmann::json q = condition3(0.2);
+        auto& sp = q["structure"]["elements"][0]["specimen"];
+        sp["forceNoiseStd"] = 0.0;
+        sp.erase("fracture");
+        m_quiet = writeConfig(m_dir.path(), "quiet.json", q);
+    }
+
+    void simAppClientEqualsInProcessRun() {
+        ControllerProcess ctl = controller(m_config, "simapp");
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        QVERIFY2(ctl.log().contains("simapp element server, dataSize 256"), qPrintable(ctl.log()));
+        const TestConfig cfg = loadConfigFile(m_config);
+        const Run linked = runTest(
+            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::SimApp, "127.0.0.1", ctl.port()},
+                                    patientOptions(), cfg.link));
+        QVERIFY2(linked.prepared, linked.error.c_str());
+        QCOMPARE(linked.state, HybridTest::State::Finished);
+        QCOMPARE(linked.records.size(), std::size_t(101));
+        QVERIFY(everyStepOnce(linked));
+        const double diff = maxDifference(runTest(cfg, {}), linked);
+        QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("terminated by the client (99)"), qPrintable(ctl.log()));
+    }
+
+    void genericTcpClientWithInitLinesEqualsInProcessRun() {
+        // tcp:// with controller.protocol = generictcp in the configuration, on both sides.
+        nlohmann::json j = condition3(1.0);
+        j["controller"] = {{"protocol", "generictcp"}, {"dataSize", 64}};
+        const std::string path = writeConfig(m_dir.path(), "gtcp.json", j);
+        ControllerProcess ctl(
+            QStringList{"--config", QString::fromStdString(path), "--pace", "fast"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        QVERIFY2(ctl.log().contains("generictcp server, dataSize 64"), qPrintable(ctl.log()));
+        TestConfig cfg = loadConfigFile(path);
+        cfg.link.initLines = {"# lab controller init", "loadConfig lab-42"};
+        const Run linked = runTest(
+            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::Tcp, "127.0.0.1", ctl.port()},
+                                    patientOptions(), cfg.link));
+        QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
+        QVERIFY(everyStepOnce(linked));
+        const double diff = maxDifference(runTest(cfg, {}), linked);
+        QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("init line: loadConfig lab-42"), qPrintable(ctl.log()));
+    }
+
+    void simAppServerRepliesAtIndexZero() {
+        ControllerProcess ctl = controller(m_quiet, "simapp", {"--data-size", "32"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const TestConfig cfg = loadConfigFile(m_quiet);
+        auto law = buildLaw(cfg.elements[0].specimen.trueMaterial, "test");
+        RawPeer p;
+        QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
+        QVERIFY(p.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 32})));
+        const double d = 0.004;
+        QVERIFY(p.send(frame({3.0, d}, 32)));
+        QVERIFY(p.send(frame({6.0}, 32)));
+        auto r = p.receive(32);
+        QVERIFY2(r, p.error.c_str());
+        law->setTrialDeformation(d);
+        QCOMPARE((*r)[0], d);                       // daq disp
+        QCOMPARE((*r)[1], law->trialForce());       // daq force
+        QCOMPARE((*r)[2], cfg.analysis.dt);         // daq time: step 1
+        for (std::size_t i = 3; i < r->size(); ++i) // padding
+            QCOMPARE((*r)[i], 0.0);
+        QVERIFY(p.send(frame({10.0}, 32))); // getForce alone, at index 0
+        r = p.receive(32);
+        QVERIFY2(r, p.error.c_str());
+        QCOMPARE((*r)[0], law->trialForce());
+        QCOMPARE((*r)[1], 0.0);
+        QVERIFY(p.send(frame({12.0}, 32))); // 1 x 1 initial stiffness
+        r = p.receive(32);
+        QVERIFY2(r, p.error.c_str());
+        QCOMPARE((*r)[0], law->initialTangent());
+        QVERIFY(p.send(frame({14.0}, 32))); // damping: zero
+        r = p.receive(32);
+        QVERIFY2(r && (*r)[0] == 0.0, p.error.c_str());
+        QVERIFY(p.send(frame({5.0}, 32)));  // commit: no reply
+        QVERIFY(p.send(frame({99.0}, 32))); // terminate: the server closes
+        std::uint8_t byte;
+        QVERIFY(!p.socket.read(&byte, 1, kWait, p.error));
+        QVERIFY2(p.socket.closedByPeer(), p.error.c_str());
+
+        // The next session is admitted and starts from a fresh specimen.
+        RawPeer q;
+        QVERIFY2(q.socket.connect("127.0.0.1", ctl.port(), kWait, q.error), q.error.c_str());
+        QVERIFY(q.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 32})));
+        QVERIFY(q.send(frame({6.0}, 32)));
+        r = q.receive(32);
+        QVERIFY2(r && (*r)[0] == 0.0 && (*r)[1] == 0.0, q.error.c_str());
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("terminated by the client (99)"), qPrintable(ctl.log()));
+    }
+
+    void siteServerDoesNotAnswerMatrices() {
+        ControllerProcess ctl = controller(m_quiet, "simapp", {"--simapp-site"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawPeer p;
+        QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
+        QVERIFY(p.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 256})));
+        QVERIFY(p.send(frame({3.0, 0.002}, 256)));
+        QVERIFY(p.send(frame({12.0}, 256))); // no reply from a site server
+        QVERIFY(p.send(frame({6.0}, 256)));
+        const auto r = p.receive(256);
+        QVERIFY2(r, p.error.c_str());
+        QCOMPARE((*r)[0], 0.002); // the first frame back is the daq reply, not a matrix
+    }
+
+    void simAppClientFramesByteByByte() {
+        constexpr int N = 24;
+        ScriptedServer server([](OfSocket& s, std::vector<std::string>& notes) {
+            std::vector<std::uint8_t> b;
+            if (!readBytes(s, b, 44, notes, "header"))
+                return;
+            for (int i = 0; i < 11; ++i) {
+                std::int32_t v;
+                std::memcpy(&v, b.data() + 4 * i, 4);
+                notes.push_back(std::to_string(v).insert(0, 1, 'h'));
+            }
+            auto expectFrame = [&](const char* what) -> std::vector<double> {
+                if (!readBytes(s, b, N * 8, notes, what))
+                    return {};
+                return doubles(b);
+            };
+            auto reply = [&](std::vector<double> v) {
+                const auto f = frame(std::move(v), N);
+                std::string e;
+                s.write(f.data(), f.size(), kWait, e);
+            };
+            auto describe = [&](const std::vector<double>& v) {
+                std::string t;
+                bool padded = true;
+                for (std::size_t i = 0; i < v.size(); ++i)
+                    if (i >= 3 && v[i] != 0.0)
+                        padded = false;
+                if (v.empty())
+                    return std::string("none");
+                t = std::to_string(static_cast<int>(v[0])) + (padded ? " padded" : " NOT padded");
+                return t;
+            };
+            auto f = expectFrame("probe");
+            notes.push_back("probe " + describe(f));
+            reply({0.0, 0.0});
+            f = expectFrame("trial");
+            notes.push_back("trial " + describe(f));
+            notes.push_back("d " + std::to_string(f.size() > 1 ? f[1] : -1));
+            notes.push_back("t " + std::to_string(f.size() > 2 ? f[2] : -1));
+            f = expectFrame("get");
+            notes.push_back("get " + describe(f));
+            reply({0.00195, 12.5});
+            f = expectFrame("commit");
+            notes.push_back("commit " + describe(f));
+            f = expectFrame("end");
+            notes.push_back("end " + describe(f));
+            std::uint8_t extra;
+            std::string e;
+            notes.push_back(s.read(&extra, 1, kWait, e) ? "extra bytes" : "closed");
+        });
+        QVERIFY(server.ok());
+        {
+            OfControlOptions o = ofOptions(N);
+            o.sizes.ctrl = {1, 0, 0, 0, 1}; // disp and time
+            SimAppControl c("127.0.0.1", server.port(), "Element 1", o);
+            const ControlResult p = c.prepare(0.02);
+            QVERIFY2(p.ok, p.reason.c_str());
+            QVERIFY(c.setTarget(0.002).ok);
+            ControlMeasurement m;
+            const ControlResult r = c.measure(m);
+            QVERIFY2(r.ok, r.reason.c_str());
+            QCOMPARE(m.deformation, 0.00195); // reply index 0 = daq disp
+            QCOMPARE(m.force, 12.5);          // daq force after disp (vel, accel sizes 0)
+            QVERIFY(c.commit().ok);
+        } // the destructor sends 99 and closes
+        server.join();
+        const std::vector<std::string> expected = {"h1",
+                                                   "h0",
+                                                   "h0",
+                                                   "h0",
+                                                   "h1",
+                                                   "h1",
+                                                   "h0",
+                                                   "h0",
+                                                   "h1",
+                                                   "h0",
+                                                   "h24",
+                                                   "probe 6 padded",
+                                                   "trial 3 padded",
+                                                   "d 0.002000",
+                                                   "t 0.020000",
+                                                   "get 6 padded",
+                                                   "commit 5 padded",
+                                                   "end 99 padded",
+                                                   "closed"};
+        QVERIFY2(server.notes == expected, joined(server.notes).c_str());
+    }
+
+    void genericTcpClientSendsInitLinesAndNoCommit() {
+        constexpr int N = 16;
+        ScriptedServer server([](OfSocket& s, std::vector<std::string>& notes) {
+            std::vector<std::uint8_t> b;
+            if (!readBytes(s, b, 44, notes, "header"))
+                return;
+            for (int i = 0; i < 2; ++i) {
+                if (!readBytes(s, b, kInitLineBytes, notes, "init line"))
+                    return;
+                notes.push_back("line '" + decodeInitLine(b.data()) + "'");
+            }
+            for (int k = 0; k < 5; ++k) {
+                if (!readBytes(s, b, N * 8, notes, "frame"))
+                    return;
+                const auto v = doubles(b);
+                notes.push_back(std::to_string(static_cast<int>(v[0])));
+                if (v[0] == 6.0) {
+                    const auto f = frame({v.size() > 1 ? 0.001 * k : 0.0, 1.0 * k}, N);
+                    std::string e;
+                    s.write(f.data(), f.size(), kWait, e);
+                }
+            }
+        });
+        QVERIFY(server.ok());
+        {
+            OfControlOptions o = ofOptions(N);
+            o.initLines = {"loadConfig lab", ""};
+            GenericTcpControl c("127.0.0.1", server.port(), "Element 1", o);
+            QVERIFY(c.prepare(0.01).ok);
+            ControlMeasurement m;
+            QVERIFY(c.setTarget(0.001).ok);
+            QVERIFY(c.measure(m).ok);
+            QVERIFY(c.commit().ok); // nothing on the wire
+            QVERIFY(c.setTarget(0.002).ok);
+            // A measured step cannot be repeated on GenericTCP.
+            QVERIFY(c.measure(m).ok);
+            c.hold("test");
+            c.resume();
+            const ControlResult again = c.setTarget(0.002);
+            QVERIFY(!again.ok);
+            QVERIFY2(again.reason.find("no commit") != std::string::npos, again.reason.c_str());
+        }
+        server.join();
+        const std::vector<std::string> expected = {
+            "line 'loadConfig lab'", "line ''", "6", "3", "6", "3", "6"};
+        QVERIFY2(server.notes == expected, joined(server.notes).c_str());
+    }
+
+    void wrongDataSizeIsReportedAtConnect() {
+        ControllerProcess ctl = controller(m_quiet, "simapp");
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        SimAppControl c("127.0.0.1", ctl.port(), "Element 1", ofOptions(128));
+        const ControlResult r = c.prepare(0.01);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.reason.find("dataSize 128") != std::string::npos &&
+                     r.reason.find("does not accept these sizes") != std::string::npos,
+                 r.reason.c_str());
+        QVERIFY(!c.linkUp());
+        // Sizes that do not match the specimens (2 ctrl displacements for 1 specimen).
+        OfControlOptions o = ofOptions();
+        o.sizes.ctrl = {2, 0, 0, 0, 0};
+        SimAppControl two("127.0.0.1", ctl.port(), "Element 1", o);
+        QVERIFY(!two.prepare(0.01).ok);
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("dataSize 128, this server uses 256") &&
+                     ctl.log().contains("ctrl disp must be 1"),
+                 qPrintable(ctl.log()));
+    }
+
+    void peerClosingMidStepHoldsTheTest() {
+        ScriptedServer server([](OfSocket& s, std::vector<std::string>& notes) {
+            std::vector<std::uint8_t> b;
+            if (!readBytes(s, b, 44, notes, "header") || !readBytes(s, b, 256 * 8, notes, "probe"))
+                return;
+            const auto f = frame({0.0, 0.0}, 256);
+            std::string e;
+            s.write(f.data(), f.size(), kWait, e);
+            if (!readBytes(s, b, 256 * 8, notes, "trial"))
+                return;
+            notes.push_back("closing after the trial");
+            s.close(); // mid-step: the measurement never comes
+        });
+        QVERIFY(server.ok());
+        const TestConfig cfg = loadConfigFile(m_quiet);
+        const Run run = runTest(cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::SimApp,
+                                                                    "127.0.0.1", server.port()},
+                                                        patientOptions(), cfg.link));
+        server.join();
+        QVERIFY2(run.prepared, run.error.c_str());
+        QCOMPARE(run.state, HybridTest::State::Holding);
+        QVERIFY2(run.error.find("closed the connection") != std::string::npos, run.error.c_str());
+        QCOMPARE(run.records.size(), std::size_t(1)); // step 0 only, nothing invented
+        QCOMPARE(run.holds, 1);
+        QCOMPARE(server.notes.back(), std::string("closing after the trial"));
+    }
+
+    void interlockTripEndsTheSessionAndTheTestHolds() {
+        // The controller's own interlock at half the peak deformation of the free run; the
+        // console's limits are removed so that only the controller guards.
+        nlohmann::json j = condition3(1.0);
+        auto& el = j["structure"]["elements"][0];
+        el.erase("limits");
+        const std::string free = writeConfig(m_dir.path(), "free.json", j);
+        double peak = 0.0;
+        for (const StepRecord& r : runTest(loadConfigFile(free), {}).records)
+            peak = std::max(peak, std::abs(r.elements[0].deformation));
+        QVERIFY(peak > 0.0);
+        el["specimen"]["interlock"] = {{"deformation", 0.5 * peak}};
+        const std::string path = writeConfig(m_dir.path(), "tight.json", j);
+        ControllerProcess ctl = controller(path, "simapp");
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const TestConfig cfg = loadConfigFile(path);
+        const Run run = runTest(
+            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::SimApp, "127.0.0.1", ctl.port()},
+                                    patientOptions(), cfg.link));
+        QCOMPARE(run.state, HybridTest::State::Holding);
+        QVERIFY2(run.error.find("closed the connection") != std::string::npos, run.error.c_str());
+        QVERIFY(run.records.size() > 1);
+        for (const StepRecord& r : run.records)
+            QVERIFY(std::abs(r.elements[0].deformation) <= 0.5 * peak);
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("interlock") && ctl.log().contains("session closed"),
+                 qPrintable(ctl.log()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestOpenFrescoLinks)
+#include "TestOpenFrescoLinks.moc"
