@@ -5,11 +5,18 @@
 //   BM_LinkStep            a whole step through TcpControl (target, measurement, commit, ack)
 //   BM_HybridTestOverLink  paper-condition-3, 10 s record, as fast as possible over the link,
 //                          against BM_HybridTestInProcess
+//   BM_SimAppRoundTrip     OpenFresco SimApp against hsmu-controller's OfServer (fast pace):
+//                          [3, trial] + [6] -> reply per step, median and p99 (docs/openfresco.md)
+//   BM_SimAppStep          a whole step through SimAppControl (3, 6 -> reply, 5)
 //   BM_RealTimeDeadlines   the real-time pace for HSMU_BENCH_REALTIME_SECONDS seconds (default
 //                          skipped): deadline misses of the 1024 Hz loop (target 0)
 #include "comms/controller/ControllerServer.h"
+#include "comms/controller/OfServer.h"
 #include "comms/link/ControlFactory.h"
 #include "comms/link/LinkClient.h"
+#include "comms/openfresco/OfFrame.h"
+#include "comms/openfresco/OfSocket.h"
+#include "comms/openfresco/SimAppControl.h"
 #include "core/config/ConfigLoader.h"
 #include "core/test/HybridTest.h"
 
@@ -63,6 +70,34 @@ public:
 
 private:
     std::unique_ptr<ControllerServer> m_server;
+    std::thread m_thread;
+};
+
+/// hsmu-controller's SimApp element server for the preset's specimen, on its own thread.
+class LocalSimAppServer {
+public:
+    LocalSimAppServer() {
+        const TestConfig cfg = condition3(10.0);
+        std::vector<std::unique_ptr<SpecimenStation>> st;
+        st.push_back(std::make_unique<SpecimenStation>(0, cfg.elements[0], ControllerSettings{},
+                                                       SpecimenStation::Pace::Fast, nullptr));
+        OfServerOptions o;
+        o.realTime = false;
+        o.quiet = true;
+        m_server = std::make_unique<OfServer>(o, std::move(st));
+        std::string error;
+        if (!m_server->listen(error))
+            std::fprintf(stderr, "%s\n", error.c_str());
+        m_thread = std::thread([this] { m_server->run(); });
+    }
+    ~LocalSimAppServer() {
+        m_server->stop();
+        m_thread.join();
+    }
+    std::uint16_t port() const { return m_server->port(); }
+
+private:
+    std::unique_ptr<OfServer> m_server;
     std::thread m_thread;
 };
 
@@ -126,6 +161,67 @@ void BM_LinkStep(benchmark::State& state) {
     state.SetItemsProcessed(n);
 }
 BENCHMARK(BM_LinkStep)->UseRealTime()->Unit(benchmark::kMicrosecond);
+
+void BM_SimAppRoundTrip(benchmark::State& state) {
+    LocalSimAppServer server;
+    of::OfSocket socket;
+    std::string e;
+    const of::OfSizes sizes; // ctrl disp 1, daq disp 1 + force 1, dataSize 256
+    const auto header = of::encodeSizes(sizes);
+    if (!socket.connect("127.0.0.1", server.port(), 10.0, e) ||
+        !socket.write(header.data(), header.size(), 10.0, e)) {
+        state.SkipWithError(e.c_str());
+        return;
+    }
+    std::vector<std::uint8_t> trial, get, commit, reply(sizes.dataSize * sizeof(double));
+    of::encodeRequest(of::Action::GetDaqResponse, {}, sizes.dataSize, get, e);
+    of::encodeRequest(of::Action::CommitState, {}, sizes.dataSize, commit, e);
+    std::vector<double> rtt;
+    long n = 0;
+    for (auto _ : state) {
+        ++n;
+        const double d[] = {1e-3 * std::sin(0.01 * double(n))};
+        of::encodeRequest(of::Action::SetTrialResponse, d, sizes.dataSize, trial, e);
+        const auto t0 = std::chrono::steady_clock::now();
+        const bool ok = socket.write(trial.data(), trial.size(), 10.0, e) &&
+                        socket.write(get.data(), get.size(), 10.0, e) &&
+                        socket.read(reply.data(), reply.size(), 10.0, e);
+        const auto t1 = std::chrono::steady_clock::now();
+        if (!ok || !socket.write(commit.data(), commit.size(), 10.0, e)) {
+            state.SkipWithError(e.c_str());
+            return;
+        }
+        const double s = std::chrono::duration<double>(t1 - t0).count();
+        state.SetIterationTime(s);
+        rtt.push_back(s);
+    }
+    state.counters["median_us"] = percentile(rtt, 0.5) * 1e6;
+    state.counters["p99_us"] = percentile(rtt, 0.99) * 1e6;
+}
+BENCHMARK(BM_SimAppRoundTrip)->UseManualTime()->Iterations(20000)->Unit(benchmark::kMicrosecond);
+
+void BM_SimAppStep(benchmark::State& state) {
+    LocalSimAppServer server;
+    of::OfControlOptions o;
+    o.logConnect = false;
+    of::SimAppControl c("127.0.0.1", server.port(), "Element 1", o);
+    if (!c.prepare(0.01).ok) {
+        state.SkipWithError("prepare failed");
+        return;
+    }
+    long n = 0;
+    for (auto _ : state) {
+        ++n;
+        ControlMeasurement m;
+        if (!c.setTarget(1e-3 * std::sin(0.01 * double(n))).ok || !c.measure(m).ok ||
+            !c.commit().ok) {
+            state.SkipWithError("step failed");
+            return;
+        }
+    }
+    state.SetItemsProcessed(n);
+}
+BENCHMARK(BM_SimAppStep)->UseRealTime()->Unit(benchmark::kMicrosecond);
 
 void runHybrid(benchmark::State& state, bool overLink) {
     const TestConfig cfg = condition3(10.0);

@@ -3,6 +3,7 @@
 #include "comms/openfresco/OfFrame.h"
 #include "comms/openfresco/OfSocket.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -262,6 +263,11 @@ bool OfServer::trial(const std::vector<double>& frame, std::string& why) {
         }
         next += period;
         std::this_thread::sleep_until(next);
+        const double late =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - next).count();
+        if (late > 1.0 / m_opt.rate)
+            ++m_stats.deadlineMisses;
+        m_stats.maxLateness = std::max(m_stats.maxLateness, late);
         ++m_stats.ticks;
         for (std::size_t i = 0; i < n; ++i)
             if (!result[i])
