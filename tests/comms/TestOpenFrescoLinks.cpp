@@ -417,6 +417,52 @@ private slots:
                  qPrintable(ctl.log()));
     }
 
+    void silentServerIsAFaultNotAHang() {
+        // A server that takes the header and the probe but never answers (as one with a larger
+        // dataSize would): prepare() fails at its deadline and says why.
+        ScriptedServer server([](OfSocket& s, std::vector<std::string>& notes) {
+            std::vector<std::uint8_t> b;
+            if (!readBytes(s, b, 44 + 256 * 8, notes, "header and probe"))
+                return;
+            std::uint8_t more;
+            std::string e;
+            notes.push_back(s.read(&more, 1, kWait, e) ? "more bytes" : "client closed");
+        });
+        QVERIFY(server.ok());
+        OfControlOptions o = ofOptions();
+        o.stepDeadline = 0.5;
+        SimAppControl c("127.0.0.1", server.port(), "Element 1", o);
+        const ControlResult r = c.prepare(0.01);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.reason.find("no answer to the first getDaqResponse") != std::string::npos,
+                 r.reason.c_str());
+        QVERIFY(!c.linkUp()); // closed: a late reply can never be read as a later one
+        server.join();
+        QCOMPARE(server.notes.back(), std::string("client closed"));
+    }
+
+    void clientVanishingMidFrameFreesTheServer() {
+        ControllerProcess ctl = controller(m_quiet, "simapp");
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        {
+            RawPeer p;
+            QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
+            QVERIFY(p.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 256})));
+            auto half = frame({3.0, 0.001}, 256);
+            half.resize(100);
+            QVERIFY(p.send(half));
+        } // closed mid-frame
+        const TestConfig cfg = loadConfigFile(m_quiet);
+        const Run linked = runTest(
+            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::SimApp, "127.0.0.1", ctl.port()},
+                                    patientOptions(), cfg.link));
+        QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
+        QVERIFY(maxDifference(runTest(cfg, {}), linked) <= 1e-9);
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("in the middle of a frame (100 of 2048 bytes)"),
+                 qPrintable(ctl.log()));
+    }
+
     void peerClosingMidStepHoldsTheTest() {
         ScriptedServer server([](OfSocket& s, std::vector<std::string>& notes) {
             std::vector<std::uint8_t> b;
