@@ -51,12 +51,8 @@ ControlResult OpenFrescoControl::linkFault(const std::string& what) {
 }
 
 ControlResult OpenFrescoControl::sendRequest(int action, const std::vector<double>& values) {
-    std::vector<double> v;
-    v.reserve(values.size() + 1);
-    v.push_back(action);
-    v.insert(v.end(), values.begin(), values.end());
     std::string error;
-    if (!encodeFrame(v, m_opt.sizes.dataSize, m_buffer, error))
+    if (!encodeRequest(static_cast<Action>(action), values, m_opt.sizes.dataSize, m_buffer, error))
         return ControlResult::fault("link to " + where() + ": " + error);
     if (!m_socket->write(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error))
         return linkFault(error);

@@ -198,6 +198,25 @@ private slots:
         QVERIFY2(ctl.log().contains("init line: loadConfig lab-42"), qPrintable(ctl.log()));
     }
 
+    void realTimePaceGivesTheSameResult() {
+        // Wall clock at the 1024 Hz loop, ~10 ms per step, each step's ticks run when its
+        // trial arrives: with an ideal actuator the result is still the in-process one.
+        const std::string path = writeConfig(m_dir.path(), "short.json", condition3(0.3));
+        ControllerProcess ctl(QStringList{"--config", QString::fromStdString(path), "--pace",
+                                          "realtime", "--protocol", "simapp"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const TestConfig cfg = loadConfigFile(path);
+        const Run linked = runTest(
+            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::SimApp, "127.0.0.1", ctl.port()},
+                                    patientOptions(), cfg.link));
+        QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
+        QCOMPARE(linked.records.size(), std::size_t(31));
+        QVERIFY(maxDifference(runTest(cfg, {}), linked) <= 1e-9);
+        ctl.stop();
+        // 30 steps of round(0.01 s * 1024 Hz) = 10 ticks
+        QVERIFY2(ctl.log().contains("stopped; 300 ticks"), qPrintable(ctl.log()));
+    }
+
     void simAppServerRepliesAtIndexZero() {
         ControllerProcess ctl = controller(m_quiet, "simapp", {"--data-size", "32"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
