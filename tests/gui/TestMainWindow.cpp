@@ -1,13 +1,27 @@
 // MainWindow wiring: a preset loads and runs; the plots receive every step (the specimen's
-// measured loop and its twin, each DOF's history); the emergency hold is always available.
+// measured loop and its twin, each DOF's history); the emergency hold is always available;
+// Start goes through the pre-flight confirmation; the parameters table's edits reach the
+// updater; critical alarms demand attention until acknowledged; settings are remembered.
 
+#include "gui/app/AlarmList.h"
+#include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/ParameterTableModel.h"
+#include "gui/app/ParametersPanel.h"
+#include "gui/app/PreflightDialog.h"
+#include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 
 #include <QAction>
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace hsmu;
@@ -16,8 +30,14 @@ using namespace hsmu::gui;
 class TestMainWindow : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // QSettings in a test location
+        QSettings().clear();
+    }
+
     void presetRunsIntoThePlots() {
         MainWindow window;
+        window.setConfirmBeforeStart(false);
         window.setSpeed(0.0);
         window.show();
         QString error;
@@ -55,19 +75,147 @@ private slots:
         QVERIFY(bar);
         QAction* hold = bar->emergencyHoldAction();
         QVERIFY(hold->isEnabled());
-        QVERIFY(hold->shortcuts().contains(QKeySequence(Qt::Key_Escape)));
+        QCOMPARE(hold->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_H));
+        QVERIFY(!hold->shortcuts().contains(QKeySequence(Qt::Key_Escape))); // no accidents
+        QVERIFY(hold->text().contains(hold->shortcut().toString(QKeySequence::NativeText)));
         QCOMPARE(hold->shortcutContext(), Qt::ApplicationShortcut);
         for (RunState s : {RunState::Idle, RunState::Ready, RunState::Running, RunState::Paused,
                            RunState::Holding, RunState::Finished, RunState::Failed}) {
             bar->setRunState(s);
             QVERIFY(hold->isEnabled());
         }
+        window.setConfirmBeforeStart(false);
         window.setSpeed(1.0);
         QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
         window.startTest();
         QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Running, 5000);
         hold->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Holding, 5000);
+    }
+
+    void startWaitsForThePreflightConfirmation() {
+        MainWindow window;
+        window.setSpeed(0.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        PreflightDialog* dialog = window.preflightDialog();
+        QVERIFY(!dialog->startButton()->isEnabled()); // zero offsets not yet confirmed
+        QTest::qWait(100);
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        QCOMPARE(window.controller().recordsCommitted(), qint64(1)); // step 0 only
+        auto* verdict = dialog->findChild<QLabel*>(QStringLiteral("stabilityVerdict"));
+        QVERIFY(verdict && verdict->text().contains(QStringLiteral("Stable")));
+        // Cancel: nothing starts; Start again shows the same check.
+        dialog->reject();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
+        QTest::qWait(100);
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 5000);
+        dialog = window.preflightDialog();
+        dialog->zeroConfirmation()->setChecked(true);
+        QVERIFY(dialog->startButton()->isEnabled());
+        dialog->startButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Finished, 30000);
+    }
+
+    void parameterTableEditsReachTheUpdater() {
+        MainWindow window;
+        window.setConfirmBeforeStart(false);
+        window.setSpeed(5.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        TestController& c = window.controller();
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(c.recordsDelivered() >= 50, 20000);
+        c.pause();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
+        auto* panel = window.findChild<ParametersPanel*>();
+        QVERIFY(panel);
+        ParameterTableModel* model = panel->model();
+        QTRY_COMPARE_WITH_TIMEOUT(model->rowCount(), 7, 5000);
+        int row = -1;
+        for (int r = 0; r < model->rowCount(); ++r)
+            if (model->index(r, ParameterTableModel::Name).data() == QStringLiteral("gamma"))
+                row = r;
+        QVERIFY(row >= 0);
+        QVERIFY(model->flags(model->index(row, ParameterTableModel::Upper)) & Qt::ItemIsEditable);
+        QVERIFY(model->setData(model->index(row, ParameterTableModel::Upper), 2.25, Qt::EditRole));
+        QTRY_COMPARE_WITH_TIMEOUT(c.updating().parameter("gamma")->bounds.upper, 2.25, 5000);
+        QCOMPARE(c.updating().parameter("gamma")->bounds.lower, 0.0);
+        // The table shows what the updater reports back.
+        QTRY_COMPARE_WITH_TIMEOUT(
+            model->index(row, ParameterTableModel::Upper).data(Qt::EditRole).toDouble(), 2.25,
+            5000);
+        QVERIFY(model->setData(model->index(row, ParameterTableModel::Locked), Qt::Checked,
+                               Qt::CheckStateRole));
+        QTRY_VERIFY_WITH_TIMEOUT(c.updating().parameter("gamma")->locked, 5000);
+        QCOMPARE(model->index(row, ParameterTableModel::Locked).data(Qt::CheckStateRole).toInt(),
+                 int(Qt::Checked));
+        // Not a number: refused, nothing sent.
+        QSignalSpy refused(model, &ParameterTableModel::editRefused);
+        QVERIFY(!model->setData(model->index(row, ParameterTableModel::Lower),
+                                QStringLiteral("abc"), Qt::EditRole));
+        QCOMPARE(refused.count(), 1);
+        c.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
+        QVERIFY(
+            !(model->flags(model->index(row, ParameterTableModel::Upper)) & Qt::ItemIsEditable));
+    }
+
+    void criticalAlarmDemandsAttentionUntilAcknowledged() {
+        MainWindow window;
+        window.show();
+        auto* alarms = window.findChild<AlarmList*>();
+        auto* banner = window.findChild<QWidget*>(QStringLiteral("attentionBanner"));
+        QVERIFY(alarms && banner);
+        QVERIFY(!banner->isVisible());
+        alarms->addAlarm({1.5, 150, AlarmSeverity::Warning, AlarmKind::FitError, "fit"});
+        QVERIFY(!banner->isVisible());
+        alarms->addAlarm({2.0, 200, AlarmSeverity::Critical, AlarmKind::Fracture, "fracture"});
+        QVERIFY(banner->isVisible());
+        QCOMPARE(alarms->unacknowledgedCritical(), 1);
+        QTreeWidgetItem* item = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
+        QCOMPARE(item->text(AlarmList::Time), QStringLiteral("2.00"));
+        QCOMPARE(item->text(AlarmList::Message), QStringLiteral("fracture"));
+        QVERIFY(item->background(AlarmList::Message).style() != Qt::NoBrush);
+        alarms->acknowledgeAll();
+        QCOMPARE(alarms->unacknowledgedCritical(), 0);
+        QVERIFY(!banner->isVisible());
+        QCOMPARE(item->background(AlarmList::Message).style(), Qt::NoBrush);
+    }
+
+    void settingsAreRemembered() {
+        QSettings().clear();
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("my-test.json"));
+        QVERIFY(QFile::copy(QStringLiteral(":/presets/sdof-bouc-wen.json"), file));
+        QByteArray state;
+        {
+            MainWindow window;
+            window.show();
+            QVERIFY(window.loadConfiguration(file));
+            auto* alarmDock = window.findChild<QDockWidget*>(QStringLiteral("alarmDock"));
+            QVERIFY(alarmDock);
+            alarmDock->setFloating(true);
+            auto* setup = window.findChild<SetupPanel*>();
+            setup->setControllerAddress(QStringLiteral("tcp://127.0.0.1:5999"));
+            QVERIFY(window.applySetup()); // the address is remembered when applied
+            window.close();
+        }
+        QCOMPARE(ConsoleSettings::recentFiles().value(0), QFileInfo(file).absoluteFilePath());
+        QCOMPARE(ConsoleSettings::controllerAddress(), QStringLiteral("tcp://127.0.0.1:5999"));
+        QVERIFY(!ConsoleSettings::windowState().isEmpty());
+        MainWindow again;
+        auto* alarmDock = again.findChild<QDockWidget*>(QStringLiteral("alarmDock"));
+        QVERIFY(alarmDock->isFloating()); // the layout came back
+        QCOMPARE(again.findChild<SetupPanel*>()->controllerText(),
+                 QStringLiteral("tcp://127.0.0.1:5999"));
+        ConsoleSettings::setLanguage(QStringLiteral("en"));
+        QCOMPARE(ConsoleSettings::language(), QStringLiteral("en"));
+        QSettings().clear();
     }
 
     void badConfigurationIsReportedNotThrown() {
