@@ -71,7 +71,8 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     auto* setupScroll = new QScrollArea(this);
     setupScroll->setWidget(m_setup);
     setupScroll->setWidgetResizable(true);
-    addDock(setupScroll, tr("Test setup"), QStringLiteral("setupDock"), Qt::LeftDockWidgetArea);
+    QDockWidget* setup =
+        addDock(setupScroll, tr("Test setup"), QStringLiteral("setupDock"), Qt::LeftDockWidgetArea);
     m_parameters = new ParametersPanel(this);
     QDockWidget* params = addDock(m_parameters, tr("Parameters"), QStringLiteral("parametersDock"),
                                   Qt::RightDockWidgetArea);
@@ -109,7 +110,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
 
     resize(1500, 920);
     resizeDocks({m_alarmDock}, {150}, Qt::Vertical);
-    resizeDocks({params}, {430}, Qt::Horizontal);
+    resizeDocks({setup, params}, {330, 380}, Qt::Horizontal);
     m_setup->setControllerAddress(ConsoleSettings::controllerAddress());
     if (const QByteArray g = ConsoleSettings::windowGeometry(); !g.isEmpty())
         restoreGeometry(g);

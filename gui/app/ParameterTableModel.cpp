@@ -95,15 +95,15 @@ QVariant ParameterTableModel::headerData(int section, Qt::Orientation o, int rol
     case Name:
         return tr("Parameter");
     case Value:
-        return tr("Value [norm.]");
+        return tr("Value");
     case Sigma:
-        return tr("Sigma [norm.]");
+        return tr("Sigma");
     case Lower:
-        return tr("Lower bound");
+        return tr("Lower");
     case Upper:
-        return tr("Upper bound");
+        return tr("Upper");
     case Locked:
-        return tr("Locked");
+        return tr("Lock");
     default:
         return {};
     }

@@ -33,8 +33,9 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     m_table = new QTableView(this);
     m_table->setModel(m_model);
     m_table->verticalHeader()->hide();
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(ParameterTableModel::Locked,
+                                                      QHeaderView::ResizeToContents);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                              QAbstractItemView::AnyKeyPressed);
     m_table->setAlternatingRowColors(true);
@@ -48,8 +49,9 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_summary);
     layout->addLayout(thresholdRow);
     layout->addWidget(m_table, 1);
-    auto* note = new QLabel(tr("Values in the law's normalized units (u / u_ref, F / F_ref). "
-                               "Bound and lock edits take effect on the next step."),
+    auto* note = new QLabel(tr("Value, sigma (1 standard deviation) and bounds in the law's "
+                               "normalized units (u / u_ref, F / F_ref). Double-click a bound to "
+                               "edit it; bound and lock edits take effect on the next step."),
                             this);
     note->setWordWrap(true);
     note->setStyleSheet(QStringLiteral("color: palette(mid);"));

@@ -49,9 +49,12 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     m_summary->setWordWrap(true);
     m_tree = new QTreeWidget(this);
     m_tree->setColumnCount(5);
-    m_tree->setHeaderLabels({tr("Proposal / parameter"), tr("Current [norm.]"),
-                             tr("Proposed [norm.]"), tr("Change [%]"), tr("Decision")});
-    m_tree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_tree->setHeaderLabels(
+        {tr("Proposal"), tr("Current"), tr("Proposed"), tr("Change [%]"), tr("Decision")});
+    m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
+    m_tree->header()->setSectionResizeMode(Actions, QHeaderView::ResizeToContents);
+    m_tree->header()->setStretchLastSection(false);
+    m_tree->setToolTip(tr("Current and proposed values in the law's normalized units"));
     m_tree->setAlternatingRowColors(true);
 
     auto* policyRow = new QHBoxLayout;

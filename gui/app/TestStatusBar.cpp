@@ -1,5 +1,7 @@
 #include "gui/app/TestStatusBar.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QLabel>
 
 namespace hsmu::gui {
@@ -49,7 +51,11 @@ void TestStatusBar::setLink(const QString& text, bool ok) {
 }
 
 void TestStatusBar::setRecordingFile(const QString& file) {
-    m_recording->setText(file.isEmpty() ? tr("not recording") : tr("recording: %1").arg(file));
+    // The run folder names the record; the full path is in the tool tip.
+    const QFileInfo info(file);
+    m_recording->setText(file.isEmpty()
+                             ? tr("not recording")
+                             : tr("recording: %1/%2").arg(info.dir().dirName(), info.fileName()));
     m_recording->setToolTip(file);
 }
 

@@ -3,6 +3,7 @@
 // Start goes through the pre-flight confirmation; the parameters table's edits reach the
 // updater; critical alarms demand attention until acknowledged; settings are remembered.
 
+#include "core/record/RecordReader.h"
 #include "gui/app/AlarmList.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
@@ -33,6 +34,8 @@ private slots:
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true); // QSettings in a test location
         QSettings().clear();
+        QVERIFY(m_records.isValid());
+        ConsoleSettings::setRecordDirectory(m_records.path());
     }
 
     void presetRunsIntoThePlots() {
@@ -62,6 +65,14 @@ private slots:
         QCOMPARE(loop->dataCount(), rows);
         QCOMPARE(history->graph(0)->dataCount(), rows);
         QVERIFY(hysteresis->xAxis->range().size() > 0.0);
+
+        // The console recorded every delivered row into its HDF5 record.
+        const QString record = window.controller().recordPath();
+        QVERIFY(record.startsWith(m_records.path()));
+        QCOMPARE(RecordReader(record.toStdString()).rows(), rows);
+        auto* recording = window.findChild<QLabel*>(QStringLiteral("statusRecording"));
+        QVERIFY(recording && recording->toolTip() == record);
+        QVERIFY(recording->text().endsWith(QStringLiteral("/record.h5")));
 
         // Start again after the end: the test is reloaded and the plots restart.
         window.startTest();
@@ -189,6 +200,7 @@ private slots:
 
     void settingsAreRemembered() {
         QSettings().clear();
+        ConsoleSettings::setRecordDirectory(QString()); // not recorded
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("my-test.json"));
         QVERIFY(QFile::copy(QStringLiteral(":/presets/sdof-bouc-wen.json"), file));
@@ -216,6 +228,7 @@ private slots:
         ConsoleSettings::setLanguage(QStringLiteral("en"));
         QCOMPARE(ConsoleSettings::language(), QStringLiteral("en"));
         QSettings().clear();
+        ConsoleSettings::setRecordDirectory(m_records.path());
     }
 
     void badConfigurationIsReportedNotThrown() {
@@ -224,6 +237,9 @@ private slots:
         QVERIFY(!window.loadConfiguration(QStringLiteral("/nonexistent/config.json"), &error));
         QVERIFY2(error.contains(QStringLiteral("config.json")), qPrintable(error));
     }
+
+private:
+    QTemporaryDir m_records;
 };
 
 QTEST_MAIN(TestMainWindow)
