@@ -150,6 +150,7 @@ QWidget* SetupPanel::buildUpdatingGroup() {
     m_updating = new QCheckBox(tr("enabled"), box);
     form->addRow(m_updating);
     m_policy = new QComboBox(box);
+    m_policy->setObjectName(QStringLiteral("setupPolicy"));
     for (ReporterPolicy p : {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
                              ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval})
         m_policy->addItem(PendingUpdatesPanel::describe(p), int(p));

@@ -10,20 +10,28 @@
 #include "gui/app/MainWindow.h"
 #include "gui/app/ParameterTableModel.h"
 #include "gui/app/ParametersPanel.h"
+#include "gui/app/PendingUpdatesPanel.h"
 #include "gui/app/PreflightDialog.h"
+#include "gui/app/SettingsDialog.h"
 #include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
+#include "gui/app/Translations.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace hsmu;
 using namespace hsmu::gui;
@@ -176,6 +184,77 @@ private slots:
             !(model->flags(model->index(row, ParameterTableModel::Upper)) & Qt::ItemIsEditable));
     }
 
+    void setupEditsRebuildTheTestAndLockWhileRunning() {
+        MainWindow window;
+        window.setConfirmBeforeStart(false);
+        window.setSpeed(5.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* dt = setup->findChild<QDoubleSpinBox*>(QStringLiteral("timeStep"));
+        auto* scale = setup->findChild<QDoubleSpinBox*>(QStringLiteral("groundMotionScale"));
+        auto* limits = setup->findChild<QTableWidget*>(QStringLiteral("limitsTable"));
+        auto* policy = setup->findChild<QComboBox*>(QStringLiteral("setupPolicy"));
+        QVERIFY(dt && scale && limits && policy);
+        QCOMPARE(dt->value(), 0.01);
+        QCOMPARE(limits->rowCount(), 1);
+        QCOMPARE(limits->item(0, 0)->text(), QStringLiteral("Element 1"));
+        QVERIFY(!setup->isDirty());
+        dt->setValue(0.005);
+        scale->setValue(0.5);
+        limits->item(0, 2)->setText(QStringLiteral("35"));
+        policy->setCurrentIndex(policy->findData(int(ReporterPolicy::OnApproval)));
+        QVERIFY(setup->isDirty());
+        // A limit that is not a number is refused with the element named; nothing is built.
+        limits->item(0, 1)->setText(QStringLiteral("abc"));
+        QString error;
+        QVERIFY(!setup->edited(&error));
+        QVERIFY2(error.contains(QStringLiteral("Element 1")), qPrintable(error));
+        limits->item(0, 1)->setText(QStringLiteral("0")); // 0 = no limit
+        const auto cfg = setup->edited(&error);
+        QVERIFY2(cfg, qPrintable(error));
+        QCOMPARE(cfg->analysis.dt, 0.005);
+        QCOMPARE(cfg->groundMotion.scale, 0.5);
+        QCOMPARE(cfg->updating.policy, ReporterPolicy::OnApproval);
+        const ElementSpec* e1 = nullptr;
+        for (const ElementSpec& e : cfg->elements)
+            if (e.name == "Element 1")
+                e1 = &e;
+        QVERIFY(e1);
+        QCOMPARE(e1->limits.maxForce, 35.0);
+        QVERIFY(std::isinf(e1->limits.maxDeformation));
+
+        // Start applies the edits first; the setup is read-only while the test runs.
+        window.startTest();
+        TestController& c = window.controller();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Running, 10000);
+        QCOMPARE(c.config().analysis.dt, 0.005);
+        QVERIFY(!setup->isDirty());
+        QVERIFY(!dt->isEnabled());
+        QVERIFY(!limits->isEnabled());
+
+        // Approve a pending update with the panel's button.
+        QTRY_VERIFY_WITH_TIMEOUT(c.recordsDelivered() >= 50, 20000);
+        c.pause();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
+        auto* pending = window.findChild<PendingUpdatesPanel*>();
+        QTRY_COMPARE_WITH_TIMEOUT(pending->shownProposals().size(), qsizetype(1), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!c.updating().pending.empty() &&
+                                     pending->shownProposals().front() ==
+                                         c.updating().pending.front().id,
+                                 5000);
+        const int id = pending->shownProposals().front();
+        auto* approve = pending->findChild<QPushButton*>(QStringLiteral("approve%1").arg(id));
+        QVERIFY(approve && approve->isEnabled());
+        QCOMPARE(c.updating().appliedUpdates, 0);
+        approve->click();
+        QTRY_COMPARE_WITH_TIMEOUT(c.updating().appliedUpdates, 1, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals().isEmpty(), 5000);
+        c.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
+        QVERIFY(dt->isEnabled());
+    }
+
     void criticalAlarmDemandsAttentionUntilAcknowledged() {
         MainWindow window;
         window.show();
@@ -225,7 +304,16 @@ private slots:
         QVERIFY(alarmDock->isFloating()); // the layout came back
         QCOMPARE(again.findChild<SetupPanel*>()->controllerText(),
                  QStringLiteral("tcp://127.0.0.1:5999"));
-        ConsoleSettings::setLanguage(QStringLiteral("en"));
+        // Languages: the embedded catalogues (translations/hsmu_en.ts -> :/i18n/hsmu_en.qm).
+        QVERIFY(Translations::available().contains(QStringLiteral("en")));
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("en")));
+        QVERIFY(!Translations::install(*QCoreApplication::instance(), QStringLiteral("xx")));
+        SettingsDialog dialog;
+        QComboBox* language = dialog.languageBox();
+        const int en = language->findData(QStringLiteral("en"));
+        QVERIFY(en > 0); // after "System default"
+        language->setCurrentIndex(en);
+        dialog.store();
         QCOMPARE(ConsoleSettings::language(), QStringLiteral("en"));
         QSettings().clear();
         ConsoleSettings::setRecordDirectory(m_records.path());
