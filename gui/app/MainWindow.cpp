@@ -71,15 +71,20 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     auto* setupScroll = new QScrollArea(this);
     setupScroll->setWidget(m_setup);
     setupScroll->setWidgetResizable(true);
-    QDockWidget* setup =
-        addDock(setupScroll, tr("Test setup"), QStringLiteral("setupDock"), Qt::LeftDockWidgetArea);
+    setupScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_setupDock = addDock(setupScroll, tr("Test setup"), QStringLiteral("setupDock"),
+                          Qt::RightDockWidgetArea);
     m_parameters = new ParametersPanel(this);
-    QDockWidget* params = addDock(m_parameters, tr("Parameters"), QStringLiteral("parametersDock"),
-                                  Qt::RightDockWidgetArea);
+    m_parametersDock = addDock(m_parameters, tr("Parameters"), QStringLiteral("parametersDock"),
+                               Qt::RightDockWidgetArea);
     m_pending = new PendingUpdatesPanel(this);
     QDockWidget* pending = addDock(m_pending, tr("Pending updates"), QStringLiteral("pendingDock"),
                                    Qt::RightDockWidgetArea);
-    splitDockWidget(params, pending, Qt::Vertical);
+    // The setup matters before a start, the parameters during a run: one tab each, the
+    // plots keep the width; the pending updates stay in view below.
+    splitDockWidget(m_setupDock, pending, Qt::Vertical);
+    tabifyDockWidget(m_setupDock, m_parametersDock);
+    m_setupDock->raise();
 
     auto* alarmPanel = new QWidget(this);
     auto* av = new QVBoxLayout(alarmPanel);
@@ -110,7 +115,8 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
 
     resize(1500, 920);
     resizeDocks({m_alarmDock}, {150}, Qt::Vertical);
-    resizeDocks({setup, params}, {330, 380}, Qt::Horizontal);
+    resizeDocks({m_setupDock}, {440}, Qt::Horizontal);
+    resizeDocks({m_setupDock, pending}, {520, 260}, Qt::Vertical);
     m_setup->setControllerAddress(ConsoleSettings::controllerAddress());
     if (const QByteArray g = ConsoleSettings::windowGeometry(); !g.isEmpty())
         restoreGeometry(g);
@@ -367,6 +373,7 @@ void MainWindow::onTestLoaded() {
     m_pending->setSnapshot({});
     showLinkState(false, false);
     m_pendingRun = RunRequest::None;
+    m_setupDock->raise();
 }
 
 void MainWindow::showLinkState(bool connected, bool fault) {
@@ -393,6 +400,8 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
     m_pending->setEditable(live);
     if (state == RunState::Running || state == RunState::Paused)
         showLinkState(true, false);
+    if (state == RunState::Running && !m_setupDock->isFloating())
+        m_parametersDock->raise(); // the setup is read-only now
     if (state != RunState::Ready)
         m_pendingRun = RunRequest::None;
     if (!message.isEmpty()) {

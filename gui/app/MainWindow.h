@@ -3,7 +3,8 @@
 //   ControlBar (top): presets, open, start / pause / single step / resume / stop, emergency hold
 //   PlotArea (centre): the live plots (rows ~30 times a second, one replot per batch), under an
 //     attention banner shown while a critical alarm is unacknowledged
-//   docks: Test setup (left), Parameters and Pending updates (right), Alarms (bottom); their
+//   docks: Test setup and Parameters (right, one tab each: the setup raised when a test is
+//     loaded, the parameters when it runs), Pending updates (right), Alarms (bottom); their
 //     layout and the window geometry are remembered (ConsoleSettings)
 //   TestStatusBar: test time, step, steps/s, state, link, recording
 //   menus: File (open, recent files, settings, quit), View (the docks)
@@ -103,6 +104,8 @@ private:
     PendingUpdatesPanel* m_pending = nullptr;
     AlarmList* m_alarms = nullptr;
     QDockWidget* m_alarmDock = nullptr;
+    QDockWidget* m_setupDock = nullptr;
+    QDockWidget* m_parametersDock = nullptr;
     TestStatusBar* m_status = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_viewMenu = nullptr;

@@ -117,7 +117,7 @@ QWidget* SetupPanel::buildRunGroup() {
 
 QWidget* SetupPanel::buildControllerGroup() {
     auto* box = new QGroupBox(tr("Controller"), this);
-    auto* row = new QHBoxLayout(box);
+    auto* form = new QFormLayout(box);
     m_controllerKind = new QComboBox(box);
     m_controllerKind->setObjectName(QStringLiteral("controllerKind"));
     m_controllerKind->addItem(tr("built-in virtual lab"), QStringLiteral("builtin"));
@@ -128,11 +128,9 @@ QWidget* SetupPanel::buildControllerGroup() {
     m_port->setObjectName(QStringLiteral("controllerPort"));
     m_port->setRange(1, 65535);
     m_port->setValue(5600);
-    row->addWidget(m_controllerKind);
-    row->addWidget(new QLabel(tr("host:"), box));
-    row->addWidget(m_host, 1);
-    row->addWidget(new QLabel(tr("port:"), box));
-    row->addWidget(m_port);
+    form->addRow(tr("Specimens driven by:"), m_controllerKind);
+    form->addRow(tr("Host:"), m_host);
+    form->addRow(tr("Port:"), m_port);
     connect(m_controllerKind, &QComboBox::currentIndexChanged, this, [this] {
         const bool tcp = m_controllerKind->currentData() == QStringLiteral("tcp");
         m_host->setEnabled(tcp && m_editable);
