@@ -326,7 +326,7 @@ void MainWindow::showPreflight(const PreflightReport& report) {
         const RunRequest request = m_pendingRun;
         m_pendingRun = RunRequest::None;
         m_preflight = nullptr;
-        if (result != QDialog::Accepted) {
+        if (result != QDialog::Accepted || request == RunRequest::None) {
             m_alarms->addMessage(tr("start cancelled at the pre-flight check"),
                                  AlarmSeverity::Info);
             return;
@@ -402,8 +402,11 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
         showLinkState(true, false);
     if (state == RunState::Running && !m_setupDock->isFloating())
         m_parametersDock->raise(); // the setup is read-only now
-    if (state != RunState::Ready)
+    if (state != RunState::Ready) {
         m_pendingRun = RunRequest::None;
+        if (m_preflight)
+            m_preflight->reject(); // e.g. held from the dialog: nothing may start from it
+    }
     if (!message.isEmpty()) {
         m_status->showMessage(message, 15000);
         if (state == RunState::Failed)

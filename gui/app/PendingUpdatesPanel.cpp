@@ -15,7 +15,7 @@
 namespace hsmu::gui {
 
 namespace {
-enum Column { Parameter, Current, Proposed, Change, Actions };
+enum Column { Parameter, Current, Proposed, Change, ColumnCount };
 }
 
 QString PendingUpdatesPanel::describe(ReporterPolicy policy) {
@@ -48,12 +48,9 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     m_summary = new QLabel(this);
     m_summary->setWordWrap(true);
     m_tree = new QTreeWidget(this);
-    m_tree->setColumnCount(5);
-    m_tree->setHeaderLabels(
-        {tr("Proposal"), tr("Current"), tr("Proposed"), tr("Change [%]"), tr("Decision")});
+    m_tree->setColumnCount(ColumnCount);
+    m_tree->setHeaderLabels({tr("Parameter"), tr("Current"), tr("Proposed"), tr("Change [%]")});
     m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
-    m_tree->header()->setSectionResizeMode(Actions, QHeaderView::ResizeToContents);
-    m_tree->header()->setStretchLastSection(false);
     m_tree->setToolTip(tr("Current and proposed values in the law's normalized units"));
     m_tree->setAlternatingRowColors(true);
 
@@ -112,7 +109,9 @@ void PendingUpdatesPanel::setSnapshot(const UpdatingSnapshot& s) {
     m_shown = ids;
     m_tree->clear();
     for (const UpdateProposal& p : s.pending) {
+        // The proposal's title and its decision buttons span the row; its parameters below.
         auto* top = new QTreeWidgetItem(m_tree);
+        top->setFirstColumnSpanned(true);
         top->setText(Parameter, tr("#%1 %2 at t = %3 s (step %4)")
                                     .arg(p.id)
                                     .arg(QString::fromStdString(p.element))
@@ -143,7 +142,10 @@ void PendingUpdatesPanel::setSnapshot(const UpdatingSnapshot& s) {
         const int id = p.id;
         connect(approve, &QPushButton::clicked, this, [this, id] { emit approveRequested(id); });
         connect(reject, &QPushButton::clicked, this, [this, id] { emit rejectRequested(id); });
-        m_tree->setItemWidget(top, Actions, buttons);
+        h->addStretch(1);
+        auto* decision = new QTreeWidgetItem(top);
+        decision->setFirstColumnSpanned(true);
+        m_tree->setItemWidget(decision, Parameter, buttons);
         top->setExpanded(true);
     }
     setEditable(m_editable);

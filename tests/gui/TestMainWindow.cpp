@@ -140,6 +140,23 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Finished, 30000);
     }
 
+    void emergencyHoldDuringThePreflightStartsNothing() {
+        MainWindow window;
+        window.setSpeed(0.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        QAction* hold = window.findChild<ControlBar*>()->emergencyHoldAction();
+        QVERIFY(window.preflightDialog()->actions().contains(hold)); // alive over the dialog
+        hold->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Holding, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
+        QTest::qWait(100);
+        QCOMPARE(window.controller().state(), RunState::Holding);
+        QCOMPARE(window.controller().recordsCommitted(), qint64(1)); // step 0 only
+    }
+
     void parameterTableEditsReachTheUpdater() {
         MainWindow window;
         window.setConfirmBeforeStart(false);
