@@ -64,32 +64,45 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, QWidget* parent)
 
     auto* specimens = new QGroupBox(tr("Specimens: limits and initial measured values"), this);
     auto* sv = new QVBoxLayout(specimens);
-    auto* table = new QTableWidget(int(report.specimens.size()), 7, specimens);
+    for (const SpecimenPreflight& s : report.specimens) {
+        auto* control = new QLabel(
+            tr("%1: %2").arg(QString::fromStdString(s.element), QString::fromStdString(s.control)),
+            specimens);
+        control->setWordWrap(true);
+        sv->addWidget(control);
+    }
+    auto* table = new QTableWidget(int(report.specimens.size()), 6, specimens);
     table->setObjectName(QStringLiteral("preflightSpecimens"));
-    table->setHorizontalHeaderLabels({tr("Element"), tr("Control"), tr("Max |d|"), tr("Max |F|"),
+    table->setHorizontalHeaderLabels({tr("Element"), tr("Max |d|"), tr("Max |F|"),
                                       tr("Max |Δd| per step"), tr("Measured d"), tr("Measured F")});
     table->verticalHeader()->hide();
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     for (int i = 0; i < int(report.specimens.size()); ++i) {
         const SpecimenPreflight& s = report.specimens[std::size_t(i)];
+        const QString d = QString::fromStdString(s.deformationUnit);
+        const QString f = QString::fromStdString(s.forceUnit);
+        auto withUnit = [](const QString& value, const QString& unit) {
+            return unit.isEmpty() ? value : QStringLiteral("%1 %2").arg(value, unit);
+        };
+        auto limit = [&withUnit](double v, const QString& unit) {
+            return std::isfinite(v) && v > 0.0 ? withUnit(num(v), unit) : num(v); // "none"
+        };
         const QStringList cells{QString::fromStdString(s.element),
-                                QString::fromStdString(s.control),
-                                num(s.limits.maxDeformation),
-                                num(s.limits.maxForce),
-                                num(s.limits.maxIncrement),
-                                QString::number(s.measuredDeformation, 'g', 4),
-                                QString::number(s.measuredForce, 'g', 4)};
+                                limit(s.limits.maxDeformation, d),
+                                limit(s.limits.maxForce, f),
+                                limit(s.limits.maxIncrement, d),
+                                withUnit(QString::number(s.measuredDeformation, 'g', 4), d),
+                                withUnit(QString::number(s.measuredForce, 'g', 4), f)};
         for (int c = 0; c < cells.size(); ++c)
             table->setItem(i, c, new QTableWidgetItem(cells[c]));
     }
-    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table->horizontalHeader()->setStretchLastSection(true);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     sv->addWidget(table);
-    auto* units = new QLabel(tr("Units: the specimen's (rad and kN m for a rotational spring, "
-                                "m and kN for a lateral one)."),
-                             specimens);
-    units->setWordWrap(true);
-    sv->addWidget(units);
+    auto* note = new QLabel(tr("Measured d and F: what the specimen reported after the link "
+                               "was prepared, before any target was sent."),
+                            specimens);
+    note->setWordWrap(true);
+    sv->addWidget(note);
     layout->addWidget(specimens, 1);
 
     m_zero = new QCheckBox(tr("I confirm the zero offsets: with the specimen unloaded the "

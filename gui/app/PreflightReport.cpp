@@ -2,6 +2,7 @@
 
 #include "core/experimental/ExperimentalElement.h"
 #include "core/integration/Integrator.h"
+#include "core/output/ElementUnits.h"
 #include "core/structure/Structure.h"
 #include "core/test/HybridTest.h"
 
@@ -23,6 +24,9 @@ PreflightReport preflightOf(const HybridTest& test, bool allowUnstable) {
         SpecimenPreflight s;
         s.element = x->name();
         s.control = x->control().description();
+        const ElementUnits units = elementUnits(x->typeName());
+        s.deformationUnit = units.deformation;
+        s.forceUnit = units.force;
         s.limits = x->limits();
         s.measuredDeformation = x->measurement().deformation;
         s.measuredForce = x->measurement().force;

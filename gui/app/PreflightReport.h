@@ -24,6 +24,8 @@ namespace hsmu::gui {
 struct SpecimenPreflight {
     std::string element;
     std::string control; ///< the control's own description (link, virtual, ...)
+    std::string deformationUnit; ///< e.g. "rad"
+    std::string forceUnit;       ///< e.g. "kN m"
     SafetyLimits limits;
     double measuredDeformation = 0.0; ///< after prepare()
     double measuredForce = 0.0;       ///< after prepare()

@@ -126,6 +126,11 @@ private slots:
         QCOMPARE(window.controller().recordsCommitted(), qint64(1)); // step 0 only
         auto* verdict = dialog->findChild<QLabel*>(QStringLiteral("stabilityVerdict"));
         QVERIFY(verdict && verdict->text().contains(QStringLiteral("Stable")));
+        auto* specimens = dialog->findChild<QTableWidget*>(QStringLiteral("preflightSpecimens"));
+        QVERIFY(specimens && specimens->rowCount() == 1);
+        QCOMPARE(specimens->item(0, 0)->text(), QStringLiteral("Element 1"));
+        QVERIFY(specimens->item(0, 1)->text().endsWith(QStringLiteral(" rad")));  // max |d|
+        QVERIFY(specimens->item(0, 2)->text().endsWith(QStringLiteral(" kN m"))); // max |F|
         // Cancel: nothing starts; Start again shows the same check.
         dialog->reject();
         QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
