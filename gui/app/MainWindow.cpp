@@ -245,6 +245,7 @@ bool MainWindow::loadConfiguration(const QString& nameOrPath, QString* error) {
         return false;
     }
     m_source = nameOrPath;
+    ConsoleSettings::setControllerAddress(m_setup->controllerText());
     const bool preset =
         !PresetLibrary::resourcePath(nameOrPath).isEmpty() && !QFileInfo::exists(nameOrPath);
     m_controls->selectPreset(preset ? nameOrPath : QString());
