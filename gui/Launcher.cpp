@@ -1,15 +1,15 @@
 #include "gui/Launcher.h"
 
 #include "gui/app/ConsoleCommand.h"
+#include "gui/app/ConsoleSettings.h"
+#include "gui/app/Translations.h"
 #include "gui/cli/CompareCommand.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/MaterialCommand.h"
 #include "gui/cli/RunCommand.h"
 
 #include <QApplication>
-#include <QLocale>
 #include <QTextStream>
-#include <QTranslator>
 
 #include <cstring>
 #include <exception>
@@ -26,10 +26,7 @@ void describeApplication() {
 }
 
 void installTranslator(QCoreApplication& app) {
-    auto* translator = new QTranslator(&app);
-    if (translator->load(QLocale(), QStringLiteral("hsmu"), QStringLiteral("_"),
-                         QStringLiteral(":/i18n")))
-        QCoreApplication::installTranslator(translator);
+    Translations::install(app, ConsoleSettings::language()); // "" = the system locale
 }
 
 bool headless() {

@@ -40,6 +40,11 @@ public:
     virtual const ParameterBoundsMap& bounds() const = 0;
     /// Change a bound between steps; false if the name is not identified or lower > upper.
     virtual bool setBounds(const std::string& name, const ParameterBounds& b) = 0;
+    /// Lock a parameter at its current estimate (or unlock it) between steps; false if the
+    /// method cannot lock it (the default: no locking) or the name is not identified.
+    virtual bool setLocked(const std::string& /*name*/, bool /*locked*/) { return false; }
+    virtual bool locked(const std::string& /*name*/) const { return false; }
+    virtual bool canLock() const { return false; }
     /// Compute time of the last update [s] (for Nelder-Mead triggers).
     virtual double lastComputeSeconds() const { return 0.0; }
 };

@@ -98,4 +98,10 @@ bool UkfIdentifier::setLocked(const std::string& name, bool locked)
     return i && m_ukf.setLocked(*i, locked);
 }
 
+bool UkfIdentifier::locked(const std::string& name) const
+{
+    auto i = indexOf(name);
+    return i && m_ukf.locked(*i);
+}
+
 } // namespace hsmu

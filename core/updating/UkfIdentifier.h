@@ -27,7 +27,9 @@ public:
 
     BoucWenUkf& filter() { return m_ukf; }
     /// Lock a parameter at its current estimate (or unlock it).
-    bool setLocked(const std::string& name, bool locked);
+    bool setLocked(const std::string& name, bool locked) override;
+    bool locked(const std::string& name) const override;
+    bool canLock() const override { return true; }
 
 private:
     void publish(const BoucWenUkfStep* step);

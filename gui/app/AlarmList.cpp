@@ -1,10 +1,33 @@
 #include "gui/app/AlarmList.h"
 
+#include <QDateTime>
+#include <QHeaderView>
+
 namespace hsmu::gui {
 
-AlarmList::AlarmList(QWidget* parent) : QListWidget(parent) {
+namespace {
+constexpr int kSeverityRole = Qt::UserRole;
+constexpr int kAckRole = Qt::UserRole + 1;
+const QColor kCritical(198, 40, 40);
+const QColor kCriticalBackground(255, 205, 210);
+const QColor kWarning(200, 120, 0);
+} // namespace
+
+AlarmList::AlarmList(QWidget* parent) : QTreeWidget(parent) {
     setObjectName(QStringLiteral("alarmList"));
     setAlternatingRowColors(true);
+    setRootIsDecorated(false);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
+    setColumnCount(ColumnCount);
+    setHeaderLabels({tr("Time [s]"), tr("Step"), tr("Severity"), tr("Kind"), tr("Message"),
+                     tr("Acknowledged")});
+    header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    header()->setSectionResizeMode(Message, QHeaderView::Stretch);
+    header()->setStretchLastSection(false);
+    connect(this, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+        acknowledge(item);
+        notify();
+    });
 }
 
 QString AlarmList::describe(AlarmKind kind) {
@@ -50,21 +73,81 @@ QString AlarmList::describe(AlarmSeverity severity) {
 }
 
 void AlarmList::addAlarm(const Alarm& alarm) {
-    addMessage(tr("t = %1 s (step %2) %3: %4")
-                   .arg(QString::number(alarm.time, 'f', 2))
-                   .arg(alarm.step)
-                   .arg(describe(alarm.kind), QString::fromStdString(alarm.message)),
-               alarm.severity);
+    add(QString::number(alarm.time, 'f', 2), QString::number(alarm.step), alarm.severity,
+        describe(alarm.kind), QString::fromStdString(alarm.message));
 }
 
 void AlarmList::addMessage(const QString& text, AlarmSeverity severity) {
-    auto* item = new QListWidgetItem(QStringLiteral("[%1] %2").arg(describe(severity), text));
-    if (severity == AlarmSeverity::Critical)
-        item->setForeground(QColor(198, 40, 40));
-    else if (severity == AlarmSeverity::Warning)
-        item->setForeground(QColor(200, 120, 0));
-    addItem(item);
-    scrollToBottom();
+    add(QString(), QString(), severity, tr("console"), text);
+}
+
+void AlarmList::add(const QString& time, const QString& step, AlarmSeverity severity,
+                    const QString& kind, const QString& text) {
+    auto* item = new QTreeWidgetItem(this);
+    item->setText(Time, time);
+    item->setText(Step, step);
+    item->setText(Severity, describe(severity));
+    item->setText(Kind, kind);
+    item->setText(Message, text);
+    item->setToolTip(Message, text);
+    item->setData(Severity, kSeverityRole, int(severity));
+    const bool critical = severity == AlarmSeverity::Critical;
+    item->setData(Acknowledged, kAckRole, !critical);
+    item->setText(Acknowledged, critical ? tr("no") : QString());
+    for (int c = 0; c < ColumnCount; ++c) {
+        if (critical) {
+            item->setForeground(c, kCritical);
+            item->setBackground(c, kCriticalBackground);
+        } else if (severity == AlarmSeverity::Warning) {
+            item->setForeground(c, kWarning);
+        }
+    }
+    scrollToItem(item);
+    if (critical) {
+        ++m_unacknowledged;
+        notify();
+    }
+}
+
+void AlarmList::acknowledge(QTreeWidgetItem* item) {
+    if (!item || item->data(Acknowledged, kAckRole).toBool())
+        return;
+    item->setData(Acknowledged, kAckRole, true);
+    item->setText(Acknowledged, tr("yes, %1").arg(QDateTime::currentDateTime().toString(
+                                    QStringLiteral("HH:mm:ss"))));
+    for (int c = 0; c < ColumnCount; ++c)
+        item->setBackground(c, QBrush());
+    --m_unacknowledged;
+}
+
+void AlarmList::acknowledgeSelected() {
+    for (QTreeWidgetItem* item : selectedItems())
+        acknowledge(item);
+    notify();
+}
+
+void AlarmList::acknowledgeAll() {
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        acknowledge(topLevelItem(i));
+    notify();
+}
+
+void AlarmList::clearAlarms() {
+    clear();
+    m_unacknowledged = 0;
+    notify();
+}
+
+void AlarmList::notify() {
+    QString latest;
+    for (int i = topLevelItemCount() - 1; i >= 0 && m_unacknowledged > 0; --i) {
+        const QTreeWidgetItem* item = topLevelItem(i);
+        if (!item->data(Acknowledged, kAckRole).toBool()) {
+            latest = item->text(Message);
+            break;
+        }
+    }
+    emit attentionChanged(m_unacknowledged, latest);
 }
 
 } // namespace hsmu::gui

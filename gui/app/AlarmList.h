@@ -1,24 +1,47 @@
 #pragma once
-// AlarmList: the alarms and operator events of the current test, newest last, with test time,
-// step, severity and a translated kind. Thread rules: GUI thread only.
+// AlarmList: the alarms and operator events of the current test, newest last: test time [s],
+// step, severity, a translated kind and the message, and whether the operator acknowledged it.
+// A critical alarm stays highlighted (red) until acknowledged; attentionChanged() reports how
+// many critical alarms are unacknowledged so the window can demand attention.
+// Thread rules: GUI thread only.
 
 #include "core/test/Alarm.h"
 
-#include <QListWidget>
+#include <QTreeWidget>
 
 namespace hsmu::gui {
 
-class AlarmList : public QListWidget {
+class AlarmList : public QTreeWidget {
     Q_OBJECT
 public:
+    enum Column { Time, Step, Severity, Kind, Message, Acknowledged, ColumnCount };
+
     explicit AlarmList(QWidget* parent = nullptr);
 
     void addAlarm(const Alarm& alarm);
     /// A console message that is not a test alarm (e.g. a configuration error).
     void addMessage(const QString& text, AlarmSeverity severity);
+    /// Remove every entry (a new test).
+    void clearAlarms();
+
+    void acknowledgeSelected();
+    void acknowledgeAll();
+    int unacknowledgedCritical() const { return m_unacknowledged; }
 
     static QString describe(AlarmKind kind);
     static QString describe(AlarmSeverity severity);
+
+signals:
+    /// count: unacknowledged critical alarms; latest: the newest one's text (empty if none).
+    void attentionChanged(int count, const QString& latest);
+
+private:
+    void add(const QString& time, const QString& step, AlarmSeverity severity, const QString& kind,
+             const QString& text);
+    void acknowledge(QTreeWidgetItem* item);
+    void notify();
+
+    int m_unacknowledged = 0;
 };
 
 } // namespace hsmu::gui

@@ -74,6 +74,7 @@ int ConsoleCommand::exec(const QStringList& arguments) {
     window.setSpeed(speed);
     window.show();
     if (p.isSet(startOpt)) {
+        window.setConfirmBeforeStart(false); // --start is the operator's confirmation
         QString error;
         if (window.loadConfiguration(p.value(startOpt), &error))
             window.startTest();

@@ -2,6 +2,7 @@
 // ConsoleCommand: `hsmu [--start CONFIG] [--ground-motion FILE] [--speed S]
 // [--screenshot FILE [--screenshot-after SECONDS]]`: the console window.
 //   --start              load a preset name or configuration file and start it at once
+//                        (the command line is the operator's confirmation: no pre-flight)
 //   --ground-motion      use this record for every configuration loaded
 //   --speed              test time per wall time (1 = real time, 0 = as fast as possible)
 //   --screenshot         grab the window into FILE (PNG) after --screenshot-after seconds

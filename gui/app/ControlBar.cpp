@@ -36,13 +36,19 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
     addSeparator();
     m_start = addAction(tr("Start"), this, &ControlBar::startRequested);
     m_pause = addAction(tr("Pause"), this, &ControlBar::pauseRequested);
+    m_step = addAction(tr("Single step"), this, &ControlBar::singleStepRequested);
+    m_step->setToolTip(tr("Run exactly one integration step, then stay paused"));
     m_resume = addAction(tr("Resume"), this, &ControlBar::resumeRequested);
     m_stop = addAction(tr("Stop"), this, &ControlBar::stopRequested);
     addSeparator();
-    m_hold = addAction(tr("Emergency hold"), this, &ControlBar::emergencyHoldRequested);
-    m_hold->setShortcuts({QKeySequence(Qt::Key_Escape), QKeySequence(tr("Ctrl+H"))});
+    const QKeySequence holdKey = emergencyHoldShortcut();
+    m_hold = addAction(tr("Emergency hold (%1)").arg(holdKey.toString(QKeySequence::NativeText)),
+                       this, &ControlBar::emergencyHoldRequested);
+    m_hold->setObjectName(QStringLiteral("emergencyHold"));
+    m_hold->setShortcut(holdKey);
     m_hold->setShortcutContext(Qt::ApplicationShortcut);
-    m_hold->setToolTip(tr("Hold the test at once, between two steps (Esc or Ctrl+H)"));
+    m_hold->setToolTip(tr("Hold the test at once, between two steps (%1)")
+                           .arg(holdKey.toString(QKeySequence::NativeText)));
     if (QWidget* button = widgetForAction(m_hold))
         button->setStyleSheet(QStringLiteral("QToolButton { color: white; background: #c62828;"
                                              " font-weight: bold; padding: 3px 10px; }"));
@@ -68,11 +74,16 @@ void ControlBar::setRunState(RunState state) {
     m_start->setEnabled(state == RunState::Ready || state == RunState::Finished ||
                         state == RunState::Stopped || state == RunState::Failed);
     m_pause->setEnabled(state == RunState::Running);
+    m_step->setEnabled(state == RunState::Ready || state == RunState::Paused);
     m_resume->setEnabled(state == RunState::Paused || state == RunState::Holding);
     m_stop->setEnabled(active);
     m_presets->setEnabled(!active);
     m_open->setEnabled(!active);
     m_hold->setEnabled(true); // always: the operator's last resort
+}
+
+QKeySequence ControlBar::emergencyHoldShortcut() {
+    return QKeySequence(Qt::CTRL | Qt::Key_H);
 }
 
 void ControlBar::selectPreset(const QString& id) {

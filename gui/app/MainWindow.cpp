@@ -2,75 +2,237 @@
 
 #include "gui/PresetLibrary.h"
 #include "gui/app/AlarmList.h"
+#include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
+#include "gui/app/ParametersPanel.h"
+#include "gui/app/PendingUpdatesPanel.h"
+#include "gui/app/PlotArea.h"
+#include "gui/app/PreflightDialog.h"
+#include "gui/app/SettingsDialog.h"
+#include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
 #include "gui/app/TestStatusBar.h"
-#include "gui/plots/HistoryPlot.h"
-#include "gui/plots/HysteresisPlot.h"
 
+#include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMessageBox>
-#include <QSplitter>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include <stdexcept>
 
 namespace hsmu::gui {
+
+namespace {
+bool active(RunState s) {
+    return s == RunState::Running || s == RunState::Paused || s == RunState::Holding;
+}
+} // namespace
 
 MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     : QMainWindow(parent), m_overrides(overrides) {
     setWindowTitle(tr("HSMU Console"));
     m_controller = new TestController(this);
+    m_controller->setRecordDirectory(ConsoleSettings::recordDirectory());
     m_controls = new ControlBar(this);
     addToolBar(Qt::TopToolBarArea, m_controls);
     addAction(m_controls->emergencyHoldAction()); // shortcut alive even if the bar is hidden
 
-    auto* splitter = new QSplitter(Qt::Horizontal, this);
-    m_hysteresis = new HysteresisPlot(splitter);
-    m_history = new HistoryPlot(splitter);
-    splitter->addWidget(m_hysteresis);
-    splitter->addWidget(m_history);
-    splitter->setStretchFactor(0, 1);
-    splitter->setStretchFactor(1, 1);
-    setCentralWidget(splitter);
+    // Centre: the attention banner over the plot area.
+    auto* centre = new QWidget(this);
+    auto* cv = new QVBoxLayout(centre);
+    cv->setContentsMargins(0, 0, 0, 0);
+    cv->setSpacing(0);
+    m_banner = new QWidget(centre);
+    m_banner->setObjectName(QStringLiteral("attentionBanner"));
+    m_banner->setAutoFillBackground(true);
+    m_banner->setStyleSheet(QStringLiteral("#attentionBanner { background: #c62828; }"
+                                           " QLabel { color: white; font-weight: bold; }"));
+    auto* bh = new QHBoxLayout(m_banner);
+    m_bannerText = new QLabel(m_banner);
+    m_bannerText->setWordWrap(true);
+    auto* ack = new QPushButton(tr("Acknowledge all"), m_banner);
+    bh->addWidget(m_bannerText, 1);
+    bh->addWidget(ack);
+    m_banner->hide();
+    m_plots = new PlotArea(centre);
+    cv->addWidget(m_banner);
+    cv->addWidget(m_plots, 1);
+    setCentralWidget(centre);
 
-    m_alarms = new AlarmList(this);
-    auto* dock = new QDockWidget(tr("Alarms and events"), this);
-    dock->setObjectName(QStringLiteral("alarmDock"));
-    dock->setWidget(m_alarms);
-    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-    addDockWidget(Qt::BottomDockWidgetArea, dock);
-    resizeDocks({dock}, {110}, Qt::Vertical);
+    m_setup = new SetupPanel(this);
+    auto* setupScroll = new QScrollArea(this);
+    setupScroll->setWidget(m_setup);
+    setupScroll->setWidgetResizable(true);
+    setupScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_setupDock = addDock(setupScroll, tr("Test setup"), QStringLiteral("setupDock"),
+                          Qt::RightDockWidgetArea);
+    m_parameters = new ParametersPanel(this);
+    m_parametersDock = addDock(m_parameters, tr("Parameters"), QStringLiteral("parametersDock"),
+                               Qt::RightDockWidgetArea);
+    m_pending = new PendingUpdatesPanel(this);
+    QDockWidget* pending = addDock(m_pending, tr("Pending updates"), QStringLiteral("pendingDock"),
+                                   Qt::RightDockWidgetArea);
+    // The setup matters before a start, the parameters during a run: one tab each, the
+    // plots keep the width; the pending updates stay in view below.
+    splitDockWidget(m_setupDock, pending, Qt::Vertical);
+    tabifyDockWidget(m_setupDock, m_parametersDock);
+    m_setupDock->raise();
+
+    auto* alarmPanel = new QWidget(this);
+    auto* av = new QVBoxLayout(alarmPanel);
+    av->setContentsMargins(2, 2, 2, 2);
+    m_alarms = new AlarmList(alarmPanel);
+    auto* ackSelected = new QPushButton(tr("Acknowledge selected"), alarmPanel);
+    auto* ackAll = new QPushButton(tr("Acknowledge all"), alarmPanel);
+    auto* ah = new QHBoxLayout;
+    ah->addWidget(new QLabel(tr("Critical alarms stay red until acknowledged (double-click "
+                                "or the buttons)."),
+                             alarmPanel),
+                  1);
+    ah->addWidget(ackSelected);
+    ah->addWidget(ackAll);
+    av->addLayout(ah);
+    av->addWidget(m_alarms, 1);
+    m_alarmDock = addDock(alarmPanel, tr("Alarms and events"), QStringLiteral("alarmDock"),
+                          Qt::BottomDockWidgetArea);
+    connect(ackSelected, &QPushButton::clicked, m_alarms, &AlarmList::acknowledgeSelected);
+    connect(ackAll, &QPushButton::clicked, m_alarms, &AlarmList::acknowledgeAll);
+    connect(ack, &QPushButton::clicked, m_alarms, &AlarmList::acknowledgeAll);
+    connect(m_alarms, &AlarmList::attentionChanged, this, &MainWindow::onAttention);
 
     m_status = new TestStatusBar(this);
     setStatusBar(m_status);
+    buildMenus();
+    wireController();
 
+    resize(1500, 920);
+    resizeDocks({m_alarmDock}, {150}, Qt::Vertical);
+    resizeDocks({m_setupDock}, {440}, Qt::Horizontal);
+    resizeDocks({m_setupDock, pending}, {520, 260}, Qt::Vertical);
+    m_setup->setControllerAddress(ConsoleSettings::controllerAddress());
+    if (const QByteArray g = ConsoleSettings::windowGeometry(); !g.isEmpty())
+        restoreGeometry(g);
+    if (const QByteArray s = ConsoleSettings::windowState(); !s.isEmpty())
+        restoreState(s);
+}
+
+MainWindow::~MainWindow() = default;
+
+QDockWidget* MainWindow::addDock(QWidget* panel, const QString& title, const QString& name,
+                                 Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name); // saveState / restoreState key
+    dock->setWidget(panel);
+    addDockWidget(area, dock);
+    return dock;
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    // Ctrl+O belongs to the tool bar's action: one shortcut, one action.
+    file->addAction(tr("&Open configuration..."), this, &MainWindow::openConfigurationFile);
+    m_recentMenu = file->addMenu(tr("Open &recent"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
+    rebuildRecentMenu();
+    file->addSeparator();
+    file->addAction(tr("&Settings..."), this, &MainWindow::openSettings);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        m_viewMenu->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList files = ConsoleSettings::recentFiles();
+    for (const QString& f : files)
+        m_recentMenu
+            ->addAction(QFileInfo(f).fileName(), this,
+                        [this, f] {
+                            QString error;
+                            if (!loadConfiguration(f, &error))
+                                QMessageBox::critical(this, tr("Configuration error"), error);
+                        })
+            ->setToolTip(f);
+    if (files.isEmpty())
+        m_recentMenu->addAction(tr("(none)"))->setEnabled(false);
+}
+
+void MainWindow::wireController() {
     connect(m_controls, &ControlBar::presetChosen, this,
             [this](const QString& id) { loadConfiguration(id); });
     connect(m_controls, &ControlBar::openRequested, this, &MainWindow::openConfigurationFile);
     connect(m_controls, &ControlBar::startRequested, this, &MainWindow::startTest);
     connect(m_controls, &ControlBar::pauseRequested, m_controller, &TestController::pause);
+    connect(m_controls, &ControlBar::singleStepRequested, this, &MainWindow::singleStep);
     connect(m_controls, &ControlBar::resumeRequested, m_controller, &TestController::resume);
     connect(m_controls, &ControlBar::stopRequested, m_controller, &TestController::stop);
     connect(m_controls, &ControlBar::emergencyHoldRequested, m_controller,
             [this] { m_controller->emergencyHold(); });
     connect(m_controls, &ControlBar::speedChanged, m_controller, &TestController::setSpeed);
     m_controller->setSpeed(m_controls->speed());
+    connect(m_setup, &SetupPanel::applyRequested, this, &MainWindow::applySetup);
+
+    connect(m_parameters, &ParametersPanel::boundsEdited, m_controller,
+            &TestController::setParameterBounds);
+    connect(m_parameters, &ParametersPanel::lockEdited, m_controller,
+            &TestController::setParameterLocked);
+    connect(m_parameters, &ParametersPanel::thresholdEdited, m_controller,
+            &TestController::setFitThreshold);
+    connect(m_parameters, &ParametersPanel::editRefused, this,
+            [this](const QString& why) { m_alarms->addMessage(why, AlarmSeverity::Warning); });
+    connect(m_pending, &PendingUpdatesPanel::approveRequested, m_controller,
+            &TestController::approveUpdate);
+    connect(m_pending, &PendingUpdatesPanel::rejectRequested, m_controller,
+            &TestController::rejectUpdate);
+    connect(m_pending, &PendingUpdatesPanel::policyChosen, m_controller,
+            &TestController::setReporterPolicy);
+    connect(m_pending, &PendingUpdatesPanel::approveRequested, this, [this](int id) {
+        m_alarms->addMessage(tr("update #%1 approved by the operator").arg(id),
+                             AlarmSeverity::Info);
+    });
+    connect(m_pending, &PendingUpdatesPanel::rejectRequested, this, [this](int id) {
+        m_alarms->addMessage(tr("update #%1 rejected by the operator").arg(id),
+                             AlarmSeverity::Info);
+    });
 
     connect(m_controller, &TestController::testLoaded, this, &MainWindow::onTestLoaded);
-    connect(m_controller, &TestController::recordsArrived, this, &MainWindow::onRecords);
+    connect(m_controller, &TestController::recordsArrived, m_plots, &PlotArea::appendRecords);
     connect(m_controller, &TestController::stateChanged, this, &MainWindow::onStateChanged);
     connect(m_controller, &TestController::progress, m_status, &TestStatusBar::setProgress);
     connect(m_controller, &TestController::alarmRaised, this, &MainWindow::onAlarm);
-    resize(1280, 800);
+    connect(m_controller, &TestController::updatingChanged, m_parameters,
+            &ParametersPanel::setSnapshot);
+    connect(m_controller, &TestController::updatingChanged, m_pending,
+            &PendingUpdatesPanel::setSnapshot);
+    connect(m_controller, &TestController::commandRefused, this, [this](const QString& why) {
+        m_alarms->addMessage(why, AlarmSeverity::Warning);
+        m_status->showMessage(why, 10000);
+    });
+    connect(m_controller, &TestController::preflightReady, this, &MainWindow::showPreflight);
+    connect(m_controller, &TestController::recordingStarted, m_status,
+            &TestStatusBar::setRecordingFile);
 }
-
-MainWindow::~MainWindow() = default;
 
 bool MainWindow::loadConfiguration(const QString& nameOrPath, QString* error) {
     try {
         TestConfig cfg = PresetLibrary::load(nameOrPath);
         m_overrides.applyTo(cfg);
-        m_controller->load(cfg);
+        m_setup->setConfig(cfg);
+        QString why;
+        const auto address = m_setup->controller(&why);
+        if (!address)
+            throw std::runtime_error(why.toStdString());
+        m_controller->load(cfg, *address);
     } catch (const std::exception& e) {
         const QString message = QString::fromStdString(e.what());
         m_alarms->addMessage(tr("cannot load %1: %2").arg(nameOrPath, message),
@@ -83,8 +245,34 @@ bool MainWindow::loadConfiguration(const QString& nameOrPath, QString* error) {
         return false;
     }
     m_source = nameOrPath;
-    m_controls->selectPreset(PresetLibrary::resourcePath(nameOrPath).isEmpty() ? QString()
-                                                                               : nameOrPath);
+    ConsoleSettings::setControllerAddress(m_setup->controllerText());
+    const bool preset =
+        !PresetLibrary::resourcePath(nameOrPath).isEmpty() && !QFileInfo::exists(nameOrPath);
+    m_controls->selectPreset(preset ? nameOrPath : QString());
+    if (!preset)
+        ConsoleSettings::addRecentFile(nameOrPath);
+    return true;
+}
+
+bool MainWindow::applySetup() {
+    QString error;
+    const auto cfg = m_setup->edited(&error);
+    const auto address = cfg ? m_setup->controller(&error) : std::nullopt;
+    if (!cfg || !address) {
+        m_alarms->addMessage(tr("setup not applied: %1").arg(error), AlarmSeverity::Warning);
+        m_status->showMessage(error, 10000);
+        return false;
+    }
+    try {
+        m_controller->load(*cfg, *address);
+    } catch (const std::exception& e) {
+        const QString message = QString::fromStdString(e.what());
+        m_alarms->addMessage(tr("setup not applied: %1").arg(message), AlarmSeverity::Critical);
+        m_status->showMessage(message, 10000);
+        return false;
+    }
+    ConsoleSettings::setControllerAddress(m_setup->controllerText());
+    m_setup->markApplied();
     return true;
 }
 
@@ -94,11 +282,61 @@ void MainWindow::setSpeed(double factor) {
 }
 
 void MainWindow::startTest() {
+    requestRun(RunRequest::Start);
+}
+
+void MainWindow::singleStep() {
+    if (m_controller->state() == RunState::Paused)
+        m_controller->singleStep();
+    else
+        requestRun(RunRequest::SingleStep);
+}
+
+void MainWindow::requestRun(RunRequest request) {
     const RunState s = m_controller->state();
-    if ((s == RunState::Finished || s == RunState::Stopped || s == RunState::Failed) &&
-        !m_source.isEmpty() && !loadConfiguration(m_source))
+    if (m_setup->isDirty() && !active(s)) {
+        if (!applySetup())
+            return;
+    } else if ((s == RunState::Finished || s == RunState::Stopped || s == RunState::Failed) &&
+               !m_source.isEmpty()) {
+        if (!applySetup())
+            return;
+    }
+    if (m_controller->state() != RunState::Ready)
         return;
-    m_controller->start();
+    if (!m_confirmBeforeStart) {
+        request == RunRequest::Start ? m_controller->start() : m_controller->singleStep();
+        return;
+    }
+    m_pendingRun = request;
+    if (m_controller->preflight())
+        showPreflight(*m_controller->preflight()); // prepared before, the dialog was cancelled
+    else
+        m_controller->prepare(); // -> preflightReady -> showPreflight
+    m_status->showMessage(tr("preparing the test (pre-flight)..."), 5000);
+}
+
+void MainWindow::showPreflight(const PreflightReport& report) {
+    showLinkState(true, false);
+    if (m_pendingRun == RunRequest::None || m_preflight)
+        return;
+    m_preflight = new PreflightDialog(report, this);
+    m_preflight->setAttribute(Qt::WA_DeleteOnClose);
+    m_preflight->addAction(m_controls->emergencyHoldAction()); // alive over the modal dialog
+    connect(m_preflight, &QDialog::finished, this, [this](int result) {
+        const RunRequest request = m_pendingRun;
+        m_pendingRun = RunRequest::None;
+        m_preflight = nullptr;
+        if (result != QDialog::Accepted || request == RunRequest::None) {
+            m_alarms->addMessage(tr("start cancelled at the pre-flight check"),
+                                 AlarmSeverity::Info);
+            return;
+        }
+        m_alarms->addMessage(tr("pre-flight confirmed by the operator (zero offsets)"),
+                             AlarmSeverity::Info);
+        request == RunRequest::Start ? m_controller->start() : m_controller->singleStep();
+    });
+    m_preflight->open(); // window-modal, never a nested wait on the GUI thread
 }
 
 void MainWindow::openConfigurationFile() {
@@ -112,11 +350,18 @@ void MainWindow::openConfigurationFile() {
         QMessageBox::critical(this, tr("Configuration error"), error);
 }
 
+void MainWindow::openSettings() {
+    auto* dialog = new SettingsDialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->addAction(m_controls->emergencyHoldAction());
+    connect(dialog, &QDialog::accepted, this,
+            [this] { m_controller->setRecordDirectory(ConsoleSettings::recordDirectory()); });
+    dialog->open();
+}
+
 void MainWindow::onTestLoaded() {
-    const RunLayout& layout = m_controller->layout();
-    m_hysteresis->showElements(layout, HysteresisPlot::specimenWithTwins(layout));
-    m_history->showDisplacements(layout);
-    m_alarms->clear();
+    m_plots->showTest(m_controller->layout());
+    m_alarms->clearAlarms();
     m_alarms->addMessage(tr("loaded %1 (%2)")
                              .arg(QString::fromStdString(m_controller->config().name),
                                   QString::fromStdString(m_controller->config().sourcePath)),
@@ -124,18 +369,45 @@ void MainWindow::onTestLoaded() {
     setWindowTitle(
         tr("HSMU Console - %1").arg(QString::fromStdString(m_controller->config().name)));
     m_status->setProgress(0, 0, 0.0, 0.0);
+    m_status->setRecordingFile(QString());
+    m_parameters->setSnapshot({});
+    m_pending->setSnapshot({});
+    showLinkState(false, false);
+    m_pendingRun = RunRequest::None;
+    m_setupDock->raise();
 }
 
-void MainWindow::onRecords(const std::vector<StepRecord>& rows) {
-    m_hysteresis->appendRecords(rows);
-    m_history->appendRecords(rows);
-    m_hysteresis->refresh();
-    m_history->refresh();
+void MainWindow::showLinkState(bool connected, bool fault) {
+    const comms::LinkAddress& a = m_controller->controllerAddress();
+    if (a.kind == comms::LinkAddress::Kind::Builtin) {
+        m_status->setLink(tr("built-in virtual lab"), true);
+        return;
+    }
+    const QString where = QString::fromStdString(a.toString());
+    if (fault)
+        m_status->setLink(tr("%1 fault").arg(where), false);
+    else
+        m_status->setLink(connected ? tr("%1 connected").arg(where)
+                                    : tr("%1 (connects at start)").arg(where),
+                          true);
 }
 
 void MainWindow::onStateChanged(RunState state, const QString& message) {
     m_controls->setRunState(state);
     m_status->setRunState(state);
+    m_setup->setEditable(!active(state));
+    const bool live = state == RunState::Ready || active(state);
+    m_parameters->setEditable(live);
+    m_pending->setEditable(live);
+    if (state == RunState::Running || state == RunState::Paused)
+        showLinkState(true, false);
+    if (state == RunState::Running && !m_setupDock->isFloating())
+        m_parametersDock->raise(); // the setup is read-only now
+    if (state != RunState::Ready) {
+        m_pendingRun = RunRequest::None;
+        if (m_preflight)
+            m_preflight->reject(); // e.g. held from the dialog: nothing may start from it
+    }
     if (!message.isEmpty()) {
         m_status->showMessage(message, 15000);
         if (state == RunState::Failed)
@@ -146,6 +418,23 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
 
 void MainWindow::onAlarm(const Alarm& alarm) {
     m_alarms->addAlarm(alarm);
+    if (alarm.kind == AlarmKind::ControlFault)
+        showLinkState(false, true);
+}
+
+void MainWindow::onAttention(int count, const QString& latest) {
+    m_banner->setVisible(count > 0);
+    if (count == 0)
+        return;
+    m_bannerText->setText(
+        tr("%n critical alarm(s) not acknowledged. Latest: %1", nullptr, count).arg(latest));
+    m_alarmDock->show();
+    m_alarmDock->raise();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    ConsoleSettings::saveWindow(saveGeometry(), saveState());
+    QMainWindow::closeEvent(event);
 }
 
 } // namespace hsmu::gui

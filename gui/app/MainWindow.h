@@ -1,16 +1,30 @@
 #pragma once
-// MainWindow: assembles the console: ControlBar (top), the live HysteresisPlot of the specimen
-// (measured) with its numerical twins and the HistoryPlot of DOF displacements (centre), the
-// AlarmList (bottom dock) and the TestStatusBar. It owns the TestController and only wires
-// signals: plots get rows ~30 times a second and replot once per batch.
-// Thread rules: GUI thread only.
+// MainWindow: assembles the console and only wires signals:
+//   ControlBar (top): presets, open, start / pause / single step / resume / stop, emergency hold
+//   PlotArea (centre): the live plots (rows ~30 times a second, one replot per batch), under an
+//     attention banner shown while a critical alarm is unacknowledged
+//   docks: Test setup and Parameters (right, one tab each: the setup raised when a test is
+//     loaded, the parameters when it runs), Pending updates (right), Alarms (bottom); their
+//     layout and the window geometry are remembered (ConsoleSettings)
+//   TestStatusBar: test time, step, steps/s, state, link, recording
+//   menus: File (open, recent files, settings, quit), View (the docks)
+// Start goes through the pre-flight: the worker prepares the test (connects a link, checks
+// stability) and the PreflightDialog must be confirmed before the first step; a command-line
+// --start is the operator's confirmation (setConfirmBeforeStart(false)).
+// It owns the TestController. Thread rules: GUI thread only.
 
 #include "gui/ConfigOverrides.h"
+#include "gui/app/PreflightReport.h"
 #include "gui/app/RunState.h"
 
 #include <QMainWindow>
 
 #include <vector>
+
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QPushButton;
 
 namespace hsmu {
 struct StepRecord;
@@ -21,8 +35,11 @@ namespace hsmu::gui {
 
 class AlarmList;
 class ControlBar;
-class HistoryPlot;
-class HysteresisPlot;
+class ParametersPanel;
+class PendingUpdatesPanel;
+class PlotArea;
+class PreflightDialog;
+class SetupPanel;
 class TestController;
 class TestStatusBar;
 
@@ -39,26 +56,60 @@ public:
     TestController& controller() { return *m_controller; }
     /// Pacing: test time per wall time (1 = real time, <= 0 as fast as possible).
     void setSpeed(double factor);
+    /// false: startTest() starts without the pre-flight dialog (command-line --start).
+    void setConfirmBeforeStart(bool confirm) { m_confirmBeforeStart = confirm; }
+    /// The pre-flight dialog while it is open, else nullptr.
+    PreflightDialog* preflightDialog() const { return m_preflight; }
 
 public slots:
-    /// Start the loaded test; a finished or stopped one is reloaded first.
+    /// Start the loaded test (unapplied setup edits are applied first; a finished or stopped
+    /// one is reloaded first), after the pre-flight confirmation.
     void startTest();
+    /// One step (from a loaded test: after the pre-flight confirmation).
+    void singleStep();
+    /// Rebuild the test from the setup panel.
+    bool applySetup();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
+    enum class RunRequest { None, Start, SingleStep };
+    QDockWidget* addDock(QWidget* panel, const QString& title, const QString& name,
+                         Qt::DockWidgetArea area);
+    void buildMenus();
+    void rebuildRecentMenu();
+    void wireController();
+    void requestRun(RunRequest request);
+    void showPreflight(const PreflightReport& report);
     void openConfigurationFile();
+    void openSettings();
     void onTestLoaded();
-    void onRecords(const std::vector<StepRecord>& rows);
     void onStateChanged(RunState state, const QString& message);
     void onAlarm(const Alarm& alarm);
+    void onAttention(int count, const QString& latest);
+    void showLinkState(bool connected, bool fault);
 
     ConfigOverrides m_overrides;
     QString m_source; ///< preset id or file of the loaded test
+    bool m_confirmBeforeStart = true;
+    RunRequest m_pendingRun = RunRequest::None;
     TestController* m_controller = nullptr;
     ControlBar* m_controls = nullptr;
-    HysteresisPlot* m_hysteresis = nullptr;
-    HistoryPlot* m_history = nullptr;
+    PlotArea* m_plots = nullptr;
+    QWidget* m_banner = nullptr;
+    QLabel* m_bannerText = nullptr;
+    SetupPanel* m_setup = nullptr;
+    ParametersPanel* m_parameters = nullptr;
+    PendingUpdatesPanel* m_pending = nullptr;
     AlarmList* m_alarms = nullptr;
+    QDockWidget* m_alarmDock = nullptr;
+    QDockWidget* m_setupDock = nullptr;
+    QDockWidget* m_parametersDock = nullptr;
     TestStatusBar* m_status = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    PreflightDialog* m_preflight = nullptr;
 };
 
 } // namespace hsmu::gui

@@ -6,6 +6,7 @@
 
 #include "core/test/StepRecord.h"
 
+#include <atomic>
 #include <mutex>
 #include <vector>
 
@@ -17,10 +18,14 @@ public:
     bool push(const StepRecord& record);
     /// Move every pending row out (oldest first) and leave the buffer empty.
     std::vector<StepRecord> takeAll();
+    /// Rows pushed so far (any thread, lock-free): the worker's progress even while the GUI
+    /// thread takes nothing.
+    long long pushedCount() const { return m_pushed.load(std::memory_order_relaxed); }
 
 private:
     std::mutex m_mutex;
     std::vector<StepRecord> m_rows;
+    std::atomic<long long> m_pushed{0};
 };
 
 } // namespace hsmu::gui

@@ -1,11 +1,15 @@
 #include "gui/app/TestController.h"
 
+#include "comms/link/ControlFactory.h"
 #include "core/config/TestFactory.h"
 #include "core/test/HybridTest.h"
 #include "gui/app/RecordBuffer.h"
 #include "gui/app/TestWorker.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QRegularExpression>
 #include <QThread>
 
 namespace hsmu::gui {
@@ -13,6 +17,8 @@ namespace hsmu::gui {
 TestController::TestController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<hsmu::gui::RunState>();
     qRegisterMetaType<hsmu::Alarm>();
+    qRegisterMetaType<hsmu::gui::PreflightReport>();
+    qRegisterMetaType<hsmu::gui::UpdatingSnapshot>();
     m_drainTimer.setSingleShot(true);
     m_drainTimer.setInterval(kDrainIntervalMs);
     connect(&m_drainTimer, &QTimer::timeout, this, &TestController::drain);
@@ -38,16 +44,42 @@ void TestController::teardown() {
     m_thread = nullptr;
     m_buffer.reset();
     m_state = RunState::Idle;
+    m_preflight.reset();
+    m_updating = UpdatingSnapshot{};
 }
 
-void TestController::load(const TestConfig& cfg) {
+void TestController::load(const TestConfig& cfg, const comms::LinkAddress& controller) {
     teardown();
     m_delivered = 0;
-    std::unique_ptr<HybridTest> test = buildHybridTest(cfg); // may throw
+    comms::TcpControlOptions link;
+    link.connectTimeout = 3.0; // an absent controller is an error within seconds
+    std::unique_ptr<HybridTest> test =
+        buildHybridTest(cfg, comms::makeControlFactory(controller, link)); // may throw
     m_config = cfg;
-    m_layout = RunLayout::of(test->structure());
+    m_address = controller;
+    m_layout = RunLayout::of(*test);
     m_buffer = std::make_shared<RecordBuffer>();
-    m_worker = new TestWorker(std::move(test), m_buffer);
+    m_recordPath.clear();
+    if (!m_recordDir.isEmpty()) {
+        QString name = QString::fromStdString(cfg.name);
+        name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_.-]+")), QStringLiteral("-"));
+        const QString run =
+            QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz-")) + name;
+        const QDir dir(m_recordDir);
+        if (dir.mkpath(run))
+            m_recordPath = dir.filePath(run + QStringLiteral("/record.h5"));
+    }
+    // The JSON is the file as read; what the console's setup changed is in the notes.
+    const std::string notes =
+        "as run from the console: dt = " + std::to_string(cfg.analysis.dt) +
+        " s, duration = " + std::to_string(cfg.analysis.duration) + " s, ground motion = " +
+        (cfg.groundMotion.file.empty() ? cfg.groundMotion.builtin : cfg.groundMotion.file) + " x " +
+        std::to_string(cfg.groundMotion.scale) + ", integrator = " + cfg.analysis.integrator +
+        ", controller = " + controller.toString() +
+        ", updating = " + (cfg.updating.enabled ? reporterPolicyName(cfg.updating.policy) : "off");
+    RecordStart start{cfg.raw.dump(), cfg.name, notes, cfg.analysis.dt};
+    m_worker =
+        new TestWorker(std::move(test), m_buffer, cfg.analysis.allowUnstable, start, m_recordPath);
     m_thread = new QThread;
     m_thread->setObjectName(QStringLiteral("hsmu test worker"));
     m_worker->moveToThread(m_thread);
@@ -63,43 +95,86 @@ void TestController::load(const TestConfig& cfg) {
     connect(m_worker, &TestWorker::progress, this, &TestController::progress, Qt::QueuedConnection);
     connect(m_worker, &TestWorker::alarmRaised, this, &TestController::alarmRaised,
             Qt::QueuedConnection);
+    connect(
+        m_worker, &TestWorker::preflightReady, this,
+        [this](const PreflightReport& r) {
+            m_preflight = r;
+            emit preflightReady(r);
+        },
+        Qt::QueuedConnection);
+    connect(
+        m_worker, &TestWorker::updatingChanged, this,
+        [this](const UpdatingSnapshot& s) {
+            m_updating = s;
+            emit updatingChanged(s);
+        },
+        Qt::QueuedConnection);
+    connect(m_worker, &TestWorker::commandRefused, this, &TestController::commandRefused,
+            Qt::QueuedConnection);
+    connect(m_worker, &TestWorker::recordingStarted, this, &TestController::recordingStarted,
+            Qt::QueuedConnection);
     m_thread->start();
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, s = m_speed] { w->setSpeed(s); }, Qt::QueuedConnection);
+    onWorker([s = m_speed](TestWorker* w) { w->setSpeed(s); });
     m_state = RunState::Ready;
     emit testLoaded();
     emit stateChanged(m_state, QString());
 }
 
-void TestController::invokeOnWorker(void (TestWorker::*slot)()) {
-    if (m_worker)
-        QMetaObject::invokeMethod(m_worker, slot, Qt::QueuedConnection);
+qint64 TestController::recordsCommitted() const {
+    return m_buffer ? qint64(m_buffer->pushedCount()) : 0;
 }
 
+template <class F> void TestController::onWorker(F&& f) {
+    if (m_worker)
+        QMetaObject::invokeMethod(
+            m_worker, [w = m_worker, f = std::forward<F>(f)] { f(w); }, Qt::QueuedConnection);
+}
+
+void TestController::prepare() {
+    onWorker([](TestWorker* w) { w->prepare(); });
+}
 void TestController::start() {
-    invokeOnWorker(&TestWorker::start);
+    onWorker([](TestWorker* w) { w->start(); });
 }
 void TestController::pause() {
-    invokeOnWorker(&TestWorker::pause);
+    onWorker([](TestWorker* w) { w->pause(); });
+}
+void TestController::singleStep() {
+    onWorker([](TestWorker* w) { w->singleStep(); });
 }
 void TestController::resume() {
-    invokeOnWorker(&TestWorker::resume);
+    onWorker([](TestWorker* w) { w->resume(); });
 }
 void TestController::stop() {
-    invokeOnWorker(&TestWorker::stop);
+    onWorker([](TestWorker* w) { w->stop(); });
 }
 
 void TestController::emergencyHold(const QString& reason) {
-    if (m_worker)
-        QMetaObject::invokeMethod(
-            m_worker, [w = m_worker, reason] { w->emergencyHold(reason); }, Qt::QueuedConnection);
+    onWorker([reason](TestWorker* w) { w->emergencyHold(reason); });
 }
 
 void TestController::setSpeed(double factor) {
     m_speed = factor;
-    if (m_worker)
-        QMetaObject::invokeMethod(
-            m_worker, [w = m_worker, factor] { w->setSpeed(factor); }, Qt::QueuedConnection);
+    onWorker([factor](TestWorker* w) { w->setSpeed(factor); });
+}
+
+void TestController::setParameterBounds(const QString& name, double lower, double upper) {
+    onWorker([=](TestWorker* w) { w->setParameterBounds(name, lower, upper); });
+}
+void TestController::setParameterLocked(const QString& name, bool locked) {
+    onWorker([=](TestWorker* w) { w->setParameterLocked(name, locked); });
+}
+void TestController::approveUpdate(int proposalId) {
+    onWorker([=](TestWorker* w) { w->approveUpdate(proposalId); });
+}
+void TestController::rejectUpdate(int proposalId) {
+    onWorker([=](TestWorker* w) { w->rejectUpdate(proposalId); });
+}
+void TestController::setReporterPolicy(ReporterPolicy policy, int everyN) {
+    onWorker([=](TestWorker* w) { w->setReporterPolicy(policy, everyN); });
+}
+void TestController::setFitThreshold(double threshold) {
+    onWorker([=](TestWorker* w) { w->setFitThreshold(threshold); });
 }
 
 void TestController::drain() {

@@ -2,8 +2,12 @@
 // TestController: owns the test worker and its thread; the widgets' only handle on a test.
 //
 // load() builds a HybridTest from a TestConfig on the GUI thread (errors are thrown there, as
-// ConfigError / GroundMotionError / std::exception), then moves a TestWorker holding it to a
-// fresh QThread. Commands (start, pause, ...) are queued to the worker and run between steps.
+// ConfigError / GroundMotionError / std::exception), over the built-in virtual specimens or a
+// TCP link to hsmu-controller, then moves a TestWorker holding it to a fresh QThread.
+// Commands (prepare, start, pause, single step, ...) and the operator's updating decisions are
+// queued to the worker and run between steps; with a record directory each test also writes
+// its HDF5 record (opened when it is prepared); nothing here ever waits for the worker except
+// load() / the destructor, which stop the old test first.
 // Rows reach the GUI through a RecordBuffer: on the worker's coalesced recordsAvailable() a
 // single-shot ~30 Hz timer starts; when it fires, every pending row is moved out and emitted
 // once in recordsArrived(). On every worker state change the buffer is drained first, so the
@@ -11,16 +15,20 @@
 //
 // Thread rules: GUI thread only. Signals are emitted on the GUI thread.
 
+#include "comms/LinkAddress.h"
 #include "core/config/TestConfig.h"
 #include "core/output/RunLayout.h"
 #include "core/test/StepRecord.h"
 #include "gui/app/AlarmMetaType.h"
+#include "gui/app/PreflightReport.h"
 #include "gui/app/RunState.h"
+#include "gui/app/UpdatingSnapshot.h"
 
 #include <QObject>
 #include <QTimer>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QThread;
@@ -38,25 +46,48 @@ public:
     explicit TestController(QObject* parent = nullptr);
     ~TestController() override;
 
-    /// Replace the current test (stopped and destroyed first) by one built from cfg.
+    /// Replace the current test (stopped and destroyed first) by one built from cfg, its
+    /// specimens driven in-process (builtin) or through hsmu-controller at `controller`.
     /// Throws on a configuration or record error; the previous test is gone either way.
-    void load(const TestConfig& cfg);
+    void load(const TestConfig& cfg, const comms::LinkAddress& controller = {});
 
     bool hasTest() const { return m_worker != nullptr; }
     const RunLayout& layout() const { return m_layout; }
     const TestConfig& config() const { return m_config; }
+    const comms::LinkAddress& controllerAddress() const { return m_address; }
     RunState state() const { return m_state; }
-    /// Rows emitted through recordsArrived() since load().
+    /// Where the next load()ed tests record (DIR/<date-time>-<name>/record.h5); "" = none.
+    void setRecordDirectory(const QString& dir) { m_recordDir = dir; }
+    /// The record of the current test ("" if none).
+    const QString& recordPath() const { return m_recordPath; }
+    /// Rows emitted through recordsAvailable() since load().
     qint64 recordsDelivered() const { return m_delivered; }
+    /// Rows the worker has committed since load(), read without the GUI's event loop.
+    qint64 recordsCommitted() const;
+    /// The last pre-flight report of this test (after prepare()).
+    const std::optional<PreflightReport>& preflight() const { return m_preflight; }
+    /// The last updating snapshot (enabled = false without updating).
+    const UpdatingSnapshot& updating() const { return m_updating; }
 
 public slots:
+    /// Prepare the test (connect the link, check stability) and report preflightReady().
+    void prepare();
+    /// Start stepping (prepares first if needed, without a pre-flight report).
     void start();
     void pause();
+    void singleStep();
     void resume();
     void stop();
     void emergencyHold(const QString& reason = QString());
     /// Test seconds per wall second (1 = real time); <= 0 as fast as possible.
     void setSpeed(double factor);
+
+    void setParameterBounds(const QString& name, double lower, double upper);
+    void setParameterLocked(const QString& name, bool locked);
+    void approveUpdate(int proposalId);
+    void rejectUpdate(int proposalId);
+    void setReporterPolicy(hsmu::ReporterPolicy policy, int everyN);
+    void setFitThreshold(double threshold);
 
 signals:
     /// Rows since the last emission, oldest first (GUI thread, at most ~30 Hz).
@@ -64,6 +95,11 @@ signals:
     void stateChanged(hsmu::gui::RunState state, const QString& message);
     void progress(int step, int totalSteps, double testTime, double stepsPerSecond);
     void alarmRaised(const hsmu::Alarm& alarm);
+    void preflightReady(const hsmu::gui::PreflightReport& report);
+    void updatingChanged(const hsmu::gui::UpdatingSnapshot& snapshot);
+    void commandRefused(const QString& reason);
+    /// The current test's HDF5 record was opened (at prepare()).
+    void recordingStarted(const QString& path);
     /// A new test was loaded (layout() and config() describe it).
     void testLoaded();
 
@@ -71,7 +107,8 @@ private:
     void drain();
     void teardown();
     void onWorkerState(RunState state, const QString& message);
-    void invokeOnWorker(void (TestWorker::*slot)());
+    /// Queue f(worker) to the worker thread (nothing without a test).
+    template <class F> void onWorker(F&& f);
 
     QThread* m_thread = nullptr;
     TestWorker* m_worker = nullptr;
@@ -79,9 +116,14 @@ private:
     QTimer m_drainTimer;
     RunLayout m_layout;
     TestConfig m_config;
+    comms::LinkAddress m_address;
     RunState m_state = RunState::Idle;
     double m_speed = 1.0;
     qint64 m_delivered = 0;
+    std::optional<PreflightReport> m_preflight;
+    UpdatingSnapshot m_updating;
+    QString m_recordDir;
+    QString m_recordPath;
 };
 
 } // namespace hsmu::gui

@@ -1,5 +1,7 @@
 #include "gui/app/TestStatusBar.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QLabel>
 
 namespace hsmu::gui {
@@ -16,8 +18,18 @@ TestStatusBar::TestStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_step = label(150);
     m_rate = label(120);
     m_state = label(120);
+    m_link = label(160);
+    m_recording = label(120);
+    m_time->setObjectName(QStringLiteral("statusTime"));
+    m_step->setObjectName(QStringLiteral("statusStep"));
+    m_rate->setObjectName(QStringLiteral("statusRate"));
+    m_state->setObjectName(QStringLiteral("statusState"));
+    m_link->setObjectName(QStringLiteral("statusLink"));
+    m_recording->setObjectName(QStringLiteral("statusRecording"));
     setProgress(0, 0, 0.0, 0.0);
     setRunState(RunState::Idle);
+    setLink(tr("no link"), true);
+    setRecordingFile(QString());
 }
 
 void TestStatusBar::setProgress(int step, int totalSteps, double testTime, double stepsPerSecond) {
@@ -31,6 +43,20 @@ void TestStatusBar::setRunState(RunState state) {
     const bool alarm = state == RunState::Holding || state == RunState::Failed;
     m_state->setStyleSheet(alarm ? QStringLiteral("color: white; background: #c62828;")
                                  : QString());
+}
+
+void TestStatusBar::setLink(const QString& text, bool ok) {
+    m_link->setText(tr("link: %1").arg(text));
+    m_link->setStyleSheet(ok ? QString() : QStringLiteral("color: white; background: #c62828;"));
+}
+
+void TestStatusBar::setRecordingFile(const QString& file) {
+    // The run folder names the record; the full path is in the tool tip.
+    const QFileInfo info(file);
+    m_recording->setText(file.isEmpty()
+                             ? tr("not recording")
+                             : tr("recording: %1/%2").arg(info.dir().dirName(), info.fileName()));
+    m_recording->setToolTip(file);
 }
 
 } // namespace hsmu::gui

@@ -1,7 +1,8 @@
 #pragma once
-// TestStatusBar: test time [s], step (of total), steps per second and the run state, always
-// visible at the bottom of the main window. Temporary messages use QStatusBar::showMessage.
-// Thread rules: GUI thread only.
+// TestStatusBar: test time [s], step (of total), steps per second, the run state, the link to
+// the specimens (built-in virtual lab or tcp://host:port, with its state) and the recording
+// file, always visible at the bottom of the main window. Temporary messages use
+// QStatusBar::showMessage. Thread rules: GUI thread only.
 
 #include "gui/app/RunState.h"
 
@@ -18,12 +19,18 @@ public:
 
     void setProgress(int step, int totalSteps, double testTime, double stepsPerSecond);
     void setRunState(RunState state);
+    /// ok = false shows the link in the alarm colour (e.g. a link fault).
+    void setLink(const QString& text, bool ok);
+    /// Empty: not recording.
+    void setRecordingFile(const QString& file);
 
 private:
     QLabel* m_time = nullptr;
     QLabel* m_step = nullptr;
     QLabel* m_rate = nullptr;
     QLabel* m_state = nullptr;
+    QLabel* m_link = nullptr;
+    QLabel* m_recording = nullptr;
 };
 
 } // namespace hsmu::gui

@@ -2,18 +2,27 @@
 // TestWorker: runs a HybridTest on the thread it lives on (a QThread owned by TestController).
 //
 // It steps in short chunks (<= ~15 ms of work) and re-queues itself, so every queued call
-// (pause, resume, stop, emergency hold, speed) is honoured *between steps*. Pacing: with a
-// speed factor s > 0 the test time follows s x wall time (1 = real time); s <= 0 runs as fast
-// as possible. Every committed StepRecord goes into the RecordBuffer; recordsAvailable() is
-// emitted only when the buffer turns non-empty (one coalesced signal per GUI drain).
+// (pause, resume, single step, stop, emergency hold, speed and the operator's updating
+// decisions: bounds, locks, approvals, policy, threshold) is honoured *between steps*.
+// Pacing: with a speed factor s > 0 the test time follows s x wall time (1 = real time);
+// s <= 0 runs as fast as possible. Every committed StepRecord goes into the RecordBuffer;
+// recordsAvailable() is emitted only when the buffer turns non-empty (one coalesced signal per
+// GUI drain). With a record path, every step (from step 0) and alarm also goes into an HDF5
+// record (RecordWriter), flushed at every state change and finished with the test. The updating
+// panels get an UpdatingSnapshot at most ~10 times a second while running, and at once after every
+// operator decision and state change.
 //
 // Thread rules: construct on the GUI thread, then moveToThread(); afterwards call slots only
 // through queued connections / QMetaObject::invokeMethod. Signals are emitted on the worker
 // thread. Destroy after the thread has finished.
 
+#include "core/record/RecordWriter.h"
 #include "core/test/StepRecord.h"
+#include "core/updating/Reporter.h"
 #include "gui/app/AlarmMetaType.h"
+#include "gui/app/PreflightReport.h"
 #include "gui/app/RunState.h"
+#include "gui/app/UpdatingSnapshot.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -31,23 +40,39 @@ class RecordBuffer;
 class TestWorker : public QObject, public StepObserver {
     Q_OBJECT
 public:
-    TestWorker(std::unique_ptr<HybridTest> test, std::shared_ptr<RecordBuffer> buffer);
+    /// allowUnstable: the configuration forces an unstable explicit run (for the pre-flight).
+    /// record: where prepare() opens the HDF5 record (docs/recording.md); empty: none.
+    TestWorker(std::unique_ptr<HybridTest> test, std::shared_ptr<RecordBuffer> buffer,
+               bool allowUnstable = false, RecordStart record = {}, QString recordPath = {});
     ~TestWorker() override;
 
     void onStep(const StepRecord& record) override;
 
 public slots:
-    /// prepare() the test (emits step 0) and start stepping; Failed if it cannot start.
+    /// prepare() the test (connects a link, emits step 0) and report preflightReady(); Failed
+    /// if it cannot start. Idempotent: a second call repeats the report.
+    void prepare();
+    /// Prepare if needed and start stepping; Failed if it cannot start.
     void start();
     void pause();
+    /// Exactly one step from Ready or Paused, then Paused (or Finished / Holding / Failed).
+    void singleStep();
     /// Leave a pause or a hold (a held step is retried).
     void resume();
     /// End the test in a safe hold.
     void stop();
-    /// Hold at once, between steps (works while running or paused).
+    /// Hold at once, between steps (works while running, paused or prepared).
     void emergencyHold(const QString& reason);
     /// Test seconds per wall second; <= 0: as fast as possible.
     void setSpeed(double factor);
+
+    // Operator decisions on online model updating (refused with commandRefused() if invalid).
+    void setParameterBounds(const QString& name, double lower, double upper);
+    void setParameterLocked(const QString& name, bool locked);
+    void approveUpdate(int proposalId);
+    void rejectUpdate(int proposalId);
+    void setReporterPolicy(hsmu::ReporterPolicy policy, int everyN);
+    void setFitThreshold(double threshold);
 
 signals:
     void recordsAvailable();
@@ -55,17 +80,33 @@ signals:
     /// At most ~10 times a second while running, and at every state change.
     void progress(int step, int totalSteps, double testTime, double stepsPerSecond);
     void alarmRaised(const hsmu::Alarm& alarm);
+    void preflightReady(const hsmu::gui::PreflightReport& report);
+    void updatingChanged(const hsmu::gui::UpdatingSnapshot& snapshot);
+    /// An operator command that could not be carried out, and why.
+    void commandRefused(const QString& reason);
+    /// The HDF5 record was opened at `path` (prepare()).
+    void recordingStarted(const QString& path);
 
 private:
+    bool ensurePrepared();
+    bool openRecord();
     void runChunk();
+    /// One step; false (state changed to Finished / Holding / Failed) if it did not advance.
+    bool stepOnce();
     void schedule(int delayMs);
     void setState(RunState state, const QString& message = {});
     void publishAlarms();
     void emitProgress(bool force);
+    void publishUpdating();
     void restartPacing();
 
     std::unique_ptr<HybridTest> m_test;
     std::shared_ptr<RecordBuffer> m_buffer;
+    bool m_allowUnstable = false;
+    RecordStart m_recordStart;
+    QString m_recordPath;
+    std::unique_ptr<RecordWriter> m_record;
+    bool m_prepared = false;
     RunState m_state = RunState::Ready;
     double m_speed = 1.0;
     bool m_scheduled = false;

@@ -1,14 +1,37 @@
 // MainWindow wiring: a preset loads and runs; the plots receive every step (the specimen's
-// measured loop and its twin, each DOF's history); the emergency hold is always available.
+// measured loop and its twin, each DOF's history); the emergency hold is always available;
+// Start goes through the pre-flight confirmation; the parameters table's edits reach the
+// updater; critical alarms demand attention until acknowledged; settings are remembered.
 
+#include "core/record/RecordReader.h"
+#include "gui/app/AlarmList.h"
+#include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/ParameterTableModel.h"
+#include "gui/app/ParametersPanel.h"
+#include "gui/app/PendingUpdatesPanel.h"
+#include "gui/app/PreflightDialog.h"
+#include "gui/app/SettingsDialog.h"
+#include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
+#include "gui/app/Translations.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 
 #include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace hsmu;
 using namespace hsmu::gui;
@@ -16,8 +39,16 @@ using namespace hsmu::gui;
 class TestMainWindow : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // QSettings in a test location
+        QSettings().clear();
+        QVERIFY(m_records.isValid());
+        ConsoleSettings::setRecordDirectory(m_records.path());
+    }
+
     void presetRunsIntoThePlots() {
         MainWindow window;
+        window.setConfirmBeforeStart(false);
         window.setSpeed(0.0);
         window.show();
         QString error;
@@ -43,6 +74,14 @@ private slots:
         QCOMPARE(history->graph(0)->dataCount(), rows);
         QVERIFY(hysteresis->xAxis->range().size() > 0.0);
 
+        // The console recorded every delivered row into its HDF5 record.
+        const QString record = window.controller().recordPath();
+        QVERIFY(record.startsWith(m_records.path()));
+        QCOMPARE(RecordReader(record.toStdString()).rows(), rows);
+        auto* recording = window.findChild<QLabel*>(QStringLiteral("statusRecording"));
+        QVERIFY(recording && recording->toolTip() == record);
+        QVERIFY(recording->text().endsWith(QStringLiteral("/record.h5")));
+
         // Start again after the end: the test is reloaded and the plots restart.
         window.startTest();
         QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Finished, 30000);
@@ -55,13 +94,16 @@ private slots:
         QVERIFY(bar);
         QAction* hold = bar->emergencyHoldAction();
         QVERIFY(hold->isEnabled());
-        QVERIFY(hold->shortcuts().contains(QKeySequence(Qt::Key_Escape)));
+        QCOMPARE(hold->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_H));
+        QVERIFY(!hold->shortcuts().contains(QKeySequence(Qt::Key_Escape))); // no accidents
+        QVERIFY(hold->text().contains(hold->shortcut().toString(QKeySequence::NativeText)));
         QCOMPARE(hold->shortcutContext(), Qt::ApplicationShortcut);
         for (RunState s : {RunState::Idle, RunState::Ready, RunState::Running, RunState::Paused,
                            RunState::Holding, RunState::Finished, RunState::Failed}) {
             bar->setRunState(s);
             QVERIFY(hold->isEnabled());
         }
+        window.setConfirmBeforeStart(false);
         window.setSpeed(1.0);
         QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
         window.startTest();
@@ -70,12 +112,244 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Holding, 5000);
     }
 
+    void startWaitsForThePreflightConfirmation() {
+        MainWindow window;
+        window.setSpeed(0.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        PreflightDialog* dialog = window.preflightDialog();
+        QVERIFY(!dialog->startButton()->isEnabled()); // zero offsets not yet confirmed
+        QTest::qWait(100);
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        QCOMPARE(window.controller().recordsCommitted(), qint64(1)); // step 0 only
+        auto* verdict = dialog->findChild<QLabel*>(QStringLiteral("stabilityVerdict"));
+        QVERIFY(verdict && verdict->text().contains(QStringLiteral("Stable")));
+        auto* specimens = dialog->findChild<QTableWidget*>(QStringLiteral("preflightSpecimens"));
+        QVERIFY(specimens && specimens->rowCount() == 1);
+        QCOMPARE(specimens->item(0, 0)->text(), QStringLiteral("Element 1"));
+        QVERIFY(specimens->item(0, 1)->text().endsWith(QStringLiteral(" rad")));  // max |d|
+        QVERIFY(specimens->item(0, 2)->text().endsWith(QStringLiteral(" kN m"))); // max |F|
+        // Cancel: nothing starts; Start again shows the same check.
+        dialog->reject();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
+        QTest::qWait(100);
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 5000);
+        dialog = window.preflightDialog();
+        dialog->zeroConfirmation()->setChecked(true);
+        QVERIFY(dialog->startButton()->isEnabled());
+        dialog->startButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Finished, 30000);
+    }
+
+    void emergencyHoldDuringThePreflightStartsNothing() {
+        MainWindow window;
+        window.setSpeed(0.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        QAction* hold = window.findChild<ControlBar*>()->emergencyHoldAction();
+        QVERIFY(window.preflightDialog()->actions().contains(hold)); // alive over the dialog
+        hold->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Holding, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
+        QTest::qWait(100);
+        QCOMPARE(window.controller().state(), RunState::Holding);
+        QCOMPARE(window.controller().recordsCommitted(), qint64(1)); // step 0 only
+    }
+
+    void parameterTableEditsReachTheUpdater() {
+        MainWindow window;
+        window.setConfirmBeforeStart(false);
+        window.setSpeed(5.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        TestController& c = window.controller();
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(c.recordsDelivered() >= 50, 20000);
+        c.pause();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
+        auto* panel = window.findChild<ParametersPanel*>();
+        QVERIFY(panel);
+        ParameterTableModel* model = panel->model();
+        QTRY_COMPARE_WITH_TIMEOUT(model->rowCount(), 7, 5000);
+        int row = -1;
+        for (int r = 0; r < model->rowCount(); ++r)
+            if (model->index(r, ParameterTableModel::Name).data() == QStringLiteral("gamma"))
+                row = r;
+        QVERIFY(row >= 0);
+        QVERIFY(model->flags(model->index(row, ParameterTableModel::Upper)) & Qt::ItemIsEditable);
+        QVERIFY(model->setData(model->index(row, ParameterTableModel::Upper), 2.25, Qt::EditRole));
+        QTRY_COMPARE_WITH_TIMEOUT(c.updating().parameter("gamma")->bounds.upper, 2.25, 5000);
+        QCOMPARE(c.updating().parameter("gamma")->bounds.lower, 0.0);
+        // The table shows what the updater reports back.
+        QTRY_COMPARE_WITH_TIMEOUT(
+            model->index(row, ParameterTableModel::Upper).data(Qt::EditRole).toDouble(), 2.25,
+            5000);
+        QVERIFY(model->setData(model->index(row, ParameterTableModel::Locked), Qt::Checked,
+                               Qt::CheckStateRole));
+        QTRY_VERIFY_WITH_TIMEOUT(c.updating().parameter("gamma")->locked, 5000);
+        QCOMPARE(model->index(row, ParameterTableModel::Locked).data(Qt::CheckStateRole).toInt(),
+                 int(Qt::Checked));
+        // Not a number: refused, nothing sent.
+        QSignalSpy refused(model, &ParameterTableModel::editRefused);
+        QVERIFY(!model->setData(model->index(row, ParameterTableModel::Lower),
+                                QStringLiteral("abc"), Qt::EditRole));
+        QCOMPARE(refused.count(), 1);
+        c.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
+        QVERIFY(
+            !(model->flags(model->index(row, ParameterTableModel::Upper)) & Qt::ItemIsEditable));
+    }
+
+    void setupEditsRebuildTheTestAndLockWhileRunning() {
+        MainWindow window;
+        window.setConfirmBeforeStart(false);
+        window.setSpeed(5.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* dt = setup->findChild<QDoubleSpinBox*>(QStringLiteral("timeStep"));
+        auto* scale = setup->findChild<QDoubleSpinBox*>(QStringLiteral("groundMotionScale"));
+        auto* limits = setup->findChild<QTableWidget*>(QStringLiteral("limitsTable"));
+        auto* policy = setup->findChild<QComboBox*>(QStringLiteral("setupPolicy"));
+        QVERIFY(dt && scale && limits && policy);
+        QCOMPARE(dt->value(), 0.01);
+        QCOMPARE(limits->rowCount(), 1);
+        QCOMPARE(limits->item(0, 0)->text(), QStringLiteral("Element 1"));
+        QVERIFY(!setup->isDirty());
+        dt->setValue(0.005);
+        scale->setValue(0.5);
+        limits->item(0, 2)->setText(QStringLiteral("35"));
+        policy->setCurrentIndex(policy->findData(int(ReporterPolicy::OnApproval)));
+        QVERIFY(setup->isDirty());
+        // A limit that is not a number is refused with the element named; nothing is built.
+        limits->item(0, 1)->setText(QStringLiteral("abc"));
+        QString error;
+        QVERIFY(!setup->edited(&error));
+        QVERIFY2(error.contains(QStringLiteral("Element 1")), qPrintable(error));
+        limits->item(0, 1)->setText(QStringLiteral("0")); // 0 = no limit
+        const auto cfg = setup->edited(&error);
+        QVERIFY2(cfg, qPrintable(error));
+        QCOMPARE(cfg->analysis.dt, 0.005);
+        QCOMPARE(cfg->groundMotion.scale, 0.5);
+        QCOMPARE(cfg->updating.policy, ReporterPolicy::OnApproval);
+        const ElementSpec* e1 = nullptr;
+        for (const ElementSpec& e : cfg->elements)
+            if (e.name == "Element 1")
+                e1 = &e;
+        QVERIFY(e1);
+        QCOMPARE(e1->limits.maxForce, 35.0);
+        QVERIFY(std::isinf(e1->limits.maxDeformation));
+
+        // Start applies the edits first; the setup is read-only while the test runs.
+        window.startTest();
+        TestController& c = window.controller();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Running, 10000);
+        QCOMPARE(c.config().analysis.dt, 0.005);
+        QVERIFY(!setup->isDirty());
+        QVERIFY(!dt->isEnabled());
+        QVERIFY(!limits->isEnabled());
+
+        // Approve a pending update with the panel's button.
+        QTRY_VERIFY_WITH_TIMEOUT(c.recordsDelivered() >= 50, 20000);
+        c.pause();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
+        auto* pending = window.findChild<PendingUpdatesPanel*>();
+        QTRY_COMPARE_WITH_TIMEOUT(pending->shownProposals().size(), qsizetype(1), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!c.updating().pending.empty() &&
+                                     pending->shownProposals().front() ==
+                                         c.updating().pending.front().id,
+                                 5000);
+        const int id = pending->shownProposals().front();
+        auto* approve = pending->findChild<QPushButton*>(QStringLiteral("approve%1").arg(id));
+        QVERIFY(approve && approve->isEnabled());
+        QCOMPARE(c.updating().appliedUpdates, 0);
+        approve->click();
+        QTRY_COMPARE_WITH_TIMEOUT(c.updating().appliedUpdates, 1, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals().isEmpty(), 5000);
+        c.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
+        QVERIFY(dt->isEnabled());
+    }
+
+    void criticalAlarmDemandsAttentionUntilAcknowledged() {
+        MainWindow window;
+        window.show();
+        auto* alarms = window.findChild<AlarmList*>();
+        auto* banner = window.findChild<QWidget*>(QStringLiteral("attentionBanner"));
+        QVERIFY(alarms && banner);
+        QVERIFY(!banner->isVisible());
+        alarms->addAlarm({1.5, 150, AlarmSeverity::Warning, AlarmKind::FitError, "fit"});
+        QVERIFY(!banner->isVisible());
+        alarms->addAlarm({2.0, 200, AlarmSeverity::Critical, AlarmKind::Fracture, "fracture"});
+        QVERIFY(banner->isVisible());
+        QCOMPARE(alarms->unacknowledgedCritical(), 1);
+        QTreeWidgetItem* item = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
+        QCOMPARE(item->text(AlarmList::Time), QStringLiteral("2.00"));
+        QCOMPARE(item->text(AlarmList::Message), QStringLiteral("fracture"));
+        QVERIFY(item->background(AlarmList::Message).style() != Qt::NoBrush);
+        alarms->acknowledgeAll();
+        QCOMPARE(alarms->unacknowledgedCritical(), 0);
+        QVERIFY(!banner->isVisible());
+        QCOMPARE(item->background(AlarmList::Message).style(), Qt::NoBrush);
+    }
+
+    void settingsAreRemembered() {
+        QSettings().clear();
+        ConsoleSettings::setRecordDirectory(QString()); // not recorded
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("my-test.json"));
+        QVERIFY(QFile::copy(QStringLiteral(":/presets/sdof-bouc-wen.json"), file));
+        QByteArray state;
+        {
+            MainWindow window;
+            window.show();
+            QVERIFY(window.loadConfiguration(file));
+            auto* alarmDock = window.findChild<QDockWidget*>(QStringLiteral("alarmDock"));
+            QVERIFY(alarmDock);
+            alarmDock->setFloating(true);
+            auto* setup = window.findChild<SetupPanel*>();
+            setup->setControllerAddress(QStringLiteral("tcp://127.0.0.1:5999"));
+            QVERIFY(window.applySetup()); // the address is remembered when applied
+            window.close();
+        }
+        QCOMPARE(ConsoleSettings::recentFiles().value(0), QFileInfo(file).absoluteFilePath());
+        QCOMPARE(ConsoleSettings::controllerAddress(), QStringLiteral("tcp://127.0.0.1:5999"));
+        QVERIFY(!ConsoleSettings::windowState().isEmpty());
+        MainWindow again;
+        auto* alarmDock = again.findChild<QDockWidget*>(QStringLiteral("alarmDock"));
+        QVERIFY(alarmDock->isFloating()); // the layout came back
+        QCOMPARE(again.findChild<SetupPanel*>()->controllerText(),
+                 QStringLiteral("tcp://127.0.0.1:5999"));
+        // Languages: the embedded catalogues (translations/hsmu_en.ts -> :/i18n/hsmu_en.qm).
+        QVERIFY(Translations::available().contains(QStringLiteral("en")));
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("en")));
+        QVERIFY(!Translations::install(*QCoreApplication::instance(), QStringLiteral("xx")));
+        SettingsDialog dialog;
+        QComboBox* language = dialog.languageBox();
+        const int en = language->findData(QStringLiteral("en"));
+        QVERIFY(en > 0); // after "System default"
+        language->setCurrentIndex(en);
+        dialog.store();
+        QCOMPARE(ConsoleSettings::language(), QStringLiteral("en"));
+        QSettings().clear();
+        ConsoleSettings::setRecordDirectory(m_records.path());
+    }
+
     void badConfigurationIsReportedNotThrown() {
         MainWindow window;
         QString error;
         QVERIFY(!window.loadConfiguration(QStringLiteral("/nonexistent/config.json"), &error));
         QVERIFY2(error.contains(QStringLiteral("config.json")), qPrintable(error));
     }
+
+private:
+    QTemporaryDir m_records;
 };
 
 QTEST_MAIN(TestMainWindow)

@@ -1,0 +1,87 @@
+#include "gui/app/ParametersPanel.h"
+
+#include "gui/app/ParameterTableModel.h"
+
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace hsmu::gui {
+
+ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("parametersPanel"));
+    m_summary = new QLabel(tr("No online model updating in this test."), this);
+    m_summary->setWordWrap(true);
+    m_threshold = new QDoubleSpinBox(this);
+    m_threshold->setObjectName(QStringLiteral("fitThreshold"));
+    m_threshold->setRange(0.001, 10.0);
+    m_threshold->setDecimals(3);
+    m_threshold->setSingleStep(0.01);
+    m_threshold->setToolTip(tr("Normalized RMS fit error above which the inspector requests "
+                               "an update; effective on the next step"));
+    connect(m_threshold, &QDoubleSpinBox::editingFinished, this,
+            [this] { emit thresholdEdited(m_threshold->value()); });
+
+    m_model = new ParameterTableModel(this);
+    connect(m_model, &ParameterTableModel::boundsEdited, this, &ParametersPanel::boundsEdited);
+    connect(m_model, &ParameterTableModel::lockEdited, this, &ParametersPanel::lockEdited);
+    connect(m_model, &ParameterTableModel::editRefused, this, &ParametersPanel::editRefused);
+    m_table = new QTableView(this);
+    m_table->setModel(m_model);
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(ParameterTableModel::Locked,
+                                                      QHeaderView::ResizeToContents);
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                             QAbstractItemView::AnyKeyPressed);
+    m_table->setAlternatingRowColors(true);
+
+    auto* thresholdRow = new QHBoxLayout;
+    thresholdRow->addWidget(new QLabel(tr("Fit-error threshold [-]:"), this));
+    thresholdRow->addWidget(m_threshold);
+    thresholdRow->addStretch(1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_summary);
+    layout->addLayout(thresholdRow);
+    layout->addWidget(m_table, 1);
+    auto* note = new QLabel(tr("Value, sigma (1 standard deviation) and bounds in the law's "
+                               "normalized units (u / u_ref, F / F_ref). Double-click a bound to "
+                               "edit it; bound and lock edits take effect on the next step."),
+                            this);
+    note->setWordWrap(true);
+    note->setStyleSheet(QStringLiteral("color: palette(mid);"));
+    layout->addWidget(note);
+    setEditable(false);
+}
+
+void ParametersPanel::setSnapshot(const UpdatingSnapshot& s) {
+    m_model->setSnapshot(s);
+    if (!s.enabled) {
+        m_summary->setText(tr("No online model updating in this test."));
+        return;
+    }
+    m_summary->setText(
+        tr("%1 on %2 at step %3: fit error e = %4 (threshold %5), %6 updates "
+           "applied")
+            .arg(QString::fromStdString(s.method), QString::fromStdString(s.specimen))
+            .arg(s.step)
+            .arg(QString::number(s.fitError, 'f', 3))
+            .arg(QString::number(s.fitThreshold, 'f', 3))
+            .arg(s.appliedUpdates));
+    if (!m_threshold->hasFocus()) {
+        const QSignalBlocker block(m_threshold);
+        m_threshold->setValue(s.fitThreshold);
+    }
+}
+
+void ParametersPanel::setEditable(bool editable) {
+    m_model->setEditable(editable);
+    m_threshold->setEnabled(editable);
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,129 @@
+#include "gui/app/PreflightDialog.h"
+
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace hsmu::gui {
+
+namespace {
+QString num(double v) {
+    if (!std::isfinite(v) || v <= 0.0)
+        return QCoreApplication::translate("PreflightDialog", "none");
+    return QString::number(v, 'g', 4);
+}
+} // namespace
+
+PreflightDialog::PreflightDialog(const PreflightReport& report, QWidget* parent)
+    : QDialog(parent), m_report(report) {
+    setObjectName(QStringLiteral("preflightDialog"));
+    setWindowTitle(tr("Pre-flight check"));
+    auto* layout = new QVBoxLayout(this);
+
+    auto* analysis = new QGroupBox(tr("Integration and stability"), this);
+    auto* form = new QFormLayout(analysis);
+    form->addRow(tr("Integrator:"), new QLabel(QString::fromStdString(report.integrator), this));
+    form->addRow(tr("Time step dt [s]:"), new QLabel(QString::number(report.dt, 'g', 6), this));
+    form->addRow(tr("Steps:"), new QLabel(QString::number(report.totalSteps), this));
+    form->addRow(tr("Ground motion:"),
+                 new QLabel(tr("%1, PGA %2 m/s²")
+                                .arg(QString::fromStdString(report.groundMotion))
+                                .arg(QString::number(report.pga, 'f', 3)),
+                            this));
+    const StabilityReport& st = report.stability;
+    form->addRow(tr("omega_max [rad/s]:"), new QLabel(QString::number(st.omegaMax, 'g', 5), this));
+    form->addRow(
+        tr("omega_max dt [-] / limit:"),
+        new QLabel(tr("%1 / %2").arg(QString::number(st.omegaDt, 'g', 4),
+                                     std::isfinite(st.limit) ? QString::number(st.limit, 'g', 4)
+                                                             : tr("unconditionally stable")),
+                   this));
+    auto* verdict = new QLabel(this);
+    verdict->setObjectName(QStringLiteral("stabilityVerdict"));
+    verdict->setWordWrap(true);
+    if (st.stable)
+        verdict->setText(tr("Stable: %1").arg(QString::fromStdString(st.message)));
+    else
+        verdict->setText(
+            tr("UNSTABLE: %1%2")
+                .arg(QString::fromStdString(st.message),
+                     report.allowUnstable ? tr(" (forced by the configuration)") : QString()));
+    verdict->setStyleSheet(st.stable ? QStringLiteral("color: #2e7d32;")
+                                     : QStringLiteral("color: #c62828; font-weight: bold;"));
+    form->addRow(tr("Check:"), verdict);
+    layout->addWidget(analysis);
+
+    auto* specimens = new QGroupBox(tr("Specimens: limits and initial measured values"), this);
+    auto* sv = new QVBoxLayout(specimens);
+    for (const SpecimenPreflight& s : report.specimens) {
+        auto* control = new QLabel(
+            tr("%1: %2").arg(QString::fromStdString(s.element), QString::fromStdString(s.control)),
+            specimens);
+        control->setWordWrap(true);
+        sv->addWidget(control);
+    }
+    auto* table = new QTableWidget(int(report.specimens.size()), 6, specimens);
+    table->setObjectName(QStringLiteral("preflightSpecimens"));
+    table->setHorizontalHeaderLabels({tr("Element"), tr("Max |d|"), tr("Max |F|"),
+                                      tr("Max |Δd| per step"), tr("Measured d"), tr("Measured F")});
+    table->verticalHeader()->hide();
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    for (int i = 0; i < int(report.specimens.size()); ++i) {
+        const SpecimenPreflight& s = report.specimens[std::size_t(i)];
+        const QString d = QString::fromStdString(s.deformationUnit);
+        const QString f = QString::fromStdString(s.forceUnit);
+        auto withUnit = [](const QString& value, const QString& unit) {
+            return unit.isEmpty() ? value : QStringLiteral("%1 %2").arg(value, unit);
+        };
+        auto limit = [&withUnit](double v, const QString& unit) {
+            return std::isfinite(v) && v > 0.0 ? withUnit(num(v), unit) : num(v); // "none"
+        };
+        const QStringList cells{QString::fromStdString(s.element),
+                                limit(s.limits.maxDeformation, d),
+                                limit(s.limits.maxForce, f),
+                                limit(s.limits.maxIncrement, d),
+                                withUnit(QString::number(s.measuredDeformation, 'g', 4), d),
+                                withUnit(QString::number(s.measuredForce, 'g', 4), f)};
+        for (int c = 0; c < cells.size(); ++c)
+            table->setItem(i, c, new QTableWidgetItem(cells[c]));
+    }
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    sv->addWidget(table);
+    auto* note = new QLabel(tr("Measured d and F: what the specimen reported after the link "
+                               "was prepared, before any target was sent."),
+                            specimens);
+    note->setWordWrap(true);
+    sv->addWidget(note);
+    layout->addWidget(specimens, 1);
+
+    m_zero = new QCheckBox(tr("I confirm the zero offsets: with the specimen unloaded the "
+                              "actuator displacement and the load cell read zero."),
+                           this);
+    m_zero->setObjectName(QStringLiteral("zeroOffsetsConfirmed"));
+    layout->addWidget(m_zero);
+
+    auto* buttons = new QDialogButtonBox(this);
+    m_start = buttons->addButton(tr("Start test"), QDialogButtonBox::AcceptRole);
+    buttons->addButton(QDialogButtonBox::Cancel);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
+    connect(m_zero, &QCheckBox::toggled, this, &PreflightDialog::updateStart);
+    updateStart();
+    resize(760, 480);
+}
+
+void PreflightDialog::updateStart() {
+    m_start->setEnabled(m_zero->isChecked() && m_report.startable());
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,53 @@
+#pragma once
+// PreflightReport: what the operator confirms before a test starts (as OpenFresco's
+// GenericTCP control asks before its first step): the integrator and its stability check
+// (METHOD.md section 1: explicit Newmark needs omega_max dt <= 2), the ground motion, and per
+// specimen its control, its safety limits and the values measured after the control was
+// prepared (the zero the test starts from). Units: the specimen's (rad and kN m for a
+// rotational spring, m and kN for a lateral one); s; m/s^2.
+// Thread rules: plain data; preflightOf() on the thread that runs the test, after prepare().
+
+#include "core/experimental/SafetyLimits.h"
+#include "core/integration/StabilityCheck.h"
+
+#include <QMetaType>
+
+#include <string>
+#include <vector>
+
+namespace hsmu {
+class HybridTest;
+}
+
+namespace hsmu::gui {
+
+struct SpecimenPreflight {
+    std::string element;
+    std::string control; ///< the control's own description (link, virtual, ...)
+    std::string deformationUnit; ///< e.g. "rad"
+    std::string forceUnit;       ///< e.g. "kN m"
+    SafetyLimits limits;
+    double measuredDeformation = 0.0; ///< after prepare()
+    double measuredForce = 0.0;       ///< after prepare()
+};
+
+struct PreflightReport {
+    std::string integrator;
+    double dt = 0.0; ///< [s]
+    int totalSteps = 0;
+    StabilityReport stability;
+    bool allowUnstable = false; ///< the configuration forces an unstable run
+    std::string groundMotion;   ///< the record's name
+    double pga = 0.0;           ///< [m/s^2]
+    std::vector<SpecimenPreflight> specimens;
+
+    /// The test may start once the operator confirms (stable, or forced by the configuration).
+    bool startable() const { return stability.stable || allowUnstable; }
+};
+
+/// Copy the report out of a prepared test.
+PreflightReport preflightOf(const HybridTest& test, bool allowUnstable);
+
+} // namespace hsmu::gui
+
+Q_DECLARE_METATYPE(hsmu::gui::PreflightReport)

@@ -1,0 +1,332 @@
+#include "gui/app/SetupPanel.h"
+
+#include "core/output/ElementUnits.h"
+#include "gui/ConfigOverrides.h"
+#include "gui/app/PendingUpdatesPanel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace hsmu::gui {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, int decimals, const QString& suffix) {
+    auto* s = new QDoubleSpinBox(parent);
+    s->setRange(lo, hi);
+    s->setDecimals(decimals);
+    s->setSuffix(suffix);
+    return s;
+}
+
+QString limitText(double v) {
+    return std::isfinite(v) && v > 0.0 ? QString::number(v, 'g', 6) : QStringLiteral("0");
+}
+} // namespace
+
+SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("setupPanel"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    m_name = new QLabel(tr("No configuration loaded: choose a preset or open a file."), this);
+    m_name->setWordWrap(true);
+    layout->addWidget(m_name);
+    layout->addWidget(buildRunGroup());
+    layout->addWidget(buildControllerGroup());
+
+    auto* limitsBox = new QGroupBox(tr("Safety limits (0 = none; the specimen's units)"), this);
+    auto* lv = new QVBoxLayout(limitsBox);
+    m_limits = new QTableWidget(0, 4, limitsBox);
+    m_limits->setObjectName(QStringLiteral("limitsTable"));
+    m_limits->setHorizontalHeaderLabels(
+        {tr("Specimen"), tr("Max |d|"), tr("Max |F|"), tr("Max |Δd| per step")});
+    m_limits->verticalHeader()->hide();
+    m_limits->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_limits->setMaximumHeight(110);
+    connect(m_limits, &QTableWidget::itemChanged, this, &SetupPanel::markDirty);
+    lv->addWidget(m_limits);
+    layout->addWidget(limitsBox);
+    layout->addWidget(buildUpdatingGroup());
+
+    m_apply = new QPushButton(tr("Apply (reload the test)"), this);
+    m_apply->setObjectName(QStringLiteral("applySetup"));
+    connect(m_apply, &QPushButton::clicked, this, &SetupPanel::applyRequested);
+    layout->addWidget(m_apply);
+    layout->addStretch(1);
+    m_inputs << m_groundMotion << m_scale << m_dt << m_duration << m_integrator << m_alpha
+             << m_controllerKind << m_host << m_port << m_limits << m_updating << m_policy
+             << m_everyN << m_threshold;
+    setEditable(true);
+    m_apply->setEnabled(false);
+}
+
+QWidget* SetupPanel::buildRunGroup() {
+    auto* box = new QGroupBox(tr("Run"), this);
+    auto* form = new QFormLayout(box);
+    m_groundMotion = new QLineEdit(box);
+    m_groundMotion->setObjectName(QStringLiteral("groundMotionFile"));
+    m_groundMotion->setPlaceholderText(tr("the configuration's record"));
+    auto* browse = new QPushButton(tr("Browse..."), box);
+    connect(browse, &QPushButton::clicked, this, &SetupPanel::browseGroundMotion);
+    auto* gmRow = new QHBoxLayout;
+    gmRow->addWidget(m_groundMotion, 1);
+    gmRow->addWidget(browse);
+    form->addRow(tr("Ground motion file:"), gmRow);
+    m_scale = spin(box, 0.0, 100.0, 3, QString());
+    m_scale->setObjectName(QStringLiteral("groundMotionScale"));
+    form->addRow(tr("Scale [-]:"), m_scale);
+    m_dt = spin(box, 1e-5, 1.0, 5, QStringLiteral(" s"));
+    m_dt->setObjectName(QStringLiteral("timeStep"));
+    form->addRow(tr("Time step dt [s]:"), m_dt);
+    m_duration = spin(box, 0.0, 1e5, 2, QStringLiteral(" s"));
+    m_duration->setSpecialValueText(tr("whole record"));
+    form->addRow(tr("Duration [s]:"), m_duration);
+    m_integrator = new QComboBox(box);
+    m_integrator->addItem(tr("explicit Newmark"), QStringLiteral("explicitNewmark"));
+    m_integrator->addItem(tr("alpha-OS"), QStringLiteral("alphaOS"));
+    form->addRow(tr("Integrator:"), m_integrator);
+    m_alpha = spin(box, -1.0 / 3.0, 0.0, 3, QString());
+    form->addRow(tr("alpha-OS alpha [-]:"), m_alpha);
+    connect(m_integrator, &QComboBox::currentIndexChanged, this, [this] {
+        m_alpha->setEnabled(m_editable && m_integrator->currentData() == QStringLiteral("alphaOS"));
+        markDirty();
+    });
+    connect(m_groundMotion, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
+    for (QDoubleSpinBox* s : {m_scale, m_dt, m_duration, m_alpha})
+        connect(s, &QDoubleSpinBox::valueChanged, this, &SetupPanel::markDirty);
+    return box;
+}
+
+QWidget* SetupPanel::buildControllerGroup() {
+    auto* box = new QGroupBox(tr("Controller"), this);
+    auto* form = new QFormLayout(box);
+    m_controllerKind = new QComboBox(box);
+    m_controllerKind->setObjectName(QStringLiteral("controllerKind"));
+    m_controllerKind->addItem(tr("built-in virtual lab"), QStringLiteral("builtin"));
+    m_controllerKind->addItem(tr("hsmu-controller over TCP"), QStringLiteral("tcp"));
+    m_host = new QLineEdit(QStringLiteral("127.0.0.1"), box);
+    m_host->setObjectName(QStringLiteral("controllerHost"));
+    m_port = new QSpinBox(box);
+    m_port->setObjectName(QStringLiteral("controllerPort"));
+    m_port->setRange(1, 65535);
+    m_port->setValue(5600);
+    form->addRow(tr("Specimens driven by:"), m_controllerKind);
+    form->addRow(tr("Host:"), m_host);
+    form->addRow(tr("Port:"), m_port);
+    connect(m_controllerKind, &QComboBox::currentIndexChanged, this, [this] {
+        const bool tcp = m_controllerKind->currentData() == QStringLiteral("tcp");
+        m_host->setEnabled(tcp && m_editable);
+        m_port->setEnabled(tcp && m_editable);
+        markDirty();
+    });
+    connect(m_host, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
+    connect(m_port, &QSpinBox::valueChanged, this, &SetupPanel::markDirty);
+    return box;
+}
+
+QWidget* SetupPanel::buildUpdatingGroup() {
+    auto* box = new QGroupBox(tr("Online model updating"), this);
+    auto* form = new QFormLayout(box);
+    m_updating = new QCheckBox(tr("enabled"), box);
+    form->addRow(m_updating);
+    m_policy = new QComboBox(box);
+    m_policy->setObjectName(QStringLiteral("setupPolicy"));
+    for (ReporterPolicy p : {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
+                             ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval})
+        m_policy->addItem(PendingUpdatesPanel::describe(p), int(p));
+    form->addRow(tr("Apply updates:"), m_policy);
+    m_everyN = new QSpinBox(box);
+    m_everyN->setRange(1, 100000);
+    form->addRow(tr("N [steps]:"), m_everyN);
+    m_threshold = spin(box, 0.001, 10.0, 3, QString());
+    form->addRow(tr("Fit-error threshold [-]:"), m_threshold);
+    connect(m_updating, &QCheckBox::toggled, this, &SetupPanel::markDirty);
+    connect(m_policy, &QComboBox::currentIndexChanged, this, &SetupPanel::markDirty);
+    connect(m_everyN, &QSpinBox::valueChanged, this, &SetupPanel::markDirty);
+    connect(m_threshold, &QDoubleSpinBox::valueChanged, this, &SetupPanel::markDirty);
+    return box;
+}
+
+void SetupPanel::browseGroundMotion() {
+    const QString file = QFileDialog::getOpenFileName(
+        this, tr("Ground motion record"), QString(),
+        tr("Ground motions (*.AT2 *.at2 *.txt *.csv *.dat);;All files (*)"));
+    if (file.isEmpty())
+        return;
+    m_groundMotion->setText(file);
+    markDirty();
+}
+
+void SetupPanel::setConfig(const TestConfig& cfg) {
+    m_base = cfg;
+    m_loaded = true;
+    {
+        std::vector<QSignalBlocker> blocks;
+        blocks.reserve(std::size_t(m_inputs.size()));
+        for (QWidget* w : m_inputs)
+            blocks.emplace_back(w);
+        m_name->setText(tr("Configuration: %1\n%2")
+                            .arg(QString::fromStdString(cfg.name),
+                                 cfg.sourcePath.empty() ? tr("(built in)")
+                                                        : QString::fromStdString(cfg.sourcePath)));
+        m_groundMotion->clear();
+        m_groundMotion->setPlaceholderText(
+            cfg.groundMotion.file.empty()
+                ? tr("built-in %1 record").arg(QString::fromStdString(cfg.groundMotion.builtin))
+                : QString::fromStdString(cfg.groundMotion.file));
+        m_scale->setValue(cfg.groundMotion.scale);
+        m_dt->setValue(cfg.analysis.dt);
+        m_duration->setValue(std::max(0.0, cfg.analysis.duration));
+        m_integrator->setCurrentIndex(
+            std::max(0, m_integrator->findData(QString::fromStdString(cfg.analysis.integrator))));
+        m_alpha->setValue(cfg.analysis.alpha);
+        m_limits->setRowCount(0);
+        for (const ElementSpec& e : cfg.elements) {
+            if (!e.experimental)
+                continue;
+            const int row = m_limits->rowCount();
+            m_limits->insertRow(row);
+            const ElementUnits u = elementUnits(e.type);
+            auto* name = new QTableWidgetItem(QString::fromStdString(e.name));
+            name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+            name->setToolTip(
+                tr("d in %1, F in %2")
+                    .arg(QString::fromStdString(u.deformation), QString::fromStdString(u.force)));
+            m_limits->setItem(row, 0, name);
+            m_limits->setItem(row, 1, new QTableWidgetItem(limitText(e.limits.maxDeformation)));
+            m_limits->setItem(row, 2, new QTableWidgetItem(limitText(e.limits.maxForce)));
+            m_limits->setItem(row, 3, new QTableWidgetItem(limitText(e.limits.maxIncrement)));
+            for (int c = 1; c < 4; ++c)
+                m_limits->item(row, c)->setToolTip(c == 2 ? QString::fromStdString(u.force)
+                                                          : QString::fromStdString(u.deformation));
+        }
+        const UpdatingSpec& up = cfg.updating;
+        const bool canUpdate = up.enabled || !up.specimen.empty();
+        m_updating->setChecked(up.enabled);
+        m_updating->setProperty("available", canUpdate);
+        m_policy->setCurrentIndex(std::max(0, m_policy->findData(int(up.policy))));
+        m_everyN->setValue(up.everyN);
+        m_threshold->setValue(up.inspector.threshold);
+    }
+    markApplied();
+    setEditable(m_editable);
+}
+
+std::optional<TestConfig> SetupPanel::edited(QString* error) const {
+    auto fail = [error](const QString& why) -> std::optional<TestConfig> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+    if (!m_loaded)
+        return fail(tr("no configuration loaded"));
+    TestConfig cfg = m_base;
+    ConfigOverrides o;
+    o.groundMotionFile = m_groundMotion->text().trimmed();
+    o.scale = m_scale->value();
+    o.dt = m_dt->value();
+    o.duration = m_duration->value();
+    o.applyTo(cfg);
+    cfg.analysis.integrator = m_integrator->currentData().toString().toStdString();
+    cfg.analysis.alpha = m_alpha->value();
+    int row = 0;
+    for (ElementSpec& e : cfg.elements) {
+        if (!e.experimental)
+            continue;
+        double v[3];
+        for (int c = 1; c < 4; ++c) {
+            bool ok = false;
+            const QString text = m_limits->item(row, c)->text().trimmed();
+            v[c - 1] = text.toDouble(&ok);
+            if (!ok || !(v[c - 1] >= 0.0) || !std::isfinite(v[c - 1]))
+                return fail(tr("safety limit of %1: '%2' is not a number >= 0")
+                                .arg(QString::fromStdString(e.name), text));
+            if (v[c - 1] == 0.0)
+                v[c - 1] = kInf;
+        }
+        e.limits.maxDeformation = v[0];
+        e.limits.maxForce = v[1];
+        e.limits.maxIncrement = v[2];
+        ++row;
+    }
+    if (m_updating->isChecked() && cfg.updating.specimen.empty())
+        return fail(tr("this configuration has no updating section to enable"));
+    cfg.updating.enabled = m_updating->isChecked();
+    cfg.updating.policy = ReporterPolicy(m_policy->currentData().toInt());
+    cfg.updating.everyN = m_everyN->value();
+    cfg.updating.inspector.threshold = m_threshold->value();
+    return cfg;
+}
+
+std::optional<comms::LinkAddress> SetupPanel::controller(QString* error) const {
+    std::string why;
+    auto a = comms::LinkAddress::parse(controllerText().toStdString(), &why);
+    if (!a && error)
+        *error = QString::fromStdString(why);
+    return a;
+}
+
+QString SetupPanel::controllerText() const {
+    if (m_controllerKind->currentData() != QStringLiteral("tcp"))
+        return QStringLiteral("builtin");
+    return QStringLiteral("tcp://%1:%2").arg(m_host->text().trimmed()).arg(m_port->value());
+}
+
+void SetupPanel::setControllerAddress(const QString& address) {
+    const auto a = comms::LinkAddress::parse(address.toStdString());
+    if (!a)
+        return;
+    const bool tcp = a->kind == comms::LinkAddress::Kind::Tcp;
+    m_controllerKind->setCurrentIndex(tcp ? 1 : 0);
+    if (tcp) {
+        m_host->setText(QString::fromStdString(a->host));
+        m_port->setValue(a->port);
+    }
+}
+
+void SetupPanel::setEditable(bool editable) {
+    m_editable = editable;
+    for (QWidget* w : m_inputs)
+        w->setEnabled(editable);
+    const bool tcp = m_controllerKind->currentData() == QStringLiteral("tcp");
+    m_host->setEnabled(editable && tcp);
+    m_port->setEnabled(editable && tcp);
+    m_alpha->setEnabled(editable && m_integrator->currentData() == QStringLiteral("alphaOS"));
+    m_updating->setEnabled(editable && m_updating->property("available").toBool());
+    for (QPushButton* b : findChildren<QPushButton*>())
+        b->setEnabled(editable && (b != m_apply || m_dirty));
+}
+
+void SetupPanel::markDirty() {
+    if (!m_loaded || m_dirty)
+        return;
+    m_dirty = true;
+    m_apply->setEnabled(m_editable);
+    emit dirtyChanged(true);
+}
+
+void SetupPanel::markApplied() {
+    m_dirty = false;
+    m_apply->setEnabled(false);
+    emit dirtyChanged(false);
+}
+
+} // namespace hsmu::gui

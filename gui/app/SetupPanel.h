@@ -1,0 +1,82 @@
+#pragma once
+// SetupPanel: the test's setup as the operator may change it before a start: ground motion
+// file and scale [-], integration step dt [s], duration [s] (0 = the whole record), the
+// controller (built-in virtual lab or hsmu-controller at tcp://host:port), each specimen's
+// safety limits (0 = no limit; the specimen's units), the integrator (explicit Newmark or
+// alpha-OS with its alpha) and the updating settings (on/off, reporter policy, N, inspector
+// threshold). Editable while no test runs, read-only while one does. Apply (or Start with
+// unapplied edits) rebuilds the test from edited(); the loaded configuration is the base.
+// Thread rules: GUI thread only.
+
+#include "comms/LinkAddress.h"
+#include "core/config/TestConfig.h"
+
+#include <QWidget>
+
+#include <optional>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace hsmu::gui {
+
+class SetupPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit SetupPanel(QWidget* parent = nullptr);
+
+    /// Show cfg (the configuration as loaded, with the command-line overrides applied).
+    void setConfig(const TestConfig& cfg);
+    bool hasConfig() const { return m_loaded; }
+    /// The loaded configuration with the panel's edits; nullopt and *error if one is invalid.
+    std::optional<TestConfig> edited(QString* error = nullptr) const;
+    /// The controller chosen; nullopt and *error if the address is invalid.
+    std::optional<comms::LinkAddress> controller(QString* error = nullptr) const;
+    void setControllerAddress(const QString& address);
+    QString controllerText() const;
+    void setEditable(bool editable);
+    /// Edits not yet applied to the loaded test.
+    bool isDirty() const { return m_dirty; }
+    void markApplied();
+
+signals:
+    void applyRequested();
+    void dirtyChanged(bool dirty);
+
+private:
+    QWidget* buildRunGroup();
+    QWidget* buildControllerGroup();
+    QWidget* buildUpdatingGroup();
+    void markDirty();
+    void browseGroundMotion();
+
+    TestConfig m_base;
+    bool m_loaded = false;
+    bool m_dirty = false;
+    bool m_editable = true;
+    QLabel* m_name = nullptr;
+    QLineEdit* m_groundMotion = nullptr;
+    QDoubleSpinBox* m_scale = nullptr;
+    QDoubleSpinBox* m_dt = nullptr;
+    QDoubleSpinBox* m_duration = nullptr;
+    QComboBox* m_integrator = nullptr;
+    QDoubleSpinBox* m_alpha = nullptr;
+    QComboBox* m_controllerKind = nullptr;
+    QLineEdit* m_host = nullptr;
+    QSpinBox* m_port = nullptr;
+    QTableWidget* m_limits = nullptr;
+    QCheckBox* m_updating = nullptr;
+    QComboBox* m_policy = nullptr;
+    QSpinBox* m_everyN = nullptr;
+    QDoubleSpinBox* m_threshold = nullptr;
+    QPushButton* m_apply = nullptr;
+    QList<QWidget*> m_inputs;
+};
+
+} // namespace hsmu::gui

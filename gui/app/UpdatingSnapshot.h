@@ -1,0 +1,54 @@
+#pragma once
+// UpdatingSnapshot: the state of a test's online model updating that the operator's panels
+// show (parameters with sigma, bounds and locks; pending proposals; the reporter's policy and
+// the inspector's threshold), copied out of the live ModelUpdater on the worker thread so the
+// GUI never touches the test. Values are in the law's own units (normalized by uRef / fRef for
+// a Bouc-Wen law, METHOD.md section 4); times in s.
+// Thread rules: plain data; snapshotOf() on the thread that runs the test.
+
+#include "core/updating/Reporter.h"
+
+#include <QMetaType>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+class HybridTest;
+}
+
+namespace hsmu::gui {
+
+struct ParameterState {
+    std::string name;
+    double value = 0.0; ///< current estimate
+    double sigma = 0.0; ///< standard deviation (0 where the method has none)
+    ParameterBounds bounds;
+    bool locked = false;
+};
+
+struct UpdatingSnapshot {
+    bool enabled = false; ///< false: the test has no updater, everything else is empty
+    int step = 0;         ///< the committed step the snapshot was taken after
+    std::string specimen; ///< the identified experimental element
+    std::string method;   ///< e.g. "UKF", "Nelder-Mead"
+    bool canLock = false; ///< the method can lock parameters
+    std::vector<ParameterState> parameters;         ///< identifier order
+    std::vector<UpdateProposal> pending;            ///< oldest first
+    std::map<std::string, ParameterValues> targets; ///< target element -> its current values
+    ReporterPolicy policy = ReporterPolicy::EveryStep;
+    int everyN = 10;
+    double fitError = 0.0;     ///< inspector's normalized RMS error [-]
+    double fitThreshold = 0.0; ///< inspector's threshold [-]
+    int appliedUpdates = 0;
+
+    const ParameterState* parameter(const std::string& name) const;
+};
+
+/// Copy the updating state of `test` (enabled = false if it has no updater).
+UpdatingSnapshot snapshotOf(const HybridTest& test);
+
+} // namespace hsmu::gui
+
+Q_DECLARE_METATYPE(hsmu::gui::UpdatingSnapshot)
