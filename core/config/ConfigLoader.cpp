@@ -10,8 +10,6 @@
 
 namespace hsmu {
 
-namespace {
-
 MaterialSpec parseMaterial(const JsonCursor& c)
 {
     c.requireObject();
@@ -29,6 +27,8 @@ MaterialSpec parseMaterial(const JsonCursor& c)
     }
     return m;
 }
+
+namespace {
 
 SafetyLimits parseLimits(const JsonCursor& c)
 {
