@@ -179,20 +179,22 @@ void TestOfflineIdentification::nelderMeadOfflineEqualsOnline() {
 
 void TestOfflineIdentification::importedSyntheticDataIdentifiesKnownParameters_data() {
     QTest::addColumn<QString>("method");
-    QTest::addColumn<double>("nrmseBound");     // force of the final model over the history
-    QTest::addColumn<double>("k0Tolerance");    // relative
-    QTest::addColumn<double>("alphaTolerance"); // relative
-    // Bounds measured on this data set with margin (docs/validation.md style): the UKF
-    // tracks a time-varying estimate, Nelder-Mead fits the whole history at the end.
-    QTest::newRow("ukf") << "ukf" << 0.05 << 0.10 << 0.5;
-    QTest::newRow("nelder-mead") << "nelder-mead" << 0.02 << 0.05 << 0.3;
+    QTest::addColumn<double>("nrmseBound");       // force of the final model over the history
+    QTest::addColumn<double>("k0AlphaTolerance"); // relative, k0 and alpha
+    QTest::addColumn<double>("allTolerance");     // relative, every identified parameter
+    // Measured on this data set (noise free, 1000 samples): UKF final NRMSE 2.6 %, k0 +2.3 %,
+    // alpha -3.6 %, the others within 21 % (deltaNu; beta and gamma trade off, METHOD.md 5);
+    // Nelder-Mead (whole-history fit of the generating law) recovers them to < 1e-9. The
+    // bounds leave about a factor two (UKF) and orders of magnitude (Nelder-Mead) of margin.
+    QTest::newRow("ukf") << QStringLiteral("ukf") << 0.05 << 0.06 << 0.35;
+    QTest::newRow("nelder-mead") << QStringLiteral("nelder-mead") << 1e-6 << 1e-4 << 1e-3;
 }
 
 void TestOfflineIdentification::importedSyntheticDataIdentifiesKnownParameters() {
     QFETCH(QString, method);
     QFETCH(double, nrmseBound);
-    QFETCH(double, k0Tolerance);
-    QFETCH(double, alphaTolerance);
+    QFETCH(double, k0AlphaTolerance);
+    QFETCH(double, allTolerance);
     SpecimenHistory truth;
     std::istringstream csv(syntheticCsv(truth));
     const SpecimenHistory h = readMeasuredDataCsv(csv, "synthetic.csv");
@@ -208,9 +210,10 @@ void TestOfflineIdentification::importedSyntheticDataIdentifiesKnownParameters()
     IdentificationSettings s = defaultIdentificationSettings();
     s.dt = h.meanStep();
     QVERIFY(std::abs(s.dt - 0.01) < 1e-12);
-    s = withOverride(
-        s, {{"model", wrongModel()}, {"updating", {{"nelderMead", {{"maxEvaluations", 1500}}}}}},
-        "override.json");
+    const nlohmann::json updating = {{"nelderMead", {{"maxEvaluations", 1500}}},
+                                     {"ukf", {{"parameterNoise", 1e-3}}}};
+    s = withOverride(s, {{"model", wrongModel()}, {"updating", updating}}, "override.json");
+    QCOMPARE(s.updating.parameterNoise, 1e-3);
     s = withMethod(s, method.toStdString());
     const OfflineIdentificationResult r = identifyOffline(h, s);
 
@@ -218,10 +221,15 @@ void TestOfflineIdentification::importedSyntheticDataIdentifiesKnownParameters()
     const double before = nrmse(h, s.model);
     QVERIFY2(before > 0.2, QByteArray::number(before));
     QVERIFY2(r.finalNrmse < nrmseBound, QByteArray::number(r.finalNrmse));
-    const double k0 = r.finalEstimate.at("k0"), alpha = r.finalEstimate.at("alpha");
-    QVERIFY2(relativeDifference(k0, kTruth.at("k0")) < k0Tolerance, QByteArray::number(k0));
-    QVERIFY2(relativeDifference(alpha, kTruth.at("alpha")) < alphaTolerance,
-             QByteArray::number(alpha));
+    for (const auto& [name, value] : r.finalEstimate) {
+        const bool strict = name == "k0" || name == "alpha";
+        const double error = relativeDifference(value, kTruth.at(name));
+        QVERIFY2(
+            error < (strict ? k0AlphaTolerance : allTolerance),
+            qPrintable(QStringLiteral("%1 = %2").arg(QString::fromStdString(name)).arg(value)));
+    }
+    // The running fit (inspector window) ends well inside the 10 % update threshold.
+    QVERIFY(r.fitError[r.fitError.size() - 1] < 0.01);
 }
 
 void TestOfflineIdentification::badSettingsAreClearErrors() {

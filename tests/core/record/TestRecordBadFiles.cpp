@@ -119,7 +119,7 @@ void TestRecordBadFiles::newerSchemaVersion() {
     H5Aclose(a);
     H5Fclose(f);
     QCOMPARE(openError(path), path + ": schema version 7 is newer than this program's " +
-                                      std::to_string(recordschema::kVersion));
+                                  std::to_string(recordschema::kVersion));
 }
 
 QTEST_APPLESS_MAIN(TestRecordBadFiles)

@@ -129,10 +129,6 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
     }
     QCOMPARE(nanCommanded, 2 * d.rows()); // Elements 2 and 3 are numerical
     QVERIFY(d.appliedUpdates.back() > 0);
-    int trackingComputed = 0;
-    for (int i = 0; i < d.rows(); ++i)
-        trackingComputed += d.tracking(i, 1) > 0.0 ? 1 : 0;
-    QVERIFY(trackingComputed > 0); // J2 of a real actuator is never exactly 0
 
     // Applied-update events: one per update in the StepRecords, with the values sent.
     std::vector<UpdateEvent> events;
