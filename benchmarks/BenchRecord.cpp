@@ -3,10 +3,13 @@
 //   bytes per 1000 steps of the condition-3 frame (2 DOFs, 3 elements, 7 parameters)
 // The rows are real StepRecords of the preset paper-condition-3 (UKF updating), replayed
 // into a writer on a temporary file so that only the recording is timed.
+// Offline re-identification (hsmu replay --identify): the UKF re-run over the recorded
+// specimen history of the same 30 s run (3000 samples), per sample.
 // Run: build/bin/hsmu_bench --benchmark_filter=Record
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
+#include "core/identification/OfflineIdentification.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
 #include "core/test/HybridTest.h"
@@ -101,5 +104,21 @@ void bmRecordBytesPer1000Steps(benchmark::State& state) {
     std::filesystem::remove(path);
 }
 BENCHMARK(bmRecordBytesPer1000Steps)->Arg(3001)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void bmRecordOfflineUkfPerSample(benchmark::State& state) {
+    const Recorded& r = recorded();
+    const IdentificationSettings settings = identificationSettingsFrom(r.cfg);
+    SpecimenHistory h;
+    h.source = "benchmark";
+    for (std::size_t k = 1; k < r.records.size(); ++k) { // Element 1, the specimen
+        h.time.push_back(r.records[k].time);
+        h.deformation.push_back(r.records[k].elements[0].deformation);
+        h.force.push_back(r.records[k].elements[0].force);
+    }
+    for (auto _ : state)
+        benchmark::DoNotOptimize(identifyOffline(h, settings).finalNrmse);
+    state.SetItemsProcessed(state.iterations() * h.size()); // samples per second
+}
+BENCHMARK(bmRecordOfflineUkfPerSample)->Unit(benchmark::kMillisecond);
 
 } // namespace

@@ -80,7 +80,8 @@ IdentificationSettings defaultIdentificationSettings() {
 }
 
 IdentificationSettings withOverride(const IdentificationSettings& base,
-                                    const nlohmann::json& override, const std::string& sourceName) {
+                                    const nlohmann::json& override, const std::string& sourceName,
+                                    const std::string& method) {
     const JsonCursor root(override, sourceName);
     root.requireObject();
     root.allowOnly({"model", "updating"});
@@ -92,16 +93,17 @@ IdentificationSettings withOverride(const IdentificationSettings& base,
         root.child("updating").requireObject();
         section.merge_patch(override["updating"]);
     }
+    if (!method.empty()) {
+        const std::string m = method == "nelder-mead" ? "nelderMead" : method;
+        if (m != "ukf" && m != "nelderMead")
+            throw ConfigError("--method: expected ukf or nelder-mead, found '" + method + "'");
+        section["method"] = m;
+    }
     return reparse(s, section, sourceName);
 }
 
 IdentificationSettings withMethod(const IdentificationSettings& base, const std::string& method) {
-    const std::string m = method == "nelder-mead" ? "nelderMead" : method;
-    if (m != "ukf" && m != "nelderMead")
-        throw ConfigError("--method: expected ukf or nelder-mead, found '" + method + "'");
-    nlohmann::json section = base.updatingDocument;
-    section["method"] = m;
-    return reparse(base, section, "--method " + method);
+    return withOverride(base, nlohmann::json::object(), "--method " + method, method);
 }
 
 } // namespace hsmu

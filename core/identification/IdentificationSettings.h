@@ -44,11 +44,14 @@ IdentificationSettings identificationSettingsFrom(const TestConfig& cfg,
 /// law's default parameters, the UKF with the default settings, dt = 0.01 s.
 IdentificationSettings defaultIdentificationSettings();
 
-/// base with `override` (the document above) applied. sourceName names the override in
-/// messages. Throws ConfigError (unknown keys, bad values, a method the model does not
-/// support, e.g. the UKF on a bilinear model).
+/// base with `override` (the document above) applied, then `method` ("ukf", "nelderMead" or
+/// "nelder-mead"; "" keeps the section's) in the same step, so that a new model and its
+/// method are checked together. sourceName names the override in messages. Throws
+/// ConfigError (unknown keys, bad values, a method the model does not support, e.g. the UKF
+/// on a bilinear model).
 IdentificationSettings withOverride(const IdentificationSettings& base,
-                                    const nlohmann::json& override, const std::string& sourceName);
+                                    const nlohmann::json& override, const std::string& sourceName,
+                                    const std::string& method = {});
 
 /// base with method "ukf" or "nelderMead" (also accepted: "nelder-mead"). Throws ConfigError.
 IdentificationSettings withMethod(const IdentificationSettings& base, const std::string& method);

@@ -67,12 +67,8 @@ std::optional<QString> parse(const QStringList& arguments, CompareOptions& optio
     p.addOption(outOpt);
     overrides.addTo(p);
     p.addOptions({plotsOpt, elementOpt, dofOpt});
-    if (!p.parse(arguments))
-        return p.errorText();
-    if (p.isSet(QStringLiteral("help"))) {
-        ConsoleStreams::out() << p.helpText();
-        return QString();
-    }
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed;
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2)
         return CompareCommand::tr("expected exactly one CONFIG (a file or a preset name)");

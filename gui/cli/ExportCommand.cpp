@@ -28,12 +28,8 @@ int ExportCommand::exec(const QStringList& arguments) {
     const QCommandLineOption csvOpt(QStringLiteral("csv"), tr("Output directory for the CSVs."),
                                     QStringLiteral("dir"));
     p.addOption(csvOpt);
-    if (!p.parse(arguments))
-        return fail(p.errorText());
-    if (p.isSet(QStringLiteral("help"))) {
-        ConsoleStreams::out() << p.helpText() << Qt::flush;
-        return 0;
-    }
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed->isEmpty() ? 0 : fail(*parsed);
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2)
         return fail(tr("expected exactly one FILE.h5"));

@@ -59,12 +59,8 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
     const QCommandLineOption outOpt(QStringLiteral("out"), ReplayCommand::tr("Output directory."),
                                     QStringLiteral("dir"));
     p.addOptions({identifyOpt, importOpt, unitsOpt, methodOpt, configOpt, specimenOpt, outOpt});
-    if (!p.parse(arguments))
-        return p.errorText();
-    if (p.isSet(QStringLiteral("help"))) {
-        ConsoleStreams::out() << p.helpText();
-        return QString();
-    }
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed;
     const QStringList pos = p.positionalArguments();
     o.import = p.value(importOpt);
     o.identify = p.isSet(identifyOpt) || p.isSet(importOpt);
@@ -122,7 +118,7 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
                 const OfflineIdentificationResult& r, const ParameterValues& online,
                 const QString& dir) {
     QTextStream& out = ConsoleStreams::out();
-    out << ReplayCommand::tr("%1 identification of %2 (%3 samples, dt %4 s)")
+    out << ReplayCommand::tr("%1 identification of %2: %3 samples, dt %4 s")
                .arg(QString::fromStdString(r.method), QString::fromStdString(h.source))
                .arg(h.size())
                .arg(num(s.dt))
@@ -188,8 +184,9 @@ int ReplayCommand::exec(const QStringList& arguments) {
             history = historyFromRecord(d, settings.specimen, o.record.toStdString());
         }
         if (!o.config.isEmpty())
-            settings = withOverride(settings, readJsonFile(o.config), o.config.toStdString());
-        if (!o.method.isEmpty())
+            settings = withOverride(settings, readJsonFile(o.config), o.config.toStdString(),
+                                    o.method.toStdString());
+        else if (!o.method.isEmpty())
             settings = withMethod(settings, o.method.toStdString());
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));

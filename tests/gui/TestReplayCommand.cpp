@@ -55,17 +55,17 @@ private:
 void TestReplayCommand::initTestCase() {
     QVERIFY(m_dir.isValid());
     const QString out = path(m_dir, "run");
-    const Result r =
-        hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
-              QStringLiteral("--duration"), QStringLiteral("3"), QStringLiteral("--out"), out});
+    const Result r = clitest::hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
+                                    QStringLiteral("--duration"), QStringLiteral("3"),
+                                    QStringLiteral("--out"), out});
     QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
     m_record = out + QStringLiteral("/record.h5");
 }
 
 void TestReplayCommand::offlineUkfEqualsOnline() {
     const QString out = path(m_dir, "identified");
-    const Result r = hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify"),
-                           QStringLiteral("--out"), out});
+    const Result r = clitest::hsmu({QStringLiteral("replay"), m_record,
+                                    QStringLiteral("--identify"), QStringLiteral("--out"), out});
     QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
     QVERIFY2(r.out.contains(QStringLiteral("UKF identification of")), qPrintable(r.out));
     QVERIFY2(r.out.contains(QStringLiteral("online")), qPrintable(r.out));
@@ -100,7 +100,8 @@ void TestReplayCommand::offlineUkfEqualsOnline() {
 
 void TestReplayCommand::exportWritesTheDatasets() {
     const QString out = path(m_dir, "csv");
-    const Result r = hsmu({QStringLiteral("export"), m_record, QStringLiteral("--csv"), out});
+    const Result r =
+        clitest::hsmu({QStringLiteral("export"), m_record, QStringLiteral("--csv"), out});
     QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
     const hsmu::RecordReader reader(m_record.toStdString());
     const hsmu::RecordData& d = reader.data();
@@ -124,9 +125,9 @@ void TestReplayCommand::exportWritesTheDatasets() {
 
 void TestReplayCommand::compareWritesThreeRecords() {
     const QString out = path(m_dir, "compare");
-    const Result r =
-        hsmu({QStringLiteral("compare"), QStringLiteral("paper-condition-3"),
-              QStringLiteral("--duration"), QStringLiteral("2"), QStringLiteral("--out"), out});
+    const Result r = clitest::hsmu({QStringLiteral("compare"), QStringLiteral("paper-condition-3"),
+                                    QStringLiteral("--duration"), QStringLiteral("2"),
+                                    QStringLiteral("--out"), out});
     QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
     const QJsonObject cmp = readJson(out + QStringLiteral("/compare.json"));
     QVERIFY(!cmp.isEmpty());
@@ -171,9 +172,10 @@ void TestReplayCommand::importIdentifies() {
         "updating": {"bounds": {"k0": [500, 1500], "fy": [1, 5], "b": [0, 0.3]},
                      "nelderMead": {"maxEvaluations": 400}}})");
     const QString out = path(m_dir, "imported");
-    const Result r = hsmu({QStringLiteral("replay"), QStringLiteral("--import"), data,
-                           QStringLiteral("--method"), QStringLiteral("nelder-mead"),
-                           QStringLiteral("--config"), settings, QStringLiteral("--out"), out});
+    const Result r =
+        clitest::hsmu({QStringLiteral("replay"), QStringLiteral("--import"), data,
+                       QStringLiteral("--method"), QStringLiteral("nelder-mead"),
+                       QStringLiteral("--config"), settings, QStringLiteral("--out"), out});
     QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
     const QJsonObject p = readJson(out + QStringLiteral("/summary.json"))
                               .value(QStringLiteral("parameters"))
@@ -190,29 +192,29 @@ void TestReplayCommand::importIdentifies() {
 void TestReplayCommand::errorsAreClear() {
     const QString bad = path(m_dir, "bad.csv");
     writeText(bad, "time [s], deformation [mm], force [kN]\n0, 0, 0\n0.01, x, 1\n");
-    Result r = hsmu({QStringLiteral("replay"), QStringLiteral("--import"), bad,
-                     QStringLiteral("--out"), path(m_dir, "bad")});
+    Result r = clitest::hsmu({QStringLiteral("replay"), QStringLiteral("--import"), bad,
+                              QStringLiteral("--out"), path(m_dir, "bad")});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(bad + QStringLiteral(": line 3: column 2 (deformation): 'x' is not a "
                                                  "number")),
              qPrintable(r.err));
 
-    r = hsmu({QStringLiteral("replay"), m_record});
+    r = clitest::hsmu({QStringLiteral("replay"), m_record});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("use --identify")), qPrintable(r.err));
 
-    r = hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify")});
+    r = clitest::hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify")});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("missing --out DIR")), qPrintable(r.err));
 
-    r = hsmu({QStringLiteral("export"), bad, QStringLiteral("--csv"), path(m_dir, "x")});
+    r = clitest::hsmu({QStringLiteral("export"), bad, QStringLiteral("--csv"), path(m_dir, "x")});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("not an HSMU record (not an HDF5 file)")),
              qPrintable(r.err));
 
-    r = hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify"),
-              QStringLiteral("--method"), QStringLiteral("simplex"), QStringLiteral("--out"),
-              path(m_dir, "x")});
+    r = clitest::hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify"),
+                       QStringLiteral("--method"), QStringLiteral("simplex"),
+                       QStringLiteral("--out"), path(m_dir, "x")});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("expected ukf or nelder-mead")), qPrintable(r.err));
 }
