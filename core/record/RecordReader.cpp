@@ -338,13 +338,17 @@ void RecordReader::Impl::readNewEvents() {
     Eigen::MatrixXd values;
     eventStep.read(r0, n, H5T_NATIVE_INT, s.data(), path);
     eventTime.read(r0, n, H5T_NATIVE_DOUBLE, t.data(), path);
-    const auto element = readFixedStrings(eventElement, r0, n, path);
+    std::vector<int> element(n - r0);
+    eventElement.read(r0, n, H5T_NATIVE_INT, element.data(), path);
     appendRows(values, eventValues, 0, n - r0, path, r0);
     for (std::size_t i = 0; i < s.size(); ++i) {
         std::vector<double> row(std::size_t(values.cols()));
         for (Eigen::Index j = 0; j < values.cols(); ++j)
             row[std::size_t(j)] = values(Eigen::Index(i), j);
-        data.updateEvents.push_back({s[i], t[i], element[i], std::move(row)});
+        const auto& elements = data.layout.elements;
+        const bool known = element[i] >= 0 && std::size_t(element[i]) < elements.size();
+        data.updateEvents.push_back(
+            {s[i], t[i], known ? elements[std::size_t(element[i])].name : "", std::move(row)});
     }
 }
 

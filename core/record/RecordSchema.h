@@ -15,8 +15,7 @@ inline constexpr int kAlarmChunkRows = 32;
 inline constexpr int kSeverityChars = 16;
 inline constexpr int kKindChars = 32;
 inline constexpr int kMessageChars = 512;
-/// Fixed string lengths of /updating/events/element and /notes/text.
-inline constexpr int kElementChars = 64;
+/// Fixed string length of /notes/text.
 inline constexpr int kNoteChars = 1024;
 /// Columns of /updating/tracking.
 inline constexpr int kTrackingColumns = 3;

@@ -53,18 +53,17 @@ struct RecordWriter::Impl {
     RunLayout layout;
     std::size_t nDof = 0, nElem = 0, nPar = 0;
     h5::Id file;
-    h5::Id severityType, kindType, messageType, elementType, noteType;
+    h5::Id severityType, kindType, messageType, noteType;
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
     h5::Extendible par, sd, aux, fit, applied, thisStep, pending, tracking, requested;
     h5::Extendible eventStep, eventTime, eventElement, eventValues;
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
     h5::Extendible noteTime, noteStep, noteText;
 
-    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested;
+    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement;
     std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
-        bTracking;
+        bTracking, bEventTime, bEventValues;
     std::vector<Alarm> bAlarms;
-    std::vector<RecordedUpdate> bEvents;
     std::vector<RecordNote> bNotes;
 
     const std::vector<Alarm>* tracked = nullptr;
@@ -81,6 +80,7 @@ struct RecordWriter::Impl {
     void writeBuffers();
     void writeLogs();
     bool hasBuffered() const;
+    void bufferEvent(const UpdateEvent& ev);
     bool flush();
     std::vector<h5::Extendible*> datasets();
 };
@@ -196,12 +196,12 @@ void RecordWriter::Impl::createUpdating(hid_t root) {
 
     const h5::Id e = h5::check(H5Gcreate2(g.get(), "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                                w, "cannot create group updating/events");
-    const int chunk = recordschema::kAlarmChunkRows;
-    elementType = h5::fixedStringType(recordschema::kElementChars);
+    // Events can come every step (policy everyStep): per-step chunks, not the alarms' small ones.
+    const int chunk = recordschema::kChunkRows;
     eventStep = h5::Extendible(e.get(), "step", i32, -1, w, chunk);
     eventTime = h5::Extendible(e.get(), "time", f64, -1, w, chunk);
     h5::writeAttr(eventTime.id(), "units", std::string("s"), w);
-    eventElement = h5::Extendible(e.get(), "element", elementType.get(), -1, w, chunk);
+    eventElement = h5::Extendible(e.get(), "element", i32, -1, w, chunk);
     eventValues = h5::Extendible(e.get(), "values", f64, int(nPar), w, chunk);
     h5::writeAttr(eventValues.id(), "names", info.parameters, w);
 }
@@ -234,13 +234,13 @@ void RecordWriter::Impl::createLogs(hid_t root) {
 }
 
 void RecordWriter::Impl::clearBuffers() {
-    for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending, &bRequested})
+    for (auto* b :
+         {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement})
         b->clear();
     for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
-                    &bTracking})
+                    &bTracking, &bEventTime, &bEventValues})
         b->clear();
     bAlarms.clear();
-    bEvents.clear();
     bNotes.clear();
 }
 
@@ -293,21 +293,12 @@ void RecordWriter::Impl::writeLogs() {
         alarmKind.append(kind.data(), m);
         alarmMessage.append(msg.data(), m);
     }
-    if (!bEvents.empty() && layout.updating) {
-        std::vector<double> t, values;
-        std::vector<int> s;
-        std::vector<char> element;
-        for (const RecordedUpdate& ev : bEvents) {
-            t.push_back(ev.time);
-            s.push_back(ev.step);
-            putFixed(element, ev.element, recordschema::kElementChars);
-            pushValues(values, ev.values, nPar, true);
-        }
-        const hsize_t m = bEvents.size();
-        eventStep.append(s.data(), m);
-        eventTime.append(t.data(), m);
-        eventElement.append(element.data(), m);
-        eventValues.append(values.data(), m);
+    if (!bEventStep.empty() && layout.updating) {
+        const hsize_t m = bEventStep.size();
+        eventStep.append(bEventStep.data(), m);
+        eventTime.append(bEventTime.data(), m);
+        eventElement.append(bEventElement.data(), m);
+        eventValues.append(bEventValues.data(), m);
     }
     if (!bNotes.empty()) {
         std::vector<double> t;
@@ -399,14 +390,8 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.bTracking.push_back(r.hasUpdating ? up.tracking.j3 : kNaN);
         d.bRequested.push_back(r.hasUpdating && up.updateRequested ? 1 : 0);
         if (r.hasUpdating)
-            for (const UpdateEvent& ev : up.applied) {
-                RecordedUpdate rec{ev.step, ev.time, ev.element, {}};
-                for (const std::string& name : d.layout.updating->parameters) {
-                    const auto it = ev.applied.find(name);
-                    rec.values.push_back(it == ev.applied.end() ? kNaN : it->second);
-                }
-                d.bEvents.push_back(std::move(rec));
-            }
+            for (const UpdateEvent& ev : up.applied)
+                d.bufferEvent(ev);
     }
     if (d.bTime.size() >= std::size_t(kMaxBufferedRows) ||
         Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
@@ -426,8 +411,22 @@ void RecordWriter::trackAlarms(const std::vector<Alarm>* alarms) {
     m_d->tracked = alarms;
 }
 
+void RecordWriter::Impl::bufferEvent(const UpdateEvent& ev) {
+    int element = -1; // the target's column in /elements
+    for (std::size_t j = 0; j < layout.elements.size(); ++j)
+        if (layout.elements[j].name == ev.element)
+            element = int(j);
+    bEventStep.push_back(ev.step);
+    bEventTime.push_back(ev.time);
+    bEventElement.push_back(element);
+    for (const std::string& name : layout.updating->parameters) {
+        const auto it = ev.applied.find(name);
+        bEventValues.push_back(it == ev.applied.end() ? kNaN : it->second);
+    }
+}
+
 bool RecordWriter::Impl::hasBuffered() const {
-    return !bTime.empty() || !bAlarms.empty() || !bNotes.empty() || !bEvents.empty() ||
+    return !bTime.empty() || !bAlarms.empty() || !bNotes.empty() || !bEventStep.empty() ||
            (tracked && tracked->size() > alarmsSeen);
 }
 
@@ -456,7 +455,7 @@ bool RecordWriter::finish() {
     const h5::QuietErrors quiet;
     for (h5::Extendible* x : d.datasets())
         *x = h5::Extendible();
-    for (h5::Id* t : {&d.severityType, &d.kindType, &d.messageType, &d.elementType, &d.noteType})
+    for (h5::Id* t : {&d.severityType, &d.kindType, &d.messageType, &d.noteType})
         t->reset();
     if (d.file.valid() && H5Fclose(d.file.release()) < 0 && !d.failed) {
         d.failed = true;

@@ -8,7 +8,8 @@
 //   /elements/{deformation,force,commanded}           [N x nElem]  attributes names, units, ...
 //   /updating/{parameters,stddev} [N x nParam], {auxiliary_force,fit_error,applied_updates,
 //            updates_this_step,pending_proposals,update_requested} [N], tracking [N x 3]
-//            (the inspector's J1 [s], J2, J3), events/{step,time,element} [E],
+//            (the inspector's J1 [s], J2, J3), events/{step,time,element (an /elements
+//            column index)} [E],
 //            events/values [E x nParam]      (only with online model updating)
 //   /alarms/{time,step,severity,kind,message}         [M]
 //   /notes/{time,step,text}                           [K] operator notes added mid-run
