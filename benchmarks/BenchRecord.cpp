@@ -3,10 +3,13 @@
 //   bytes per 1000 steps of the condition-3 frame (2 DOFs, 3 elements, 7 parameters)
 // The rows are real StepRecords of the preset paper-condition-3 (UKF updating), replayed
 // into a writer on a temporary file so that only the recording is timed.
+// Offline re-identification (hsmu replay --identify): the UKF re-run over the recorded
+// specimen history of the same 30 s run (3000 samples), per sample.
 // Run: build/bin/hsmu_bench --benchmark_filter=Record
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
+#include "core/identification/OfflineIdentification.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
 #include "core/test/HybridTest.h"
@@ -64,14 +67,28 @@ std::string tempRecordPath() {
     return (std::filesystem::temp_directory_path() / "hsmu_bench_record.h5").string();
 }
 
+/// The same rows without their applied-update events (a reporter policy other than
+/// everyStep applies far fewer updates than one per step).
+const std::vector<StepRecord>& withoutEvents() {
+    static const std::vector<StepRecord> rows = [] {
+        std::vector<StepRecord> out = recorded().records;
+        for (StepRecord& r : out)
+            r.updating.applied.clear();
+        return out;
+    }();
+    return rows;
+}
+
+/// Arg 1: every row carries its update event (condition 3 applies every step); 0: none.
 void bmRecordStep(benchmark::State& state) {
     const Recorded& r = recorded();
+    const std::vector<StepRecord>& rows = state.range(0) ? r.records : withoutEvents();
     const std::string path = tempRecordPath();
     {
         RecordWriter writer(path, r.layout, startOf(r.cfg));
         std::size_t i = 0;
         for (auto _ : state) {
-            writer.onStep(r.records[i]);
+            writer.onStep(rows[i]);
             if (++i == r.records.size())
                 i = 0;
         }
@@ -82,7 +99,7 @@ void bmRecordStep(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations());
     std::filesystem::remove(path);
 }
-BENCHMARK(bmRecordStep)->MinTime(2.0);
+BENCHMARK(bmRecordStep)->Arg(1)->Arg(0)->MinTime(2.0);
 
 void bmRecordBytesPer1000Steps(benchmark::State& state) {
     const Recorded& r = recorded();
@@ -101,5 +118,21 @@ void bmRecordBytesPer1000Steps(benchmark::State& state) {
     std::filesystem::remove(path);
 }
 BENCHMARK(bmRecordBytesPer1000Steps)->Arg(3001)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void bmRecordOfflineUkfPerSample(benchmark::State& state) {
+    const Recorded& r = recorded();
+    const IdentificationSettings settings = identificationSettingsFrom(r.cfg);
+    SpecimenHistory h;
+    h.source = "benchmark";
+    for (std::size_t k = 1; k < r.records.size(); ++k) { // Element 1, the specimen
+        h.time.push_back(r.records[k].time);
+        h.deformation.push_back(r.records[k].elements[0].deformation);
+        h.force.push_back(r.records[k].elements[0].force);
+    }
+    for (auto _ : state)
+        benchmark::DoNotOptimize(identifyOffline(h, settings).finalNrmse);
+    state.SetItemsProcessed(state.iterations() * h.size()); // samples per second
+}
+BENCHMARK(bmRecordOfflineUkfPerSample)->Unit(benchmark::kMillisecond);
 
 } // namespace

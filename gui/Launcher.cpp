@@ -5,7 +5,9 @@
 #include "gui/app/Translations.h"
 #include "gui/cli/CompareCommand.h"
 #include "gui/cli/ConsoleStreams.h"
+#include "gui/cli/ExportCommand.h"
 #include "gui/cli/MaterialCommand.h"
+#include "gui/cli/ReplayCommand.h"
 #include "gui/cli/RunCommand.h"
 
 #include <QApplication>
@@ -49,6 +51,10 @@ int runHeadless(const QString& sub, const QStringList& arguments) {
         return RunCommand::exec(arguments);
     if (sub == QLatin1String("compare"))
         return CompareCommand::exec(arguments);
+    if (sub == QLatin1String("export"))
+        return ExportCommand::exec(arguments);
+    if (sub == QLatin1String("replay"))
+        return ReplayCommand::exec(arguments); // the viewer (no --identify) is wired at merge
     return MaterialCommand::exec(arguments);
 }
 
@@ -56,7 +62,9 @@ int dispatch(int argc, char** argv) {
     const QString sub = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool plotting = sub == QLatin1String("run") || sub == QLatin1String("compare");
     const bool plots = plotting && hasArgument(argc, argv, {"--plots"});
-    if (sub == QLatin1String("material") || (plotting && !plots)) {
+    const bool dataOnly = sub == QLatin1String("material") || sub == QLatin1String("export") ||
+                          sub == QLatin1String("replay");
+    if (dataOnly || (plotting && !plots)) {
         QCoreApplication app(argc, argv); // no windowing system needed
         describeApplication();
         installTranslator(app);
@@ -64,8 +72,8 @@ int dispatch(int argc, char** argv) {
     }
     if (!plotting && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
         QTextStream(stderr) << "hsmu: unknown subcommand '" << sub
-                            << "' (available: run, compare, material; without one the console "
-                               "opens)"
+                            << "' (available: run, compare, replay, export, material; "
+                               "without one the console opens)"
                             << Qt::endl;
         return 1;
     }

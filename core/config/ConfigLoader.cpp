@@ -11,8 +11,6 @@
 
 namespace hsmu {
 
-namespace {
-
 MaterialSpec parseMaterial(const JsonCursor& c)
 {
     c.requireObject();
@@ -30,6 +28,8 @@ MaterialSpec parseMaterial(const JsonCursor& c)
     }
     return m;
 }
+
+namespace {
 
 SafetyLimits parseLimits(const JsonCursor& c)
 {

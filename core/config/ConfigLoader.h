@@ -9,6 +9,9 @@
 
 namespace hsmu {
 
+/// Parse a material object {"law": NAME, PARAMETER: value, ...} and check that the law
+/// accepts it. Throws ConfigError naming the field.
+MaterialSpec parseMaterial(const JsonCursor& c);
 /// Read and parse a file. Throws ConfigError (unreadable file, JSON syntax with line/column,
 /// schema violations).
 TestConfig loadConfigFile(const std::string& path);

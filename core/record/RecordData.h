@@ -25,6 +25,22 @@ struct RecordMetadata {
     std::string configName;     ///< TestConfig::name
     std::string operatorNotes;
     double dt = 0.0; ///< integration step [s]
+    std::string run; ///< schema 2: "reference", "initial", "updated" (hsmu compare) or ""
+};
+
+/// A parameter update applied to a target element (/updating/events).
+struct RecordedUpdate {
+    int step = 0;
+    double time = 0.0; ///< [s]
+    std::string element;
+    std::vector<double> values; ///< [nParam] in layout.updating order; NaN: not sent
+};
+
+/// An operator note added during the run (/notes).
+struct RecordNote {
+    double time = 0.0; ///< test time [s]
+    int step = 0;
+    std::string text;
 };
 
 struct RecordData {
@@ -47,6 +63,12 @@ struct RecordData {
     std::vector<int> appliedUpdates;   ///< [N] cumulative updates applied to targets
     std::vector<int> updatesThisStep;  ///< [N]
     std::vector<int> pendingProposals; ///< [N]
+    // Schema 2 (empty when reading a schema-1 file).
+    Eigen::MatrixXd tracking;               ///< [N x 3] J1 [s], J2 [-], J3 [-]
+    std::vector<int> updateRequested;       ///< [N] 1: fit error above the threshold
+    std::vector<RecordedUpdate> updateEvents; ///< in the order applied
+
+    std::vector<RecordNote> notes; ///< schema 2; in the order added
 
     std::vector<Alarm> alarms; ///< in the order raised
 

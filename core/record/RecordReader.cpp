@@ -64,7 +64,10 @@ struct RecordReader::Impl {
     bool swmr = false;
     RecordData data;
     Column step, time, ag, u, v, a, def, force, cmd, par, sd, aux, fit, applied, thisStep, pending;
+    Column tracking, requested; // schema 2
     Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
+    Column eventStep, eventTime, eventElement, eventValues, noteTime, noteStep, noteText;
+    bool v2 = false; // schema 2 datasets present
 
     void open();
     void readMetadata();
@@ -72,6 +75,9 @@ struct RecordReader::Impl {
     std::vector<Column*> stepColumns();
     int readNewRows();
     void readNewAlarms();
+    void readNewEvents();
+    void readNewNotes();
+    std::vector<Column*> logColumns();
 };
 
 void RecordReader::Impl::open() {
@@ -107,6 +113,21 @@ std::vector<Column*> RecordReader::Impl::stepColumns() {
     if (data.layout.updating)
         for (Column* x : {&par, &sd, &aux, &fit, &applied, &thisStep, &pending})
             c.push_back(x);
+    if (data.layout.updating && v2)
+        for (Column* x : {&tracking, &requested})
+            c.push_back(x);
+    return c;
+}
+
+std::vector<Column*> RecordReader::Impl::logColumns() {
+    std::vector<Column*> c = {&alarmTime, &alarmStep, &alarmSeverity, &alarmKind, &alarmMessage};
+    if (v2) {
+        for (Column* x : {&noteTime, &noteStep, &noteText})
+            c.push_back(x);
+        if (data.layout.updating)
+            for (Column* x : {&eventStep, &eventTime, &eventElement, &eventValues})
+                c.push_back(x);
+    }
     return c;
 }
 
@@ -128,6 +149,8 @@ void RecordReader::Impl::readMetadata() {
     m.configName = h5::readStringAttr(root, "config_name", w);
     m.operatorNotes = h5::readStringAttr(root, "operator_notes", w);
     m.dt = h5::readDoubleAttr(root, "dt", w);
+    if (h5::hasAttr(root, "run"))
+        m.run = h5::readStringAttr(root, "run", w);
 
     RunLayout& layout = data.layout;
     {
@@ -184,6 +207,20 @@ void RecordReader::Impl::readMetadata() {
         applied = column("/updating/applied_updates", -1);
         thisStep = column("/updating/updates_this_step", -1);
         pending = column("/updating/pending_proposals", -1);
+        if (m.schemaVersion >= 2) {
+            tracking = column("/updating/tracking", recordschema::kTrackingColumns);
+            requested = column("/updating/update_requested", -1);
+            eventStep = column("/updating/events/step", -1);
+            eventTime = column("/updating/events/time", -1);
+            eventElement = column("/updating/events/element", -1);
+            eventValues = column("/updating/events/values", nPar);
+        }
+    }
+    v2 = m.schemaVersion >= 2;
+    if (v2) {
+        noteTime = column("/notes/time", -1);
+        noteStep = column("/notes/step", -1);
+        noteText = column("/notes/text", -1);
     }
     alarmTime = column("/alarms/time", -1);
     alarmStep = column("/alarms/step", -1);
@@ -206,11 +243,12 @@ void appendRows(std::vector<int>& out, const Column& c, hsize_t r0, hsize_t r1,
     c.read(r0, r1, H5T_NATIVE_INT, out.data() + r0, w);
 }
 
-void appendRows(Eigen::MatrixXd& out, const Column& c, hsize_t r0, hsize_t r1,
-                const std::string& w) {
+/// Rows [r0, r1) of out from file rows [r0 + offset, r1 + offset).
+void appendRows(Eigen::MatrixXd& out, const Column& c, hsize_t r0, hsize_t r1, const std::string& w,
+                hsize_t offset = 0) {
     using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     RowMajor block(Eigen::Index(r1 - r0), c.cols);
-    c.read(r0, r1, H5T_NATIVE_DOUBLE, block.data(), w);
+    c.read(r0 + offset, r1 + offset, H5T_NATIVE_DOUBLE, block.data(), w);
     out.conservativeResize(Eigen::Index(r1), c.cols);
     out.bottomRows(block.rows()) = block;
 }
@@ -259,6 +297,10 @@ int RecordReader::Impl::readNewRows() {
         appendRows(data.appliedUpdates, applied, r0, n, w);
         appendRows(data.updatesThisStep, thisStep, r0, n, w);
         appendRows(data.pendingProposals, pending, r0, n, w);
+        if (v2) {
+            appendRows(data.tracking, tracking, r0, n, w);
+            appendRows(data.updateRequested, requested, r0, n, w);
+        }
     }
     return int(n - r0);
 }
@@ -282,6 +324,50 @@ void RecordReader::Impl::readNewAlarms() {
             {t[i], s[i], severityFromName(sev[i]), kindFromName(kind[i]), msg[i]});
 }
 
+void RecordReader::Impl::readNewEvents() {
+    if (!v2 || !data.layout.updating)
+        return;
+    hsize_t n = eventStep.rows();
+    for (const Column* c : {&eventTime, &eventElement, &eventValues})
+        n = std::min(n, c->rows());
+    const hsize_t r0 = data.updateEvents.size();
+    if (n <= r0)
+        return;
+    std::vector<int> s(n - r0);
+    std::vector<double> t(n - r0);
+    Eigen::MatrixXd values;
+    eventStep.read(r0, n, H5T_NATIVE_INT, s.data(), path);
+    eventTime.read(r0, n, H5T_NATIVE_DOUBLE, t.data(), path);
+    std::vector<int> element(n - r0);
+    eventElement.read(r0, n, H5T_NATIVE_INT, element.data(), path);
+    appendRows(values, eventValues, 0, n - r0, path, r0);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        std::vector<double> row(std::size_t(values.cols()));
+        for (Eigen::Index j = 0; j < values.cols(); ++j)
+            row[std::size_t(j)] = values(Eigen::Index(i), j);
+        const auto& elements = data.layout.elements;
+        const bool known = element[i] >= 0 && std::size_t(element[i]) < elements.size();
+        data.updateEvents.push_back(
+            {s[i], t[i], known ? elements[std::size_t(element[i])].name : "", std::move(row)});
+    }
+}
+
+void RecordReader::Impl::readNewNotes() {
+    if (!v2)
+        return;
+    hsize_t n = std::min({noteTime.rows(), noteStep.rows(), noteText.rows()});
+    const hsize_t r0 = data.notes.size();
+    if (n <= r0)
+        return;
+    std::vector<double> t(n - r0);
+    std::vector<int> s(n - r0);
+    noteTime.read(r0, n, H5T_NATIVE_DOUBLE, t.data(), path);
+    noteStep.read(r0, n, H5T_NATIVE_INT, s.data(), path);
+    const auto text = readFixedStrings(noteText, r0, n, path);
+    for (std::size_t i = 0; i < t.size(); ++i)
+        data.notes.push_back({t[i], s[i], text[i]});
+}
+
 RecordReader::RecordReader(const std::string& path) : m_d(std::make_unique<Impl>()) {
     m_d->path = path;
     const h5::QuietErrors quiet;
@@ -289,6 +375,8 @@ RecordReader::RecordReader(const std::string& path) : m_d(std::make_unique<Impl>
     m_d->readMetadata();
     m_d->readNewRows();
     m_d->readNewAlarms();
+    m_d->readNewEvents();
+    m_d->readNewNotes();
 }
 
 RecordReader::~RecordReader() = default;
@@ -307,8 +395,7 @@ int RecordReader::refresh() {
     const h5::QuietErrors quiet;
     if (m_d->swmr) {
         auto columns = m_d->stepColumns();
-        for (Column* c : {&m_d->alarmTime, &m_d->alarmStep, &m_d->alarmSeverity, &m_d->alarmKind,
-                          &m_d->alarmMessage})
+        for (Column* c : m_d->logColumns())
             columns.push_back(c);
         for (Column* c : columns)
             h5::check(H5Drefresh(c->dset.get()), m_d->path,
@@ -316,6 +403,8 @@ int RecordReader::refresh() {
     }
     const int added = m_d->readNewRows();
     m_d->readNewAlarms();
+    m_d->readNewEvents();
+    m_d->readNewNotes();
     return added;
 }
 

@@ -5,7 +5,8 @@
 namespace hsmu::recordschema {
 
 /// Root attribute "schema_version"; a reader refuses files with a larger value.
-inline constexpr int kVersion = 1;
+/// 2 added /updating/tracking, /updating/update_requested, /updating/events and /notes.
+inline constexpr int kVersion = 2;
 /// Rows per HDF5 chunk of every per-step dataset.
 inline constexpr int kChunkRows = 1024;
 /// Rows per chunk of the alarm datasets (few rows, long strings).
@@ -14,5 +15,9 @@ inline constexpr int kAlarmChunkRows = 32;
 inline constexpr int kSeverityChars = 16;
 inline constexpr int kKindChars = 32;
 inline constexpr int kMessageChars = 512;
+/// Fixed string length of /notes/text.
+inline constexpr int kNoteChars = 1024;
+/// Columns of /updating/tracking.
+inline constexpr int kTrackingColumns = 3;
 
 } // namespace hsmu::recordschema

@@ -2,6 +2,7 @@
 
 #include "core/Version.h"
 #include "core/record/Hdf5Util.h"
+#include "core/record/RecordData.h"
 #include "core/record/RecordSchema.h"
 
 #include <chrono>
@@ -52,14 +53,18 @@ struct RecordWriter::Impl {
     RunLayout layout;
     std::size_t nDof = 0, nElem = 0, nPar = 0;
     h5::Id file;
-    h5::Id severityType, kindType, messageType;
+    h5::Id severityType, kindType, messageType, noteType;
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
-    h5::Extendible par, sd, aux, fit, applied, thisStep, pending;
+    h5::Extendible par, sd, aux, fit, applied, thisStep, pending, tracking, requested;
+    h5::Extendible eventStep, eventTime, eventElement, eventValues;
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
+    h5::Extendible noteTime, noteStep, noteText;
 
-    std::vector<int> bStep, bApplied, bThisStep, bPending;
-    std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit;
+    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement;
+    std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
+        bTracking, bEventTime, bEventValues;
     std::vector<Alarm> bAlarms;
+    std::vector<RecordNote> bNotes;
 
     const std::vector<Alarm>* tracked = nullptr;
     std::size_t alarmsSeen = 0;
@@ -69,9 +74,15 @@ struct RecordWriter::Impl {
     Clock::time_point lastFlush = Clock::now();
 
     void create(const RecordStart& start);
+    void createUpdating(hid_t root);
+    void createLogs(hid_t root);
     void clearBuffers();
     void writeBuffers();
+    void writeLogs();
+    bool hasBuffered() const;
+    void bufferEvent(const UpdateEvent& ev);
     bool flush();
+    std::vector<h5::Extendible*> datasets();
 };
 
 void RecordWriter::Impl::create(const RecordStart& start) {
@@ -90,6 +101,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     h5::writeAttr(root, "config_name", start.configName, w);
     h5::writeAttr(root, "operator_notes", start.operatorNotes, w);
     h5::writeAttr(root, "dt", start.dt, w);
+    h5::writeAttr(root, "run", start.run, w);
 
     const auto group = [&](const char* name) {
         return h5::check(H5Gcreate2(root, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,
@@ -148,51 +160,88 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
     }
-    if (layout.updating) {
-        const UpdatingInfo& info = *layout.updating;
-        const h5::Id g = group("updating");
-        h5::writeAttr(g.get(), "specimen", info.specimen, w);
-        h5::writeAttr(g.get(), "method", info.method, w);
-        h5::writeAttr(g.get(), "names", info.parameters, w);
-        h5::writeAttr(g.get(), "deformation_units", info.units.deformation, w);
-        h5::writeAttr(g.get(), "force_units", info.units.force, w);
-        par = h5::Extendible(g.get(), "parameters", f64, int(nPar), w);
-        sd = h5::Extendible(g.get(), "stddev", f64, int(nPar), w);
-        h5::writeAttr(par.id(), "names", info.parameters, w);
-        h5::writeAttr(sd.id(), "names", info.parameters, w);
-        aux = h5::Extendible(g.get(), "auxiliary_force", f64, -1, w);
-        units(aux, info.units.force);
-        fit = h5::Extendible(g.get(), "fit_error", f64, -1, w);
-        units(fit, "1");
-        applied = h5::Extendible(g.get(), "applied_updates", i32, -1, w);
-        thisStep = h5::Extendible(g.get(), "updates_this_step", i32, -1, w);
-        pending = h5::Extendible(g.get(), "pending_proposals", i32, -1, w);
-    }
-    {
-        const h5::Id g = group("alarms");
-        severityType = h5::fixedStringType(recordschema::kSeverityChars);
-        kindType = h5::fixedStringType(recordschema::kKindChars);
-        messageType = h5::fixedStringType(recordschema::kMessageChars);
-        alarmTime = h5::Extendible(g.get(), "time", f64, -1, w, recordschema::kAlarmChunkRows);
-        units(alarmTime, "s");
-        alarmStep = h5::Extendible(g.get(), "step", i32, -1, w, recordschema::kAlarmChunkRows);
-        alarmSeverity = h5::Extendible(g.get(), "severity", severityType.get(), -1, w,
-                                       recordschema::kAlarmChunkRows);
-        alarmKind =
-            h5::Extendible(g.get(), "kind", kindType.get(), -1, w, recordschema::kAlarmChunkRows);
-        alarmMessage = h5::Extendible(g.get(), "message", messageType.get(), -1, w,
-                                      recordschema::kAlarmChunkRows);
-    }
+    if (layout.updating)
+        createUpdating(root);
+    createLogs(root);
     h5::check(H5Fflush(root, H5F_SCOPE_GLOBAL), w, "cannot be flushed");
     h5::check(H5Fstart_swmr_write(root), w, "cannot start SWMR writing");
 }
 
+void RecordWriter::Impl::createUpdating(hid_t root) {
+    const std::string& w = path;
+    const UpdatingInfo& info = *layout.updating;
+    const hid_t f64 = H5T_NATIVE_DOUBLE, i32 = H5T_NATIVE_INT;
+    const h5::Id g = h5::check(H5Gcreate2(root, "updating", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                               w, "cannot create group updating");
+    h5::writeAttr(g.get(), "specimen", info.specimen, w);
+    h5::writeAttr(g.get(), "method", info.method, w);
+    h5::writeAttr(g.get(), "names", info.parameters, w);
+    h5::writeAttr(g.get(), "deformation_units", info.units.deformation, w);
+    h5::writeAttr(g.get(), "force_units", info.units.force, w);
+    par = h5::Extendible(g.get(), "parameters", f64, int(nPar), w);
+    sd = h5::Extendible(g.get(), "stddev", f64, int(nPar), w);
+    h5::writeAttr(par.id(), "names", info.parameters, w);
+    h5::writeAttr(sd.id(), "names", info.parameters, w);
+    aux = h5::Extendible(g.get(), "auxiliary_force", f64, -1, w);
+    h5::writeAttr(aux.id(), "units", info.units.force, w);
+    fit = h5::Extendible(g.get(), "fit_error", f64, -1, w);
+    h5::writeAttr(fit.id(), "units", std::string("1"), w);
+    applied = h5::Extendible(g.get(), "applied_updates", i32, -1, w);
+    thisStep = h5::Extendible(g.get(), "updates_this_step", i32, -1, w);
+    pending = h5::Extendible(g.get(), "pending_proposals", i32, -1, w);
+    tracking = h5::Extendible(g.get(), "tracking", f64, recordschema::kTrackingColumns, w);
+    h5::writeAttr(tracking.id(), "names", std::vector<std::string>{"j1", "j2", "j3"}, w);
+    h5::writeAttr(tracking.id(), "units", std::vector<std::string>{"s", "1", "1"}, w);
+    requested = h5::Extendible(g.get(), "update_requested", i32, -1, w);
+
+    const h5::Id e = h5::check(H5Gcreate2(g.get(), "events", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                               w, "cannot create group updating/events");
+    // Events can come every step (policy everyStep): per-step chunks, not the alarms' small ones.
+    const int chunk = recordschema::kChunkRows;
+    eventStep = h5::Extendible(e.get(), "step", i32, -1, w, chunk);
+    eventTime = h5::Extendible(e.get(), "time", f64, -1, w, chunk);
+    h5::writeAttr(eventTime.id(), "units", std::string("s"), w);
+    eventElement = h5::Extendible(e.get(), "element", i32, -1, w, chunk);
+    eventValues = h5::Extendible(e.get(), "values", f64, int(nPar), w, chunk);
+    h5::writeAttr(eventValues.id(), "names", info.parameters, w);
+}
+
+void RecordWriter::Impl::createLogs(hid_t root) {
+    const std::string& w = path;
+    const hid_t f64 = H5T_NATIVE_DOUBLE, i32 = H5T_NATIVE_INT;
+    const int chunk = recordschema::kAlarmChunkRows;
+    {
+        const h5::Id g =
+            h5::check(H5Gcreate2(root, "alarms", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,
+                      "cannot create group alarms");
+        severityType = h5::fixedStringType(recordschema::kSeverityChars);
+        kindType = h5::fixedStringType(recordschema::kKindChars);
+        messageType = h5::fixedStringType(recordschema::kMessageChars);
+        alarmTime = h5::Extendible(g.get(), "time", f64, -1, w, chunk);
+        h5::writeAttr(alarmTime.id(), "units", std::string("s"), w);
+        alarmStep = h5::Extendible(g.get(), "step", i32, -1, w, chunk);
+        alarmSeverity = h5::Extendible(g.get(), "severity", severityType.get(), -1, w, chunk);
+        alarmKind = h5::Extendible(g.get(), "kind", kindType.get(), -1, w, chunk);
+        alarmMessage = h5::Extendible(g.get(), "message", messageType.get(), -1, w, chunk);
+    }
+    const h5::Id g = h5::check(H5Gcreate2(root, "notes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,
+                               "cannot create group notes");
+    noteType = h5::fixedStringType(recordschema::kNoteChars);
+    noteTime = h5::Extendible(g.get(), "time", f64, -1, w, chunk);
+    h5::writeAttr(noteTime.id(), "units", std::string("s"), w);
+    noteStep = h5::Extendible(g.get(), "step", i32, -1, w, chunk);
+    noteText = h5::Extendible(g.get(), "text", noteType.get(), -1, w, chunk);
+}
+
 void RecordWriter::Impl::clearBuffers() {
-    for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending})
+    for (auto* b :
+         {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement})
         b->clear();
-    for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit})
+    for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
+                    &bTracking, &bEventTime, &bEventValues})
         b->clear();
     bAlarms.clear();
+    bNotes.clear();
 }
 
 void RecordWriter::Impl::writeBuffers() {
@@ -215,8 +264,17 @@ void RecordWriter::Impl::writeBuffers() {
             applied.append(bApplied.data(), n);
             thisStep.append(bThisStep.data(), n);
             pending.append(bPending.data(), n);
+            tracking.append(bTracking.data(), n);
+            requested.append(bRequested.data(), n);
         }
     }
+    writeLogs();
+    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), path, "cannot be flushed");
+    flushed += int(n);
+    alarmsFlushed += int(bAlarms.size());
+}
+
+void RecordWriter::Impl::writeLogs() {
     if (!bAlarms.empty()) {
         std::vector<double> t;
         std::vector<int> s;
@@ -235,9 +293,27 @@ void RecordWriter::Impl::writeBuffers() {
         alarmKind.append(kind.data(), m);
         alarmMessage.append(msg.data(), m);
     }
-    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), path, "cannot be flushed");
-    flushed += int(n);
-    alarmsFlushed += int(bAlarms.size());
+    if (!bEventStep.empty() && layout.updating) {
+        const hsize_t m = bEventStep.size();
+        eventStep.append(bEventStep.data(), m);
+        eventTime.append(bEventTime.data(), m);
+        eventElement.append(bEventElement.data(), m);
+        eventValues.append(bEventValues.data(), m);
+    }
+    if (!bNotes.empty()) {
+        std::vector<double> t;
+        std::vector<int> s;
+        std::vector<char> text;
+        for (const RecordNote& note : bNotes) {
+            t.push_back(note.time);
+            s.push_back(note.step);
+            putFixed(text, note.text, recordschema::kNoteChars);
+        }
+        const hsize_t m = bNotes.size();
+        noteTime.append(t.data(), m);
+        noteStep.append(s.data(), m);
+        noteText.append(text.data(), m);
+    }
 }
 
 bool RecordWriter::Impl::flush() {
@@ -257,6 +333,14 @@ bool RecordWriter::Impl::flush() {
     }
     clearBuffers();
     return !failed;
+}
+
+std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
+    return {&step,          &time,      &ag,           &u,           &v,         &a,
+            &def,           &force,     &cmd,          &par,         &sd,        &aux,
+            &fit,           &applied,   &thisStep,     &pending,     &tracking,  &requested,
+            &eventStep,     &eventTime, &eventElement, &eventValues, &alarmTime, &alarmStep,
+            &alarmSeverity, &alarmKind, &alarmMessage, &noteTime,    &noteStep,  &noteText};
 }
 
 RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
@@ -301,6 +385,13 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.bApplied.push_back(r.hasUpdating ? up.appliedUpdates : 0);
         d.bThisStep.push_back(r.hasUpdating ? up.updatesThisStep : 0);
         d.bPending.push_back(r.hasUpdating ? up.pendingProposals : 0);
+        d.bTracking.push_back(r.hasUpdating ? up.tracking.j1 : kNaN);
+        d.bTracking.push_back(r.hasUpdating ? up.tracking.j2 : kNaN);
+        d.bTracking.push_back(r.hasUpdating ? up.tracking.j3 : kNaN);
+        d.bRequested.push_back(r.hasUpdating && up.updateRequested ? 1 : 0);
+        if (r.hasUpdating)
+            for (const UpdateEvent& ev : up.applied)
+                d.bufferEvent(ev);
     }
     if (d.bTime.size() >= std::size_t(kMaxBufferedRows) ||
         Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
@@ -320,12 +411,35 @@ void RecordWriter::trackAlarms(const std::vector<Alarm>* alarms) {
     m_d->tracked = alarms;
 }
 
+void RecordWriter::Impl::bufferEvent(const UpdateEvent& ev) {
+    int element = -1; // the target's column in /elements
+    for (std::size_t j = 0; j < layout.elements.size(); ++j)
+        if (layout.elements[j].name == ev.element)
+            element = int(j);
+    bEventStep.push_back(ev.step);
+    bEventTime.push_back(ev.time);
+    bEventElement.push_back(element);
+    for (const std::string& name : layout.updating->parameters) {
+        const auto it = ev.applied.find(name);
+        bEventValues.push_back(it == ev.applied.end() ? kNaN : it->second);
+    }
+}
+
+bool RecordWriter::Impl::hasBuffered() const {
+    return !bTime.empty() || !bAlarms.empty() || !bNotes.empty() || !bEventStep.empty() ||
+           (tracked && tracked->size() > alarmsSeen);
+}
+
 void RecordWriter::flushIfDue() {
     const Impl& d = *m_d;
-    const bool pending =
-        !d.bTime.empty() || !d.bAlarms.empty() || (d.tracked && d.tracked->size() > d.alarmsSeen);
-    if (pending && Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
+    if (d.hasBuffered() &&
+        Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
         m_d->flush();
+}
+
+void RecordWriter::addNote(double time, int step, const std::string& text) {
+    if (!m_d->failed && !m_d->closed)
+        m_d->bNotes.push_back({time, step, text});
 }
 
 bool RecordWriter::flush() {
@@ -339,15 +453,10 @@ bool RecordWriter::finish() {
     d.flush();
     d.closed = true;
     const h5::QuietErrors quiet;
-    for (auto* x :
-         {&d.step,          &d.time,      &d.ag,          &d.u,       &d.v,         &d.a,
-          &d.def,           &d.force,     &d.cmd,         &d.par,     &d.sd,        &d.aux,
-          &d.fit,           &d.applied,   &d.thisStep,    &d.pending, &d.alarmTime, &d.alarmStep,
-          &d.alarmSeverity, &d.alarmKind, &d.alarmMessage})
+    for (h5::Extendible* x : d.datasets())
         *x = h5::Extendible();
-    d.severityType.reset();
-    d.kindType.reset();
-    d.messageType.reset();
+    for (h5::Id* t : {&d.severityType, &d.kindType, &d.messageType, &d.noteType})
+        t->reset();
     if (d.file.valid() && H5Fclose(d.file.release()) < 0 && !d.failed) {
         d.failed = true;
         d.error = d.path + ": cannot be closed (HDF5: " + h5::errorText() + ")";

@@ -7,8 +7,12 @@
 //   /dofs/{u,v,a}                                     [N x nDof]   attribute names, units
 //   /elements/{deformation,force,commanded}           [N x nElem]  attributes names, units, ...
 //   /updating/{parameters,stddev} [N x nParam], {auxiliary_force,fit_error,applied_updates,
-//            updates_this_step,pending_proposals} [N]  (only with online model updating)
+//            updates_this_step,pending_proposals,update_requested} [N], tracking [N x 3]
+//            (the inspector's J1 [s], J2, J3), events/{step,time,element (an /elements
+//            column index)} [E],
+//            events/values [E x nParam]      (only with online model updating)
 //   /alarms/{time,step,severity,kind,message}         [M]
+//   /notes/{time,step,text}                           [K] operator notes added mid-run
 //
 // The file is created with the latest format and switched to SWMR write mode, so another
 // process can read it (RecordReader, h5py with swmr=True) while the run goes on. Rows are
@@ -16,7 +20,8 @@
 // seconds of wall time, every kMaxBufferedRows rows, and by flush() / finish() / the
 // destructor: a process killed mid-run leaves a file holding every step flushed before.
 // onStep() only checks the clock when rows are buffered; a test that holds (no steps) should
-// have its owner call flushIfDue() now and then so the held rows reach the file.
+// have its owner call flushIfDue() at least once a second while it holds (RunCommand does
+// before each reconnect) so that held rows, alarms and notes reach the file.
 // Alarms: trackAlarms(&test.alarms()) makes every onStep()/flush() append the alarms raised
 // since the last call; or call writeAlarms() yourself.
 // Errors: the constructor throws RecordError naming the file; a later write failure stops
@@ -39,6 +44,9 @@ struct RecordStart {
     std::string configName;    ///< TestConfig::name
     std::string operatorNotes;
     double dt = 0.0; ///< integration step [s]
+    /// Which run of a protocol this is ("reference", "initial", "updated" for hsmu compare;
+    /// "" for a single run). The configuration is the one given to the command.
+    std::string run;
 };
 
 class RecordWriter final : public StepObserver {
@@ -57,7 +65,10 @@ public:
     void writeAlarms(const std::vector<Alarm>& alarms);
     /// Not owned; must outlive every later onStep()/flush()/finish(); nullptr to stop.
     void trackAlarms(const std::vector<Alarm>* alarms);
-    /// Flush if rows are buffered and kFlushInterval elapsed since the last flush.
+    /// An operator note at test time `time` [s] and step `step`, written with the next flush
+    /// (cut at recordschema::kNoteChars bytes). Ignored once the writer failed or finished.
+    void addNote(double time, int step, const std::string& text);
+    /// Flush if rows, alarms or notes are buffered and kFlushInterval elapsed since the last flush.
     void flushIfDue();
     /// Write every buffered row and alarm, then H5Fflush. False if recording failed.
     bool flush();

@@ -55,8 +55,9 @@ private:
     int m_e, m_d;
 };
 
-ComparisonRun runOne(const std::string& name, const TestConfig& cfg, const std::string& element,
-                     const std::string& dof, const std::function<void(double)>& progress)
+ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
+                     const std::string& element, const std::string& dof,
+                     const std::function<void(double)>& progress, const ComparisonHooks& hooks)
 {
     ComparisonRun run;
     run.name = name;
@@ -73,6 +74,8 @@ ComparisonRun runOne(const std::string& name, const TestConfig& cfg, const std::
                           dof + "'");
     Collector collector(run, e, d);
     test->addObserver(&collector);
+    if (hooks.started)
+        hooks.started(index, cfg, *test);
     if (!test->prepare())
         throw ConfigError(cfg.sourcePath + ": compare (" + name + "): " + test->lastError());
     if (test->updater())
@@ -81,6 +84,8 @@ ComparisonRun runOne(const std::string& name, const TestConfig& cfg, const std::
     while (test->step() == HybridTest::StepResult::Advanced)
         if (progress && test->currentStep() % 500 == 0)
             progress(double(test->currentStep()) / total);
+    if (hooks.finished)
+        hooks.finished(index, *test);
     run.steps = test->currentStep();
     run.finalState = testStateName(test->state());
     for (const auto& a : test->alarms()) {
@@ -160,7 +165,8 @@ TestConfig initialConfig(const TestConfig& cfg)
 }
 
 ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o,
-                               const std::function<void(int, double)>& progress)
+                               const std::function<void(int, double)>& progress,
+                               const ComparisonHooks& hooks)
 {
     if (!cfg.updating.enabled)
         throw ConfigError(cfg.sourcePath + ": compare needs an enabled \"updating\" section");
@@ -180,9 +186,9 @@ ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o
                 progress(i, f);
         };
     };
-    r.reference = runOne("reference", referenceConfig(cfg, o), r.element, r.dof, p(0));
-    r.initial = runOne("initial", initialConfig(cfg), r.element, r.dof, p(1));
-    r.updated = runOne("updated", cfg, r.element, r.dof, p(2));
+    r.reference = runOne(0, "reference", referenceConfig(cfg, o), r.element, r.dof, p(0), hooks);
+    r.initial = runOne(1, "initial", initialConfig(cfg), r.element, r.dof, p(1), hooks);
+    r.updated = runOne(2, "updated", cfg, r.element, r.dof, p(2), hooks);
     r.initialMetric = metric(r.initial, r.reference);
     r.updatedMetric = metric(r.updated, r.reference);
     return r;

@@ -49,6 +49,16 @@ struct ComparisonResult {
     ComparisonMetric initialMetric, updatedMetric;
 };
 
+class HybridTest;
+
+/// Optional calls around each run (index 0 reference, 1 initial, 2 updated), e.g. to record
+/// it: `started` after the run's test is built and before prepare() (add observers here),
+/// `finished` after its last step, before the test is destroyed (remove them here).
+struct ComparisonHooks {
+    std::function<void(int run, const TestConfig& cfg, HybridTest& test)> started;
+    std::function<void(int run, HybridTest& test)> finished;
+};
+
 /// The three configurations (exposed for tests). Throws ConfigError if cfg has no updating
 /// section, the compared element is not numerical, or the specimen has no `specimen` spec.
 TestConfig referenceConfig(const TestConfig& cfg, const ComparisonOptions& o = {});
@@ -56,7 +66,8 @@ TestConfig initialConfig(const TestConfig& cfg);
 
 /// Run all three to the end (compute only). progress(run index 0..2, fraction) may be empty.
 ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o = {},
-                               const std::function<void(int, double)>& progress = {});
+                               const std::function<void(int, double)>& progress = {},
+                               const ComparisonHooks& hooks = {});
 
 /// NRMSE and peak error of x against ref over their common length.
 void compareSeries(const std::vector<double>& x, const std::vector<double>& ref, double& nrmse,

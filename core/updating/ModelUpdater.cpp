@@ -52,9 +52,10 @@ void ModelUpdater::report(const std::vector<UpdateEvent>& events, std::vector<Al
                           int step, double time, UpdatingSample& out)
 {
     for (const auto& ev : events) {
-        if (ev.ok)
+        if (ev.ok) {
             ++out.updatesThisStep;
-        else
+            out.applied.push_back(ev);
+        } else
             alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::ModelUpdate,
                               "update not applied: " + ev.message});
     }
@@ -115,6 +116,8 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
                out);
 
     out.fitError = m_inspector.fitError();
+    out.tracking = m_inspector.tracking();
+    out.updateRequested = m_inspector.updateRequested();
     fillEstimate(out);
     out.appliedUpdates = m_reporter->appliedCount();
     out.pendingProposals = static_cast<int>(m_reporter->pending().size());

@@ -37,6 +37,9 @@ struct UpdatingSample {
     int appliedUpdates = 0;          ///< cumulative updates applied to targets
     int updatesThisStep = 0;
     int pendingProposals = 0;
+    TrackingIndices tracking;        ///< inspector's last J1 [s], J2, J3 [-]
+    bool updateRequested = false;    ///< inspector: fit error above its threshold
+    std::vector<UpdateEvent> applied; ///< updates applied to targets at this step (ok ones)
 };
 
 class ModelUpdater {

@@ -1,7 +1,10 @@
 #include "gui/cli/CompareCommand.h"
 
 #include "core/output/ComparisonSummary.h"
+#include "core/output/RunLayout.h"
+#include "core/record/RecordWriter.h"
 #include "core/test/ComparisonProtocol.h"
+#include "core/test/HybridTest.h"
 #include "gui/PresetLibrary.h"
 #include "gui/cli/ComparisonTable.h"
 #include "gui/cli/ConsoleStreams.h"
@@ -14,6 +17,8 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <optional>
 
 namespace hsmu::gui {
@@ -62,12 +67,8 @@ std::optional<QString> parse(const QStringList& arguments, CompareOptions& optio
     p.addOption(outOpt);
     overrides.addTo(p);
     p.addOptions({plotsOpt, elementOpt, dofOpt});
-    if (!p.parse(arguments))
-        return p.errorText();
-    if (p.isSet(QStringLiteral("help"))) {
-        ConsoleStreams::out() << p.helpText();
-        return QString();
-    }
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed;
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2)
         return CompareCommand::tr("expected exactly one CONFIG (a file or a preset name)");
@@ -110,6 +111,52 @@ private:
     int m_next = 10;
 };
 
+/// One HDF5 record per run: DIR/reference/record.h5, DIR/initial/record.h5,
+/// DIR/updated/record.h5 (docs/recording.md; root attribute "run" names the run).
+class CompareRecords {
+public:
+    explicit CompareRecords(const QDir& dir) : m_dir(dir) {}
+
+    ComparisonHooks hooks() {
+        ComparisonHooks h;
+        h.started = [this](int run, const TestConfig& cfg, HybridTest& test) {
+            start(run, cfg, test);
+        };
+        h.finished = [this](int run, HybridTest& test) { finish(run, test); };
+        return h;
+    }
+    /// Why a record failed, one entry per failure.
+    const QStringList& errors() const { return m_errors; }
+
+private:
+    static constexpr const char* kRuns[] = {"reference", "initial", "updated"};
+
+    void start(int run, const TestConfig& cfg, HybridTest& test) {
+        const QString sub = QLatin1String(kRuns[run]);
+        if (!m_dir.mkpath(sub))
+            throw std::runtime_error(m_dir.filePath(sub).toStdString() +
+                                     ": cannot create the output directory");
+        const std::string path = m_dir.filePath(sub + QStringLiteral("/record.h5")).toStdString();
+        RecordStart start{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt, kRuns[run]};
+        m_writers[std::size_t(run)] =
+            std::make_unique<RecordWriter>(path, RunLayout::of(test), start);
+        test.addObserver(m_writers[std::size_t(run)].get());
+    }
+
+    void finish(int run, HybridTest& test) {
+        RecordWriter& w = *m_writers[std::size_t(run)];
+        test.removeObserver(&w);
+        w.writeAlarms(test.alarms());
+        if (!w.finish())
+            m_errors << QString::fromStdString(w.path() +
+                                               ": the record could not be written: " + w.error());
+    }
+
+    QDir m_dir;
+    std::array<std::unique_ptr<RecordWriter>, 3> m_writers;
+    QStringList m_errors;
+};
+
 } // namespace
 
 int CompareCommand::exec(const QStringList& arguments) {
@@ -133,14 +180,16 @@ int CompareCommand::exec(const QStringList& arguments) {
     const QDir dir(options.outDir);
 
     ComparisonResult result;
+    CompareRecords records(dir);
     Progress progress;
     progress.start();
     err() << tr("hsmu compare: three runs (reference, initial, updated) of %1")
                  .arg(QString::fromStdString(cfg.name))
           << Qt::endl;
     try {
-        result = runComparison(cfg, options.comparison,
-                               [&progress](int run, double f) { progress(run, f); });
+        result = runComparison(
+            cfg, options.comparison, [&progress](int run, double f) { progress(run, f); },
+            records.hooks());
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
@@ -164,6 +213,8 @@ int CompareCommand::exec(const QStringList& arguments) {
                               : QStringLiteral(": ") + QString::fromStdString(run->alarms.back()))
               << Qt::endl;
     }
+    for (const QString& e : records.errors())
+        code = fail(e);
     const ParameterValues truth = trueParameters(cfg, result.updated.parameterNames);
     try {
         writeComparisonJson(dir.filePath(QStringLiteral("compare.json")).toStdString(), result,

@@ -7,8 +7,10 @@
 // --element: the compared numerical element (default: the first updating target);
 // --dof: the compared DOF (default: that element's DOF).
 // Progress on stderr (each run, about every 10 %); on stdout the table of ComparisonTable.
-// Outputs in DIR: compare.json (ComparisonSummary) and with --plots the PNGs of
-// ComparisonPlotExporter (the paper's Figures 10, 12, 13, 14).
+// Outputs in DIR: compare.json (ComparisonSummary), one HDF5 record per run
+// (reference/record.h5, initial/record.h5, updated/record.h5; docs/recording.md, root
+// attribute "run") and with --plots the PNGs of ComparisonPlotExporter (the paper's
+// Figures 10, 12, 13, 14).
 // Exit codes: 0 all three runs finished; 1 an error (bad arguments, configuration, record, a
 // configuration without updating, an element that cannot be compared, a file that cannot be
 // written); 2 a run went to a safe hold: the outputs are written, the metrics cover the steps

@@ -1,5 +1,7 @@
 #include "gui/cli/ConsoleStreams.h"
 
+#include <QCommandLineParser>
+#include <QStringList>
 #include <QTextStream>
 
 #include <cstdio>
@@ -14,6 +16,17 @@ QTextStream& ConsoleStreams::out() {
 QTextStream& ConsoleStreams::err() {
     static QTextStream stream(stderr);
     return stream;
+}
+
+std::optional<QString> ConsoleStreams::parse(QCommandLineParser& parser,
+                                             const QStringList& arguments) {
+    if (!parser.parse(arguments))
+        return parser.errorText();
+    if (parser.isSet(QStringLiteral("help"))) {
+        out() << parser.helpText() << Qt::flush;
+        return QString();
+    }
+    return std::nullopt;
 }
 
 } // namespace hsmu::gui

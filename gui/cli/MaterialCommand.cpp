@@ -46,12 +46,8 @@ int MaterialCommand::exec(const QStringList& arguments) {
     const QCommandLineOption outOpt(QStringLiteral("out"), tr("Output CSV (default: stdout)."),
                                     QStringLiteral("file"));
     p.addOptions({lawOpt, paramOpt, historyOpt, outOpt});
-    if (!p.parse(arguments))
-        return fail(p.errorText());
-    if (p.isSet(QStringLiteral("help"))) {
-        ConsoleStreams::out() << p.helpText() << Qt::flush;
-        return 0;
-    }
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed->isEmpty() ? 0 : fail(*parsed);
     if (p.positionalArguments().size() > 1)
         return fail(tr("unexpected argument '%1'").arg(p.positionalArguments().at(1)));
     if (!p.isSet(lawOpt))

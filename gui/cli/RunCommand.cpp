@@ -54,7 +54,7 @@ bool heldOnControlFault(const HybridTest& test) {
 
 /// Steps to the end, a hold or a failure, printing progress on stderr; resumes after a
 /// control fault as the --reconnect policy allows.
-HybridTest::StepResult runLoop(HybridTest& test, const RunOptions& options) {
+HybridTest::StepResult runLoop(HybridTest& test, const RunOptions& options, RecordWriter& record) {
     QElapsedTimer wall;
     wall.start();
     const int total = std::max(1, test.totalSteps());
@@ -83,6 +83,7 @@ HybridTest::StepResult runLoop(HybridTest& test, const RunOptions& options) {
             return result;
         ++attempts;
         stepAtResume = test.currentStep();
+        record.flush(); // the hold and its alarm reach the file before a reconnect may block
         err() << RunCommand::tr("hsmu run: link fault at t = %1 s (step %2): %3; reconnecting "
                                 "(attempt %4 of %5)")
                      .arg(num(test.time(), 6))
@@ -158,7 +159,7 @@ int RunCommand::exec(const QStringList& arguments) {
 
     QElapsedTimer wall;
     wall.start();
-    const HybridTest::StepResult result = runLoop(*test, options);
+    const HybridTest::StepResult result = runLoop(*test, options, *record);
     RunInfo info;
     info.configName = cfg.name;
     info.configFile = cfg.sourcePath;

@@ -42,12 +42,8 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
     p.addOption(outOpt);
     overrides.addTo(p);
     p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, reconnectOpt, approvalOpt});
-    if (!p.parse(arguments))
-        return p.errorText();
-    if (p.isSet(QStringLiteral("help"))) {
-        ConsoleStreams::out() << p.helpText();
-        return QString();
-    }
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed;
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2)
         return tr("expected exactly one CONFIG (a file or a preset name)");

@@ -6,6 +6,7 @@
 
 #include "core/record/RecordError.h"
 #include "core/record/RecordReader.h"
+#include "core/record/RecordSchema.h"
 
 #include <hdf5.h>
 
@@ -117,7 +118,8 @@ void TestRecordBadFiles::newerSchemaVersion() {
     QVERIFY(H5Awrite(a, H5T_NATIVE_INT, &future) >= 0);
     H5Aclose(a);
     H5Fclose(f);
-    QCOMPARE(openError(path), path + ": schema version 7 is newer than this program's 1");
+    QCOMPARE(openError(path), path + ": schema version 7 is newer than this program's " +
+                                  std::to_string(recordschema::kVersion));
 }
 
 QTEST_APPLESS_MAIN(TestRecordBadFiles)

@@ -8,6 +8,7 @@
 #include "core/Version.h"
 #include "core/record/RecordError.h"
 #include "core/record/RecordReader.h"
+#include "core/record/RecordSchema.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -48,15 +49,19 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
     test->addObserver(&writer);
     QVERIFY(test->prepare());
     while (test->step() == HybridTest::StepResult::Advanced) {
+        if (test->currentStep() == 100 || test->currentStep() == 250)
+            writer.addNote(test->time(), test->currentStep(),
+                           "note at step " + std::to_string(test->currentStep()) + ", ünïcode");
     }
     QCOMPARE(test->state(), HybridTest::State::Finished);
     QVERIFY2(writer.finish(), writer.error().c_str());
+    writer.addNote(9.0, 999, "after finish: ignored");
     QCOMPARE(writer.rowsFlushed(), int(collector.records.size()));
     QCOMPARE(collector.records.size(), std::size_t(301));
 
     const RecordReader reader(path);
     const RecordData& d = reader.data();
-    QCOMPARE(d.meta.schemaVersion, 1);
+    QCOMPARE(d.meta.schemaVersion, recordschema::kVersion);
     QCOMPARE(d.meta.program, std::string("HSMU Console"));
     QCOMPARE(d.meta.programVersion, std::string(versionString()));
     QCOMPARE(d.meta.configuration, cfg.raw.dump());
@@ -117,9 +122,36 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
         QCOMPARE(d.appliedUpdates[std::size_t(i)], r.updating.appliedUpdates);
         QCOMPARE(d.updatesThisStep[std::size_t(i)], r.updating.updatesThisStep);
         QCOMPARE(d.pendingProposals[std::size_t(i)], r.updating.pendingProposals);
+        QVERIFY(same(d.tracking(i, 0), r.updating.tracking.j1));
+        QVERIFY(same(d.tracking(i, 1), r.updating.tracking.j2));
+        QVERIFY(same(d.tracking(i, 2), r.updating.tracking.j3));
+        QCOMPARE(d.updateRequested[std::size_t(i)], r.updating.updateRequested ? 1 : 0);
     }
     QCOMPARE(nanCommanded, 2 * d.rows()); // Elements 2 and 3 are numerical
     QVERIFY(d.appliedUpdates.back() > 0);
+
+    // Applied-update events: one per update in the StepRecords, with the values sent.
+    std::vector<UpdateEvent> events;
+    for (const StepRecord& r : collector.records)
+        events.insert(events.end(), r.updating.applied.begin(), r.updating.applied.end());
+    QCOMPARE(int(events.size()), d.appliedUpdates.back());
+    QCOMPARE(d.updateEvents.size(), events.size());
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        QCOMPARE(d.updateEvents[k].step, events[k].step);
+        QVERIFY(same(d.updateEvents[k].time, events[k].time));
+        QCOMPARE(d.updateEvents[k].element, events[k].element);
+        for (Eigen::Index j = 0; j < nPar; ++j) {
+            const auto it = events[k].applied.find(layout.updating->parameters[std::size_t(j)]);
+            const double v = d.updateEvents[k].values[std::size_t(j)];
+            QVERIFY(it == events[k].applied.end() ? std::isnan(v) : same(v, it->second));
+        }
+    }
+
+    QCOMPARE(d.notes.size(), std::size_t(2));
+    QCOMPARE(d.notes[0].step, 100);
+    QVERIFY(same(d.notes[0].time, collector.records[100].time));
+    QCOMPARE(d.notes[0].text, std::string("note at step 100, ünïcode"));
+    QCOMPARE(d.notes[1].step, 250);
 
     const auto& alarms = test->alarms();
     QCOMPARE(d.alarms.size(), alarms.size());

@@ -1,0 +1,59 @@
+#pragma once
+// OfflineIdentification: re-run the identification of a specimen after the test, on its
+// measured history (a run record or an imported CSV; SpecimenHistory.h), with the recorded
+// or overridden settings (IdentificationSettings.h). docs/cli.md, `hsmu replay --identify`.
+//
+// Each sample goes through the same ModelUpdater as the online run (METHOD.md section 3:
+// auxiliary model <- measured deformation, identifier <- (deformation, force), inspector
+// <- auxiliary vs measured force), the specimen's measurement being played back instead of
+// measured. So with the recorded settings the parameter history equals the online one (the
+// UKF is deterministic: equal to the last bit on the same machine and build), and the
+// Nelder-Mead identifier refits when the inspector asks (fit error above its threshold,
+// after its cooldown), as online. With settings.finalFit (Nelder-Mead only) one more fit
+// over the whole history follows the last sample.
+//
+// Outputs per sample k (after it was identified): the estimate and its standard deviations
+// (the law's units: normalized by uRef / fRef for Bouc-Wen; 0 where the method has none),
+// the auxiliary model's force (the prediction with the estimate known before sample k), and
+// the inspector's fit error e = RMS(F_aux - F) / RMS(F) over its sliding window [-].
+// Summary: the final estimate and the RMS force error of the final model replayed from the
+// virgin state over the whole history (HistoryFit::rmsError) [force units] and its ratio to
+// RMS(F) [-].
+// Errors: std::invalid_argument for an unusable history (SpecimenHistory::problem()),
+// ConfigError for settings the method cannot use. A rejected UKF step is reported, not
+// fatal (offline the estimator never holds).
+// Cost: one online identification step per sample (UKF: a few us) plus the refits.
+// Thread rules: none; independent calls may run on different threads.
+
+#include "core/identification/IdentificationSettings.h"
+#include "core/identification/SpecimenHistory.h"
+#include "core/updating/ParameterSet.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct OfflineIdentificationResult {
+    std::string method;                      ///< "UKF" or "Nelder-Mead"
+    std::vector<std::string> parameterNames; ///< column order of parameters / stddev
+    ParameterValues initial;                 ///< the estimate before sample 0
+    Eigen::MatrixXd parameters;              ///< [N x nParam] estimate after sample k
+    Eigen::MatrixXd stddev;                  ///< [N x nParam]
+    Eigen::VectorXd auxiliaryForce;          ///< [N] [force units]
+    Eigen::VectorXd fitError;                ///< [N] [-]
+    ParameterValues finalEstimate;           ///< after the last sample (and the final fit)
+    ParameterValues finalStddev;
+    double finalRmsError = 0.0;        ///< replay of the final model over the history [force units]
+    double finalNrmse = 0.0;           ///< finalRmsError / RMS(F) [-]
+    int estimatorWarnings = 0;         ///< inspector alarms "estimator rejected" (rejected updates)
+    int refits = 0;                    ///< Nelder-Mead fits accepted (the final fit included)
+    std::vector<std::string> messages; ///< "t = T s: ..." identifier and inspector messages
+};
+
+OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
+                                            const IdentificationSettings& settings);
+
+} // namespace hsmu

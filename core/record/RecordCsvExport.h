@@ -1,0 +1,35 @@
+#pragma once
+// RecordCsvExport: a run record (RecordData, docs/recording.md) as CSV files, one per dataset
+// group, for tools that do not read HDF5 (`hsmu export FILE.h5 --csv DIR`, docs/cli.md).
+//
+//   steps.csv          step, time [s], ground_acceleration [m/s^2]
+//   dofs.csv           step, time [s], u <dof> [m] ..., v <dof> [m/s] ..., a <dof> [m/s^2] ...
+//   elements.csv       step, time [s], then per element: <name> deformation [unit],
+//                      <name> force [unit], <name> commanded [unit]
+//   updating.csv       step, time [s], <parameter> [-] ..., stddev <parameter> [-] ...,
+//                      auxiliary_force [unit], fit_error [-], applied_updates [-],
+//                      updates_this_step [-], pending_proposals [-] and, from schema 2,
+//                      tracking_j1 [s], tracking_j2 [-], tracking_j3 [-], update_requested [-]
+//                      (only when the run used online model updating)
+//   update_events.csv  step, time [s], element, <parameter> [-] ...  (with updating)
+//   alarms.csv         time [s], step, severity, kind, message
+//   notes.csv          time [s], step, text
+//
+// The header line names each column with its unit in brackets ("[-]": dimensionless or the
+// law's normalized units), as `hsmu replay --import` reads it. Numbers are written in the
+// shortest form that reads back to the same double (std::to_chars, '.' whatever the locale);
+// NaN is "nan". Text fields are quoted when they hold a comma, a quote or a line break.
+// Thread rules: none.
+
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct RecordData;
+
+/// Writes the files above into the existing directory `dir` (overwriting). Returns the paths
+/// written. Throws std::runtime_error naming a file that cannot be written.
+std::vector<std::string> exportRecordCsv(const RecordData& record, const std::string& dir);
+
+} // namespace hsmu

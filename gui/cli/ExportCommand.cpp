@@ -1,0 +1,57 @@
+#include "gui/cli/ExportCommand.h"
+
+#include "core/record/RecordCsvExport.h"
+#include "core/record/RecordReader.h"
+#include "gui/cli/ConsoleStreams.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QTextStream>
+
+namespace hsmu::gui {
+
+namespace {
+
+int fail(const QString& message) {
+    ConsoleStreams::err() << "hsmu export: " << message << Qt::endl;
+    return 1;
+}
+
+} // namespace
+
+int ExportCommand::exec(const QStringList& arguments) {
+    QCommandLineParser p;
+    p.setApplicationDescription(tr("Write a run record (HDF5) as CSV files, one per group."));
+    p.addHelpOption();
+    p.addPositionalArgument(QStringLiteral("export"), tr("The subcommand."));
+    p.addPositionalArgument(QStringLiteral("file"), tr("The record (record.h5)."));
+    const QCommandLineOption csvOpt(QStringLiteral("csv"), tr("Output directory for the CSVs."),
+                                    QStringLiteral("dir"));
+    p.addOption(csvOpt);
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed->isEmpty() ? 0 : fail(*parsed);
+    const QStringList pos = p.positionalArguments();
+    if (pos.size() != 2)
+        return fail(tr("expected exactly one FILE.h5"));
+    if (!p.isSet(csvOpt) || p.value(csvOpt).isEmpty())
+        return fail(tr("missing --csv DIR"));
+    const QString dir = p.value(csvOpt);
+    if (!QDir().mkpath(dir))
+        return fail(tr("%1: cannot create the output directory").arg(dir));
+    try {
+        const RecordReader reader(pos[1].toStdString());
+        const auto files = exportRecordCsv(reader.data(), dir.toStdString());
+        ConsoleStreams::out() << tr("%1 steps, %2 alarms; written:")
+                                     .arg(reader.rows())
+                                     .arg(reader.data().alarms.size())
+                              << Qt::endl;
+        for (const std::string& f : files)
+            ConsoleStreams::out() << "  " << QDir::toNativeSeparators(QString::fromStdString(f))
+                                  << Qt::endl;
+    } catch (const std::exception& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    return 0;
+}
+
+} // namespace hsmu::gui

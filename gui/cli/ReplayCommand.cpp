@@ -1,0 +1,208 @@
+#include "gui/cli/ReplayCommand.h"
+
+#include "core/config/ConfigLoader.h"
+#include "core/identification/MeasuredDataCsv.h"
+#include "core/identification/OfflineIdentification.h"
+#include "core/identification/OfflineIdentificationReport.h"
+#include "core/record/RecordReader.h"
+#include "gui/cli/ConsoleStreams.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFile>
+#include <QTextStream>
+
+#include <optional>
+
+namespace hsmu::gui {
+
+namespace {
+
+int fail(const QString& message) {
+    ConsoleStreams::err() << "hsmu replay: " << message << Qt::endl;
+    return 1;
+}
+
+struct ReplayOptions {
+    QString record, import, units, method, config, specimen, outDir;
+    bool identify = false;
+};
+
+std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
+    QCommandLineParser p;
+    p.setApplicationDescription(
+        ReplayCommand::tr("Re-identify a recorded specimen, or imported measured data, offline."));
+    p.addHelpOption();
+    p.addPositionalArgument(QStringLiteral("replay"), ReplayCommand::tr("The subcommand."));
+    p.addPositionalArgument(QStringLiteral("file"), ReplayCommand::tr("A run record (record.h5)."),
+                            QStringLiteral("[FILE.h5]"));
+    const QCommandLineOption identifyOpt(QStringLiteral("identify"),
+                                         ReplayCommand::tr("Re-run the identification headless."));
+    const QCommandLineOption importOpt(
+        QStringLiteral("import"),
+        ReplayCommand::tr("Measured data: CSV of time, deformation, force with units."),
+        QStringLiteral("csv"));
+    const QCommandLineOption unitsOpt(
+        QStringLiteral("units"),
+        ReplayCommand::tr("Units of the imported columns time,deformation,force, e.g. s,mm,kN."),
+        QStringLiteral("t,d,f"));
+    const QCommandLineOption methodOpt(QStringLiteral("method"),
+                                       ReplayCommand::tr("ukf or nelder-mead."),
+                                       QStringLiteral("method"));
+    const QCommandLineOption configOpt(
+        QStringLiteral("config"),
+        ReplayCommand::tr("JSON with \"model\" and/or \"updating\" settings to override."),
+        QStringLiteral("json"));
+    const QCommandLineOption specimenOpt(QStringLiteral("specimen"),
+                                         ReplayCommand::tr("The recorded specimen to identify."),
+                                         QStringLiteral("name"));
+    const QCommandLineOption outOpt(QStringLiteral("out"), ReplayCommand::tr("Output directory."),
+                                    QStringLiteral("dir"));
+    p.addOptions({identifyOpt, importOpt, unitsOpt, methodOpt, configOpt, specimenOpt, outOpt});
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed;
+    const QStringList pos = p.positionalArguments();
+    o.import = p.value(importOpt);
+    o.identify = p.isSet(identifyOpt) || p.isSet(importOpt);
+    if (pos.size() > 2)
+        return ReplayCommand::tr("unexpected argument '%1'").arg(pos[2]);
+    o.record = pos.size() == 2 ? pos[1] : QString();
+    if (!o.import.isEmpty() && !o.record.isEmpty())
+        return ReplayCommand::tr("give either FILE.h5 or --import DATA.csv, not both");
+    if (o.import.isEmpty() && o.record.isEmpty())
+        return ReplayCommand::tr("expected FILE.h5 (a run record) or --import DATA.csv");
+    if (!o.identify)
+        return ReplayCommand::tr("%1: the replay viewer is not part of this build; use "
+                                 "--identify --out DIR to re-identify the record headless")
+            .arg(o.record);
+    o.units = p.value(unitsOpt);
+    if (!o.units.isEmpty() && o.import.isEmpty())
+        return ReplayCommand::tr("--units applies to --import only (a record has its units)");
+    o.method = p.value(methodOpt);
+    o.config = p.value(configOpt);
+    o.specimen = p.value(specimenOpt);
+    o.outDir = p.value(outOpt);
+    if (o.outDir.isEmpty())
+        return ReplayCommand::tr("missing --out DIR");
+    return std::nullopt;
+}
+
+nlohmann::json readJsonFile(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        throw ConfigError(path.toStdString() + ": cannot be opened");
+    try {
+        return nlohmann::json::parse(f.readAll().toStdString());
+    } catch (const nlohmann::json::parse_error& e) {
+        throw ConfigError(path.toStdString() + ": not valid JSON (" + e.what() + ")");
+    }
+}
+
+/// The last recorded online estimate, when the record identified this specimen by `method`.
+ParameterValues onlineEstimate(const RecordData& d, const std::string& specimen,
+                               const std::string& method) {
+    ParameterValues v;
+    if (!d.layout.updating || d.layout.updating->specimen != specimen ||
+        d.layout.updating->method != method || d.rows() == 0)
+        return v;
+    for (std::size_t j = 0; j < d.layout.updating->parameters.size(); ++j)
+        v[d.layout.updating->parameters[j]] = d.parameters(d.rows() - 1, Eigen::Index(j));
+    return v;
+}
+
+QString num(double x) {
+    return QString::number(x, 'g', 6);
+}
+
+void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
+                const OfflineIdentificationResult& r, const ParameterValues& online,
+                const QString& dir) {
+    QTextStream& out = ConsoleStreams::out();
+    out << ReplayCommand::tr("%1 identification of %2: %3 samples, dt %4 s")
+               .arg(QString::fromStdString(r.method), QString::fromStdString(h.source))
+               .arg(h.size())
+               .arg(num(s.dt))
+        << Qt::endl;
+    out << QStringLiteral("  %1 %2 %3 %4")
+               .arg(ReplayCommand::tr("parameter"), -10)
+               .arg(ReplayCommand::tr("initial"), 12)
+               .arg(ReplayCommand::tr("final"), 12)
+               .arg(ReplayCommand::tr("std"), 12);
+    if (!online.empty())
+        out << QStringLiteral(" %1").arg(ReplayCommand::tr("online"), 12);
+    out << Qt::endl;
+    for (const auto& name : r.parameterNames) {
+        out << QStringLiteral("  %1 %2 %3 %4")
+                   .arg(QString::fromStdString(name), -10)
+                   .arg(num(r.initial.at(name)), 12)
+                   .arg(num(r.finalEstimate.at(name)), 12)
+                   .arg(num(r.finalStddev.at(name)), 12);
+        if (const auto it = online.find(name); it != online.end())
+            out << QStringLiteral(" %1").arg(num(it->second), 12);
+        out << Qt::endl;
+    }
+    const double lastFit = r.fitError.size() ? r.fitError[r.fitError.size() - 1] : 0.0;
+    out << ReplayCommand::tr("  final model over the whole history: RMS force error %1 %2 "
+                             "(%3 % of RMS force); inspector fit error at the end %4 %")
+               .arg(num(r.finalRmsError), QString::fromStdString(h.forceUnits))
+               .arg(QString::number(100.0 * r.finalNrmse, 'f', 2))
+               .arg(QString::number(100.0 * lastFit, 'f', 2))
+        << Qt::endl;
+    if (r.refits > 0)
+        out << ReplayCommand::tr("  Nelder-Mead fits accepted: %1").arg(r.refits) << Qt::endl;
+    if (r.estimatorWarnings > 0)
+        out << ReplayCommand::tr("  estimator warnings: %1 (see summary.json)")
+                   .arg(r.estimatorWarnings)
+            << Qt::endl;
+    out << ReplayCommand::tr("  outputs: %1").arg(QDir::toNativeSeparators(dir)) << Qt::endl;
+}
+
+} // namespace
+
+int ReplayCommand::exec(const QStringList& arguments) {
+    ReplayOptions o;
+    if (auto error = parse(arguments, o))
+        return error->isEmpty() ? 0 : fail(*error);
+    SpecimenHistory history;
+    IdentificationSettings settings;
+    ParameterValues online;
+    std::optional<RecordReader> reader;
+    try {
+        if (!o.import.isEmpty()) {
+            std::optional<MeasuredDataUnits> units;
+            if (!o.units.isEmpty())
+                units = parseMeasuredDataUnits(o.units.toStdString());
+            history = readMeasuredDataCsv(o.import.toStdString(), units);
+            settings = defaultIdentificationSettings();
+            settings.dt = history.meanStep() > 0.0 ? history.meanStep() : settings.dt;
+        } else {
+            reader.emplace(o.record.toStdString());
+            const RecordData& d = reader->data();
+            const TestConfig cfg =
+                parseConfig(nlohmann::json::parse(d.meta.configuration), o.record.toStdString());
+            settings = identificationSettingsFrom(cfg, o.specimen.toStdString());
+            history = historyFromRecord(d, settings.specimen, o.record.toStdString());
+        }
+        if (!o.config.isEmpty())
+            settings = withOverride(settings, readJsonFile(o.config), o.config.toStdString(),
+                                    o.method.toStdString());
+        else if (!o.method.isEmpty())
+            settings = withMethod(settings, o.method.toStdString());
+    } catch (const std::exception& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    if (!QDir().mkpath(o.outDir))
+        return fail(tr("%1: cannot create the output directory").arg(o.outDir));
+    try {
+        const OfflineIdentificationResult r = identifyOffline(history, settings);
+        if (reader)
+            online = onlineEstimate(reader->data(), settings.specimen, r.method);
+        writeIdentificationReport(o.outDir.toStdString(), history, settings, r, online);
+        printTable(history, settings, r, online, o.outDir);
+    } catch (const std::exception& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    return 0;
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,167 @@
+// exportRecordCsv: a recorded run (paper condition 3, 2 s, UKF updating, two operator notes)
+// exported as CSV: each file has the documented header with units, one row per dataset row,
+// and every value reads back to exactly the double in the record (NaN where NaN).
+
+#include "RecordFixture.h"
+
+#include "core/record/RecordCsvExport.h"
+#include "core/record/RecordReader.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+using namespace hsmu;
+using namespace hsmu::testsupport;
+
+namespace {
+
+/// RFC 4180 fields of one line (quotes doubled inside quoted fields).
+std::vector<std::string> fields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+            out.back() += '"';
+            ++i;
+        } else if (c == '"') {
+            quoted = !quoted;
+        } else if (c == ',' && !quoted) {
+            out.emplace_back();
+        } else {
+            out.back() += c;
+        }
+    }
+    return out;
+}
+
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    while (std::getline(in, line))
+        rows.push_back(fields(line));
+    return rows;
+}
+
+bool same(const std::string& text, double x) {
+    const double y = text == "nan" ? std::nan("") : std::stod(text);
+    return std::isnan(x) ? std::isnan(y) : std::memcmp(&x, &y, sizeof x) == 0;
+}
+
+} // namespace
+
+class TestRecordCsvExport : public QObject {
+    Q_OBJECT
+private slots:
+    void valuesEqualTheDatasets();
+};
+
+void TestRecordCsvExport::valuesEqualTheDatasets() {
+    QTemporaryDir dir;
+    const std::string h5 = dir.filePath("record.h5").toStdString();
+    const TestConfig cfg = condition3(2.0);
+    {
+        auto test = buildHybridTest(cfg);
+        RecordWriter writer(h5, RunLayout::of(*test), recordStart(cfg));
+        writer.trackAlarms(&test->alarms());
+        test->addObserver(&writer);
+        QVERIFY(test->prepare());
+        while (test->step() == HybridTest::StepResult::Advanced)
+            if (test->currentStep() == 50)
+                writer.addNote(test->time(), 50, "valve \"B\" checked, ok");
+        QVERIFY(writer.finish());
+        test->removeObserver(&writer);
+    }
+    const RecordData d = RecordReader(h5).data();
+    const std::string out = dir.filePath("csv").toStdString();
+    std::filesystem::create_directory(out);
+    const auto files = exportRecordCsv(d, out);
+    QCOMPARE(files.size(), std::size_t(7));
+    const int n = d.rows();
+    QCOMPARE(n, 201);
+
+    const auto steps = readCsv(out + "/steps.csv");
+    QCOMPARE(steps.size(), std::size_t(n + 1));
+    QCOMPARE(steps[0],
+             (std::vector<std::string>{"step", "time [s]", "ground_acceleration [m/s^2]"}));
+    for (int i = 0; i < n; ++i) {
+        const auto& r = steps[std::size_t(i + 1)];
+        QCOMPARE(std::stoi(r[0]), d.steps[std::size_t(i)]);
+        QVERIFY(same(r[1], d.time[i]));
+        QVERIFY(same(r[2], d.groundAcceleration[i]));
+    }
+
+    const auto dofs = readCsv(out + "/dofs.csv");
+    QCOMPARE(dofs[0][2], std::string("u DOF 1 [m]"));
+    QCOMPARE(dofs[0][7], std::string("a DOF 2 [m/s^2]"));
+    const auto elements = readCsv(out + "/elements.csv");
+    QCOMPARE(elements[0][2], std::string("Element 1 deformation [rad]"));
+    QCOMPARE(elements[0][3], std::string("Element 1 force [kN m]"));
+    QCOMPARE(elements[0][4], std::string("Element 1 commanded [rad]"));
+    const auto updating = readCsv(out + "/updating.csv");
+    const auto nPar = d.parameters.cols();
+    QCOMPARE(updating[0][2], std::string("k0 [-]"));
+    QCOMPARE(updating[0][std::size_t(2 + nPar)], std::string("stddev k0 [-]"));
+    QCOMPARE(updating[0][std::size_t(2 + 2 * nPar)], std::string("auxiliary_force [kN m]"));
+    QCOMPARE(updating[0].back(), std::string("update_requested [-]"));
+    QCOMPARE(dofs.size(), std::size_t(n + 1));
+    QCOMPARE(elements.size(), std::size_t(n + 1));
+    QCOMPARE(updating.size(), std::size_t(n + 1));
+    int nanCells = 0;
+    for (int i = 0; i < n; ++i) {
+        const auto& u = dofs[std::size_t(i + 1)];
+        for (Eigen::Index k = 0; k < d.u.cols(); ++k) {
+            QVERIFY(same(u[std::size_t(2 + k)], d.u(i, k)));
+            QVERIFY(same(u[std::size_t(2 + d.u.cols() + k)], d.v(i, k)));
+            QVERIFY(same(u[std::size_t(2 + 2 * d.u.cols() + k)], d.a(i, k)));
+        }
+        const auto& e = elements[std::size_t(i + 1)];
+        for (Eigen::Index j = 0; j < d.deformation.cols(); ++j) {
+            QVERIFY(same(e[std::size_t(2 + 3 * j)], d.deformation(i, j)));
+            QVERIFY(same(e[std::size_t(3 + 3 * j)], d.force(i, j)));
+            QVERIFY(same(e[std::size_t(4 + 3 * j)], d.commanded(i, j)));
+            nanCells += e[std::size_t(4 + 3 * j)] == "nan";
+        }
+        const auto& p = updating[std::size_t(i + 1)];
+        for (Eigen::Index j = 0; j < nPar; ++j) {
+            QVERIFY(same(p[std::size_t(2 + j)], d.parameters(i, j)));
+            QVERIFY(same(p[std::size_t(2 + nPar + j)], d.stddev(i, j)));
+        }
+        std::size_t c = std::size_t(2 + 2 * nPar);
+        QVERIFY(same(p[c++], d.auxiliaryForce[i]));
+        QVERIFY(same(p[c++], d.fitError[i]));
+        QCOMPARE(std::stoi(p[c++]), d.appliedUpdates[std::size_t(i)]);
+        QCOMPARE(std::stoi(p[c++]), d.updatesThisStep[std::size_t(i)]);
+        QCOMPARE(std::stoi(p[c++]), d.pendingProposals[std::size_t(i)]);
+        for (Eigen::Index j = 0; j < 3; ++j)
+            QVERIFY(same(p[c++], d.tracking(i, j)));
+        QCOMPARE(std::stoi(p[c++]), d.updateRequested[std::size_t(i)]);
+        QCOMPARE(c, p.size());
+    }
+    QCOMPARE(nanCells, 2 * n); // two numerical elements
+
+    const auto events = readCsv(out + "/update_events.csv");
+    QCOMPARE(events.size(), d.updateEvents.size() + 1);
+    QVERIFY(d.updateEvents.size() > 0);
+    for (std::size_t k = 0; k < d.updateEvents.size(); ++k) {
+        QCOMPARE(events[k + 1][2], d.updateEvents[k].element);
+        for (std::size_t j = 0; j < d.updateEvents[k].values.size(); ++j)
+            QVERIFY(same(events[k + 1][3 + j], d.updateEvents[k].values[j]));
+    }
+    const auto alarms = readCsv(out + "/alarms.csv");
+    QCOMPARE(alarms.size(), d.alarms.size() + 1);
+    for (std::size_t k = 0; k < d.alarms.size(); ++k)
+        QCOMPARE(alarms[k + 1][4], d.alarms[k].message);
+    const auto notes = readCsv(out + "/notes.csv");
+    QCOMPARE(notes.size(), std::size_t(2));
+    QCOMPARE(notes[1][2], std::string("valve \"B\" checked, ok"));
+    QVERIFY(same(notes[1][0], d.time[50]));
+}
+
+QTEST_APPLESS_MAIN(TestRecordCsvExport)
+#include "TestRecordCsvExport.moc"

@@ -1,0 +1,223 @@
+// `hsmu replay --identify`, `hsmu replay --import`, `hsmu export` and the records of
+// `hsmu compare` (the real binary via QProcess, its files read back with core's reader):
+// - a recorded `hsmu run` (paper-condition-3, 3 s, UKF) re-identified offline gives the
+//   online final parameters to 1e-9 relative (summary.json and parameters.csv);
+// - export writes the documented CSVs whose values equal the record's datasets;
+// - compare writes three readable records (reference, initial, updated);
+// - imported CSVs: a good one identifies (Nelder-Mead, with a settings override); a malformed
+//   one, replay without --identify and a file that is not a record are clear errors (exit 1).
+
+#include "CliTestSupport.h"
+
+#include "core/record/RecordReader.h"
+
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace clitest;
+
+namespace {
+
+QString path(const QTemporaryDir& dir, const char* name) {
+    return dir.filePath(QString::fromLatin1(name));
+}
+
+void writeText(const QString& file, const QByteArray& text) {
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+}
+
+double relative(double a, double b) {
+    return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-300});
+}
+
+} // namespace
+
+class TestReplayCommand : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void offlineUkfEqualsOnline();
+    void exportWritesTheDatasets();
+    void compareWritesThreeRecords();
+    void importIdentifies();
+    void errorsAreClear();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_record; // a recorded hsmu run (3 s of condition 3)
+};
+
+void TestReplayCommand::initTestCase() {
+    QVERIFY(m_dir.isValid());
+    const QString out = path(m_dir, "run");
+    const Result r = clitest::hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
+                                    QStringLiteral("--duration"), QStringLiteral("3"),
+                                    QStringLiteral("--out"), out});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    m_record = out + QStringLiteral("/record.h5");
+}
+
+void TestReplayCommand::offlineUkfEqualsOnline() {
+    const QString out = path(m_dir, "identified");
+    const Result r = clitest::hsmu({QStringLiteral("replay"), m_record,
+                                    QStringLiteral("--identify"), QStringLiteral("--out"), out});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    QVERIFY2(r.out.contains(QStringLiteral("UKF identification of")), qPrintable(r.out));
+    QVERIFY2(r.out.contains(QStringLiteral("online")), qPrintable(r.out));
+
+    const hsmu::RecordReader reader(m_record.toStdString());
+    const hsmu::RecordData& d = reader.data();
+    const QJsonObject summary = readJson(out + QStringLiteral("/summary.json"));
+    QCOMPARE(summary.value(QStringLiteral("method")).toString(), QStringLiteral("UKF"));
+    QCOMPARE(summary.value(QStringLiteral("samples")).toInt(), d.rows() - 1);
+    const QJsonObject params = summary.value(QStringLiteral("parameters")).toObject();
+    const auto& names = d.layout.updating->parameters;
+    QCOMPARE(params.size(), qsizetype(names.size()));
+    for (std::size_t j = 0; j < names.size(); ++j) {
+        const QJsonObject p = params.value(QString::fromStdString(names[j])).toObject();
+        const double online = d.parameters(d.rows() - 1, Eigen::Index(j));
+        QVERIFY2(relative(p.value(QStringLiteral("final")).toDouble(), online) <= 1e-9,
+                 names[j].c_str());
+        QCOMPARE(p.value(QStringLiteral("online")).toDouble(), online);
+        QCOMPARE(p.value(QStringLiteral("initial")).toDouble(), d.parameters(0, Eigen::Index(j)));
+    }
+    // The parameter history: a header and one row per committed step, the last = online.
+    const QStringList lines = readLines(out + QStringLiteral("/parameters.csv"));
+    QCOMPARE(lines.size(), d.rows());
+    QVERIFY(lines[0].startsWith(QStringLiteral("time [s],deformation [rad],force [kN m],"
+                                               "auxiliary_force [kN m],fit_error [-],k0 [-]")));
+    const QStringList last = lines.back().split(QLatin1Char(','));
+    QCOMPARE(last.size(), 5 + 2 * int(names.size()));
+    for (std::size_t j = 0; j < names.size(); ++j)
+        QVERIFY(relative(last[int(5 + j)].toDouble(),
+                         d.parameters(d.rows() - 1, Eigen::Index(j))) <= 1e-9);
+}
+
+void TestReplayCommand::exportWritesTheDatasets() {
+    const QString out = path(m_dir, "csv");
+    const Result r =
+        clitest::hsmu({QStringLiteral("export"), m_record, QStringLiteral("--csv"), out});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    const hsmu::RecordReader reader(m_record.toStdString());
+    const hsmu::RecordData& d = reader.data();
+    for (const char* f : {"steps.csv", "dofs.csv", "elements.csv", "updating.csv",
+                          "update_events.csv", "alarms.csv", "notes.csv"})
+        QVERIFY2(r.out.contains(QString::fromLatin1(f)), f);
+    const QStringList steps = readLines(out + QStringLiteral("/steps.csv"));
+    QCOMPARE(steps.size(), d.rows() + 1);
+    QCOMPARE(steps[0], QStringLiteral("step,time [s],ground_acceleration [m/s^2]"));
+    for (int i = 0; i < d.rows(); ++i) {
+        const QStringList row = steps[i + 1].split(QLatin1Char(','));
+        QCOMPARE(row[0].toInt(), d.steps[std::size_t(i)]);
+        QCOMPARE(row[1].toDouble(), d.time[i]);
+        QCOMPARE(row[2].toDouble(), d.groundAcceleration[i]);
+    }
+    const QStringList elements = readLines(out + QStringLiteral("/elements.csv"));
+    QCOMPARE(elements.size(), d.rows() + 1);
+    const QStringList row = elements[100].split(QLatin1Char(','));
+    QCOMPARE(row[3].toDouble(), d.force(99, 0)); // Element 1 force at row 99
+}
+
+void TestReplayCommand::compareWritesThreeRecords() {
+    const QString out = path(m_dir, "compare");
+    const Result r = clitest::hsmu({QStringLiteral("compare"), QStringLiteral("paper-condition-3"),
+                                    QStringLiteral("--duration"), QStringLiteral("2"),
+                                    QStringLiteral("--out"), out});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    const QJsonObject cmp = readJson(out + QStringLiteral("/compare.json"));
+    QVERIFY(!cmp.isEmpty());
+    for (const char* run : {"reference", "initial", "updated"}) {
+        const QString file =
+            out + QLatin1Char('/') + QLatin1String(run) + QStringLiteral("/record.h5");
+        const hsmu::RecordReader reader(file.toStdString());
+        const hsmu::RecordData& d = reader.data();
+        QCOMPARE(d.meta.run, std::string(run));
+        QCOMPARE(d.rows(), 201);
+        QCOMPARE(d.time[200], 2.0);
+        // Only the updated run identifies; the reference has Element 2 as a specimen.
+        QCOMPARE(d.layout.updating.has_value(), std::string(run) == "updated");
+        QCOMPARE(d.layout.elements[1].experimental, std::string(run) == "reference");
+    }
+    // The updated record's Element 2 force equals compare's updated-run history.
+    const hsmu::RecordReader updated((out + QStringLiteral("/updated/record.h5")).toStdString());
+    QVERIFY(updated.data().appliedUpdates.back() > 0);
+}
+
+void TestReplayCommand::importIdentifies() {
+    // A bilinear specimen (k0 1000 kN/m, fy 2.8 kN, b 0.1) under a growing sine, in mm and N.
+    QByteArray csv = "time [s], deformation [mm], force [N]\n";
+    const double k0 = 1000.0, fy = 2.8, b = 0.1;
+    double u = 0.0, f = 0.0;
+    for (int k = 1; k <= 600; ++k) {
+        const double t = 0.01 * k;
+        const double uNew = 0.012 * (t / 6.0) * std::sin(2.0 * M_PI * t);
+        // Kinematic hardening: elastic trial, then return to the bounds fy +- b k0 u.
+        double trial = f + k0 * (uNew - u);
+        const double upper = fy * (1.0 - b) + b * k0 * uNew;
+        const double lower = -fy * (1.0 - b) + b * k0 * uNew;
+        f = std::clamp(trial, lower, upper);
+        u = uNew;
+        csv += QByteArray::number(t, 'g', 17) + ", " + QByteArray::number(u * 1e3, 'g', 17) + ", " +
+               QByteArray::number(f * 1e3, 'g', 17) + "\n";
+    }
+    const QString data = path(m_dir, "bilinear.csv");
+    writeText(data, csv);
+    const QString settings = path(m_dir, "bilinear.json");
+    writeText(settings, R"({"model": {"law": "bilinear", "k0": 700, "fy": 2.0, "b": 0.2},
+        "updating": {"bounds": {"k0": [500, 1500], "fy": [1, 5], "b": [0, 0.3]},
+                     "nelderMead": {"maxEvaluations": 400}}})");
+    const QString out = path(m_dir, "imported");
+    const Result r =
+        clitest::hsmu({QStringLiteral("replay"), QStringLiteral("--import"), data,
+                       QStringLiteral("--method"), QStringLiteral("nelder-mead"),
+                       QStringLiteral("--config"), settings, QStringLiteral("--out"), out});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    const QJsonObject p = readJson(out + QStringLiteral("/summary.json"))
+                              .value(QStringLiteral("parameters"))
+                              .toObject();
+    const auto final = [&](const char* name) {
+        return p.value(QLatin1String(name)).toObject().value(QStringLiteral("final")).toDouble();
+    };
+    // The law generated the data exactly: the fit recovers it to 1 % (k0, fy) and 0.01 (b).
+    QVERIFY2(relative(final("k0"), k0) < 0.01, qPrintable(r.out));
+    QVERIFY2(relative(final("fy"), fy) < 0.01, qPrintable(r.out));
+    QVERIFY2(std::abs(final("b") - b) < 0.01, qPrintable(r.out));
+}
+
+void TestReplayCommand::errorsAreClear() {
+    const QString bad = path(m_dir, "bad.csv");
+    writeText(bad, "time [s], deformation [mm], force [kN]\n0, 0, 0\n0.01, x, 1\n");
+    Result r = clitest::hsmu({QStringLiteral("replay"), QStringLiteral("--import"), bad,
+                              QStringLiteral("--out"), path(m_dir, "bad")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(bad + QStringLiteral(": line 3: column 2 (deformation): 'x' is not a "
+                                                 "number")),
+             qPrintable(r.err));
+
+    r = clitest::hsmu({QStringLiteral("replay"), m_record});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("use --identify")), qPrintable(r.err));
+
+    r = clitest::hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("missing --out DIR")), qPrintable(r.err));
+
+    r = clitest::hsmu({QStringLiteral("export"), bad, QStringLiteral("--csv"), path(m_dir, "x")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("not an HSMU record (not an HDF5 file)")),
+             qPrintable(r.err));
+
+    r = clitest::hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify"),
+                       QStringLiteral("--method"), QStringLiteral("simplex"),
+                       QStringLiteral("--out"), path(m_dir, "x")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("expected ukf or nelder-mead")), qPrintable(r.err));
+}
+
+QTEST_GUILESS_MAIN(TestReplayCommand)
+#include "TestReplayCommand.moc"
