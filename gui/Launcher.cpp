@@ -5,6 +5,7 @@
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/MaterialCommand.h"
 #include "gui/cli/RunCommand.h"
+#include "gui/replay/ReplayCommand.h"
 
 #include <QApplication>
 #include <QLocale>
@@ -59,16 +60,19 @@ int dispatch(int argc, char** argv) {
     const QString sub = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool plotting = sub == QLatin1String("run") || sub == QLatin1String("compare");
     const bool plots = plotting && hasArgument(argc, argv, {"--plots"});
+    // `hsmu replay FILE` opens the replay window; --identify / --import are headless (gui/cli).
+    const bool replayWindow =
+        sub == QLatin1String("replay") && !hasArgument(argc, argv, {"--identify", "--import"});
     if (sub == QLatin1String("material") || (plotting && !plots)) {
         QCoreApplication app(argc, argv); // no windowing system needed
         describeApplication();
         installTranslator(app);
         return runHeadless(sub, app.arguments());
     }
-    if (!plotting && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
+    if (!plotting && !replayWindow && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
         QTextStream(stderr) << "hsmu: unknown subcommand '" << sub
-                            << "' (available: run, compare, material; without one the console "
-                               "opens)"
+                            << "' (available: run, compare, material, replay; without one "
+                               "the console opens)"
                             << Qt::endl;
         return 1;
     }
@@ -77,6 +81,12 @@ int dispatch(int argc, char** argv) {
         const bool offscreenOk =
             plotting ||
             hasArgument(argc, argv, {"--screenshot", "-h", "--help", "-v", "--version"});
+        if (!offscreenOk && replayWindow) {
+            QTextStream(stderr) << "hsmu replay: no display (DISPLAY / WAYLAND_DISPLAY are not "
+                                   "set); the replay window needs one"
+                                << Qt::endl;
+            return 1;
+        }
         if (!offscreenOk) {
             QTextStream(stderr) << "hsmu: no display (DISPLAY / WAYLAND_DISPLAY are not set); "
                                    "use `hsmu run CONFIG --out DIR` to run a test headless"
@@ -90,6 +100,8 @@ int dispatch(int argc, char** argv) {
     installTranslator(app);
     if (plotting)
         return runHeadless(sub, app.arguments());
+    if (replayWindow)
+        return ReplayCommand::exec(app.arguments());
     return ConsoleCommand::exec(app.arguments());
 }
 

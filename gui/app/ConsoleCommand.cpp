@@ -1,6 +1,8 @@
 #include "gui/app/ConsoleCommand.h"
 
+#include "comms/link/ControlFactory.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/TestController.h"
 #include "gui/cli/ConsoleStreams.h"
 
 #include <QApplication>
@@ -42,7 +44,11 @@ int ConsoleCommand::exec(const QStringList& arguments) {
     const QCommandLineOption shotAfterOpt(QStringLiteral("screenshot-after"),
                                           tr("Seconds before the screenshot (default 4)."),
                                           QStringLiteral("seconds"), QStringLiteral("4"));
-    p.addOptions({startOpt, gmOpt, speedOpt, shotOpt, shotAfterOpt});
+    const QCommandLineOption controllerOpt(
+        QStringLiteral("controller"),
+        tr("Actuator controller: builtin (the default) or tcp://HOST:PORT."),
+        QStringLiteral("address"), QStringLiteral("builtin"));
+    p.addOptions({startOpt, gmOpt, speedOpt, shotOpt, shotAfterOpt, controllerOpt});
     if (!p.parse(arguments))
         return fail(p.errorText());
     if (p.isSet(QStringLiteral("help"))) {
@@ -68,10 +74,17 @@ int ConsoleCommand::exec(const QStringList& arguments) {
             return fail(tr("--speed: expected a number"));
     }
 
+    std::string linkError;
+    const auto address =
+        comms::LinkAddress::parse(p.value(controllerOpt).toStdString(), &linkError);
+    if (!address)
+        return fail(tr("--controller: %1").arg(QString::fromStdString(linkError)));
+
     ConfigOverrides overrides;
     overrides.groundMotionFile = p.value(gmOpt);
     MainWindow window(overrides);
     window.setSpeed(speed);
+    window.controller().setControlFactory(comms::makeControlFactory(*address));
     window.show();
     if (p.isSet(startOpt)) {
         QString error;

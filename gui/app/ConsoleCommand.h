@@ -1,6 +1,9 @@
 #pragma once
 // ConsoleCommand: `hsmu [--start CONFIG] [--ground-motion FILE] [--speed S]
-// [--screenshot FILE [--screenshot-after SECONDS]]`: the console window.
+// [--controller builtin|tcp://HOST:PORT] [--screenshot FILE [--screenshot-after SECONDS]]`:
+// the console window.
+//   --controller         where the specimens run: the built-in virtual lab or a controller
+//                        over the native TCP link (e.g. hsmu-controller)
 //   --start              load a preset name or configuration file and start it at once
 //   --ground-motion      use this record for every configuration loaded
 //   --speed              test time per wall time (1 = real time, 0 = as fast as possible)

@@ -5,14 +5,14 @@
 #include "gui/app/ControlBar.h"
 #include "gui/app/TestController.h"
 #include "gui/app/TestStatusBar.h"
-#include "gui/plots/HistoryPlot.h"
-#include "gui/plots/HysteresisPlot.h"
+#include "gui/plots/LivePlotsPanel.h"
+#include "gui/replay/ReplayWindow.h"
 
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QMenuBar>
 #include <QMessageBox>
-#include <QSplitter>
 
 namespace hsmu::gui {
 
@@ -24,14 +24,11 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     addToolBar(Qt::TopToolBarArea, m_controls);
     addAction(m_controls->emergencyHoldAction()); // shortcut alive even if the bar is hidden
 
-    auto* splitter = new QSplitter(Qt::Horizontal, this);
-    m_hysteresis = new HysteresisPlot(splitter);
-    m_history = new HistoryPlot(splitter);
-    splitter->addWidget(m_hysteresis);
-    splitter->addWidget(m_history);
-    splitter->setStretchFactor(0, 1);
-    splitter->setStretchFactor(1, 1);
-    setCentralWidget(splitter);
+    m_plots = new LivePlotsPanel(this);
+    setCentralWidget(m_plots);
+    menuBar()->addMenu(tr("&File"))->addAction(tr("Open &record..."), this, [this] {
+        ReplayWindow::openWithDialog(this);
+    });
 
     m_alarms = new AlarmList(this);
     auto* dock = new QDockWidget(tr("Alarms and events"), this);
@@ -114,8 +111,7 @@ void MainWindow::openConfigurationFile() {
 
 void MainWindow::onTestLoaded() {
     const RunLayout& layout = m_controller->layout();
-    m_hysteresis->showElements(layout, HysteresisPlot::specimenWithTwins(layout));
-    m_history->showDisplacements(layout);
+    m_plots->configure(layout, m_controller->config());
     m_alarms->clear();
     m_alarms->addMessage(tr("loaded %1 (%2)")
                              .arg(QString::fromStdString(m_controller->config().name),
@@ -127,10 +123,8 @@ void MainWindow::onTestLoaded() {
 }
 
 void MainWindow::onRecords(const std::vector<StepRecord>& rows) {
-    m_hysteresis->appendRecords(rows);
-    m_history->appendRecords(rows);
-    m_hysteresis->refresh();
-    m_history->refresh();
+    m_plots->appendRecords(rows);
+    m_plots->refresh();
 }
 
 void MainWindow::onStateChanged(RunState state, const QString& message) {

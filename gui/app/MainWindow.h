@@ -1,7 +1,7 @@
 #pragma once
-// MainWindow: assembles the console: ControlBar (top), the live HysteresisPlot of the specimen
-// (measured) with its numerical twins and the HistoryPlot of DOF displacements (centre), the
-// AlarmList (bottom dock) and the TestStatusBar. It owns the TestController and only wires
+// MainWindow: assembles the console: ControlBar (top), the LivePlotsPanel (centre: every live
+// plot), the AlarmList (bottom dock), the TestStatusBar and File > Open record... (a
+// ReplayWindow). It owns the TestController and only wires
 // signals: plots get rows ~30 times a second and replot once per batch.
 // Thread rules: GUI thread only.
 
@@ -21,8 +21,7 @@ namespace hsmu::gui {
 
 class AlarmList;
 class ControlBar;
-class HistoryPlot;
-class HysteresisPlot;
+class LivePlotsPanel;
 class TestController;
 class TestStatusBar;
 
@@ -55,8 +54,7 @@ private:
     QString m_source; ///< preset id or file of the loaded test
     TestController* m_controller = nullptr;
     ControlBar* m_controls = nullptr;
-    HysteresisPlot* m_hysteresis = nullptr;
-    HistoryPlot* m_history = nullptr;
+    LivePlotsPanel* m_plots = nullptr;
     AlarmList* m_alarms = nullptr;
     TestStatusBar* m_status = nullptr;
 };

@@ -43,9 +43,9 @@ void TestController::teardown() {
 void TestController::load(const TestConfig& cfg) {
     teardown();
     m_delivered = 0;
-    std::unique_ptr<HybridTest> test = buildHybridTest(cfg); // may throw
+    std::unique_ptr<HybridTest> test = buildHybridTest(cfg, m_controls); // may throw
     m_config = cfg;
-    m_layout = RunLayout::of(test->structure());
+    m_layout = RunLayout::of(*test); // with the updater's parameters, for the plots
     m_buffer = std::make_shared<RecordBuffer>();
     m_worker = new TestWorker(std::move(test), m_buffer);
     m_thread = new QThread;

@@ -12,6 +12,7 @@
 // Thread rules: GUI thread only. Signals are emitted on the GUI thread.
 
 #include "core/config/TestConfig.h"
+#include "core/config/TestFactory.h"
 #include "core/output/RunLayout.h"
 #include "core/test/StepRecord.h"
 #include "gui/app/AlarmMetaType.h"
@@ -41,6 +42,9 @@ public:
     /// Replace the current test (stopped and destroyed first) by one built from cfg.
     /// Throws on a configuration or record error; the previous test is gone either way.
     void load(const TestConfig& cfg);
+    /// Controls of the experimental elements for the next load() (empty: built-in virtual
+    /// specimens), e.g. comms::makeControlFactory(tcp address).
+    void setControlFactory(ControlFactory factory) { m_controls = std::move(factory); }
 
     bool hasTest() const { return m_worker != nullptr; }
     const RunLayout& layout() const { return m_layout; }
@@ -79,6 +83,7 @@ private:
     QTimer m_drainTimer;
     RunLayout m_layout;
     TestConfig m_config;
+    ControlFactory m_controls;
     RunState m_state = RunState::Idle;
     double m_speed = 1.0;
     qint64 m_delivered = 0;
