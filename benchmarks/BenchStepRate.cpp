@@ -7,6 +7,7 @@
 //                         model + twin, force, displacement, ground motion with cursor,
 //                         tracking, fit error, 7 parameter plots) shown offscreen at
 //                         1600 x 1000, every batch appended and replotted
+//   Panel/Redraw          one redraw of the full panel holding the whole run (GUI thread)
 // The test: preset paper-condition-3 (UKF updating) at dt = 0.002 s (15001 rows), so that
 // the plots hold as many points as a long lab test. Counter steps_per_s = steps / wall time.
 // Run: QT_QPA_PLATFORM=offscreen build/bin/hsmu_bench_step_rate --benchmark_repetitions=3
@@ -17,6 +18,8 @@
 #include "gui/PresetLibrary.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/TestController.h"
+#include "gui/cli/RecordCollector.h"
+#include "gui/plots/LivePlotsPanel.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -109,9 +112,33 @@ void livePlots(benchmark::State& state) {
     reportRate(state, steps);
 }
 
+/// The GUI thread's price of one redraw of the whole panel holding the full run (15001
+/// rows per series), shown offscreen at 1600 x 1000: rescale, draw, paint.
+void panelRedraw(benchmark::State& state) {
+    const TestConfig cfg = config();
+    std::unique_ptr<HybridTest> test = buildHybridTest(cfg);
+    RecordCollector rows;
+    test->addObserver(&rows);
+    test->prepare();
+    while (test->step() == HybridTest::StepResult::Advanced) {
+    }
+    LivePlotsPanel panel;
+    panel.configure(RunLayout::of(*test), cfg);
+    panel.appendRecords(rows.records());
+    panel.resize(1600, 1000);
+    panel.show();
+    QCoreApplication::processEvents();
+    for (auto _ : state) {
+        panel.refreshNow();
+        panel.repaint();
+    }
+    state.counters["rows"] = double(rows.records().size());
+}
+
 BENCHMARK(headless)->Name("StepRate/Headless")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(worker)->Name("StepRate/Worker")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(livePlots)->Name("StepRate/LivePlots")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(panelRedraw)->Name("Panel/Redraw")->Unit(benchmark::kMillisecond);
 
 } // namespace
 

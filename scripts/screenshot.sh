@@ -55,7 +55,7 @@ wait "$controller_pid" 2>/dev/null || true
 
 # 3. The replay window on the record of a short headless run.
 run_dir="$(mktemp -d)"
-"$hsmu" run "$config" --duration 12 --out "$run_dir" >/dev/null
+"$hsmu" run "$config" --duration 12 --out "$run_dir" >/dev/null 2>&1
 gui "$hsmu" replay "$run_dir/record.h5" --play --speed 2 \
   --screenshot "$outdir/replay.png" --screenshot-after "$seconds"
 rm -rf "$run_dir"

@@ -91,7 +91,7 @@ void HistoryPlot::showTracking(const RunLayout& layout, int specimen) {
 }
 
 void HistoryPlot::showFitError(double threshold) {
-    setChannels(tr("Inspector fit error"), tr("Normalized RMS error [-]"),
+    setChannels(tr("Inspector fit error"), tr("Fit error [-]"),
                 {{tr("fit error"), [](const StepRecord& r) {
                       return r.hasUpdating ? r.updating.fitError : qQNaN();
                   }}});

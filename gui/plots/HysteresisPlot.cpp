@@ -9,6 +9,7 @@ namespace hsmu::gui {
 HysteresisPlot::HysteresisPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     xAxis->setLabel(tr("Deformation"));
+    xAxis->ticker()->setTickCount(5); // rotations print long (-0.015): fewer labels
     yAxis->setLabel(tr("Force"));
 }
 
@@ -42,6 +43,7 @@ void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int
         curve->setName(e.experimental ? tr("%1 (specimen, measured)").arg(name)
                                       : tr("%1 (numerical)").arg(name));
         curve->setPen(PlotStyle::seriesPen(int(k)));
+        curve->setAntialiased(false); // thousands of segments per live redraw
         m_series.push_back({elements[k], curve, false});
     }
     if (!elements.empty()) {
@@ -68,6 +70,7 @@ void HysteresisPlot::addAuxiliaryModel(const RunLayout& layout) {
         QPen pen = PlotStyle::seriesPen(int(m_series.size()));
         pen.setStyle(Qt::DashLine);
         curve->setPen(pen);
+        curve->setAntialiased(false);
         m_series.push_back({int(i), curve, true});
         legend->setVisible(true);
         return;

@@ -5,6 +5,7 @@
 #include "gui/plots/HysteresisPlot.h"
 #include "gui/plots/ParameterPlot.h"
 #include "gui/plots/PlotExporter.h"
+#include "gui/plots/PlotStyle.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -13,8 +14,10 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QSplitter>
+#include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <exception>
 
 namespace hsmu::gui {
@@ -61,6 +64,7 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     top->addWidget(histories);
     top->setStretchFactor(0, 2);
     top->setStretchFactor(1, 3);
+    top->setSizes({400, 600}); // proportions: the loop gets two fifths of the width
 
     m_parameterArea = new QWidget(vertical);
     m_parameterGrid = new QGridLayout(m_parameterArea);
@@ -72,6 +76,7 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     vertical->addWidget(m_parameterArea);
     vertical->setStretchFactor(0, 3);
     vertical->setStretchFactor(1, 2);
+    vertical->setSizes({600, 400});
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -80,6 +85,9 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     for (QCustomPlot* p : std::initializer_list<QCustomPlot*>{m_hysteresis, m_force, m_displacement,
                                                               m_ground, m_tracking, m_fitError})
         enableExportMenu(p);
+    m_redrawTimer = new QTimer(this);
+    m_redrawTimer->setSingleShot(true);
+    connect(m_redrawTimer, &QTimer::timeout, this, &LivePlotsPanel::refreshNow);
     configure(RunLayout{});
 }
 
@@ -190,26 +198,37 @@ void LivePlotsPanel::clearData() {
     m_rows = 0;
 }
 
+std::vector<QCustomPlot*> LivePlotsPanel::visiblePlots() const {
+    std::vector<QCustomPlot*> out;
+    for (const NamedPlot& p : plots())
+        out.push_back(p.plot);
+    out.insert(out.end(), m_parameters.begin(), m_parameters.end());
+    return out;
+}
+
 void LivePlotsPanel::refresh() {
-    m_hysteresis->refresh();
-    m_force->refresh();
-    m_displacement->refresh();
-    m_ground->refresh();
-    if (m_hasSpecimen)
-        m_tracking->refresh();
-    if (m_hasUpdating) {
-        m_fitError->refresh();
-        for (ParameterPlot* p : m_parameters)
-            p->refresh();
-    }
+    if (m_redrawTimer->isActive())
+        return; // a redraw is already due: it will show these rows too
+    const qint64 wait =
+        m_sinceRedraw.isValid() ? m_intervalMs - m_sinceRedraw.elapsed() : qint64(0);
+    if (wait > 0)
+        m_redrawTimer->start(int(wait));
+    else
+        refreshNow();
 }
 
 void LivePlotsPanel::refreshNow() {
-    refresh();
-    for (const NamedPlot& p : plots())
-        p.plot->replot(QCustomPlot::rpImmediateRefresh);
-    for (ParameterPlot* p : m_parameters)
-        p->replot(QCustomPlot::rpImmediateRefresh);
+    m_redrawTimer->stop();
+    QElapsedTimer cost;
+    cost.start();
+    for (QCustomPlot* p : visiblePlots()) {
+        PlotStyle::rescaleWithMargin(*p);
+        p->replot(QCustomPlot::rpRefreshHint); // draws into the plot's buffer now
+    }
+    const qint64 ms = cost.elapsed();
+    m_intervalMs = int(std::clamp<qint64>(kBudgetFactor * ms, kMinIntervalMs, kMaxIntervalMs));
+    m_sinceRedraw.start();
+    ++m_redraws;
 }
 
 std::vector<LivePlotsPanel::NamedPlot> LivePlotsPanel::plots() const {

@@ -10,15 +10,20 @@
 //   fit error      the inspector's normalized RMS error with its threshold line (updating)
 //   parameters     one small ParameterPlot per identified parameter: estimate, ± 2 sigma
 //                  band, identification bounds (updating)
-// Feeding (the PlotJuggler way): appendRecords() only appends; refresh() rescales and queues
-// one replot per plot. The owner calls refresh() once per coalesced batch (~30 Hz), never per
-// step. Each plot has a context menu to export it as PNG, SVG or PDF (PlotExporter).
+// Feeding (the PlotJuggler way): appendRecords() only appends; refresh() asks for one redraw
+// of every plot. The owner calls refresh() once per coalesced batch (~30 Hz), never per step.
+// Redraws are also budgeted: after a redraw that took c ms, the next one waits at least
+// max(kMinIntervalMs, kBudgetFactor x c) (pending requests coalesce into one), so drawing
+// never takes more than ~1/kBudgetFactor of the GUI thread however many points the plots
+// hold, and the test worker keeps its step rate (docs/benchmarks.md, "Step rate").
+// Each plot has a context menu to export it as PNG, SVG or PDF (PlotExporter).
 // Thread rules: GUI thread only.
 
 #include "core/output/RunLayout.h"
 #include "core/test/StepRecord.h"
 #include "gui/plots/PlotReferences.h"
 
+#include <QElapsedTimer>
 #include <QStringList>
 #include <QVector>
 #include <QWidget>
@@ -27,6 +32,7 @@
 
 class QCustomPlot;
 class QGridLayout;
+class QTimer;
 
 namespace hsmu {
 struct TestConfig;
@@ -47,6 +53,10 @@ public:
         QCustomPlot* plot = nullptr;
     };
 
+    static constexpr int kMinIntervalMs = 33; ///< ~30 Hz at most
+    static constexpr int kMaxIntervalMs = 1000;
+    static constexpr int kBudgetFactor = 20;
+
     explicit LivePlotsPanel(QWidget* parent = nullptr);
 
     /// Set up every plot for a run of this layout (clears the data).
@@ -63,10 +73,13 @@ public:
     void appendRecords(const std::vector<StepRecord>& rows);
     /// Remove every point (the configuration stays).
     void clearData();
-    /// Rescale each plot to its data and queue one replot each.
+    /// Ask for a redraw: now if the budget allows, else once when it does.
     void refresh();
-    /// Rescale and replot each plot now (before a grab or an export).
+    /// Rescale and redraw each plot now (before a grab or an export).
     void refreshNow();
+    /// Redraws done since construction, and the wait the budget imposes now [ms].
+    int redraws() const { return m_redraws; }
+    int redrawIntervalMs() const { return m_intervalMs; }
 
     /// The plots that exist for this layout, in display order; parameter plots separately.
     std::vector<NamedPlot> plots() const;
@@ -88,6 +101,7 @@ private:
     void showContextMenu(QCustomPlot* plot, const QPoint& pos);
     void enableExportMenu(QCustomPlot* plot);
     void rebuildParameterPlots(const RunLayout& layout, const PlotReferences& references);
+    std::vector<QCustomPlot*> visiblePlots() const;
 
     HysteresisPlot* m_hysteresis = nullptr;
     HistoryPlot* m_force = nullptr;
@@ -102,6 +116,10 @@ private:
     bool m_hasSpecimen = false;
     bool m_hasUpdating = false;
     qint64 m_rows = 0;
+    QTimer* m_redrawTimer = nullptr; ///< single shot: a redraw the budget postponed
+    QElapsedTimer m_sinceRedraw;
+    int m_intervalMs = kMinIntervalMs;
+    int m_redraws = 0;
 };
 
 } // namespace hsmu::gui

@@ -23,6 +23,8 @@ void PlotStyle::apply(QCustomPlot& plot) {
     plot.setBackground(Qt::white);
     plot.setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot.setNoAntialiasingOnDrag(true);
+    plot.setPlottingHint(QCP::phFastPolylines, true); // thousands of points per live curve
+    plot.setNotAntialiasedElements(QCP::aeFills);
     plot.legend->setVisible(false);
     plot.legend->setBrush(QColor(255, 255, 255, 220));
     plot.legend->setBorderPen(QPen(QColor(180, 180, 180)));

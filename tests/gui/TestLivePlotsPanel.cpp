@@ -124,6 +124,7 @@ private slots:
         LivePlotsPanel panel;
         panel.configure(m_run.layout, m_run.config);
         feed(panel, m_run.records, 50);
+        panel.refreshNow(); // the budget may have postponed the last redraw
         const auto& names = m_run.layout.updating->parameters;
         const ParameterBoundsMap table = tableIIIBounds();
         for (std::size_t j = 0; j < names.size(); ++j) {
@@ -151,6 +152,25 @@ private slots:
         }
         QCOMPARE(panel.fitError().threshold(), m_run.config.updating.inspector.threshold);
         QVERIFY(panel.fitError().yAxis->range().contains(panel.fitError().threshold()));
+    }
+
+    void redrawsAreCoalescedWithinTheBudget() {
+        LivePlotsPanel panel;
+        panel.configure(m_run.layout, m_run.config);
+        panel.refreshNow();
+        const int before = panel.redraws();
+        QVERIFY(panel.redrawIntervalMs() >= LivePlotsPanel::kMinIntervalMs);
+        QVERIFY(panel.redrawIntervalMs() <= LivePlotsPanel::kMaxIntervalMs);
+        // Many batches right after a redraw: none is drawn at once, all in one later redraw.
+        for (std::size_t i = 0; i < 10; ++i) {
+            panel.appendRecords({m_run.records[i]});
+            panel.refresh();
+        }
+        QCOMPARE(panel.redraws(), before);
+        QTRY_COMPARE_WITH_TIMEOUT(panel.redraws(), before + 1, 5000);
+        QTest::qWait(2 * LivePlotsPanel::kMaxIntervalMs); // nothing else was asked for
+        QCOMPARE(panel.redraws(), before + 1);
+        QCOMPARE(panel.displacementHistory().graph(0)->dataCount(), 10);
     }
 
     void everyAxisNamesItsUnit() {
