@@ -3,13 +3,12 @@
 #include "comms/link/ControlFactory.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/TestController.h"
+#include "gui/app/WindowScreenshot.h"
 #include "gui/cli/ConsoleStreams.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QPixmap>
 #include <QTextStream>
-#include <QTimer>
 
 #include <cmath>
 
@@ -93,21 +92,9 @@ int ConsoleCommand::exec(const QStringList& arguments) {
         else
             ConsoleStreams::err() << "hsmu: " << error << Qt::endl;
     }
-    int code = 0;
-    if (p.isSet(shotOpt)) {
-        const QString file = p.value(shotOpt);
-        QTimer::singleShot(int(after * 1000.0), &window, [&window, file, &code] {
-            const bool saved = window.grab().save(file, "PNG");
-            if (saved)
-                ConsoleStreams::err() << "hsmu: screenshot " << file << Qt::endl;
-            else
-                ConsoleStreams::err() << "hsmu: " << file << ": cannot be written" << Qt::endl;
-            code = saved ? 0 : 1;
-            QCoreApplication::exit(code);
-        });
-    }
-    const int loop = QApplication::exec();
-    return loop != 0 ? loop : code;
+    if (p.isSet(shotOpt))
+        WindowScreenshot::schedule(window, p.value(shotOpt), after, QStringLiteral("hsmu"));
+    return QApplication::exec();
 }
 
 } // namespace hsmu::gui

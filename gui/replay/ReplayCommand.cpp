@@ -1,13 +1,12 @@
 #include "gui/replay/ReplayCommand.h"
 
+#include "gui/app/WindowScreenshot.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/replay/ReplayWindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QPixmap>
 #include <QTextStream>
-#include <QTimer>
 
 #include <cmath>
 #include <memory>
@@ -63,23 +62,9 @@ int ReplayCommand::exec(const QStringList& arguments) {
     window->show();
     if (p.isSet(playOpt))
         window->play();
-    int code = 0;
-    if (p.isSet(shotOpt)) {
-        const QString file = p.value(shotOpt);
-        ReplayWindow* w = window.get();
-        QTimer::singleShot(int(after * 1000.0), w, [w, file, &code] {
-            const bool saved = w->grab().save(file, "PNG");
-            if (saved)
-                ConsoleStreams::err() << "hsmu replay: screenshot " << file << Qt::endl;
-            else
-                ConsoleStreams::err()
-                    << "hsmu replay: " << file << ": cannot be written" << Qt::endl;
-            code = saved ? 0 : 1;
-            QCoreApplication::exit(code);
-        });
-    }
-    const int loop = QApplication::exec();
-    return loop != 0 ? loop : code;
+    if (p.isSet(shotOpt))
+        WindowScreenshot::schedule(*window, p.value(shotOpt), after, QStringLiteral("hsmu replay"));
+    return QApplication::exec();
 }
 
 } // namespace hsmu::gui
