@@ -72,6 +72,7 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     m_parameterGrid->setSpacing(2);
     m_fitError = makePlot<HistoryPlot>(m_parameterArea, "fitErrorPlot");
     m_parameterGrid->addWidget(m_fitError, 0, 0);
+    m_fitError->yAxis->ticker()->setTickCount(3);
     vertical->addWidget(top);
     vertical->addWidget(m_parameterArea);
     vertical->setStretchFactor(0, 3);

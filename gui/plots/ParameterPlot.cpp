@@ -10,6 +10,7 @@ namespace hsmu::gui {
 ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     xAxis->setLabel(tr("Time [s]"));
+    yAxis->ticker()->setTickCount(3); // small cells: few, readable value labels
     axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
 
     const QPen valuePen = PlotStyle::seriesPen(0);
