@@ -5,7 +5,7 @@
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/MaterialCommand.h"
 #include "gui/cli/RunCommand.h"
-#include "gui/replay/ReplayCommand.h"
+#include "gui/replay/ReplayWindowCommand.h"
 
 #include <QApplication>
 #include <QLocale>
@@ -101,7 +101,7 @@ int dispatch(int argc, char** argv) {
     if (plotting)
         return runHeadless(sub, app.arguments());
     if (replayWindow)
-        return ReplayCommand::exec(app.arguments());
+        return ReplayWindowCommand::exec(app.arguments());
     return ConsoleCommand::exec(app.arguments());
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// ReplayCommand: `hsmu replay FILE.h5 [--speed S] [--play] [--screenshot FILE
+// ReplayWindowCommand: `hsmu replay FILE.h5 [--speed S] [--play] [--screenshot FILE
 // [--screenshot-after SECONDS]]`: the ReplayWindow on a run record (docs/cli.md, "Replay").
 //   --speed              test seconds per wall second (default 1)
 //   --play               start playing at once (otherwise the initial state is shown, paused)
@@ -15,8 +15,8 @@
 
 namespace hsmu::gui {
 
-class ReplayCommand {
-    Q_DECLARE_TR_FUNCTIONS(ReplayCommand)
+class ReplayWindowCommand {
+    Q_DECLARE_TR_FUNCTIONS(ReplayWindowCommand)
 public:
     /// arguments: the process arguments (program, "replay", FILE, ...). Runs the event loop;
     /// returns the exit code.

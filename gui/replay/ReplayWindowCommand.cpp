@@ -1,4 +1,4 @@
-#include "gui/replay/ReplayCommand.h"
+#include "gui/replay/ReplayWindowCommand.h"
 
 #include "gui/app/WindowScreenshot.h"
 #include "gui/cli/ConsoleStreams.h"
@@ -20,7 +20,7 @@ int fail(const QString& message) {
 }
 } // namespace
 
-int ReplayCommand::exec(const QStringList& arguments) {
+int ReplayWindowCommand::exec(const QStringList& arguments) {
     QCommandLineParser p;
     p.setApplicationDescription(tr("Replay a recorded test (an HDF5 run record) in a window."));
     p.addHelpOption();
