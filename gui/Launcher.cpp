@@ -9,6 +9,7 @@
 #include "gui/cli/MaterialCommand.h"
 #include "gui/cli/ReplayCommand.h"
 #include "gui/cli/RunCommand.h"
+#include "gui/replay/ReplayWindowCommand.h"
 
 #include <QApplication>
 #include <QTextStream>
@@ -54,7 +55,7 @@ int runHeadless(const QString& sub, const QStringList& arguments) {
     if (sub == QLatin1String("export"))
         return ExportCommand::exec(arguments);
     if (sub == QLatin1String("replay"))
-        return ReplayCommand::exec(arguments); // the viewer (no --identify) is wired at merge
+        return ReplayCommand::exec(arguments); // --identify / --import
     return MaterialCommand::exec(arguments);
 }
 
@@ -62,15 +63,18 @@ int dispatch(int argc, char** argv) {
     const QString sub = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool plotting = sub == QLatin1String("run") || sub == QLatin1String("compare");
     const bool plots = plotting && hasArgument(argc, argv, {"--plots"});
+    // `hsmu replay FILE` opens the replay window; --identify / --import are headless (gui/cli).
+    const bool replayWindow =
+        sub == QLatin1String("replay") && !hasArgument(argc, argv, {"--identify", "--import"});
     const bool dataOnly = sub == QLatin1String("material") || sub == QLatin1String("export") ||
-                          sub == QLatin1String("replay");
+                          (sub == QLatin1String("replay") && !replayWindow);
     if (dataOnly || (plotting && !plots)) {
         QCoreApplication app(argc, argv); // no windowing system needed
         describeApplication();
         installTranslator(app);
         return runHeadless(sub, app.arguments());
     }
-    if (!plotting && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
+    if (!plotting && !replayWindow && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
         QTextStream(stderr) << "hsmu: unknown subcommand '" << sub
                             << "' (available: run, compare, replay, export, material; "
                                "without one the console opens)"
@@ -82,6 +86,12 @@ int dispatch(int argc, char** argv) {
         const bool offscreenOk =
             plotting ||
             hasArgument(argc, argv, {"--screenshot", "-h", "--help", "-v", "--version"});
+        if (!offscreenOk && replayWindow) {
+            QTextStream(stderr) << "hsmu replay: no display (DISPLAY / WAYLAND_DISPLAY are not "
+                                   "set); the replay window needs one"
+                                << Qt::endl;
+            return 1;
+        }
         if (!offscreenOk) {
             QTextStream(stderr) << "hsmu: no display (DISPLAY / WAYLAND_DISPLAY are not set); "
                                    "use `hsmu run CONFIG --out DIR` to run a test headless"
@@ -95,6 +105,8 @@ int dispatch(int argc, char** argv) {
     installTranslator(app);
     if (plotting)
         return runHeadless(sub, app.arguments());
+    if (replayWindow)
+        return ReplayWindowCommand::exec(app.arguments());
     return ConsoleCommand::exec(app.arguments());
 }
 

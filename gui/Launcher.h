@@ -4,6 +4,8 @@
 //                             on the "offscreen" platform when no display is set)
 //   hsmu compare CONFIG ...   CompareCommand (like run: --plots needs a QApplication)
 //   hsmu material ...         MaterialCommand (QCoreApplication)
+//   hsmu replay FILE.h5 ...   ReplayWindowCommand (the replay window; needs a display
+//                             except with --screenshot / --help)
 //   hsmu [options]            ConsoleCommand (the window; without a display only --help,
 //                             --version and --screenshot, rendered offscreen, are possible)
 // Anything else is an unknown subcommand: a message and exit code 1.

@@ -1,13 +1,14 @@
 #include "gui/app/ConsoleCommand.h"
 
+#include "comms/link/ControlFactory.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/TestController.h"
+#include "gui/app/WindowScreenshot.h"
 #include "gui/cli/ConsoleStreams.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QPixmap>
 #include <QTextStream>
-#include <QTimer>
 
 #include <cmath>
 
@@ -42,7 +43,11 @@ int ConsoleCommand::exec(const QStringList& arguments) {
     const QCommandLineOption shotAfterOpt(QStringLiteral("screenshot-after"),
                                           tr("Seconds before the screenshot (default 4)."),
                                           QStringLiteral("seconds"), QStringLiteral("4"));
-    p.addOptions({startOpt, gmOpt, speedOpt, shotOpt, shotAfterOpt});
+    const QCommandLineOption controllerOpt(
+        QStringLiteral("controller"),
+        tr("Actuator controller: builtin (the default) or tcp://HOST:PORT."),
+        QStringLiteral("address"), QStringLiteral("builtin"));
+    p.addOptions({startOpt, gmOpt, speedOpt, shotOpt, shotAfterOpt, controllerOpt});
     if (!p.parse(arguments))
         return fail(p.errorText());
     if (p.isSet(QStringLiteral("help"))) {
@@ -68,10 +73,18 @@ int ConsoleCommand::exec(const QStringList& arguments) {
             return fail(tr("--speed: expected a number"));
     }
 
+    std::string linkError;
+    const auto address =
+        comms::LinkAddress::parse(p.value(controllerOpt).toStdString(), &linkError);
+    if (!address)
+        return fail(tr("--controller: %1").arg(QString::fromStdString(linkError)));
+
     ConfigOverrides overrides;
     overrides.groundMotionFile = p.value(gmOpt);
     MainWindow window(overrides);
     window.setSpeed(speed);
+    if (p.isSet(controllerOpt))
+        window.setControllerAddress(p.value(controllerOpt));
     window.show();
     if (p.isSet(startOpt)) {
         window.setConfirmBeforeStart(false); // --start is the operator's confirmation
@@ -81,21 +94,9 @@ int ConsoleCommand::exec(const QStringList& arguments) {
         else
             ConsoleStreams::err() << "hsmu: " << error << Qt::endl;
     }
-    int code = 0;
-    if (p.isSet(shotOpt)) {
-        const QString file = p.value(shotOpt);
-        QTimer::singleShot(int(after * 1000.0), &window, [&window, file, &code] {
-            const bool saved = window.grab().save(file, "PNG");
-            if (saved)
-                ConsoleStreams::err() << "hsmu: screenshot " << file << Qt::endl;
-            else
-                ConsoleStreams::err() << "hsmu: " << file << ": cannot be written" << Qt::endl;
-            code = saved ? 0 : 1;
-            QCoreApplication::exit(code);
-        });
-    }
-    const int loop = QApplication::exec();
-    return loop != 0 ? loop : code;
+    if (p.isSet(shotOpt))
+        WindowScreenshot::schedule(window, p.value(shotOpt), after, QStringLiteral("hsmu"));
+    return QApplication::exec();
 }
 
 } // namespace hsmu::gui

@@ -1,6 +1,9 @@
 #pragma once
 // ConsoleCommand: `hsmu [--start CONFIG] [--ground-motion FILE] [--speed S]
-// [--screenshot FILE [--screenshot-after SECONDS]]`: the console window.
+// [--controller builtin|tcp://HOST:PORT] [--screenshot FILE [--screenshot-after SECONDS]]`:
+// the console window.
+//   --controller         where the specimens run: the built-in virtual lab or a controller
+//                        over the native TCP link (e.g. hsmu-controller)
 //   --start              load a preset name or configuration file and start it at once
 //                        (the command line is the operator's confirmation: no pre-flight)
 //   --ground-motion      use this record for every configuration loaded

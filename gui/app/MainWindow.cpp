@@ -6,12 +6,13 @@
 #include "gui/app/ControlBar.h"
 #include "gui/app/ParametersPanel.h"
 #include "gui/app/PendingUpdatesPanel.h"
-#include "gui/app/PlotArea.h"
 #include "gui/app/PreflightDialog.h"
 #include "gui/app/SettingsDialog.h"
 #include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
 #include "gui/app/TestStatusBar.h"
+#include "gui/plots/LivePlotsPanel.h"
+#include "gui/replay/ReplayWindow.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -62,7 +63,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     bh->addWidget(m_bannerText, 1);
     bh->addWidget(ack);
     m_banner->hide();
-    m_plots = new PlotArea(centre);
+    m_plots = new LivePlotsPanel(centre);
     cv->addWidget(m_banner);
     cv->addWidget(m_plots, 1);
     setCentralWidget(centre);
@@ -143,6 +144,8 @@ void MainWindow::buildMenus() {
     connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
     rebuildRecentMenu();
     file->addSeparator();
+    file->addAction(tr("Open r&ecord..."), this, [this] { ReplayWindow::openWithDialog(this); });
+    file->addSeparator();
     file->addAction(tr("&Settings..."), this, &MainWindow::openSettings);
     file->addSeparator();
     file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
@@ -206,7 +209,11 @@ void MainWindow::wireController() {
     });
 
     connect(m_controller, &TestController::testLoaded, this, &MainWindow::onTestLoaded);
-    connect(m_controller, &TestController::recordsArrived, m_plots, &PlotArea::appendRecords);
+    connect(m_controller, &TestController::recordsArrived, m_plots,
+            [this](const std::vector<StepRecord>& rows) {
+                m_plots->appendRecords(rows);
+                m_plots->refresh(); // coalesced and budgeted by the panel
+            });
     connect(m_controller, &TestController::stateChanged, this, &MainWindow::onStateChanged);
     connect(m_controller, &TestController::progress, m_status, &TestStatusBar::setProgress);
     connect(m_controller, &TestController::alarmRaised, this, &MainWindow::onAlarm);
@@ -274,6 +281,10 @@ bool MainWindow::applySetup() {
     ConsoleSettings::setControllerAddress(m_setup->controllerText());
     m_setup->markApplied();
     return true;
+}
+
+void MainWindow::setControllerAddress(const QString& address) {
+    m_setup->setControllerAddress(address);
 }
 
 void MainWindow::setSpeed(double factor) {
@@ -360,7 +371,7 @@ void MainWindow::openSettings() {
 }
 
 void MainWindow::onTestLoaded() {
-    m_plots->showTest(m_controller->layout());
+    m_plots->configure(m_controller->layout(), m_controller->config());
     m_alarms->clearAlarms();
     m_alarms->addMessage(tr("loaded %1 (%2)")
                              .arg(QString::fromStdString(m_controller->config().name),

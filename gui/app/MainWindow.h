@@ -1,13 +1,13 @@
 #pragma once
 // MainWindow: assembles the console and only wires signals:
 //   ControlBar (top): presets, open, start / pause / single step / resume / stop, emergency hold
-//   PlotArea (centre): the live plots (rows ~30 times a second, one replot per batch), under an
-//     attention banner shown while a critical alarm is unacknowledged
+//   LivePlotsPanel (centre): every live plot (rows ~30 times a second, coalesced budgeted
+//     replots), under an attention banner shown while a critical alarm is unacknowledged
 //   docks: Test setup and Parameters (right, one tab each: the setup raised when a test is
 //     loaded, the parameters when it runs), Pending updates (right), Alarms (bottom); their
 //     layout and the window geometry are remembered (ConsoleSettings)
 //   TestStatusBar: test time, step, steps/s, state, link, recording
-//   menus: File (open, recent files, settings, quit), View (the docks)
+//   menus: File (open, recent files, open record -> ReplayWindow, settings, quit), View
 // Start goes through the pre-flight: the worker prepares the test (connects a link, checks
 // stability) and the PreflightDialog must be confirmed before the first step; a command-line
 // --start is the operator's confirmation (setConfirmBeforeStart(false)).
@@ -35,9 +35,9 @@ namespace hsmu::gui {
 
 class AlarmList;
 class ControlBar;
+class LivePlotsPanel;
 class ParametersPanel;
 class PendingUpdatesPanel;
-class PlotArea;
 class PreflightDialog;
 class SetupPanel;
 class TestController;
@@ -58,6 +58,9 @@ public:
     void setSpeed(double factor);
     /// false: startTest() starts without the pre-flight dialog (command-line --start).
     void setConfirmBeforeStart(bool confirm) { m_confirmBeforeStart = confirm; }
+    /// The controller of the next load, as typed in the setup panel ("builtin",
+    /// "tcp://HOST:PORT", ...).
+    void setControllerAddress(const QString& address);
     /// The pre-flight dialog while it is open, else nullptr.
     PreflightDialog* preflightDialog() const { return m_preflight; }
 
@@ -96,7 +99,7 @@ private:
     RunRequest m_pendingRun = RunRequest::None;
     TestController* m_controller = nullptr;
     ControlBar* m_controls = nullptr;
-    PlotArea* m_plots = nullptr;
+    LivePlotsPanel* m_plots = nullptr;
     QWidget* m_banner = nullptr;
     QLabel* m_bannerText = nullptr;
     SetupPanel* m_setup = nullptr;

@@ -57,7 +57,7 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
         buildHybridTest(cfg, comms::makeControlFactory(controller, link)); // may throw
     m_config = cfg;
     m_address = controller;
-    m_layout = RunLayout::of(*test);
+    m_layout = RunLayout::of(*test); // with the updater's parameters, for the plots
     m_buffer = std::make_shared<RecordBuffer>();
     m_recordPath.clear();
     if (!m_recordDir.isEmpty()) {

@@ -17,6 +17,7 @@
 
 #include "comms/LinkAddress.h"
 #include "core/config/TestConfig.h"
+#include "core/config/TestFactory.h"
 #include "core/output/RunLayout.h"
 #include "core/test/StepRecord.h"
 #include "gui/app/AlarmMetaType.h"

@@ -25,7 +25,6 @@ int fail(const QString& message) {
 
 struct ReplayOptions {
     QString record, import, units, method, config, specimen, outDir;
-    bool identify = false;
 };
 
 std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
@@ -63,7 +62,6 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
         return parsed;
     const QStringList pos = p.positionalArguments();
     o.import = p.value(importOpt);
-    o.identify = p.isSet(identifyOpt) || p.isSet(importOpt);
     if (pos.size() > 2)
         return ReplayCommand::tr("unexpected argument '%1'").arg(pos[2]);
     o.record = pos.size() == 2 ? pos[1] : QString();
@@ -71,10 +69,6 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
         return ReplayCommand::tr("give either FILE.h5 or --import DATA.csv, not both");
     if (o.import.isEmpty() && o.record.isEmpty())
         return ReplayCommand::tr("expected FILE.h5 (a run record) or --import DATA.csv");
-    if (!o.identify)
-        return ReplayCommand::tr("%1: the replay viewer is not part of this build; use "
-                                 "--identify --out DIR to re-identify the record headless")
-            .arg(o.record);
     o.units = p.value(unitsOpt);
     if (!o.units.isEmpty() && o.import.isEmpty())
         return ReplayCommand::tr("--units applies to --import only (a record has its units)");

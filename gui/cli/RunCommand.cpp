@@ -194,7 +194,8 @@ int RunCommand::exec(const QStringList& arguments) {
     }
     if (options.plots) {
         QStringList errors;
-        PlotExporter::writeRunPlots(dir.path(), layout, records.records(), &errors);
+        PlotExporter::writeRunPlots(dir.path(), layout, records.records(), &errors,
+                                    PlotReferences::of(cfg));
         for (const QString& f : errors)
             code = fail(tr("%1: the plot could not be written").arg(f));
     }

@@ -8,6 +8,9 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     xAxis->setLabel(tr("Time [s]"));
     axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    m_thresholdLine =
+        PlotStyle::addLine(*this, Qt::Horizontal, QPen(QColor(200, 30, 30), 1.2, Qt::DashLine));
+    m_cursor = PlotStyle::addLine(*this, Qt::Vertical, QPen(QColor(30, 30, 30), 1.5));
 }
 
 void HistoryPlot::setChannels(const QString& title, const QString& yLabel,
@@ -42,6 +45,67 @@ void HistoryPlot::showGroundAcceleration() {
     setChannels(
         tr("Ground motion"), tr("Ground acceleration [m/s²]"),
         {{tr("Ground acceleration"), [](const StepRecord& r) { return r.groundAcceleration; }}});
+}
+
+void HistoryPlot::showGroundMotion(const QVector<double>& time,
+                                   const QVector<double>& acceleration) {
+    setChannels(tr("Ground motion"), tr("Ground acceleration [m/s²]"), {});
+    addSeries(tr("Ground acceleration"), time, acceleration);
+}
+
+void HistoryPlot::showForces(const RunLayout& layout, const std::vector<int>& elements) {
+    std::vector<Channel> channels;
+    for (const int index : elements) {
+        const auto i = std::size_t(index);
+        channels.push_back(
+            {QString::fromStdString(layout.elements[i].name), [i](const StepRecord& r) {
+                 return i < r.elements.size() ? r.elements[i].force : qQNaN();
+             }});
+    }
+    if (elements.empty()) {
+        setChannels(tr("Force history"), tr("Force"), {});
+        return;
+    }
+    const ElementUnits& units = layout.elements[std::size_t(elements.front())].units;
+    const QString unit = QString::fromStdString(units.force);
+    const bool rotational = units.deformation == "rad";
+    setChannels(rotational ? tr("Moment history") : tr("Force history"),
+                rotational ? tr("Moment [%1]").arg(unit) : tr("Force [%1]").arg(unit),
+                std::move(channels));
+}
+
+void HistoryPlot::showTracking(const RunLayout& layout, int specimen) {
+    const auto i = std::size_t(specimen);
+    const ElementInfo& e = layout.elements[i];
+    const QString unit = QString::fromStdString(e.units.deformation);
+    const bool rotational = e.units.deformation == "rad";
+    setChannels(tr("Tracking of %1").arg(QString::fromStdString(e.name)),
+                rotational ? tr("Rotation [%1]").arg(unit) : tr("Deformation [%1]").arg(unit),
+                {{tr("commanded"),
+                  [i](const StepRecord& r) {
+                      return i < r.elements.size() ? r.elements[i].commanded : qQNaN();
+                  }},
+                 {tr("measured"), [i](const StepRecord& r) {
+                      return i < r.elements.size() ? r.elements[i].deformation : qQNaN();
+                  }}});
+}
+
+void HistoryPlot::showFitError(double threshold) {
+    setChannels(tr("Inspector fit error"), tr("Fit error [-]"),
+                {{tr("fit error"), [](const StepRecord& r) {
+                      return r.hasUpdating ? r.updating.fitError : qQNaN();
+                  }}});
+    setThreshold(threshold);
+}
+
+void HistoryPlot::setThreshold(double value) {
+    m_threshold = value;
+    PlotStyle::placeLine(*m_thresholdLine, Qt::Horizontal, value);
+}
+
+void HistoryPlot::setTimeCursor(double time) {
+    m_cursorTime = time;
+    PlotStyle::placeLine(*m_cursor, Qt::Vertical, time);
 }
 
 void HistoryPlot::addSeries(const QString& name, const QVector<double>& time,

@@ -1,8 +1,11 @@
 #pragma once
 // HistoryPlot: time histories of quantities taken from StepRecords (one graph per channel),
 // e.g. the displacement of every DOF [m] or the ground acceleration [m/s^2]. Used live by the
-// console and offscreen by `hsmu run --plots`; with addSeries() also precomputed histories
-// (`hsmu compare --plots`: the three runs overlaid).
+// console (LivePlotsPanel), by the replay window and offscreen by `hsmu run --plots`; with
+// addSeries() also precomputed histories (`hsmu compare --plots`: the three runs overlaid).
+// Optional reference lines: a horizontal threshold (e.g. the inspector's fit-error threshold,
+// kept inside the y range) and a vertical time cursor (e.g. the replay position on the
+// ground motion).
 // Thread rules: GUI thread only.
 
 #include "core/output/RunLayout.h"
@@ -31,7 +34,24 @@ public:
     void showDisplacements(const RunLayout& layout);
     /// One channel: the ground acceleration [m/s^2].
     void showGroundAcceleration();
+    /// The whole ground-motion record (time [s], acceleration [m/s^2]) as a fixed series;
+    /// appendRecords() adds nothing (pair it with setTimeCursor()).
+    void showGroundMotion(const QVector<double>& time, const QVector<double>& acceleration);
+    /// Force (moment for rotational elements) of each element in `elements` (indices into
+    /// layout), which must share one force unit (that of the first).
+    void showForces(const RunLayout& layout, const std::vector<int>& elements);
+    /// Commanded and measured deformation of element `specimen` (an experimental element).
+    void showTracking(const RunLayout& layout, int specimen);
+    /// The inspector's normalized fit error [-] (StepRecord::updating.fitError) and its
+    /// threshold line (NaN: none).
+    void showFitError(double threshold);
 
+    /// Horizontal threshold line at y = value (NaN hides it), kept in the y range.
+    void setThreshold(double value);
+    double threshold() const { return m_threshold; }
+    /// Vertical time cursor at t [s] (NaN hides it).
+    void setTimeCursor(double time);
+    double timeCursor() const { return m_cursorTime; }
     /// Add a graph of precomputed samples (time [s], value), e.g. one run of `hsmu compare`;
     /// it is not fed by appendRecords() and is removed by the next setChannels().
     void addSeries(const QString& name, const QVector<double>& time, const QVector<double>& value);
@@ -44,6 +64,10 @@ public:
 private:
     std::vector<Channel> m_channels;
     std::vector<QCPGraph*> m_graphs;
+    double m_threshold = qQNaN();
+    double m_cursorTime = qQNaN();
+    QCPItemStraightLine* m_thresholdLine = nullptr;
+    QCPItemStraightLine* m_cursor = nullptr;
 };
 
 } // namespace hsmu::gui

@@ -9,6 +9,7 @@ namespace hsmu::gui {
 HysteresisPlot::HysteresisPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     xAxis->setLabel(tr("Deformation"));
+    xAxis->ticker()->setTickCount(5); // rotations print long (-0.015): fewer labels
     yAxis->setLabel(tr("Force"));
 }
 
@@ -42,7 +43,8 @@ void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int
         curve->setName(e.experimental ? tr("%1 (specimen, measured)").arg(name)
                                       : tr("%1 (numerical)").arg(name));
         curve->setPen(PlotStyle::seriesPen(int(k)));
-        m_series.push_back({elements[k], curve});
+        curve->setAntialiased(false); // thousands of segments per live redraw
+        m_series.push_back({elements[k], curve, false});
     }
     if (!elements.empty()) {
         const ElementInfo& first = layout.elements[std::size_t(elements.front())];
@@ -54,6 +56,25 @@ void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int
     }
     legend->setVisible(!m_series.empty());
     replot();
+}
+
+void HysteresisPlot::addAuxiliaryModel(const RunLayout& layout) {
+    if (!layout.updating)
+        return;
+    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
+        if (layout.elements[i].name != layout.updating->specimen)
+            continue;
+        auto* curve = new QCPCurve(xAxis, yAxis);
+        curve->setName(
+            tr("auxiliary model (%1)").arg(QString::fromStdString(layout.updating->method)));
+        QPen pen = PlotStyle::seriesPen(int(m_series.size()));
+        pen.setStyle(Qt::DashLine);
+        curve->setPen(pen);
+        curve->setAntialiased(false);
+        m_series.push_back({int(i), curve, true});
+        legend->setVisible(true);
+        return;
+    }
 }
 
 void HysteresisPlot::setAxes(const QString& title, const QString& deformationUnit,
@@ -86,11 +107,12 @@ void HysteresisPlot::appendRecords(const std::vector<StepRecord>& records) {
         x.reserve(qsizetype(records.size()));
         y.reserve(qsizetype(records.size()));
         for (const StepRecord& r : records) {
-            if (std::size_t(s.element) >= r.elements.size())
+            if (std::size_t(s.element) >= r.elements.size() || (s.auxiliary && !r.hasUpdating))
                 continue;
+            const ElementSample& e = r.elements[std::size_t(s.element)];
             t.push_back(r.time);
-            x.push_back(r.elements[std::size_t(s.element)].deformation);
-            y.push_back(r.elements[std::size_t(s.element)].force);
+            x.push_back(e.deformation);
+            y.push_back(s.auxiliary ? r.updating.auxiliaryForce : e.force);
         }
         s.curve->addData(t, x, y, true);
     }

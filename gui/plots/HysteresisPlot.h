@@ -27,6 +27,10 @@ public:
 
     /// Replace the curves by one per element index in `elements` (indices into layout).
     void showElements(const RunLayout& layout, const std::vector<int>& elements);
+    /// Overlay the auxiliary model (METHOD.md section 3): its force
+    /// (StepRecord::updating.auxiliaryForce) against the specimen's measured deformation.
+    /// Nothing if layout has no updating or its specimen is unknown. Call after showElements().
+    void addAuxiliaryModel(const RunLayout& layout);
     /// Title and axis labels for loops in these units ("rad" labels rotation and moment).
     void setAxes(const QString& title, const QString& deformationUnit, const QString& forceUnit);
     /// Add a curve of precomputed points (not fed by appendRecords(); removed by the next
@@ -44,6 +48,7 @@ private:
     struct Series {
         int element = 0;
         QCPCurve* curve = nullptr;
+        bool auxiliary = false; ///< force from StepRecord::updating.auxiliaryForce
     };
     std::vector<Series> m_series;
 };

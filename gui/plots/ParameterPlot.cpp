@@ -10,6 +10,7 @@ namespace hsmu::gui {
 ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     xAxis->setLabel(tr("Time [s]"));
+    yAxis->ticker()->setTickCount(3); // small cells: few, readable value labels
     axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
 
     const QPen valuePen = PlotStyle::seriesPen(0);
@@ -34,6 +35,9 @@ ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     m_true->setPen(truePen);
     m_true->setName(tr("true value"));
     m_true->removeFromLegend();
+    const QPen boundPen(QColor(200, 30, 30), 1.0, Qt::DotLine);
+    m_lowerBound = PlotStyle::addLine(*this, Qt::Horizontal, boundPen);
+    m_upperBound = PlotStyle::addLine(*this, Qt::Horizontal, boundPen);
     legend->setVisible(true);
     QFont small = font();
     small.setPointSizeF(std::max(6.0, small.pointSizeF() - 1.5));
@@ -56,6 +60,13 @@ void ParameterPlot::setTrueValue(double value) {
     else
         m_true->removeFromLegend();
     updateTrueLine();
+}
+
+void ParameterPlot::setBounds(double lower, double upper) {
+    m_boundLow = std::isfinite(lower) ? lower : qQNaN();
+    m_boundHigh = std::isfinite(upper) ? upper : qQNaN();
+    PlotStyle::placeLine(*m_lowerBound, Qt::Horizontal, m_boundLow);
+    PlotStyle::placeLine(*m_upperBound, Qt::Horizontal, m_boundHigh);
 }
 
 void ParameterPlot::updateTrueLine() {

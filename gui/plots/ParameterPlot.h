@@ -2,7 +2,8 @@
 // ParameterPlot: the history of one identified parameter with its uncertainty, like the
 // paper's Figure 10: the estimate theta(t) as a line, the band theta ± kBandSigmas sigma(t)
 // shaded, and optionally the true value (the virtual specimen's own parameter) as a dashed
-// line. Values in the law's own units (normalized by uRef / fRef for Bouc-Wen).
+// line, and optionally the identification bounds as two red dotted lines (kept in range).
+// Values in the law's own units (normalized by uRef / fRef for Bouc-Wen).
 // Two feeds: StepRecords (the console: parameter `index` of StepRecord::updating) or
 // precomputed samples (hsmu compare).
 // Thread rules: GUI thread only, like every widget.
@@ -27,6 +28,15 @@ public:
     void showParameter(const QString& name, int index = 0);
     /// Draw the true value as a dashed line over the data's time span; NaN hides it.
     void setTrueValue(double value);
+    /// Draw the lower and upper bounds of the identification (infinite or NaN: not drawn).
+    void setBounds(double lower, double upper);
+
+    /// The estimate and the band's edges (value ∓ kBandSigmas sigma), e.g. for tests.
+    const QCPGraph* estimateGraph() const { return m_value; }
+    const QCPGraph* lowerBandGraph() const { return m_lower; }
+    const QCPGraph* upperBandGraph() const { return m_upper; }
+    const QCPItemStraightLine* lowerBoundLine() const { return m_lowerBound; }
+    const QCPItemStraightLine* upperBoundLine() const { return m_upperBound; }
 
     /// Append one point per record that carries updating data.
     void appendRecords(const std::vector<StepRecord>& records);
@@ -46,6 +56,10 @@ private:
     QCPGraph* m_upper = nullptr;
     QCPGraph* m_lower = nullptr;
     QCPGraph* m_true = nullptr;
+    QCPItemStraightLine* m_lowerBound = nullptr;
+    QCPItemStraightLine* m_upperBound = nullptr;
+    double m_boundLow = qQNaN();
+    double m_boundHigh = qQNaN();
 };
 
 } // namespace hsmu::gui

@@ -1,24 +1,78 @@
 #include "gui/plots/PlotExporter.h"
 
-#include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
+#include "gui/plots/LivePlotsPanel.h"
 #include "gui/plots/ParameterPlot.h"
 #include "gui/plots/PlotStyle.h"
 
+#include <QApplication>
 #include <QDir>
+#include <QFileInfo>
 #include <QImage>
 #include <QPainter>
+#include <QSvgGenerator>
 
 #include <algorithm>
 #include <memory>
 
 namespace hsmu::gui {
 
-bool PlotExporter::savePng(QCustomPlot& plot, const QString& path, int width, int height) {
+namespace {
+void layOut(QCustomPlot& plot, int width, int height) {
     plot.resize(width, height);
     PlotStyle::rescaleWithMargin(plot);
     plot.replot(QCustomPlot::rpImmediateRefresh);
+}
+bool nonEmptyFile(const QString& path) {
+    return QFileInfo(path).size() > 0;
+}
+} // namespace
+
+bool PlotExporter::savePng(QCustomPlot& plot, const QString& path, int width, int height) {
+    layOut(plot, width, height);
     return plot.savePng(path, width, height);
+}
+
+bool PlotExporter::saveSvg(QCustomPlot& plot, const QString& path, int width, int height) {
+    layOut(plot, width, height);
+    QSvgGenerator svg;
+    svg.setFileName(path);
+    svg.setSize(QSize(width, height));
+    svg.setViewBox(QRect(0, 0, width, height));
+    svg.setTitle(QStringLiteral("HSMU Console plot"));
+    QCPPainter painter;
+    if (!painter.begin(&svg))
+        return false;
+    plot.toPainter(&painter, width, height);
+    painter.end();
+    return nonEmptyFile(path);
+}
+
+bool PlotExporter::savePdf(QCustomPlot& plot, const QString& path, int width, int height) {
+    layOut(plot, width, height);
+    return plot.savePdf(path, width, height, QCP::epNoCosmetic, QStringLiteral("HSMU Console"),
+                        QStringLiteral("HSMU Console plot")) &&
+           nonEmptyFile(path);
+}
+
+bool PlotExporter::saveAs(QCustomPlot& plot, const QString& path, int width, int height,
+                          QString* why) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    bool ok = false;
+    if (suffix == QLatin1String("png"))
+        ok = savePng(plot, path, width, height);
+    else if (suffix == QLatin1String("svg"))
+        ok = saveSvg(plot, path, width, height);
+    else if (suffix == QLatin1String("pdf"))
+        ok = savePdf(plot, path, width, height);
+    else {
+        if (why)
+            *why = tr("%1: unknown plot format '%2' (expected png, svg or pdf)").arg(path, suffix);
+        return false;
+    }
+    if (!ok && why)
+        *why = tr("%1: the plot could not be written").arg(path);
+    return ok;
 }
 
 bool PlotExporter::saveGridPng(const std::vector<QCustomPlot*>& plots, const QString& path,
@@ -50,51 +104,48 @@ QString PlotExporter::fileSafe(const QString& name) {
 }
 
 QStringList PlotExporter::writeRunPlots(const QString& dir, const RunLayout& layout,
-                                        const std::vector<StepRecord>& records,
-                                        QStringList* errors) {
+                                        const std::vector<StepRecord>& records, QStringList* errors,
+                                        const PlotReferences& references) {
     QStringList written;
-    auto save = [&](QCustomPlot& plot, const QString& file) {
-        const QString path = QDir(dir).filePath(file);
-        if (savePng(plot, path))
+    auto record = [&](bool ok, const QString& path) {
+        if (ok)
             written << path;
         else if (errors)
             *errors << path;
     };
+    // The console's own panel, laid out offscreen at a screen-like size.
+    LivePlotsPanel panel;
+    panel.setAttribute(Qt::WA_DontShowOnScreen);
+    panel.configure(layout, references);
+    panel.appendRecords(records);
+    panel.resize(kPanelWidth, kPanelHeight);
+    panel.show();
+    QApplication::processEvents(); // layouts settle before the grab
+    panel.refreshNow();
+    QString path = QDir(dir).filePath(QStringLiteral("plots.png"));
+    record(panel.grab().save(path, "PNG"), path);
+    panel.hide();
+
+    for (const LivePlotsPanel::NamedPlot& p : panel.plots()) {
+        path = QDir(dir).filePath(p.fileBase + QStringLiteral(".png"));
+        record(savePng(*p.plot, path), path);
+    }
     for (std::size_t i = 0; i < layout.elements.size(); ++i) {
         if (!layout.elements[i].nonlinear)
             continue;
         HysteresisPlot plot;
         plot.showElements(layout, {int(i)});
         plot.appendRecords(records);
-        save(plot, QStringLiteral("hysteresis_%1.png")
-                       .arg(fileSafe(QString::fromStdString(layout.elements[i].name))));
+        path =
+            QDir(dir).filePath(QStringLiteral("hysteresis_%1.png")
+                                   .arg(fileSafe(QString::fromStdString(layout.elements[i].name))));
+        record(savePng(plot, path), path);
     }
-    HistoryPlot displacement;
-    displacement.showDisplacements(layout);
-    displacement.appendRecords(records);
-    save(displacement, QStringLiteral("displacement.png"));
-
-    HistoryPlot ground;
-    ground.showGroundAcceleration();
-    ground.appendRecords(records);
-    save(ground, QStringLiteral("ground_motion.png"));
-
-    if (layout.updating && !layout.updating->parameters.empty()) {
-        std::vector<std::unique_ptr<ParameterPlot>> plots;
-        std::vector<QCustomPlot*> cells;
-        for (std::size_t i = 0; i < layout.updating->parameters.size(); ++i) {
-            auto plot = std::make_unique<ParameterPlot>();
-            plot->showParameter(QString::fromStdString(layout.updating->parameters[i]), int(i));
-            plot->appendRecords(records);
-            plot->legend->setVisible(i == 0); // one legend for the grid
-            cells.push_back(plot.get());
-            plots.push_back(std::move(plot));
-        }
-        const QString path = QDir(dir).filePath(QStringLiteral("parameters.png"));
-        if (saveGridPng(cells, path, kGridColumns, kGridCellWidth, kGridCellHeight))
-            written << path;
-        else if (errors)
-            *errors << path;
+    if (!panel.parameterPlots().empty()) {
+        std::vector<QCustomPlot*> cells(panel.parameterPlots().begin(),
+                                        panel.parameterPlots().end());
+        path = QDir(dir).filePath(QStringLiteral("parameters.png"));
+        record(saveGridPng(cells, path, kGridColumns, kGridCellWidth, kGridCellHeight), path);
     }
     return written;
 }

@@ -3,6 +3,7 @@
 #include <qcustomplot.h>
 
 #include <array>
+#include <cmath>
 
 namespace hsmu::gui {
 
@@ -22,6 +23,8 @@ void PlotStyle::apply(QCustomPlot& plot) {
     plot.setBackground(Qt::white);
     plot.setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot.setNoAntialiasingOnDrag(true);
+    plot.setPlottingHint(QCP::phFastPolylines, true); // thousands of points per live curve
+    plot.setNotAntialiasedElements(QCP::aeFills);
     plot.legend->setVisible(false);
     plot.legend->setBrush(QColor(255, 255, 255, 220));
     plot.legend->setBorderPen(QPen(QColor(180, 180, 180)));
@@ -57,6 +60,45 @@ void PlotStyle::rescaleWithMargin(QCustomPlot& plot) {
     plot.rescaleAxes();
     padRange(plot.xAxis);
     padRange(plot.yAxis);
+    // Visible horizontal reference lines (thresholds, bounds) stay in view.
+    for (int i = 0; i < plot.itemCount(); ++i) {
+        const auto* line = qobject_cast<QCPItemStraightLine*>(plot.item(i));
+        if (line && line->visible() && line->point1->coords().y() == line->point2->coords().y())
+            includeInRange(*plot.yAxis, line->point1->coords().y());
+    }
+}
+
+QCPItemStraightLine* PlotStyle::addLine(QCustomPlot& plot, Qt::Orientation orientation,
+                                        const QPen& pen) {
+    auto* line = new QCPItemStraightLine(&plot);
+    line->setPen(pen);
+    line->setClipToAxisRect(true);
+    placeLine(*line, orientation, qQNaN());
+    return line;
+}
+
+void PlotStyle::placeLine(QCPItemStraightLine& line, Qt::Orientation orientation, double value) {
+    line.setVisible(std::isfinite(value));
+    if (!std::isfinite(value))
+        return;
+    if (orientation == Qt::Horizontal) {
+        line.point1->setCoords(0.0, value);
+        line.point2->setCoords(1.0, value);
+    } else {
+        line.point1->setCoords(value, 0.0);
+        line.point2->setCoords(value, 1.0);
+    }
+}
+
+void PlotStyle::includeInRange(QCPAxis& axis, double value) {
+    if (!std::isfinite(value))
+        return;
+    QCPRange r = axis.range();
+    if (value >= r.lower && value <= r.upper)
+        return;
+    const double lower = std::min(r.lower, value), upper = std::max(r.upper, value);
+    const double pad = 0.05 * (upper - lower);
+    axis.setRange(value < r.lower ? lower - pad : lower, value > r.upper ? upper + pad : upper);
 }
 
 } // namespace hsmu::gui

@@ -6,6 +6,8 @@
 #include <QPen>
 #include <QString>
 
+class QCPAxis;
+class QCPItemStraightLine;
 class QCustomPlot;
 
 namespace hsmu::gui {
@@ -18,8 +20,16 @@ public:
     static QPen seriesPen(int i);
     /// Set (or create) the title row above the axis rect.
     static void setTitle(QCustomPlot& plot, const QString& title);
-    /// rescaleAxes() with a 5 % margin on each side; a flat range gets a unit span.
+    /// rescaleAxes() with a 5 % margin on each side; a flat range gets a unit span; visible
+    /// horizontal lines of addLine() (thresholds, bounds) are kept inside the y range.
     static void rescaleWithMargin(QCustomPlot& plot);
+    /// A horizontal (value = y) or vertical (value = x) reference line in plot coordinates,
+    /// e.g. a threshold, a bound or a time cursor; hidden while value is not finite.
+    static QCPItemStraightLine* addLine(QCustomPlot& plot, Qt::Orientation orientation,
+                                        const QPen& pen);
+    static void placeLine(QCPItemStraightLine& line, Qt::Orientation orientation, double value);
+    /// Widen axis so that value (if finite) lies inside with a 5 % margin of the new span.
+    static void includeInRange(QCPAxis& axis, double value);
 };
 
 } // namespace hsmu::gui

@@ -55,11 +55,13 @@ private slots:
         QVERIFY2(window.loadConfiguration(QStringLiteral("paper-condition-3"), &error),
                  qPrintable(error));
         auto* hysteresis = window.findChild<HysteresisPlot*>();
-        auto* history = window.findChild<HistoryPlot*>();
+        auto* history = window.findChild<HistoryPlot*>(QStringLiteral("displacementPlot"));
         QVERIFY(hysteresis && history);
-        QCOMPARE(hysteresis->plottableCount(), 2); // specimen (measured) + numerical twin
+        // specimen (measured) + numerical twin + the auxiliary model of the UKF updating
+        QCOMPARE(hysteresis->plottableCount(), 3);
         QVERIFY(hysteresis->plottable(0)->name().contains(QStringLiteral("Element 1")));
         QVERIFY(hysteresis->plottable(1)->name().contains(QStringLiteral("Element 2")));
+        QVERIFY(hysteresis->plottable(2)->name().contains(QStringLiteral("auxiliary")));
         QCOMPARE(history->graphCount(), 2);
         QVERIFY(hysteresis->xAxis->label().contains(QStringLiteral("rad")));
         QVERIFY(hysteresis->yAxis->label().contains(QStringLiteral("kN m")));

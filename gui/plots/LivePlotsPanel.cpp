@@ -1,0 +1,306 @@
+#include "gui/plots/LivePlotsPanel.h"
+
+#include "core/config/TestFactory.h"
+#include "gui/plots/HistoryPlot.h"
+#include "gui/plots/HysteresisPlot.h"
+#include "gui/plots/ParameterPlot.h"
+#include "gui/plots/PlotExporter.h"
+#include "gui/plots/PlotStyle.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSplitter>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <exception>
+
+namespace hsmu::gui {
+
+namespace {
+
+constexpr int kParameterColumns = 4;
+constexpr int kSmallPlotWidth = 160;  // [px] minimum, so the panel fits a 1280 x 800 window
+constexpr int kSmallPlotHeight = 110; // [px]
+
+int specimenOf(const RunLayout& layout) {
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
+        if (layout.elements[i].experimental)
+            return int(i);
+    return -1;
+}
+
+template <typename Plot> Plot* makePlot(QWidget* parent, const char* name) {
+    auto* plot = new Plot(parent);
+    plot->setObjectName(QString::fromLatin1(name));
+    plot->setMinimumSize(kSmallPlotWidth, kSmallPlotHeight);
+    return plot;
+}
+
+} // namespace
+
+LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
+    auto* vertical = new QSplitter(Qt::Vertical, this);
+    auto* top = new QSplitter(Qt::Horizontal, vertical);
+    m_hysteresis = makePlot<HysteresisPlot>(top, "hysteresisPlot");
+    auto* histories = new QWidget(top);
+    auto* grid = new QGridLayout(histories);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->setSpacing(2);
+    m_force = makePlot<HistoryPlot>(histories, "forcePlot");
+    m_displacement = makePlot<HistoryPlot>(histories, "displacementPlot");
+    m_ground = makePlot<HistoryPlot>(histories, "groundMotionPlot");
+    m_tracking = makePlot<HistoryPlot>(histories, "trackingPlot");
+    grid->addWidget(m_force, 0, 0);
+    grid->addWidget(m_displacement, 0, 1);
+    grid->addWidget(m_ground, 1, 0);
+    grid->addWidget(m_tracking, 1, 1);
+    top->addWidget(m_hysteresis);
+    top->addWidget(histories);
+    top->setStretchFactor(0, 2);
+    top->setStretchFactor(1, 3);
+    top->setSizes({400, 600}); // proportions: the loop gets two fifths of the width
+
+    m_parameterArea = new QWidget(vertical);
+    m_parameterGrid = new QGridLayout(m_parameterArea);
+    m_parameterGrid->setContentsMargins(0, 0, 0, 0);
+    m_parameterGrid->setSpacing(2);
+    m_fitError = makePlot<HistoryPlot>(m_parameterArea, "fitErrorPlot");
+    m_parameterGrid->addWidget(m_fitError, 0, 0);
+    m_fitError->yAxis->ticker()->setTickCount(3);
+    vertical->addWidget(top);
+    vertical->addWidget(m_parameterArea);
+    vertical->setStretchFactor(0, 3);
+    vertical->setStretchFactor(1, 2);
+    vertical->setSizes({600, 400});
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(vertical);
+
+    for (QCustomPlot* p : std::initializer_list<QCustomPlot*>{m_hysteresis, m_force, m_displacement,
+                                                              m_ground, m_tracking, m_fitError})
+        enableExportMenu(p);
+    m_redrawTimer = new QTimer(this);
+    m_redrawTimer->setSingleShot(true);
+    connect(m_redrawTimer, &QTimer::timeout, this, &LivePlotsPanel::refreshNow);
+    configure(RunLayout{});
+}
+
+void LivePlotsPanel::configure(const RunLayout& layout, const PlotReferences& references) {
+    const std::vector<int> loop = HysteresisPlot::specimenWithTwins(layout);
+    m_hysteresis->showElements(layout, loop);
+    m_hysteresis->addAuxiliaryModel(layout);
+    m_force->showForces(layout, loop);
+    m_displacement->showDisplacements(layout);
+    m_ground->showGroundAcceleration();
+    m_fixedGroundMotion = false;
+    const int specimen = specimenOf(layout);
+    m_hasSpecimen = specimen >= 0;
+    if (m_hasSpecimen)
+        m_tracking->showTracking(layout, specimen);
+    m_tracking->setVisible(m_hasSpecimen);
+    m_hasUpdating = layout.updating.has_value();
+    m_fitError->showFitError(m_hasUpdating ? references.fitThreshold : qQNaN());
+    rebuildParameterPlots(layout, references);
+    m_parameterArea->setVisible(m_hasUpdating);
+    clearData();
+    refresh();
+}
+
+void LivePlotsPanel::configure(const RunLayout& layout, const TestConfig& cfg) {
+    configure(layout, PlotReferences::of(cfg));
+    try {
+        const GroundMotion g = buildGroundMotion(cfg.groundMotion, cfg.sourcePath);
+        QVector<double> t(qsizetype(g.acceleration.size())), a(t.size());
+        for (qsizetype i = 0; i < t.size(); ++i) {
+            t[i] = double(i) * g.dt;
+            a[i] = g.acceleration[std::size_t(i)];
+        }
+        if (cfg.analysis.duration > 0.0) { // the test stops there: show what it applies
+            qsizetype n = 0;
+            while (n < t.size() && t[n] <= cfg.analysis.duration + 1e-9)
+                ++n;
+            t.resize(n);
+            a.resize(n);
+        }
+        setGroundMotion(t, a);
+    } catch (const std::exception&) {
+        // The test's own loader reports the problem; the rows still carry the acceleration.
+    }
+}
+
+void LivePlotsPanel::setGroundMotion(const QVector<double>& time,
+                                     const QVector<double>& acceleration) {
+    m_ground->showGroundMotion(time, acceleration);
+    m_fixedGroundMotion = true;
+    m_ground->refresh();
+}
+
+void LivePlotsPanel::rebuildParameterPlots(const RunLayout& layout,
+                                           const PlotReferences& references) {
+    for (ParameterPlot* p : m_parameters)
+        delete p;
+    m_parameters.clear();
+    if (!layout.updating)
+        return;
+    const auto& names = layout.updating->parameters;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        auto* plot = makePlot<ParameterPlot>(m_parameterArea, "parameterPlot");
+        const QString name = QString::fromStdString(names[i]);
+        plot->setObjectName(QStringLiteral("parameterPlot_%1").arg(name));
+        plot->showParameter(name, int(i));
+        const auto b = references.bounds.find(names[i]);
+        if (b != references.bounds.end())
+            plot->setBounds(b->second.lower, b->second.upper);
+        plot->legend->setVisible(i == 0); // one legend explains the band for the row
+        const int cell = int(i) + 1;      // cell 0: the fit error
+        m_parameterGrid->addWidget(plot, cell / kParameterColumns, cell % kParameterColumns);
+        enableExportMenu(plot);
+        m_parameters.push_back(plot);
+    }
+}
+
+void LivePlotsPanel::appendRecords(const std::vector<StepRecord>& rows) {
+    if (rows.empty())
+        return;
+    m_hysteresis->appendRecords(rows);
+    m_force->appendRecords(rows);
+    m_displacement->appendRecords(rows);
+    if (!m_fixedGroundMotion)
+        m_ground->appendRecords(rows);
+    m_ground->setTimeCursor(rows.back().time);
+    if (m_hasSpecimen)
+        m_tracking->appendRecords(rows);
+    if (m_hasUpdating) {
+        m_fitError->appendRecords(rows);
+        for (ParameterPlot* p : m_parameters)
+            p->appendRecords(rows);
+    }
+    m_rows += qint64(rows.size());
+}
+
+void LivePlotsPanel::clearData() {
+    m_hysteresis->clearData();
+    m_force->clearData();
+    m_displacement->clearData();
+    if (!m_fixedGroundMotion)
+        m_ground->clearData();
+    m_ground->setTimeCursor(qQNaN());
+    m_tracking->clearData();
+    m_fitError->clearData();
+    for (ParameterPlot* p : m_parameters)
+        p->clearData();
+    m_rows = 0;
+}
+
+std::vector<QCustomPlot*> LivePlotsPanel::visiblePlots() const {
+    std::vector<QCustomPlot*> out;
+    for (const NamedPlot& p : plots())
+        out.push_back(p.plot);
+    out.insert(out.end(), m_parameters.begin(), m_parameters.end());
+    return out;
+}
+
+void LivePlotsPanel::refresh() {
+    if (m_redrawTimer->isActive())
+        return; // a redraw is already due: it will show these rows too
+    const qint64 wait =
+        m_sinceRedraw.isValid() ? m_intervalMs - m_sinceRedraw.elapsed() : qint64(0);
+    if (wait > 0)
+        m_redrawTimer->start(int(wait));
+    else
+        refreshNow();
+}
+
+void LivePlotsPanel::refreshNow() {
+    m_redrawTimer->stop();
+    QElapsedTimer cost;
+    cost.start();
+    for (QCustomPlot* p : visiblePlots()) {
+        PlotStyle::rescaleWithMargin(*p);
+        p->replot(QCustomPlot::rpRefreshHint); // draws into the plot's buffer now
+    }
+    const qint64 ms = cost.elapsed();
+    m_intervalMs = int(std::clamp<qint64>(kBudgetFactor * ms, kMinIntervalMs, kMaxIntervalMs));
+    m_sinceRedraw.start();
+    ++m_redraws;
+}
+
+std::vector<LivePlotsPanel::NamedPlot> LivePlotsPanel::plots() const {
+    std::vector<NamedPlot> out{{QStringLiteral("hysteresis"), m_hysteresis},
+                               {QStringLiteral("force"), m_force},
+                               {QStringLiteral("displacement"), m_displacement},
+                               {QStringLiteral("ground_motion"), m_ground}};
+    if (m_hasSpecimen)
+        out.push_back({QStringLiteral("tracking"), m_tracking});
+    if (m_hasUpdating)
+        out.push_back({QStringLiteral("fit_error"), m_fitError});
+    return out;
+}
+
+QStringList LivePlotsPanel::exportAll(const QString& dir, const QString& suffix,
+                                      QStringList* errors) {
+    QStringList written;
+    auto save = [&](QCustomPlot& plot, const QString& base) {
+        const QString path = QDir(dir).filePath(base + QLatin1Char('.') + suffix);
+        QString why;
+        if (PlotExporter::saveAs(plot, path, PlotExporter::kWidth, PlotExporter::kHeight, &why))
+            written << path;
+        else if (errors)
+            *errors << why;
+    };
+    for (const NamedPlot& p : plots())
+        save(*p.plot, p.fileBase);
+    for (ParameterPlot* p : m_parameters)
+        save(*p, QStringLiteral("parameter_%1").arg(PlotExporter::fileSafe(p->yAxis->label())));
+    return written;
+}
+
+void LivePlotsPanel::enableExportMenu(QCustomPlot* plot) {
+    plot->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(plot, &QWidget::customContextMenuRequested, this,
+            [this, plot](const QPoint& pos) { showContextMenu(plot, pos); });
+}
+
+void LivePlotsPanel::showContextMenu(QCustomPlot* plot, const QPoint& pos) {
+    QMenu menu(this);
+    const QString png = tr("PNG image (*.png)"), svg = tr("SVG drawing (*.svg)"),
+                  pdf = tr("PDF document (*.pdf)");
+    QAction* one = menu.addAction(tr("Export this plot..."));
+    QAction* all = menu.addAction(tr("Export all plots..."));
+    QAction* chosen = menu.exec(plot->mapToGlobal(pos));
+    if (chosen == one) {
+        QString filter = png;
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export plot"), QString(),
+            QStringList{png, svg, pdf}.join(QStringLiteral(";;")), &filter);
+        if (path.isEmpty())
+            return;
+        QString file = path;
+        if (QFileInfo(file).suffix().isEmpty())
+            file += filter == svg
+                        ? QStringLiteral(".svg")
+                        : (filter == pdf ? QStringLiteral(".pdf") : QStringLiteral(".png"));
+        QString why;
+        if (!PlotExporter::saveAs(*plot, file, plot->width(), plot->height(), &why))
+            QMessageBox::warning(this, tr("Export failed"), why);
+    } else if (chosen == all) {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Export all plots to"));
+        if (dir.isEmpty())
+            return;
+        QStringList errors;
+        for (const QString& suffix :
+             {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("pdf")})
+            exportAll(dir, suffix, &errors);
+        if (!errors.isEmpty())
+            QMessageBox::warning(this, tr("Export failed"), errors.join(QLatin1Char('\n')));
+    }
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,125 @@
+#pragma once
+// LivePlotsPanel: every plot of a running (or replayed) test in one widget, for the main
+// window's centre and the replay window:
+//   hysteresis     the specimen's measured loop, the auxiliary model and each numerical twin
+//                  (HysteresisPlot::specimenWithTwins) overlaid
+//   force          force / moment history of the specimen and its twins
+//   displacement   every DOF's displacement history [m]
+//   ground motion  the ground acceleration [m/s^2] with a time cursor at the latest row
+//   tracking       the specimen's commanded vs measured deformation
+//   fit error      the inspector's normalized RMS error with its threshold line (updating)
+//   parameters     one small ParameterPlot per identified parameter: estimate, ± 2 sigma
+//                  band, identification bounds (updating)
+// Feeding (the PlotJuggler way): appendRecords() only appends; refresh() asks for one redraw
+// of every plot. The owner calls refresh() once per coalesced batch (~30 Hz), never per step.
+// Redraws are also budgeted: after a redraw that took c ms, the next one waits at least
+// max(kMinIntervalMs, kBudgetFactor x c) (pending requests coalesce into one), so drawing
+// never takes more than ~1/kBudgetFactor of the GUI thread however many points the plots
+// hold, and the test worker keeps its step rate (docs/benchmarks.md, "Step rate").
+// Each plot has a context menu to export it as PNG, SVG or PDF (PlotExporter).
+// Thread rules: GUI thread only.
+
+#include "core/output/RunLayout.h"
+#include "core/test/StepRecord.h"
+#include "gui/plots/PlotReferences.h"
+
+#include <QElapsedTimer>
+#include <QStringList>
+#include <QVector>
+#include <QWidget>
+
+#include <vector>
+
+class QCustomPlot;
+class QGridLayout;
+class QTimer;
+
+namespace hsmu {
+struct TestConfig;
+}
+
+namespace hsmu::gui {
+
+class HistoryPlot;
+class HysteresisPlot;
+class ParameterPlot;
+
+class LivePlotsPanel : public QWidget {
+    Q_OBJECT
+public:
+    /// A plot and the base of its export file name (e.g. "hysteresis").
+    struct NamedPlot {
+        QString fileBase;
+        QCustomPlot* plot = nullptr;
+    };
+
+    static constexpr int kMinIntervalMs = 33; ///< ~30 Hz at most
+    static constexpr int kMaxIntervalMs = 1000;
+    static constexpr int kBudgetFactor = 20;
+
+    explicit LivePlotsPanel(QWidget* parent = nullptr);
+
+    /// Set up every plot for a run of this layout (clears the data).
+    void configure(const RunLayout& layout, const PlotReferences& references = {});
+    /// configure() for a loaded test: its layout, PlotReferences::of(cfg) and the whole
+    /// ground-motion record of cfg (scaled; falls back to the rows' ground acceleration if
+    /// the record cannot be read).
+    void configure(const RunLayout& layout, const TestConfig& cfg);
+    /// Show this whole ground-motion record (time [s], acceleration [m/s^2]) instead of the
+    /// rows' ground acceleration; the time cursor marks the latest row.
+    void setGroundMotion(const QVector<double>& time, const QVector<double>& acceleration);
+
+    /// Append rows (oldest first) to every plot; no replot.
+    void appendRecords(const std::vector<StepRecord>& rows);
+    /// Remove every point (the configuration stays).
+    void clearData();
+    /// Ask for a redraw: now if the budget allows, else once when it does.
+    void refresh();
+    /// Rescale and redraw each plot now (before a grab or an export).
+    void refreshNow();
+    /// Redraws done since construction, and the wait the budget imposes now [ms].
+    int redraws() const { return m_redraws; }
+    int redrawIntervalMs() const { return m_intervalMs; }
+
+    /// The plots that exist for this layout, in display order; parameter plots separately.
+    std::vector<NamedPlot> plots() const;
+    const std::vector<ParameterPlot*>& parameterPlots() const { return m_parameters; }
+    HysteresisPlot& hysteresis() const { return *m_hysteresis; }
+    HistoryPlot& forceHistory() const { return *m_force; }
+    HistoryPlot& displacementHistory() const { return *m_displacement; }
+    HistoryPlot& groundMotion() const { return *m_ground; }
+    HistoryPlot& tracking() const { return *m_tracking; }
+    HistoryPlot& fitError() const { return *m_fitError; }
+    /// Rows appended since configure() / clearData().
+    qint64 rowsShown() const { return m_rows; }
+
+    /// Write every plot into dir as fileBase.suffix (suffix: png, svg or pdf; the parameter
+    /// plots as parameter_<name>.suffix). Returns the files written; failures in *errors.
+    QStringList exportAll(const QString& dir, const QString& suffix, QStringList* errors = nullptr);
+
+private:
+    void showContextMenu(QCustomPlot* plot, const QPoint& pos);
+    void enableExportMenu(QCustomPlot* plot);
+    void rebuildParameterPlots(const RunLayout& layout, const PlotReferences& references);
+    std::vector<QCustomPlot*> visiblePlots() const;
+
+    HysteresisPlot* m_hysteresis = nullptr;
+    HistoryPlot* m_force = nullptr;
+    HistoryPlot* m_displacement = nullptr;
+    HistoryPlot* m_ground = nullptr;
+    HistoryPlot* m_tracking = nullptr;
+    HistoryPlot* m_fitError = nullptr;
+    QWidget* m_parameterArea = nullptr;
+    QGridLayout* m_parameterGrid = nullptr;
+    std::vector<ParameterPlot*> m_parameters;
+    bool m_fixedGroundMotion = false;
+    bool m_hasSpecimen = false;
+    bool m_hasUpdating = false;
+    qint64 m_rows = 0;
+    QTimer* m_redrawTimer = nullptr; ///< single shot: a redraw the budget postponed
+    QElapsedTimer m_sinceRedraw;
+    int m_intervalMs = kMinIntervalMs;
+    int m_redraws = 0;
+};
+
+} // namespace hsmu::gui

@@ -1,0 +1,218 @@
+// ReplayWindow on a record written by a real run (RecordWriter): playing reaches the last
+// step and the plotted data equal the record's datasets; scrubbing back and forth shows
+// exactly the chosen rows; RecordPlayback paces rows by speed x wall time; bad files are
+// refused with the reader's message, in the window API and by `hsmu replay` (real binary).
+
+#include "RecordedRun.h"
+
+#include "core/record/RecordReader.h"
+#include "gui/plots/HistoryPlot.h"
+#include "gui/plots/HysteresisPlot.h"
+#include "gui/plots/LivePlotsPanel.h"
+#include "gui/plots/ParameterPlot.h"
+#include "gui/replay/RecordPlayback.h"
+#include "gui/replay/ReplayWindow.h"
+
+#include <QFile>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <memory>
+
+using namespace hsmu;
+using namespace hsmu::gui;
+
+namespace {
+
+constexpr double kDuration = 2.0; // [s] of paper-condition-3, dt 0.01 s: 201 rows
+
+QVector<double> keys(const QCPGraph& g) {
+    QVector<double> out;
+    for (auto it = g.data()->constBegin(); it != g.data()->constEnd(); ++it)
+        out << it->key;
+    return out;
+}
+
+} // namespace
+
+class TestReplayWindow : public QObject {
+    Q_OBJECT
+private:
+    QTemporaryDir m_dir;
+    QString m_record;
+    recordedrun::Run m_run;
+
+private slots:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        m_record = m_dir.filePath(QStringLiteral("record.h5"));
+        m_run = recordedrun::run(QStringLiteral("paper-condition-3"), kDuration, m_record);
+        QCOMPARE(int(m_run.records.size()), 201);
+    }
+
+    void playReachesTheLastStepWithTheRecordsData() {
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(m_record, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        const RecordReader reader(m_record.toStdString());
+        const RecordData& d = reader.data();
+        QCOMPARE(w->rowCount(), d.rows());
+        QCOMPARE(w->rowsShown(), 1); // the initial state
+        w->show();
+        QSignalSpy finished(w.get(), &ReplayWindow::finished);
+        w->setSpeed(50.0); // 2 s of test in ~40 ms of wall time
+        w->play();
+        QVERIFY(w->isPlaying());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 20000);
+        QVERIFY(!w->isPlaying());
+        QCOMPARE(w->rowsShown(), d.rows());
+        QCOMPARE(w->playback().step(), d.steps.back());
+        QCOMPARE(d.steps.back(), 200);
+
+        // The plotted data are the datasets, row for row.
+        const LivePlotsPanel& panel = w->panel();
+        const int n = d.rows();
+        const int specimen = 0; // Element 1, the specimen of paper-condition-3
+        QVERIFY(d.layout.elements[specimen].experimental);
+        auto loop = qobject_cast<QCPCurve*>(panel.hysteresis().plottable(0))->data();
+        QCOMPARE(loop->size(), n);
+        for (int i = 0; i < n; ++i) {
+            QCOMPARE(loop->at(i)->key, d.deformation(i, specimen));
+            QCOMPARE(loop->at(i)->value, d.force(i, specimen));
+        }
+        for (int j = 0; j < int(d.u.cols()); ++j) {
+            const QCPGraph& g = *panel.displacementHistory().graph(j);
+            QCOMPARE(g.dataCount(), n);
+            for (int i = 0; i < n; ++i) {
+                QCOMPARE(g.data()->at(i)->key, d.time(i));
+                QCOMPARE(g.data()->at(i)->value, d.u(i, j));
+            }
+        }
+        for (int p = 0; p < int(d.parameters.cols()); ++p) {
+            const ParameterPlot& plot = *panel.parameterPlots()[std::size_t(p)];
+            QCOMPARE(plot.estimateGraph()->dataCount(), n);
+            for (int i = 0; i < n; ++i) {
+                QCOMPARE(plot.estimateGraph()->data()->at(i)->value, d.parameters(i, p));
+                QCOMPARE(plot.upperBandGraph()->data()->at(i)->value,
+                         d.parameters(i, p) + 2.0 * d.stddev(i, p));
+            }
+        }
+        const QCPGraph& fit = *panel.fitError().graph(0);
+        for (int i = 0; i < n; ++i)
+            QCOMPARE(fit.data()->at(i)->value, d.fitError(i));
+        // The whole ground motion from the record, the cursor at the last step's time.
+        const QCPGraph& ground = *panel.groundMotion().graph(0);
+        QCOMPARE(ground.dataCount(), n);
+        for (int i = 0; i < n; ++i)
+            QCOMPARE(ground.data()->at(i)->value, d.groundAcceleration(i));
+        QCOMPARE(panel.groundMotion().timeCursor(), d.time(n - 1));
+        // And the record equals the live run's rows (what the console showed).
+        QCOMPARE(d.force(n - 1, specimen), m_run.records.back().elements[specimen].force);
+    }
+
+    void scrubShowsExactlyTheChosenRows() {
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(m_record, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        const int n = w->rowCount();
+        QSignalSpy moved(w.get(), &ReplayWindow::positionChanged);
+        w->seek(n); // forward to the end
+        QCOMPARE(w->rowsShown(), n);
+        QCOMPARE(w->panel().displacementHistory().graph(0)->dataCount(), n);
+        w->seek(57); // back: the plots are refilled with rows 0 .. 56
+        QCOMPARE(w->rowsShown(), 57);
+        const QCPGraph& g = *w->panel().displacementHistory().graph(0);
+        QCOMPARE(g.dataCount(), 57);
+        QCOMPARE(keys(g).front(), 0.0);
+        QCOMPARE(g.data()->at(56)->value, m_run.records[56].u(0));
+        QCOMPARE(w->playback().step(), 56);
+        QCOMPARE(w->panel().groundMotion().timeCursor(), m_run.records[56].time);
+        w->seek(n + 100); // clamped
+        QCOMPARE(w->rowsShown(), n);
+        QCOMPARE(moved.count(), 3);
+        QCOMPARE(moved.last().at(0).toInt(), n);
+    }
+
+    void playbackPacesRowsBySpeed() {
+        auto data = std::make_shared<const RecordData>(RecordReader(m_record.toStdString()).data());
+        RecordPlayback pb(data);
+        pb.setSpeed(2.0);
+        // 0.25 s of wall time at 2x: test time 0 .. 0.5 s, i.e. rows t = 0, 0.01, ..., 0.50.
+        std::vector<StepRecord> rows = pb.advance(0.25);
+        QCOMPARE(int(rows.size()), 51);
+        QCOMPARE(rows.back().step, 50);
+        rows = pb.advance(0.1); // 0.2 s more: t = 0.51 .. 0.70
+        QCOMPARE(int(rows.size()), 20);
+        QCOMPARE(rows.front().step, 51);
+        pb.setSpeed(-1.0); // refused: the speed stays 2
+        QCOMPARE(pb.speed(), 2.0);
+        rows = pb.advance(100.0);
+        QCOMPARE(rows.back().step, 200);
+        QVERIFY(pb.atEnd());
+        QVERIFY(pb.advance(1.0).empty());
+    }
+
+    void badFilesAreRefusedWithAReason() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString text = dir.filePath(QStringLiteral("notes.h5"));
+        QFile t(text);
+        QVERIFY(t.open(QIODevice::WriteOnly));
+        t.write("time,force\n0,1\n");
+        t.close();
+        const QString truncated = dir.filePath(QStringLiteral("truncated.h5"));
+        QFile whole(m_record);
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        const QByteArray bytes = whole.readAll();
+        QFile cut(truncated);
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(bytes.left(bytes.size() / 3));
+        cut.close();
+        const QString missing = dir.filePath(QStringLiteral("missing.h5"));
+
+        for (const QString& path : {missing, text, truncated}) {
+            QString error;
+            std::unique_ptr<ReplayWindow> w(ReplayWindow::open(path, nullptr, &error));
+            QVERIFY2(!w, qPrintable(path));
+            QVERIFY2(error.startsWith(path), qPrintable(error));
+        }
+        QString error;
+        ReplayWindow::open(text, nullptr, &error);
+        QVERIFY2(error.contains(QStringLiteral("not an HSMU record")), qPrintable(error));
+
+        // The command: exit code 1 and the reason on stderr, no window left open.
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(HSMU_EXE), {QStringLiteral("replay"), truncated});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 1);
+        const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+        QVERIFY2(err.contains(QStringLiteral("hsmu replay: ")) && err.contains(truncated),
+                 qPrintable(err));
+    }
+
+    void commandScreenshotOfARecord() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString png = dir.filePath(QStringLiteral("replay.png"));
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(HSMU_EXE),
+                {QStringLiteral("replay"), m_record, QStringLiteral("--play"),
+                 QStringLiteral("--speed"), QStringLiteral("50"), QStringLiteral("--screenshot"),
+                 png, QStringLiteral("--screenshot-after"), QStringLiteral("1")});
+        QVERIFY(p.waitForFinished(60000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        const QImage image(png);
+        QVERIFY2(!image.isNull() && image.width() >= 640 && image.height() >= 400, qPrintable(png));
+    }
+};
+
+QTEST_MAIN(TestReplayWindow)
+#include "TestReplayWindow.moc"
