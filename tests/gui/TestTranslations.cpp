@@ -1,0 +1,184 @@
+// The translation catalogues are complete and current: lupdate run over today's gui/ sources
+// into a copy of each catalogue leaves no unfinished, vanished or empty entry, every
+// placeholder (%1, %2, ...) of a source string survives in its translation, and the compiled
+// catalogue embedded in the program answers with the catalogue's text.
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTranslator>
+#include <QXmlStreamReader>
+
+#include "gui/app/MainWindow.h"
+
+namespace {
+
+struct Message {
+    QString context;
+    QString source;
+    QStringList translations; ///< one per numerus form, or one
+    QString type;             ///< "", "unfinished", "vanished", "obsolete"
+};
+
+/// Reads the body of a <translation> element: its text, or its <numerusform> children.
+void readTranslation(QXmlStreamReader& xml, Message& message) {
+    QString text;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (xml.isCharacters())
+            text += xml.text();
+        else if (xml.isStartElement() && xml.name() == QLatin1String("numerusform"))
+            message.translations << xml.readElementText();
+        else if (xml.isEndElement() && xml.name() == QLatin1String("translation"))
+            break;
+    }
+    if (message.translations.isEmpty())
+        message.translations << text;
+}
+
+QList<Message> readCatalogue(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    QList<Message> messages;
+    QXmlStreamReader xml(&file);
+    QString context;
+    Message current;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (!xml.isStartElement())
+            continue;
+        const auto name = xml.name();
+        if (name == QLatin1String("name"))
+            context = xml.readElementText();
+        else if (name == QLatin1String("message"))
+            current = Message{context, {}, {}, {}};
+        else if (name == QLatin1String("source"))
+            current.source = xml.readElementText();
+        else if (name == QLatin1String("translation")) {
+            current.type = xml.attributes().value(QLatin1String("type")).toString();
+            readTranslation(xml, current);
+            messages << current;
+        }
+    }
+    return messages;
+}
+
+QSet<QString> placeholders(const QString& text) {
+    static const QRegularExpression re(QStringLiteral("%L?\\d+|%n"));
+    QSet<QString> found;
+    for (auto it = re.globalMatch(text); it.hasNext();)
+        found.insert(it.next().captured().remove(QLatin1Char('L')));
+    return found;
+}
+
+QStringList catalogues() {
+    const QDir dir(QStringLiteral(HSMU_SOURCE_DIR "/translations"));
+    QStringList paths;
+    for (const QString& name : dir.entryList({QStringLiteral("hsmu_*.ts")}, QDir::Files))
+        paths << dir.filePath(name);
+    return paths;
+}
+
+} // namespace
+
+class TestTranslations : public QObject {
+    Q_OBJECT
+private slots:
+    void atLeastTwoTranslationsBesideEnglish() {
+        const QStringList paths = catalogues();
+        QVERIFY2(paths.size() >= 3, qPrintable(paths.join(QLatin1Char(' '))));
+        QVERIFY(paths.contains(QStringLiteral(HSMU_SOURCE_DIR "/translations/hsmu_en.ts")));
+    }
+
+    void cataloguesAreCompleteForTodaysSources_data() {
+        QTest::addColumn<QString>("path");
+        for (const QString& path : catalogues())
+            QTest::newRow(qPrintable(QFileInfo(path).fileName())) << path;
+    }
+    void cataloguesAreCompleteForTodaysSources() {
+        QFETCH(QString, path);
+        QTemporaryDir tmp;
+        QVERIFY(tmp.isValid());
+        const QString copy = tmp.filePath(QFileInfo(path).fileName());
+        QVERIFY(QFile::copy(path, copy));
+        QFile::setPermissions(copy, QFile::ReadOwner | QFile::WriteOwner);
+        QProcess lupdate;
+        lupdate.start(QStringLiteral(HSMU_LUPDATE),
+                      {QStringLiteral("-silent"), QStringLiteral("-no-obsolete"),
+                       QStringLiteral("-locations"), QStringLiteral("none"),
+                       QStringLiteral("-I"), QStringLiteral(HSMU_SOURCE_DIR),
+                       QStringLiteral(HSMU_SOURCE_DIR "/gui"), QStringLiteral("-ts"), copy});
+        QVERIFY(lupdate.waitForFinished(120000));
+        QCOMPARE(lupdate.exitCode(), 0);
+
+        const QList<Message> messages = readCatalogue(copy);
+        QVERIFY2(messages.size() > 100, qPrintable(QString::number(messages.size())));
+        QStringList problems;
+        for (const Message& m : messages) {
+            const QString where = m.context + QStringLiteral(": \"") + m.source.left(60) +
+                                  QLatin1Char('"');
+            if (!m.type.isEmpty()) {
+                problems << m.type + QStringLiteral(" ") + where;
+                continue;
+            }
+            for (const QString& t : m.translations) {
+                if (t.trimmed().isEmpty())
+                    problems << QStringLiteral("empty ") + where;
+                else if (placeholders(t) != placeholders(m.source))
+                    problems << QStringLiteral("placeholders differ ") + where;
+            }
+        }
+        QVERIFY2(problems.isEmpty(),
+                 qPrintable(QString::number(problems.size()) + QStringLiteral(" problem(s):\n") +
+                            problems.mid(0, 20).join(QLatin1Char('\n'))));
+    }
+
+    void embeddedCatalogueAnswersWithItsText_data() { cataloguesAreCompleteForTodaysSources_data(); }
+    void embeddedCatalogueAnswersWithItsText() {
+        QFETCH(QString, path);
+        const QString base = QFileInfo(path).completeBaseName();
+        QTranslator translator;
+        QVERIFY2(translator.load(base, QStringLiteral(":/i18n")), qPrintable(base));
+        int checked = 0;
+        for (const Message& m : readCatalogue(path)) {
+            if (m.translations.size() != 1 || m.translations.front().isEmpty())
+                continue;
+            QCOMPARE(translator.translate(m.context.toUtf8().constData(),
+                                          m.source.toUtf8().constData()),
+                     m.translations.front());
+            ++checked;
+        }
+        QVERIFY(checked > 100);
+    }
+
+    // tr() in a QObject looks up the class's full name (hsmu::gui::MainWindow): lupdate must
+    // have filed the window's strings under that context, or no translation ever shows.
+    void windowStringsAreFiledUnderTheRuntimeContext_data() {
+        cataloguesAreCompleteForTodaysSources_data();
+    }
+    void windowStringsAreFiledUnderTheRuntimeContext() {
+        QFETCH(QString, path);
+        const QString context =
+            QString::fromLatin1(hsmu::gui::MainWindow::staticMetaObject.className());
+        QTranslator translator;
+        QVERIFY(translator.load(QFileInfo(path).completeBaseName(), QStringLiteral(":/i18n")));
+        QVERIFY(QCoreApplication::installTranslator(&translator));
+        int found = 0;
+        for (const Message& m : readCatalogue(path)) {
+            if (m.context != context || m.translations.size() != 1)
+                continue;
+            QCOMPARE(hsmu::gui::MainWindow::tr(m.source.toUtf8().constData()),
+                     m.translations.front());
+            ++found;
+        }
+        QCoreApplication::removeTranslator(&translator);
+        QVERIFY2(found > 0, qPrintable(context));
+    }
+};
+
+QTEST_MAIN(TestTranslations)
+#include "TestTranslations.moc"

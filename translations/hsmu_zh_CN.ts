@@ -1,0 +1,776 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>CompareCommand</name>
+    <message>
+        <source>Run the paper&apos;s comparison protocol (reference, initial, updated).</source>
+        <translation>运行论文中的对比方案（参考、初始、更新后）。</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>子命令。</translation>
+    </message>
+    <message>
+        <source>Configuration file or preset name.</source>
+        <translation>配置文件或预设名称。</translation>
+    </message>
+    <message>
+        <source>Output directory.</source>
+        <translation>输出目录。</translation>
+    </message>
+    <message>
+        <source>Write PNG plots.</source>
+        <translation>输出 PNG 图表。</translation>
+    </message>
+    <message>
+        <source>Compared numerical element (default: the first updating target).</source>
+        <translation>用于对比的数值单元（默认：第一个更新目标）。</translation>
+    </message>
+    <message>
+        <source>Compared DOF (default: the element&apos;s DOF).</source>
+        <translation>用于对比的自由度（默认：该单元的自由度）。</translation>
+    </message>
+    <message>
+        <source>expected exactly one CONFIG (a file or a preset name)</source>
+        <translation>应恰好给出一个 CONFIG（文件或预设名称）</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>缺少 --out DIR</translation>
+    </message>
+    <message>
+        <source>%1 run %2/3: %3 %  (%4 s)</source>
+        <translation>%1 试验 %2/3：%3 %  (%4 s)</translation>
+    </message>
+    <message>
+        <source>%1: the configuration has no online model updating (an enabled &quot;updating&quot; section); compare needs one to run the updated test</source>
+        <translation>%1：该配置未启用在线模型更新（需要启用的 &quot;updating&quot; 部分）；compare 需要它来运行更新后的试验</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output directory</source>
+        <translation>%1：无法创建输出目录</translation>
+    </message>
+    <message>
+        <source>hsmu compare: three runs (reference, initial, updated) of %1</source>
+        <translation>hsmu compare：%1 的三次试验（参考、初始、更新后）</translation>
+    </message>
+    <message>
+        <source>%1: %2 steps, %3</source>
+        <translation>%1：%2 步，%3</translation>
+    </message>
+    <message>
+        <source>hsmu compare: the %1 run stopped at step %2 (state %3)%4</source>
+        <translation>hsmu compare：%1 试验在第 %2 步停止（状态 %3）%4</translation>
+    </message>
+    <message>
+        <source>%1: the plot could not be written</source>
+        <translation>%1：无法写出图表</translation>
+    </message>
+    <message>
+        <source>  outputs: %1</source>
+        <translation>  输出：%1</translation>
+    </message>
+</context>
+<context>
+    <name>ComparisonPlotExporter</name>
+    <message>
+        <source>reference</source>
+        <translation>参考</translation>
+    </message>
+    <message>
+        <source>initial (not updated)</source>
+        <translation>初始（未更新）</translation>
+    </message>
+    <message>
+        <source>updated</source>
+        <translation>更新后</translation>
+    </message>
+    <message>
+        <source>Hysteresis of %1: reference, initial and updated</source>
+        <translation>%1 的滞回曲线：参考、初始与更新后</translation>
+    </message>
+    <message>
+        <source>Moment history of %1</source>
+        <translation>%1 的弯矩时程</translation>
+    </message>
+    <message>
+        <source>Force history of %1</source>
+        <translation>%1 的力时程</translation>
+    </message>
+    <message>
+        <source>Moment [%1]</source>
+        <translation>弯矩 [%1]</translation>
+    </message>
+    <message>
+        <source>Force [%1]</source>
+        <translation>力 [%1]</translation>
+    </message>
+    <message>
+        <source>Displacement of %1</source>
+        <translation>%1 的位移</translation>
+    </message>
+    <message>
+        <source>Displacement [m]</source>
+        <translation>位移 [m]</translation>
+    </message>
+</context>
+<context>
+    <name>ComparisonTable</name>
+    <message>
+        <source>Comparison against the reference run: %1 force [%2], %3 displacement [m]</source>
+        <translation>与参考试验的对比：%1 的力 [%2]，%3 的位移 [m]</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>试验</translation>
+    </message>
+    <message>
+        <source>force NRMSE</source>
+        <translation>力 NRMSE</translation>
+    </message>
+    <message>
+        <source>force peak error [%1]</source>
+        <translation>力峰值误差 [%1]</translation>
+    </message>
+    <message>
+        <source>displ. NRMSE</source>
+        <translation>位移 NRMSE</translation>
+    </message>
+    <message>
+        <source>displ. peak error [m]</source>
+        <translation>位移峰值误差 [m]</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>步数</translation>
+    </message>
+    <message>
+        <source>initial</source>
+        <translation>初始</translation>
+    </message>
+    <message>
+        <source>updated</source>
+        <translation>更新后</translation>
+    </message>
+    <message>
+        <source>  initial / updated NRMSE: force %1x, displacement %2x</source>
+        <translation>  NRMSE 初始 / 更新后之比：力 %1x，位移 %2x</translation>
+    </message>
+    <message>
+        <source>Final parameters of the updated run (%1 updates applied):</source>
+        <translation>更新后试验的最终参数（已应用 %1 次更新）：</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>std</source>
+        <translation>标准差</translation>
+    </message>
+    <message>
+        <source>true</source>
+        <translation>真值</translation>
+    </message>
+</context>
+<context>
+    <name>ConsoleCommand</name>
+    <message>
+        <source>HSMU Console: hybrid simulation with online model updating.
+Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --law ... (see hsmu run --help, hsmu compare --help, docs/cli.md).</source>
+        <translation>HSMU Console：带在线模型更新的混合试验。
+子命令：run CONFIG --out DIR ...，compare CONFIG --out DIR ...，material --law ...（参见 hsmu run --help、hsmu compare --help、docs/cli.md）。</translation>
+    </message>
+    <message>
+        <source>Load a preset or configuration and start it.</source>
+        <translation>加载预设或配置并启动试验。</translation>
+    </message>
+    <message>
+        <source>Ground-motion record file.</source>
+        <translation>地震动记录文件。</translation>
+    </message>
+    <message>
+        <source>Test time per wall time (0: as fast as possible).</source>
+        <translation>试验时间与实际时间之比（0：尽可能快）。</translation>
+    </message>
+    <message>
+        <source>Grab the window into this PNG file, then quit.</source>
+        <translation>将窗口截图保存到此 PNG 文件，然后退出。</translation>
+    </message>
+    <message>
+        <source>Seconds before the screenshot (default 4).</source>
+        <translation>截图前等待的秒数（默认 4）。</translation>
+    </message>
+    <message>
+        <source>unknown subcommand &apos;%1&apos; (expected run, compare or material)</source>
+        <translation>未知子命令“%1”（应为 run、compare 或 material）</translation>
+    </message>
+    <message>
+        <source>--screenshot-after: expected a number of seconds</source>
+        <translation>--screenshot-after：应为秒数</translation>
+    </message>
+    <message>
+        <source>--speed: expected a number</source>
+        <translation>--speed：应为数值</translation>
+    </message>
+</context>
+<context>
+    <name>MaterialCommand</name>
+    <message>
+        <source>Drive one hysteresis law with a deformation history.</source>
+        <translation>用变形历程驱动一个滞回模型。</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>子命令。</translation>
+    </message>
+    <message>
+        <source>Law: %1.</source>
+        <translation>滞回模型：%1。</translation>
+    </message>
+    <message>
+        <source>A law parameter (repeatable).</source>
+        <translation>滞回模型参数（可重复指定）。</translation>
+    </message>
+    <message>
+        <source>Deformation history (CSV or text).</source>
+        <translation>变形历程（CSV 或文本）。</translation>
+    </message>
+    <message>
+        <source>Output CSV (default: stdout).</source>
+        <translation>输出 CSV（默认：stdout）。</translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation>意外的参数“%1”</translation>
+    </message>
+    <message>
+        <source>missing --law (one of %1)</source>
+        <translation>缺少 --law（可选：%1）</translation>
+    </message>
+    <message>
+        <source>missing --history FILE</source>
+        <translation>缺少 --history FILE</translation>
+    </message>
+    <message>
+        <source>--param &apos;%1&apos;: expected NAME=VALUE with a finite number</source>
+        <translation>--param “%1”：应为 NAME=VALUE 形式，且 VALUE 为有限数值</translation>
+    </message>
+</context>
+<context>
+    <name>OverrideOptions</name>
+    <message>
+        <source>Ground-motion record file.</source>
+        <translation>地震动记录文件。</translation>
+    </message>
+    <message>
+        <source>Ground-motion scale factor.</source>
+        <translation>地震动缩放系数。</translation>
+    </message>
+    <message>
+        <source>Integration step [s].</source>
+        <translation>积分步长 [s]。</translation>
+    </message>
+    <message>
+        <source>Test duration [s].</source>
+        <translation>试验时长 [s]。</translation>
+    </message>
+    <message>
+        <source>--%1: expected a %2 number, found &apos;%3&apos;</source>
+        <translation>--%1：应为%2数值，实际为“%3”</translation>
+    </message>
+    <message>
+        <source>positive</source>
+        <translation>正</translation>
+    </message>
+</context>
+<context>
+    <name>RunCommand</name>
+    <message>
+        <source>%1 %  t = %2 s  %3 steps/s</source>
+        <translation>%1 %  t = %2 s  %3 步/s</translation>
+    </message>
+    <message>
+        <source>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting (attempt %4 of %5)</source>
+        <translation>hsmu run：t = %1 s（第 %2 步）时链路故障：%3；正在重新连接（第 %4 次，共 %5 次）</translation>
+    </message>
+    <message>
+        <source>hsmu run: --approval ignored: the configuration has no updating</source>
+        <translation>hsmu run：已忽略 --approval：该配置未启用模型更新</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output directory</source>
+        <translation>%1：无法创建输出目录</translation>
+    </message>
+    <message>
+        <source>hsmu run: connecting to %1</source>
+        <translation>hsmu run：正在连接 %1</translation>
+    </message>
+    <message>
+        <source>the test cannot start: %1</source>
+        <translation>试验无法启动：%1</translation>
+    </message>
+    <message>
+        <source>hsmu run: test held at t = %1 s (step %2): %3</source>
+        <translation>hsmu run：试验在 t = %1 s（第 %2 步）时保持：%3</translation>
+    </message>
+    <message>
+        <source>hsmu run: the test stopped unexpectedly (state %1)</source>
+        <translation>hsmu run：试验意外停止（状态 %1）</translation>
+    </message>
+    <message>
+        <source>%1: the record could not be written: %2</source>
+        <translation>%1：无法写出记录：%2</translation>
+    </message>
+    <message>
+        <source>%1: write failed</source>
+        <translation>%1：写入失败</translation>
+    </message>
+    <message>
+        <source>%1: the plot could not be written</source>
+        <translation>%1：无法写出图表</translation>
+    </message>
+</context>
+<context>
+    <name>RunOptions</name>
+    <message>
+        <source>Run a hybrid test headless.</source>
+        <translation>以无界面方式运行混合试验。</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>子命令。</translation>
+    </message>
+    <message>
+        <source>Configuration file or preset name.</source>
+        <translation>配置文件或预设名称。</translation>
+    </message>
+    <message>
+        <source>Output directory.</source>
+        <translation>输出目录。</translation>
+    </message>
+    <message>
+        <source>Run an explicit scheme past its stability limit.</source>
+        <translation>允许显式积分格式超出其稳定极限运行。</translation>
+    </message>
+    <message>
+        <source>Write PNG plots.</source>
+        <translation>输出 PNG 图表。</translation>
+    </message>
+    <message>
+        <source>Actuator controller: builtin (in-process virtual specimens, the default) or tcp://HOST:PORT (hsmu-controller or a lab controller).</source>
+        <translation>作动器控制器：builtin（进程内虚拟试件，默认）或 tcp://HOST:PORT（hsmu-controller 或实验室控制器）。</translation>
+    </message>
+    <message>
+        <source>Shared secret for the controller.</source>
+        <translation>与控制器共享的密钥。</translation>
+    </message>
+    <message>
+        <source>After a lost link or a timeout, resume (and reconnect) up to N times before giving up (default 0: hold and exit 2).</source>
+        <translation>链路中断或超时后，最多恢复（并重新连接）N 次，之后放弃（默认 0：保持并以代码 2 退出）。</translation>
+    </message>
+    <message>
+        <source>Decision on update proposals of the onApproval policy: manual, approveAll or rejectAll (default: the configuration&apos;s).</source>
+        <translation>onApproval 策略下对更新提议的处理方式：manual、approveAll 或 rejectAll（默认：采用配置中的设定）。</translation>
+    </message>
+    <message>
+        <source>expected exactly one CONFIG (a file or a preset name)</source>
+        <translation>应恰好给出一个 CONFIG（文件或预设名称）</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>缺少 --out DIR</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller：%1</translation>
+    </message>
+    <message>
+        <source>--reconnect: expected a whole number &gt;= 0, found &apos;%1&apos;</source>
+        <translation>--reconnect：应为 &gt;= 0 的整数，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>--approval: expected manual, approveAll or rejectAll, found &apos;%1&apos;</source>
+        <translation>--approval：应为 manual、approveAll 或 rejectAll，实际为“%1”</translation>
+    </message>
+</context>
+<context>
+    <name>RunReport</name>
+    <message>
+        <source>  identified parameters of %1 (%2, final value ± std):</source>
+        <translation>  %1 的识别参数（%2，最终值 ± 标准差）：</translation>
+    </message>
+    <message>
+        <source>  updates applied: %1, proposals pending: %2, final fit error: %3</source>
+        <translation>  已应用更新：%1，待处理提议：%2，最终拟合误差：%3</translation>
+    </message>
+    <message>
+        <source>Test: %1</source>
+        <translation>试验：%1</translation>
+    </message>
+    <message>
+        <source>  state: %1, steps: %2 of %3, test time: %4 s, wall time: %5 s</source>
+        <translation>  状态：%1，步数：%2 / %3，试验时间：%4 s，实际耗时：%5 s</translation>
+    </message>
+    <message>
+        <source>  peak displacement:</source>
+        <translation>  峰值位移：</translation>
+    </message>
+    <message>
+        <source>  peak force:</source>
+        <translation>  峰值力：</translation>
+    </message>
+    <message>
+        <source>  alarms: none</source>
+        <translation>  报警：无</translation>
+    </message>
+    <message>
+        <source>  alarms:</source>
+        <translation>  报警：</translation>
+    </message>
+    <message>
+        <source>  outputs: %1</source>
+        <translation>  输出：%1</translation>
+    </message>
+</context>
+<context>
+    <name>RunState</name>
+    <message>
+        <source>no test loaded</source>
+        <translation>未加载试验</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <source>holding</source>
+        <translation>保持中</translation>
+    </message>
+    <message>
+        <source>finished</source>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::AlarmList</name>
+    <message>
+        <source>limit exceeded</source>
+        <translation>超限</translation>
+    </message>
+    <message>
+        <source>control fault</source>
+        <translation>控制故障</translation>
+    </message>
+    <message>
+        <source>element fault</source>
+        <translation>单元故障</translation>
+    </message>
+    <message>
+        <source>integrator fault</source>
+        <translation>积分器故障</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <source>stability</source>
+        <translation>稳定性</translation>
+    </message>
+    <message>
+        <source>model fit error</source>
+        <translation>模型拟合误差</translation>
+    </message>
+    <message>
+        <source>fracture</source>
+        <translation>断裂</translation>
+    </message>
+    <message>
+        <source>estimator rejected</source>
+        <translation>估计器拒绝</translation>
+    </message>
+    <message>
+        <source>parameter at a bound</source>
+        <translation>参数达到边界</translation>
+    </message>
+    <message>
+        <source>actuator tracking</source>
+        <translation>作动器跟踪</translation>
+    </message>
+    <message>
+        <source>model update</source>
+        <translation>模型更新</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>信息</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>critical</source>
+        <translation>严重</translation>
+    </message>
+    <message>
+        <source>t = %1 s (step %2) %3: %4</source>
+        <translation>t = %1 s（第 %2 步）%3：%4</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ControlBar</name>
+    <message>
+        <source>Test control</source>
+        <translation>试验控制</translation>
+    </message>
+    <message>
+        <source>Preset: </source>
+        <translation>预设: </translation>
+    </message>
+    <message>
+        <source>Test configurations shipped with the console</source>
+        <translation>控制台自带的试验配置</translation>
+    </message>
+    <message>
+        <source>(choose a preset)</source>
+        <translation>（选择预设）</translation>
+    </message>
+    <message>
+        <source>Open configuration...</source>
+        <translation>打开配置...</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>启动</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Emergency hold</source>
+        <translation>紧急保持</translation>
+    </message>
+    <message>
+        <source>Ctrl+H</source>
+        <translation>Ctrl+H</translation>
+    </message>
+    <message>
+        <source>Hold the test at once, between two steps (Esc or Ctrl+H)</source>
+        <translation>在两步之间立即保持试验（Esc 或 Ctrl+H）</translation>
+    </message>
+    <message>
+        <source> Speed: </source>
+        <translation> 速度: </translation>
+    </message>
+    <message>
+        <source>Test time per wall-clock time</source>
+        <translation>试验时间与实际时间之比</translation>
+    </message>
+    <message>
+        <source>0.5 x real time</source>
+        <translation>0.5 倍实时</translation>
+    </message>
+    <message>
+        <source>real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <source>2 x real time</source>
+        <translation>2 倍实时</translation>
+    </message>
+    <message>
+        <source>5 x real time</source>
+        <translation>5 倍实时</translation>
+    </message>
+    <message>
+        <source>as fast as possible</source>
+        <translation>尽可能快</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::HistoryPlot</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>Displacement history</source>
+        <translation>位移时程</translation>
+    </message>
+    <message>
+        <source>Displacement [m]</source>
+        <translation>位移 [m]</translation>
+    </message>
+    <message>
+        <source>Ground motion</source>
+        <translation>地震动</translation>
+    </message>
+    <message>
+        <source>Ground acceleration [m/s²]</source>
+        <translation>地面加速度 [m/s²]</translation>
+    </message>
+    <message>
+        <source>Ground acceleration</source>
+        <translation>地面加速度</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::HysteresisPlot</name>
+    <message>
+        <source>Deformation</source>
+        <translation>变形</translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation>力</translation>
+    </message>
+    <message>
+        <source>%1 (specimen, measured)</source>
+        <translation>%1（试件，实测）</translation>
+    </message>
+    <message>
+        <source>%1 (numerical)</source>
+        <translation>%1（数值）</translation>
+    </message>
+    <message>
+        <source>Hysteresis of %1</source>
+        <translation>%1 的滞回曲线</translation>
+    </message>
+    <message>
+        <source>Hysteresis: specimen and numerical twins</source>
+        <translation>滞回曲线：试件及其数值孪生模型</translation>
+    </message>
+    <message>
+        <source>Rotation [%1]</source>
+        <translation>转角 [%1]</translation>
+    </message>
+    <message>
+        <source>Deformation [%1]</source>
+        <translation>变形 [%1]</translation>
+    </message>
+    <message>
+        <source>Moment [%1]</source>
+        <translation>弯矩 [%1]</translation>
+    </message>
+    <message>
+        <source>Force [%1]</source>
+        <translation>力 [%1]</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::MainWindow</name>
+    <message>
+        <source>HSMU Console</source>
+        <translation>HSMU Console</translation>
+    </message>
+    <message>
+        <source>Alarms and events</source>
+        <translation>报警与事件</translation>
+    </message>
+    <message>
+        <source>cannot load %1: %2</source>
+        <translation>无法加载 %1：%2</translation>
+    </message>
+    <message>
+        <source>Open configuration</source>
+        <translation>打开配置</translation>
+    </message>
+    <message>
+        <source>Test configurations (*.json);;All files (*)</source>
+        <translation>试验配置 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Configuration error</source>
+        <translation>配置错误</translation>
+    </message>
+    <message>
+        <source>loaded %1 (%2)</source>
+        <translation>已加载 %1（%2）</translation>
+    </message>
+    <message>
+        <source>HSMU Console - %1</source>
+        <translation>HSMU Console - %1</translation>
+    </message>
+    <message>
+        <source>the test cannot start: %1</source>
+        <translation>试验无法启动：%1</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ParameterPlot</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>± %1σ</source>
+        <translation>± %1σ</translation>
+    </message>
+    <message>
+        <source>estimate</source>
+        <translation>估计值</translation>
+    </message>
+    <message>
+        <source>true value</source>
+        <translation>真值</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::TestStatusBar</name>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>step %1 / %2</source>
+        <translation>第 %1 / %2 步</translation>
+    </message>
+    <message>
+        <source>%1 steps/s</source>
+        <translation>%1 步/s</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::TestWorker</name>
+    <message>
+        <source>stopped by the operator</source>
+        <translation>由操作员停止</translation>
+    </message>
+    <message>
+        <source>emergency hold by the operator</source>
+        <translation>操作员触发紧急保持</translation>
+    </message>
+</context>
+</TS>
