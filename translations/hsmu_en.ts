@@ -218,6 +218,49 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>unknown subcommand '%1' (expected run, compare or material)</source>
         <translation>unknown subcommand '%1' (expected run, compare or material)</translation>
     </message>
+    <message>
+        <source>Actuator controller: builtin (the default) or tcp://HOST:PORT.</source>
+        <translation>Actuator controller: builtin (the default) or tcp://HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ExportCommand</name>
+    <message>
+        <source>Write a run record (HDF5) as CSV files, one per group.</source>
+        <translation>Write a run record (HDF5) as CSV files, one per group.</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>The subcommand.</translation>
+    </message>
+    <message>
+        <source>The record (record.h5).</source>
+        <translation>The record (record.h5).</translation>
+    </message>
+    <message>
+        <source>Output directory for the CSVs.</source>
+        <translation>Output directory for the CSVs.</translation>
+    </message>
+    <message>
+        <source>expected exactly one FILE.h5</source>
+        <translation>expected exactly one FILE.h5</translation>
+    </message>
+    <message>
+        <source>missing --csv DIR</source>
+        <translation>missing --csv DIR</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output directory</source>
+        <translation>%1: cannot create the output directory</translation>
+    </message>
+    <message>
+        <source>%1 steps, %2 alarms; written:</source>
+        <translation>%1 steps, %2 alarms; written:</translation>
+    </message>
 </context>
 <context>
     <name>MaterialCommand</name>
@@ -290,6 +333,174 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>PlotExporter</name>
+    <message>
+        <source>%1: unknown plot format '%2' (expected png, svg or pdf)</source>
+        <translation>%1: unknown plot format '%2' (expected png, svg or pdf)</translation>
+    </message>
+    <message>
+        <source>%1: the plot could not be written</source>
+        <translation>%1: the plot could not be written</translation>
+    </message>
+</context>
+<context>
+    <name>PreflightDialog</name>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayCommand</name>
+    <message>
+        <source>Re-identify a recorded specimen, or imported measured data, offline.</source>
+        <translation>Re-identify a recorded specimen, or imported measured data, offline.</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>The subcommand.</translation>
+    </message>
+    <message>
+        <source>A run record (record.h5).</source>
+        <translation>A run record (record.h5).</translation>
+    </message>
+    <message>
+        <source>Re-run the identification headless.</source>
+        <translation>Re-run the identification headless.</translation>
+    </message>
+    <message>
+        <source>Measured data: CSV of time, deformation, force with units.</source>
+        <translation>Measured data: CSV of time, deformation, force with units.</translation>
+    </message>
+    <message>
+        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</source>
+        <translation>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</translation>
+    </message>
+    <message>
+        <source>ukf or nelder-mead.</source>
+        <translation>ukf or nelder-mead.</translation>
+    </message>
+    <message>
+        <source>JSON with "model" and/or "updating" settings to override.</source>
+        <translation>JSON with "model" and/or "updating" settings to override.</translation>
+    </message>
+    <message>
+        <source>The recorded specimen to identify.</source>
+        <translation>The recorded specimen to identify.</translation>
+    </message>
+    <message>
+        <source>Output directory.</source>
+        <translation>Output directory.</translation>
+    </message>
+    <message>
+        <source>unexpected argument '%1'</source>
+        <translation>unexpected argument '%1'</translation>
+    </message>
+    <message>
+        <source>give either FILE.h5 or --import DATA.csv, not both</source>
+        <translation>give either FILE.h5 or --import DATA.csv, not both</translation>
+    </message>
+    <message>
+        <source>expected FILE.h5 (a run record) or --import DATA.csv</source>
+        <translation>expected FILE.h5 (a run record) or --import DATA.csv</translation>
+    </message>
+    <message>
+        <source>--units applies to --import only (a record has its units)</source>
+        <translation>--units applies to --import only (a record has its units)</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>missing --out DIR</translation>
+    </message>
+    <message>
+        <source>%1 identification of %2: %3 samples, dt %4 s</source>
+        <translation>%1 identification of %2: %3 samples, dt %4 s</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>parameter</translation>
+    </message>
+    <message>
+        <source>initial</source>
+        <translation>initial</translation>
+    </message>
+    <message>
+        <source>final</source>
+        <translation>final</translation>
+    </message>
+    <message>
+        <source>std</source>
+        <translation>std</translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation>online</translation>
+    </message>
+    <message>
+        <source>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</source>
+        <translation>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</translation>
+    </message>
+    <message>
+        <source>  Nelder-Mead fits accepted: %1</source>
+        <translation>  Nelder-Mead fits accepted: %1</translation>
+    </message>
+    <message>
+        <source>  estimator warnings: %1 (see summary.json)</source>
+        <translation>  estimator warnings: %1 (see summary.json)</translation>
+    </message>
+    <message>
+        <source>  outputs: %1</source>
+        <translation>  outputs: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output directory</source>
+        <translation>%1: cannot create the output directory</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayWindowCommand</name>
+    <message>
+        <source>Replay a recorded test (an HDF5 run record) in a window.</source>
+        <translation>Replay a recorded test (an HDF5 run record) in a window.</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>The subcommand.</translation>
+    </message>
+    <message>
+        <source>The run record (record.h5).</source>
+        <translation>The run record (record.h5).</translation>
+    </message>
+    <message>
+        <source>Test seconds per wall second (default 1).</source>
+        <translation>Test seconds per wall second (default 1).</translation>
+    </message>
+    <message>
+        <source>Start playing at once.</source>
+        <translation>Start playing at once.</translation>
+    </message>
+    <message>
+        <source>Grab the window into this PNG file, then quit.</source>
+        <translation>Grab the window into this PNG file, then quit.</translation>
+    </message>
+    <message>
+        <source>Seconds before the screenshot (default 3).</source>
+        <translation>Seconds before the screenshot (default 3).</translation>
+    </message>
+    <message>
+        <source>expected one record file: hsmu replay FILE.h5</source>
+        <translation>expected one record file: hsmu replay FILE.h5</translation>
+    </message>
+    <message>
+        <source>--speed: expected a positive number</source>
+        <translation>--speed: expected a positive number</translation>
+    </message>
+    <message>
+        <source>--screenshot-after: expected a number of seconds</source>
+        <translation>--screenshot-after: expected a number of seconds</translation>
+    </message>
+</context>
+<context>
     <name>RunCommand</name>
     <message>
         <source>%1: cannot create the output directory</source>
@@ -328,12 +539,12 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>hsmu run: --approval ignored: the configuration has no updating</translation>
     </message>
     <message>
-        <source>hsmu run: connecting to %1</source>
-        <translation>hsmu run: connecting to %1</translation>
-    </message>
-    <message>
         <source>%1: the record could not be written: %2</source>
         <translation>%1: the record could not be written: %2</translation>
+    </message>
+    <message>
+        <source>hsmu run: connecting to %1 (%2 protocol)</source>
+        <translation>hsmu run: connecting to %1 (%2 protocol)</translation>
     </message>
 </context>
 <context>
@@ -361,10 +572,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Write PNG plots.</source>
         <translation>Write PNG plots.</translation>
-    </message>
-    <message>
-        <source>Actuator controller: builtin (in-process virtual specimens, the default) or tcp://HOST:PORT (hsmu-controller or a lab controller).</source>
-        <translation>Actuator controller: builtin (in-process virtual specimens, the default) or tcp://HOST:PORT (hsmu-controller or a lab controller).</translation>
     </message>
     <message>
         <source>Shared secret for the controller.</source>
@@ -397,6 +604,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--approval: expected manual, approveAll or rejectAll, found '%1'</source>
         <translation>--approval: expected manual, approveAll or rejectAll, found '%1'</translation>
+    </message>
+    <message>
+        <source>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration's controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco's GenericTCP).</source>
+        <translation>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration's controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco's GenericTCP).</translation>
     </message>
 </context>
 <context>
@@ -512,10 +723,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>critical</translation>
     </message>
     <message>
-        <source>t = %1 s (step %2) %3: %4</source>
-        <translation>t = %1 s (step %2) %3: %4</translation>
-    </message>
-    <message>
         <source>model fit error</source>
         <translation>model fit error</translation>
     </message>
@@ -538,6 +745,42 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>model update</source>
         <translation>model update</translation>
+    </message>
+    <message>
+        <source>Time [s]</source>
+        <translation>Time [s]</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>Severity</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Kind</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation>Acknowledged</translation>
+    </message>
+    <message>
+        <source>console</source>
+        <translation>console</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <source>yes, %1</source>
+        <translation>yes, %1</translation>
     </message>
 </context>
 <context>
@@ -579,18 +822,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Stop</translation>
     </message>
     <message>
-        <source>Emergency hold</source>
-        <translation>Emergency hold</translation>
-    </message>
-    <message>
-        <source>Ctrl+H</source>
-        <translation>Ctrl+H</translation>
-    </message>
-    <message>
-        <source>Hold the test at once, between two steps (Esc or Ctrl+H)</source>
-        <translation>Hold the test at once, between two steps (Esc or Ctrl+H)</translation>
-    </message>
-    <message>
         <source> Speed: </source>
         <translation> Speed: </translation>
     </message>
@@ -618,6 +849,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>as fast as possible</source>
         <translation>as fast as possible</translation>
     </message>
+    <message>
+        <source>Single step</source>
+        <translation>Single step</translation>
+    </message>
+    <message>
+        <source>Run exactly one integration step, then stay paused</source>
+        <translation>Run exactly one integration step, then stay paused</translation>
+    </message>
+    <message>
+        <source>Emergency hold (%1)</source>
+        <translation>Emergency hold (%1)</translation>
+    </message>
+    <message>
+        <source>Hold the test at once, between two steps (%1)</source>
+        <translation>Hold the test at once, between two steps (%1)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::HistoryPlot</name>
@@ -644,6 +891,58 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Ground acceleration</source>
         <translation>Ground acceleration</translation>
+    </message>
+    <message>
+        <source>Force history</source>
+        <translation>Force history</translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation>Force</translation>
+    </message>
+    <message>
+        <source>Moment history</source>
+        <translation>Moment history</translation>
+    </message>
+    <message>
+        <source>Moment [%1]</source>
+        <translation>Moment [%1]</translation>
+    </message>
+    <message>
+        <source>Force [%1]</source>
+        <translation>Force [%1]</translation>
+    </message>
+    <message>
+        <source>Tracking of %1</source>
+        <translation>Tracking of %1</translation>
+    </message>
+    <message>
+        <source>Rotation [%1]</source>
+        <translation>Rotation [%1]</translation>
+    </message>
+    <message>
+        <source>Deformation [%1]</source>
+        <translation>Deformation [%1]</translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation>commanded</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>measured</translation>
+    </message>
+    <message>
+        <source>Inspector fit error</source>
+        <translation>Inspector fit error</translation>
+    </message>
+    <message>
+        <source>Fit error [-]</source>
+        <translation>Fit error [-]</translation>
+    </message>
+    <message>
+        <source>fit error</source>
+        <translation>fit error</translation>
     </message>
 </context>
 <context>
@@ -688,6 +987,45 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Hysteresis: specimen and numerical twins</source>
         <translation>Hysteresis: specimen and numerical twins</translation>
     </message>
+    <message>
+        <source>auxiliary model (%1)</source>
+        <translation>auxiliary model (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::LivePlotsPanel</name>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG image (*.png)</translation>
+    </message>
+    <message>
+        <source>SVG drawing (*.svg)</source>
+        <translation>SVG drawing (*.svg)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF document (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export this plot...</source>
+        <translation>Export this plot...</translation>
+    </message>
+    <message>
+        <source>Export all plots...</source>
+        <translation>Export all plots...</translation>
+    </message>
+    <message>
+        <source>Export plot</source>
+        <translation>Export plot</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export failed</translation>
+    </message>
+    <message>
+        <source>Export all plots to</source>
+        <translation>Export all plots to</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::MainWindow</name>
@@ -727,6 +1065,109 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>the test cannot start: %1</source>
         <translation>the test cannot start: %1</translation>
     </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Acknowledge all</translation>
+    </message>
+    <message>
+        <source>Test setup</source>
+        <translation>Test setup</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameters</translation>
+    </message>
+    <message>
+        <source>Pending updates</source>
+        <translation>Pending updates</translation>
+    </message>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation>Acknowledge selected</translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation>Critical alarms stay red until acknowledged (double-click or the buttons).</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>&amp;Open configuration...</source>
+        <translation>&amp;Open configuration...</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Open &amp;recent</translation>
+    </message>
+    <message>
+        <source>Open r&amp;ecord...</source>
+        <translation>Open r&amp;ecord...</translation>
+    </message>
+    <message>
+        <source>&amp;Settings...</source>
+        <translation>&amp;Settings...</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quit</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;View</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>update #%1 approved by the operator</source>
+        <translation>update #%1 approved by the operator</translation>
+    </message>
+    <message>
+        <source>update #%1 rejected by the operator</source>
+        <translation>update #%1 rejected by the operator</translation>
+    </message>
+    <message>
+        <source>setup not applied: %1</source>
+        <translation>setup not applied: %1</translation>
+    </message>
+    <message>
+        <source>preparing the test (pre-flight)...</source>
+        <translation>preparing the test (pre-flight)...</translation>
+    </message>
+    <message>
+        <source>start cancelled at the pre-flight check</source>
+        <translation>start cancelled at the pre-flight check</translation>
+    </message>
+    <message>
+        <source>pre-flight confirmed by the operator (zero offsets)</source>
+        <translation>pre-flight confirmed by the operator (zero offsets)</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab</source>
+        <translation>built-in virtual lab</translation>
+    </message>
+    <message>
+        <source>%1 fault</source>
+        <translation>%1 fault</translation>
+    </message>
+    <message>
+        <source>%1 connected</source>
+        <translation>%1 connected</translation>
+    </message>
+    <message>
+        <source>%1 (connects at start)</source>
+        <translation>%1 (connects at start)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation>
+            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
+            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -748,6 +1189,500 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::ParameterTableModel</name>
+    <message>
+        <source>Double-click to edit; effective on the next step</source>
+        <translation>Double-click to edit; effective on the next step</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>Sigma</source>
+        <translation>Sigma</translation>
+    </message>
+    <message>
+        <source>Lower</source>
+        <translation>Lower</translation>
+    </message>
+    <message>
+        <source>Upper</source>
+        <translation>Upper</translation>
+    </message>
+    <message>
+        <source>Lock</source>
+        <translation>Lock</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a number</source>
+        <translation>%1: '%2' is not a number</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ParametersPanel</name>
+    <message>
+        <source>No online model updating in this test.</source>
+        <translation>No online model updating in this test.</translation>
+    </message>
+    <message>
+        <source>Normalized RMS fit error above which the inspector requests an update; effective on the next step</source>
+        <translation>Normalized RMS fit error above which the inspector requests an update; effective on the next step</translation>
+    </message>
+    <message>
+        <source>Fit-error threshold [-]:</source>
+        <translation>Fit-error threshold [-]:</translation>
+    </message>
+    <message>
+        <source>Value, sigma (1 standard deviation) and bounds in the law's normalized units (u / u_ref, F / F_ref). Double-click a bound to edit it; bound and lock edits take effect on the next step.</source>
+        <translation>Value, sigma (1 standard deviation) and bounds in the law's normalized units (u / u_ref, F / F_ref). Double-click a bound to edit it; bound and lock edits take effect on the next step.</translation>
+    </message>
+    <message>
+        <source>%1 on %2 at step %3: fit error e = %4 (threshold %5), %6 updates applied</source>
+        <translation>%1 on %2 at step %3: fit error e = %4 (threshold %5), %6 updates applied</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PendingUpdatesPanel</name>
+    <message>
+        <source>every step</source>
+        <translation>every step</translation>
+    </message>
+    <message>
+        <source>at zero-force crossings of the target</source>
+        <translation>at zero-force crossings of the target</translation>
+    </message>
+    <message>
+        <source>every N steps</source>
+        <translation>every N steps</translation>
+    </message>
+    <message>
+        <source>on the operator's approval</source>
+        <translation>on the operator's approval</translation>
+    </message>
+    <message>
+        <source>N = </source>
+        <translation>N = </translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>Current</translation>
+    </message>
+    <message>
+        <source>Proposed</source>
+        <translation>Proposed</translation>
+    </message>
+    <message>
+        <source>Change [%]</source>
+        <translation>Change [%]</translation>
+    </message>
+    <message>
+        <source>Current and proposed values in the law's normalized units</source>
+        <translation>Current and proposed values in the law's normalized units</translation>
+    </message>
+    <message>
+        <source>Apply updates:</source>
+        <translation>Apply updates:</translation>
+    </message>
+    <message>
+        <source>No online model updating in this test.</source>
+        <translation>No online model updating in this test.</translation>
+    </message>
+    <message>
+        <source>Updates are applied %1; choose "on the operator's approval" to decide each one.</source>
+        <translation>Updates are applied %1; choose "on the operator's approval" to decide each one.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n update(s) waiting for a decision.</source>
+        <translation>
+            <numerusform>%n update(s) waiting for a decision.</numerusform>
+            <numerusform>%n update(s) waiting for a decision.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>#%1 %2 at t = %3 s (step %4)</source>
+        <translation>#%1 %2 at t = %3 s (step %4)</translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation>Approve</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>Reject</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PreflightDialog</name>
+    <message>
+        <source>Pre-flight check</source>
+        <translation>Pre-flight check</translation>
+    </message>
+    <message>
+        <source>Integration and stability</source>
+        <translation>Integration and stability</translation>
+    </message>
+    <message>
+        <source>Integrator:</source>
+        <translation>Integrator:</translation>
+    </message>
+    <message>
+        <source>Time step dt [s]:</source>
+        <translation>Time step dt [s]:</translation>
+    </message>
+    <message>
+        <source>Steps:</source>
+        <translation>Steps:</translation>
+    </message>
+    <message>
+        <source>Ground motion:</source>
+        <translation>Ground motion:</translation>
+    </message>
+    <message>
+        <source>%1, PGA %2 m/s²</source>
+        <translation>%1, PGA %2 m/s²</translation>
+    </message>
+    <message>
+        <source>omega_max [rad/s]:</source>
+        <translation>omega_max [rad/s]:</translation>
+    </message>
+    <message>
+        <source>omega_max dt [-] / limit:</source>
+        <translation>omega_max dt [-] / limit:</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>unconditionally stable</source>
+        <translation>unconditionally stable</translation>
+    </message>
+    <message>
+        <source>Stable: %1</source>
+        <translation>Stable: %1</translation>
+    </message>
+    <message>
+        <source>UNSTABLE: %1%2</source>
+        <translation>UNSTABLE: %1%2</translation>
+    </message>
+    <message>
+        <source> (forced by the configuration)</source>
+        <translation> (forced by the configuration)</translation>
+    </message>
+    <message>
+        <source>Check:</source>
+        <translation>Check:</translation>
+    </message>
+    <message>
+        <source>Specimens: limits and initial measured values</source>
+        <translation>Specimens: limits and initial measured values</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <source>Max |d|</source>
+        <translation>Max |d|</translation>
+    </message>
+    <message>
+        <source>Max |F|</source>
+        <translation>Max |F|</translation>
+    </message>
+    <message>
+        <source>Max |Δd| per step</source>
+        <translation>Max |Δd| per step</translation>
+    </message>
+    <message>
+        <source>Measured d</source>
+        <translation>Measured d</translation>
+    </message>
+    <message>
+        <source>Measured F</source>
+        <translation>Measured F</translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent.</source>
+        <translation>Measured d and F: what the specimen reported after the link was prepared, before any target was sent.</translation>
+    </message>
+    <message>
+        <source>I confirm the zero offsets: with the specimen unloaded the actuator displacement and the load cell read zero.</source>
+        <translation>I confirm the zero offsets: with the specimen unloaded the actuator displacement and the load cell read zero.</translation>
+    </message>
+    <message>
+        <source>Start test</source>
+        <translation>Start test</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayWindow</name>
+    <message>
+        <source>Open record</source>
+        <translation>Open record</translation>
+    </message>
+    <message>
+        <source>HSMU records (*.h5 *.hdf5);;All files (*)</source>
+        <translation>HSMU records (*.h5 *.hdf5);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Cannot open the record</source>
+        <translation>Cannot open the record</translation>
+    </message>
+    <message>
+        <source>HSMU Replay - %1 (%2)</source>
+        <translation>HSMU Replay - %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Replay</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <source> Speed </source>
+        <translation> Speed </translation>
+    </message>
+    <message>
+        <source>%1 x</source>
+        <translation>%1 x</translation>
+    </message>
+    <message>
+        <source>Test seconds per wall second</source>
+        <translation>Test seconds per wall second</translation>
+    </message>
+    <message>
+        <source>Scrub through the record</source>
+        <translation>Scrub through the record</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source> t = %1 s   step %2 of %3 </source>
+        <translation> t = %1 s   step %2 of %3 </translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation>Settings</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>System default</translation>
+    </message>
+    <message>
+        <source>Clear recent files</source>
+        <translation>Clear recent files</translation>
+    </message>
+    <message>
+        <source>empty: tests are not recorded</source>
+        <translation>empty: tests are not recorded</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Browse...</translation>
+    </message>
+    <message>
+        <source>Record folder</source>
+        <translation>Record folder</translation>
+    </message>
+    <message>
+        <source>Record folder (HDF5):</source>
+        <translation>Record folder (HDF5):</translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation>Language:</translation>
+    </message>
+    <message>
+        <source>A new language applies the next time the console starts.</source>
+        <translation>A new language applies the next time the console starts.</translation>
+    </message>
+    <message>
+        <source>Recent files:</source>
+        <translation>Recent files:</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SetupPanel</name>
+    <message>
+        <source>No configuration loaded: choose a preset or open a file.</source>
+        <translation>No configuration loaded: choose a preset or open a file.</translation>
+    </message>
+    <message>
+        <source>Safety limits (0 = none; the specimen's units)</source>
+        <translation>Safety limits (0 = none; the specimen's units)</translation>
+    </message>
+    <message>
+        <source>Specimen</source>
+        <translation>Specimen</translation>
+    </message>
+    <message>
+        <source>Max |d|</source>
+        <translation>Max |d|</translation>
+    </message>
+    <message>
+        <source>Max |F|</source>
+        <translation>Max |F|</translation>
+    </message>
+    <message>
+        <source>Max |Δd| per step</source>
+        <translation>Max |Δd| per step</translation>
+    </message>
+    <message>
+        <source>Apply (reload the test)</source>
+        <translation>Apply (reload the test)</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Run</translation>
+    </message>
+    <message>
+        <source>the configuration's record</source>
+        <translation>the configuration's record</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Browse...</translation>
+    </message>
+    <message>
+        <source>Ground motion file:</source>
+        <translation>Ground motion file:</translation>
+    </message>
+    <message>
+        <source>Scale [-]:</source>
+        <translation>Scale [-]:</translation>
+    </message>
+    <message>
+        <source>Time step dt [s]:</source>
+        <translation>Time step dt [s]:</translation>
+    </message>
+    <message>
+        <source>whole record</source>
+        <translation>whole record</translation>
+    </message>
+    <message>
+        <source>Duration [s]:</source>
+        <translation>Duration [s]:</translation>
+    </message>
+    <message>
+        <source>explicit Newmark</source>
+        <translation>explicit Newmark</translation>
+    </message>
+    <message>
+        <source>alpha-OS</source>
+        <translation>alpha-OS</translation>
+    </message>
+    <message>
+        <source>Integrator:</source>
+        <translation>Integrator:</translation>
+    </message>
+    <message>
+        <source>alpha-OS alpha [-]:</source>
+        <translation>alpha-OS alpha [-]:</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab</source>
+        <translation>built-in virtual lab</translation>
+    </message>
+    <message>
+        <source>hsmu-controller over TCP</source>
+        <translation>hsmu-controller over TCP</translation>
+    </message>
+    <message>
+        <source>Specimens driven by:</source>
+        <translation>Specimens driven by:</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>Host:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <source>Online model updating</source>
+        <translation>Online model updating</translation>
+    </message>
+    <message>
+        <source>enabled</source>
+        <translation>enabled</translation>
+    </message>
+    <message>
+        <source>Apply updates:</source>
+        <translation>Apply updates:</translation>
+    </message>
+    <message>
+        <source>N [steps]:</source>
+        <translation>N [steps]:</translation>
+    </message>
+    <message>
+        <source>Fit-error threshold [-]:</source>
+        <translation>Fit-error threshold [-]:</translation>
+    </message>
+    <message>
+        <source>Ground motion record</source>
+        <translation>Ground motion record</translation>
+    </message>
+    <message>
+        <source>Ground motions (*.AT2 *.at2 *.txt *.csv *.dat);;All files (*)</source>
+        <translation>Ground motions (*.AT2 *.at2 *.txt *.csv *.dat);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Configuration: %1
+%2</source>
+        <translation>Configuration: %1
+%2</translation>
+    </message>
+    <message>
+        <source>(built in)</source>
+        <translation>(built in)</translation>
+    </message>
+    <message>
+        <source>built-in %1 record</source>
+        <translation>built-in %1 record</translation>
+    </message>
+    <message>
+        <source>d in %1, F in %2</source>
+        <translation>d in %1, F in %2</translation>
+    </message>
+    <message>
+        <source>no configuration loaded</source>
+        <translation>no configuration loaded</translation>
+    </message>
+    <message>
+        <source>safety limit of %1: '%2' is not a number &gt;= 0</source>
+        <translation>safety limit of %1: '%2' is not a number &gt;= 0</translation>
+    </message>
+    <message>
+        <source>this configuration has no updating section to enable</source>
+        <translation>this configuration has no updating section to enable</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::TestStatusBar</name>
     <message>
         <source>t = %1 s</source>
@@ -761,6 +1696,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 steps/s</source>
         <translation>%1 steps/s</translation>
     </message>
+    <message>
+        <source>no link</source>
+        <translation>no link</translation>
+    </message>
+    <message>
+        <source>link: %1</source>
+        <translation>link: %1</translation>
+    </message>
+    <message>
+        <source>not recording</source>
+        <translation>not recording</translation>
+    </message>
+    <message>
+        <source>recording: %1/%2</source>
+        <translation>recording: %1/%2</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
@@ -771,6 +1722,38 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>emergency hold by the operator</source>
         <translation>emergency hold by the operator</translation>
+    </message>
+    <message>
+        <source>the record cannot be written: %1</source>
+        <translation>the record cannot be written: %1</translation>
+    </message>
+    <message>
+        <source>this test has no model updating</source>
+        <translation>this test has no model updating</translation>
+    </message>
+    <message>
+        <source>%1: the lower bound must be a number not above the upper bound</source>
+        <translation>%1: the lower bound must be a number not above the upper bound</translation>
+    </message>
+    <message>
+        <source>%1: bounds [%2, %3] refused (they would not keep the law admissible)</source>
+        <translation>%1: bounds [%2, %3] refused (they would not keep the law admissible)</translation>
+    </message>
+    <message>
+        <source>%1: the %2 cannot lock this parameter</source>
+        <translation>%1: the %2 cannot lock this parameter</translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied (no longer pending, or refused by the law; see the alarms)</source>
+        <translation>update #%1 was not applied (no longer pending, or refused by the law; see the alarms)</translation>
+    </message>
+    <message>
+        <source>update #%1 is no longer pending</source>
+        <translation>update #%1 is no longer pending</translation>
+    </message>
+    <message>
+        <source>the fit-error threshold must be a positive number</source>
+        <translation>the fit-error threshold must be a positive number</translation>
     </message>
 </context>
 </TS>

@@ -218,6 +218,49 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>--speed: expected a number</source>
         <translation>--speed: se esperaba un número</translation>
     </message>
+    <message>
+        <source>Actuator controller: builtin (the default) or tcp://HOST:PORT.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation type="unfinished">--controller: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ExportCommand</name>
+    <message>
+        <source>Write a run record (HDF5) as CSV files, one per group.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation type="unfinished">El subcomando.</translation>
+    </message>
+    <message>
+        <source>The record (record.h5).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output directory for the CSVs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected exactly one FILE.h5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing --csv DIR</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output directory</source>
+        <translation type="unfinished">%1: no se puede crear el directorio de salida</translation>
+    </message>
+    <message>
+        <source>%1 steps, %2 alarms; written:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>MaterialCommand</name>
@@ -290,6 +333,174 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>PlotExporter</name>
+    <message>
+        <source>%1: unknown plot format &apos;%2&apos; (expected png, svg or pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the plot could not be written</source>
+        <translation type="unfinished">%1: no se pudo escribir la gráfica</translation>
+    </message>
+</context>
+<context>
+    <name>PreflightDialog</name>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ReplayCommand</name>
+    <message>
+        <source>Re-identify a recorded specimen, or imported measured data, offline.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation type="unfinished">El subcomando.</translation>
+    </message>
+    <message>
+        <source>A run record (record.h5).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-run the identification headless.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured data: CSV of time, deformation, force with units.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ukf or nelder-mead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>JSON with &quot;model&quot; and/or &quot;updating&quot; settings to override.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The recorded specimen to identify.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output directory.</source>
+        <translation type="unfinished">Directorio de salida.</translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation type="unfinished">argumento inesperado &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>give either FILE.h5 or --import DATA.csv, not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected FILE.h5 (a run record) or --import DATA.csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--units applies to --import only (a record has its units)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation type="unfinished">falta --out DIR</translation>
+    </message>
+    <message>
+        <source>%1 identification of %2: %3 samples, dt %4 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation type="unfinished">parámetro</translation>
+    </message>
+    <message>
+        <source>initial</source>
+        <translation type="unfinished">inicial</translation>
+    </message>
+    <message>
+        <source>final</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>std</source>
+        <translation type="unfinished">desv. est.</translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  Nelder-Mead fits accepted: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  estimator warnings: %1 (see summary.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  outputs: %1</source>
+        <translation type="unfinished">  salidas: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output directory</source>
+        <translation type="unfinished">%1: no se puede crear el directorio de salida</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayWindowCommand</name>
+    <message>
+        <source>Replay a recorded test (an HDF5 run record) in a window.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation type="unfinished">El subcomando.</translation>
+    </message>
+    <message>
+        <source>The run record (record.h5).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test seconds per wall second (default 1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start playing at once.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grab the window into this PNG file, then quit.</source>
+        <translation type="unfinished">Captura la ventana en este archivo PNG y luego sale.</translation>
+    </message>
+    <message>
+        <source>Seconds before the screenshot (default 3).</source>
+        <translation type="unfinished">Segundos antes de la captura (por defecto 4). {3)?}</translation>
+    </message>
+    <message>
+        <source>expected one record file: hsmu replay FILE.h5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--speed: expected a positive number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--screenshot-after: expected a number of seconds</source>
+        <translation type="unfinished">--screenshot-after: se esperaba un número de segundos</translation>
+    </message>
+</context>
+<context>
     <name>RunCommand</name>
     <message>
         <source>%1 %  t = %2 s  %3 steps/s</source>
@@ -306,10 +517,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: cannot create the output directory</source>
         <translation>%1: no se puede crear el directorio de salida</translation>
-    </message>
-    <message>
-        <source>hsmu run: connecting to %1</source>
-        <translation>hsmu run: conectando con %1</translation>
     </message>
     <message>
         <source>the test cannot start: %1</source>
@@ -334,6 +541,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: the plot could not be written</source>
         <translation>%1: no se pudo escribir la gráfica</translation>
+    </message>
+    <message>
+        <source>hsmu run: connecting to %1 (%2 protocol)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -361,10 +572,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Write PNG plots.</source>
         <translation>Escribe gráficas PNG.</translation>
-    </message>
-    <message>
-        <source>Actuator controller: builtin (in-process virtual specimens, the default) or tcp://HOST:PORT (hsmu-controller or a lab controller).</source>
-        <translation>Controlador del actuador: builtin (probetas virtuales en el propio proceso, por defecto) o tcp://HOST:PORT (hsmu-controller o un controlador de laboratorio).</translation>
     </message>
     <message>
         <source>Shared secret for the controller.</source>
@@ -397,6 +604,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--approval: expected manual, approveAll or rejectAll, found &apos;%1&apos;</source>
         <translation>--approval: se esperaba manual, approveAll o rejectAll, se encontró &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration&apos;s controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco&apos;s GenericTCP).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -536,8 +747,40 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>crítico</translation>
     </message>
     <message>
-        <source>t = %1 s (step %2) %3: %4</source>
-        <translation>t = %1 s (paso %2) %3: %4</translation>
+        <source>Time [s]</source>
+        <translation type="unfinished">Tiempo [s]</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>console</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes, %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -579,18 +822,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Detener</translation>
     </message>
     <message>
-        <source>Emergency hold</source>
-        <translation>Retención de emergencia</translation>
-    </message>
-    <message>
-        <source>Ctrl+H</source>
-        <translation>Ctrl+H</translation>
-    </message>
-    <message>
-        <source>Hold the test at once, between two steps (Esc or Ctrl+H)</source>
-        <translation>Retiene el ensayo de inmediato, entre dos pasos (Esc o Ctrl+H)</translation>
-    </message>
-    <message>
         <source> Speed: </source>
         <translation> Velocidad: </translation>
     </message>
@@ -618,6 +849,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>as fast as possible</source>
         <translation>lo más rápido posible</translation>
     </message>
+    <message>
+        <source>Single step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run exactly one integration step, then stay paused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency hold (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hold the test at once, between two steps (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::HistoryPlot</name>
@@ -644,6 +891,58 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Ground acceleration</source>
         <translation>Aceleración del suelo</translation>
+    </message>
+    <message>
+        <source>Force history</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation type="unfinished">Fuerza</translation>
+    </message>
+    <message>
+        <source>Moment history</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moment [%1]</source>
+        <translation type="unfinished">Momento [%1]</translation>
+    </message>
+    <message>
+        <source>Force [%1]</source>
+        <translation type="unfinished">Fuerza [%1]</translation>
+    </message>
+    <message>
+        <source>Tracking of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotation [%1]</source>
+        <translation type="unfinished">Rotación [%1]</translation>
+    </message>
+    <message>
+        <source>Deformation [%1]</source>
+        <translation type="unfinished">Deformación [%1]</translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inspector fit error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit error [-]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fit error</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -688,6 +987,45 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Force [%1]</source>
         <translation>Fuerza [%1]</translation>
     </message>
+    <message>
+        <source>auxiliary model (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::LivePlotsPanel</name>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SVG drawing (*.svg)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export this plot...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export all plots...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export all plots to</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::MainWindow</name>
@@ -727,6 +1065,109 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>the test cannot start: %1</source>
         <translation>el ensayo no puede iniciarse: %1</translation>
     </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test setup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pending updates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open configuration...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open r&amp;ecord...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Settings...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>update #%1 approved by the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>update #%1 rejected by the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>setup not applied: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>preparing the test (pre-flight)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>start cancelled at the pre-flight check</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pre-flight confirmed by the operator (zero offsets)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>built-in virtual lab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (connects at start)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -748,6 +1189,499 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::ParameterTableModel</name>
+    <message>
+        <source>Double-click to edit; effective on the next step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sigma</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lower</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ParametersPanel</name>
+    <message>
+        <source>No online model updating in this test.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Normalized RMS fit error above which the inspector requests an update; effective on the next step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit-error threshold [-]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value, sigma (1 standard deviation) and bounds in the law&apos;s normalized units (u / u_ref, F / F_ref). Double-click a bound to edit it; bound and lock edits take effect on the next step.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on %2 at step %3: fit error e = %4 (threshold %5), %6 updates applied</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PendingUpdatesPanel</name>
+    <message>
+        <source>every step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at zero-force crossings of the target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every N steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on the operator&apos;s approval</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>N = </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Proposed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change [%]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current and proposed values in the law&apos;s normalized units</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply updates:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No online model updating in this test.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Updates are applied %1; choose &quot;on the operator&apos;s approval&quot; to decide each one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n update(s) waiting for a decision.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>#%1 %2 at t = %3 s (step %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PreflightDialog</name>
+    <message>
+        <source>Pre-flight check</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Integration and stability</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Integrator:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time step dt [s]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steps:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ground motion:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, PGA %2 m/s²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>omega_max [rad/s]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>omega_max dt [-] / limit:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unconditionally stable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stable: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UNSTABLE: %1%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (forced by the configuration)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Specimens: limits and initial measured values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max |d|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max |F|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max |Δd| per step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured d</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured F</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I confirm the zero offsets: with the specimen unloaded the actuator displacement and the load cell read zero.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start test</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayWindow</name>
+    <message>
+        <source>Open record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HSMU records (*.h5 *.hdf5);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open the record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HSMU Replay - %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> Speed </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test seconds per wall second</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scrub through the record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished">Pausar</translation>
+    </message>
+    <message>
+        <source> t = %1 s   step %2 of %3 </source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear recent files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>empty: tests are not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record folder (HDF5):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new language applies the next time the console starts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recent files:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SetupPanel</name>
+    <message>
+        <source>No configuration loaded: choose a preset or open a file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safety limits (0 = none; the specimen&apos;s units)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Specimen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max |d|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max |F|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max |Δd| per step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply (reload the test)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the configuration&apos;s record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ground motion file:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scale [-]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time step dt [s]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>whole record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Duration [s]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>explicit Newmark</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>alpha-OS</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Integrator:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>alpha-OS alpha [-]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>built-in virtual lab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hsmu-controller over TCP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Specimens driven by:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Online model updating</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply updates:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>N [steps]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit-error threshold [-]:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ground motion record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ground motions (*.AT2 *.at2 *.txt *.csv *.dat);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Configuration: %1
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(built in)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>built-in %1 record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>d in %1, F in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no configuration loaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>safety limit of %1: &apos;%2&apos; is not a number &gt;= 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this configuration has no updating section to enable</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::TestStatusBar</name>
     <message>
         <source>t = %1 s</source>
@@ -761,6 +1695,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 steps/s</source>
         <translation>%1 pasos/s</translation>
     </message>
+    <message>
+        <source>no link</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>link: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>recording: %1/%2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
@@ -771,6 +1721,38 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>emergency hold by the operator</source>
         <translation>retención de emergencia por el operador</translation>
+    </message>
+    <message>
+        <source>the record cannot be written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this test has no model updating</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the lower bound must be a number not above the upper bound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: bounds [%2, %3] refused (they would not keep the law admissible)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the %2 cannot lock this parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied (no longer pending, or refused by the law; see the alarms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>update #%1 is no longer pending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the fit-error threshold must be a positive number</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>
