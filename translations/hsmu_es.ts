@@ -220,46 +220,46 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Actuator controller: builtin (the default) or tcp://HOST:PORT.</source>
-        <translation type="unfinished"></translation>
+        <translation>Controlador del actuador: builtin (por defecto) o tcp://HOST:PORT.</translation>
     </message>
     <message>
         <source>--controller: %1</source>
-        <translation type="unfinished">--controller: %1</translation>
+        <translation>--controller: %1</translation>
     </message>
 </context>
 <context>
     <name>ExportCommand</name>
     <message>
         <source>Write a run record (HDF5) as CSV files, one per group.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribe un registro de ensayo (HDF5) como archivos CSV, uno por grupo.</translation>
     </message>
     <message>
         <source>The subcommand.</source>
-        <translation type="unfinished">El subcomando.</translation>
+        <translation>El subcomando.</translation>
     </message>
     <message>
         <source>The record (record.h5).</source>
-        <translation type="unfinished"></translation>
+        <translation>El registro (record.h5).</translation>
     </message>
     <message>
         <source>Output directory for the CSVs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Directorio de salida de los CSV.</translation>
     </message>
     <message>
         <source>expected exactly one FILE.h5</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba exactamente un FILE.h5</translation>
     </message>
     <message>
         <source>missing --csv DIR</source>
-        <translation type="unfinished"></translation>
+        <translation>falta --csv DIR</translation>
     </message>
     <message>
         <source>%1: cannot create the output directory</source>
-        <translation type="unfinished">%1: no se puede crear el directorio de salida</translation>
+        <translation>%1: no se puede crear el directorio de salida</translation>
     </message>
     <message>
         <source>%1 steps, %2 alarms; written:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 pasos, %2 alarmas; escrito:</translation>
     </message>
 </context>
 <context>
@@ -336,168 +336,168 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <name>PlotExporter</name>
     <message>
         <source>%1: unknown plot format &apos;%2&apos; (expected png, svg or pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: formato de gráfica desconocido &apos;%2&apos; (se esperaba png, svg o pdf)</translation>
     </message>
     <message>
         <source>%1: the plot could not be written</source>
-        <translation type="unfinished">%1: no se pudo escribir la gráfica</translation>
+        <translation>%1: no se pudo escribir la gráfica</translation>
     </message>
 </context>
 <context>
     <name>PreflightDialog</name>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>ninguno</translation>
     </message>
 </context>
 <context>
     <name>ReplayCommand</name>
     <message>
         <source>Re-identify a recorded specimen, or imported measured data, offline.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vuelve a identificar fuera de línea una probeta registrada o datos medidos importados.</translation>
     </message>
     <message>
         <source>The subcommand.</source>
-        <translation type="unfinished">El subcomando.</translation>
+        <translation>El subcomando.</translation>
     </message>
     <message>
         <source>A run record (record.h5).</source>
-        <translation type="unfinished"></translation>
+        <translation>Un registro de ensayo (record.h5).</translation>
     </message>
     <message>
         <source>Re-run the identification headless.</source>
-        <translation type="unfinished"></translation>
+        <translation>Repite la identificación sin interfaz gráfica.</translation>
     </message>
     <message>
         <source>Measured data: CSV of time, deformation, force with units.</source>
-        <translation type="unfinished"></translation>
+        <translation>Datos medidos: CSV de tiempo, deformación y fuerza con unidades.</translation>
     </message>
     <message>
         <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</source>
-        <translation type="unfinished"></translation>
+        <translation>Unidades de las columnas importadas tiempo,deformación,fuerza, p. ej. s,mm,kN.</translation>
     </message>
     <message>
         <source>ukf or nelder-mead.</source>
-        <translation type="unfinished"></translation>
+        <translation>ukf o nelder-mead.</translation>
     </message>
     <message>
         <source>JSON with &quot;model&quot; and/or &quot;updating&quot; settings to override.</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON con los ajustes &quot;model&quot; y/o &quot;updating&quot; que se sobrescriben.</translation>
     </message>
     <message>
         <source>The recorded specimen to identify.</source>
-        <translation type="unfinished"></translation>
+        <translation>La probeta registrada que se identifica.</translation>
     </message>
     <message>
         <source>Output directory.</source>
-        <translation type="unfinished">Directorio de salida.</translation>
+        <translation>Directorio de salida.</translation>
     </message>
     <message>
         <source>unexpected argument &apos;%1&apos;</source>
-        <translation type="unfinished">argumento inesperado &apos;%1&apos;</translation>
+        <translation>argumento inesperado &apos;%1&apos;</translation>
     </message>
     <message>
         <source>give either FILE.h5 or --import DATA.csv, not both</source>
-        <translation type="unfinished"></translation>
+        <translation>indique FILE.h5 o --import DATA.csv, no ambos</translation>
     </message>
     <message>
         <source>expected FILE.h5 (a run record) or --import DATA.csv</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba FILE.h5 (un registro de ensayo) o --import DATA.csv</translation>
     </message>
     <message>
         <source>--units applies to --import only (a record has its units)</source>
-        <translation type="unfinished"></translation>
+        <translation>--units solo se aplica a --import (un registro tiene sus propias unidades)</translation>
     </message>
     <message>
         <source>missing --out DIR</source>
-        <translation type="unfinished">falta --out DIR</translation>
+        <translation>falta --out DIR</translation>
     </message>
     <message>
         <source>%1 identification of %2: %3 samples, dt %4 s</source>
-        <translation type="unfinished"></translation>
+        <translation>identificación %1 de %2: %3 muestras, dt %4 s</translation>
     </message>
     <message>
         <source>parameter</source>
-        <translation type="unfinished">parámetro</translation>
+        <translation>parámetro</translation>
     </message>
     <message>
         <source>initial</source>
-        <translation type="unfinished">inicial</translation>
+        <translation>inicial</translation>
     </message>
     <message>
         <source>final</source>
-        <translation type="unfinished"></translation>
+        <translation>final</translation>
     </message>
     <message>
         <source>std</source>
-        <translation type="unfinished">desv. est.</translation>
+        <translation>desv. est.</translation>
     </message>
     <message>
         <source>online</source>
-        <translation type="unfinished"></translation>
+        <translation>en línea</translation>
     </message>
     <message>
         <source>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</source>
-        <translation type="unfinished"></translation>
+        <translation>  modelo final sobre toda la historia: error RMS de fuerza %1 %2 (%3 % de la fuerza RMS); error de ajuste del inspector al final %4 %</translation>
     </message>
     <message>
         <source>  Nelder-Mead fits accepted: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>  ajustes de Nelder-Mead aceptados: %1</translation>
     </message>
     <message>
         <source>  estimator warnings: %1 (see summary.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>  advertencias del estimador: %1 (véase summary.json)</translation>
     </message>
     <message>
         <source>  outputs: %1</source>
-        <translation type="unfinished">  salidas: %1</translation>
+        <translation>  salidas: %1</translation>
     </message>
     <message>
         <source>%1: cannot create the output directory</source>
-        <translation type="unfinished">%1: no se puede crear el directorio de salida</translation>
+        <translation>%1: no se puede crear el directorio de salida</translation>
     </message>
 </context>
 <context>
     <name>ReplayWindowCommand</name>
     <message>
         <source>Replay a recorded test (an HDF5 run record) in a window.</source>
-        <translation type="unfinished"></translation>
+        <translation>Reproduce en una ventana un ensayo registrado (un registro de ensayo HDF5).</translation>
     </message>
     <message>
         <source>The subcommand.</source>
-        <translation type="unfinished">El subcomando.</translation>
+        <translation>El subcomando.</translation>
     </message>
     <message>
         <source>The run record (record.h5).</source>
-        <translation type="unfinished"></translation>
+        <translation>El registro del ensayo (record.h5).</translation>
     </message>
     <message>
         <source>Test seconds per wall second (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Segundos de ensayo por segundo real (por defecto 1).</translation>
     </message>
     <message>
         <source>Start playing at once.</source>
-        <translation type="unfinished"></translation>
+        <translation>Empieza a reproducir de inmediato.</translation>
     </message>
     <message>
         <source>Grab the window into this PNG file, then quit.</source>
-        <translation type="unfinished">Captura la ventana en este archivo PNG y luego sale.</translation>
+        <translation>Captura la ventana en este archivo PNG y luego sale.</translation>
     </message>
     <message>
         <source>Seconds before the screenshot (default 3).</source>
-        <translation type="unfinished">Segundos antes de la captura (por defecto 4). {3)?}</translation>
+        <translation>Segundos antes de la captura (por defecto 3).</translation>
     </message>
     <message>
         <source>expected one record file: hsmu replay FILE.h5</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba un archivo de registro: hsmu replay FILE.h5</translation>
     </message>
     <message>
         <source>--speed: expected a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>--speed: se esperaba un número positivo</translation>
     </message>
     <message>
         <source>--screenshot-after: expected a number of seconds</source>
-        <translation type="unfinished">--screenshot-after: se esperaba un número de segundos</translation>
+        <translation>--screenshot-after: se esperaba un número de segundos</translation>
     </message>
 </context>
 <context>
@@ -544,7 +544,7 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>hsmu run: connecting to %1 (%2 protocol)</source>
-        <translation type="unfinished"></translation>
+        <translation>hsmu run: conectando con %1 (protocolo %2)</translation>
     </message>
 </context>
 <context>
@@ -607,7 +607,7 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration&apos;s controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco&apos;s GenericTCP).</source>
-        <translation type="unfinished"></translation>
+        <translation>Controlador del actuador: builtin (probetas virtuales en el propio proceso, por defecto), tcp://HOST:PORT (hsmu-controller o un controlador de laboratorio, con el controller.protocol de la configuración, native por defecto), simapp://HOST:PORT (un servidor SimApp de OpenFresco) o generictcp://HOST:PORT (un servidor para el GenericTCP de OpenFresco).</translation>
     </message>
 </context>
 <context>
@@ -748,39 +748,39 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Time [s]</source>
-        <translation type="unfinished">Tiempo [s]</translation>
+        <translation>Tiempo [s]</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso</translation>
     </message>
     <message>
         <source>Severity</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravedad</translation>
     </message>
     <message>
         <source>Kind</source>
-        <translation type="unfinished"></translation>
+        <translation>Tipo</translation>
     </message>
     <message>
         <source>Message</source>
-        <translation type="unfinished"></translation>
+        <translation>Mensaje</translation>
     </message>
     <message>
         <source>Acknowledged</source>
-        <translation type="unfinished"></translation>
+        <translation>Reconocida</translation>
     </message>
     <message>
         <source>console</source>
-        <translation type="unfinished"></translation>
+        <translation>consola</translation>
     </message>
     <message>
         <source>no</source>
-        <translation type="unfinished"></translation>
+        <translation>no</translation>
     </message>
     <message>
         <source>yes, %1</source>
-        <translation type="unfinished"></translation>
+        <translation>sí, %1</translation>
     </message>
 </context>
 <context>
@@ -851,19 +851,19 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Single step</source>
-        <translation type="unfinished"></translation>
+        <translation>Un solo paso</translation>
     </message>
     <message>
         <source>Run exactly one integration step, then stay paused</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecuta exactamente un paso de integración y permanece en pausa</translation>
     </message>
     <message>
         <source>Emergency hold (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Retención de emergencia (%1)</translation>
     </message>
     <message>
         <source>Hold the test at once, between two steps (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Retiene el ensayo de inmediato, entre dos pasos (%1)</translation>
     </message>
 </context>
 <context>
@@ -894,55 +894,55 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Force history</source>
-        <translation type="unfinished"></translation>
+        <translation>Historia de fuerza</translation>
     </message>
     <message>
         <source>Force</source>
-        <translation type="unfinished">Fuerza</translation>
+        <translation>Fuerza</translation>
     </message>
     <message>
         <source>Moment history</source>
-        <translation type="unfinished"></translation>
+        <translation>Historia de momento</translation>
     </message>
     <message>
         <source>Moment [%1]</source>
-        <translation type="unfinished">Momento [%1]</translation>
+        <translation>Momento [%1]</translation>
     </message>
     <message>
         <source>Force [%1]</source>
-        <translation type="unfinished">Fuerza [%1]</translation>
+        <translation>Fuerza [%1]</translation>
     </message>
     <message>
         <source>Tracking of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Seguimiento de %1</translation>
     </message>
     <message>
         <source>Rotation [%1]</source>
-        <translation type="unfinished">Rotación [%1]</translation>
+        <translation>Rotación [%1]</translation>
     </message>
     <message>
         <source>Deformation [%1]</source>
-        <translation type="unfinished">Deformación [%1]</translation>
+        <translation>Deformación [%1]</translation>
     </message>
     <message>
         <source>commanded</source>
-        <translation type="unfinished"></translation>
+        <translation>ordenado</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation>medido</translation>
     </message>
     <message>
         <source>Inspector fit error</source>
-        <translation type="unfinished"></translation>
+        <translation>Error de ajuste del inspector</translation>
     </message>
     <message>
         <source>Fit error [-]</source>
-        <translation type="unfinished"></translation>
+        <translation>Error de ajuste [-]</translation>
     </message>
     <message>
         <source>fit error</source>
-        <translation type="unfinished"></translation>
+        <translation>error de ajuste</translation>
     </message>
 </context>
 <context>
@@ -989,42 +989,42 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>auxiliary model (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>modelo auxiliar (%1)</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::LivePlotsPanel</name>
     <message>
         <source>PNG image (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>Imagen PNG (*.png)</translation>
     </message>
     <message>
         <source>SVG drawing (*.svg)</source>
-        <translation type="unfinished"></translation>
+        <translation>Dibujo SVG (*.svg)</translation>
     </message>
     <message>
         <source>PDF document (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>Documento PDF (*.pdf)</translation>
     </message>
     <message>
         <source>Export this plot...</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar esta gráfica...</translation>
     </message>
     <message>
         <source>Export all plots...</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar todas las gráficas...</translation>
     </message>
     <message>
         <source>Export plot</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar gráfica</translation>
     </message>
     <message>
         <source>Export failed</source>
-        <translation type="unfinished"></translation>
+        <translation>Error al exportar</translation>
     </message>
     <message>
         <source>Export all plots to</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar todas las gráficas a</translation>
     </message>
 </context>
 <context>
@@ -1067,105 +1067,105 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Acknowledge all</source>
-        <translation type="unfinished"></translation>
+        <translation>Reconocer todas</translation>
     </message>
     <message>
         <source>Test setup</source>
-        <translation type="unfinished"></translation>
+        <translation>Configuración del ensayo</translation>
     </message>
     <message>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parámetros</translation>
     </message>
     <message>
         <source>Pending updates</source>
-        <translation type="unfinished"></translation>
+        <translation>Actualizaciones pendientes</translation>
     </message>
     <message>
         <source>Acknowledge selected</source>
-        <translation type="unfinished"></translation>
+        <translation>Reconocer seleccionadas</translation>
     </message>
     <message>
         <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation type="unfinished"></translation>
+        <translation>Las alarmas críticas permanecen en rojo hasta que se reconocen (doble clic o los botones).</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Archivo</translation>
     </message>
     <message>
         <source>&amp;Open configuration...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Abrir configuración...</translation>
     </message>
     <message>
         <source>Open &amp;recent</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir &amp;reciente</translation>
     </message>
     <message>
         <source>Open r&amp;ecord...</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir r&amp;egistro...</translation>
     </message>
     <message>
         <source>&amp;Settings...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Preferencias...</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Salir</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ver</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>(ninguno)</translation>
     </message>
     <message>
         <source>update #%1 approved by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>actualización #%1 aprobada por el operador</translation>
     </message>
     <message>
         <source>update #%1 rejected by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>actualización #%1 rechazada por el operador</translation>
     </message>
     <message>
         <source>setup not applied: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>configuración no aplicada: %1</translation>
     </message>
     <message>
         <source>preparing the test (pre-flight)...</source>
-        <translation type="unfinished"></translation>
+        <translation>preparando el ensayo (comprobación previa)...</translation>
     </message>
     <message>
         <source>start cancelled at the pre-flight check</source>
-        <translation type="unfinished"></translation>
+        <translation>inicio cancelado en la comprobación previa</translation>
     </message>
     <message>
         <source>pre-flight confirmed by the operator (zero offsets)</source>
-        <translation type="unfinished"></translation>
+        <translation>comprobación previa confirmada por el operador (ajuste de cero)</translation>
     </message>
     <message>
         <source>built-in virtual lab</source>
-        <translation type="unfinished"></translation>
+        <translation>laboratorio virtual integrado</translation>
     </message>
     <message>
         <source>%1 fault</source>
-        <translation type="unfinished"></translation>
+        <translation>fallo de %1</translation>
     </message>
     <message>
         <source>%1 connected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 conectado</translation>
     </message>
     <message>
         <source>%1 (connects at start)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (se conecta al iniciar)</translation>
     </message>
     <message numerus="yes">
         <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n alarma crítica sin reconocer. Última: %1</numerusform>
+            <numerusform>%n alarmas críticas sin reconocer. Última: %1</numerusform>
         </translation>
     </message>
 </context>
@@ -1192,493 +1192,494 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <name>hsmu::gui::ParameterTableModel</name>
     <message>
         <source>Double-click to edit; effective on the next step</source>
-        <translation type="unfinished"></translation>
+        <translation>Doble clic para editar; efectivo en el siguiente paso</translation>
     </message>
     <message>
         <source>Parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Parámetro</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor</translation>
     </message>
     <message>
         <source>Sigma</source>
-        <translation type="unfinished"></translation>
+        <translation>Sigma</translation>
     </message>
     <message>
         <source>Lower</source>
-        <translation type="unfinished"></translation>
+        <translation>Inferior</translation>
     </message>
     <message>
         <source>Upper</source>
-        <translation type="unfinished"></translation>
+        <translation>Superior</translation>
     </message>
     <message>
         <source>Lock</source>
-        <translation type="unfinished"></translation>
+        <translation>Bloquear</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &apos;%2&apos; no es un número</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::ParametersPanel</name>
     <message>
         <source>No online model updating in this test.</source>
-        <translation type="unfinished"></translation>
+        <translation>Este ensayo no tiene actualización del modelo en línea.</translation>
     </message>
     <message>
         <source>Normalized RMS fit error above which the inspector requests an update; effective on the next step</source>
-        <translation type="unfinished"></translation>
+        <translation>Error de ajuste RMS normalizado por encima del cual el inspector solicita una actualización; efectivo en el siguiente paso</translation>
     </message>
     <message>
         <source>Fit-error threshold [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>Umbral del error de ajuste [-]:</translation>
     </message>
     <message>
         <source>Value, sigma (1 standard deviation) and bounds in the law&apos;s normalized units (u / u_ref, F / F_ref). Double-click a bound to edit it; bound and lock edits take effect on the next step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor, sigma (1 desviación estándar) y límites en las unidades normalizadas de la ley (u / u_ref, F / F_ref). Haga doble clic en un límite para editarlo; los cambios de límites y bloqueos surten efecto en el siguiente paso.</translation>
     </message>
     <message>
         <source>%1 on %2 at step %3: fit error e = %4 (threshold %5), %6 updates applied</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 en %2 en el paso %3: error de ajuste e = %4 (umbral %5), %6 actualizaciones aplicadas</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::PendingUpdatesPanel</name>
     <message>
         <source>every step</source>
-        <translation type="unfinished"></translation>
+        <translation>en cada paso</translation>
     </message>
     <message>
         <source>at zero-force crossings of the target</source>
-        <translation type="unfinished"></translation>
+        <translation>en los cruces por fuerza cero del objetivo</translation>
     </message>
     <message>
         <source>every N steps</source>
-        <translation type="unfinished"></translation>
+        <translation>cada N pasos</translation>
     </message>
     <message>
         <source>on the operator&apos;s approval</source>
-        <translation type="unfinished"></translation>
+        <translation>con la aprobación del operador</translation>
     </message>
     <message>
         <source>N = </source>
-        <translation type="unfinished"></translation>
+        <translation>N = </translation>
     </message>
     <message>
         <source>Parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Parámetro</translation>
     </message>
     <message>
         <source>Current</source>
-        <translation type="unfinished"></translation>
+        <translation>Actual</translation>
     </message>
     <message>
         <source>Proposed</source>
-        <translation type="unfinished"></translation>
+        <translation>Propuesto</translation>
     </message>
     <message>
         <source>Change [%]</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambio [%]</translation>
     </message>
     <message>
         <source>Current and proposed values in the law&apos;s normalized units</source>
-        <translation type="unfinished"></translation>
+        <translation>Valores actual y propuesto en las unidades normalizadas de la ley</translation>
     </message>
     <message>
         <source>Apply updates:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar actualizaciones:</translation>
     </message>
     <message>
         <source>No online model updating in this test.</source>
-        <translation type="unfinished"></translation>
+        <translation>Este ensayo no tiene actualización del modelo en línea.</translation>
     </message>
     <message>
         <source>Updates are applied %1; choose &quot;on the operator&apos;s approval&quot; to decide each one.</source>
-        <translation type="unfinished"></translation>
+        <translation>Las actualizaciones se aplican %1; elija &quot;con la aprobación del operador&quot; para decidir cada una.</translation>
     </message>
     <message numerus="yes">
         <source>%n update(s) waiting for a decision.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n actualización en espera de una decisión.</numerusform>
+            <numerusform>%n actualizaciones en espera de una decisión.</numerusform>
         </translation>
     </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>#%1 %2 en t = %3 s (paso %4)</translation>
     </message>
     <message>
         <source>Approve</source>
-        <translation type="unfinished"></translation>
+        <translation>Aprobar</translation>
     </message>
     <message>
         <source>Reject</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechazar</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::PreflightDialog</name>
     <message>
         <source>Pre-flight check</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprobación previa</translation>
     </message>
     <message>
         <source>Integration and stability</source>
-        <translation type="unfinished"></translation>
+        <translation>Integración y estabilidad</translation>
     </message>
     <message>
         <source>Integrator:</source>
-        <translation type="unfinished"></translation>
+        <translation>Integrador:</translation>
     </message>
     <message>
         <source>Time step dt [s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso de tiempo dt [s]:</translation>
     </message>
     <message>
         <source>Steps:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasos:</translation>
     </message>
     <message>
         <source>Ground motion:</source>
-        <translation type="unfinished"></translation>
+        <translation>Movimiento del suelo:</translation>
     </message>
     <message>
         <source>%1, PGA %2 m/s²</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, PGA %2 m/s²</translation>
     </message>
     <message>
         <source>omega_max [rad/s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>omega_max [rad/s]:</translation>
     </message>
     <message>
         <source>omega_max dt [-] / limit:</source>
-        <translation type="unfinished"></translation>
+        <translation>omega_max dt [-] / límite:</translation>
     </message>
     <message>
         <source>%1 / %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2</translation>
     </message>
     <message>
         <source>unconditionally stable</source>
-        <translation type="unfinished"></translation>
+        <translation>incondicionalmente estable</translation>
     </message>
     <message>
         <source>Stable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Estable: %1</translation>
     </message>
     <message>
         <source>UNSTABLE: %1%2</source>
-        <translation type="unfinished"></translation>
+        <translation>INESTABLE: %1%2</translation>
     </message>
     <message>
         <source> (forced by the configuration)</source>
-        <translation type="unfinished"></translation>
+        <translation> (forzado por la configuración)</translation>
     </message>
     <message>
         <source>Check:</source>
-        <translation type="unfinished"></translation>
+        <translation>Verificación:</translation>
     </message>
     <message>
         <source>Specimens: limits and initial measured values</source>
-        <translation type="unfinished"></translation>
+        <translation>Probetas: límites y valores medidos iniciales</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>Element</source>
-        <translation type="unfinished"></translation>
+        <translation>Elemento</translation>
     </message>
     <message>
         <source>Max |d|</source>
-        <translation type="unfinished"></translation>
+        <translation>Máx. |d|</translation>
     </message>
     <message>
         <source>Max |F|</source>
-        <translation type="unfinished"></translation>
+        <translation>Máx. |F|</translation>
     </message>
     <message>
         <source>Max |Δd| per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Máx. |Δd| por paso</translation>
     </message>
     <message>
         <source>Measured d</source>
-        <translation type="unfinished"></translation>
+        <translation>d medido</translation>
     </message>
     <message>
         <source>Measured F</source>
-        <translation type="unfinished"></translation>
+        <translation>F medida</translation>
     </message>
     <message>
         <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>d y F medidos: lo que la probeta informó tras preparar el enlace, antes de enviar ningún objetivo.</translation>
     </message>
     <message>
         <source>I confirm the zero offsets: with the specimen unloaded the actuator displacement and the load cell read zero.</source>
-        <translation type="unfinished"></translation>
+        <translation>Confirmo el ajuste de cero: con la probeta descargada, el desplazamiento del actuador y la célula de carga marcan cero.</translation>
     </message>
     <message>
         <source>Start test</source>
-        <translation type="unfinished"></translation>
+        <translation>Iniciar ensayo</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::ReplayWindow</name>
     <message>
         <source>Open record</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir registro</translation>
     </message>
     <message>
         <source>HSMU records (*.h5 *.hdf5);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Registros HSMU (*.h5 *.hdf5);;Todos los archivos (*)</translation>
     </message>
     <message>
         <source>Cannot open the record</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede abrir el registro</translation>
     </message>
     <message>
         <source>HSMU Replay - %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Reproducción HSMU - %1 (%2)</translation>
     </message>
     <message>
         <source>Replay</source>
-        <translation type="unfinished"></translation>
+        <translation>Reproducción</translation>
     </message>
     <message>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Reproducir</translation>
     </message>
     <message>
         <source> Speed </source>
-        <translation type="unfinished"></translation>
+        <translation> Velocidad </translation>
     </message>
     <message>
         <source>%1 x</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 x</translation>
     </message>
     <message>
         <source>Test seconds per wall second</source>
-        <translation type="unfinished"></translation>
+        <translation>Segundos de ensayo por segundo real</translation>
     </message>
     <message>
         <source>Scrub through the record</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazarse por el registro</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished">Pausar</translation>
+        <translation>Pausar</translation>
     </message>
     <message>
         <source> t = %1 s   step %2 of %3 </source>
-        <translation type="unfinished"></translation>
+        <translation> t = %1 s   paso %2 de %3 </translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::SettingsDialog</name>
     <message>
         <source>Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Preferencias</translation>
     </message>
     <message>
         <source>System default</source>
-        <translation type="unfinished"></translation>
+        <translation>Predeterminado del sistema</translation>
     </message>
     <message>
         <source>Clear recent files</source>
-        <translation type="unfinished"></translation>
+        <translation>Borrar archivos recientes</translation>
     </message>
     <message>
         <source>empty: tests are not recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>vacío: los ensayos no se registran</translation>
     </message>
     <message>
         <source>Browse...</source>
-        <translation type="unfinished"></translation>
+        <translation>Examinar...</translation>
     </message>
     <message>
         <source>Record folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Carpeta de registros</translation>
     </message>
     <message>
         <source>Record folder (HDF5):</source>
-        <translation type="unfinished"></translation>
+        <translation>Carpeta de registros (HDF5):</translation>
     </message>
     <message>
         <source>Language:</source>
-        <translation type="unfinished"></translation>
+        <translation>Idioma:</translation>
     </message>
     <message>
         <source>A new language applies the next time the console starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un nuevo idioma se aplica la próxima vez que se inicie la consola.</translation>
     </message>
     <message>
         <source>Recent files:</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivos recientes:</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::SetupPanel</name>
     <message>
         <source>No configuration loaded: choose a preset or open a file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ninguna configuración cargada: elija un preajuste o abra un archivo.</translation>
     </message>
     <message>
         <source>Safety limits (0 = none; the specimen&apos;s units)</source>
-        <translation type="unfinished"></translation>
+        <translation>Límites de seguridad (0 = ninguno; unidades de la probeta)</translation>
     </message>
     <message>
         <source>Specimen</source>
-        <translation type="unfinished"></translation>
+        <translation>Probeta</translation>
     </message>
     <message>
         <source>Max |d|</source>
-        <translation type="unfinished"></translation>
+        <translation>Máx. |d|</translation>
     </message>
     <message>
         <source>Max |F|</source>
-        <translation type="unfinished"></translation>
+        <translation>Máx. |F|</translation>
     </message>
     <message>
         <source>Max |Δd| per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Máx. |Δd| por paso</translation>
     </message>
     <message>
         <source>Apply (reload the test)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar (recargar el ensayo)</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Ensayo</translation>
     </message>
     <message>
         <source>the configuration&apos;s record</source>
-        <translation type="unfinished"></translation>
+        <translation>el registro de la configuración</translation>
     </message>
     <message>
         <source>Browse...</source>
-        <translation type="unfinished"></translation>
+        <translation>Examinar...</translation>
     </message>
     <message>
         <source>Ground motion file:</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo de movimiento del suelo:</translation>
     </message>
     <message>
         <source>Scale [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>Escala [-]:</translation>
     </message>
     <message>
         <source>Time step dt [s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso de tiempo dt [s]:</translation>
     </message>
     <message>
         <source>whole record</source>
-        <translation type="unfinished"></translation>
+        <translation>registro completo</translation>
     </message>
     <message>
         <source>Duration [s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>Duración [s]:</translation>
     </message>
     <message>
         <source>explicit Newmark</source>
-        <translation type="unfinished"></translation>
+        <translation>Newmark explícito</translation>
     </message>
     <message>
         <source>alpha-OS</source>
-        <translation type="unfinished"></translation>
+        <translation>alpha-OS</translation>
     </message>
     <message>
         <source>Integrator:</source>
-        <translation type="unfinished"></translation>
+        <translation>Integrador:</translation>
     </message>
     <message>
         <source>alpha-OS alpha [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>alpha de alpha-OS [-]:</translation>
     </message>
     <message>
         <source>Controller</source>
-        <translation type="unfinished"></translation>
+        <translation>Controlador</translation>
     </message>
     <message>
         <source>built-in virtual lab</source>
-        <translation type="unfinished"></translation>
+        <translation>laboratorio virtual integrado</translation>
     </message>
     <message>
         <source>hsmu-controller over TCP</source>
-        <translation type="unfinished"></translation>
+        <translation>hsmu-controller por TCP</translation>
     </message>
     <message>
         <source>Specimens driven by:</source>
-        <translation type="unfinished"></translation>
+        <translation>Probetas accionadas por:</translation>
     </message>
     <message>
         <source>Host:</source>
-        <translation type="unfinished"></translation>
+        <translation>Host:</translation>
     </message>
     <message>
         <source>Port:</source>
-        <translation type="unfinished"></translation>
+        <translation>Puerto:</translation>
     </message>
     <message>
         <source>Online model updating</source>
-        <translation type="unfinished"></translation>
+        <translation>Actualización del modelo en línea</translation>
     </message>
     <message>
         <source>enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>habilitada</translation>
     </message>
     <message>
         <source>Apply updates:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar actualizaciones:</translation>
     </message>
     <message>
         <source>N [steps]:</source>
-        <translation type="unfinished"></translation>
+        <translation>N [pasos]:</translation>
     </message>
     <message>
         <source>Fit-error threshold [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>Umbral del error de ajuste [-]:</translation>
     </message>
     <message>
         <source>Ground motion record</source>
-        <translation type="unfinished"></translation>
+        <translation>Registro de movimiento del suelo</translation>
     </message>
     <message>
         <source>Ground motions (*.AT2 *.at2 *.txt *.csv *.dat);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Movimientos del suelo (*.AT2 *.at2 *.txt *.csv *.dat);;Todos los archivos (*)</translation>
     </message>
     <message>
         <source>Configuration: %1
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Configuración: %1
+%2</translation>
     </message>
     <message>
         <source>(built in)</source>
-        <translation type="unfinished"></translation>
+        <translation>(integrada)</translation>
     </message>
     <message>
         <source>built-in %1 record</source>
-        <translation type="unfinished"></translation>
+        <translation>registro %1 integrado</translation>
     </message>
     <message>
         <source>d in %1, F in %2</source>
-        <translation type="unfinished"></translation>
+        <translation>d en %1, F en %2</translation>
     </message>
     <message>
         <source>no configuration loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>ninguna configuración cargada</translation>
     </message>
     <message>
         <source>safety limit of %1: &apos;%2&apos; is not a number &gt;= 0</source>
-        <translation type="unfinished"></translation>
+        <translation>límite de seguridad de %1: &apos;%2&apos; no es un número &gt;= 0</translation>
     </message>
     <message>
         <source>this configuration has no updating section to enable</source>
-        <translation type="unfinished"></translation>
+        <translation>esta configuración no tiene una sección updating que habilitar</translation>
     </message>
 </context>
 <context>
@@ -1697,19 +1698,19 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>no link</source>
-        <translation type="unfinished"></translation>
+        <translation>sin enlace</translation>
     </message>
     <message>
         <source>link: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>enlace: %1</translation>
     </message>
     <message>
         <source>not recording</source>
-        <translation type="unfinished"></translation>
+        <translation>sin registrar</translation>
     </message>
     <message>
         <source>recording: %1/%2</source>
-        <translation type="unfinished"></translation>
+        <translation>registrando: %1/%2</translation>
     </message>
 </context>
 <context>
@@ -1724,35 +1725,35 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>the record cannot be written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir el registro: %1</translation>
     </message>
     <message>
         <source>this test has no model updating</source>
-        <translation type="unfinished"></translation>
+        <translation>este ensayo no tiene actualización del modelo</translation>
     </message>
     <message>
         <source>%1: the lower bound must be a number not above the upper bound</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: el límite inferior debe ser un número no mayor que el límite superior</translation>
     </message>
     <message>
         <source>%1: bounds [%2, %3] refused (they would not keep the law admissible)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: límites [%2, %3] rechazados (la ley dejaría de ser admisible)</translation>
     </message>
     <message>
         <source>%1: the %2 cannot lock this parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 no puede bloquear este parámetro</translation>
     </message>
     <message>
         <source>update #%1 was not applied (no longer pending, or refused by the law; see the alarms)</source>
-        <translation type="unfinished"></translation>
+        <translation>la actualización #%1 no se aplicó (ya no está pendiente o la ley la rechazó; véanse las alarmas)</translation>
     </message>
     <message>
         <source>update #%1 is no longer pending</source>
-        <translation type="unfinished"></translation>
+        <translation>la actualización #%1 ya no está pendiente</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>el umbral del error de ajuste debe ser un número positivo</translation>
     </message>
 </context>
 </TS>

@@ -220,46 +220,46 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Actuator controller: builtin (the default) or tcp://HOST:PORT.</source>
-        <translation type="unfinished"></translation>
+        <translation>作动器控制器：builtin（默认）或 tcp://HOST:PORT。</translation>
     </message>
     <message>
         <source>--controller: %1</source>
-        <translation type="unfinished">--controller：%1</translation>
+        <translation>--controller：%1</translation>
     </message>
 </context>
 <context>
     <name>ExportCommand</name>
     <message>
         <source>Write a run record (HDF5) as CSV files, one per group.</source>
-        <translation type="unfinished"></translation>
+        <translation>将试验记录（HDF5）写为 CSV 文件，每组一个。</translation>
     </message>
     <message>
         <source>The subcommand.</source>
-        <translation type="unfinished">子命令。</translation>
+        <translation>子命令。</translation>
     </message>
     <message>
         <source>The record (record.h5).</source>
-        <translation type="unfinished"></translation>
+        <translation>记录文件（record.h5）。</translation>
     </message>
     <message>
         <source>Output directory for the CSVs.</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV 文件的输出目录。</translation>
     </message>
     <message>
         <source>expected exactly one FILE.h5</source>
-        <translation type="unfinished"></translation>
+        <translation>应恰好给出一个 FILE.h5</translation>
     </message>
     <message>
         <source>missing --csv DIR</source>
-        <translation type="unfinished"></translation>
+        <translation>缺少 --csv DIR</translation>
     </message>
     <message>
         <source>%1: cannot create the output directory</source>
-        <translation type="unfinished">%1：无法创建输出目录</translation>
+        <translation>%1：无法创建输出目录</translation>
     </message>
     <message>
         <source>%1 steps, %2 alarms; written:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 步，%2 条报警；已写出：</translation>
     </message>
 </context>
 <context>
@@ -336,168 +336,168 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <name>PlotExporter</name>
     <message>
         <source>%1: unknown plot format &apos;%2&apos; (expected png, svg or pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未知的图表格式“%2”（应为 png、svg 或 pdf）</translation>
     </message>
     <message>
         <source>%1: the plot could not be written</source>
-        <translation type="unfinished">%1：无法写出图表</translation>
+        <translation>%1：无法写出图表</translation>
     </message>
 </context>
 <context>
     <name>PreflightDialog</name>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>无</translation>
     </message>
 </context>
 <context>
     <name>ReplayCommand</name>
     <message>
         <source>Re-identify a recorded specimen, or imported measured data, offline.</source>
-        <translation type="unfinished"></translation>
+        <translation>离线重新识别已记录的试件或导入的实测数据。</translation>
     </message>
     <message>
         <source>The subcommand.</source>
-        <translation type="unfinished">子命令。</translation>
+        <translation>子命令。</translation>
     </message>
     <message>
         <source>A run record (record.h5).</source>
-        <translation type="unfinished"></translation>
+        <translation>试验记录文件（record.h5）。</translation>
     </message>
     <message>
         <source>Re-run the identification headless.</source>
-        <translation type="unfinished"></translation>
+        <translation>以无界面方式重新运行参数识别。</translation>
     </message>
     <message>
         <source>Measured data: CSV of time, deformation, force with units.</source>
-        <translation type="unfinished"></translation>
+        <translation>实测数据：包含时间、变形、力及其单位的 CSV。</translation>
     </message>
     <message>
         <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</source>
-        <translation type="unfinished"></translation>
+        <translation>导入列（时间、变形、力）的单位，例如 s,mm,kN。</translation>
     </message>
     <message>
         <source>ukf or nelder-mead.</source>
-        <translation type="unfinished"></translation>
+        <translation>ukf 或 nelder-mead。</translation>
     </message>
     <message>
         <source>JSON with &quot;model&quot; and/or &quot;updating&quot; settings to override.</source>
-        <translation type="unfinished"></translation>
+        <translation>用于覆盖 &quot;model&quot; 和/或 &quot;updating&quot; 设置的 JSON。</translation>
     </message>
     <message>
         <source>The recorded specimen to identify.</source>
-        <translation type="unfinished"></translation>
+        <translation>要识别的已记录试件。</translation>
     </message>
     <message>
         <source>Output directory.</source>
-        <translation type="unfinished">输出目录。</translation>
+        <translation>输出目录。</translation>
     </message>
     <message>
         <source>unexpected argument &apos;%1&apos;</source>
-        <translation type="unfinished">意外的参数“%1”</translation>
+        <translation>意外的参数“%1”</translation>
     </message>
     <message>
         <source>give either FILE.h5 or --import DATA.csv, not both</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出 FILE.h5 或 --import DATA.csv，不能同时给出</translation>
     </message>
     <message>
         <source>expected FILE.h5 (a run record) or --import DATA.csv</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 FILE.h5（试验记录）或 --import DATA.csv</translation>
     </message>
     <message>
         <source>--units applies to --import only (a record has its units)</source>
-        <translation type="unfinished"></translation>
+        <translation>--units 仅适用于 --import（记录自带单位）</translation>
     </message>
     <message>
         <source>missing --out DIR</source>
-        <translation type="unfinished">缺少 --out DIR</translation>
+        <translation>缺少 --out DIR</translation>
     </message>
     <message>
         <source>%1 identification of %2: %3 samples, dt %4 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 的 %1 识别：%3 个样本，dt %4 s</translation>
     </message>
     <message>
         <source>parameter</source>
-        <translation type="unfinished">参数</translation>
+        <translation>参数</translation>
     </message>
     <message>
         <source>initial</source>
-        <translation type="unfinished">初始</translation>
+        <translation>初始</translation>
     </message>
     <message>
         <source>final</source>
-        <translation type="unfinished"></translation>
+        <translation>最终</translation>
     </message>
     <message>
         <source>std</source>
-        <translation type="unfinished">标准差</translation>
+        <translation>标准差</translation>
     </message>
     <message>
         <source>online</source>
-        <translation type="unfinished"></translation>
+        <translation>在线</translation>
     </message>
     <message>
         <source>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</source>
-        <translation type="unfinished"></translation>
+        <translation>  最终模型在整个时程上：力的 RMS 误差 %1 %2（为 RMS 力的 %3 %）；结束时检查器拟合误差 %4 %</translation>
     </message>
     <message>
         <source>  Nelder-Mead fits accepted: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>  已接受的 Nelder-Mead 拟合：%1</translation>
     </message>
     <message>
         <source>  estimator warnings: %1 (see summary.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>  估计器警告：%1（见 summary.json）</translation>
     </message>
     <message>
         <source>  outputs: %1</source>
-        <translation type="unfinished">  输出：%1</translation>
+        <translation>  输出：%1</translation>
     </message>
     <message>
         <source>%1: cannot create the output directory</source>
-        <translation type="unfinished">%1：无法创建输出目录</translation>
+        <translation>%1：无法创建输出目录</translation>
     </message>
 </context>
 <context>
     <name>ReplayWindowCommand</name>
     <message>
         <source>Replay a recorded test (an HDF5 run record) in a window.</source>
-        <translation type="unfinished"></translation>
+        <translation>在窗口中回放已记录的试验（HDF5 试验记录）。</translation>
     </message>
     <message>
         <source>The subcommand.</source>
-        <translation type="unfinished">子命令。</translation>
+        <translation>子命令。</translation>
     </message>
     <message>
         <source>The run record (record.h5).</source>
-        <translation type="unfinished"></translation>
+        <translation>试验记录文件（record.h5）。</translation>
     </message>
     <message>
         <source>Test seconds per wall second (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>每秒实际时间对应的试验秒数（默认 1）。</translation>
     </message>
     <message>
         <source>Start playing at once.</source>
-        <translation type="unfinished"></translation>
+        <translation>立即开始播放。</translation>
     </message>
     <message>
         <source>Grab the window into this PNG file, then quit.</source>
-        <translation type="unfinished">将窗口截图保存到此 PNG 文件，然后退出。</translation>
+        <translation>将窗口截图保存到此 PNG 文件，然后退出。</translation>
     </message>
     <message>
         <source>Seconds before the screenshot (default 3).</source>
-        <translation type="unfinished">截图前等待的秒数（默认 4）。 {3)?}</translation>
+        <translation>截图前等待的秒数（默认 3）。</translation>
     </message>
     <message>
         <source>expected one record file: hsmu replay FILE.h5</source>
-        <translation type="unfinished"></translation>
+        <translation>应给出一个记录文件：hsmu replay FILE.h5</translation>
     </message>
     <message>
         <source>--speed: expected a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>--speed：应为正数</translation>
     </message>
     <message>
         <source>--screenshot-after: expected a number of seconds</source>
-        <translation type="unfinished">--screenshot-after：应为秒数</translation>
+        <translation>--screenshot-after：应为秒数</translation>
     </message>
 </context>
 <context>
@@ -544,7 +544,7 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>hsmu run: connecting to %1 (%2 protocol)</source>
-        <translation type="unfinished"></translation>
+        <translation>hsmu run：正在连接 %1（%2 协议）</translation>
     </message>
 </context>
 <context>
@@ -607,7 +607,7 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration&apos;s controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco&apos;s GenericTCP).</source>
-        <translation type="unfinished"></translation>
+        <translation>作动器控制器：builtin（进程内虚拟试件，默认）、tcp://HOST:PORT（hsmu-controller 或实验室控制器，使用配置中的 controller.protocol，默认为 native）、simapp://HOST:PORT（OpenFresco SimApp 服务器）或 generictcp://HOST:PORT（供 OpenFresco GenericTCP 使用的服务器）。</translation>
     </message>
 </context>
 <context>
@@ -748,39 +748,39 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Time [s]</source>
-        <translation type="unfinished">时间 [s]</translation>
+        <translation>时间 [s]</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>步</translation>
     </message>
     <message>
         <source>Severity</source>
-        <translation type="unfinished"></translation>
+        <translation>严重程度</translation>
     </message>
     <message>
         <source>Kind</source>
-        <translation type="unfinished"></translation>
+        <translation>类型</translation>
     </message>
     <message>
         <source>Message</source>
-        <translation type="unfinished"></translation>
+        <translation>消息</translation>
     </message>
     <message>
         <source>Acknowledged</source>
-        <translation type="unfinished"></translation>
+        <translation>已确认</translation>
     </message>
     <message>
         <source>console</source>
-        <translation type="unfinished"></translation>
+        <translation>控制台</translation>
     </message>
     <message>
         <source>no</source>
-        <translation type="unfinished"></translation>
+        <translation>否</translation>
     </message>
     <message>
         <source>yes, %1</source>
-        <translation type="unfinished"></translation>
+        <translation>是，%1</translation>
     </message>
 </context>
 <context>
@@ -851,19 +851,19 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Single step</source>
-        <translation type="unfinished"></translation>
+        <translation>单步</translation>
     </message>
     <message>
         <source>Run exactly one integration step, then stay paused</source>
-        <translation type="unfinished"></translation>
+        <translation>只运行一个积分步，然后保持暂停</translation>
     </message>
     <message>
         <source>Emergency hold (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>紧急保持（%1）</translation>
     </message>
     <message>
         <source>Hold the test at once, between two steps (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>在两步之间立即保持试验（%1）</translation>
     </message>
 </context>
 <context>
@@ -894,55 +894,55 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Force history</source>
-        <translation type="unfinished"></translation>
+        <translation>力时程</translation>
     </message>
     <message>
         <source>Force</source>
-        <translation type="unfinished">力</translation>
+        <translation>力</translation>
     </message>
     <message>
         <source>Moment history</source>
-        <translation type="unfinished"></translation>
+        <translation>弯矩时程</translation>
     </message>
     <message>
         <source>Moment [%1]</source>
-        <translation type="unfinished">弯矩 [%1]</translation>
+        <translation>弯矩 [%1]</translation>
     </message>
     <message>
         <source>Force [%1]</source>
-        <translation type="unfinished">力 [%1]</translation>
+        <translation>力 [%1]</translation>
     </message>
     <message>
         <source>Tracking of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 的跟踪</translation>
     </message>
     <message>
         <source>Rotation [%1]</source>
-        <translation type="unfinished">转角 [%1]</translation>
+        <translation>转角 [%1]</translation>
     </message>
     <message>
         <source>Deformation [%1]</source>
-        <translation type="unfinished">变形 [%1]</translation>
+        <translation>变形 [%1]</translation>
     </message>
     <message>
         <source>commanded</source>
-        <translation type="unfinished"></translation>
+        <translation>指令值</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation>实测值</translation>
     </message>
     <message>
         <source>Inspector fit error</source>
-        <translation type="unfinished"></translation>
+        <translation>检查器拟合误差</translation>
     </message>
     <message>
         <source>Fit error [-]</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合误差 [-]</translation>
     </message>
     <message>
         <source>fit error</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合误差</translation>
     </message>
 </context>
 <context>
@@ -989,42 +989,42 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>auxiliary model (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>辅助模型（%1）</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::LivePlotsPanel</name>
     <message>
         <source>PNG image (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
         <source>SVG drawing (*.svg)</source>
-        <translation type="unfinished"></translation>
+        <translation>SVG 矢量图 (*.svg)</translation>
     </message>
     <message>
         <source>PDF document (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
         <source>Export this plot...</source>
-        <translation type="unfinished"></translation>
+        <translation>导出此图表...</translation>
     </message>
     <message>
         <source>Export all plots...</source>
-        <translation type="unfinished"></translation>
+        <translation>导出所有图表...</translation>
     </message>
     <message>
         <source>Export plot</source>
-        <translation type="unfinished"></translation>
+        <translation>导出图表</translation>
     </message>
     <message>
         <source>Export failed</source>
-        <translation type="unfinished"></translation>
+        <translation>导出失败</translation>
     </message>
     <message>
         <source>Export all plots to</source>
-        <translation type="unfinished"></translation>
+        <translation>将所有图表导出到</translation>
     </message>
 </context>
 <context>
@@ -1067,104 +1067,104 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>Acknowledge all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部确认</translation>
     </message>
     <message>
         <source>Test setup</source>
-        <translation type="unfinished"></translation>
+        <translation>试验设置</translation>
     </message>
     <message>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>参数</translation>
     </message>
     <message>
         <source>Pending updates</source>
-        <translation type="unfinished"></translation>
+        <translation>待处理更新</translation>
     </message>
     <message>
         <source>Acknowledge selected</source>
-        <translation type="unfinished"></translation>
+        <translation>确认所选</translation>
     </message>
     <message>
         <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation type="unfinished"></translation>
+        <translation>严重报警在确认前保持红色（双击或使用按钮确认）。</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>文件(&amp;F)</translation>
     </message>
     <message>
         <source>&amp;Open configuration...</source>
-        <translation type="unfinished"></translation>
+        <translation>打开配置(&amp;O)...</translation>
     </message>
     <message>
         <source>Open &amp;recent</source>
-        <translation type="unfinished"></translation>
+        <translation>最近打开(&amp;R)</translation>
     </message>
     <message>
         <source>Open r&amp;ecord...</source>
-        <translation type="unfinished"></translation>
+        <translation>打开记录(&amp;E)...</translation>
     </message>
     <message>
         <source>&amp;Settings...</source>
-        <translation type="unfinished"></translation>
+        <translation>设置(&amp;S)...</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>退出(&amp;Q)</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>视图(&amp;V)</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>（无）</translation>
     </message>
     <message>
         <source>update #%1 approved by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>更新 #%1 已由操作员批准</translation>
     </message>
     <message>
         <source>update #%1 rejected by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>更新 #%1 已被操作员拒绝</translation>
     </message>
     <message>
         <source>setup not applied: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>设置未应用：%1</translation>
     </message>
     <message>
         <source>preparing the test (pre-flight)...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在准备试验（预检）...</translation>
     </message>
     <message>
         <source>start cancelled at the pre-flight check</source>
-        <translation type="unfinished"></translation>
+        <translation>启动已在预检时取消</translation>
     </message>
     <message>
         <source>pre-flight confirmed by the operator (zero offsets)</source>
-        <translation type="unfinished"></translation>
+        <translation>预检已由操作员确认（零点偏移）</translation>
     </message>
     <message>
         <source>built-in virtual lab</source>
-        <translation type="unfinished"></translation>
+        <translation>内置虚拟实验室</translation>
     </message>
     <message>
         <source>%1 fault</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 故障</translation>
     </message>
     <message>
         <source>%1 connected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 已连接</translation>
     </message>
     <message>
         <source>%1 (connects at start)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（启动时连接）</translation>
     </message>
     <message numerus="yes">
         <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n 条严重报警未确认。最新：%1</numerusform>
         </translation>
     </message>
 </context>
@@ -1191,492 +1191,493 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <name>hsmu::gui::ParameterTableModel</name>
     <message>
         <source>Double-click to edit; effective on the next step</source>
-        <translation type="unfinished"></translation>
+        <translation>双击编辑；下一步生效</translation>
     </message>
     <message>
         <source>Parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>参数</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>值</translation>
     </message>
     <message>
         <source>Sigma</source>
-        <translation type="unfinished"></translation>
+        <translation>σ</translation>
     </message>
     <message>
         <source>Lower</source>
-        <translation type="unfinished"></translation>
+        <translation>下限</translation>
     </message>
     <message>
         <source>Upper</source>
-        <translation type="unfinished"></translation>
+        <translation>上限</translation>
     </message>
     <message>
         <source>Lock</source>
-        <translation type="unfinished"></translation>
+        <translation>锁定</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：“%2”不是数值</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::ParametersPanel</name>
     <message>
         <source>No online model updating in this test.</source>
-        <translation type="unfinished"></translation>
+        <translation>本试验未启用在线模型更新。</translation>
     </message>
     <message>
         <source>Normalized RMS fit error above which the inspector requests an update; effective on the next step</source>
-        <translation type="unfinished"></translation>
+        <translation>归一化 RMS 拟合误差超过此值时检查器请求更新；下一步生效</translation>
     </message>
     <message>
         <source>Fit-error threshold [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合误差阈值 [-]：</translation>
     </message>
     <message>
         <source>Value, sigma (1 standard deviation) and bounds in the law&apos;s normalized units (u / u_ref, F / F_ref). Double-click a bound to edit it; bound and lock edits take effect on the next step.</source>
-        <translation type="unfinished"></translation>
+        <translation>值、σ（1 倍标准差）及边界均采用滞回模型的归一化单位（u / u_ref，F / F_ref）。双击边界可编辑；边界和锁定的修改在下一步生效。</translation>
     </message>
     <message>
         <source>%1 on %2 at step %3: fit error e = %4 (threshold %5), %6 updates applied</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 上的 %1，第 %3 步：拟合误差 e = %4（阈值 %5），已应用 %6 次更新</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::PendingUpdatesPanel</name>
     <message>
         <source>every step</source>
-        <translation type="unfinished"></translation>
+        <translation>每一步</translation>
     </message>
     <message>
         <source>at zero-force crossings of the target</source>
-        <translation type="unfinished"></translation>
+        <translation>在目标力过零时</translation>
     </message>
     <message>
         <source>every N steps</source>
-        <translation type="unfinished"></translation>
+        <translation>每 N 步</translation>
     </message>
     <message>
         <source>on the operator&apos;s approval</source>
-        <translation type="unfinished"></translation>
+        <translation>经操作员批准后</translation>
     </message>
     <message>
         <source>N = </source>
-        <translation type="unfinished"></translation>
+        <translation>N = </translation>
     </message>
     <message>
         <source>Parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>参数</translation>
     </message>
     <message>
         <source>Current</source>
-        <translation type="unfinished"></translation>
+        <translation>当前值</translation>
     </message>
     <message>
         <source>Proposed</source>
-        <translation type="unfinished"></translation>
+        <translation>建议值</translation>
     </message>
     <message>
         <source>Change [%]</source>
-        <translation type="unfinished"></translation>
+        <translation>变化 [%]</translation>
     </message>
     <message>
         <source>Current and proposed values in the law&apos;s normalized units</source>
-        <translation type="unfinished"></translation>
+        <translation>当前值和建议值均采用滞回模型的归一化单位</translation>
     </message>
     <message>
         <source>Apply updates:</source>
-        <translation type="unfinished"></translation>
+        <translation>应用更新：</translation>
     </message>
     <message>
         <source>No online model updating in this test.</source>
-        <translation type="unfinished"></translation>
+        <translation>本试验未启用在线模型更新。</translation>
     </message>
     <message>
         <source>Updates are applied %1; choose &quot;on the operator&apos;s approval&quot; to decide each one.</source>
-        <translation type="unfinished"></translation>
+        <translation>更新应用方式：%1；选择“经操作员批准后”可逐一决定。</translation>
     </message>
     <message numerus="yes">
         <source>%n update(s) waiting for a decision.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n 个更新等待决定。</numerusform>
         </translation>
     </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>#%1 %2，t = %3 s（第 %4 步）</translation>
     </message>
     <message>
         <source>Approve</source>
-        <translation type="unfinished"></translation>
+        <translation>批准</translation>
     </message>
     <message>
         <source>Reject</source>
-        <translation type="unfinished"></translation>
+        <translation>拒绝</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::PreflightDialog</name>
     <message>
         <source>Pre-flight check</source>
-        <translation type="unfinished"></translation>
+        <translation>预检</translation>
     </message>
     <message>
         <source>Integration and stability</source>
-        <translation type="unfinished"></translation>
+        <translation>积分与稳定性</translation>
     </message>
     <message>
         <source>Integrator:</source>
-        <translation type="unfinished"></translation>
+        <translation>积分器：</translation>
     </message>
     <message>
         <source>Time step dt [s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>时间步长 dt [s]：</translation>
     </message>
     <message>
         <source>Steps:</source>
-        <translation type="unfinished"></translation>
+        <translation>步数：</translation>
     </message>
     <message>
         <source>Ground motion:</source>
-        <translation type="unfinished"></translation>
+        <translation>地震动：</translation>
     </message>
     <message>
         <source>%1, PGA %2 m/s²</source>
-        <translation type="unfinished"></translation>
+        <translation>%1，PGA %2 m/s²</translation>
     </message>
     <message>
         <source>omega_max [rad/s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>omega_max [rad/s]：</translation>
     </message>
     <message>
         <source>omega_max dt [-] / limit:</source>
-        <translation type="unfinished"></translation>
+        <translation>omega_max dt [-] / 极限：</translation>
     </message>
     <message>
         <source>%1 / %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2</translation>
     </message>
     <message>
         <source>unconditionally stable</source>
-        <translation type="unfinished"></translation>
+        <translation>无条件稳定</translation>
     </message>
     <message>
         <source>Stable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>稳定：%1</translation>
     </message>
     <message>
         <source>UNSTABLE: %1%2</source>
-        <translation type="unfinished"></translation>
+        <translation>不稳定：%1%2</translation>
     </message>
     <message>
         <source> (forced by the configuration)</source>
-        <translation type="unfinished"></translation>
+        <translation> （由配置强制）</translation>
     </message>
     <message>
         <source>Check:</source>
-        <translation type="unfinished"></translation>
+        <translation>检查结果：</translation>
     </message>
     <message>
         <source>Specimens: limits and initial measured values</source>
-        <translation type="unfinished"></translation>
+        <translation>试件：限值与初始实测值</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source>Element</source>
-        <translation type="unfinished"></translation>
+        <translation>单元</translation>
     </message>
     <message>
         <source>Max |d|</source>
-        <translation type="unfinished"></translation>
+        <translation>最大 |d|</translation>
     </message>
     <message>
         <source>Max |F|</source>
-        <translation type="unfinished"></translation>
+        <translation>最大 |F|</translation>
     </message>
     <message>
         <source>Max |Δd| per step</source>
-        <translation type="unfinished"></translation>
+        <translation>每步最大 |Δd|</translation>
     </message>
     <message>
         <source>Measured d</source>
-        <translation type="unfinished"></translation>
+        <translation>实测 d</translation>
     </message>
     <message>
         <source>Measured F</source>
-        <translation type="unfinished"></translation>
+        <translation>实测 F</translation>
     </message>
     <message>
         <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>实测 d 和 F：链路准备就绪后、发送任何目标值之前试件报告的数值。</translation>
     </message>
     <message>
         <source>I confirm the zero offsets: with the specimen unloaded the actuator displacement and the load cell read zero.</source>
-        <translation type="unfinished"></translation>
+        <translation>我确认零点偏移：试件卸载时，作动器位移和力传感器读数均为零。</translation>
     </message>
     <message>
         <source>Start test</source>
-        <translation type="unfinished"></translation>
+        <translation>开始试验</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::ReplayWindow</name>
     <message>
         <source>Open record</source>
-        <translation type="unfinished"></translation>
+        <translation>打开记录</translation>
     </message>
     <message>
         <source>HSMU records (*.h5 *.hdf5);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>HSMU 记录 (*.h5 *.hdf5);;所有文件 (*)</translation>
     </message>
     <message>
         <source>Cannot open the record</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开记录</translation>
     </message>
     <message>
         <source>HSMU Replay - %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>HSMU 回放 - %1（%2）</translation>
     </message>
     <message>
         <source>Replay</source>
-        <translation type="unfinished"></translation>
+        <translation>回放</translation>
     </message>
     <message>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>播放</translation>
     </message>
     <message>
         <source> Speed </source>
-        <translation type="unfinished"></translation>
+        <translation> 速度 </translation>
     </message>
     <message>
         <source>%1 x</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 倍</translation>
     </message>
     <message>
         <source>Test seconds per wall second</source>
-        <translation type="unfinished"></translation>
+        <translation>每秒实际时间对应的试验秒数</translation>
     </message>
     <message>
         <source>Scrub through the record</source>
-        <translation type="unfinished"></translation>
+        <translation>拖动浏览记录</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished">暂停</translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source> t = %1 s   step %2 of %3 </source>
-        <translation type="unfinished"></translation>
+        <translation> t = %1 s   第 %2 / %3 步 </translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::SettingsDialog</name>
     <message>
         <source>Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>设置</translation>
     </message>
     <message>
         <source>System default</source>
-        <translation type="unfinished"></translation>
+        <translation>系统默认</translation>
     </message>
     <message>
         <source>Clear recent files</source>
-        <translation type="unfinished"></translation>
+        <translation>清除最近文件</translation>
     </message>
     <message>
         <source>empty: tests are not recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>留空：不记录试验</translation>
     </message>
     <message>
         <source>Browse...</source>
-        <translation type="unfinished"></translation>
+        <translation>浏览...</translation>
     </message>
     <message>
         <source>Record folder</source>
-        <translation type="unfinished"></translation>
+        <translation>记录文件夹</translation>
     </message>
     <message>
         <source>Record folder (HDF5):</source>
-        <translation type="unfinished"></translation>
+        <translation>记录文件夹（HDF5）：</translation>
     </message>
     <message>
         <source>Language:</source>
-        <translation type="unfinished"></translation>
+        <translation>语言：</translation>
     </message>
     <message>
         <source>A new language applies the next time the console starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>新语言将在下次启动控制台时生效。</translation>
     </message>
     <message>
         <source>Recent files:</source>
-        <translation type="unfinished"></translation>
+        <translation>最近文件：</translation>
     </message>
 </context>
 <context>
     <name>hsmu::gui::SetupPanel</name>
     <message>
         <source>No configuration loaded: choose a preset or open a file.</source>
-        <translation type="unfinished"></translation>
+        <translation>未加载配置：请选择预设或打开文件。</translation>
     </message>
     <message>
         <source>Safety limits (0 = none; the specimen&apos;s units)</source>
-        <translation type="unfinished"></translation>
+        <translation>安全限值（0 = 无；采用试件的单位）</translation>
     </message>
     <message>
         <source>Specimen</source>
-        <translation type="unfinished"></translation>
+        <translation>试件</translation>
     </message>
     <message>
         <source>Max |d|</source>
-        <translation type="unfinished"></translation>
+        <translation>最大 |d|</translation>
     </message>
     <message>
         <source>Max |F|</source>
-        <translation type="unfinished"></translation>
+        <translation>最大 |F|</translation>
     </message>
     <message>
         <source>Max |Δd| per step</source>
-        <translation type="unfinished"></translation>
+        <translation>每步最大 |Δd|</translation>
     </message>
     <message>
         <source>Apply (reload the test)</source>
-        <translation type="unfinished"></translation>
+        <translation>应用（重新加载试验）</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>the configuration&apos;s record</source>
-        <translation type="unfinished"></translation>
+        <translation>配置中的记录</translation>
     </message>
     <message>
         <source>Browse...</source>
-        <translation type="unfinished"></translation>
+        <translation>浏览...</translation>
     </message>
     <message>
         <source>Ground motion file:</source>
-        <translation type="unfinished"></translation>
+        <translation>地震动文件：</translation>
     </message>
     <message>
         <source>Scale [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>缩放系数 [-]：</translation>
     </message>
     <message>
         <source>Time step dt [s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>时间步长 dt [s]：</translation>
     </message>
     <message>
         <source>whole record</source>
-        <translation type="unfinished"></translation>
+        <translation>完整记录</translation>
     </message>
     <message>
         <source>Duration [s]:</source>
-        <translation type="unfinished"></translation>
+        <translation>时长 [s]：</translation>
     </message>
     <message>
         <source>explicit Newmark</source>
-        <translation type="unfinished"></translation>
+        <translation>显式 Newmark</translation>
     </message>
     <message>
         <source>alpha-OS</source>
-        <translation type="unfinished"></translation>
+        <translation>alpha-OS</translation>
     </message>
     <message>
         <source>Integrator:</source>
-        <translation type="unfinished"></translation>
+        <translation>积分器：</translation>
     </message>
     <message>
         <source>alpha-OS alpha [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>alpha-OS 的 alpha [-]：</translation>
     </message>
     <message>
         <source>Controller</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器</translation>
     </message>
     <message>
         <source>built-in virtual lab</source>
-        <translation type="unfinished"></translation>
+        <translation>内置虚拟实验室</translation>
     </message>
     <message>
         <source>hsmu-controller over TCP</source>
-        <translation type="unfinished"></translation>
+        <translation>通过 TCP 连接 hsmu-controller</translation>
     </message>
     <message>
         <source>Specimens driven by:</source>
-        <translation type="unfinished"></translation>
+        <translation>试件驱动方式：</translation>
     </message>
     <message>
         <source>Host:</source>
-        <translation type="unfinished"></translation>
+        <translation>主机：</translation>
     </message>
     <message>
         <source>Port:</source>
-        <translation type="unfinished"></translation>
+        <translation>端口：</translation>
     </message>
     <message>
         <source>Online model updating</source>
-        <translation type="unfinished"></translation>
+        <translation>在线模型更新</translation>
     </message>
     <message>
         <source>enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>启用</translation>
     </message>
     <message>
         <source>Apply updates:</source>
-        <translation type="unfinished"></translation>
+        <translation>应用更新：</translation>
     </message>
     <message>
         <source>N [steps]:</source>
-        <translation type="unfinished"></translation>
+        <translation>N [步]：</translation>
     </message>
     <message>
         <source>Fit-error threshold [-]:</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合误差阈值 [-]：</translation>
     </message>
     <message>
         <source>Ground motion record</source>
-        <translation type="unfinished"></translation>
+        <translation>地震动记录</translation>
     </message>
     <message>
         <source>Ground motions (*.AT2 *.at2 *.txt *.csv *.dat);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>地震动 (*.AT2 *.at2 *.txt *.csv *.dat);;所有文件 (*)</translation>
     </message>
     <message>
         <source>Configuration: %1
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>配置：%1
+%2</translation>
     </message>
     <message>
         <source>(built in)</source>
-        <translation type="unfinished"></translation>
+        <translation>（内置）</translation>
     </message>
     <message>
         <source>built-in %1 record</source>
-        <translation type="unfinished"></translation>
+        <translation>内置 %1 记录</translation>
     </message>
     <message>
         <source>d in %1, F in %2</source>
-        <translation type="unfinished"></translation>
+        <translation>d 单位 %1，F 单位 %2</translation>
     </message>
     <message>
         <source>no configuration loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>未加载配置</translation>
     </message>
     <message>
         <source>safety limit of %1: &apos;%2&apos; is not a number &gt;= 0</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 的安全限值：“%2”不是 &gt;= 0 的数值</translation>
     </message>
     <message>
         <source>this configuration has no updating section to enable</source>
-        <translation type="unfinished"></translation>
+        <translation>该配置没有可启用的 updating 部分</translation>
     </message>
 </context>
 <context>
@@ -1695,19 +1696,19 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>no link</source>
-        <translation type="unfinished"></translation>
+        <translation>无链路</translation>
     </message>
     <message>
         <source>link: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>链路：%1</translation>
     </message>
     <message>
         <source>not recording</source>
-        <translation type="unfinished"></translation>
+        <translation>未记录</translation>
     </message>
     <message>
         <source>recording: %1/%2</source>
-        <translation type="unfinished"></translation>
+        <translation>记录中：%1/%2</translation>
     </message>
 </context>
 <context>
@@ -1722,35 +1723,35 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
     <message>
         <source>the record cannot be written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入记录：%1</translation>
     </message>
     <message>
         <source>this test has no model updating</source>
-        <translation type="unfinished"></translation>
+        <translation>本试验未启用模型更新</translation>
     </message>
     <message>
         <source>%1: the lower bound must be a number not above the upper bound</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：下限必须是不大于上限的数值</translation>
     </message>
     <message>
         <source>%1: bounds [%2, %3] refused (they would not keep the law admissible)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：边界 [%2, %3] 被拒绝（会使滞回模型不再容许）</translation>
     </message>
     <message>
         <source>%1: the %2 cannot lock this parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 无法锁定此参数</translation>
     </message>
     <message>
         <source>update #%1 was not applied (no longer pending, or refused by the law; see the alarms)</source>
-        <translation type="unfinished"></translation>
+        <translation>更新 #%1 未应用（已不再待处理，或被滞回模型拒绝；请查看报警）</translation>
     </message>
     <message>
         <source>update #%1 is no longer pending</source>
-        <translation type="unfinished"></translation>
+        <translation>更新 #%1 已不再待处理</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合误差阈值必须为正数</translation>
     </message>
 </context>
 </TS>
