@@ -166,6 +166,37 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     return u;
 }
 
+std::unique_ptr<Identifier> buildIdentifier(const TestConfig& cfg,
+                                            const HysteresisLaw& specimenModel)
+{
+    const UpdatingSpec& u = cfg.updating;
+    const std::string where = cfg.sourcePath + ": updating";
+    try {
+        if (u.method == "ukf") {
+            const auto* bw = dynamic_cast<const BoucWen*>(&specimenModel);
+            if (!bw)
+                throw ConfigError(where + ": the UKF needs a boucWen specimen model");
+            BoucWenUkfSettings s;
+            s.ukf.a = u.ukfA;
+            s.ukf.b = u.ukfB;
+            s.ukf.kappa = u.ukfKappa;
+            s.forceNoise = u.forceNoise;
+            s.parameterNoise = u.parameterNoise;
+            s.initialStdFraction = u.initialStdFraction;
+            return std::make_unique<UkfIdentifier>(bw->parameters(), s, u.bounds);
+        }
+        NelderMeadIdentifierSettings s;
+        s.parameters = u.parameters;
+        s.bounds = u.bounds;
+        s.maxEvaluations = u.maxEvaluations;
+        s.cooldownSteps = static_cast<int>(u.cooldown / cfg.analysis.dt + 0.5);
+        s.windowSteps = static_cast<int>(u.fitWindow / cfg.analysis.dt + 0.5);
+        return std::make_unique<NelderMeadIdentifier>(specimenModel, s);
+    } catch (const std::invalid_argument& e) {
+        throw ConfigError(where + ": " + e.what());
+    }
+}
+
 std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
 {
     const UpdatingSpec& u = cfg.updating;
@@ -176,32 +207,7 @@ std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
     if (!sp)
         throw ConfigError(where + ": no element '" + u.specimen + "'");
     auto aux = buildLaw(sp->material, where);
-    std::unique_ptr<Identifier> identifier;
-    try {
-        if (u.method == "ukf") {
-            const auto* bw = dynamic_cast<const BoucWen*>(aux.get());
-            if (!bw)
-                throw ConfigError(where + ": the UKF needs a boucWen specimen model");
-            BoucWenUkfSettings s;
-            s.ukf.a = u.ukfA;
-            s.ukf.b = u.ukfB;
-            s.ukf.kappa = u.ukfKappa;
-            s.forceNoise = u.forceNoise;
-            s.parameterNoise = u.parameterNoise;
-            s.initialStdFraction = u.initialStdFraction;
-            identifier = std::make_unique<UkfIdentifier>(bw->parameters(), s, u.bounds);
-        } else {
-            NelderMeadIdentifierSettings s;
-            s.parameters = u.parameters;
-            s.bounds = u.bounds;
-            s.maxEvaluations = u.maxEvaluations;
-            s.cooldownSteps = static_cast<int>(u.cooldown / cfg.analysis.dt + 0.5);
-            s.windowSteps = static_cast<int>(u.fitWindow / cfg.analysis.dt + 0.5);
-            identifier = std::make_unique<NelderMeadIdentifier>(*aux, s);
-        }
-    } catch (const std::invalid_argument& e) {
-        throw ConfigError(where + ": " + e.what());
-    }
+    std::unique_ptr<Identifier> identifier = buildIdentifier(cfg, *aux);
     auto reporter = std::make_unique<Reporter>(u.targets, u.policy, u.everyN);
     auto updater = std::make_unique<ModelUpdater>(u.specimen, std::move(aux), std::move(identifier),
                                                   u.inspector, std::move(reporter));
