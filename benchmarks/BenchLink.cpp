@@ -6,7 +6,8 @@
 //   BM_HybridTestOverLink  paper-condition-3, 10 s record, as fast as possible over the link,
 //                          against BM_HybridTestInProcess
 //   BM_RealTimeDeadlines   the real-time pace for HSMU_BENCH_REALTIME_SECONDS seconds (default
-//                          skipped): deadline misses of the 1024 Hz loop (target 0)
+//                          skipped): deadline misses of the 1024 Hz loop (target 0);
+//                          HSMU_BENCH_REALTIME_PRIORITY=P runs the loop under SCHED_FIFO P
 #include "comms/controller/ControllerServer.h"
 #include "comms/link/ControlFactory.h"
 #include "comms/link/LinkClient.h"
@@ -45,6 +46,8 @@ public:
             realTime ? SpecimenStation::Pace::RealTime : SpecimenStation::Pace::Fast, nullptr));
         ControllerServerOptions o;
         o.realTime = realTime;
+        if (const char* prio = std::getenv("HSMU_BENCH_REALTIME_PRIORITY"))
+            o.realTimePriority = std::atoi(prio); // SCHED_FIFO for the controller's loop
         o.quiet = true;
         m_server = std::make_unique<ControllerServer>(o, std::move(st));
         std::string error;

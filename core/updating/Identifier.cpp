@@ -4,23 +4,20 @@
 
 namespace hsmu {
 
-std::vector<std::string> Identifier::estimateNames() const
-{
+std::vector<std::string> Identifier::estimateNames() const {
     std::vector<std::string> names;
     for (const auto& [name, v] : estimate())
         names.push_back(name);
     return names;
 }
 
-void Identifier::estimateValues(std::vector<double>& out) const
-{
+void Identifier::estimateValues(std::vector<double>& out) const {
     out.clear();
     for (const auto& [name, v] : estimate())
         out.push_back(v);
 }
 
-void Identifier::standardDeviationValues(std::vector<double>& out) const
-{
+void Identifier::standardDeviationValues(std::vector<double>& out) const {
     const ParameterValues sd = standardDeviation();
     out.clear();
     for (const auto& [name, v] : estimate()) {
@@ -29,8 +26,7 @@ void Identifier::standardDeviationValues(std::vector<double>& out) const
     }
 }
 
-void Identifier::boundsValues(std::vector<ParameterBounds>& out) const
-{
+void Identifier::boundsValues(std::vector<ParameterBounds>& out) const {
     const ParameterBoundsMap& all = bounds();
     out.clear();
     for (const auto& [name, v] : estimate()) {

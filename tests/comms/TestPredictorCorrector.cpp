@@ -48,7 +48,8 @@ class TestPredictorCorrector : public QObject {
     Q_OBJECT
 private slots:
     void lateTargetSlowsLinearlyToAHold() {
-        PredictorCorrector pc = started(10, 5, 8, 3.0, 2.0, 1.0); // a constant speed of 0.1 per tick
+        PredictorCorrector pc =
+            started(10, 5, 8, 3.0, 2.0, 1.0); // a constant speed of 0.1 per tick
         run(pc, 5);
         QCOMPARE(pc.phase(), PredictorCorrector::Phase::Late);
         const double v0 = pc.velocity();
@@ -80,7 +81,7 @@ private slots:
 
     void lateTargetResumesFromRestSmoothly() {
         PredictorCorrector pc = started(20, 10, 5, 3.0, 2.9, 2.8); // 0.005 per tick
-        run(pc, 10 + 12);                  // predicted, slowed, held
+        run(pc, 10 + 12);                                          // predicted, slowed, held
         QCOMPARE(pc.velocity(), 0.0);
         const double c0 = pc.command();
         const double target = c0 + 0.2;
@@ -121,8 +122,8 @@ private slots:
         for (int j = 1; j < 10; ++j) {
             const double s = j / 10.0;
             const double h10 = s * s * s - 2 * s * s + s;
-            QVERIFY(std::abs(resume.command[j - 1] - (c0 + 10 * v * h10 + d * (2 * s * s - s * s * s))) <
-                    1e-12);
+            QVERIFY(std::abs(resume.command[j - 1] -
+                             (c0 + 10 * v * h10 + d * (2 * s * s - s * s * s))) < 1e-12);
         }
         // The first increment continues the speed within the ramp's own change per tick.
         QVERIFY(std::abs(resume.increment[0] - v) < 0.0005);

@@ -27,19 +27,26 @@ using namespace hsmu;
 
 namespace {
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
-BoucWenParameters specimen()
-{
+BoucWenParameters specimen() {
     BoucWenParameters p;
-    p.k0 = 1.0; p.alpha = 0.03; p.n = 2.0; p.beta = 2.5; p.gamma = 0.5;
-    p.deltaNu = 0.03; p.deltaEta = 0.03; p.uRef = 0.02; p.fRef = 20.0;
+    p.k0 = 1.0;
+    p.alpha = 0.03;
+    p.n = 2.0;
+    p.beta = 2.5;
+    p.gamma = 0.5;
+    p.deltaNu = 0.03;
+    p.deltaEta = 0.03;
+    p.uRef = 0.02;
+    p.fRef = 20.0;
     return p;
 }
 
 /// Same parameters, committed deformation, force and trial force, bit for bit.
-bool sameLaw(const HysteresisLaw& a, const HysteresisLaw& b)
-{
+bool sameLaw(const HysteresisLaw& a, const HysteresisLaw& b) {
     for (const auto& n : a.parameterNames())
         if (!sameBits(*a.parameter(n), *b.parameter(n)))
             return false;
@@ -50,8 +57,7 @@ bool sameLaw(const HysteresisLaw& a, const HysteresisLaw& b)
 
 /// The by-name reference of setParameterValues (the contract in HysteresisLaw.h).
 int byName(HysteresisLaw& law, const std::vector<std::string>& names,
-           const std::vector<double>& values, bool allOrNothing)
-{
+           const std::vector<double>& values, bool allOrNothing) {
     std::map<std::string, double> old;
     for (const auto& n : names)
         if (auto v = law.parameter(n))
@@ -84,19 +90,22 @@ public:
     explicit ByNameOnly(std::unique_ptr<Identifier> inner) : m(std::move(inner)) {}
     std::string methodName() const override { return m->methodName(); }
     std::vector<std::string> parameterNames() const override { return m->parameterNames(); }
-    IdentificationStatus observe(double d, double f, bool u) override { return m->observe(d, f, u); }
+    IdentificationStatus observe(double d, double f, bool u) override {
+        return m->observe(d, f, u);
+    }
     ParameterValues estimate() const override { return m->estimate(); }
     ParameterValues standardDeviation() const override { return m->standardDeviation(); }
     double predictedForce() const override { return m->predictedForce(); }
     const ParameterBoundsMap& bounds() const override { return m->bounds(); }
-    bool setBounds(const std::string& n, const ParameterBounds& b) override { return m->setBounds(n, b); }
+    bool setBounds(const std::string& n, const ParameterBounds& b) override {
+        return m->setBounds(n, b);
+    }
 
 private:
     std::unique_ptr<Identifier> m;
 };
 
-TestConfig condition3(ReporterPolicy policy)
-{
+TestConfig condition3(ReporterPolicy policy) {
     TestConfig cfg =
         loadConfigFile(std::string(HSMU_SOURCE_DIR) + "/resources/presets/paper-condition-3.json");
     cfg.analysis.duration = 8.0; // the synthetic record: yielding, updates, zero crossings
@@ -105,8 +114,7 @@ TestConfig condition3(ReporterPolicy policy)
     return cfg;
 }
 
-std::unique_ptr<HybridTest> build(const TestConfig& cfg, bool byNameOnly, Recorder& rec)
-{
+std::unique_ptr<HybridTest> build(const TestConfig& cfg, bool byNameOnly, Recorder& rec) {
     auto test = buildHybridTest(cfg);
     if (byNameOnly) {
         const UpdatingSpec& u = cfg.updating;
@@ -125,8 +133,7 @@ std::unique_ptr<HybridTest> build(const TestConfig& cfg, bool byNameOnly, Record
 class TestParameterVectors : public QObject {
     Q_OBJECT
 private slots:
-    void boucWenSetParameterValuesEqualsSuccessiveSetParameter()
-    {
+    void boucWenSetParameterValuesEqualsSuccessiveSetParameter() {
         // Admissible values; a beta refused with the old gamma (beta + gamma <= 0) that the
         // new gamma would have made admissible; a NaN; alpha > 1; an unknown name.
         const std::vector<std::string> names{"alpha", "beta", "gamma", "k0", "n"};
@@ -162,8 +169,7 @@ private slots:
         }
     }
 
-    void baseSetParameterValuesEqualsSuccessiveSetParameter()
-    {
+    void baseSetParameterValuesEqualsSuccessiveSetParameter() {
         const std::vector<std::string> names{"b", "fy", "k0"};
         for (bool allOrNothing : {false, true}) {
             for (const std::vector<double>& values :
@@ -184,16 +190,14 @@ private slots:
         }
     }
 
-    void wholeRunByPositionEqualsByName_data()
-    {
+    void wholeRunByPositionEqualsByName_data() {
         QTest::addColumn<int>("policy");
         QTest::newRow("everyStep") << int(ReporterPolicy::EveryStep);
         QTest::newRow("zeroCrossing") << int(ReporterPolicy::ZeroCrossing);
         QTest::newRow("everyNSteps") << int(ReporterPolicy::EveryNSteps);
     }
 
-    void wholeRunByPositionEqualsByName()
-    {
+    void wholeRunByPositionEqualsByName() {
         QFETCH(int, policy);
         const TestConfig cfg = condition3(static_cast<ReporterPolicy>(policy));
         Recorder fast, slow;
