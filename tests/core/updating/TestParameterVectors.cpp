@@ -31,18 +31,10 @@ bool sameBits(double a, double b) {
     return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
+/// A degrading Bouc-Wen law in normalized units (k0, alpha, n, beta, gamma, A0, deltaA, deltaNu,
+/// deltaEta, uRef, fRef).
 BoucWenParameters specimen() {
-    BoucWenParameters p;
-    p.k0 = 1.0;
-    p.alpha = 0.03;
-    p.n = 2.0;
-    p.beta = 2.5;
-    p.gamma = 0.5;
-    p.deltaNu = 0.03;
-    p.deltaEta = 0.03;
-    p.uRef = 0.02;
-    p.fRef = 20.0;
-    return p;
+    return {1.0, 0.03, 2.0, 2.5, 0.5, 1.0, 0.0, 0.03, 0.03, 0.02, 20.0};
 }
 
 /// Same parameters, committed deformation, force and trial force, bit for bit.
