@@ -9,7 +9,8 @@
 //                          [3, trial] + [6] -> reply per step, median and p99 (docs/openfresco.md)
 //   BM_SimAppStep          a whole step through SimAppControl (3, 6 -> reply, 5)
 //   BM_RealTimeDeadlines   the real-time pace for HSMU_BENCH_REALTIME_SECONDS seconds (default
-//                          skipped): deadline misses of the 1024 Hz loop (target 0)
+//                          skipped): deadline misses of the 1024 Hz loop (target 0);
+//                          HSMU_BENCH_REALTIME_PRIORITY=P runs the loop under SCHED_FIFO P
 #include "comms/controller/ControllerServer.h"
 #include "comms/controller/OfServer.h"
 #include "comms/link/ControlFactory.h"
@@ -52,6 +53,8 @@ public:
             realTime ? SpecimenStation::Pace::RealTime : SpecimenStation::Pace::Fast, nullptr));
         ControllerServerOptions o;
         o.realTime = realTime;
+        if (const char* prio = std::getenv("HSMU_BENCH_REALTIME_PRIORITY"))
+            o.realTimePriority = std::atoi(prio); // SCHED_FIFO for the controller's loop
         o.quiet = true;
         m_server = std::make_unique<ControllerServer>(o, std::move(st));
         std::string error;

@@ -8,6 +8,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+
+#include <pthread.h>
+#include <sched.h>
 #include <set>
 
 namespace hsmu::comms {
@@ -17,6 +21,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 constexpr std::size_t kMaxConnections = 16;
+constexpr auto kSpin = std::chrono::microseconds(100); // real-time pace: see waitTick()
 }
 
 struct ControllerServer::Impl final : SessionHost {
@@ -187,10 +192,14 @@ struct ControllerServer::Impl final : SessionHost {
     }
 
     void waitTick() {
-        ticker.expires_at(nextTick);
+        // Wake kSpin before the deadline and spin to it: the timer's wake-up jitter (timer
+        // slack, the reactor) then delays no tick.
+        ticker.expires_at(nextTick - kSpin);
         ticker.async_wait([this](const boost::system::error_code& ec) {
             if (ec)
                 return;
+            while (Clock::now() < nextTick) {
+            }
             catchUp();
             if (anyNeedsTicks()) {
                 waitTick();
@@ -244,6 +253,13 @@ void ControllerServer::run() {
         if (!ec)
             stop();
     });
+    if (d->opt.realTime && d->opt.realTimePriority > 0) {
+        sched_param sp{};
+        sp.sched_priority = d->opt.realTimePriority;
+        if (const int e = pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp); e != 0)
+            d->log(std::string("real-time priority refused (") + std::strerror(e) +
+                   "): the loop runs at normal priority");
+    }
     if (d->opt.realTime)
         d->armTicker();
     d->io.run();

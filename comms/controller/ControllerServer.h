@@ -4,8 +4,9 @@
 // reconnects, identified by the hello's session id, replace the old connection; anyone else
 // gets Error(Busy)), checks the optional token, routes specimen messages to the
 // SpecimenStations and, in real-time pace, runs their loop at the settings' rate from a
-// steady-clock timer (ticks that come due while the thread was busy are run at once; each
-// tick run more than one period late counts as a deadline miss).
+// steady-clock timer that wakes 100 us before each tick and spins to it (ticks that come due
+// while the thread was busy are run at once; each tick run more than one period late counts
+// as a deadline miss), optionally under SCHED_FIFO (realTimePriority).
 // Thread rules: construct, listen() and run() on one thread; stop() from any thread.
 
 #include "comms/controller/SpecimenStation.h"
@@ -24,6 +25,10 @@ struct ControllerServerOptions {
     double idleTimeout = 10.0;
     double rate = 1024.0; ///< loop rate [Hz] (real-time pace)
     bool realTime = true;
+    /// Real-time pace: run()'s thread under SCHED_FIFO at this priority (1-99) so that other
+    /// processes cannot preempt the loop; 0 (default): normal scheduling. Needs CAP_SYS_NICE
+    /// (or an rtprio limit); if refused, a log line and normal scheduling.
+    int realTimePriority = 0;
     bool quiet = false; ///< no session log lines on stderr
 };
 

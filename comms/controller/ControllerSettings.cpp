@@ -21,6 +21,11 @@ int ControllerSettings::predictTicks(double dt) const {
     return std::clamp(p, 0, n - 1);
 }
 
+int ControllerSettings::holdRampTicks() const {
+    const double r = std::round(holdRamp * rate);
+    return r > 1e6 ? 1000000 : (r >= 1.0 ? static_cast<int>(r) : 0);
+}
+
 ControllerSettings parseControllerSettings(const TestConfig& cfg) {
     ControllerSettings s;
     if (!cfg.raw.is_object() || !cfg.raw.contains("controller"))
@@ -28,8 +33,8 @@ ControllerSettings parseControllerSettings(const TestConfig& cfg) {
     const JsonCursor root(cfg.raw, cfg.sourcePath);
     const JsonCursor c = root.child("controller");
     // protocol, dataSize, ctrlSizes, daqSizes, initFile: the link (core/config/LinkConfig.h).
-    c.allowOnly({"rate", "stepDuration", "predictFraction", "idleTimeout", "protocol", "dataSize",
-                 "ctrlSizes", "daqSizes", "initFile"});
+    c.allowOnly({"rate", "stepDuration", "predictFraction", "holdRamp", "idleTimeout", "protocol",
+                 "dataSize", "ctrlSizes", "daqSizes", "initFile"});
     s.rate = c.number("rate", s.rate);
     if (!(s.rate > 0.0 && s.rate <= 100000.0))
         c.fail("rate", "expected a loop rate in (0, 100000] Hz");
@@ -39,6 +44,9 @@ ControllerSettings parseControllerSettings(const TestConfig& cfg) {
     s.predictFraction = c.number("predictFraction", s.predictFraction);
     if (!(s.predictFraction >= 0.0 && s.predictFraction < 1.0))
         c.fail("predictFraction", "expected a fraction in [0, 1)");
+    s.holdRamp = c.number("holdRamp", s.holdRamp);
+    if (!(s.holdRamp >= 0.0) || !std::isfinite(s.holdRamp))
+        c.fail("holdRamp", "expected a duration >= 0 s (0: stop at once)");
     s.idleTimeout = c.number("idleTimeout", s.idleTimeout);
     if (!(s.idleTimeout > 0.0) || !std::isfinite(s.idleTimeout))
         c.fail("idleTimeout", "expected a timeout > 0 s");

@@ -141,6 +141,8 @@ Message SpecimenStation::configure(const ConfigureMsg& m) {
         }
     }
     m_pc.setTiming(m_settings.ticksPerStep(m_dt), m_settings.predictTicks(m_dt));
+    m_pc.setHoldRamp(m_settings.holdRampTicks());
+    m_pc.setIncrementLimit(m_limits.maxIncrement);
     if (!m_configured) {
         m_configured = true;
         if (!m_trial.valid)

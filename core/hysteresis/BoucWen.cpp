@@ -285,8 +285,13 @@ double BoucWen::ultimateZ(const BoucWenParameters& p) {
 }
 
 bool BoucWen::admissible(const BoucWenParameters& p) {
-    const auto finite = [&](const auto& field) { return std::isfinite(p.*field.second); };
-    return std::all_of(kFields.begin(), kFields.end(), finite) && p.k0 > 0.0 && p.alpha >= 0.0 &&
+    // All finite: v - v is 0 for a finite v and NaN otherwise, so the sum is 0 exactly when
+    // every field is finite (branch-free; called for every sigma point of every UKF step).
+    double notFinite = 0.0;
+    for (const auto& field : kFields) {
+        notFinite += p.*field.second - p.*field.second;
+    }
+    return notFinite == 0.0 && p.k0 > 0.0 && p.alpha >= 0.0 &&
            p.alpha <= 1.0 && p.n > 0.0 && p.A0 > 0.0 && p.beta + p.gamma > 0.0 && p.deltaA >= 0.0 &&
            p.deltaNu >= 0.0 && p.deltaEta >= 0.0 && p.uRef > 0.0 && p.fRef > 0.0;
 }
@@ -382,6 +387,39 @@ bool BoucWen::setParameter(const std::string& name, double value) {
     BoucWenParameters p = m_p;
     p.*field = value;
     return setParameters(p);
+}
+
+int BoucWen::setParameterValues(std::span<const int> indices, std::span<const double> values,
+                                bool allOrNothing) {
+    BoucWenParameters p = m_p;
+    bool changed = false;
+    int firstRefused = -1;
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        const int i = indices[k];
+        if (i >= 0 && static_cast<std::size_t>(i) < kFields.size()) {
+            const Field field = kFields[static_cast<std::size_t>(i)].second;
+            const double previous = p.*field;
+            p.*field = values[k];
+            if (admissible(p)) {
+                changed = true;
+                continue;
+            }
+            p.*field = previous;
+        }
+        if (firstRefused < 0) {
+            firstRefused = static_cast<int>(k);
+        }
+        if (allOrNothing) {
+            // setParameter-by-name restoring the old values leaves the parameters as they
+            // were, with the force re-evaluated and a pending trial dropped.
+            setParameters(m_p);
+            return firstRefused;
+        }
+    }
+    if (changed) {
+        setParameters(p);
+    }
+    return firstRefused;
 }
 
 double BoucWen::forceOf(double x, const BoucWenState& s) const {

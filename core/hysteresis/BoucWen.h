@@ -131,6 +131,10 @@ public:
     std::vector<std::string> parameterNames() const override;
     std::optional<double> parameter(const std::string& name) const override;
     bool setParameter(const std::string& name, double value) override;
+    /// As the base class says, deciding each value on a copy of the parameters (the same
+    /// admissible() test setParameter makes) and setting them all with one setParameters().
+    int setParameterValues(std::span<const int> indices, std::span<const double> values,
+                           bool allOrNothing) override;
 
 private:
     double forceOf(double x, const BoucWenState& s) const; // physical force

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,22 @@ public:
     /// The committed state (e.g. z, e of Bouc-Wen) is kept, so the force stays continuous
     /// apart from what the new parameters imply.
     virtual bool setParameter(const std::string& name, double value) = 0;
+
+    // By-index access, for callers that set parameters every step (core/updating): resolve
+    // the names once with parameterIndex(), then pass indices (positions in parameterNames()).
+
+    /// Position of `name` in parameterNames(); -1 if the law has no such parameter.
+    int parameterIndex(const std::string& name) const;
+    /// Set values[k] to the parameter at indices[k], k = 0, 1, ... in order, with exactly the
+    /// outcome of successive setParameter(parameterNames()[indices[k]], values[k]) calls: a
+    /// value that is refused (unknown index, or a law that would not stay admissible) is
+    /// skipped (allOrNothing false) or, with allOrNothing true, stops the call and restores
+    /// every value set so far. Returns the position k of the first refused value, -1 if all
+    /// were set. The committed state is kept. The default goes through setParameter; laws
+    /// override it to re-evaluate their force once per call instead of once per value.
+    /// Precondition: indices.size() == values.size().
+    virtual int setParameterValues(std::span<const int> indices, std::span<const double> values,
+                                   bool allOrNothing);
 };
 
 } // namespace hsmu

@@ -47,6 +47,20 @@ public:
     virtual bool canLock() const { return false; }
     /// Compute time of the last update [s] (for Nelder-Mead triggers).
     virtual double lastComputeSeconds() const { return 0.0; }
+
+    // The same by position, for callers that run every step (ModelUpdater): no lookups by
+    // name and, once `out` has its size, no allocation. The layout is estimateNames(): the
+    // names estimate() returns, in its (sorted) order, fixed for the identifier's lifetime.
+    // The defaults go through the maps above; UkfIdentifier overrides them.
+
+    /// The names of estimate(), sorted as ParameterValues sorts them.
+    virtual std::vector<std::string> estimateNames() const;
+    /// estimate() in estimateNames() order.
+    virtual void estimateValues(std::vector<double>& out) const;
+    /// standardDeviation() in estimateNames() order (0 where it has no entry).
+    virtual void standardDeviationValues(std::vector<double>& out) const;
+    /// bounds() in estimateNames() order; NaN lower and upper where a name has no bounds.
+    virtual void boundsValues(std::vector<ParameterBounds>& out) const;
 };
 
 } // namespace hsmu

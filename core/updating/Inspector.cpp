@@ -75,26 +75,25 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
         raise(AlarmSeverity::Warning, AlarmKind::EstimatorRejected,
               "identification step rejected: " + in.estimatorMessage);
 
-    if (in.parameters && in.bounds) {
+    if (in.parameterNames) {
+        const std::vector<std::string>& names = *in.parameterNames;
+        if (m_pinLayout != in.parameterNames || m_pinIndex.size() != names.size()) {
+            m_pinIndex.clear();
+            for (const auto& name : names)
+                m_pinIndex.push_back(static_cast<std::size_t>(&pinState(name) - m_pins.data()));
+            m_pinLayout = in.parameterNames;
+        }
+        const std::size_t n = std::min({names.size(), in.parameterValues.size(),
+                                        in.parameterBounds.size()});
+        for (std::size_t k = 0; k < n; ++k)
+            if (!std::isnan(in.parameterBounds[k].lower))
+                checkPinned(m_pins[m_pinIndex[k]], in.parameterValues[k], in.parameterBounds[k],
+                            in, alarms);
+    } else if (in.parameters && in.bounds) {
         for (const auto& [name, v] : *in.parameters) {
             auto b = in.bounds->find(name);
-            if (b == in.bounds->end())
-                continue;
-            const double tol = 1e-6 * std::max(1e-12, b->second.upper - b->second.lower);
-            const bool pinned = std::abs(v - b->second.lower) <= tol ||
-                                std::abs(v - b->second.upper) <= tol;
-            if (!pinned) {
-                m_pinnedSince.erase(name);
-                m_pinnedRaised[name] = false;
-                continue;
-            }
-            auto [it, fresh] = m_pinnedSince.emplace(name, in.time);
-            if (!m_pinnedRaised[name] && in.time - it->second >= m_s.pinnedTime) {
-                m_pinnedRaised[name] = true;
-                raise(AlarmSeverity::Warning, AlarmKind::ParameterPinned,
-                      name + format(" has been at its bound %.4g for %.1f s", v,
-                                    in.time - it->second));
-            }
+            if (b != in.bounds->end())
+                checkPinned(pinState(name), v, b->second, in, alarms);
         }
     }
 
@@ -118,18 +117,55 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
     }
 }
 
+Inspector::PinState& Inspector::pinState(const std::string& name)
+{
+    for (PinState& p : m_pins)
+        if (p.name == name)
+            return p;
+    m_pinLayout = nullptr; // m_pins may move: resolve the positional layout again
+    m_pins.push_back({name});
+    return m_pins.back();
+}
+
+void Inspector::checkPinned(PinState& pin, double v, const ParameterBounds& b,
+                            const InspectorInput& in, std::vector<Alarm>& alarms)
+{
+    const double tol = 1e-6 * std::max(1e-12, b.upper - b.lower);
+    const bool pinned = std::abs(v - b.lower) <= tol || std::abs(v - b.upper) <= tol;
+    if (!pinned) {
+        pin.pinned = false;
+        pin.raised = false;
+        return;
+    }
+    if (!pin.pinned) {
+        pin.pinned = true;
+        pin.since = in.time;
+    }
+    if (!pin.raised && in.time - pin.since >= m_s.pinnedTime) {
+        pin.raised = true;
+        alarms.push_back({in.time, in.step, AlarmSeverity::Warning, AlarmKind::ParameterPinned,
+                          pin.name + format(" has been at its bound %.4g for %.1f s", v,
+                                            in.time - pin.since)});
+    }
+}
+
 void Inspector::trackingIndices()
 {
     const std::size_t n = m_cmd.size();
     if (n < 4)
         return;
+    // Contiguous copies: the lag loop below reads the windows ~n^2 / 4 times.
+    m_cmdBuf.assign(m_cmd.begin(), m_cmd.end());
+    m_measBuf.assign(m_meas.begin(), m_meas.end());
+    const double* cmd = m_cmdBuf.data();
+    const double* meas = m_measBuf.data();
     double se = 0.0, sc = 0.0, pe = 0.0, pc = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-        const double e = m_meas[i] - m_cmd[i];
+        const double e = meas[i] - cmd[i];
         se += e * e;
-        sc += m_cmd[i] * m_cmd[i];
+        sc += cmd[i] * cmd[i];
         pe = std::max(pe, std::abs(e));
-        pc = std::max(pc, std::abs(m_cmd[i]));
+        pc = std::max(pc, std::abs(cmd[i]));
     }
     m_tracking.j2 = sc > 0.0 ? std::sqrt(se / sc) : 0.0;
     m_tracking.j3 = pc > 0.0 ? pe / pc : 0.0;
@@ -141,9 +177,9 @@ void Inspector::trackingIndices()
     for (std::size_t lag = 0; lag <= maxLag; ++lag) {
         double c = 0.0, mm = 0.0, cc = 0.0;
         for (std::size_t i = lag; i < n; ++i) {
-            c += m_meas[i] * m_cmd[i - lag];
-            mm += m_meas[i] * m_meas[i];
-            cc += m_cmd[i - lag] * m_cmd[i - lag];
+            c += meas[i] * cmd[i - lag];
+            mm += meas[i] * meas[i];
+            cc += cmd[i - lag] * cmd[i - lag];
         }
         c = mm > 0.0 && cc > 0.0 ? c / std::sqrt(mm * cc) : 0.0;
         if (c > best) {

@@ -21,7 +21,7 @@
 #include "core/updating/ParameterSet.h"
 
 #include <deque>
-#include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -56,6 +56,13 @@ struct InspectorInput {
     std::string estimatorMessage;
     const ParameterValues* parameters = nullptr;   ///< identified values
     const ParameterBoundsMap* bounds = nullptr;
+    /// The identified values and their bounds by position instead (used when parameterNames
+    /// is set; the maps above are then ignored): names sorted as in a ParameterValues, the
+    /// same layout every step (ModelUpdater passes the identifier's estimateNames()); NaN
+    /// bounds: not bounded (skipped, as a name missing from the bounds map).
+    const std::vector<std::string>* parameterNames = nullptr;
+    std::span<const double> parameterValues;
+    std::span<const ParameterBounds> parameterBounds;
 };
 
 class Inspector {
@@ -74,12 +81,23 @@ public:
     const TrackingIndices& tracking() const { return m_tracking; }
 
 private:
+    struct PinState {
+        std::string name;
+        bool pinned = false; ///< on a bound since `since`
+        double since = 0.0;
+        bool raised = false;
+    };
     void trackingIndices();
+    /// The pinned check of one parameter (the "pinned" alarm of the header).
+    void checkPinned(PinState& pin, double v, const ParameterBounds& b, const InspectorInput& in,
+                     std::vector<Alarm>& alarms);
+    PinState& pinState(const std::string& name);
     InspectorSettings m_s;
     double m_dt;
     std::deque<double> m_residual, m_measured;    // fit window
     double m_sumR2 = 0.0, m_sumF2 = 0.0;
     std::deque<double> m_cmd, m_meas;             // tracking window
+    std::vector<double> m_cmdBuf, m_measBuf;      // their contiguous copies (kept)
     double m_fitError = 0.0;
     bool m_updateRequested = false;
     bool m_aboveThreshold = false;
@@ -87,8 +105,9 @@ private:
     double m_lastDeformation = 0.0;
     bool m_fracture = false;
     double m_fractureTime = 0.0;
-    std::map<std::string, double> m_pinnedSince;
-    std::map<std::string, bool> m_pinnedRaised;
+    std::vector<PinState> m_pins;
+    const std::vector<std::string>* m_pinLayout = nullptr; // names m_pinIndex was resolved for
+    std::vector<std::size_t> m_pinIndex; // m_pins position of each parameterNames entry
     TrackingIndices m_tracking;
     double m_nextTracking = 0.0;
     bool m_trackingRaised = false;

@@ -4,6 +4,7 @@
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/structure/Structure.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hsmu {
@@ -29,23 +30,33 @@ bool ModelUpdater::attach(Structure& structure, double dt, std::string* error)
             *error = "updating: '" + m_specimen + "' is not an experimental element";
         return false;
     }
-    for (const auto& t : m_reporter->targets()) {
-        Element* target = structure.element(t.element);
-        if (!target || !target->law()) {
-            if (error)
-                *error = "updating: target '" + t.element + "' is not a numerical element with a law";
-            return false;
-        }
+    m_names = m_identifier->estimateNames();
+    if (!m_reporter->bind(structure, m_names, error))
+        return false;
+    m_auxIndex.clear();
+    for (const auto& name : m_names)
+        m_auxIndex.push_back(m_aux->parameterIndex(name));
+    m_recordIndex.clear();
+    for (const auto& name : m_identifier->parameterNames()) {
+        const auto at = std::find(m_names.begin(), m_names.end(), name);
+        m_recordIndex.push_back(at == m_names.end() ? -1 : static_cast<int>(at - m_names.begin()));
     }
+    m_attached = true;
     m_inspector = Inspector(m_inspector.settings(), dt);
     return true;
 }
 
-void ModelUpdater::applyToAuxiliary(const ParameterValues& values)
+void ModelUpdater::applyToAuxiliary(const std::vector<double>& values)
 {
-    for (const auto& [name, v] : values)
-        if (std::isfinite(v))
-            m_aux->setParameter(name, v);
+    m_auxApply.clear();
+    m_auxValues.clear();
+    for (std::size_t k = 0; k < values.size() && k < m_auxIndex.size(); ++k) {
+        if (std::isfinite(values[k])) {
+            m_auxApply.push_back(m_auxIndex[k]);
+            m_auxValues.push_back(values[k]);
+        }
+    }
+    m_aux->setParameterValues(m_auxApply, m_auxValues, false);
 }
 
 void ModelUpdater::report(const std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms,
@@ -65,7 +76,14 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
                                                      std::vector<Alarm>& alarms,
                                                      UpdatingSample& out)
 {
-    out = UpdatingSample{};
+    {
+        // A fresh sample that keeps the vectors' storage (no allocation per step).
+        std::vector<double> parameters = std::move(out.parameters);
+        std::vector<double> stddev = std::move(out.stddev);
+        out = UpdatingSample{};
+        out.parameters = std::move(parameters);
+        out.stddev = std::move(stddev);
+    }
     const ControlMeasurement& m = m_element->measurement();
     const double dm = m.deformation;
     const double fm = m.force;
@@ -80,17 +98,17 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     m_history.push_back(dm);
 
     const IdentificationStatus st = m_identifier->observe(dm, fm, m_inspector.updateRequested());
-    const ParameterValues estimate = m_identifier->estimate();
+    m_identifier->estimateValues(m_values);
     if (st.updated) {
         if (st.refit) {
             // A batch fit: replay the auxiliary model over the history with the new values.
             m_aux = m_auxInitial->clone();
-            applyToAuxiliary(estimate);
+            applyToAuxiliary(m_values);
             for (double d : m_history)
                 if (m_aux->setTrialDeformation(d) == LawStatus::Ok)
                     m_aux->commit();
         } else {
-            applyToAuxiliary(estimate);
+            applyToAuxiliary(m_values);
         }
         if (!st.message.empty())
             alarms.push_back({time, step, AlarmSeverity::Info, AlarmKind::ModelUpdate, st.message});
@@ -105,12 +123,18 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     in.commandedDeformation = m_element->commandedDeformation();
     in.estimatorOk = st.ok;
     in.estimatorMessage = st.message;
-    in.parameters = &estimate;
-    in.bounds = &m_identifier->bounds();
+    m_identifier->boundsValues(m_boundValues);
+    in.parameterNames = &m_names;
+    in.parameterValues = m_values;
+    in.parameterBounds = m_boundValues;
     m_inspector.observe(in, alarms);
 
-    if (st.updated)
-        report(m_reporter->offer(step, time, estimate, structure), alarms, step, time, out);
+    if (st.updated) {
+        m_refused.clear();
+        out.updatesThisStep +=
+            m_reporter->offerValues(step, time, m_values, structure, m_refused);
+        report(m_refused, alarms, step, time, out);
+    }
     if (m_autoResolve && !m_reporter->pending().empty())
         report(m_reporter->resolveAll(*m_autoResolve, structure, step, time), alarms, step, time,
                out);
@@ -118,7 +142,8 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     out.fitError = m_inspector.fitError();
     out.tracking = m_inspector.tracking();
     out.updateRequested = m_inspector.updateRequested();
-    fillEstimate(out);
+    m_identifier->standardDeviationValues(m_sd);
+    fillEstimate(m_values, m_sd, out);
     out.appliedUpdates = m_reporter->appliedCount();
     out.pendingProposals = static_cast<int>(m_reporter->pending().size());
 
@@ -132,8 +157,27 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     return std::nullopt;
 }
 
+void ModelUpdater::fillEstimate(const std::vector<double>& values, const std::vector<double>& sd,
+                                UpdatingSample& out) const
+{
+    out.parameters.clear();
+    out.stddev.clear();
+    for (int k : m_recordIndex) {
+        const auto at = static_cast<std::size_t>(k);
+        out.parameters.push_back(k >= 0 && at < values.size() ? values[at] : NAN);
+        out.stddev.push_back(k >= 0 && at < sd.size() ? sd[at] : 0.0);
+    }
+}
+
 void ModelUpdater::fillEstimate(UpdatingSample& out) const
 {
+    if (m_attached) {
+        std::vector<double> values, sd;
+        m_identifier->estimateValues(values);
+        m_identifier->standardDeviationValues(sd);
+        fillEstimate(values, sd, out);
+        return;
+    }
     const ParameterValues estimate = m_identifier->estimate();
     const ParameterValues sd = m_identifier->standardDeviation();
     out.parameters.clear();

@@ -77,7 +77,11 @@ public:
     void setAutoResolve(std::optional<bool> approveAll) { m_autoResolve = approveAll; }
 
 private:
-    void applyToAuxiliary(const ParameterValues& values);
+    /// The identified values (m_names layout) to the auxiliary model, as by-name setParameter
+    /// calls would (non-finite and refused values skipped).
+    void applyToAuxiliary(const std::vector<double>& values);
+    void fillEstimate(const std::vector<double>& values, const std::vector<double>& sd,
+                      UpdatingSample& out) const;
     void report(const std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms, int step,
                 double time, UpdatingSample& out);
 
@@ -90,6 +94,16 @@ private:
     ExperimentalElement* m_element = nullptr;
     std::vector<double> m_history; // measured deformations, for replays of the auxiliary model
     std::optional<bool> m_autoResolve;
+    // Resolved by attach(): the identifier's estimateNames(), their positions in the
+    // auxiliary law, and the position of each parameterNames() entry among them (-1: none).
+    bool m_attached = false;
+    std::vector<std::string> m_names;
+    std::vector<int> m_auxIndex, m_recordIndex;
+    // Per-step buffers (kept: no allocation per step).
+    std::vector<double> m_values, m_sd, m_auxValues;
+    std::vector<int> m_auxApply;
+    std::vector<ParameterBounds> m_boundValues;
+    std::vector<UpdateEvent> m_refused;
     int m_rejections = 0;
     int m_maxRejections = 20;
 };

@@ -3,6 +3,7 @@
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/structure/Structure.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hsmu {
@@ -88,6 +89,32 @@ UpdateEvent Reporter::apply(const std::string& element, const ParameterValues& v
     return ev;
 }
 
+bool Reporter::dueNow(std::size_t i, int step, double force)
+{
+    const double previous = m_lastForce[i];
+    m_lastForce[i] = force;
+    switch (m_policy) {
+    case ReporterPolicy::EveryStep: return true;
+    case ReporterPolicy::ZeroCrossing:
+        return (previous < 0.0 && force >= 0.0) || (previous > 0.0 && force <= 0.0);
+    case ReporterPolicy::EveryNSteps: return step % m_everyN == 0;
+    case ReporterPolicy::OnApproval: return false;
+    }
+    return false;
+}
+
+void Reporter::queueProposal(const ReporterTarget& t, int step, double time,
+                             const ParameterValues& identified, const HysteresisLaw* law)
+{
+    UpdateProposal p{m_nextId++, step, time, t.element, proposalFor(t, identified), {}};
+    if (law)
+        for (const auto& [name, v] : p.proposed)
+            p.current[name] = law->parameter(name).value_or(v);
+    for (auto it = m_pending.begin(); it != m_pending.end();)
+        it = it->element == t.element ? m_pending.erase(it) : it + 1;
+    m_pending.push_back(std::move(p));
+}
+
 std::vector<UpdateEvent> Reporter::offer(int step, double time, const ParameterValues& identified,
                                          Structure& structure)
 {
@@ -96,30 +123,107 @@ std::vector<UpdateEvent> Reporter::offer(int step, double time, const ParameterV
         const ReporterTarget& t = m_targets[i];
         Element* e = structure.element(t.element);
         const double force = e && e->law() ? e->law()->committedForce() : 0.0;
-        const double previous = m_lastForce[i];
-        m_lastForce[i] = force;
-        bool now = false;
-        switch (m_policy) {
-        case ReporterPolicy::EveryStep: now = true; break;
-        case ReporterPolicy::ZeroCrossing:
-            now = (previous < 0.0 && force >= 0.0) || (previous > 0.0 && force <= 0.0);
-            break;
-        case ReporterPolicy::EveryNSteps: now = step % m_everyN == 0; break;
-        case ReporterPolicy::OnApproval: {
-            UpdateProposal p{m_nextId++, step, time, t.element, proposalFor(t, identified), {}};
-            if (e && e->law())
-                for (const auto& [name, v] : p.proposed)
-                    p.current[name] = e->law()->parameter(name).value_or(v);
-            for (auto it = m_pending.begin(); it != m_pending.end();)
-                it = it->element == t.element ? m_pending.erase(it) : it + 1;
-            m_pending.push_back(std::move(p));
-            break;
-        }
-        }
-        if (now)
+        if (m_policy == ReporterPolicy::OnApproval) {
+            m_lastForce[i] = force;
+            queueProposal(t, step, time, identified, e ? e->law() : nullptr);
+        } else if (dueNow(i, step, force)) {
             events.push_back(apply(t.element, proposalFor(t, identified), structure, step, time));
+        }
     }
     return events;
+}
+
+bool Reporter::bind(Structure& structure, const std::vector<std::string>& identifiedNames,
+                    std::string* error)
+{
+    m_boundStructure = nullptr;
+    m_bound.clear();
+    for (const ReporterTarget& t : m_targets) {
+        Element* e = structure.element(t.element);
+        BoundTarget b;
+        b.law = e ? e->law() : nullptr;
+        if (!b.law) {
+            m_bound.clear();
+            if (error)
+                *error = "updating: target '" + t.element + "' is not a numerical element with a law";
+            return false;
+        }
+        // The names proposalFor() keeps, in its map's order (the order apply() sets them in).
+        std::vector<std::string> names;
+        for (const auto& name : t.parameters)
+            if (std::find(identifiedNames.begin(), identifiedNames.end(), name) !=
+                identifiedNames.end())
+                names.push_back(name);
+        std::sort(names.begin(), names.end());
+        names.erase(std::unique(names.begin(), names.end()), names.end());
+        for (const auto& name : names) {
+            const auto at = std::find(identifiedNames.begin(), identifiedNames.end(), name);
+            auto s = t.scale.find(name);
+            b.identifiedIndex.push_back(static_cast<int>(at - identifiedNames.begin()));
+            b.lawIndex.push_back(b.law->parameterIndex(name));
+            b.scale.push_back(s == t.scale.end() ? 1.0 : s->second);
+        }
+        b.values.resize(b.identifiedIndex.size());
+        m_bound.push_back(std::move(b));
+    }
+    m_boundNames = identifiedNames;
+    m_boundStructure = &structure;
+    return true;
+}
+
+ParameterValues Reporter::identifiedMap(std::span<const double> identified) const
+{
+    ParameterValues out;
+    for (std::size_t k = 0; k < m_boundNames.size() && k < identified.size(); ++k)
+        out[m_boundNames[k]] = identified[k];
+    return out;
+}
+
+int Reporter::offerValues(int step, double time, std::span<const double> identified,
+                          Structure& structure, std::vector<UpdateEvent>& refused)
+{
+    if (m_boundStructure != &structure || m_bound.size() != m_targets.size() ||
+        identified.size() != m_boundNames.size()) {
+        int applied = 0;
+        for (UpdateEvent& ev : offer(step, time, identifiedMap(identified), structure)) {
+            if (ev.ok)
+                ++applied;
+            else
+                refused.push_back(std::move(ev));
+        }
+        return applied;
+    }
+    int applied = 0;
+    for (std::size_t i = 0; i < m_targets.size(); ++i) {
+        BoundTarget& b = m_bound[i];
+        const double force = b.law->committedForce();
+        if (m_policy == ReporterPolicy::OnApproval) {
+            m_lastForce[i] = force;
+            queueProposal(m_targets[i], step, time, identifiedMap(identified), b.law);
+            continue;
+        }
+        if (!dueNow(i, step, force))
+            continue;
+        bool finite = true;
+        for (std::size_t k = 0; k < b.values.size(); ++k) {
+            b.values[k] = identified[static_cast<std::size_t>(b.identifiedIndex[k])] * b.scale[k];
+            finite = finite && std::isfinite(b.values[k]);
+        }
+        const int refusedAt = finite ? b.law->setParameterValues(b.lawIndex, b.values, true) : 0;
+        if (finite && refusedAt < 0) {
+            ++m_applied;
+            ++applied;
+            continue;
+        }
+        // The rare path: let apply() say why (it repeats the checks and leaves the law as is).
+        UpdateEvent ev = apply(m_targets[i].element, proposalFor(m_targets[i], identifiedMap(identified)),
+                               structure, step, time);
+        if (ev.ok)
+            ++applied;
+        else
+            refused.push_back(std::move(ev));
+    }
+    return applied;
 }
 
 std::optional<UpdateEvent> Reporter::approve(int id, Structure& structure, int step, double time)

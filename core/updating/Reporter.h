@@ -19,11 +19,13 @@
 
 #include <deque>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace hsmu {
 
+class HysteresisLaw;
 class Structure;
 
 enum class ReporterPolicy { EveryStep, ZeroCrossing, EveryNSteps, OnApproval };
@@ -77,7 +79,33 @@ public:
 
     int appliedCount() const { return m_applied; }
 
+    /// Resolve once (ModelUpdater::attach) what offerValues() needs every step: each target's
+    /// law in `structure` and, for each of its parameters, its position in `identifiedNames`
+    /// (the identifier's estimateNames()) and in the law. False with a reason if a target is
+    /// not a numerical element with a law.
+    bool bind(Structure& structure, const std::vector<std::string>& identifiedNames,
+              std::string* error);
+    /// offer() for values in the bound layout, on the structure bound (else as offer()):
+    /// the same decisions and updates without lookups by name or allocation (apart from
+    /// OnApproval proposals and refusals). Returns how many updates were applied now;
+    /// updates that were refused are appended to `refused`.
+    int offerValues(int step, double time, std::span<const double> identified,
+                    Structure& structure, std::vector<UpdateEvent>& refused);
+
 private:
+    // A target resolved by bind(): its parameters in name order (the order offer() applies
+    // them in), their positions in the identified layout and in the law, their scale.
+    struct BoundTarget {
+        HysteresisLaw* law = nullptr;
+        std::vector<int> identifiedIndex, lawIndex;
+        std::vector<double> scale, values; // values: this step's, scaled (kept: no allocation)
+    };
+    /// Whether target i takes an offer now (ZeroCrossing: its force changed sign since the
+    /// last offer); remembers the force.
+    bool dueNow(std::size_t i, int step, double force);
+    void queueProposal(const ReporterTarget& t, int step, double time,
+                       const ParameterValues& identified, const HysteresisLaw* law);
+    ParameterValues identifiedMap(std::span<const double> identified) const;
     ParameterValues proposalFor(const ReporterTarget& t, const ParameterValues& identified) const;
     UpdateEvent apply(const std::string& element, const ParameterValues& values,
                       Structure& structure, int step, double time);
@@ -86,6 +114,9 @@ private:
     ReporterPolicy m_policy;
     int m_everyN;
     std::vector<double> m_lastForce; // per target, committed force at the previous offer
+    const Structure* m_boundStructure = nullptr;
+    std::vector<std::string> m_boundNames;
+    std::vector<BoundTarget> m_bound; // per target, after bind()
     std::deque<UpdateProposal> m_pending;
     int m_nextId = 1;
     int m_applied = 0;

@@ -1,5 +1,7 @@
 #include "core/updating/UkfIdentifier.h"
 
+#include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 namespace hsmu {
@@ -9,6 +11,18 @@ constexpr BoucWenUkfIndex kParams[] = {BoucWenUkfIndex::K0,    BoucWenUkfIndex::
                                        BoucWenUkfIndex::Beta,  BoucWenUkfIndex::Gamma,
                                        BoucWenUkfIndex::N,     BoucWenUkfIndex::DeltaNu,
                                        BoucWenUkfIndex::DeltaEta};
+
+// kParams sorted by name: the order of estimate()'s map, i.e. estimateNames().
+const std::array<BoucWenUkfIndex, std::size(kParams)> kSorted = [] {
+    std::array<BoucWenUkfIndex, std::size(kParams)> a{};
+    std::copy(std::begin(kParams), std::end(kParams), a.begin());
+    std::sort(a.begin(), a.end(), [](BoucWenUkfIndex x, BoucWenUkfIndex y) {
+        return std::string(boucWenUkfIndexName(x)) < std::string(boucWenUkfIndexName(y));
+    });
+    return a;
+}();
+
+constexpr int at(BoucWenUkfIndex i) { return static_cast<int>(i); }
 
 std::optional<BoucWenUkfIndex> indexOf(const std::string& name)
 {
@@ -59,15 +73,69 @@ std::vector<std::string> UkfIdentifier::parameterNames() const
 void UkfIdentifier::publish(const BoucWenUkfStep* step)
 {
     const BoucWenParameters p = step ? step->estimate : m_ukf.estimate();
-    m_estimate = {{"k0", p.k0},     {"alpha", p.alpha},     {"beta", p.beta},
-                  {"gamma", p.gamma}, {"n", p.n},             {"deltaNu", p.deltaNu},
-                  {"deltaEta", p.deltaEta}};
+    m_estimate[at(BoucWenUkfIndex::K0)] = p.k0;
+    m_estimate[at(BoucWenUkfIndex::Alpha)] = p.alpha;
+    m_estimate[at(BoucWenUkfIndex::Beta)] = p.beta;
+    m_estimate[at(BoucWenUkfIndex::Gamma)] = p.gamma;
+    m_estimate[at(BoucWenUkfIndex::N)] = p.n;
+    m_estimate[at(BoucWenUkfIndex::DeltaNu)] = p.deltaNu;
+    m_estimate[at(BoucWenUkfIndex::DeltaEta)] = p.deltaEta;
+    if (step) {
+        m_stddev = step->standardDeviation;
+        return;
+    }
     const Eigen::VectorXd sd = m_ukf.filter().initialized()
                                    ? m_ukf.filter().standardDeviations()
                                    : Eigen::VectorXd::Zero(kBoucWenUkfSize);
+    for (int i = 0; i < kBoucWenUkfSize; ++i)
+        m_stddev[i] = sd[i];
+}
+
+ParameterValues UkfIdentifier::estimate() const
+{
+    ParameterValues out;
     for (BoucWenUkfIndex i : kParams)
-        m_stddev[boucWenUkfIndexName(i)] =
-            step ? step->standardDeviation[static_cast<int>(i)] : sd[static_cast<int>(i)];
+        out[boucWenUkfIndexName(i)] = m_estimate[at(i)];
+    return out;
+}
+
+ParameterValues UkfIdentifier::standardDeviation() const
+{
+    ParameterValues out;
+    for (BoucWenUkfIndex i : kParams)
+        out[boucWenUkfIndexName(i)] = m_stddev[at(i)];
+    return out;
+}
+
+std::vector<std::string> UkfIdentifier::estimateNames() const
+{
+    std::vector<std::string> names;
+    for (BoucWenUkfIndex i : kSorted)
+        names.emplace_back(boucWenUkfIndexName(i));
+    return names;
+}
+
+void UkfIdentifier::estimateValues(std::vector<double>& out) const
+{
+    out.resize(kSorted.size());
+    for (std::size_t k = 0; k < kSorted.size(); ++k)
+        out[k] = m_estimate[at(kSorted[k])];
+}
+
+void UkfIdentifier::standardDeviationValues(std::vector<double>& out) const
+{
+    out.resize(kSorted.size());
+    for (std::size_t k = 0; k < kSorted.size(); ++k)
+        out[k] = m_stddev[at(kSorted[k])];
+}
+
+void UkfIdentifier::boundsValues(std::vector<ParameterBounds>& out) const
+{
+    out.resize(kSorted.size());
+    for (std::size_t k = 0; k < kSorted.size(); ++k) {
+        const BoucWenUkf::Bounds& b = m_ukf.bounds()[at(kSorted[k])];
+        out[k] = {b.lower, b.upper};
+    }
 }
 
 IdentificationStatus UkfIdentifier::observe(double deformation, double force, bool)

@@ -7,6 +7,8 @@
 #include "core/identification/BoucWenUkf.h"
 #include "core/updating/Identifier.h"
 
+#include <array>
+
 namespace hsmu {
 
 class UkfIdentifier final : public Identifier {
@@ -19,11 +21,15 @@ public:
     std::string methodName() const override { return "UKF"; }
     std::vector<std::string> parameterNames() const override;
     IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
-    ParameterValues estimate() const override { return m_estimate; }
-    ParameterValues standardDeviation() const override { return m_stddev; }
+    ParameterValues estimate() const override;
+    ParameterValues standardDeviation() const override;
     double predictedForce() const override { return m_predicted; }
     const ParameterBoundsMap& bounds() const override { return m_bounds; }
     bool setBounds(const std::string& name, const ParameterBounds& b) override;
+    std::vector<std::string> estimateNames() const override;
+    void estimateValues(std::vector<double>& out) const override;
+    void standardDeviationValues(std::vector<double>& out) const override;
+    void boundsValues(std::vector<ParameterBounds>& out) const override;
 
     BoucWenUkf& filter() { return m_ukf; }
     /// Lock a parameter at its current estimate (or unlock it).
@@ -35,7 +41,8 @@ private:
     void publish(const BoucWenUkfStep* step);
     BoucWenUkf m_ukf;
     ParameterBoundsMap m_bounds;
-    ParameterValues m_estimate, m_stddev;
+    // The published estimate and standard deviations, indexed by BoucWenUkfIndex.
+    std::array<double, kBoucWenUkfSize> m_estimate{}, m_stddev{};
     double m_predicted = 0.0;
 };
 

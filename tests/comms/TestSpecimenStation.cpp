@@ -202,6 +202,34 @@ private slots:
         QCOMPARE(mm.commanded, 0.001);
     }
 
+    void lateTargetAfterMotionStillEndsOnTheTarget() {
+        // Moving steps (the predictor extrapolates a speed), then a target 15 ticks late: the
+        // actuator slows over the 8-tick ramp instead of stopping, yet the step ends exactly
+        // on the target, with the late ticks counted and no interlock trip.
+        ControllerSettings cs;
+        cs.holdRamp = 8.0 / 1024.0;
+        SpecimenStation st(0, specimenSpec(), cs, SpecimenStation::Pace::RealTime, nullptr);
+        QVERIFY(acked(st.configure(configure001()))); // N = 10, P = 5 at 1024 Hz
+        const auto stepTo = [&](std::uint64_t n, int lateTicks) {
+            for (int i = 0; i < 5 + lateTicks; ++i)
+                QVERIFY(!st.tick());
+            QVERIFY(!st.target(TargetMsg{n, 2e-4 * double(n)}));
+            std::optional<Message> m;
+            for (int i = 0; i < 100 && !m; ++i)
+                m = st.tick();
+            const MeasurementMsg mm = expectMeasurement(m);
+            QCOMPARE(mm.commanded, 2e-4 * double(n));
+            QCOMPARE(mm.heldTicks, std::uint32_t(lateTicks));
+            QVERIFY(acked(st.commit(CommitMsg{n})));
+        };
+        for (std::uint64_t n = 1; n <= 3; ++n)
+            stepTo(n, 0);
+        stepTo(4, 15);
+        stepTo(5, 0);
+        QVERIFY(!st.holding());
+        QCOMPARE(st.totalHeldTicks(), 15L);
+    }
+
     void journalRestoresTheDamagedSpecimen() {
         QTemporaryDir dir;
         const std::string path = dir.filePath("state.txt").toStdString();
@@ -281,6 +309,11 @@ private slots:
         const ControllerSettings s = parseControllerSettings(parseConfig(j, "m.json"));
         QCOMPARE(s.ticksPerStep(0.01), 41); // round(0.02 * 2048) = 41
         QCOMPARE(s.predictTicks(0.01), 10);
+        QCOMPARE(s.holdRampTicks(), 10); // the default 0.005 s at 2048 Hz
+        j["controller"] = {{"holdRamp", 0.01}};
+        QCOMPARE(parseControllerSettings(parseConfig(j, "m.json")).holdRampTicks(), 10);
+        j["controller"] = {{"holdRamp", -0.01}};
+        QVERIFY_THROWS_EXCEPTION(ConfigError, parseControllerSettings(parseConfig(j, "m.json")));
         j["controller"] = {{"rate", -1}};
         QVERIFY_THROWS_EXCEPTION(ConfigError, parseControllerSettings(parseConfig(j, "m.json")));
         j["controller"] = {{"rat", 1}};

@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <cstring>
 
 using namespace hsmu;
 
@@ -52,6 +53,67 @@ std::vector<ReporterTarget> oneTarget()
 class TestReporter : public QObject {
     Q_OBJECT
 private slots:
+    void offerValuesEqualsOffer_data()
+    {
+        QTest::addColumn<int>("policy");
+        for (ReporterPolicy p : {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
+                                 ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval})
+            QTest::newRow(reporterPolicyName(p)) << int(p);
+    }
+
+    // The by-position offer (names resolved once by bind()) against the by-name one on a twin
+    // rig: the same decisions, the same parameters and forces bit for bit, the same refusals.
+    void offerValuesEqualsOffer()
+    {
+        QFETCH(int, policy);
+        const std::vector<std::string> names{"A0", "alpha", "k0"}; // sorted, as in a map
+        const std::vector<ReporterTarget> targets{{"Target", {"k0", "alpha", "gamma"}, {{"k0", 0.9}}}};
+        Rig a, b;
+        Reporter byName(targets, static_cast<ReporterPolicy>(policy), 3);
+        Reporter byPosition(targets, static_cast<ReporterPolicy>(policy), 3);
+        QVERIFY(byPosition.bind(b.s, names, nullptr));
+        int appliedA = 0, appliedB = 0, refusedA = 0;
+        std::vector<UpdateEvent> refusedB;
+        for (int step = 1; step <= 40; ++step) {
+            const double u = 0.05 * std::sin(0.4 * step);
+            a.moveTo(u);
+            b.moveTo(u);
+            // Step 17: a NaN; step 23: alpha > 1, which the law refuses.
+            const double alpha = step == 23 ? 1.5 : 0.04 + 0.001 * step;
+            const double k0 = step == 17 ? NAN : 1.0 + 0.01 * step;
+            for (const UpdateEvent& ev : byName.offer(step, 0.01 * step,
+                                                      {{"A0", 2.0}, {"alpha", alpha}, {"k0", k0}}, a.s)) {
+                appliedA += ev.ok;
+                refusedA += !ev.ok;
+            }
+            const std::vector<double> values{2.0, alpha, k0};
+            appliedB += byPosition.offerValues(step, 0.01 * step, values, b.s, refusedB);
+            QCOMPARE(appliedB, appliedA);
+            QCOMPARE(int(refusedB.size()), refusedA);
+            for (const auto& n : a.law().parameterNames()) {
+                const double x = *a.law().parameter(n), y = *b.law().parameter(n);
+                QVERIFY(std::memcmp(&x, &y, sizeof x) == 0);
+            }
+            const double fa = a.law().committedForce(), fb = b.law().committedForce();
+            QVERIFY(std::memcmp(&fa, &fb, sizeof fa) == 0);
+            QCOMPARE(byPosition.pending().size(), byName.pending().size());
+            if (!byName.pending().empty()) { // bit for bit (step 17 proposes a NaN)
+                const ParameterValues &x = byPosition.pending().back().proposed,
+                                      &y = byName.pending().back().proposed;
+                QCOMPARE(x.size(), y.size());
+                for (auto i = x.begin(), j = y.begin(); i != x.end(); ++i, ++j)
+                    QVERIFY(i->first == j->first &&
+                            std::memcmp(&i->second, &j->second, sizeof(double)) == 0);
+            }
+        }
+        QCOMPARE(byPosition.appliedCount(), byName.appliedCount());
+        if (static_cast<ReporterPolicy>(policy) == ReporterPolicy::EveryStep) {
+            QCOMPARE(appliedA, 38); // all but the NaN and the refused alpha
+            QCOMPARE(refusedA, 2);
+            QVERIFY(refusedB[1].message.find("refused alpha") != std::string::npos);
+        }
+    }
+
     void everyStepAppliesEveryOffer()
     {
         Rig rig;
