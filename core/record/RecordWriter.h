@@ -46,7 +46,7 @@ struct RecordStart {
     double dt = 0.0; ///< integration step [s]
     /// Which run of a protocol this is ("reference", "initial", "updated" for hsmu compare;
     /// "" for a single run). The configuration is the one given to the command.
-    std::string run;
+    std::string run{};
 };
 
 class RecordWriter final : public StepObserver {

@@ -59,13 +59,13 @@ void ModelUpdater::applyToAuxiliary(const std::vector<double>& values)
     m_aux->setParameterValues(m_auxApply, m_auxValues, false);
 }
 
-void ModelUpdater::report(const std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms,
+void ModelUpdater::report(std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms,
                           int step, double time, UpdatingSample& out)
 {
-    for (const auto& ev : events) {
+    for (auto& ev : events) {
         if (ev.ok) {
             ++out.updatesThisStep;
-            out.applied.push_back(ev);
+            out.applied.push_back(std::move(ev));
         } else
             alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::ModelUpdate,
                               "update not applied: " + ev.message});
@@ -130,14 +130,14 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     m_inspector.observe(in, alarms);
 
     if (st.updated) {
-        m_refused.clear();
-        out.updatesThisStep +=
-            m_reporter->offerValues(step, time, m_values, structure, m_refused);
-        report(m_refused, alarms, step, time, out);
+        m_events.clear();
+        m_reporter->offerValues(step, time, m_values, structure, m_events);
+        report(m_events, alarms, step, time, out); // counts the applied ones
     }
-    if (m_autoResolve && !m_reporter->pending().empty())
-        report(m_reporter->resolveAll(*m_autoResolve, structure, step, time), alarms, step, time,
-               out);
+    if (m_autoResolve && !m_reporter->pending().empty()) {
+        auto resolved = m_reporter->resolveAll(*m_autoResolve, structure, step, time);
+        report(resolved, alarms, step, time, out);
+    }
 
     out.fitError = m_inspector.fitError();
     out.tracking = m_inspector.tracking();

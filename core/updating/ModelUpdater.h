@@ -82,7 +82,8 @@ private:
     void applyToAuxiliary(const std::vector<double>& values);
     void fillEstimate(const std::vector<double>& values, const std::vector<double>& sd,
                       UpdatingSample& out) const;
-    void report(const std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms, int step,
+    /// Moves the applied events into out.applied; refusals become alarms.
+    void report(std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms, int step,
                 double time, UpdatingSample& out);
 
     std::string m_specimen;
@@ -103,7 +104,7 @@ private:
     std::vector<double> m_values, m_sd, m_auxValues;
     std::vector<int> m_auxApply;
     std::vector<ParameterBounds> m_boundValues;
-    std::vector<UpdateEvent> m_refused;
+    std::vector<UpdateEvent> m_events; ///< this step's update decisions (reused)
     int m_rejections = 0;
     int m_maxRejections = 20;
 };

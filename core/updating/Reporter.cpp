@@ -164,6 +164,7 @@ bool Reporter::bind(Structure& structure, const std::vector<std::string>& identi
             b.scale.push_back(s == t.scale.end() ? 1.0 : s->second);
         }
         b.values.resize(b.identifiedIndex.size());
+        b.names = std::move(names);
         m_bound.push_back(std::move(b));
     }
     m_boundNames = identifiedNames;
@@ -180,16 +181,14 @@ ParameterValues Reporter::identifiedMap(std::span<const double> identified) cons
 }
 
 int Reporter::offerValues(int step, double time, std::span<const double> identified,
-                          Structure& structure, std::vector<UpdateEvent>& refused)
+                          Structure& structure, std::vector<UpdateEvent>& events)
 {
     if (m_boundStructure != &structure || m_bound.size() != m_targets.size() ||
         identified.size() != m_boundNames.size()) {
         int applied = 0;
         for (UpdateEvent& ev : offer(step, time, identifiedMap(identified), structure)) {
-            if (ev.ok)
-                ++applied;
-            else
-                refused.push_back(std::move(ev));
+            applied += ev.ok;
+            events.push_back(std::move(ev));
         }
         return applied;
     }
@@ -213,15 +212,20 @@ int Reporter::offerValues(int step, double time, std::span<const double> identif
         if (finite && refusedAt < 0) {
             ++m_applied;
             ++applied;
+            // The record's event row, equal to what offer() returns (proposalFor's values).
+            UpdateEvent& ev = events.emplace_back();
+            ev.step = step;
+            ev.time = time;
+            ev.element = m_targets[i].element;
+            for (std::size_t k = 0; k < b.values.size(); ++k)
+                ev.applied.emplace_hint(ev.applied.end(), b.names[k], b.values[k]);
             continue;
         }
         // The rare path: let apply() say why (it repeats the checks and leaves the law as is).
         UpdateEvent ev = apply(m_targets[i].element, proposalFor(m_targets[i], identifiedMap(identified)),
                                structure, step, time);
-        if (ev.ok)
-            ++applied;
-        else
-            refused.push_back(std::move(ev));
+        applied += ev.ok;
+        events.push_back(std::move(ev));
     }
     return applied;
 }

@@ -87,16 +87,18 @@ public:
               std::string* error);
     /// offer() for values in the bound layout, on the structure bound (else as offer()):
     /// the same decisions and updates without lookups by name or allocation (apart from
-    /// OnApproval proposals and refusals). Returns how many updates were applied now;
-    /// updates that were refused are appended to `refused`.
+    /// OnApproval proposals, refusals and the event of an update applied). Returns how many
+    /// updates were applied now; every update decided now, applied or refused, is appended to
+    /// `events` as offer() returns it.
     int offerValues(int step, double time, std::span<const double> identified,
-                    Structure& structure, std::vector<UpdateEvent>& refused);
+                    Structure& structure, std::vector<UpdateEvent>& events);
 
 private:
     // A target resolved by bind(): its parameters in name order (the order offer() applies
     // them in), their positions in the identified layout and in the law, their scale.
     struct BoundTarget {
         HysteresisLaw* law = nullptr;
+        std::vector<std::string> names; // sorted: proposalFor()'s map order
         std::vector<int> identifiedIndex, lawIndex;
         std::vector<double> scale, values; // values: this step's, scaled (kept: no allocation)
     };
