@@ -1168,6 +1168,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
             <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
         </translation>
     </message>
+    <message>
+        <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
+        <translation> (dataSize %1; ctrl sizes %2; daq sizes %3)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -1680,6 +1684,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>this configuration has no updating section to enable</source>
         <translation>this configuration has no updating section to enable</translation>
+    </message>
+    <message>
+        <source>OpenFresco SimApp site</source>
+        <translation>OpenFresco SimApp site</translation>
+    </message>
+    <message>
+        <source>OpenFresco GenericTCP controller</source>
+        <translation>OpenFresco GenericTCP controller</translation>
     </message>
 </context>
 <context>

@@ -1168,6 +1168,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
             <numerusform>%n alarmas críticas sin reconocer. Última: %1</numerusform>
         </translation>
     </message>
+    <message>
+        <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
+        <translation> (dataSize %1; tamaños ctrl %2; tamaños daq %3)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -1680,6 +1684,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>this configuration has no updating section to enable</source>
         <translation>esta configuración no tiene una sección updating que habilitar</translation>
+    </message>
+    <message>
+        <source>OpenFresco SimApp site</source>
+        <translation>sitio OpenFresco SimApp</translation>
+    </message>
+    <message>
+        <source>OpenFresco GenericTCP controller</source>
+        <translation>controlador OpenFresco GenericTCP</translation>
     </message>
 </context>
 <context>

@@ -1167,6 +1167,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
             <numerusform>%n 条严重报警未确认。最新：%1</numerusform>
         </translation>
     </message>
+    <message>
+        <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
+        <translation>（dataSize %1；控制尺寸 %2；采集尺寸 %3）</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -1678,6 +1682,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>this configuration has no updating section to enable</source>
         <translation>该配置没有可启用的 updating 部分</translation>
+    </message>
+    <message>
+        <source>OpenFresco SimApp site</source>
+        <translation>OpenFresco SimApp 站点</translation>
+    </message>
+    <message>
+        <source>OpenFresco GenericTCP controller</source>
+        <translation>OpenFresco GenericTCP 控制器</translation>
     </message>
 </context>
 <context>

@@ -394,7 +394,18 @@ void MainWindow::showLinkState(bool connected, bool fault) {
         m_status->setLink(tr("built-in virtual lab"), true);
         return;
     }
-    const QString where = QString::fromStdString(a.toString());
+    QString where = QString::fromStdString(a.toString());
+    if (a.kind == comms::LinkAddress::Kind::SimApp ||
+        a.kind == comms::LinkAddress::Kind::GenericTcp) {
+        // What the client sends in OpenFresco's sizes header (the server checks it at connect).
+        const LinkSpec& spec = m_controller->config().link;
+        const auto list = [](const std::array<int, 5>& v) {
+            return QStringLiteral("%1 %2 %3 %4 %5").arg(v[0]).arg(v[1]).arg(v[2]).arg(v[3]).arg(v[4]);
+        };
+        where += tr(" (dataSize %1; ctrl sizes %2; daq sizes %3)")
+                     .arg(spec.dataSize)
+                     .arg(list(spec.ctrlSizes), list(spec.daqSizes));
+    }
     if (fault)
         m_status->setLink(tr("%1 fault").arg(where), false);
     else

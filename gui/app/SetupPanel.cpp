@@ -122,6 +122,10 @@ QWidget* SetupPanel::buildControllerGroup() {
     m_controllerKind->setObjectName(QStringLiteral("controllerKind"));
     m_controllerKind->addItem(tr("built-in virtual lab"), QStringLiteral("builtin"));
     m_controllerKind->addItem(tr("hsmu-controller over TCP"), QStringLiteral("tcp"));
+    // OpenFresco's protocols (docs/openfresco.md); dataSize and sizes come from the
+    // configuration's controller section.
+    m_controllerKind->addItem(tr("OpenFresco SimApp site"), QStringLiteral("simapp"));
+    m_controllerKind->addItem(tr("OpenFresco GenericTCP controller"), QStringLiteral("generictcp"));
     m_host = new QLineEdit(QStringLiteral("127.0.0.1"), box);
     m_host->setObjectName(QStringLiteral("controllerHost"));
     m_port = new QSpinBox(box);
@@ -132,9 +136,9 @@ QWidget* SetupPanel::buildControllerGroup() {
     form->addRow(tr("Host:"), m_host);
     form->addRow(tr("Port:"), m_port);
     connect(m_controllerKind, &QComboBox::currentIndexChanged, this, [this] {
-        const bool tcp = m_controllerKind->currentData() == QStringLiteral("tcp");
-        m_host->setEnabled(tcp && m_editable);
-        m_port->setEnabled(tcp && m_editable);
+        const bool remote = m_controllerKind->currentData() != QStringLiteral("builtin");
+        m_host->setEnabled(remote && m_editable);
+        m_port->setEnabled(remote && m_editable);
         markDirty();
     });
     connect(m_host, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
@@ -285,18 +289,23 @@ std::optional<comms::LinkAddress> SetupPanel::controller(QString* error) const {
 }
 
 QString SetupPanel::controllerText() const {
-    if (m_controllerKind->currentData() != QStringLiteral("tcp"))
-        return QStringLiteral("builtin");
-    return QStringLiteral("tcp://%1:%2").arg(m_host->text().trimmed()).arg(m_port->value());
+    const QString scheme = m_controllerKind->currentData().toString();
+    if (scheme == QStringLiteral("builtin"))
+        return scheme;
+    return QStringLiteral("%1://%2:%3").arg(scheme, m_host->text().trimmed()).arg(m_port->value());
 }
 
 void SetupPanel::setControllerAddress(const QString& address) {
     const auto a = comms::LinkAddress::parse(address.toStdString());
     if (!a)
         return;
-    const bool tcp = a->kind == comms::LinkAddress::Kind::Tcp;
-    m_controllerKind->setCurrentIndex(tcp ? 1 : 0);
-    if (tcp) {
+    using Kind = comms::LinkAddress::Kind;
+    const QString scheme = a->kind == Kind::Tcp          ? QStringLiteral("tcp")
+                           : a->kind == Kind::SimApp     ? QStringLiteral("simapp")
+                           : a->kind == Kind::GenericTcp ? QStringLiteral("generictcp")
+                                                         : QStringLiteral("builtin");
+    m_controllerKind->setCurrentIndex(m_controllerKind->findData(scheme));
+    if (a->kind != Kind::Builtin) {
         m_host->setText(QString::fromStdString(a->host));
         m_port->setValue(a->port);
     }
@@ -306,9 +315,9 @@ void SetupPanel::setEditable(bool editable) {
     m_editable = editable;
     for (QWidget* w : m_inputs)
         w->setEnabled(editable);
-    const bool tcp = m_controllerKind->currentData() == QStringLiteral("tcp");
-    m_host->setEnabled(editable && tcp);
-    m_port->setEnabled(editable && tcp);
+    const bool remote = m_controllerKind->currentData() != QStringLiteral("builtin");
+    m_host->setEnabled(editable && remote);
+    m_port->setEnabled(editable && remote);
     m_alpha->setEnabled(editable && m_integrator->currentData() == QStringLiteral("alphaOS"));
     m_updating->setEnabled(editable && m_updating->property("available").toBool());
     for (QPushButton* b : findChildren<QPushButton*>())

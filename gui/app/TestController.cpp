@@ -54,7 +54,7 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
     comms::TcpControlOptions link;
     link.connectTimeout = 3.0; // an absent controller is an error within seconds
     std::unique_ptr<HybridTest> test =
-        buildHybridTest(cfg, comms::makeControlFactory(controller, link)); // may throw
+        buildHybridTest(cfg, comms::makeControlFactory(controller, link, cfg.link)); // may throw
     m_config = cfg;
     m_address = controller;
     m_layout = RunLayout::of(*test); // with the updater's parameters, for the plots

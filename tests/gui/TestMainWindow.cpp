@@ -316,6 +316,12 @@ private slots:
             QVERIFY(alarmDock);
             alarmDock->setFloating(true);
             auto* setup = window.findChild<SetupPanel*>();
+            // Every protocol round-trips through the panel (docs/openfresco.md).
+            for (const char* a : {"simapp://127.0.0.1:7001", "generictcp://10.0.0.2:7002",
+                                  "builtin"}) {
+                setup->setControllerAddress(QString::fromLatin1(a));
+                QCOMPARE(setup->controllerText(), QString::fromLatin1(a));
+            }
             setup->setControllerAddress(QStringLiteral("tcp://127.0.0.1:5999"));
             QVERIFY(window.applySetup()); // the address is remembered when applied
             window.close();
