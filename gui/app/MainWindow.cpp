@@ -14,11 +14,13 @@
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/replay/ReplayWindow.h"
 
+#include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -146,12 +148,29 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     file->addAction(tr("Open r&ecord..."), this, [this] { ReplayWindow::openWithDialog(this); });
     file->addSeparator();
+    QAction* note = file->addAction(tr("Add &note..."), this, &MainWindow::askForNote);
+    note->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_N));
+    note->setToolTip(tr("Record a note at the current step of the test"));
+    file->addSeparator();
     file->addAction(tr("&Settings..."), this, &MainWindow::openSettings);
     file->addSeparator();
     file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         m_viewMenu->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::askForNote() {
+    if (!m_controller->hasTest()) {
+        QMessageBox::information(this, tr("Add note"), tr("Load and start a test first."));
+        return;
+    }
+    bool ok = false;
+    const QString text = QInputDialog::getMultiLineText(
+        this, tr("Add note"), tr("Note (recorded with the current step and test time):"),
+        QString(), &ok);
+    if (ok && !text.trimmed().isEmpty())
+        m_controller->addNote(text.trimmed());
 }
 
 void MainWindow::rebuildRecentMenu() {

@@ -7,7 +7,8 @@
 //     loaded, the parameters when it runs), Pending updates (right), Alarms (bottom); their
 //     layout and the window geometry are remembered (ConsoleSettings)
 //   TestStatusBar: test time, step, steps/s, state, link, recording
-//   menus: File (open, recent files, open record -> ReplayWindow, settings, quit), View
+//   menus: File (open, recent files, open record -> ReplayWindow, add a note to the record
+//     (Ctrl+N, TestController::addNote), settings, quit), View
 // Start goes through the pre-flight: the worker prepares the test (connects a link, checks
 // stability) and the PreflightDialog must be confirmed before the first step; a command-line
 // --start is the operator's confirmation (setConfirmBeforeStart(false)).
@@ -82,6 +83,8 @@ private:
                          Qt::DockWidgetArea area);
     void buildMenus();
     void rebuildRecentMenu();
+    /// Ask for an operator note and queue it to the worker (recorded at the current step).
+    void askForNote();
     void wireController();
     void requestRun(RunRequest request);
     void showPreflight(const PreflightReport& report);

@@ -177,6 +177,10 @@ void TestController::setFitThreshold(double threshold) {
     onWorker([=](TestWorker* w) { w->setFitThreshold(threshold); });
 }
 
+void TestController::addNote(const QString& text) {
+    onWorker([text](TestWorker* w) { w->addNote(text); });
+}
+
 void TestController::drain() {
     if (!m_buffer)
         return;

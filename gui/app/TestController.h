@@ -89,6 +89,9 @@ public slots:
     void rejectUpdate(int proposalId);
     void setReporterPolicy(hsmu::ReporterPolicy policy, int everyN);
     void setFitThreshold(double threshold);
+    /// An operator note, recorded by the worker with its current step and time (queued; the
+    /// GUI thread never touches the record). Refused (commandRefused) without a record.
+    void addNote(const QString& text);
 
 signals:
     /// Rows since the last emission, oldest first (GUI thread, at most ~30 Hz).

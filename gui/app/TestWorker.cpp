@@ -137,6 +137,16 @@ void TestWorker::setSpeed(double factor) {
     restartPacing();
 }
 
+void TestWorker::addNote(const QString& text) {
+    if (text.trimmed().isEmpty())
+        return;
+    if (!m_record || !m_record->ok()) {
+        emit commandRefused(tr("the note was not kept: this test is not recorded"));
+        return;
+    }
+    m_record->addNote(m_test->time(), m_test->currentStep(), text.toStdString());
+}
+
 void TestWorker::setParameterBounds(const QString& name, double lower, double upper) {
     ModelUpdater* u = m_test->updater();
     if (!u)

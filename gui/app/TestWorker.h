@@ -8,7 +8,8 @@
 // s <= 0 runs as fast as possible. Every committed StepRecord goes into the RecordBuffer;
 // recordsAvailable() is emitted only when the buffer turns non-empty (one coalesced signal per
 // GUI drain). With a record path, every step (from step 0) and alarm also goes into an HDF5
-// record (RecordWriter), flushed at every state change and finished with the test. The updating
+// record (RecordWriter), flushed at every state change and finished with the test; operator
+// notes (addNote) go there too, stamped with the current step and test time. The updating
 // panels get an UpdatingSnapshot at most ~10 times a second while running, and at once after every
 // operator decision and state change.
 //
@@ -73,6 +74,9 @@ public slots:
     void rejectUpdate(int proposalId);
     void setReporterPolicy(hsmu::ReporterPolicy policy, int everyN);
     void setFitThreshold(double threshold);
+    /// An operator note at the current step and test time, into the record
+    /// (RecordWriter::addNote); refused with commandRefused() when nothing is recorded.
+    void addNote(const QString& text);
 
 signals:
     void recordsAvailable();

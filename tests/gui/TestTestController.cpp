@@ -1,12 +1,15 @@
 // TestController: the test runs on the worker thread; pause / resume / hold / stop act between
 // steps; the GUI thread receives every committed step exactly once, in order (steps + 1 rows
-// with the initial state).
+// with the initial state). Operator notes reach the HDF5 record with the step they were added
+// at, through the worker (read back with the real RecordReader).
 
+#include "core/record/RecordReader.h"
 #include "core/test/HybridTest.h"
 #include "gui/PresetLibrary.h"
 #include "gui/app/TestController.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QThread>
 #include <QtTest>
 
@@ -139,6 +142,56 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Failed, 5000);
         const QString message = states.last().at(1).toString();
         QVERIFY2(message.contains(QStringLiteral("omega_max dt")), qPrintable(message));
+    }
+
+    void notesAreRecordedWithTheirStep() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        TestController controller;
+        Receiver rx;
+        rx.attach(controller);
+        controller.setRecordDirectory(dir.path());
+        controller.setSpeed(5.0);
+        const TestConfig cfg = preset(QStringLiteral("paper-condition-3"), 3.0);
+        controller.load(cfg);
+        QVERIFY(!controller.recordPath().isEmpty());
+        controller.start();
+        QTRY_VERIFY_WITH_TIMEOUT(rx.steps.size() >= 30, 10000);
+        controller.pause();
+        // Paused: every committed row was delivered before the state change, so the worker's
+        // current step is the last one received.
+        QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Paused, 5000);
+        const int pausedAt = rx.steps.back();
+        QVERIFY(pausedAt > 0 && pausedAt < 300);
+        controller.addNote(QStringLiteral("crack at the base, east side"));
+        controller.addNote(QStringLiteral("   ")); // blank: ignored
+        controller.resume();
+        QTRY_VERIFY_WITH_TIMEOUT(rx.steps.size() >= std::size_t(pausedAt + 30), 10000);
+        const int runningFrom = rx.steps.back();
+        controller.addNote(QStringLiteral("second note, while running"));
+        QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Finished, 20000);
+        const QString path = controller.recordPath();
+        controller.load(cfg); // the old worker finishes its record
+        const RecordReader reader(path.toStdString());
+        const RecordData& d = reader.data();
+        QCOMPARE(d.rows(), 301);
+        QCOMPARE(int(d.notes.size()), 2);
+        QCOMPARE(d.notes[0].step, pausedAt);
+        QCOMPARE(d.notes[0].text, std::string("crack at the base, east side"));
+        QVERIFY(std::abs(d.notes[0].time - pausedAt * cfg.analysis.dt) <= 1e-9);
+        QCOMPARE(d.notes[1].text, std::string("second note, while running"));
+        QVERIFY(d.notes[1].step >= runningFrom && d.notes[1].step <= 300);
+        QVERIFY(std::abs(d.notes[1].time - d.notes[1].step * cfg.analysis.dt) <= 1e-9);
+    }
+
+    void noteWithoutARecordIsRefused() {
+        TestController controller;
+        controller.setRecordDirectory(QString());
+        controller.load(preset(QStringLiteral("paper-condition-3"), 1.0));
+        QSignalSpy refused(&controller, &TestController::commandRefused);
+        controller.addNote(QStringLiteral("lost?"));
+        QTRY_COMPARE_WITH_TIMEOUT(refused.count(), 1, 5000);
+        QVERIFY(refused.at(0).at(0).toString().contains(QStringLiteral("not recorded")));
     }
 
     void badConfigurationThrowsOnLoad() {
