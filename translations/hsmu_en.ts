@@ -1172,6 +1172,26 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
         <translation> (dataSize %1; ctrl sizes %2; daq sizes %3)</translation>
     </message>
+    <message>
+        <source>Add &amp;note...</source>
+        <translation>Add &amp;note...</translation>
+    </message>
+    <message>
+        <source>Record a note at the current step of the test</source>
+        <translation>Record a note at the current step of the test</translation>
+    </message>
+    <message>
+        <source>Add note</source>
+        <translation>Add note</translation>
+    </message>
+    <message>
+        <source>Load and start a test first.</source>
+        <translation>Load and start a test first.</translation>
+    </message>
+    <message>
+        <source>Note (recorded with the current step and test time):</source>
+        <translation>Note (recorded with the current step and test time):</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -1432,6 +1452,49 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::ReidentifyDialog</name>
+    <message>
+        <source>Re-identify</source>
+        <translation>Re-identify</translation>
+    </message>
+    <message>
+        <source>UKF</source>
+        <translation>UKF</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead</source>
+        <translation>Nelder-Mead</translation>
+    </message>
+    <message>
+        <source>none: the recorded settings</source>
+        <translation>none: the recorded settings</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Browse...</translation>
+    </message>
+    <message>
+        <source>Override settings</source>
+        <translation>Override settings</translation>
+    </message>
+    <message>
+        <source>JSON (*.json);;All files (*)</source>
+        <translation>JSON (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Method</translation>
+    </message>
+    <message>
+        <source>Override (JSON)</source>
+        <translation>Override (JSON)</translation>
+    </message>
+    <message>
+        <source>{"model": ..., "updating": ...} merged into the recorded settings, as hsmu replay --config</source>
+        <translation>{"model": ..., "updating": ...} merged into the recorded settings, as hsmu replay --config</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ReplayWindow</name>
     <message>
         <source>Open record</source>
@@ -1480,6 +1543,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source> t = %1 s   step %2 of %3 </source>
         <translation> t = %1 s   step %2 of %3 </translation>
+    </message>
+    <message>
+        <source>Re-identify...</source>
+        <translation>Re-identify...</translation>
+    </message>
+    <message>
+        <source>Identify the specimen again with other settings and overlay the parameter history</source>
+        <translation>Identify the specimen again with other settings and overlay the parameter history</translation>
+    </message>
+    <message>
+        <source>identifying</source>
+        <translation>identifying</translation>
+    </message>
+    <message>
+        <source>Re-identifying the specimen</source>
+        <translation>Re-identifying the specimen</translation>
+    </message>
+    <message>
+        <source>re-identified (%1)</source>
+        <translation>re-identified (%1)</translation>
+    </message>
+    <message>
+        <source>Re-identification failed</source>
+        <translation>Re-identification failed</translation>
     </message>
 </context>
 <context>
@@ -1766,6 +1853,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>the fit-error threshold must be a positive number</source>
         <translation>the fit-error threshold must be a positive number</translation>
+    </message>
+    <message>
+        <source>the note was not kept: this test is not recorded</source>
+        <translation>the note was not kept: this test is not recorded</translation>
     </message>
 </context>
 </TS>

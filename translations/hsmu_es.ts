@@ -1172,6 +1172,26 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
         <translation> (dataSize %1; tamaños ctrl %2; tamaños daq %3)</translation>
     </message>
+    <message>
+        <source>Add &amp;note...</source>
+        <translation>Añadir &amp;nota...</translation>
+    </message>
+    <message>
+        <source>Record a note at the current step of the test</source>
+        <translation>Registrar una nota en el paso actual del ensayo</translation>
+    </message>
+    <message>
+        <source>Add note</source>
+        <translation>Añadir nota</translation>
+    </message>
+    <message>
+        <source>Load and start a test first.</source>
+        <translation>Primero cargue e inicie un ensayo.</translation>
+    </message>
+    <message>
+        <source>Note (recorded with the current step and test time):</source>
+        <translation>Nota (se registra con el paso y el tiempo de ensayo actuales):</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -1432,6 +1452,49 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::ReidentifyDialog</name>
+    <message>
+        <source>Re-identify</source>
+        <translation>Reidentificar</translation>
+    </message>
+    <message>
+        <source>UKF</source>
+        <translation>UKF</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead</source>
+        <translation>Nelder-Mead</translation>
+    </message>
+    <message>
+        <source>none: the recorded settings</source>
+        <translation>ninguno: la configuración registrada</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Examinar...</translation>
+    </message>
+    <message>
+        <source>Override settings</source>
+        <translation>Configuración que sustituye</translation>
+    </message>
+    <message>
+        <source>JSON (*.json);;All files (*)</source>
+        <translation>JSON (*.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Método</translation>
+    </message>
+    <message>
+        <source>Override (JSON)</source>
+        <translation>Sustitución (JSON)</translation>
+    </message>
+    <message>
+        <source>{&quot;model&quot;: ..., &quot;updating&quot;: ...} merged into the recorded settings, as hsmu replay --config</source>
+        <translation>{&quot;model&quot;: ..., &quot;updating&quot;: ...} combinado con la configuración registrada, como hsmu replay --config</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ReplayWindow</name>
     <message>
         <source>Open record</source>
@@ -1480,6 +1543,30 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source> t = %1 s   step %2 of %3 </source>
         <translation> t = %1 s   paso %2 de %3 </translation>
+    </message>
+    <message>
+        <source>Re-identify...</source>
+        <translation>Reidentificar...</translation>
+    </message>
+    <message>
+        <source>Identify the specimen again with other settings and overlay the parameter history</source>
+        <translation>Identificar de nuevo el espécimen con otra configuración y superponer la historia de parámetros</translation>
+    </message>
+    <message>
+        <source>identifying</source>
+        <translation>identificando</translation>
+    </message>
+    <message>
+        <source>Re-identifying the specimen</source>
+        <translation>Reidentificando el espécimen</translation>
+    </message>
+    <message>
+        <source>re-identified (%1)</source>
+        <translation>reidentificado (%1)</translation>
+    </message>
+    <message>
+        <source>Re-identification failed</source>
+        <translation>La reidentificación falló</translation>
     </message>
 </context>
 <context>
@@ -1766,6 +1853,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>the fit-error threshold must be a positive number</source>
         <translation>el umbral del error de ajuste debe ser un número positivo</translation>
+    </message>
+    <message>
+        <source>the note was not kept: this test is not recorded</source>
+        <translation>la nota no se guardó: este ensayo no se registra</translation>
     </message>
 </context>
 </TS>

@@ -1171,6 +1171,26 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
         <translation>（dataSize %1；控制尺寸 %2；采集尺寸 %3）</translation>
     </message>
+    <message>
+        <source>Add &amp;note...</source>
+        <translation>添加备注(&amp;N)...</translation>
+    </message>
+    <message>
+        <source>Record a note at the current step of the test</source>
+        <translation>在试验的当前步记录一条备注</translation>
+    </message>
+    <message>
+        <source>Add note</source>
+        <translation>添加备注</translation>
+    </message>
+    <message>
+        <source>Load and start a test first.</source>
+        <translation>请先加载并启动试验。</translation>
+    </message>
+    <message>
+        <source>Note (recorded with the current step and test time):</source>
+        <translation>备注（连同当前步和试验时间一起记录）：</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -1430,6 +1450,49 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::ReidentifyDialog</name>
+    <message>
+        <source>Re-identify</source>
+        <translation>重新识别</translation>
+    </message>
+    <message>
+        <source>UKF</source>
+        <translation>UKF</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead</source>
+        <translation>Nelder-Mead</translation>
+    </message>
+    <message>
+        <source>none: the recorded settings</source>
+        <translation>无：使用记录的设置</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>浏览...</translation>
+    </message>
+    <message>
+        <source>Override settings</source>
+        <translation>覆盖设置</translation>
+    </message>
+    <message>
+        <source>JSON (*.json);;All files (*)</source>
+        <translation>JSON (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>Override (JSON)</source>
+        <translation>覆盖 (JSON)</translation>
+    </message>
+    <message>
+        <source>{&quot;model&quot;: ..., &quot;updating&quot;: ...} merged into the recorded settings, as hsmu replay --config</source>
+        <translation>{&quot;model&quot;: ..., &quot;updating&quot;: ...} 合并到记录的设置中，同 hsmu replay --config</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ReplayWindow</name>
     <message>
         <source>Open record</source>
@@ -1478,6 +1541,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source> t = %1 s   step %2 of %3 </source>
         <translation> t = %1 s   第 %2 / %3 步 </translation>
+    </message>
+    <message>
+        <source>Re-identify...</source>
+        <translation>重新识别...</translation>
+    </message>
+    <message>
+        <source>Identify the specimen again with other settings and overlay the parameter history</source>
+        <translation>用其他设置重新识别试件，并叠加参数历程</translation>
+    </message>
+    <message>
+        <source>identifying</source>
+        <translation>识别中</translation>
+    </message>
+    <message>
+        <source>Re-identifying the specimen</source>
+        <translation>正在重新识别试件</translation>
+    </message>
+    <message>
+        <source>re-identified (%1)</source>
+        <translation>重新识别 (%1)</translation>
+    </message>
+    <message>
+        <source>Re-identification failed</source>
+        <translation>重新识别失败</translation>
     </message>
 </context>
 <context>
@@ -1764,6 +1851,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>the fit-error threshold must be a positive number</source>
         <translation>拟合误差阈值必须为正数</translation>
+    </message>
+    <message>
+        <source>the note was not kept: this test is not recorded</source>
+        <translation>备注未保存：此试验没有记录</translation>
     </message>
 </context>
 </TS>

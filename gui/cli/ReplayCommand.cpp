@@ -6,10 +6,10 @@
 #include "core/identification/OfflineIdentificationReport.h"
 #include "core/record/RecordReader.h"
 #include "gui/cli/ConsoleStreams.h"
+#include "gui/replay/Reidentification.h"
 
 #include <QCommandLineParser>
 #include <QDir>
-#include <QFile>
 #include <QTextStream>
 
 #include <optional>
@@ -79,17 +79,6 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
     if (o.outDir.isEmpty())
         return ReplayCommand::tr("missing --out DIR");
     return std::nullopt;
-}
-
-nlohmann::json readJsonFile(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        throw ConfigError(path.toStdString() + ": cannot be opened");
-    try {
-        return nlohmann::json::parse(f.readAll().toStdString());
-    } catch (const nlohmann::json::parse_error& e) {
-        throw ConfigError(path.toStdString() + ": not valid JSON (" + e.what() + ")");
-    }
 }
 
 /// The last recorded online estimate, when the record identified this specimen by `method`.
@@ -177,11 +166,7 @@ int ReplayCommand::exec(const QStringList& arguments) {
             settings = identificationSettingsFrom(cfg, o.specimen.toStdString());
             history = historyFromRecord(d, settings.specimen, o.record.toStdString());
         }
-        if (!o.config.isEmpty())
-            settings = withOverride(settings, readJsonFile(o.config), o.config.toStdString(),
-                                    o.method.toStdString());
-        else if (!o.method.isEmpty())
-            settings = withMethod(settings, o.method.toStdString());
+        settings = withOverrides(settings, o.config, o.method);
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }

@@ -142,6 +142,18 @@ void LivePlotsPanel::setGroundMotion(const QVector<double>& time,
     m_ground->refresh();
 }
 
+bool LivePlotsPanel::overlayParameterHistory(const QString& curveName, const QString& parameter,
+                                             const QVector<double>& time,
+                                             const QVector<double>& values) {
+    for (ParameterPlot* p : m_parameters)
+        if (p->parameterName() == parameter) {
+            p->setOverlay(curveName, time, values);
+            p->refresh();
+            return true;
+        }
+    return false;
+}
+
 void LivePlotsPanel::rebuildParameterPlots(const RunLayout& layout,
                                            const PlotReferences& references) {
     for (ParameterPlot* p : m_parameters)

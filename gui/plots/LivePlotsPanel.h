@@ -71,6 +71,11 @@ public:
 
     /// Append rows (oldest first) to every plot; no replot.
     void appendRecords(const std::vector<StepRecord>& rows);
+    /// Overlay a second history of `parameter` on its plot as the curve `curveName` (time [s],
+    /// values in the parameter's units; a curve of that name is replaced) and redraw. False if
+    /// no plot shows that parameter.
+    bool overlayParameterHistory(const QString& curveName, const QString& parameter,
+                                 const QVector<double>& time, const QVector<double>& values);
     /// Remove every point (the configuration stays).
     void clearData();
     /// Ask for a redraw: now if the budget allows, else once when it does.

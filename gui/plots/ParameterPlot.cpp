@@ -46,6 +46,10 @@ ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
 
 void ParameterPlot::showParameter(const QString& name, int index) {
     m_index = index;
+    m_name = name;
+    for (QCPGraph* g : m_overlays)
+        removeGraph(g);
+    m_overlays.clear();
     clearData();
     setTrueValue(qQNaN());
     yAxis->setLabel(name);
@@ -109,6 +113,27 @@ void ParameterPlot::appendSamples(const QVector<double>& time, const QVector<dou
 void ParameterPlot::clearData() {
     for (QCPGraph* g : {m_value, m_lower, m_upper, m_true})
         g->data()->clear();
+}
+
+void ParameterPlot::setOverlay(const QString& name, const QVector<double>& time,
+                               const QVector<double>& values) {
+    auto* g = const_cast<QCPGraph*>(overlayGraph(name));
+    if (!g) {
+        g = addGraph(xAxis, yAxis);
+        QPen pen = PlotStyle::seriesPen(int(m_overlays.size()) + 2); // not the estimate's, not red
+        pen.setStyle(Qt::DashLine);
+        g->setPen(pen);
+        g->setName(name);
+        m_overlays.push_back(g);
+    }
+    g->setData(time, values, true);
+}
+
+const QCPGraph* ParameterPlot::overlayGraph(const QString& name) const {
+    for (QCPGraph* g : m_overlays)
+        if (g->name() == name)
+            return g;
+    return nullptr;
 }
 
 void ParameterPlot::refresh() {

@@ -5,7 +5,9 @@
 // line, and optionally the identification bounds as two red dotted lines (kept in range).
 // Values in the law's own units (normalized by uRef / fRef for Bouc-Wen).
 // Two feeds: StepRecords (the console: parameter `index` of StepRecord::updating) or
-// precomputed samples (hsmu compare).
+// precomputed samples (hsmu compare). Overlays: further named curves over the same axes (e.g.
+// a re-identified history in the replay window), each in its own palette colour, in the
+// legend; they survive clearData() and go with showParameter().
 // Thread rules: GUI thread only, like every widget.
 
 #include "core/test/StepRecord.h"
@@ -26,6 +28,7 @@ public:
     /// Show parameter `name`, which is entry `index` of StepRecord::updating.parameters and
     /// .stddev; clears the data and the true value.
     void showParameter(const QString& name, int index = 0);
+    const QString& parameterName() const { return m_name; }
     /// Draw the true value as a dashed line over the data's time span; NaN hides it.
     void setTrueValue(double value);
     /// Draw the lower and upper bounds of the identification (infinite or NaN: not drawn).
@@ -44,6 +47,10 @@ public:
     void appendSamples(const QVector<double>& time, const QVector<double>& value,
                        const QVector<double>& sigma);
     void clearData();
+    /// Show the curve `name` (time [s], values; equal lengths), replacing one of that name.
+    void setOverlay(const QString& name, const QVector<double>& time, const QVector<double>& values);
+    /// The overlay curve called name, or nullptr.
+    const QCPGraph* overlayGraph(const QString& name) const;
     /// Rescale to the data (with a margin) and replot (queued).
     void refresh();
 
@@ -51,6 +58,8 @@ private:
     void updateTrueLine();
 
     int m_index = 0;
+    QString m_name;
+    std::vector<QCPGraph*> m_overlays;
     double m_trueValue = qQNaN();
     QCPGraph* m_value = nullptr;
     QCPGraph* m_upper = nullptr;

@@ -3,6 +3,8 @@
 #include "core/record/RecordReader.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/replay/RecordPlayback.h"
+#include "gui/replay/Reidentification.h"
+#include "gui/replay/ReidentifyDialog.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -10,13 +12,21 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
+#include <QProgressBar>
 #include <QSlider>
+#include <QThread>
 #include <QTimer>
 #include <QToolBar>
 
 #include <exception>
+#include <optional>
 
 namespace hsmu::gui {
+
+struct ReplayWindow::Outcome {
+    std::optional<Reidentification> value;
+    QString error;
+};
 
 ReplayWindow* ReplayWindow::open(const QString& path, QWidget* parent, QString* error) {
     std::shared_ptr<const RecordData> data;
@@ -52,7 +62,8 @@ ReplayWindow* ReplayWindow::openWithDialog(QWidget* parent) {
 
 ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString& path,
                            QWidget* parent)
-    : QMainWindow(parent), m_playback(std::make_unique<RecordPlayback>(std::move(data))) {
+    : QMainWindow(parent), m_playback(std::make_unique<RecordPlayback>(std::move(data))),
+      m_path(path) {
     setWindowFlag(Qt::Window);
     const RecordData& d = m_playback->data();
     setWindowTitle(tr("HSMU Replay - %1 (%2)")
@@ -93,6 +104,19 @@ ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString
     m_position = new QLabel(bar);
     m_position->setMinimumWidth(260);
     bar->addWidget(m_position);
+    bar->addSeparator();
+    m_reidentifyAction = bar->addAction(tr("Re-identify..."));
+    m_reidentifyAction->setToolTip(
+        tr("Identify the specimen again with other settings and overlay the parameter history"));
+    m_reidentifyAction->setEnabled(d.layout.updating.has_value()); // else no parameter plot
+    connect(m_reidentifyAction, &QAction::triggered, this, &ReplayWindow::reidentifyWithDialog);
+    m_busy = new QProgressBar(bar);
+    m_busy->setRange(0, 0); // busy indicator
+    m_busy->setMaximumWidth(120);
+    m_busy->setFormat(tr("identifying"));
+    m_busy->setToolTip(tr("Re-identifying the specimen"));
+    m_busyAction = bar->addWidget(m_busy);
+    m_busyAction->setVisible(false);
 
     m_timer = new QTimer(this);
     m_timer->setInterval(kTickMs);
@@ -101,7 +125,72 @@ ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString
     seek(1); // the initial state
 }
 
-ReplayWindow::~ReplayWindow() = default;
+ReplayWindow::~ReplayWindow() {
+    if (m_reidentifier) { // identifyOffline cannot be interrupted: let it end
+        m_reidentifier->disconnect(this);
+        m_reidentifier->wait();
+        delete m_reidentifier;
+    }
+}
+
+QString ReplayWindow::reidentifiedCurveName(const QString& method) {
+    return tr("re-identified (%1)").arg(method);
+}
+
+void ReplayWindow::reidentifyWithDialog() {
+    const auto& updating = m_playback->data().layout.updating;
+    ReidentifyDialog dialog(updating ? QString::fromStdString(updating->method) : QString(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        reidentify(dialog.method(), dialog.overridePath());
+}
+
+void ReplayWindow::reidentify(const QString& method, const QString& overridePath) {
+    if (m_reidentifier)
+        return;
+    m_outcome = std::make_shared<Outcome>();
+    m_reidentifier = QThread::create(
+        [outcome = m_outcome, data = &m_playback->data(), source = m_path, method, overridePath] {
+            try {
+                outcome->value = reidentifyRecord(*data, source, method, overridePath);
+            } catch (const std::exception& e) {
+                outcome->error = QString::fromStdString(e.what());
+            }
+        });
+    m_reidentifier->setObjectName(QStringLiteral("hsmu re-identification"));
+    connect(m_reidentifier, &QThread::finished, this, &ReplayWindow::showReidentification);
+    m_reidentifyAction->setEnabled(false);
+    m_busyAction->setVisible(true);
+    m_reidentifier->start();
+}
+
+void ReplayWindow::showReidentification() {
+    m_reidentifier->wait();
+    delete m_reidentifier;
+    m_reidentifier = nullptr;
+    const std::shared_ptr<Outcome> outcome = std::move(m_outcome);
+    m_reidentifyAction->setEnabled(true);
+    m_busyAction->setVisible(false);
+    if (!outcome->value) {
+        auto* box = new QMessageBox(QMessageBox::Critical, tr("Re-identification failed"),
+                                    outcome->error, QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open(); // not exec(): the window stays live
+        emit reidentificationFailed(outcome->error);
+        return;
+    }
+    const OfflineIdentificationResult& r = outcome->value->result;
+    const QString curve = reidentifiedCurveName(QString::fromStdString(r.method));
+    const std::vector<double>& t = outcome->value->time;
+    const QVector<double> time(t.begin(), t.end());
+    for (std::size_t j = 0; j < r.parameterNames.size(); ++j) {
+        QVector<double> values(r.parameters.rows());
+        for (Eigen::Index k = 0; k < r.parameters.rows(); ++k)
+            values[k] = r.parameters(k, Eigen::Index(j));
+        m_panel->overlayParameterHistory(curve, QString::fromStdString(r.parameterNames[j]), time,
+                                         values);
+    }
+    emit reidentified(curve);
+}
 
 int ReplayWindow::rowsShown() const {
     return m_playback->shown();

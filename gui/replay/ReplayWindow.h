@@ -6,7 +6,12 @@
 // live console. The ground-motion plot shows the whole recorded acceleration with a cursor.
 // open() refuses a bad file (missing, not HDF5, not ours, newer schema, truncated) with the
 // RecordReader's message; openWithDialog() asks for a file and shows that message in a box.
-// Thread rules: GUI thread only.
+// Re-identify... (reidentify()): identify the recorded specimen again offline with the recorded
+// or other settings (ReidentifyDialog: method, override JSON; Reidentification.h) on a worker
+// thread, the window staying responsive with a busy bar; the re-identified parameter history
+// is then overlaid on the parameter plots as "re-identified (METHOD)" for comparison with the
+// recorded one; an error goes to a message box (and reidentificationFailed()).
+// Thread rules: GUI thread only (the identification runs on its own QThread, joined on close).
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -17,7 +22,9 @@
 class QAction;
 class QComboBox;
 class QLabel;
+class QProgressBar;
 class QSlider;
+class QThread;
 class QTimer;
 
 namespace hsmu {
@@ -47,6 +54,9 @@ public:
     int rowsShown() const;
     int rowCount() const;
     bool isPlaying() const;
+    bool isReidentifying() const { return m_reidentifier != nullptr; }
+    /// The overlay curve name of a re-identification by method ("UKF" / "Nelder-Mead").
+    static QString reidentifiedCurveName(const QString& method);
 
 public slots:
     void play();
@@ -55,18 +65,27 @@ public slots:
     void seek(int n);
     /// Test seconds per wall second (> 0).
     void setSpeed(double factor);
+    /// Re-identify off the GUI thread: method "ukf" / "nelderMead" ("" the recorded one),
+    /// overridePath a JSON file or "". Ignored while one runs.
+    void reidentify(const QString& method, const QString& overridePath);
+    /// ReidentifyDialog, then reidentify().
+    void reidentifyWithDialog();
 
 signals:
     /// After every change of the rows shown.
     void positionChanged(int rowsShown);
     /// The last row is shown (play stops).
     void finished();
+    /// The re-identified history was overlaid as curveName.
+    void reidentified(const QString& curveName);
+    void reidentificationFailed(const QString& error);
 
 private:
     ReplayWindow(std::shared_ptr<const RecordData> data, const QString& path, QWidget* parent);
     void tick();
     void showRows(const std::vector<StepRecord>& rows, bool restart);
     void updateControls();
+    void showReidentification();
 
     std::unique_ptr<RecordPlayback> m_playback;
     LivePlotsPanel* m_panel = nullptr;
@@ -76,6 +95,13 @@ private:
     QLabel* m_position = nullptr;
     QTimer* m_timer = nullptr;
     QElapsedTimer m_wall; ///< since the last tick while playing
+    QString m_path;
+    QAction* m_reidentifyAction = nullptr;
+    QProgressBar* m_busy = nullptr;
+    QAction* m_busyAction = nullptr; ///< shows / hides m_busy in the tool bar
+    QThread* m_reidentifier = nullptr;
+    struct Outcome;
+    std::shared_ptr<Outcome> m_outcome; ///< written by m_reidentifier, read after it finished
 };
 
 } // namespace hsmu::gui

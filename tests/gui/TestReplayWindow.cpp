@@ -2,6 +2,9 @@
 // step and the plotted data equal the record's datasets; scrubbing back and forth shows
 // exactly the chosen rows; RecordPlayback paces rows by speed x wall time; bad files are
 // refused with the reader's message, in the window API and by `hsmu replay` (real binary).
+// Re-identify on a worker thread: the recorded settings give back the recorded parameter
+// history (overlaid, to 1e-9 relative); Nelder-Mead adds curves of its name; a bad override
+// is reported and changes nothing.
 
 #include "RecordedRun.h"
 
@@ -19,6 +22,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
 #include <memory>
 
 using namespace hsmu;
@@ -193,6 +197,86 @@ private slots:
         const QString err = QString::fromLocal8Bit(p.readAllStandardError());
         QVERIFY2(err.contains(QStringLiteral("hsmu replay: ")) && err.contains(truncated),
                  qPrintable(err));
+    }
+
+    void reidentifyWithTheRecordedSettingsGivesTheRecordedHistory() {
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(m_record, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        const RecordReader reader(m_record.toStdString());
+        const RecordData& d = reader.data();
+        QVERIFY(d.layout.updating);
+        const int n = d.rows();
+        QSignalSpy done(w.get(), &ReplayWindow::reidentified);
+        QSignalSpy failed(w.get(), &ReplayWindow::reidentificationFailed);
+        w->reidentify(QString(), QString()); // the recorded method and settings
+        QVERIFY(w->isReidentifying());
+        QTRY_COMPARE_WITH_TIMEOUT(done.count() + failed.count(), 1, 60000);
+        QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed[0][0].toString()));
+        QVERIFY(!w->isReidentifying());
+        const QString curve = ReplayWindow::reidentifiedCurveName(
+            QString::fromStdString(d.layout.updating->method));
+        QCOMPARE(done[0][0].toString(), curve);
+        const auto& plots = w->panel().parameterPlots();
+        QCOMPARE(int(plots.size()), int(d.parameters.cols()));
+        for (int p = 0; p < int(plots.size()); ++p) {
+            const QCPGraph* g = plots[std::size_t(p)]->overlayGraph(curve);
+            QVERIFY(g);
+            QVERIFY(plots[std::size_t(p)]->legend->hasItemWithPlottable(g));
+            QCOMPARE(g->data()->size(), n - 1); // rows 1 .. N-1: row 0 is no measurement
+            QCOMPARE(g->data()->at(0)->key, d.time[1]);
+            for (int k = 0; k < n - 1; ++k) { // same settings, same history
+                const double recorded = d.parameters(k + 1, p);
+                QVERIFY2(std::abs(g->data()->at(k)->value - recorded) <=
+                             1e-9 * std::abs(recorded),
+                         qPrintable(QStringLiteral("parameter %1 sample %2").arg(p).arg(k)));
+            }
+            QCOMPARE(g->pen().color() == plots[std::size_t(p)]->estimateGraph()->pen().color(),
+                     false);
+        }
+    }
+
+    void nelderMeadReidentificationAddsItsCurves() {
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(m_record, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        QSignalSpy done(w.get(), &ReplayWindow::reidentified);
+        QSignalSpy failed(w.get(), &ReplayWindow::reidentificationFailed);
+        w->reidentify(QStringLiteral("nelderMead"), QString());
+        w->reidentify(QStringLiteral("ukf"), QString()); // ignored: one at a time
+        QTRY_COMPARE_WITH_TIMEOUT(done.count() + failed.count(), 1, 60000);
+        QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed[0][0].toString()));
+        const QString nm = ReplayWindow::reidentifiedCurveName(QStringLiteral("Nelder-Mead"));
+        QCOMPARE(done[0][0].toString(), nm);
+        QCOMPARE(nm, QStringLiteral("re-identified (Nelder-Mead)"));
+        const QString ukf = ReplayWindow::reidentifiedCurveName(QStringLiteral("UKF"));
+        for (const ParameterPlot* plot : w->panel().parameterPlots()) {
+            const QCPGraph* g = plot->overlayGraph(nm);
+            QVERIFY(g);
+            QCOMPARE(g->name(), nm);
+            QCOMPARE(g->data()->size(), w->rowCount() - 1);
+            QVERIFY(!plot->overlayGraph(ukf)); // the second request was ignored
+        }
+        // Playing back (clearData on a seek backwards) keeps the overlays.
+        w->seek(w->rowCount());
+        w->seek(1);
+        for (const ParameterPlot* plot : w->panel().parameterPlots())
+            QCOMPARE(plot->overlayGraph(nm)->data()->size(), w->rowCount() - 1);
+    }
+
+    void badOverrideIsReportedAndChangesNothing() {
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(m_record, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        const QString missing = m_dir.filePath(QStringLiteral("no-such-override.json"));
+        QSignalSpy done(w.get(), &ReplayWindow::reidentified);
+        QSignalSpy failed(w.get(), &ReplayWindow::reidentificationFailed);
+        w->reidentify(QStringLiteral("ukf"), missing);
+        QTRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, 60000);
+        QCOMPARE(done.count(), 0);
+        QVERIFY(failed[0][0].toString().contains(QStringLiteral("cannot be opened")));
+        for (const ParameterPlot* plot : w->panel().parameterPlots())
+            QVERIFY(!plot->overlayGraph(ReplayWindow::reidentifiedCurveName(QStringLiteral("UKF"))));
     }
 
     void commandScreenshotOfARecord() {
