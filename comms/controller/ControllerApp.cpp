@@ -81,6 +81,9 @@ bool ControllerApp::start(std::string& error) {
         if (!m_cmd.token.empty())
             std::fprintf(stderr, "hsmu-controller: --token is ignored: the OpenFresco protocols "
                                  "carry no token\n");
+        if (m_cmd.realTimePriority > 0)
+            std::fprintf(stderr, "hsmu-controller: --realtime-priority applies to the native "
+                                 "protocol only; ignored\n");
         m_ofServer = std::make_unique<OfServer>(o, std::move(stations));
         if (!m_ofServer->listen(error))
             return false;
@@ -93,6 +96,7 @@ bool ControllerApp::start(std::string& error) {
         o.idleTimeout = settings.idleTimeout;
         o.rate = settings.rate;
         o.realTime = !m_cmd.fast;
+        o.realTimePriority = m_cmd.realTimePriority;
         o.quiet = m_cmd.quiet;
         m_server = std::make_unique<ControllerServer>(o, std::move(stations));
         if (!m_server->listen(error))

@@ -8,7 +8,7 @@ const char* ControllerCommandLine::usage() {
     return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR] "
            "[--pace realtime|fast] [--token T] [--state FILE] [--quiet]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
-           "[--simapp-site]\n"
+           "[--simapp-site] [--realtime-priority P]\n"
            "  --config FILE   the console's test configuration (JSON); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
            "  --port PORT     TCP port, 0 = any free port (printed on stdout)\n"
@@ -21,7 +21,10 @@ const char* ControllerCommandLine::usage() {
            "                  generictcp (a server for OpenFresco's expControl GenericTCP);\n"
            "                  default: the configuration's controller.protocol\n"
            "  --data-size N   OpenFresco doubles per frame (default: controller.dataSize, 256)\n"
-           "  --simapp-site   SimApp: answer as a site server (no replies to actions 12-15)\n";
+           "  --simapp-site   SimApp: answer as a site server (no replies to actions 12-15)\n"
+           "  --realtime-priority P\n"
+           "                  native protocol, real-time pace: run the 1024 Hz loop under\n"
+           "                  SCHED_FIFO priority P (1..99; needs root or CAP_SYS_NICE)\n";
 }
 
 std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, const char* const* argv,
@@ -63,6 +66,16 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
                 return std::nullopt;
             }
             c.dataSize = static_cast<int>(n);
+        } else if (a == "--realtime-priority") {
+            if (!value(v))
+                return std::nullopt;
+            char* end = nullptr;
+            const long p = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end != '\0' || p < 1 || p > 99) {
+                error = "--realtime-priority: expected 1..99, found '" + v + "'";
+                return std::nullopt;
+            }
+            c.realTimePriority = static_cast<int>(p);
         } else if (a == "--config") {
             if (!value(c.config))
                 return std::nullopt;

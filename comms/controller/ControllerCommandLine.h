@@ -4,6 +4,7 @@
 //   hsmu-controller --config FILE --port PORT [--bind ADDR] [--pace realtime|fast]
 //                   [--token T] [--state FILE] [--quiet]
 //                   [--protocol native|simapp|generictcp] [--data-size N] [--simapp-site]
+//                   [--realtime-priority P]
 //
 // --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
 // --bind defaults to 127.0.0.1: exposing the controller is an explicit choice.
@@ -26,6 +27,7 @@ struct ControllerCommandLine {
     std::string protocol;    ///< "" = the configuration's controller.protocol (native by default)
     int dataSize = 0;        ///< OpenFresco doubles per frame; 0 = controller.dataSize (256)
     bool siteServer = false; ///< SimApp: behave as a site server (no replies to 12-15)
+    int realTimePriority = 0; ///< native, real-time pace: SCHED_FIFO priority 1..99; 0 = normal
 
     /// nullopt with a sentence in error when the arguments are wrong.
     static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,

@@ -71,8 +71,9 @@ private slots:
         // Wall clock at 1024 Hz, ~10 ms per step: with an ideal actuator each step still ends
         // exactly on its target, so the result is the in-process one.
         const std::string path = writeConfig(m_dir.path(), "short.json", condition3(0.5));
-        ControllerProcess ctl(
-            {"--config", QString::fromStdString(path), "--pace", "realtime", "--quiet"});
+        // The loop under SCHED_FIFO when allowed (else it says so and runs at normal priority).
+        ControllerProcess ctl({"--config", QString::fromStdString(path), "--pace", "realtime",
+                               "--realtime-priority", "10", "--quiet"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(path);
         const Run linked = runTest(cfg, makeControlFactory(local(ctl.port()), patientOptions()));
@@ -82,6 +83,14 @@ private slots:
         QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
         ctl.stop();
         QVERIFY2(ctl.log().contains("deadline misses"), qPrintable(ctl.log()));
+    }
+
+    void badRealTimePriorityIsRefused() {
+        ControllerProcess ctl({"--config", QString::fromStdString(m_config), "--pace", "realtime",
+                               "--realtime-priority", "100", "--quiet"});
+        QVERIFY(!ctl.start());
+        QVERIFY2(ctl.log().contains("--realtime-priority: expected 1..99, found '100'"),
+                 qPrintable(ctl.log()));
     }
 
     void twoSpecimensShareOneSession() {
