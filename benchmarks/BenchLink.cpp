@@ -144,13 +144,8 @@ void BM_TargetRoundTrip(benchmark::State& state) {
 }
 BENCHMARK(BM_TargetRoundTrip)->UseManualTime()->Iterations(20000)->Unit(benchmark::kMicrosecond);
 
-void BM_LinkStep(benchmark::State& state) {
-    LocalController ctl(false);
-    TcpControl c("127.0.0.1", ctl.port(), "", {}, TcpControlOptions{});
-    if (!c.prepare(0.01).ok) {
-        state.SkipWithError("prepare failed");
-        return;
-    }
+/// One full step per iteration through a prepared control: target, measure, commit.
+void stepThrough(benchmark::State& state, ExperimentalControl& c) {
     long n = 0;
     for (auto _ : state) {
         ++n;
@@ -162,6 +157,16 @@ void BM_LinkStep(benchmark::State& state) {
         }
     }
     state.SetItemsProcessed(n);
+}
+
+void BM_LinkStep(benchmark::State& state) {
+    LocalController ctl(false);
+    TcpControl c("127.0.0.1", ctl.port(), "", {}, TcpControlOptions{});
+    if (!c.prepare(0.01).ok) {
+        state.SkipWithError("prepare failed");
+        return;
+    }
+    stepThrough(state, c);
 }
 BENCHMARK(BM_LinkStep)->UseRealTime()->Unit(benchmark::kMicrosecond);
 
@@ -212,17 +217,7 @@ void BM_SimAppStep(benchmark::State& state) {
         state.SkipWithError("prepare failed");
         return;
     }
-    long n = 0;
-    for (auto _ : state) {
-        ++n;
-        ControlMeasurement m;
-        if (!c.setTarget(1e-3 * std::sin(0.01 * double(n))).ok || !c.measure(m).ok ||
-            !c.commit().ok) {
-            state.SkipWithError("step failed");
-            return;
-        }
-    }
-    state.SetItemsProcessed(n);
+    stepThrough(state, c);
 }
 BENCHMARK(BM_SimAppStep)->UseRealTime()->Unit(benchmark::kMicrosecond);
 
