@@ -125,6 +125,50 @@ void bmIdentBoucWenIntegrate(benchmark::State& state) {
 }
 BENCHMARK(bmIdentBoucWenIntegrate);
 
+// The process function of one UKF step alone: BoucWen::integrateStates over 19 sigma-point-like
+// problems (the centre and +-1e-4 quarter-widths along each of the 9 state components), over
+// the increments of the same history.
+void bmIdentSigmaIntegrations(benchmark::State& state, BoucWen::BatchMath math) {
+    const History h = history(2400, 400);
+    const BoucWenParameters centre = wrongStart();
+    std::vector<BoucWenParameters> p(19, centre);
+    double BoucWenParameters::*fields[] = {&BoucWenParameters::k0,      &BoucWenParameters::alpha,
+                                           &BoucWenParameters::beta,    &BoucWenParameters::gamma,
+                                           &BoucWenParameters::n,       &BoucWenParameters::deltaNu,
+                                           &BoucWenParameters::deltaEta};
+    const double widths[] = {0.7, 0.049, 2.5, 2.5, 2.0, 0.099, 0.099};
+    for (int k = 0; k < 7; ++k) {
+        const double d = 1.7e-4 * 0.25 * widths[k];
+        p[static_cast<std::size_t>(3 + k)].*fields[k] += d;
+        p[static_cast<std::size_t>(12 + k)].*fields[k] -= d;
+    }
+    std::vector<BoucWenState> from(19);
+    std::vector<BoucWenIncrement> out(19);
+    BoucWenState centreState;
+    double x = 0.0;
+    std::size_t k = 0;
+    for (auto _ : state) {
+        if (k == h.u.size()) {
+            centreState = {};
+            x = 0.0;
+            k = 0;
+        }
+        const double next = h.u[k++] / centre.uRef;
+        for (std::size_t i = 0; i < from.size(); ++i) {
+            from[i] = centreState;
+        }
+        from[1].z += 1e-5; // the z and e directions
+        from[2].e += 1e-5;
+        BoucWen::integrateStates(p, from, next - x, out, math);
+        benchmark::DoNotOptimize(out.data());
+        centreState = out[0].state;
+        x = next;
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_CAPTURE(bmIdentSigmaIntegrations, exact, BoucWen::BatchMath::Exact);
+BENCHMARK_CAPTURE(bmIdentSigmaIntegrations, fast, BoucWen::BatchMath::Fast);
+
 // One Nelder-Mead trigger: Bouc-Wen, 7 parameters in Table III, 1000 points, 200 evaluations.
 void bmIdentHistoryFitTrigger(benchmark::State& state) {
     const History h = history(1000, 250);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace hsmu {
@@ -81,8 +82,6 @@ BoucWenUkf::BoucWenUkf(const BoucWenParameters& initial, const BoucWenUkfSetting
                        const BoundsArray& bounds)
     : m_fixed(initial), m_settings(settings),
       m_bounds(boundsAdmissible(bounds) ? bounds : tableIIIBounds()), m_ukf(settings.ukf) {
-    m_ukf.setProjection([this](Eigen::Ref<Eigen::VectorXd> x) { project(x, false); },
-                        [this](Eigen::Ref<Eigen::VectorXd> x) { project(x, true); });
     reset(initial);
 }
 
@@ -139,6 +138,15 @@ void BoucWenUkf::refreshBoxes() {
         m_meanLower[u] = b.lower + margin;
         m_meanUpper[u] = std::max(b.upper - margin, m_meanLower[u]);
     }
+    // The filter holds its sigma points and means in these boxes; z and e are unbounded.
+    const auto vector = [](const std::array<double, kBoucWenUkfSize>& values, double unbounded) {
+        Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(values.data(), kBoucWenUkfSize);
+        v(kZ) = v(kE) = unbounded;
+        return v;
+    };
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    m_ukf.setBounds(vector(m_sigmaLower, -inf), vector(m_sigmaUpper, inf),
+                    vector(m_meanLower, -inf), vector(m_meanUpper, inf));
 }
 
 bool BoucWenUkf::setBounds(BoucWenUkfIndex index, double lower, double upper) {
@@ -271,7 +279,8 @@ BoucWenUkfStep BoucWenUkf::step(double deformation, double force) {
                 m_sigmaParameters[i] = parametersOf(column);
                 m_sigmaStates[i] = {column(kZ), column(kE)};
             }
-            BoucWen::integrateStates(m_sigmaParameters, m_sigmaStates, dx, m_sigmaIncrements);
+            BoucWen::integrateStates(m_sigmaParameters, m_sigmaStates, dx, m_sigmaIncrements,
+                                     BoucWen::BatchMath::Fast);
             values = points;
             for (std::size_t i = 0; i < count; ++i) {
                 const BoucWenIncrement& inc = m_sigmaIncrements[i];
@@ -310,10 +319,15 @@ BoucWenUkfStep BoucWenUkf::step(double deformation, double force) {
     const double x = m_x;
     m_measured.resize(1);
     m_measured(0) = force / m_fixed.fRef;
+    // Eq. 7 for all sigma points in one call (no per-point call through Eigen::Ref).
     UkfStatus updated = m_ukf.update(
-        [x](const Eigen::Ref<const Eigen::VectorXd>& s, Eigen::Ref<Eigen::VectorXd> out) {
-            out(0) = s(kAlpha) * s(kK0) * x + (1.0 - s(kAlpha)) * s(kK0) * s(kZ);
-        },
+        AllSigmaPoints{[x](const Eigen::MatrixXd& points, Eigen::MatrixXd& out) -> Eigen::Index {
+            for (Eigen::Index i = 0; i < points.cols(); ++i) {
+                const double* s = points.data() + i * kBoucWenUkfSize;
+                out(0, i) = s[kAlpha] * s[kK0] * x + (1.0 - s[kAlpha]) * s[kK0] * s[kZ];
+            }
+            return -1;
+        }},
         m_measured);
     if (!updated.ok) {
         updated.reason = "update rejected: " + updated.reason;

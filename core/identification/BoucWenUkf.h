@@ -30,7 +30,7 @@
 //            deltaNu 0.001-0.1, deltaEta 0.001-0.1); z and e unbounded
 // Bounds: sigma points are held in [lower, upper]; the predicted and posterior means
 // boundMargin (1e-3) of the width inside, so that a parameter that reached a bound can
-// still leave it (see UnscentedKalmanFilter.h, Projection). A bound must keep the law
+// still leave it (see UnscentedKalmanFilter.h, Bounds). A bound must keep the law
 // admissible: finite, lower <= upper, k0 > 0, 0 <= alpha <= 1, n > 0, deltaNu and
 // deltaEta >= 0, lower beta + lower gamma > 0.
 // A locked parameter keeps its value: zero variance, zero Q, both bounds at its value.
@@ -95,9 +95,6 @@ public:
     /// with boundsAdmissible() first if that matters.
     explicit BoucWenUkf(const BoucWenParameters& initial, const BoucWenUkfSettings& settings = {},
                         const BoundsArray& bounds = tableIIIBounds());
-    // The filter's projection hooks refer to this object.
-    BoucWenUkf(const BoucWenUkf&) = delete;
-    BoucWenUkf& operator=(const BoucWenUkf&) = delete;
 
     /// Restart from `initial` in the virgin state with the initial covariance; bounds, locks
     /// and settings are kept.
@@ -135,7 +132,8 @@ public:
 private:
     BoucWenParameters parametersOf(const Eigen::Ref<const Eigen::VectorXd>& x) const;
     void project(Eigen::Ref<Eigen::VectorXd> x, bool mean) const;
-    // The projection boxes (sigma points and means) from bounds, margin and locks.
+    // The boxes (sigma points and means) from bounds, margin and locks, also given to the
+    // filter.
     void refreshBoxes();
     // Boxes, Q, R and the UKF settings from the current settings, bounds and locks (on the
     // first step after any of them changed).

@@ -1,8 +1,10 @@
 #include "core/identification/UkfKernels.h"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 namespace hsmu::ukfkernels {
@@ -208,9 +210,9 @@ void moments(const double* __restrict points, const double* __restrict w, double
             const double second = dev[r + j * m] + dev[r + (pairs + j) * m];
             const double floor =
                 noise * (std::abs(plus[r]) + std::abs(minus[r]) + 2.0 * std::abs(centre[r]));
-            if (std::abs(second) > floor) {
-                mu[r] += wj * second;
-            }
+            // Adding +0 instead (branch-free) leaves mu[r] unchanged: it starts at +0 and a sum
+            // is never -0 then.
+            mu[r] += std::abs(second) > floor ? wj * second : 0.0;
         }
     }
 }
@@ -224,6 +226,44 @@ void offset(const double* __restrict x, const double* __restrict root, double sc
         for (Index i = 0; i < n; ++i) {
             out[k + i] = scale * root[k + i] + x[i];
         }
+    }
+}
+
+// offset(), and whether std::clamp into [lower, upper] would move any of the values written:
+// it moves v exactly when v < lower or upper < v (never a NaN). The rows' smallest and largest
+// values are tracked as they are written (v < m ? v : m skips a NaN, as the clamp does), then
+// compared once per row.
+template <Index N>
+bool offsetOutside(const double* __restrict x, const double* __restrict root, double scale,
+                   double* __restrict out, const double* __restrict lower,
+                   const double* __restrict upper, Index dynamicN) {
+    if constexpr (N == 0) {
+        offset<0>(x, root, scale, out, dynamicN);
+        std::int64_t moved = 0;
+        for (Index k = 0; k < dynamicN * dynamicN; ++k) {
+            const Index i = k % dynamicN;
+            moved |= static_cast<std::int64_t>(out[k] < lower[i]) |
+                     static_cast<std::int64_t>(upper[i] < out[k]);
+        }
+        return moved != 0;
+    } else {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        std::array<double, N> smallest, largest;
+        smallest.fill(inf);
+        largest.fill(-inf);
+        for (Index k = 0; k < N * N; k += N) {
+            for (Index i = 0; i < N; ++i) {
+                const double v = scale * root[k + i] + x[i];
+                out[k + i] = v;
+                smallest[i] = v < smallest[i] ? v : smallest[i];
+                largest[i] = largest[i] < v ? v : largest[i];
+            }
+        }
+        bool moved = false;
+        for (Index i = 0; i < N; ++i) {
+            moved |= (smallest[i] < lower[i]) | (upper[i] < largest[i]);
+        }
+        return moved;
     }
 }
 
@@ -255,6 +295,14 @@ bool allFinite(const double* data, Index count) {
 void offsetColumns(const Eigen::VectorXd& x, const Eigen::MatrixXd& root, double scale,
                    double* out) {
     dispatch(x.size(), [&](auto n) { offset<n()>(x.data(), root.data(), scale, out, x.size()); });
+}
+
+bool offsetColumnsOutside(const Eigen::VectorXd& x, const Eigen::MatrixXd& root, double scale,
+                          double* out, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper) {
+    return dispatch(x.size(), [&](auto n) {
+        return offsetOutside<n()>(x.data(), root.data(), scale, out, lower.data(), upper.data(),
+                                  x.size());
+    });
 }
 
 void mirrorColumns(const Eigen::VectorXd& x, const double* plus, double* minus) {

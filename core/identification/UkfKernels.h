@@ -19,6 +19,11 @@ inline bool allFinite(const Eigen::MatrixXd& m) {
 void offsetColumns(const Eigen::VectorXd& x, const Eigen::MatrixXd& root, double scale,
                    double* out);
 
+/// offsetColumns(), returning whether std::clamp into [lower, upper] (of x's size) would move
+/// any of the values written: one below `lower` or above `upper` (never a NaN).
+bool offsetColumnsOutside(const Eigen::VectorXd& x, const Eigen::MatrixXd& root, double scale,
+                          double* out, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper);
+
 /// minus_j = x - (plus_j - x) for the n columns at `plus` (n x n, column-major), into `minus`.
 void mirrorColumns(const Eigen::VectorXd& x, const double* plus, double* minus);
 

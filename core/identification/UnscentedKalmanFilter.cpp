@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace hsmu {
@@ -83,6 +82,37 @@ UkfStatus UnscentedKalmanFilter::setMeasurementNoise(const Matrix& R) {
     }
     m_R = R;
     return {};
+}
+
+UkfStatus UnscentedKalmanFilter::setBounds(const Vector& sigmaLower, const Vector& sigmaUpper,
+                                           const Vector& meanLower, const Vector& meanUpper) {
+    const Eigen::Index n = sigmaLower.size();
+    if (sigmaUpper.size() != n || meanLower.size() != n || meanUpper.size() != n ||
+        (m_initialized && n != m_x.size())) {
+        return {false, UkfFault::DimensionMismatch, "the bounds do not have the state's size"};
+    }
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (!(sigmaLower(i) <= sigmaUpper(i)) || !(meanLower(i) <= meanUpper(i))) {
+            return {false, UkfFault::InvalidSettings,
+                    "lower bound above upper bound (or NaN) at component " + std::to_string(i)};
+        }
+    }
+    m_sigmaLower = sigmaLower;
+    m_sigmaUpper = sigmaUpper;
+    m_meanLower = meanLower;
+    m_meanUpper = meanUpper;
+    m_bounded = true;
+    return {};
+}
+
+void UnscentedKalmanFilter::clearBounds() {
+    m_bounded = false;
+}
+
+void UnscentedKalmanFilter::clampInto(double* v, const Vector& lower, const Vector& upper) {
+    for (Eigen::Index i = 0; i < lower.size(); ++i) {
+        v[i] = std::clamp(v[i], lower(i), upper(i));
+    }
 }
 
 UnscentedKalmanFilter::Vector UnscentedKalmanFilter::standardDeviations() const {
@@ -210,9 +240,12 @@ UkfStatus UnscentedKalmanFilter::drawSigmaPoints() {
         m_sqrtIsOfP = true;
     }
     const Eigen::Index n = m_x.size();
+    if (m_bounded && m_sigmaLower.size() != n) {
+        return {false, UkfFault::DimensionMismatch, "the bounds do not have the state's size"};
+    }
     m_centre = m_x;
-    if (m_projectMean) {
-        m_projectMean(m_centre);
+    if (m_bounded) {
+        clampInto(m_centre.data(), m_meanLower, m_meanUpper);
     }
     // chi_0 = x, chi_j = x + c S_j, chi_n+j = x - c S_j.
     m_sigma.resize(n, 2 * n + 1);
@@ -220,17 +253,16 @@ UkfStatus UnscentedKalmanFilter::drawSigmaPoints() {
     double* plus = m_sigma.data() + n;
     double* minus = plus + n * n;
     m_sigma.col(0) = m_centre;
-    ukfkernels::offsetColumns(m_centre, m_sqrt, m_w.spread, plus);
-    if (m_projectSigma) {
-        ukfkernels::offsetColumns(m_centre, m_sqrt, -m_w.spread, minus);
-        m_projected = m_sigma.rightCols(2 * n);
-        for (Eigen::Index c = 0; c < 2 * n; ++c) {
-            m_projectSigma(m_projected.col(c));
-        }
-        // Usually no point moves, which one bytewise comparison of the whole block shows (with
-        // a finite centre the points are not NaN, so bytewise equal is equal); else pair by pair.
-        if (!ukfkernels::allFinite(m_centre.data(), n) ||
-            std::memcmp(m_projected.data(), plus, sizeof(double) * 2 * n * n) != 0) {
+    if (!m_bounded) {
+        ukfkernels::offsetColumns(m_centre, m_sqrt, m_w.spread, plus);
+    } else {
+        // Usually no point leaves the box, which the points show as they are written; else
+        // pair by pair.
+        const bool plusOut = ukfkernels::offsetColumnsOutside(m_centre, m_sqrt, m_w.spread, plus,
+                                                              m_sigmaLower, m_sigmaUpper);
+        const bool minusOut = ukfkernels::offsetColumnsOutside(m_centre, m_sqrt, -m_w.spread, minus,
+                                                               m_sigmaLower, m_sigmaUpper);
+        if (!ukfkernels::allFinite(m_centre.data(), n) || plusOut || minusOut) {
             for (Eigen::Index j = 0; j < n; ++j) {
                 shrinkPair(j);
             }
@@ -244,15 +276,15 @@ UkfStatus UnscentedKalmanFilter::drawSigmaPoints() {
 
 void UnscentedKalmanFilter::shrinkPair(Eigen::Index j) {
     const Eigen::Index n = m_x.size();
-    // Shrink factor from the components the projection moved (t = 1 if none).
+    // Shrink factor from the components the clamp moves (t = 1 if none).
     double t = 1.0;
     for (const Eigen::Index c : {j, n + j}) {
-        const double* projected = m_projected.data() + c * n;
         const double* point = m_sigma.data() + (1 + c) * n;
         for (Eigen::Index r = 0; r < n; ++r) {
-            if (projected[r] != point[r]) {
-                t = std::min(
-                    t, std::max(0.0, (projected[r] - m_centre(r)) / (point[r] - m_centre(r))));
+            const double projected = std::clamp(point[r], m_sigmaLower(r), m_sigmaUpper(r));
+            if (projected != point[r]) {
+                t = std::min(t,
+                             std::max(0.0, (projected - m_centre(r)) / (point[r] - m_centre(r))));
             }
         }
     }
@@ -261,10 +293,10 @@ void UnscentedKalmanFilter::shrinkPair(Eigen::Index j) {
         m_plus = m_centre + t * m_w.spread * m_sqrt.col(j);
         m_minus = m_centre - (m_plus - m_centre);
         m_step = m_plus;
-        m_projectSigma(m_step);
+        clampInto(m_step.data(), m_sigmaLower, m_sigmaUpper);
         bool inside = m_step == m_plus;
         m_step = m_minus;
-        m_projectSigma(m_step);
+        clampInto(m_step.data(), m_sigmaLower, m_sigmaUpper);
         if (inside && m_step == m_minus) {
             break;
         }
@@ -332,15 +364,15 @@ UkfStatus UnscentedKalmanFilter::finishUpdate(const Vector& z, double jitter) {
     return acceptCandidate("updated", jitter);
 }
 
-
 // Project, check and factor the candidate (m_newX, m_newP) of a phase; adopt it only if all
 // of that succeeds (otherwise the last good estimate stays).
 UkfStatus UnscentedKalmanFilter::acceptCandidate(const char* phase, double jitter) {
-    if (m_projectMean) {
-        m_projectMean(m_newX);
+    if (m_bounded) {
+        clampInto(m_newX.data(), m_meanLower, m_meanUpper);
     }
     if (!m_newX.allFinite()) {
-        return {false, UkfFault::NonFiniteValue, std::string("the ") + phase + " mean is not finite"};
+        return {false, UkfFault::NonFiniteValue,
+                std::string("the ") + phase + " mean is not finite"};
     }
     const std::string what = std::string("the ") + phase + " covariance";
     UkfStatus status = factor(m_newP, what.c_str());

@@ -33,17 +33,16 @@
 // the status gives the fault and a reason. A covariance accepted with jitter is stored
 // repaired (with the jitter added).
 //
-// Projection (bounds): optional in-place hooks mapping a vector into the admissible set, one
-// for sigma points and one for means (the predicted and the posterior mean; the centre sigma
-// point is projected with it too). Because W_i ~ 1e7, moving one point of a pair by delta
+// Bounds: optional boxes, one for sigma points and one for means (the predicted and the
+// posterior mean; the centre sigma point is held in it too); a point is projected into a box
+// by clamping each component (std::clamp). Because W_i ~ 1e7, moving one point of a pair by delta
 // would shift the mean by W_i delta; a pair that leaves the set is therefore shrunk as a
 // whole, to chi = x +- t c S_i with the largest t in (0, 1] keeping both points admissible,
 // and weighted W_i / t^2. Any pair +-t c S_i with weight 1 / (2 t^2 c^2) reproduces the
 // mean and the covariance S_i S_i^T along its direction, so the transform stays exact to
 // second order (only the fourth moments change). t is read off the projected points
-// component-wise, which is exact for a box (component-wise clamp), the projection the
-// estimators use. A pair with no room at all (t = 0: the centre on the boundary, the
-// direction pointing out) is dropped: the update leaves its variance untouched, the
+// component-wise, which is exact for a box. A pair with no room at all (t = 0: the centre on the
+// boundary, the direction pointing out) is dropped: the update leaves its variance untouched, the
 // prediction loses it (it grows again by Q). Estimators therefore keep their means a margin
 // inside the bounds (the mean hook) while sigma points may use the whole box.
 //
@@ -63,7 +62,6 @@
 
 #include <Eigen/Core>
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -91,8 +89,6 @@ class UnscentedKalmanFilter {
 public:
     using Vector = Eigen::VectorXd;
     using Matrix = Eigen::MatrixXd;
-    /// In-place projection into the admissible set (see the header comment).
-    using Projection = std::function<void(Eigen::Ref<Vector>)>;
 
     UnscentedKalmanFilter() = default;
     explicit UnscentedKalmanFilter(const UkfSettings& settings) : m_settings(settings) {}
@@ -110,16 +106,19 @@ public:
     UkfStatus setProcessNoise(const Matrix& Q);
     /// Measurement noise (m x m); fixes the measurement size m expected by update().
     UkfStatus setMeasurementNoise(const Matrix& R);
-    /// One hook for sigma points and means.
-    void setProjection(Projection project) {
-        m_projectSigma = project;
-        m_projectMean = std::move(project);
+    /// Bounds (see the header comment), component-wise, +-infinity where a component is
+    /// unbounded: sigma points in [sigmaLower, sigmaUpper], means in [meanLower, meanUpper]
+    /// (e.g. held a margin inside the box the sigma points may use). Effective on the next
+    /// call. Rejected (nothing changes) unless the four have one size (the state's, once it
+    /// is set; checked again at each step) and lower <= upper everywhere (no NaN).
+    UkfStatus setBounds(const Vector& sigmaLower, const Vector& sigmaUpper, const Vector& meanLower,
+                        const Vector& meanUpper);
+    /// One box for sigma points and means.
+    UkfStatus setBounds(const Vector& lower, const Vector& upper) {
+        return setBounds(lower, upper, lower, upper);
     }
-    /// Separate hooks (e.g. the means held a margin inside the box the sigma points may use).
-    void setProjection(Projection sigmaPoints, Projection means) {
-        m_projectSigma = std::move(sigmaPoints);
-        m_projectMean = std::move(means);
-    }
+    void clearBounds();
+    bool bounded() const { return m_bounded; }
 
     /// Directly overwrite the state (e.g. lock a component). Same checks as init().
     UkfStatus setState(const Vector& x, const Matrix& P);
@@ -150,8 +149,10 @@ private:
     // Weights, factor of m_P (reused when m_sqrt is already its factor), the sigma points
     // m_sigma (L x 2L+1), their deviations m_dx (L x 2L) and the weights m_weight (2L).
     UkfStatus drawSigmaPoints();
-    // Shrinks pair j of m_sigma (plus point only; see the header) from the projected m_projected.
+    // Shrinks pair j of m_sigma (plus point only; see the header), where the box moved it.
     void shrinkPair(Eigen::Index j);
+    // Clamps n values at v into [lower, upper] (the sigma-point or the mean box).
+    static void clampInto(double* v, const Vector& lower, const Vector& upper);
     UkfStatus finishPredict(double jitter);
     UkfStatus acceptCandidate(const char* phase, double jitter);
     UkfStatus finishUpdate(const Vector& z, double jitter);
@@ -161,7 +162,8 @@ private:
                   const char* what);
 
     UkfSettings m_settings;
-    Projection m_projectSigma, m_projectMean;
+    bool m_bounded = false;
+    Vector m_sigmaLower, m_sigmaUpper, m_meanLower, m_meanUpper;
     bool m_initialized = false;
     Vector m_x;
     Matrix m_P, m_Q, m_R;
@@ -172,7 +174,7 @@ private:
     // have their own, of their own sizes).
     Weights m_w;
     bool m_sqrtIsOfP = false; ///< m_sqrt is the factor of the current m_P
-    Matrix m_sqrt, m_sub, m_sigma, m_projected, m_dx, m_newP, m_Pxy, m_gain, m_lowerYy;
+    Matrix m_sqrt, m_sub, m_sigma, m_dx, m_newP, m_Pxy, m_gain, m_lowerYy;
     Matrix m_fOut, m_fDev, m_hOut, m_hDev; // function values, deviations from the centre's
     Vector m_fMu, m_hMu;                   // their mean offsets
     Vector m_centre, m_step, m_plus, m_minus, m_weight, m_newX, m_innovation;

@@ -1,8 +1,9 @@
 // Tests of the integration entry points of BoucWen (core/hysteresis/BoucWen.h): integrate(),
-// integrateState() and integrateStates() must give the same end states bit for bit, and the
-// same as a plain transcription of the documented algorithm (below) whose step limits are
-// always computed with std::pow: BoucWen decides them with cheap bounds where it can, which
-// must never change a decision.
+// integrateState() and integrateStates(BatchMath::Exact) must give the same end states bit
+// for bit, and the same as a plain transcription of the documented algorithm (below) whose
+// step limits are always computed with std::pow: BoucWen decides them with cheap bounds where
+// it can, which must never change a decision. integrateStates(BatchMath::Fast) (a vector pow
+// within 1 ulp) must take the same decisions and end within a few ulps.
 
 #include "core/hysteresis/BoucWen.h"
 #include "core/util/PortableRandom.h"
@@ -122,6 +123,40 @@ Problem randomProblem(PortableRandom& random) {
     return q;
 }
 
+// The UKF's sigma points: one centre and pairs differing from it by `spread` times a quarter
+// of a Table III width in one parameter (or in z, e), all with the same increment. Their
+// Newton iterations take different counts, so the lanes of a vector finish at different times.
+std::vector<Problem> sigmaCloud(PortableRandom& random, double spread) {
+    const Problem centre = randomProblem(random);
+    std::vector<Problem> cloud(19, centre);
+    double BoucWenParameters::*fields[] = {&BoucWenParameters::k0,      &BoucWenParameters::alpha,
+                                           &BoucWenParameters::beta,    &BoucWenParameters::gamma,
+                                           &BoucWenParameters::n,       &BoucWenParameters::deltaNu,
+                                           &BoucWenParameters::deltaEta};
+    const double widths[] = {0.7, 0.049, 2.5, 2.5, 2.0, 0.099, 0.099};
+    for (std::size_t k = 0; k < 7; ++k) {
+        const double d = spread * 0.25 * widths[k] * (2.0 * random.uniform() - 1.0);
+        cloud[3 + k].p.*fields[k] += d;
+        cloud[12 + k].p.*fields[k] -= d;
+    }
+    cloud[1].from.z += spread;
+    cloud[2].from.e += spread;
+    cloud[10].from.z -= spread;
+    cloud[11].from.e -= spread;
+    return cloud;
+}
+
+// Within a few ulps: the vector pow is within 1 ulp of std::pow, and Newton converges to the
+// same root within its tolerance (1e-12 relative), so the end states agree far closer.
+bool close(const BoucWenIncrement& a, const BoucWenIncrement& b) {
+    const auto near = [](double x, double y) {
+        return std::abs(x - y) <= 1e-13 * std::max({std::abs(x), std::abs(y), 1e-300}) ||
+               (std::isnan(x) && std::isnan(y)); // a refused problem keeps its NaN state
+    };
+    return a.status == b.status && a.subSteps == b.subSteps && near(a.state.z, b.state.z) &&
+           near(a.state.e, b.state.e);
+}
+
 } // namespace
 
 class TestBoucWenIntegration : public QObject {
@@ -130,6 +165,8 @@ class TestBoucWenIntegration : public QObject {
 private slots:
     void matchesTheDocumentedAlgorithm();
     void integrateStatesEqualsOneByOne();
+    void exactBatchOfSigmaPointsEqualsOneByOne();
+    void fastBatchIsWithinUlpsOfOneByOne();
 };
 
 void TestBoucWenIntegration::matchesTheDocumentedAlgorithm() {
@@ -163,13 +200,75 @@ void TestBoucWenIntegration::integrateStatesEqualsOneByOne() {
         p[4].k0 = -1.0;
         from[9].z = std::numeric_limits<double>::infinity();
         std::vector<BoucWenIncrement> out(p.size());
-        BoucWen::integrateStates(p, from, dx, out);
+        BoucWen::integrateStates(p, from, dx, out, BoucWen::BatchMath::Exact);
         for (std::size_t i = 0; i < p.size(); ++i) {
             QVERIFY(same(out[i], BoucWen::integrateState(p[i], from[i], dx)));
         }
         QVERIFY(out[4].status == LawStatus::InvalidInput);
         QVERIFY(out[9].status == LawStatus::InvalidInput);
     }
+}
+
+void TestBoucWenIntegration::exactBatchOfSigmaPointsEqualsOneByOne() {
+    PortableRandom random(23);
+    int ordinary = 0;
+    for (int k = 0; k < 300; ++k) {
+        const double spread = k % 3 == 0 ? 1e-5 : (k % 3 == 1 ? 1e-3 : 0.1);
+        const std::vector<Problem> cloud = sigmaCloud(random, spread);
+        std::vector<BoucWenParameters> p;
+        std::vector<BoucWenState> from;
+        for (const Problem& q : cloud) {
+            p.push_back(q.p);
+            from.push_back(q.from);
+        }
+        const double dx = cloud[0].dx;
+        std::vector<BoucWenIncrement> out(p.size());
+        BoucWen::integrateStates(p, from, dx, out, BoucWen::BatchMath::Exact);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            QVERIFY2(same(out[i], BoucWen::integrateState(p[i], from[i], dx)),
+                     qPrintable(QString("cloud %1 point %2").arg(k).arg(i)));
+        }
+        ordinary += out[0].subSteps == 1;
+    }
+    QVERIFY(ordinary > 200); // mostly clouds that the vectors integrate (one plain step)
+}
+
+void TestBoucWenIntegration::fastBatchIsWithinUlpsOfOneByOne() {
+    qInfo("vector pow on this machine: %s", BoucWen::fastBatchMathAvailable() ? "yes" : "no");
+    PortableRandom random(29);
+    int differing = 0, compared = 0;
+    for (int k = 0; k < 300; ++k) {
+        const double spread = k % 3 == 0 ? 1e-5 : (k % 3 == 1 ? 1e-3 : 0.1);
+        std::vector<Problem> cloud = sigmaCloud(random, spread);
+        if (k % 10 == 0) { // a few problems that are not one plain step
+            cloud[5].p.k0 = -1.0;
+            cloud[7].from.z = std::numeric_limits<double>::quiet_NaN();
+        }
+        std::vector<BoucWenParameters> p;
+        std::vector<BoucWenState> from;
+        for (const Problem& q : cloud) {
+            p.push_back(q.p);
+            from.push_back(q.from);
+        }
+        const double dx = cloud[0].dx;
+        std::vector<BoucWenIncrement> out(p.size());
+        BoucWen::integrateStates(p, from, dx, out, BoucWen::BatchMath::Fast);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            const BoucWenIncrement one = BoucWen::integrateState(p[i], from[i], dx);
+            QVERIFY2(close(out[i], one), qPrintable(QString("cloud %1 point %2: z %3 vs %4")
+                                                        .arg(k)
+                                                        .arg(i)
+                                                        .arg(out[i].state.z, 0, 'g', 17)
+                                                        .arg(one.state.z, 0, 'g', 17)));
+            differing += !same(out[i], one);
+            ++compared;
+        }
+        if (k % 10 == 0) {
+            QCOMPARE(out[5].status, LawStatus::InvalidInput);
+            QCOMPARE(out[7].status, LawStatus::InvalidInput);
+        }
+    }
+    qInfo("%d of %d end states differ from integrateState() in the last bits", differing, compared);
 }
 
 QTEST_APPLESS_MAIN(TestBoucWenIntegration)

@@ -269,6 +269,15 @@ void TestUnscentedKalmanFilter::invalidSettingsAndDimensions() {
             UkfFault::DimensionMismatch);
     QCOMPARE(std::string(ukfFaultName(UkfFault::NotPositiveDefinite)),
              std::string("not positive definite"));
+    // Bounds: the state's size, lower <= upper, no NaN; a refused box changes nothing.
+    QVERIFY(ukf.setBounds(Vector::Zero(3), Vector::Ones(3)).fault == UkfFault::DimensionMismatch);
+    QVERIFY(ukf.setBounds(vec2(0.0, 1.0), vec2(1.0, 0.5)).fault == UkfFault::InvalidSettings);
+    QVERIFY(ukf.setBounds(vec2(0.0, 0.0), vec2(1.0, std::nan(""))).fault ==
+            UkfFault::InvalidSettings);
+    QVERIFY(!ukf.bounded());
+    QVERIFY(ukf.setBounds(vec2(-1.0, -1.0), vec2(1.0, 1.0)).ok && ukf.bounded());
+    ukf.clearBounds();
+    QVERIFY(!ukf.bounded());
 }
 
 void TestUnscentedKalmanFilter::zeroVarianceComponentStaysExact() {
@@ -311,8 +320,9 @@ void TestUnscentedKalmanFilter::projectionHoldsBounds() {
         QVERIFY(ukf.setProcessNoise(Matrix::Constant(1, 1, 1e-4)).ok);
         QVERIFY(ukf.setMeasurementNoise(Matrix::Constant(1, 1, 0.01)).ok);
         double lowest = 1.0, highest = 0.0;
-        ukf.setProjection([](Eigen::Ref<Vector> v) { v(0) = std::clamp(v(0), 0.0, 1.0); },
-                          [](Eigen::Ref<Vector> v) { v(0) = std::clamp(v(0), 1e-3, 1.0 - 1e-3); });
+        QVERIFY(ukf.setBounds(Vector::Constant(1, 0.0), Vector::Constant(1, 1.0),
+                              Vector::Constant(1, 1e-3), Vector::Constant(1, 1.0 - 1e-3))
+                    .ok);
         const auto h = [&](const Vector& s) -> Vector {
             lowest = std::min(lowest, s(0));
             highest = std::max(highest, s(0));
@@ -338,7 +348,7 @@ void TestUnscentedKalmanFilter::projectionHoldsBounds() {
     UnscentedKalmanFilter ukf;
     QVERIFY(ukf.init(Vector::Constant(1, 1.0), Matrix::Constant(1, 1, 0.01)).ok);
     QVERIFY(ukf.setProcessNoise(Matrix::Constant(1, 1, 1e-4)).ok);
-    ukf.setProjection([](Eigen::Ref<Vector> v) { v(0) = std::clamp(v(0), 0.0, 1.0); });
+    QVERIFY(ukf.setBounds(Vector::Constant(1, 0.0), Vector::Constant(1, 1.0)).ok);
     QVERIFY(ukf.predict([](const Vector& s) -> Vector { return s; }).ok);
     QVERIFY(ukf.update([](const Vector& s) -> Vector { return s; }, Vector::Constant(1, 2.0)).ok);
     QCOMPARE(ukf.state()(0), 1.0);
