@@ -257,23 +257,20 @@ bool offsetOutside(const double* __restrict x, const double* __restrict root, do
         }
         return moved != 0;
     } else {
+        // Fixed-size Eigen columns: the same element-wise operations, in vector registers.
+        using Column = Eigen::Array<double, N, 1>;
         constexpr double inf = std::numeric_limits<double>::infinity();
-        std::array<double, N> smallest, largest;
-        smallest.fill(inf);
-        largest.fill(-inf);
+        const Eigen::Map<const Column> centre(x);
+        Column smallest = Column::Constant(inf), largest = Column::Constant(-inf);
         for (Index k = 0; k < N * N; k += N) {
-            for (Index i = 0; i < N; ++i) {
-                const double v = scale * root[k + i] + x[i];
-                out[k + i] = v;
-                smallest[i] = v < smallest[i] ? v : smallest[i];
-                largest[i] = largest[i] < v ? v : largest[i];
-            }
+            const Column v = scale * Eigen::Map<const Column>(root + k) + centre;
+            Eigen::Map<Column>(out + k) = v;
+            smallest = (v < smallest).select(v, smallest);
+            largest = (largest < v).select(v, largest);
         }
-        bool moved = false;
-        for (Index i = 0; i < N; ++i) {
-            moved |= (smallest[i] < lower[i]) | (upper[i] < largest[i]);
-        }
-        return moved;
+        return ((smallest < Eigen::Map<const Column>(lower)) ||
+                (Eigen::Map<const Column>(upper) < largest))
+            .any();
     }
 }
 
