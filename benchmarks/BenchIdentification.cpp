@@ -2,8 +2,9 @@
 //   UKF update per step, Bouc-Wen, L = 9                  <= 4 us
 //   one Nelder-Mead HistoryFit trigger (1000 points, 200 evaluations): reported, and its ratio
 //   to the UKF step (docs/benchmarks.md)
-// The UKF step is split into its parts: 19 Bouc-Wen integrations (one per sigma point) and the
-// filter's own arithmetic (the same L = 9 filter with a trivial process).
+// The UKF step is split into its parts: the 19 sigma points' Bouc-Wen integrations (one call of
+// BoucWen::integrateStates, exact and fast pow) and the filter's own arithmetic (the same L = 9
+// filter with a trivial process).
 // Run: build/bin/hsmu_bench --benchmark_filter=Ident
 
 #include "core/hysteresis/BoucWen.h"

@@ -11,7 +11,10 @@
 // One step, for the measured (u, F) of a committed integration step (physical units):
 //   process (Eq. 11): (z, e) <- BoucWen::integrate(parameters of the sigma point, (z, e),
 //                     dx = u / uRef - previous u / uRef) (BoucWen.h, Eqs 2-6); parameters
-//                     follow a random walk (unchanged, plus Q)
+//                     follow a random walk (unchanged, plus Q). All sigma points at once by
+//                     BoucWen::integrateStates(BatchMath::Fast): |z|^n within 1 ulp of
+//                     std::pow on processors with AVX2, so results can differ between
+//                     machines in the last digits (about 1e-6 relative over a whole run)
 //   measurement (Eq. 7): h(x) = alpha k0 (u / uRef) + (1 - alpha) k0 z, compared with F / fRef
 // The element starts virgin (z = e = 0, known exactly) at u = 0.
 //
