@@ -199,7 +199,7 @@ void roundExact(Lanes* vectors, int count, const Batch& b) {
     });
 }
 
-#if HSMU_HAVE_LIBMVEC_AVX2
+#if defined(HSMU_HAVE_LIBMVEC_AVX2)
 // glibc's vector pow (libmvec, the x86-64 vector function ABI, AVX2 variant): four lanes per
 // call, within 1 ulp of std::pow.
 #pragma GCC push_options
