@@ -29,13 +29,17 @@ constexpr int kLanes = 4;
 using Vec = double __attribute__((vector_size(kLanes * sizeof(double))));
 using Mask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double))));
 
-// Vectors per block: the problems of a block iterate round-robin, so that the out-of-order
-// core overlaps their independent chains. 8 vectors hold the 19 sigma points of L = 9.
+// Vectors per block: a block's vectors advance one Newton iteration per round (roundWith()),
+// so that the processor overlaps their independent chains. 8 vectors hold the 19 sigma points
+// of L = 9.
 constexpr int kVectorsPerBlock = 8;
 constexpr std::size_t kBlock = kLanes * kVectorsPerBlock;
 
+// Vector helpers are always inlined: into the AVX2 function they become AVX2 code, and no
+// vector is ever passed between functions of different instruction sets.
+
 // std::abs: the sign bit cleared (-0 becomes +0, as std::abs does).
-Vec absOf(const Vec& value) {
+[[gnu::always_inline]] inline Vec absOf(const Vec& value) {
     Vec v = value;
     const Mask magnitude = ~(Mask{} + INT64_MIN);
     Mask bits;
@@ -46,7 +50,7 @@ Vec absOf(const Vec& value) {
 }
 
 // signOf() per lane: (v > 0) - (v < 0) as a double (comparisons give -1 for true).
-Vec signOfLanes(const Vec& v) {
+[[gnu::always_inline]] inline Vec signOfLanes(const Vec& v) {
     return __builtin_convertvector((v < 0.0) - (v > 0.0), Vec);
 }
 
@@ -188,15 +192,16 @@ template <class Pow>
 
 // std::pow lane by lane (running lanes only): the results of integrateState(), bit for bit.
 void roundExact(Lanes* vectors, int count, const Batch& b) {
-    roundWith(vectors, count, b, [](const Lanes& lanes, const Vec& absZ) {
-        Vec out{};
-        for (int lane = 0; lane < kLanes; ++lane) {
-            if ((lanes.running & (1u << lane)) != 0) {
-                out[lane] = std::pow(absZ[lane], lanes.n[lane]);
+    roundWith(
+        vectors, count, b, [](const Lanes& lanes, const Vec& absZ) __attribute__((always_inline)) {
+            Vec out{};
+            for (int lane = 0; lane < kLanes; ++lane) {
+                if ((lanes.running & (1u << lane)) != 0) {
+                    out[lane] = std::pow(absZ[lane], lanes.n[lane]);
+                }
             }
-        }
-        return out;
-    });
+            return out;
+        });
 }
 
 #if defined(HSMU_HAVE_LIBMVEC_AVX2)
@@ -207,6 +212,7 @@ void roundExact(Lanes* vectors, int count, const Batch& b) {
 extern "C" Vec _ZGVdN4vv_pow(Vec x, Vec y);
 
 void roundAvx2(Lanes* vectors, int count, const Batch& b) {
+    // (Not always_inline: roundWith() is compiled for the baseline until it is inlined here.)
     roundWith(vectors, count, b,
               [](const Lanes& lanes, const Vec& absZ) { return _ZGVdN4vv_pow(absZ, lanes.n); });
 }

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -239,10 +240,20 @@ void offset(const double* __restrict x, const double* __restrict root, double sc
     }
 }
 
-// offset(), and whether std::clamp into [lower, upper] would move any of the values written:
-// it moves v exactly when v < lower or upper < v (never a NaN). The rows' smallest and largest
-// values are tracked as they are written (v < m ? v : m skips a NaN, as the clamp does), then
-// compared once per row.
+// Two doubles in one SSE2 register (GCC vector extensions): element-wise operations with the
+// same rounding as the scalar ones.
+using Pair = double __attribute__((vector_size(2 * sizeof(double))));
+using PairMask = std::int64_t __attribute__((vector_size(2 * sizeof(double))));
+
+Pair loadPair(const double* p) {
+    Pair v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+// offset(), and whether std::clamp into [lower, upper] would move any of the values written: it
+// moves v exactly when v < lower or upper < v (never a NaN). For a fixed size, two rows at a
+// time in vector registers.
 template <Index N>
 bool offsetOutside(const double* __restrict x, const double* __restrict root, double scale,
                    double* __restrict out, const double* __restrict lower,
@@ -257,20 +268,28 @@ bool offsetOutside(const double* __restrict x, const double* __restrict root, do
         }
         return moved != 0;
     } else {
-        // Fixed-size Eigen columns: the same element-wise operations, in vector registers.
-        using Column = Eigen::Array<double, N, 1>;
-        constexpr double inf = std::numeric_limits<double>::infinity();
-        const Eigen::Map<const Column> centre(x);
-        Column smallest = Column::Constant(inf), largest = Column::Constant(-inf);
-        for (Index k = 0; k < N * N; k += N) {
-            const Column v = scale * Eigen::Map<const Column>(root + k) + centre;
-            Eigen::Map<Column>(out + k) = v;
-            smallest = (v < smallest).select(v, smallest);
-            largest = (largest < v).select(v, largest);
+        constexpr Index pairs = N / 2;
+        std::array<Pair, pairs> centre, low, high;
+        for (Index p = 0; p < pairs; ++p) {
+            centre[p] = loadPair(x + 2 * p);
+            low[p] = loadPair(lower + 2 * p);
+            high[p] = loadPair(upper + 2 * p);
         }
-        return ((smallest < Eigen::Map<const Column>(lower)) ||
-                (Eigen::Map<const Column>(upper) < largest))
-            .any();
+        PairMask moved{};
+        bool movedLast = false;
+        for (Index k = 0; k < N * N; k += N) {
+            for (Index p = 0; p < pairs; ++p) {
+                const Pair v = scale * loadPair(root + k + 2 * p) + centre[p];
+                std::memcpy(out + k + 2 * p, &v, sizeof v);
+                moved |= (v < low[p]) | (high[p] < v);
+            }
+            if constexpr (N % 2 == 1) {
+                const double v = scale * root[k + N - 1] + x[N - 1];
+                out[k + N - 1] = v;
+                movedLast |= (v < lower[N - 1]) | (upper[N - 1] < v);
+            }
+        }
+        return (moved[0] | moved[1]) != 0 || movedLast;
     }
 }
 
