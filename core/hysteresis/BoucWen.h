@@ -98,6 +98,9 @@ public:
     };
     /// Whether BatchMath::Fast uses the vector pow on this machine and build.
     static bool fastBatchMathAvailable();
+    /// How BatchMath::Fast evaluates |z|^n here: "libmvec AVX2 vector pow" or "std::pow"
+    /// (records name it, since it decides the last digits of an identification).
+    static const char* fastBatchMathName();
     /// integrateState() for several problems with the same dx (the UKF's sigma points), out[i]
     /// for p[i] and from[i] (up to the shortest of the three). Same decisions and arithmetic
     /// as integrateState(), four problems per vector, their Newton iterations interleaved

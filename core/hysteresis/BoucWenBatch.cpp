@@ -281,4 +281,8 @@ bool BoucWen::fastBatchMathAvailable() {
     return vectorPowAvailable();
 }
 
+const char* BoucWen::fastBatchMathName() {
+    return vectorPowAvailable() ? "libmvec AVX2 vector pow" : "std::pow";
+}
+
 } // namespace hsmu

@@ -26,6 +26,9 @@ struct RecordMetadata {
     std::string operatorNotes;
     double dt = 0.0; ///< integration step [s]
     std::string run; ///< schema 2: "reference", "initial", "updated" (hsmu compare) or ""
+    /// How the writer evaluated the UKF's sigma points, e.g. "UKF sigma points: libmvec AVX2
+    /// vector pow" (BoucWen::fastBatchMathName()); "" in records written before it was kept.
+    std::string numerics;
 };
 
 /// A parameter update applied to a target element (/updating/events).
@@ -64,8 +67,8 @@ struct RecordData {
     std::vector<int> updatesThisStep;  ///< [N]
     std::vector<int> pendingProposals; ///< [N]
     // Schema 2 (empty when reading a schema-1 file).
-    Eigen::MatrixXd tracking;               ///< [N x 3] J1 [s], J2 [-], J3 [-]
-    std::vector<int> updateRequested;       ///< [N] 1: fit error above the threshold
+    Eigen::MatrixXd tracking;                 ///< [N x 3] J1 [s], J2 [-], J3 [-]
+    std::vector<int> updateRequested;         ///< [N] 1: fit error above the threshold
     std::vector<RecordedUpdate> updateEvents; ///< in the order applied
 
     std::vector<RecordNote> notes; ///< schema 2; in the order added

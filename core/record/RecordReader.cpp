@@ -151,6 +151,8 @@ void RecordReader::Impl::readMetadata() {
     m.dt = h5::readDoubleAttr(root, "dt", w);
     if (h5::hasAttr(root, "run"))
         m.run = h5::readStringAttr(root, "run", w);
+    if (h5::hasAttr(root, "numerics"))
+        m.numerics = h5::readStringAttr(root, "numerics", w);
 
     RunLayout& layout = data.layout;
     {

@@ -1,6 +1,7 @@
 #include "core/record/RecordWriter.h"
 
 #include "core/Version.h"
+#include "core/hysteresis/BoucWen.h"
 #include "core/record/Hdf5Util.h"
 #include "core/record/RecordData.h"
 #include "core/record/RecordSchema.h"
@@ -102,6 +103,8 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     h5::writeAttr(root, "operator_notes", start.operatorNotes, w);
     h5::writeAttr(root, "dt", start.dt, w);
     h5::writeAttr(root, "run", start.run, w);
+    h5::writeAttr(root, "numerics",
+                  std::string("UKF sigma points: ") + BoucWen::fastBatchMathName(), w);
 
     const auto group = [&](const char* name) {
         return h5::check(H5Gcreate2(root, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,

@@ -6,6 +6,7 @@
 #include "RecordFixture.h"
 
 #include "core/Version.h"
+#include "core/hysteresis/BoucWen.h"
 #include "core/record/RecordError.h"
 #include "core/record/RecordReader.h"
 #include "core/record/RecordSchema.h"
@@ -70,6 +71,7 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
     QCOMPARE(d.meta.configName, cfg.name);
     QCOMPARE(d.meta.operatorNotes, std::string("sample notes, ünïcode"));
     QCOMPARE(d.meta.dt, 0.01);
+    QCOMPARE(d.meta.numerics, std::string("UKF sigma points: ") + BoucWen::fastBatchMathName());
     QVERIFY(QRegularExpression(R"(^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ$)")
                 .match(QString::fromStdString(d.meta.startTime))
                 .hasMatch());
