@@ -11,11 +11,12 @@
 namespace hsmu::ukfkernels {
 
 // Each public kernel is also compiled for AVX2 and chosen at load time where the processor has
-// it (GCC function multiversioning): its plain loops then work on four doubles at a time. The
-// results are the same bit for bit: AVX2 brings no fused multiply-add, and vectorizing
-// element-wise loops (not reductions, which stay in order) changes no rounding.
+// it (GCC function multiversioning), with everything it calls inlined into it (flatten: else
+// the clone would call the baseline loops): its plain loops then work on four doubles at a
+// time. The results are the same bit for bit: AVX2 brings no fused multiply-add, and
+// vectorizing element-wise loops (not reductions, which stay in order) changes no rounding.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define HSMU_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
+#define HSMU_KERNEL_CLONES __attribute__((target_clones("avx2", "default"), flatten))
 #else
 #define HSMU_KERNEL_CLONES
 #endif
