@@ -40,11 +40,11 @@
 // whole, to chi = x +- t c S_i with the largest t in (0, 1] keeping both points admissible,
 // and weighted W_i / t^2. Any pair +-t c S_i with weight 1 / (2 t^2 c^2) reproduces the
 // mean and the covariance S_i S_i^T along its direction, so the transform stays exact to
-// second order (only the fourth moments change). t is read off the projected points
-// component-wise, which is exact for a box. A pair with no room at all (t = 0: the centre on the
-// boundary, the direction pointing out) is dropped: the update leaves its variance untouched, the
-// prediction loses it (it grows again by Q). Estimators therefore keep their means a margin
-// inside the bounds (the mean hook) while sigma points may use the whole box.
+// second order (only the fourth moments change). t is read off the clamped points component
+// by component, which is exact for a box. A pair with no room at all (t = 0: the centre on the
+// boundary, the direction pointing out) is dropped: the update leaves its variance untouched,
+// the prediction loses it (it grows again by Q). Estimators therefore keep their means a
+// margin inside the bounds (the mean box) while sigma points may use the whole box.
 //
 // Functions: process f and measurement h are callables in one of three forms,
 //   Eigen::VectorXd f(const Eigen::VectorXd& x)                                  or
