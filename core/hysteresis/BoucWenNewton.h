@@ -117,7 +117,8 @@ private:
 
 // One backward-Euler step of Eqs 2-6 from (z0, e0) solved by Newton from z0, with the residual
 //   r(z) = z - z0 - dx Phi(z, e(z)) / eta(e(z)),  e(z) = e0 + (1 - alpha) k0 z dx,
-// one iteration per iterate(), so that several can run interleaved (integrateStates()).
+// one iteration per iterate(). BoucWenBatch.cpp repeats iterate()'s arithmetic, four problems at a
+// time.
 class BackwardEuler {
 public:
     enum class Progress { Iterating, Converged, Failed };
