@@ -1,6 +1,7 @@
 #include "gui/PresetLibrary.h"
 
 #include "core/config/ConfigLoader.h"
+#include "core/config/ShearBuilding.h"
 
 #include <QDir>
 #include <QFile>
@@ -75,6 +76,8 @@ TestConfig PresetLibrary::load(const QString& nameOrPath) {
         return loadConfigFile(nameOrPath.toStdString());
     if (!resourcePath(nameOrPath).isEmpty())
         return parsePreset(nameOrPath);
+    if (auto spec = parseShearBuildingName(nameOrPath.toStdString()))
+        return parseConfig(shearBuildingConfig(*spec), "preset " + nameOrPath.toStdString());
     const bool looksLikePath = nameOrPath.contains(QLatin1Char('/')) ||
                                nameOrPath.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive);
     if (looksLikePath)
@@ -84,7 +87,8 @@ TestConfig PresetLibrary::load(const QString& nameOrPath) {
         ids << p.id;
     throw ConfigError(nameOrPath.toStdString() +
                       ": neither a configuration file nor a preset (presets: " +
-                      ids.join(QStringLiteral(", ")).toStdString() + ")");
+                      ids.join(QStringLiteral(", ")).toStdString() +
+                      ", and the generated shear-building-<N>[-elastic][-mass-damped])");
 }
 
 } // namespace hsmu::gui

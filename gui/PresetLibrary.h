@@ -2,7 +2,9 @@
 // PresetLibrary: the test configurations embedded in the binary (resources/hsmu.qrc,
 // ":/presets/<name>.json") and the rule that turns a command-line CONFIG into a TestConfig:
 // an existing file is read from disk; otherwise a preset name ("paper-condition-3") is looked
-// up among the embedded presets; otherwise the name is read as a path (and fails naming it).
+// up among the embedded presets; then the generated family "shear-building-<N>[-elastic]
+// [-mass-damped]" (core/config/ShearBuilding.h); otherwise the name is read as a path (and
+// fails naming it).
 // Thread rules: any thread (read-only resources).
 
 #include "core/config/TestConfig.h"

@@ -21,9 +21,12 @@ void AlphaOS::initialize(const Structure& s, double dt, const Eigen::VectorXd& u
                          const Eigen::VectorXd& v0, double ag0, const Eigen::VectorXd& r0)
 {
     Integrator::initialize(s, dt, u0, v0, ag0, r0);
+    m_c.set(s.damping());
+    m_k.set(s.initialStiffness());
     const double c = 1.0 + m_alpha;
-    m_lhs.compute(s.mass() + c * (m_gamma * dt * s.damping() + m_beta * dt * dt * s.initialStiffness()));
-    m_fPrev = -s.influence() * ag0 - s.damping() * v0 - r0;
+    m_lhs.compute(Eigen::SparseMatrix<double>(
+        s.mass() + c * (m_gamma * dt * s.damping() + m_beta * dt * dt * s.initialStiffness())));
+    m_fPrev = -s.influence() * ag0 - m_c * v0 - r0;
 }
 
 Eigen::VectorXd AlphaOS::predict() const
@@ -35,7 +38,7 @@ bool AlphaOS::correct(const Eigen::VectorXd& rTrial, double agNext)
 {
     const Eigen::VectorXd uTilde = predict();
     const Eigen::VectorXd vTilde = m_v + m_dt * (1.0 - m_gamma) * m_a;
-    const Eigen::VectorXd fTilde = -m_s->influence() * agNext - m_s->damping() * vTilde - rTrial;
+    const Eigen::VectorXd fTilde = -m_s->influence() * agNext - m_c * vTilde - rTrial;
     const Eigen::VectorXd rhs = (1.0 + m_alpha) * fTilde - m_alpha * m_fPrev;
     const Eigen::VectorXd aNext = m_lhs.solve(rhs);
     if (!aNext.allFinite())
@@ -44,8 +47,8 @@ bool AlphaOS::correct(const Eigen::VectorXd& rTrial, double agNext)
     m_v = vTilde + m_gamma * m_dt * aNext;
     m_a = aNext;
     // Corrected restoring force of step n+1: R~ + K_I (u - u~).
-    const Eigen::VectorXd rNext = rTrial + m_s->initialStiffness() * (m_u - uTilde);
-    m_fPrev = -m_s->influence() * agNext - m_s->damping() * m_v - rNext;
+    const Eigen::VectorXd rNext = rTrial + m_k * (m_u - uTilde);
+    m_fPrev = -m_s->influence() * agNext - m_c * m_v - rNext;
     return true;
 }
 

@@ -13,10 +13,13 @@
 //   (1+alpha) (F[n+1] - C v~[n+1] - R~[n+1]) - alpha (F[n] - C v[n] - R[n]).
 // K_I is the initial stiffness. Unconditionally stable for linear and softening systems;
 // for a linear system with K_I = K it is exactly HHT-alpha.
+// Cost per step O(non-zeros of K_I and C): the left-hand side is a sparse matrix factored once
+// in initialize() (LeftHandSide.h), the products C v and K_I du are sparse.
 
 #include "core/integration/Integrator.h"
 
-#include <Eigen/Cholesky>
+#include "core/integration/LeftHandSide.h"
+#include "core/integration/StepMatrix.h"
 
 namespace hsmu {
 
@@ -41,7 +44,8 @@ public:
 
 private:
     double m_alpha, m_beta, m_gamma;
-    Eigen::LDLT<Eigen::MatrixXd> m_lhs;
+    LeftHandSide m_lhs;
+    StepMatrix m_c, m_k; // C, K_I
     Eigen::VectorXd m_fPrev; // F[n] - C v[n] - R[n] of the accepted step
 };
 

@@ -8,7 +8,8 @@ void ExplicitNewmark::initialize(const Structure& s, double dt, const Eigen::Vec
                                  const Eigen::VectorXd& v0, double ag0, const Eigen::VectorXd& r0)
 {
     Integrator::initialize(s, dt, u0, v0, ag0, r0);
-    m_lhs.compute(s.mass() + kGamma * dt * s.damping());
+    m_c.set(s.damping());
+    m_lhs.compute(Eigen::SparseMatrix<double>(s.mass() + kGamma * dt * s.damping()));
 }
 
 Eigen::VectorXd ExplicitNewmark::predict() const
@@ -19,7 +20,7 @@ Eigen::VectorXd ExplicitNewmark::predict() const
 bool ExplicitNewmark::correct(const Eigen::VectorXd& rTrial, double agNext)
 {
     const Eigen::VectorXd vHalf = m_v + (1.0 - kGamma) * m_dt * m_a;
-    const Eigen::VectorXd rhs = -m_s->influence() * agNext - rTrial - m_s->damping() * vHalf;
+    const Eigen::VectorXd rhs = -m_s->influence() * agNext - rTrial - m_c * vHalf;
     const Eigen::VectorXd aNext = m_lhs.solve(rhs);
     if (!aNext.allFinite())
         return false;

@@ -6,10 +6,14 @@
 //   v[n+1] = v[n] + dt ((1-gamma) a[n] + gamma a[n+1])
 //
 // Conditionally stable: omega_max dt <= 2 (undamped); second-order accurate.
+// Cost per step O(non-zeros of C): M is lumped (diagonal), so with mass-proportional damping
+// M + gamma dt C is diagonal and needs no solve; otherwise its sparse LDL^T is computed once
+// in initialize() (LeftHandSide.h).
 
 #include "core/integration/Integrator.h"
 
-#include <Eigen/Cholesky>
+#include "core/integration/LeftHandSide.h"
+#include "core/integration/StepMatrix.h"
 
 namespace hsmu {
 
@@ -25,7 +29,8 @@ public:
 
 private:
     static constexpr double kGamma = 0.5;
-    Eigen::LDLT<Eigen::MatrixXd> m_lhs; // M + gamma dt C, factored once
+    LeftHandSide m_lhs; // M + gamma dt C, factored once
+    StepMatrix m_c;     // C
 };
 
 } // namespace hsmu

@@ -1,8 +1,7 @@
 #include "core/integration/Integrator.h"
 
+#include "core/integration/StepMatrix.h"
 #include "core/structure/Structure.h"
-
-#include <Eigen/Cholesky>
 
 namespace hsmu {
 
@@ -13,8 +12,10 @@ void Integrator::initialize(const Structure& s, double dt, const Eigen::VectorXd
     m_dt = dt;
     m_u = u0;
     m_v = v0;
-    const Eigen::VectorXd f = -s.influence() * ag0 - s.damping() * v0 - r0;
-    m_a = s.mass().ldlt().solve(f);
+    StepMatrix c;
+    c.set(s.damping());
+    const Eigen::VectorXd f = -s.influence() * ag0 - c * v0 - r0;
+    m_a = f.cwiseQuotient(s.massDiagonal()); // M is lumped (diagonal)
 }
 
 } // namespace hsmu

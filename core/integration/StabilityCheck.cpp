@@ -12,7 +12,7 @@ namespace hsmu {
 StabilityReport checkStability(const Structure& s, const Integrator& integrator, double dt)
 {
     StabilityReport r;
-    r.omegaMax = s.frequencies().size() ? s.frequencies().maxCoeff() : 0.0;
+    r.omegaMax = s.maxFrequency();
     r.omegaDt = r.omegaMax * dt;
     r.limit = integrator.stabilityLimit();
     r.maxStableDt = r.omegaMax > 0.0 ? r.limit / r.omegaMax

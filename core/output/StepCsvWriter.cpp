@@ -18,6 +18,15 @@ void appendValue(std::string& line, double value) {
 
 } // namespace
 
+std::size_t StepCsvWriter::columnCount(const RunLayout& layout) {
+    std::size_t n = 2 + 3 * layout.dofNames.size();
+    for (const auto& e : layout.elements)
+        n += e.experimental ? 3 : 2;
+    if (layout.updating)
+        n += 2 * layout.updating->parameters.size() + 2;
+    return n;
+}
+
 std::string StepCsvWriter::header(const RunLayout& layout) {
     std::string h = "time_s,ag_m_s2";
     for (const auto& d : layout.dofNames)

@@ -397,6 +397,7 @@ void RecordWriter::onStep(const StepRecord& r) {
                 d.bufferEvent(ev);
     }
     if (d.bTime.size() >= std::size_t(kMaxBufferedRows) ||
+        long(d.bU.size() * 3 + d.bDef.size() * 3) >= kMaxBufferedValues ||
         Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
         d.flush();
 }

@@ -17,7 +17,7 @@
 // The file is created with the latest format and switched to SWMR write mode, so another
 // process can read it (RecordReader, h5py with swmr=True) while the run goes on. Rows are
 // buffered in memory and appended (extend + write + H5Fflush) at least every kFlushInterval
-// seconds of wall time, every kMaxBufferedRows rows, and by flush() / finish() / the
+// seconds of wall time, every kMaxBufferedRows rows (or kMaxBufferedValues values), and by flush() / finish() / the
 // destructor: a process killed mid-run leaves a file holding every step flushed before.
 // onStep() only checks the clock when rows are buffered; a test that holds (no steps) should
 // have its owner call flushIfDue() at least once a second while it holds (RunCommand does
@@ -53,6 +53,9 @@ class RecordWriter final : public StepObserver {
 public:
     static constexpr double kFlushInterval = 0.5; ///< [s] of wall time
     static constexpr int kMaxBufferedRows = 16384;
+    /// Also flush once the buffered per-step values (DOF and element columns) reach this
+    /// many doubles (16 MiB): a 10,000-DOF model flushes every 34 rows, bounding memory.
+    static constexpr long kMaxBufferedValues = 1L << 21;
 
     /// Creates (truncates) path. Throws RecordError naming the file on failure.
     RecordWriter(const std::string& path, const RunLayout& layout, const RecordStart& start);

@@ -22,12 +22,13 @@ void Element::addNodalForces(Eigen::VectorXd& rFull) const
         rFull[t.dof] += t.coefficient * p;
 }
 
-void Element::addInitialStiffness(Eigen::MatrixXd& kFull) const
+void Element::addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
+                                  const std::vector<int>& freeOf) const
 {
-    const double k = initialGeneralizedStiffness();
+    const double k0 = initialGeneralizedStiffness();
     for (const auto& a : m_terms)
         for (const auto& b : m_terms)
-            kFull(a.dof, b.dof) += a.coefficient * b.coefficient * k;
+            k.emplace_back(freeOf[a.dof], freeOf[b.dof], a.coefficient * b.coefficient * k0);
 }
 
 } // namespace hsmu

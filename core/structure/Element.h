@@ -11,6 +11,7 @@
 #include "core/hysteresis/HysteresisLaw.h"
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <string>
 #include <vector>
@@ -69,8 +70,10 @@ public:
 
     /// Add c_k P to R[dof_k] (full DOFs).
     void addNodalForces(Eigen::VectorXd& rFull) const;
-    /// Add c c^T k0 to K (full DOFs).
-    void addInitialStiffness(Eigen::MatrixXd& kFull) const;
+    /// Append c c^T k0 as triplets over the free DOFs (row freeOf[dof_a], column
+    /// freeOf[dof_b]); Eigen sums duplicates when the sparse matrix is built.
+    void addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
+                             const std::vector<int>& freeOf) const;
 
 private:
     std::string m_name;

@@ -1,6 +1,6 @@
 #include "core/structure/Structure.h"
 
-#include <Eigen/Eigenvalues>
+#include "core/structure/ModalAnalysis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,9 +84,16 @@ void Structure::finalize()
     for (int i = 0; i < n; ++i)
         if (master[i] == i)
             freeIndex[i] = nFree++;
-    m_t = Eigen::MatrixXd::Zero(n, nFree);
+    m_freeOf.assign(n, 0);
     for (int i = 0; i < n; ++i)
-        m_t(i, freeIndex[master[i]]) = 1.0;
+        m_freeOf[i] = freeIndex[master[i]];
+    using Triplet = Eigen::Triplet<double>;
+    std::vector<Triplet> triplets;
+    triplets.reserve(n);
+    for (int i = 0; i < n; ++i)
+        triplets.emplace_back(i, m_freeOf[i], 1.0);
+    m_t.resize(n, nFree);
+    m_t.setFromTriplets(triplets.begin(), triplets.end());
 
     Eigen::VectorXd mFull(n);
     for (int i = 0; i < n; ++i) {
@@ -94,26 +101,41 @@ void Structure::finalize()
             throw std::invalid_argument("DOF '" + m_dofNames[i] + "': mass must be >= 0");
         mFull[i] = m_masses[i];
     }
-    m_m = m_t.transpose() * mFull.asDiagonal() * m_t;
+    // M = T^T M_full T: each free DOF carries the masses merged into it (diagonal).
+    m_mDiag = Eigen::VectorXd::Zero(nFree);
+    for (int i = 0; i < n; ++i)
+        m_mDiag[m_freeOf[i]] += mFull[i];
     for (int j = 0; j < nFree; ++j)
-        if (!(m_m(j, j) > 0.0))
+        if (!(m_mDiag[j] > 0.0))
             throw std::invalid_argument(
                 "free DOF " + std::to_string(j) +
                 " has no mass (an explicit integrator needs a positive mass on every DOF)");
-    m_influence = m_t.transpose() * mFull;
+    m_m.resize(nFree, nFree);
+    m_m.reserve(Eigen::VectorXi::Constant(nFree, 1));
+    for (int j = 0; j < nFree; ++j)
+        m_m.insert(j, j) = m_mDiag[j];
+    m_m.makeCompressed();
+    m_influence = m_mDiag; // T^T M_full iota
 
-    Eigen::MatrixXd kFull = Eigen::MatrixXd::Zero(n, n);
+    // K0 = T^T K_full T, assembled directly over the free DOFs (duplicates are summed).
+    triplets.clear();
     for (const auto& e : m_elements) {
         for (const auto& t : e->terms())
             checkDof(t.dof, "element '" + e->name() + "'");
-        e->addInitialStiffness(kFull);
+        e->addInitialStiffness(triplets, m_freeOf);
     }
-    m_k0 = m_t.transpose() * kFull * m_t;
+    m_k0.resize(nFree, nFree);
+    m_k0.setFromTriplets(triplets.begin(), triplets.end());
+    m_k0.prune(0.0); // terms that cancel (a truss between merged DOFs) leave no entry
 
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(m_k0, m_m);
-    if (eig.info() != Eigen::Success)
-        throw std::invalid_argument("eigenvalue analysis of the initial stiffness failed");
-    m_omega = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    if (nFree <= kDenseModalLimit) {
+        m_omega = denseFrequencies(m_k0, m_mDiag);
+        m_omegaMax = m_omega.maxCoeff();
+    } else {
+        const int wanted = m_modalZeta >= 0.0 ? std::max({m_modeI, m_modeJ, 3}) : 3;
+        m_omega = lowestFrequencies(m_k0, m_mDiag, std::min(wanted, nFree));
+        m_omegaMax = largestFrequency(m_k0, m_mDiag);
+    }
 
     if (m_modalZeta >= 0.0) {
         auto w = [&](int mode) {
@@ -127,6 +149,22 @@ void Structure::finalize()
         m_rayleigh = RayleighDamping::fromRatio(m_modalZeta, w1, w2);
     }
     m_c = m_rayleigh.a0 * m_m + m_rayleigh.a1 * m_k0;
+    m_c.prune(0.0);
+    m_cDiagonal = true;
+    for (int j = 0; j < m_c.outerSize() && m_cDiagonal; ++j)
+        for (SparseMatrix::InnerIterator it(m_c, j); it; ++it)
+            if (it.row() != j) {
+                m_cDiagonal = false;
+                break;
+            }
+}
+
+Eigen::VectorXd Structure::toFull(const Eigen::VectorXd& uFree) const
+{
+    Eigen::VectorXd u(Eigen::Index(m_freeOf.size()));
+    for (std::size_t i = 0; i < m_freeOf.size(); ++i)
+        u[Eigen::Index(i)] = uFree[m_freeOf[i]];
+    return u;
 }
 
 ElementStatus Structure::setTrial(const Eigen::VectorXd& uFree)
@@ -146,10 +184,13 @@ ElementStatus Structure::setTrial(const Eigen::VectorXd& uFree)
 
 Eigen::VectorXd Structure::restoringForce() const
 {
-    Eigen::VectorXd r = Eigen::VectorXd::Zero(fullDofCount());
+    m_rFull.setZero(fullDofCount());
     for (const auto& e : m_elements)
-        e->addNodalForces(r);
-    return m_t.transpose() * r;
+        e->addNodalForces(m_rFull);
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(freeDofCount());
+    for (std::size_t i = 0; i < m_freeOf.size(); ++i) // T^T r_full
+        r[m_freeOf[i]] += m_rFull[Eigen::Index(i)];
+    return r;
 }
 
 ElementStatus Structure::commit()

@@ -7,10 +7,19 @@
 // Coordinates: "full" DOFs are the ones the user declares; constraints merge slaves into
 // their masters, leaving the "free" DOFs the integrator works on: u_full = T u_free with T a
 // 0/1 matrix (one 1 per row). All matrices returned here are over the free DOFs.
+//
+// Every matrix is sparse (Eigen::SparseMatrix, column-major): an element adds c c^T k0 over
+// its DofTerms only, so K0 has O(elements) non-zeros and the cost of a step grows linearly
+// with the model (docs/benchmarks.md, "Numerical substructures at scale"). T is applied as an
+// index map (toFull, restoringForce); M = T^T M_full T is always diagonal (massDiagonal()).
+// Frequencies: up to kDenseModalLimit free DOFs a dense generalized eigen-solve gives every
+// mode; above it ModalAnalysis gives the lowest modes that damping needs (shift-invert
+// Lanczos) and omega_max (Lanczos, capped by a Gershgorin bound), see ModalAnalysis.h.
 
 #include "core/structure/Element.h"
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <memory>
 #include <string>
@@ -28,6 +37,10 @@ struct RayleighDamping {
 
 class Structure {
 public:
+    using SparseMatrix = Eigen::SparseMatrix<double>;
+    /// Largest free DOF count whose frequencies come from a dense eigen-solve (all modes).
+    static constexpr int kDenseModalLimit = 300;
+
     Structure() = default;
     Structure(const Structure&) = delete;
     Structure& operator=(const Structure&) = delete;
@@ -42,7 +55,7 @@ public:
     /// model); resolved in finalize(). A mode beyond the free DOF count is clamped.
     void setModalDamping(double zeta, int modeI, int modeJ);
 
-    /// Validate and build T, M, K0, C. Throws std::invalid_argument with a clear sentence
+    /// Validate and build T, M, K0, C and the frequencies. Throws std::invalid_argument with a clear sentence
     /// (bad DOF index, mass <= 0 on a free DOF, constraint cycle, no DOFs).
     void finalize();
 
@@ -52,17 +65,27 @@ public:
     const std::vector<std::unique_ptr<Element>>& elements() const { return m_elements; }
     Element* element(const std::string& name) const;
 
-    const Eigen::MatrixXd& transform() const { return m_t; } ///< T, full x free
-    const Eigen::MatrixXd& mass() const { return m_m; }      ///< M (free) [t]
-    const Eigen::MatrixXd& initialStiffness() const { return m_k0; } ///< K0 (free) [kN/m]
-    const Eigen::MatrixXd& damping() const { return m_c; }   ///< C (free) [kN s/m]
+    const SparseMatrix& transform() const { return m_t; } ///< T, full x free
+    const SparseMatrix& mass() const { return m_m; }      ///< M (free, diagonal) [t]
+    const Eigen::VectorXd& massDiagonal() const { return m_mDiag; } ///< diag(M) [t]
+    const SparseMatrix& initialStiffness() const { return m_k0; } ///< K0 (free) [kN/m]
+    const SparseMatrix& damping() const { return m_c; }   ///< C (free) [kN s/m]
+    /// True when C has no off-diagonal term (mass-proportional damping, or K0 diagonal):
+    /// M + c C is then diagonal and an explicit step needs no solve.
+    bool dampingIsDiagonal() const { return m_cDiagonal; }
+    /// Free DOF index of each full DOF (u_full[i] = u_free[freeIndexOf()[i]]).
+    const std::vector<int>& freeIndexOf() const { return m_freeOf; }
     const RayleighDamping& rayleigh() const { return m_rayleigh; }
     /// Effective earthquake load per unit ground acceleration: T^T M_full iota [t].
     const Eigen::VectorXd& influence() const { return m_influence; }
-    /// Undamped circular frequencies [rad/s] of (K0, M), ascending.
+    /// Undamped circular frequencies [rad/s] of (K0, M), ascending: every mode up to
+    /// kDenseModalLimit free DOFs, else the lowest max(modes of the damping, 3).
     const Eigen::VectorXd& frequencies() const { return m_omega; }
+    /// Largest undamped circular frequency of (K0, M) [rad/s] (exact up to kDenseModalLimit
+    /// free DOFs, else the Lanczos estimate from above of ModalAnalysis.h).
+    double maxFrequency() const { return m_omegaMax; }
 
-    Eigen::VectorXd toFull(const Eigen::VectorXd& uFree) const { return m_t * uFree; }
+    Eigen::VectorXd toFull(const Eigen::VectorXd& uFree) const;
 
     /// Set every element's trial at free displacements u; experimental elements first (their
     /// targets go out before any numerical work). Returns the first failure.
@@ -81,8 +104,12 @@ private:
     RayleighDamping m_rayleigh;
     double m_modalZeta = -1.0;
     int m_modeI = 1, m_modeJ = 2;
-    Eigen::MatrixXd m_t, m_m, m_k0, m_c;
-    Eigen::VectorXd m_influence, m_omega;
+    std::vector<int> m_freeOf;
+    SparseMatrix m_t, m_m, m_k0, m_c;
+    bool m_cDiagonal = true;
+    Eigen::VectorXd m_mDiag, m_influence, m_omega;
+    double m_omegaMax = 0.0;
+    mutable Eigen::VectorXd m_rFull; // restoringForce() scratch
 };
 
 } // namespace hsmu

@@ -125,11 +125,19 @@ int RunCommand::exec(const QStringList& arguments) {
 
     const RunLayout layout = RunLayout::of(*test);
     std::unique_ptr<StepCsvWriter> csv;
-    try {
-        csv = std::make_unique<StepCsvWriter>(
-            dir.filePath(QStringLiteral("steps.csv")).toStdString(), layout);
-    } catch (const std::exception& e) {
-        return fail(QString::fromStdString(e.what()));
+    const std::size_t csvColumns = StepCsvWriter::columnCount(layout);
+    if (csvColumns > StepCsvWriter::kMaxColumns) {
+        err() << tr("hsmu run: steps.csv not written (%1 columns); record.h5 holds every "
+                    "column (hsmu export writes CSV from it)")
+                     .arg(csvColumns)
+              << Qt::endl;
+    } else {
+        try {
+            csv = std::make_unique<StepCsvWriter>(
+                dir.filePath(QStringLiteral("steps.csv")).toStdString(), layout);
+        } catch (const std::exception& e) {
+            return fail(QString::fromStdString(e.what()));
+        }
     }
     // Every run writes its HDF5 record (docs/recording.md), flushed at least twice a second.
     std::unique_ptr<RecordWriter> record;
@@ -144,7 +152,8 @@ int RunCommand::exec(const QStringList& arguments) {
     RunStatistics stats(layout);
     RecordCollector records;
     test->addObserver(record.get());
-    test->addObserver(csv.get());
+    if (csv)
+        test->addObserver(csv.get());
     test->addObserver(&stats);
     if (options.plots)
         test->addObserver(&records);
@@ -178,13 +187,14 @@ int RunCommand::exec(const QStringList& arguments) {
                      .arg(QString::fromLatin1(testStateName(test->state())))
               << Qt::endl;
     }
-    test->removeObserver(csv.get());
+    if (csv)
+        test->removeObserver(csv.get());
     test->removeObserver(record.get());
     if (!record->finish())
         code = fail(tr("%1: the record could not be written: %2")
                         .arg(QString::fromStdString(record->path()),
                              QString::fromStdString(record->error())));
-    if (!csv->finish())
+    if (csv && !csv->finish())
         code = fail(tr("%1: write failed").arg(QString::fromStdString(csv->path())));
     try {
         writeSummaryJson(dir.filePath(QStringLiteral("summary.json")).toStdString(), *test, stats,

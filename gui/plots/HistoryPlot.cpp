@@ -1,5 +1,6 @@
 #include "gui/plots/HistoryPlot.h"
 
+#include "gui/plots/PlotSelection.h"
 #include "gui/plots/PlotStyle.h"
 
 namespace hsmu::gui {
@@ -32,7 +33,8 @@ void HistoryPlot::setChannels(const QString& title, const QString& yLabel,
 
 void HistoryPlot::showDisplacements(const RunLayout& layout) {
     std::vector<Channel> channels;
-    for (std::size_t i = 0; i < layout.dofNames.size(); ++i) {
+    for (const int dof : spreadIndices(int(layout.dofNames.size()), kMaxPlottedDofs)) {
+        const auto i = std::size_t(dof);
         const auto index = Eigen::Index(i);
         channels.push_back(
             {QString::fromStdString(layout.dofNames[i]),

@@ -1,5 +1,6 @@
 #include "gui/plots/HysteresisPlot.h"
 
+#include "gui/plots/PlotSelection.h"
 #include "gui/plots/PlotStyle.h"
 
 #include <algorithm>
@@ -23,13 +24,16 @@ std::vector<int> HysteresisPlot::specimenWithTwins(const RunLayout& layout) {
             specimen = int(i);
     if (specimen < 0)
         return {};
-    std::vector<int> out{specimen};
+    std::vector<int> twins;
     const std::string& type = layout.elements[std::size_t(specimen)].type;
     for (std::size_t i = 0; i < layout.elements.size(); ++i) {
         const ElementInfo& e = layout.elements[i];
         if (int(i) != specimen && e.nonlinear && !e.experimental && e.type == type)
-            out.push_back(int(i));
+            twins.push_back(int(i));
     }
+    std::vector<int> out{specimen};
+    for (int i : spreadSubset(twins, kMaxPlottedElements - 1)) // many twins: a spread few
+        out.push_back(i);
     return out;
 }
 

@@ -3,6 +3,7 @@
 #include "gui/plots/HysteresisPlot.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/plots/ParameterPlot.h"
+#include "gui/plots/PlotSelection.h"
 #include "gui/plots/PlotStyle.h"
 
 #include <QApplication>
@@ -130,9 +131,12 @@ QStringList PlotExporter::writeRunPlots(const QString& dir, const RunLayout& lay
         path = QDir(dir).filePath(p.fileBase + QStringLiteral(".png"));
         record(savePng(*p.plot, path), path);
     }
-    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
-        if (!layout.elements[i].nonlinear)
-            continue;
+    std::vector<int> nonlinear;
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
+        if (layout.elements[i].nonlinear)
+            nonlinear.push_back(int(i));
+    for (const int element : spreadSubset(nonlinear, kMaxPlottedElements)) {
+        const auto i = std::size_t(element);
         HysteresisPlot plot;
         plot.showElements(layout, {int(i)});
         plot.appendRecords(records);

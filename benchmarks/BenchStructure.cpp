@@ -1,0 +1,81 @@
+// Numerical substructures at scale (issue 17), on the generated shear buildings
+// (core/config/ShearBuilding.h; docs/presets.md): N = 10, 100, 1,000, 10,000 DOFs, Bouc-Wen
+// or elastic storeys, Rayleigh damping at modes 1 and 2 (sparse LDL^T left-hand side) or
+// mass-proportional damping (diagonal: no solve). Targets (docs/benchmarks.md):
+//   one HybridTest step (explicit Newmark, outputs not attached): 1,000 DOFs <= 0.3 ms,
+//   10,000 DOFs <= 3 ms; set-up (parse, build, finalize with modal analysis, prepare) of
+//   10,000 DOFs <= 1 s.
+// Run: build/bin/hsmu_bench --benchmark_filter='Shear'
+
+#include "core/config/ConfigLoader.h"
+#include "core/config/ShearBuilding.h"
+#include "core/config/TestFactory.h"
+#include "core/test/HybridTest.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace hsmu;
+
+TestConfig shearConfig(int n, bool boucWen, bool massDamped, const std::string& integrator)
+{
+    ShearBuildingSpec spec;
+    spec.storeys = n;
+    spec.boucWen = boucWen;
+    spec.massDamped = massDamped;
+    TestConfig cfg = parseConfig(shearBuildingConfig(spec), "shear-building");
+    cfg.analysis.integrator = integrator;
+    cfg.analysis.duration = 0.0; // the whole record: the benchmark restarts at its end
+    return cfg;
+}
+
+void steps(benchmark::State& state, bool boucWen, bool massDamped, const std::string& integrator)
+{
+    const TestConfig cfg = shearConfig(int(state.range(0)), boucWen, massDamped, integrator);
+    auto test = buildHybridTest(cfg);
+    if (!test->prepare()) {
+        state.SkipWithError(test->lastError().c_str());
+        return;
+    }
+    for (auto _ : state) {
+        if (test->step() != HybridTest::StepResult::Advanced) {
+            state.PauseTiming();
+            test = buildHybridTest(cfg);
+            test->prepare();
+            state.ResumeTiming();
+        }
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+void bmShearStepBoucWen(benchmark::State& s) { steps(s, true, false, "explicitNewmark"); }
+void bmShearStepElastic(benchmark::State& s) { steps(s, false, false, "explicitNewmark"); }
+void bmShearStepBoucWenMassDamped(benchmark::State& s) { steps(s, true, true, "explicitNewmark"); }
+void bmShearStepBoucWenAlphaOS(benchmark::State& s) { steps(s, true, false, "alphaOS"); }
+BENCHMARK(bmShearStepBoucWen)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(bmShearStepElastic)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(bmShearStepBoucWenMassDamped)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(bmShearStepBoucWenAlphaOS)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMicrosecond);
+
+/// Parse the generated document, build, finalize (modal analysis), prepare (factor).
+void setUp(benchmark::State& state, bool boucWen)
+{
+    ShearBuildingSpec spec;
+    spec.storeys = int(state.range(0));
+    spec.boucWen = boucWen;
+    const nlohmann::json doc = shearBuildingConfig(spec);
+    for (auto _ : state) {
+        TestConfig cfg = parseConfig(doc, "shear-building");
+        auto test = buildHybridTest(cfg);
+        if (!test->prepare())
+            state.SkipWithError(test->lastError().c_str());
+        benchmark::DoNotOptimize(test->totalSteps());
+    }
+}
+void bmShearSetUpBoucWen(benchmark::State& s) { setUp(s, true); }
+void bmShearSetUpElastic(benchmark::State& s) { setUp(s, false); }
+BENCHMARK(bmShearSetUpBoucWen)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(bmShearSetUpElastic)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMillisecond);
+
+} // namespace
