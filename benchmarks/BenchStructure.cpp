@@ -10,9 +10,13 @@
 #include "core/config/ConfigLoader.h"
 #include "core/config/ShearBuilding.h"
 #include "core/config/TestFactory.h"
+#include "core/output/RunLayout.h"
+#include "core/record/RecordWriter.h"
 #include "core/test/HybridTest.h"
 
 #include <benchmark/benchmark.h>
+
+#include <filesystem>
 
 namespace {
 
@@ -77,5 +81,37 @@ void bmShearSetUpBoucWen(benchmark::State& s) { setUp(s, true); }
 void bmShearSetUpElastic(benchmark::State& s) { setUp(s, false); }
 BENCHMARK(bmShearSetUpBoucWen)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(bmShearSetUpElastic)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMillisecond);
+
+/// RecordWriter::onStep per step on an N-DOF shear building (rows of 3 N DOF values and
+/// 3 N element values; flushes, extends and H5Fflush amortized), the file in the temporary
+/// folder (the page cache: the disk's own speed is not measured).
+void bmShearRecordStep(benchmark::State& state)
+{
+    const TestConfig cfg = shearConfig(int(state.range(0)), true, false, "explicitNewmark");
+    auto test = buildHybridTest(cfg);
+    struct Last final : StepObserver {
+        StepRecord r;
+        void onStep(const StepRecord& rec) override { r = rec; }
+    } last;
+    test->addObserver(&last);
+    test->prepare();
+    for (int k = 0; k < 20; ++k)
+        test->step();
+    const std::string path =
+        (std::filesystem::temp_directory_path() / "hsmu_bench_shear_record.h5").string();
+    {
+        RecordWriter writer(path, RunLayout::of(*test), {cfg.raw.dump(), cfg.name, {}, 0.001});
+        for (auto _ : state)
+            writer.onStep(last.r);
+        writer.finish();
+        if (!writer.ok())
+            state.SkipWithError(writer.error().c_str());
+    }
+    state.counters["bytes_per_step"] =
+        double(std::filesystem::file_size(path)) / double(state.iterations());
+    state.SetItemsProcessed(state.iterations());
+    std::filesystem::remove(path);
+}
+BENCHMARK(bmShearRecordStep)->RangeMultiplier(10)->Range(10, 10000)->Unit(benchmark::kMicrosecond);
 
 } // namespace

@@ -546,6 +546,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>hsmu run: connecting to %1 (%2 protocol)</source>
         <translation>hsmu run: connecting to %1 (%2 protocol)</translation>
     </message>
+    <message>
+        <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
+        <translation>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</translation>
+    </message>
 </context>
 <context>
     <name>RunOptions</name>
@@ -647,6 +651,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  outputs: %1</source>
         <translation>  outputs: %1</translation>
+    </message>
+    <message>
+        <source>... %1 more in summary.json</source>
+        <translation>... %1 more in summary.json</translation>
     </message>
 </context>
 <context>

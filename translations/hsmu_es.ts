@@ -546,6 +546,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>hsmu run: connecting to %1 (%2 protocol)</source>
         <translation>hsmu run: conectando con %1 (protocolo %2)</translation>
     </message>
+    <message>
+        <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
+        <translation>hsmu run: steps.csv no se escribe (%1 columnas); record.h5 guarda todas las columnas (hsmu export escribe CSV a partir de él)</translation>
+    </message>
 </context>
 <context>
     <name>RunOptions</name>
@@ -647,6 +651,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  outputs: %1</source>
         <translation>  salidas: %1</translation>
+    </message>
+    <message>
+        <source>... %1 more in summary.json</source>
+        <translation>... %1 más en summary.json</translation>
     </message>
 </context>
 <context>

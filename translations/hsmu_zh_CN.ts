@@ -546,6 +546,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>hsmu run: connecting to %1 (%2 protocol)</source>
         <translation>hsmu run：正在连接 %1（%2 协议）</translation>
     </message>
+    <message>
+        <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
+        <translation>hsmu run：未写入 steps.csv（%1 列）；record.h5 保存所有列（hsmu export 可由其导出 CSV）</translation>
+    </message>
 </context>
 <context>
     <name>RunOptions</name>
@@ -647,6 +651,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  outputs: %1</source>
         <translation>  输出：%1</translation>
+    </message>
+    <message>
+        <source>... %1 more in summary.json</source>
+        <translation>……另有 %1 项见 summary.json</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 #include "core/output/RunStatistics.h"
 #include "core/output/RunSummary.h"
 #include "core/test/HybridTest.h"
+#include "gui/plots/PlotSelection.h"
 
 #include <QDir>
 #include <QTextStream>
@@ -12,6 +13,8 @@
 namespace hsmu::gui {
 
 namespace {
+
+constexpr int kMaxListed = 20; // DOFs / elements listed before "... N more"
 
 QString num(double x, int digits = 4) {
     return QString::number(x, 'g', digits);
@@ -56,15 +59,28 @@ void RunReport::print(QTextStream& out, const HybridTest& test, const RunStatist
                .arg(test.totalSteps())
                .arg(num(test.time(), 6), num(info.wallTimeS, 3))
         << '\n';
+    // A large model lists a spread few (docs/cli.md); summary.json has every one.
+    const auto more = [&out](std::size_t shown, std::size_t all) {
+        if (shown < all)
+            out << "    " << tr("... %1 more in summary.json").arg(all - shown) << '\n';
+    };
     out << tr("  peak displacement:") << '\n';
-    for (std::size_t i = 0; i < layout.dofNames.size(); ++i)
+    const std::vector<int> dofs = spreadIndices(int(layout.dofNames.size()), kMaxListed);
+    for (const int d : dofs) {
+        const auto i = std::size_t(d);
         out << "    " << QString::fromStdString(layout.dofNames[i]) << ": "
             << num(stats.peakDisplacement()[i]) << " m\n";
+    }
+    more(dofs.size(), layout.dofNames.size());
     out << tr("  peak force:") << '\n';
-    for (std::size_t i = 0; i < layout.elements.size(); ++i)
+    const std::vector<int> elements = spreadIndices(int(layout.elements.size()), kMaxListed);
+    for (const int e : elements) {
+        const auto i = std::size_t(e);
         out << "    " << QString::fromStdString(layout.elements[i].name) << ": "
             << num(stats.peakForce()[i]) << ' '
             << QString::fromStdString(layout.elements[i].units.force) << '\n';
+    }
+    more(elements.size(), layout.elements.size());
     printUpdating(out, test, layout, stats.last());
     if (test.alarms().empty())
         out << tr("  alarms: none") << '\n';
