@@ -2,7 +2,8 @@
 // (core/config/ShearBuilding.h; docs/presets.md): N = 10, 100, 1,000, 10,000 DOFs, Bouc-Wen
 // or elastic storeys, Rayleigh damping at modes 1 and 2 (sparse LDL^T left-hand side) or
 // mass-proportional damping (diagonal: no solve). Targets (docs/benchmarks.md):
-//   one HybridTest step (explicit Newmark, outputs not attached): 1,000 DOFs <= 0.3 ms,
+//   one HybridTest step (explicit Newmark, outputs not attached, after 1 s of the record):
+//   1,000 DOFs <= 0.3 ms,
 //   10,000 DOFs <= 3 ms; set-up (parse, build, finalize with modal analysis, prepare) of
 //   10,000 DOFs <= 1 s.
 // Run: build/bin/hsmu_bench --benchmark_filter='Shear'
@@ -12,6 +13,7 @@
 #include "core/config/TestFactory.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
+#include "core/structure/Structure.h"
 #include "core/test/HybridTest.h"
 
 #include <benchmark/benchmark.h>
@@ -21,6 +23,8 @@
 namespace {
 
 using namespace hsmu;
+
+constexpr int kWarmUpSteps = 1000;
 
 TestConfig shearConfig(int n, bool boucWen, bool massDamped, const std::string& integrator)
 {
@@ -42,11 +46,21 @@ void steps(benchmark::State& state, bool boucWen, bool massDamped, const std::st
         state.SkipWithError(test->lastError().c_str());
         return;
     }
+    // 1 s of the record first: the storeys then respond in earnest (in the first steps the
+    // Bouc-Wen laws see tiny deformations, where |z|^n is cheap, and the step looks faster).
+    for (int k = 0; k < kWarmUpSteps; ++k)
+        test->step();
+    double peak = 0.0;
+    for (const auto& e : test->structure().elements())
+        peak = std::max(peak, std::abs(e->deformation()));
+    state.counters["peak_drift_m"] = peak;
     for (auto _ : state) {
         if (test->step() != HybridTest::StepResult::Advanced) {
             state.PauseTiming();
             test = buildHybridTest(cfg);
             test->prepare();
+            for (int k = 0; k < kWarmUpSteps; ++k)
+                test->step();
             state.ResumeTiming();
         }
     }
@@ -95,7 +109,7 @@ void bmShearRecordStep(benchmark::State& state)
     } last;
     test->addObserver(&last);
     test->prepare();
-    for (int k = 0; k < 20; ++k)
+    for (int k = 0; k < kWarmUpSteps; ++k)
         test->step();
     const std::string path =
         (std::filesystem::temp_directory_path() / "hsmu_bench_shear_record.h5").string();

@@ -79,6 +79,7 @@ void Structure::finalize()
         }
         master[i] = r;
     }
+    buildOrder();
     std::vector<int> freeIndex(n, -1);
     int nFree = 0;
     for (int i = 0; i < n; ++i)
@@ -159,6 +160,17 @@ void Structure::finalize()
             }
 }
 
+void Structure::buildOrder()
+{
+    // Experimental elements first (their targets go out before any numerical work; their
+    // commits first), then the numerical ones, each in model order.
+    m_order.clear();
+    for (int pass = 0; pass < 2; ++pass)
+        for (auto& e : m_elements)
+            if (e->isExperimental() == (pass == 0))
+                m_order.push_back(e.get());
+}
+
 Eigen::VectorXd Structure::toFull(const Eigen::VectorXd& uFree) const
 {
     Eigen::VectorXd u(Eigen::Index(m_freeOf.size()));
@@ -169,15 +181,13 @@ Eigen::VectorXd Structure::toFull(const Eigen::VectorXd& uFree) const
 
 ElementStatus Structure::setTrial(const Eigen::VectorXd& uFree)
 {
+    if (m_order.size() != m_elements.size())
+        buildOrder();
     const Eigen::VectorXd u = toFull(uFree);
-    for (int pass = 0; pass < 2; ++pass) {
-        for (auto& e : m_elements) {
-            if (e->isExperimental() != (pass == 0))
-                continue;
-            ElementStatus s = e->setTrial(u);
-            if (!s.ok)
-                return s;
-        }
+    for (Element* e : m_order) {
+        ElementStatus s = e->setTrial(u);
+        if (!s.ok)
+            return s;
     }
     return ElementStatus::success();
 }
@@ -197,14 +207,12 @@ ElementStatus Structure::commit()
 {
     // Specimens first: a failed specimen commit leaves every numerical element uncommitted,
     // so the step can be retried.
-    for (int pass = 0; pass < 2; ++pass) {
-        for (auto& e : m_elements) {
-            if (e->isExperimental() != (pass == 0))
-                continue;
-            ElementStatus s = e->commit();
-            if (!s.ok)
-                return s;
-        }
+    if (m_order.size() != m_elements.size())
+        buildOrder();
+    for (Element* e : m_order) {
+        ElementStatus s = e->commit();
+        if (!s.ok)
+            return s;
     }
     return ElementStatus::success();
 }

@@ -97,6 +97,8 @@ public:
     void revert();
 
 private:
+    void buildOrder();
+
     std::vector<std::string> m_dofNames;
     std::vector<double> m_masses;
     std::vector<std::unique_ptr<Element>> m_elements;
@@ -104,6 +106,7 @@ private:
     RayleighDamping m_rayleigh;
     double m_modalZeta = -1.0;
     int m_modeI = 1, m_modeJ = 2;
+    std::vector<Element*> m_order; // specimens first, then numerical elements (finalize())
     std::vector<int> m_freeOf;
     SparseMatrix m_t, m_m, m_k0, m_c;
     bool m_cDiagonal = true;
