@@ -9,6 +9,12 @@
 #include <chrono>
 #include <cstdio>
 
+#if defined(__linux__)
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#endif
+
 namespace hsmu::comms::of {
 
 namespace asio = boost::asio;
@@ -63,8 +69,20 @@ struct OfSocket::Impl {
         boost::system::error_code ec;
         socket->set_option(tcp::no_delay(true), ec);
         socket->set_option(asio::socket_base::keep_alive(true), ec);
+        quickAck();
         const auto ep = socket->remote_endpoint(ec);
         peer = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
+    }
+
+    /// Acknowledge what has arrived at once and stay in quick-ACK mode (Linux leaves it again
+    /// on its own, so this is re-armed after every read). OpenSees' and OpenFresco's sockets
+    /// keep Nagle on and write two frames back to back (e.g. [3] then [6]); without an
+    /// immediate ACK of the first, their second waits for our delayed ACK: about 40 ms.
+    void quickAck() {
+#if defined(__linux__) && defined(TCP_QUICKACK)
+        const int one = 1;
+        ::setsockopt(socket->native_handle(), IPPROTO_TCP, TCP_QUICKACK, &one, sizeof one);
+#endif
     }
 
     void abort() {
@@ -212,6 +230,7 @@ bool OfSocket::read(void* data, std::size_t n, double timeout, std::string& erro
                     : "connection lost: " + result.message();
         return false;
     }
+    d->quickAck();
     return true;
 }
 

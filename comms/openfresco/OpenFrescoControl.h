@@ -41,6 +41,9 @@ struct OfControlOptions {
     int connectAttempts = 3;            ///< attempts in prepare() while nobody listens
     double retryDelay = 0.5;            ///< [s] between them
     bool logConnect = true;             ///< one line on stderr with the negotiated sizes
+    /// GenericTCP: warn on stderr at connect that the server must commit on its own (a SimApp
+    /// site server never does: docs/openfresco.md "Pairings that cannot be right").
+    bool warnNoCommit = true;
 };
 
 class OpenFrescoControl : public ExperimentalControl {

@@ -1,0 +1,126 @@
+// hsmu-controller's OpenFresco servers against the real OpenSees 3.8 / OpenFresco 2.8 of
+// ../shared/tools/opensees (docs/openfresco.md "Pairings"): each run equals OpenSees' own
+// zeroLength Bouc-Wen model. Skipped with the reason where the tools are absent (they are
+// present in CI). Short records (a few hundred steps) and a deadline on every process.
+#include "ControllerProcess.h"
+#include "OpenSeesRunner.h"
+#include "SdofScripts.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <fstream>
+
+namespace {
+
+constexpr int kSteps = 300;       // 3 s of El Centro at dt 0.01 (the spring yields)
+constexpr int kTimeoutMs = 60000; // per OpenSees run (a stalled run took 45 ms per step)
+
+} // namespace
+
+class TestOpenSeesPairings : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    std::string m_config;
+
+    QString sub(const QString& name) {
+        QDir(m_dir.path()).mkpath(name);
+        return QDir(m_dir.path()).filePath(name);
+    }
+
+    std::string writeConfig(const QString& name, const nlohmann::json& j) {
+        const std::string path = QDir(m_dir.path()).filePath(name).toStdString();
+        std::ofstream(path) << j.dump(2);
+        return path;
+    }
+
+    /// OpenSees' own model (zeroLength BoucWen) with the given integrator / algorithm.
+    std::vector<std::vector<double>> reference(const QString& tag, const QString& integrator,
+                                               const QString& algorithm) {
+        sdof::Options o;
+        o.element = sdof::zeroLength();
+        o.outDir = sub("ref-" + tag);
+        o.steps = kSteps;
+        o.integrator = integrator;
+        o.algorithm = algorithm;
+        o.groundMotion = opensees::elCentro();
+        const auto r = opensees::run(o.outDir, "ref.tcl", sdof::script(o), kTimeoutMs);
+        if (!r.finished)
+            return {};
+        return opensees::table(o.outDir + "/disp.out");
+    }
+
+    /// One genericClient run against a fresh hsmu-controller --protocol simapp.
+    std::vector<std::vector<double>> genericClient(const QString& tag, const std::string& config,
+                                                   const QString& element, QString& log,
+                                                   const QString& integrator = "NewmarkExplicit 0.5",
+                                                   const QString& algorithm = "Linear") {
+        ControllerProcess ctl({"--config", QString::fromStdString(config), "--pace", "fast",
+                               "--protocol", "simapp"});
+        if (!ctl.start()) {
+            log = ctl.log();
+            return {};
+        }
+        sdof::Options o;
+        o.element = QString(element).replace("PORT", QString::number(ctl.port()));
+        o.outDir = sub("gc-" + tag);
+        o.steps = kSteps;
+        o.integrator = integrator;
+        o.algorithm = algorithm;
+        o.groundMotion = opensees::elCentro();
+        const auto r = opensees::run(o.outDir, "gc.tcl", sdof::script(o), kTimeoutMs);
+        ctl.stop();
+        log = "OpenSees:\n" + r.output.right(2000) + "\nhsmu-controller:\n" + ctl.log();
+        if (!r.finished)
+            return {};
+        return opensees::table(o.outDir + "/disp.out");
+    }
+
+private slots:
+    void initTestCase() {
+        if (!opensees::available())
+            QSKIP(qPrintable(opensees::reason()));
+        QVERIFY(m_dir.isValid());
+        m_config = writeConfig("sdof.json", sdof::controllerConfig());
+    }
+
+    void genericClientAgainstSimAppEqualsZeroLength() {
+        const auto ref = reference("nm", "NewmarkExplicit 0.5", "Linear");
+        QCOMPARE(ref.size(), std::size_t(kSteps));
+        QVERIFY(opensees::peak(ref) > 0.01); // the spring yields (uy = 1/(beta+gamma)^(1/n))
+        QString log;
+        const auto run = genericClient(
+            "nm", m_config,
+            "element genericClient 1 -node 2 -dof 1 -server PORT 127.0.0.1 -dataSize 256", log);
+        const double diff = opensees::maxDifference(ref, run);
+        QVERIFY2(diff <= 1e-12, qPrintable(QString::number(diff) + "\n" + log));
+    }
+
+    void expGenericTcpAgainstGenericTcpEqualsZeroLength() {
+        const auto ref = reference("nm", "NewmarkExplicit 0.5", "Linear");
+        QCOMPARE(ref.size(), std::size_t(kSteps));
+        ControllerProcess ctl({"--config", QString::fromStdString(m_config), "--pace", "fast",
+                               "--protocol", "generictcp"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        sdof::Options o;
+        o.openFresco = true;
+        o.extra = QString("expControl GenericTCP 1 127.0.0.1 %1 -ctrlModes 1 0 0 0 0 -daqModes "
+                          "1 0 0 1 0\nexpSetup OneActuator 1 -control 1 1 -sizeTrialOut 1 1\n"
+                          "expSite LocalSite 1 1\n")
+                      .arg(ctl.port());
+        o.element = "expElement twoNodeLink 1 1 2 -dir 1 -site 1 -initStif 40.0";
+        o.outDir = sub("gtcp");
+        o.steps = kSteps;
+        o.groundMotion = opensees::elCentro();
+        // ECGenericTCP waits for two Enter presses before it starts.
+        const auto r = opensees::run(o.outDir, "gtcp.tcl", sdof::script(o), kTimeoutMs, "\n\n");
+        ctl.stop();
+        QVERIFY2(r.finished, qPrintable(r.output.right(2000)));
+        const double diff = opensees::maxDifference(ref, opensees::table(o.outDir + "/disp.out"));
+        QVERIFY2(diff <= 1e-12,
+                 qPrintable(QString::number(diff) + "\n" + r.output.right(2000) + ctl.log()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestOpenSeesPairings)
+#include "TestOpenSeesPairings.moc"
