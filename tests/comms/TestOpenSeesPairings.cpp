@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
 #include <fstream>
 
 namespace {
@@ -119,6 +120,44 @@ private slots:
         const double diff = opensees::maxDifference(ref, opensees::table(o.outDir + "/disp.out"));
         QVERIFY2(diff <= 1e-12,
                  qPrintable(QString::number(diff) + "\n" + r.output.right(2000) + ctl.log()));
+    }
+
+    void twoNodeGenericClientServedThroughServerDofs() {
+        // genericClient sends the global DOFs of both nodes (no basic transformation): the
+        // spring's deformation is u2 - u1, mapped by controller.serverDofs.
+        const auto ref = reference("nm", "NewmarkExplicit 0.5", "Linear");
+        QCOMPARE(ref.size(), std::size_t(kSteps));
+        nlohmann::json j = sdof::controllerConfig();
+        j["controller"]["serverDofs"] = {{{"specimen", "Spring"}, {"factor", -1.0}},
+                                         {{"specimen", "Spring"}}};
+        QString log;
+        const auto run = genericClient(
+            "two", writeConfig("two.json", j),
+            "element genericClient 1 -node 1 2 -dof 1 -dof 1 -server PORT 127.0.0.1 -dataSize 256",
+            log);
+        const double diff = opensees::maxDifference(ref, run);
+        QVERIFY2(diff <= 1e-12, qPrintable(QString::number(diff) + "\n" + log));
+        QVERIFY2(log.contains("2 DOFs from controller.serverDofs onto 1 specimen"), qPrintable(log));
+    }
+
+    void mismatchedGenericClientIsRefusedPolitely() {
+        // Two DOFs against a one-specimen configuration without serverDofs: refused with both
+        // sizes and the field named; OpenSees gets NaN answers and ends instead of spinning.
+        QString log;
+        const auto run = genericClient(
+            "refused", m_config,
+            "element genericClient 1 -node 1 2 -dof 1 -dof 1 -server PORT 127.0.0.1 -dataSize 256",
+            log);
+        QVERIFY2(log.contains("analyze -> "), qPrintable(log)); // OpenSees finished its script
+        QVERIFY2(log.contains("the client has 2 control DOFs (ctrl disp 2), this server serves 1") &&
+                     log.contains("controller.serverDofs"),
+                 qPrintable(log));
+        QVERIFY2(log.contains("answered with NaN"), qPrintable(log));
+        bool finite = true;
+        for (const auto& row : run)
+            for (double x : row)
+                finite = finite && std::isfinite(x);
+        QVERIFY2(run.empty() || !finite, "a refused run must not look like a result");
     }
 };
 
