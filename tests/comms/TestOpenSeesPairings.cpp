@@ -122,6 +122,28 @@ private slots:
                  qPrintable(QString::number(diff) + "\n" + r.output.right(2000) + ctl.log()));
     }
 
+    void alphaOsWithTangentEqualsZeroLength_data() {
+        QTest::addColumn<QString>("algorithm");
+        QTest::newRow("Linear (tangent, action 13)") << QString("Linear");
+        QTest::newRow("Linear -initial (action 12)") << QString("Linear -initial");
+    }
+
+    void alphaOsWithTangentEqualsZeroLength() {
+        // AlphaOS takes the element's stiffness into its effective stiffness: the reply to 13
+        // must be the law's algorithmic tangent as OpenSees' BoucWen computes it.
+        QFETCH(QString, algorithm);
+        const QString tag = algorithm.contains("initial") ? "aos-init" : "aos-tan";
+        const auto ref = reference(tag, "AlphaOS 0.95", algorithm);
+        QCOMPARE(ref.size(), std::size_t(kSteps));
+        QString log;
+        const auto run = genericClient(
+            tag, m_config,
+            "element genericClient 1 -node 2 -dof 1 -server PORT 127.0.0.1 -dataSize 256", log,
+            "AlphaOS 0.95", algorithm);
+        const double diff = opensees::maxDifference(ref, run);
+        QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff) + "\n" + log));
+    }
+
     void twoNodeGenericClientServedThroughServerDofs() {
         // genericClient sends the global DOFs of both nodes (no basic transformation): the
         // spring's deformation is u2 - u1, mapped by controller.serverDofs.
