@@ -98,15 +98,17 @@ ControlResult OpenFrescoControl::connectOnce() {
                          "): it answers NaN (hsmu-controller's polite refusal; its log names "
                          "the reason); make controller.dataSize and the sizes match the "
                          "server's");
-    if (m_protocol == OfProtocol::GenericTcp && m_opt.warnNoCommit)
-        std::fprintf(stderr,
-                     "hsmu: WARNING %s: GenericTCP has no commit; the server must take each "
-                     "trial as final when the next one arrives (as hsmu-controller --protocol "
-                     "generictcp and lab GenericTCP controllers do). An OpenFresco SimApp site "
-                     "or element server (startSimAppSiteServer / startSimAppElemServer) never "
-                     "commits its specimen over GenericTCP and every force is silently wrong: "
-                     "use simapp:// for it.\n",
-                     where().c_str());
+    if (m_protocol == OfProtocol::GenericTcp) {
+        m_pairingWarning =
+            where() +
+            ": GenericTCP has no commit; the server must take each trial as final when the "
+            "next one arrives (as hsmu-controller --protocol generictcp and lab GenericTCP "
+            "controllers do). An OpenFresco SimApp site or element server "
+            "(startSimAppSiteServer / startSimAppElemServer) never commits its specimen over "
+            "GenericTCP and every force is silently wrong: use simapp:// for it.";
+        if (m_opt.warnNoCommit)
+            std::fprintf(stderr, "hsmu: WARNING %s\n", m_pairingWarning.c_str());
+    }
     if (m_opt.logConnect)
         std::fprintf(stderr, "hsmu: %s connected, specimen '%s': %s\n", where().c_str(),
                      m_element.c_str(), m_opt.sizes.describe().c_str());

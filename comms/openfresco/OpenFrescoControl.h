@@ -60,6 +60,9 @@ public:
 
     bool linkUp() const;
     const std::string& linkError() const { return m_linkError; }
+    /// After a GenericTCP connect: the warning that the server must commit on its own (no
+    /// message can tell a GenericTCP controller from a SimApp site server); "" for SimApp.
+    const std::string& pairingWarning() const { return m_pairingWarning; }
     std::uint64_t committedSteps() const { return m_committed; }
     OfProtocol protocol() const { return m_protocol; }
     /// "simapp://HOST:PORT" or "generictcp://HOST:PORT".
@@ -88,6 +91,7 @@ private:
     bool m_connectFailed = false;
     std::string m_holdReason;
     std::string m_linkError;
+    std::string m_pairingWarning;
     std::vector<std::uint8_t> m_buffer;
     std::vector<double> m_values;
 };

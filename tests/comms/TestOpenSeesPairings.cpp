@@ -2,6 +2,10 @@
 // ../shared/tools/opensees (docs/openfresco.md "Pairings"): each run equals OpenSees' own
 // zeroLength Bouc-Wen model. Skipped with the reason where the tools are absent (they are
 // present in CI). Short records (a few hundred steps) and a deadline on every process.
+#include "comms/openfresco/GenericTcpControl.h"
+#include "comms/openfresco/OfSocket.h"
+#include "comms/openfresco/SimAppControl.h"
+
 #include "ControllerProcess.h"
 #include "OpenSeesRunner.h"
 #include "SdofScripts.h"
@@ -13,6 +17,13 @@
 #include <fstream>
 
 namespace {
+
+/// A port nobody listens on now (bound, read, released).
+quint16 freePort() {
+    hsmu::comms::of::OfListener l;
+    std::string e;
+    return l.listen("127.0.0.1", 0, e) ? l.port() : 0;
+}
 
 constexpr int kSteps = 300;       // 3 s of El Centro at dt 0.01 (the spring yields)
 constexpr int kTimeoutMs = 60000; // per OpenSees run (a stalled run took 45 ms per step)
@@ -142,6 +153,53 @@ private slots:
             "AlphaOS 0.95", algorithm);
         const double diff = opensees::maxDifference(ref, run);
         QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff) + "\n" + log));
+    }
+
+    void genericTcpAgainstSimAppSiteServerWarns() {
+        // The console's GenericTCP client against OpenFresco's startSimAppSiteServer: the site
+        // needs commits that GenericTCP never sends (a Bouc-Wen specimen ended 150 % off).
+        // Nothing on the wire tells the two servers apart, so the client warns at connect.
+        const quint16 port = freePort();
+        QVERIFY(port != 0);
+        const QString dir = sub("site");
+        QString script = "model BasicBuilder -ndm 1 -ndf 1\nloadPackage OpenFrescoTcl\n";
+        script += QString("uniaxialMaterial BoucWen 1 %1\n").arg(sdof::kBoucWenArgs);
+        script += "expControl SimUniaxialMaterials 1 1\n"
+                  "expSetup OneActuator 1 -control 1 1 -sizeTrialOut 1 1\n"
+                  "expSite LocalSite 1 1\n";
+        script += QString("startSimAppSiteServer 1 %1\nwipeExp\nexit\n").arg(port);
+        QProcess site;
+        site.setProcessChannelMode(QProcess::MergedChannels);
+        {
+            QFile f(dir + "/site.tcl");
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(script.toUtf8());
+        }
+        site.start(opensees::interpreter(), {dir + "/site.tcl"});
+        QVERIFY(site.waitForStarted(30000));
+        hsmu::comms::of::OfControlOptions o;
+        o.connectTimeout = 5.0;
+        o.stepDeadline = 20.0;
+        o.connectAttempts = 40; // until the site listens
+        o.retryDelay = 0.25;
+        o.logConnect = false;
+        o.warnNoCommit = false;
+        {
+            hsmu::comms::of::GenericTcpControl c("127.0.0.1", port, "Spring", o);
+            const auto r = c.prepare(0.01);
+            QVERIFY2(r.ok, r.reason.c_str());
+            QVERIFY2(c.pairingWarning().find("never commits") != std::string::npos &&
+                         c.pairingWarning().find("simapp://") != std::string::npos,
+                     c.pairingWarning().c_str());
+        } // sends 99: the site server ends
+        if (!site.waitForFinished(20000)) {
+            site.kill();
+            site.waitForFinished(5000);
+            QFAIL("the site server did not end after 99");
+        }
+        // SimApp against the same kind of server carries no such warning.
+        hsmu::comms::of::SimAppControl s("127.0.0.1", 1, "Spring", o);
+        QVERIFY(s.pairingWarning().empty());
     }
 
     void twoNodeGenericClientServedThroughServerDofs() {
