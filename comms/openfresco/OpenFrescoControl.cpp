@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <thread>
+#include <utility>
 
 namespace hsmu::comms::of {
 
@@ -83,14 +84,24 @@ ControlResult OpenFrescoControl::connectOnce() {
         return r;
     m_buffer.resize(static_cast<std::size_t>(m_opt.sizes.dataSize) * sizeof(double));
     if (!m_socket->read(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error)) {
-        const bool refused = m_socket->closedByPeer();
-        return linkFault(refused ? "the server closed the connection after the sizes header (" +
-                                       m_opt.sizes.describe() +
-                                       "): it does not accept these sizes; make controller."
-                                       "dataSize and the sizes match the server's"
-                                 : "no answer to the first getDaqResponse (" +
-                                       m_opt.sizes.describe() + "): " + error +
-                                       "; a server with another dataSize waits for more bytes");
+        // A closed or reset connection: the server refused the header (an OpenFresco element
+        // server exits when the sizes do not fit its element).
+        const bool refused = m_socket->closedByPeer() ||
+                             error.find("reset") != std::string::npos;
+        const std::string n = std::to_string(m_opt.sizes.ctrlSize(Resp::Disp));
+        return linkFault(
+            refused ? "the server closed the connection after the sizes header (" +
+                          m_opt.sizes.describe() +
+                          "): it does not accept these sizes. This console sends ctrl disp " + n +
+                          " (one DOF); an OpenFresco element server needs ctrl disp, daq disp "
+                          "and daq force equal to its element's DOF count (a twoNodeLink on 2 "
+                          "nodes has 2: its log says \"want: 2 but got: " + n +
+                          "\"; serve such a specimen by a site server, startSimAppSiteServer, "
+                          "or a one-node expElement generic), a site server its setup's sizes; "
+                          "make controller.dataSize, controller.ctrlSizes and "
+                          "controller.daqSizes match the server's"
+                    : "no answer to the first getDaqResponse (" + m_opt.sizes.describe() +
+                          "): " + error + "; a server with another dataSize waits for more bytes");
     }
     decodeFrame(m_buffer.data(), m_opt.sizes.dataSize, m_values);
     if (std::any_of(m_values.begin(), m_values.end(), [](double x) { return std::isnan(x); }))
@@ -159,6 +170,7 @@ ControlResult OpenFrescoControl::setTarget(double d) {
     if (ControlResult r = sendRequest(static_cast<int>(Action::SetTrialResponse), ctrl); !r.ok)
         return r;
     m_awaitingMeasurement = true;
+    m_target = d;
     return ControlResult::success();
 }
 
@@ -179,7 +191,17 @@ ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
     if (!std::isfinite(d) || !std::isfinite(f))
         return linkFault("the measured response of step " + std::to_string(m_committed + 1) +
                          " is not finite");
-    out.deformation = d;
+    if (d == 0.0 && m_target != 0.0 && !m_zeroDisp) {
+        m_zeroDisp = true;
+        m_notice = "the daq displacement of " + where() + " reads exactly 0 while the target is " +
+                   std::to_string(m_target) +
+                   " (an OpenFresco element server always answers 0): the commanded "
+                   "deformation is used instead wherever it reads 0 (identification, limits, "
+                   "record)";
+        std::fprintf(stderr, "hsmu: WARNING specimen '%s': %s\n", m_element.c_str(),
+                     m_notice.c_str());
+    }
+    out.deformation = m_zeroDisp && d == 0.0 ? m_target : d;
     out.force = f;
     m_measuredUncommitted = true;
     return ControlResult::success();
@@ -194,6 +216,10 @@ ControlResult OpenFrescoControl::commit() {
     m_measuredUncommitted = false;
     ++m_committed;
     return ControlResult::success();
+}
+
+std::string OpenFrescoControl::takeNotice() {
+    return std::exchange(m_notice, std::string());
 }
 
 void OpenFrescoControl::hold(const std::string& reason) {

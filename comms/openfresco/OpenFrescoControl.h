@@ -9,7 +9,12 @@
 // that desynchronizes later. The negotiated sizes are logged on stderr at connect.
 // Per step:
 //   setTarget(d)  [3, d at ctrl disp, zeros, time at ctrl time when sized]   (no reply)
-//   measure()     [6] -> reply: deformation = daq disp[0], force = daq force[0]
+//   measure()     [6] -> reply: deformation = daq disp[0], force = daq force[0]. A daq disp of
+//                 exactly 0 while the target is not 0 is a dead channel (OpenFresco's element
+//                 servers always answer 0: ExperimentalElement::getDisp returns zeros): the
+//                 link warns once (stderr and takeNotice(), which the test records as an
+//                 alarm) and from then on uses the commanded deformation wherever the channel
+//                 reads exactly 0, for identification, limits and the record.
 //   commit()      SimApp: [5] (no reply); GenericTCP has no commit (nothing is sent)
 // The destructor sends [99] (terminate) on an open link. Every read and write has a deadline;
 // a timeout, a closed or vanished peer or a malformed reply closes the link and returns a
@@ -57,6 +62,11 @@ public:
     ControlResult commit() override;
     void hold(const std::string& reason) override;
     void resume() override;
+    /// Once, when the daq displacement channel is found dead (see the header).
+    std::string takeNotice() override;
+    /// Whether the daq displacement read exactly 0 while the target was not 0: from then on a
+    /// reading of exactly 0 is replaced by the commanded deformation.
+    bool commandedDeformationUsed() const { return m_zeroDisp; }
 
     bool linkUp() const;
     const std::string& linkError() const { return m_linkError; }
@@ -92,6 +102,9 @@ private:
     std::string m_holdReason;
     std::string m_linkError;
     std::string m_pairingWarning;
+    std::string m_notice;
+    bool m_zeroDisp = false;
+    double m_target = 0.0;
     std::vector<std::uint8_t> m_buffer;
     std::vector<double> m_values;
 };

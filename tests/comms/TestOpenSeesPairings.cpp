@@ -5,6 +5,7 @@
 #include "comms/openfresco/GenericTcpControl.h"
 #include "comms/openfresco/OfSocket.h"
 #include "comms/openfresco/SimAppControl.h"
+#include "core/hysteresis/BoucWen.h"
 
 #include "ControllerProcess.h"
 #include "OpenSeesRunner.h"
@@ -44,6 +45,55 @@ class TestOpenSeesPairings : public QObject {
         const std::string path = QDir(m_dir.path()).filePath(name).toStdString();
         std::ofstream(path) << j.dump(2);
         return path;
+    }
+
+    /// An OpenFresco lab server on port: the same Bouc-Wen behind SimUniaxialMaterials +
+    /// OneActuator + LocalSite; mode "site" (startSimAppSiteServer), "elem" (a one-node
+    /// expElement generic, startSimAppElemServer) or "elem2" (a two-node twoNodeLink, 2 DOFs).
+    bool startOpenFrescoServer(QProcess& p, const QString& mode, quint16 port) {
+        QString script = "model BasicBuilder -ndm 1 -ndf 1\nloadPackage OpenFrescoTcl\n";
+        script += QString("uniaxialMaterial BoucWen 1 %1\n").arg(sdof::kBoucWenArgs);
+        script += "expControl SimUniaxialMaterials 1 1\n"
+                  "expSetup OneActuator 1 -control 1 1 -sizeTrialOut 1 1\n"
+                  "expSite LocalSite 1 1\n";
+        if (mode == "site") {
+            script += QString("startSimAppSiteServer 1 %1\n").arg(port);
+        } else if (mode == "elem") {
+            script += "node 1 0.0\nexpElement generic 1 -node 1 -dof 1 -site 1 -initStif 40.0\n";
+            script += QString("startSimAppElemServer 1 %1\n").arg(port);
+        } else {
+            script += "node 1 0.0\nnode 2 0.0\n"
+                      "expElement twoNodeLink 1 1 2 -dir 1 -site 1 -initStif 40.0\n";
+            script += QString("startSimAppElemServer 1 %1\n").arg(port);
+        }
+        script += "wipeExp\nexit\n";
+        const QString path = sub("of-" + mode) + "/server.tcl";
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly))
+            return false;
+        f.write(script.toUtf8());
+        f.close();
+        p.setProcessChannelMode(QProcess::MergedChannels);
+        p.start(opensees::interpreter(), {path});
+        return p.waitForStarted(30000);
+    }
+
+    static hsmu::comms::of::OfControlOptions patientOptions() {
+        hsmu::comms::of::OfControlOptions o;
+        o.connectTimeout = 5.0;
+        o.stepDeadline = 20.0;
+        o.connectAttempts = 40; // until the server listens
+        o.retryDelay = 0.25;
+        o.logConnect = false;
+        o.warnNoCommit = false;
+        return o;
+    }
+
+    static void endProcess(QProcess& p) {
+        if (!p.waitForFinished(20000)) {
+            p.kill();
+            p.waitForFinished(5000);
+        }
     }
 
     /// OpenSees' own model (zeroLength BoucWen) with the given integrator / algorithm.
@@ -161,29 +211,9 @@ private slots:
         // Nothing on the wire tells the two servers apart, so the client warns at connect.
         const quint16 port = freePort();
         QVERIFY(port != 0);
-        const QString dir = sub("site");
-        QString script = "model BasicBuilder -ndm 1 -ndf 1\nloadPackage OpenFrescoTcl\n";
-        script += QString("uniaxialMaterial BoucWen 1 %1\n").arg(sdof::kBoucWenArgs);
-        script += "expControl SimUniaxialMaterials 1 1\n"
-                  "expSetup OneActuator 1 -control 1 1 -sizeTrialOut 1 1\n"
-                  "expSite LocalSite 1 1\n";
-        script += QString("startSimAppSiteServer 1 %1\nwipeExp\nexit\n").arg(port);
         QProcess site;
-        site.setProcessChannelMode(QProcess::MergedChannels);
-        {
-            QFile f(dir + "/site.tcl");
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write(script.toUtf8());
-        }
-        site.start(opensees::interpreter(), {dir + "/site.tcl"});
-        QVERIFY(site.waitForStarted(30000));
-        hsmu::comms::of::OfControlOptions o;
-        o.connectTimeout = 5.0;
-        o.stepDeadline = 20.0;
-        o.connectAttempts = 40; // until the site listens
-        o.retryDelay = 0.25;
-        o.logConnect = false;
-        o.warnNoCommit = false;
+        QVERIFY(startOpenFrescoServer(site, "site", port));
+        const hsmu::comms::of::OfControlOptions o = patientOptions();
         {
             hsmu::comms::of::GenericTcpControl c("127.0.0.1", port, "Spring", o);
             const auto r = c.prepare(0.01);
@@ -192,14 +222,71 @@ private slots:
                          c.pairingWarning().find("simapp://") != std::string::npos,
                      c.pairingWarning().c_str());
         } // sends 99: the site server ends
-        if (!site.waitForFinished(20000)) {
-            site.kill();
-            site.waitForFinished(5000);
-            QFAIL("the site server did not end after 99");
-        }
+        endProcess(site);
         // SimApp against the same kind of server carries no such warning.
         hsmu::comms::of::SimAppControl s("127.0.0.1", 1, "Spring", o);
         QVERIFY(s.pairingWarning().empty());
+    }
+
+    void elementServerDeadDisplacementChannelUsesCommands() {
+        // OpenFresco's element server answers getDaqResponse with displacement 0 (its element
+        // returns zeros): the console warns once and uses the commanded deformation; the forces
+        // are the real Bouc-Wen's, equal to our own law driven by the same targets.
+        const quint16 port = freePort();
+        QVERIFY(port != 0);
+        QProcess server;
+        QVERIFY(startOpenFrescoServer(server, "elem", port));
+        hsmu::BoucWenParameters bw;
+        bw.k0 = 40.0;
+        bw.alpha = 0.05;
+        bw.n = 1.5;
+        bw.gamma = 100.0;
+        bw.beta = 300.0;
+        bw.deltaNu = 0.2;
+        bw.deltaEta = 0.2;
+        hsmu::BoucWen law(bw);
+        double worst = 0.0;
+        int notices = 0;
+        {
+            hsmu::comms::of::SimAppControl c("127.0.0.1", port, "Spring", patientOptions());
+            const auto r = c.prepare(0.01);
+            QVERIFY2(r.ok, r.reason.c_str());
+            for (int i = 1; i <= 60; ++i) {
+                const double d = 0.03 * std::sin(0.2 * i);
+                hsmu::ControlMeasurement m;
+                QVERIFY(c.setTarget(d).ok);
+                QVERIFY(c.measure(m).ok);
+                QVERIFY(c.commit().ok);
+                notices += c.takeNotice().empty() ? 0 : 1;
+                QCOMPARE(m.deformation, d); // the commanded deformation, not 0
+                QVERIFY(law.setTrialDeformation(d) == hsmu::LawStatus::Ok);
+                law.commit();
+                worst = std::max(worst, std::abs(m.force - law.committedForce()));
+            }
+            QVERIFY(c.commandedDeformationUsed());
+        }
+        endProcess(server);
+        QCOMPARE(notices, 1); // warned once
+        QVERIFY2(worst <= 1e-9 * 40.0, qPrintable(QString::number(worst)));
+    }
+
+    void twoNodeElementServerMismatchNamesTheDofs() {
+        // A twoNodeLink element server has 2 DOFs; the console sends 1: OpenFresco exits
+        // ("want: 2 but got: 1"), and the console's message says so instead of blaming dataSize.
+        const quint16 port = freePort();
+        QVERIFY(port != 0);
+        QProcess server;
+        QVERIFY(startOpenFrescoServer(server, "elem2", port));
+        hsmu::comms::of::SimAppControl c("127.0.0.1", port, "Spring", patientOptions());
+        const auto r = c.prepare(0.01);
+        endProcess(server);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.reason.find("ctrl disp 1 (one DOF)") != std::string::npos &&
+                     r.reason.find("DOF count") != std::string::npos &&
+                     r.reason.find("want: 2 but got: 1") != std::string::npos,
+                 r.reason.c_str());
+        QVERIFY2(QString::fromUtf8(server.readAll()).contains("want: 2 but got: 1"),
+                 "OpenFresco's own log names the same cause");
     }
 
     void twoNodeGenericClientServedThroughServerDofs() {
