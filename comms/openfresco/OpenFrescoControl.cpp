@@ -13,7 +13,7 @@
 namespace hsmu::comms::of {
 
 const char* ofProtocolName(OfProtocol p) {
-    return p == OfProtocol::SimApp ? "simapp" : "generictcp";
+    return p == OfProtocol::SimApp ? "simapp" : p == OfProtocol::Adapter ? "adapter" : "generictcp";
 }
 
 OpenFrescoControl::OpenFrescoControl(OfProtocol protocol, std::string host, std::uint16_t port,
@@ -34,8 +34,9 @@ std::string OpenFrescoControl::where() const {
 }
 
 std::string OpenFrescoControl::description() const {
-    return std::string(m_protocol == OfProtocol::SimApp ? "OpenFresco SimApp"
-                                                        : "OpenFresco GenericTCP") +
+    return std::string(m_protocol == OfProtocol::SimApp    ? "OpenFresco SimApp"
+                       : m_protocol == OfProtocol::Adapter ? "OpenSees adapter element"
+                                                           : "OpenFresco GenericTCP") +
            " link " + where() + " for specimen '" + m_element + "' (" + m_opt.sizes.describe() +
            ")";
 }
@@ -79,6 +80,14 @@ ControlResult OpenFrescoControl::connectOnce() {
             if (!m_socket->write(bytes.data(), bytes.size(), m_opt.stepDeadline, error))
                 return linkFault("sending the init lines: " + error);
         }
+    if (m_protocol == OfProtocol::Adapter) {
+        // No probe: the adapter takes only 3 (then 10) and 99; anything else ends OpenSees.
+        if (m_opt.logConnect)
+            std::fprintf(stderr, "hsmu: %s connected, specimen '%s': %s\n", where().c_str(),
+                         m_element.c_str(), m_opt.sizes.describe().c_str());
+        m_linkError.clear();
+        return ControlResult::success();
+    }
     // The probe: a whole reply of dataSize doubles proves the server took the header.
     if (ControlResult r = sendRequest(static_cast<int>(Action::GetDaqResponse), {}); !r.ok)
         return r;
@@ -138,6 +147,15 @@ ControlResult OpenFrescoControl::prepare(double dt) {
                                     ": the sizes need ctrl disp, daq disp and daq "
                                     "force of at least 1 (" +
                                     m_opt.sizes.describe() + ")");
+    if (m_protocol == OfProtocol::Adapter &&
+        (m_opt.sizes.daqSize(Resp::Vel) != 0 || m_opt.sizes.daqSize(Resp::Accel) != 0 ||
+         m_opt.sizes.daqSize(Resp::Time) != 0 || m_opt.sizes.ctrlSize(Resp::Disp) != 1 ||
+         m_opt.sizes.daqSize(Resp::Disp) != 1 || m_opt.sizes.daqSize(Resp::Force) != 1))
+        return ControlResult::fault(where() +
+                                    ": OpenSees' adapter element answers [daq disp, daq force] "
+                                    "only; use controller.ctrlSizes {disp 1} and "
+                                    "controller.daqSizes {disp 1, force 1} (" +
+                                    m_opt.sizes.describe() + ")");
     m_dt = dt;
     ControlResult r;
     for (int i = 0; i < std::max(1, m_opt.connectAttempts); ++i) {
@@ -157,9 +175,9 @@ ControlResult OpenFrescoControl::setTarget(double d) {
         return ControlResult::fault(
             "link to " + where() + " is down (" + m_linkError +
             "); OpenFresco protocols cannot resume a lost session: restart the test");
-    if (m_protocol == OfProtocol::GenericTcp && m_measuredUncommitted)
-        return ControlResult::fault(where() +
-                                    ": GenericTCP has no commit, so a measured step cannot be "
+    if (m_protocol != OfProtocol::SimApp && m_measuredUncommitted)
+        return ControlResult::fault(where() + ": " + ofProtocolName(m_protocol) +
+                                    " has no commit, so a measured step cannot be "
                                     "repeated; restart the test");
     const OfSizes& s = m_opt.sizes;
     std::vector<double> ctrl(static_cast<std::size_t>(s.ctrlTotal()), 0.0);
@@ -178,7 +196,9 @@ ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
     if (!m_awaitingMeasurement)
         return ControlResult::fault(where() + ": measure() without a target");
     m_awaitingMeasurement = false;
-    if (ControlResult r = sendRequest(static_cast<int>(Action::GetDaqResponse), {}); !r.ok)
+    const Action ask =
+        m_protocol == OfProtocol::Adapter ? Action::GetForce : Action::GetDaqResponse;
+    if (ControlResult r = sendRequest(static_cast<int>(ask), {}); !r.ok)
         return r;
     std::string error;
     m_buffer.resize(static_cast<std::size_t>(m_opt.sizes.dataSize) * sizeof(double));

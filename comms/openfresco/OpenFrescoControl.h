@@ -35,7 +35,8 @@ namespace hsmu::comms::of {
 
 class OfSocket;
 
-enum class OfProtocol { SimApp, GenericTcp };
+/// SimApp and GenericTCP (OpenFresco), Adapter (OpenSees' adapter element: AdapterControl).
+enum class OfProtocol { SimApp, GenericTcp, Adapter };
 const char* ofProtocolName(OfProtocol p);
 
 struct OfControlOptions {
