@@ -126,6 +126,40 @@ void OfSocket::close() {
         d->abort();
 }
 
+void OfSocket::closeAfterPeer(double timeout) {
+    if (!isOpen())
+        return;
+    std::uint8_t sink[4096];
+    std::string error;
+    for (;;) {
+        bool done = false;
+        boost::system::error_code result;
+        d->io->restart();
+        d->socket->async_read_some(asio::buffer(sink),
+                                   [&](const boost::system::error_code& ec, std::size_t) {
+                                       result = ec;
+                                       done = true;
+                                   });
+        if (runUntil(*d->io, done, timeout, d->cancel) != Wait::Done) {
+            d->abort(); // no close from the peer in time: an ordinary close
+            return;
+        }
+        if (result == asio::error::eof) {
+            boost::system::error_code ec;
+            d->socket->set_option(asio::socket_base::linger(true, 0), ec);
+            d->socket->close(ec);
+            d->io->restart();
+            d->io->run();
+            d->peer.clear();
+            return;
+        }
+        if (result) {
+            d->abort();
+            return;
+        }
+    }
+}
+
 bool OfSocket::connect(const std::string& host, std::uint16_t port, double timeout,
                        std::string& error) {
     close();

@@ -38,6 +38,11 @@ public:
     /// Whether the last failed call ran out of time.
     bool timedOut() const;
     void close();
+    /// The end of a session after the client's 99: wait up to timeout [s] for the peer to close
+    /// (data still arriving is discarded), then close with a reset, so that the server's port
+    /// is not left in TIME_WAIT (OpenSees' servers bind without SO_REUSEADDR and could not
+    /// listen on it again for a minute). A peer that does not close in time: a plain close.
+    void closeAfterPeer(double timeout);
     bool isOpen() const;
     /// "ADDR:PORT" of the peer ("" when closed).
     std::string peer() const;

@@ -22,8 +22,8 @@ OpenFrescoControl::OpenFrescoControl(OfProtocol protocol, std::string host, std:
       m_port(port), m_element(std::move(element)), m_opt(std::move(options)) {}
 
 OpenFrescoControl::~OpenFrescoControl() {
-    if (m_socket->isOpen())
-        sendRequest(static_cast<int>(Action::Terminate), {});
+    if (m_socket->isOpen() && sendRequest(static_cast<int>(Action::Terminate), {}).ok)
+        m_socket->closeAfterPeer(2.0); // the server's port is not left in TIME_WAIT
     m_socket->close();
 }
 
