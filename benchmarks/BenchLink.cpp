@@ -269,21 +269,19 @@ BENCHMARK(BM_HybridTestInProcess)->UseRealTime()->Unit(benchmark::kMillisecond);
 class SdofOfServer {
 public:
     explicit SdofOfServer(of::OfProtocol protocol) {
-        const nlohmann::json law = {{"law", "boucWen"}, {"k0", 40.0},     {"alpha", 0.05},
-                                    {"n", 1.5},         {"gamma", 100.0}, {"beta", 300.0},
-                                    {"A0", 1.0},        {"deltaA", 0.0},  {"deltaNu", 0.2},
-                                    {"deltaEta", 0.2}};
-        const nlohmann::json j = {
-            {"structure",
-             {{"dofs", {{{"name", "DOF 1"}, {"mass", 1.0}}}},
-              {"elements",
-               {{{"name", "Spring"},
-                 {"type", "lateralSpring"},
-                 {"dof", "DOF 1"},
-                 {"material", law},
-                 {"experimental", true},
-                 {"specimen", {{"material", law}}}}}}}},
-            {"analysis", {{"dt", 0.01}}}};
+        const nlohmann::json law = {
+            {"law", "boucWen"}, {"k0", 40.0}, {"alpha", 0.05}, {"n", 1.5},       {"gamma", 100.0},
+            {"beta", 300.0},    {"A0", 1.0},  {"deltaA", 0.0}, {"deltaNu", 0.2}, {"deltaEta", 0.2}};
+        const nlohmann::json j = {{"structure",
+                                   {{"dofs", {{{"name", "DOF 1"}, {"mass", 1.0}}}},
+                                    {"elements",
+                                     {{{"name", "Spring"},
+                                       {"type", "lateralSpring"},
+                                       {"dof", "DOF 1"},
+                                       {"material", law},
+                                       {"experimental", true},
+                                       {"specimen", {{"material", law}}}}}}}},
+                                  {"analysis", {{"dt", 0.01}}}};
         const TestConfig cfg = parseConfig(j, "sdof.json");
         std::vector<std::unique_ptr<SpecimenStation>> st;
         st.push_back(std::make_unique<SpecimenStation>(0, cfg.elements[0], ControllerSettings{},
@@ -346,7 +344,8 @@ std::string timedSdof(const std::string& element, const std::string& extra, bool
     s += "  set t0 [clock microseconds]\n  analyze 1 0.01\n";
     s += "  lappend times [expr {[clock microseconds] - $t0}]\n}\n";
     s += "set st [lsort -integer $times]\nset k [llength $st]\n";
-    s += "puts \"STEP_US [lindex $st [expr {$k / 2}]] [lindex $st [expr {int(0.99 * ($k - 1))}]]\"\n";
+    s += "puts \"STEP_US [lindex $st [expr {$k / 2}]] [lindex $st [expr {int(0.99 * ($k - "
+         "1))}]]\"\n";
     if (openFresco)
         s += "wipeExp\n";
     s += "wipe\n";
@@ -358,7 +357,9 @@ void reportOpenSeesSteps(benchmark::State& state, const std::string& out, bool o
     double median = 0.0, p99 = 0.0;
     if (!ok || at == std::string::npos ||
         std::sscanf(out.c_str() + at, "STEP_US %lf %lf", &median, &p99) != 2) {
-        state.SkipWithError(("OpenSees run failed: " + out.substr(out.size() > 600 ? out.size() - 600 : 0)).c_str());
+        state.SkipWithError(
+            ("OpenSees run failed: " + out.substr(out.size() > 600 ? out.size() - 600 : 0))
+                .c_str());
         return;
     }
     state.counters["median_us_per_step"] = median;
@@ -385,11 +386,11 @@ void BM_OpenSeesGenericClient(benchmark::State& state) {
     for (auto _ : state) {
         SdofOfServer server(of::OfProtocol::SimApp);
         bool ok = false;
-        const std::string out = runOpenSees(
-            timedSdof("element genericClient 1 -node 2 -dof 1 -server " +
-                          std::to_string(server.port()) + " 127.0.0.1 -dataSize 256",
-                      "", false, openSeesSteps()),
-            "", ok);
+        const std::string out =
+            runOpenSees(timedSdof("element genericClient 1 -node 2 -dof 1 -server " +
+                                      std::to_string(server.port()) + " 127.0.0.1 -dataSize 256",
+                                  "", false, openSeesSteps()),
+                        "", ok);
         reportOpenSeesSteps(state, out, ok);
     }
 }
@@ -405,10 +406,10 @@ void BM_OpenSeesGenericTcp(benchmark::State& state) {
             "expControl GenericTCP 1 127.0.0.1 " + std::to_string(server.port()) +
             " -ctrlModes 1 0 0 0 0 -daqModes 1 0 0 1 0\n"
             "expSetup OneActuator 1 -control 1 1 -sizeTrialOut 1 1\nexpSite LocalSite 1 1\n";
-        const std::string out = runOpenSees(
-            timedSdof("expElement twoNodeLink 1 1 2 -dir 1 -site 1 -initStif 40.0", extra, true,
-                      openSeesSteps()),
-            "\\n\\n", ok);
+        const std::string out =
+            runOpenSees(timedSdof("expElement twoNodeLink 1 1 2 -dir 1 -site 1 -initStif 40.0",
+                                  extra, true, openSeesSteps()),
+                        "\\n\\n", ok);
         reportOpenSeesSteps(state, out, ok);
     }
 }

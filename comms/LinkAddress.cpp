@@ -17,11 +17,10 @@ std::optional<LinkAddress> fail(std::string* error, const std::string& text, con
 std::optional<LinkAddress> LinkAddress::parse(const std::string& text, std::string* error) {
     if (text.empty() || text == "builtin")
         return LinkAddress{};
-    const std::pair<const char*, Kind> schemes[] = {
-        {"tcp://", Kind::Tcp},
-        {"simapp://", Kind::SimApp},
-        {"generictcp://", Kind::GenericTcp},
-        {"adapter://", Kind::Adapter}};
+    const std::pair<const char*, Kind> schemes[] = {{"tcp://", Kind::Tcp},
+                                                    {"simapp://", Kind::SimApp},
+                                                    {"generictcp://", Kind::GenericTcp},
+                                                    {"adapter://", Kind::Adapter}};
     std::string rest;
     Kind kind = Kind::Builtin;
     for (const auto& [scheme, k] : schemes)

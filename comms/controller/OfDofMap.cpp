@@ -40,8 +40,8 @@ OfDofMap OfDofMap::parse(const nlohmann::json& controller, const std::vector<std
             std::string known;
             for (const auto& n : names)
                 known += (known.empty() ? "" : ", ") + ("'" + n + "'");
-            d.fail("specimen", "the name of an experimental element (" + known + "), not '" +
-                                   name + "'");
+            d.fail("specimen",
+                   "the name of an experimental element (" + known + "), not '" + name + "'");
         }
         const double f = d.number("factor", 1.0);
         if (!std::isfinite(f) || f == 0.0)
@@ -52,8 +52,8 @@ OfDofMap OfDofMap::parse(const nlohmann::json& controller, const std::vector<std
     }
     for (std::size_t s = 0; s < names.size(); ++s)
         if (!used[s])
-            c.fail("serverDofs", "every experimental element on at least one DOF ('" + names[s] +
-                                     "' has none)");
+            c.fail("serverDofs",
+                   "every experimental element on at least one DOF ('" + names[s] + "' has none)");
     return map;
 }
 

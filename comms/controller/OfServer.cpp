@@ -7,8 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <thread>
 
 namespace hsmu::comms {
@@ -114,8 +114,8 @@ bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
         return false;
     };
     if (s.dataSize != m_opt.dataSize)
-        return bad("the client's dataSize is " + std::to_string(s.dataSize) +
-                   ", this server's " + std::to_string(m_opt.dataSize) +
+        return bad("the client's dataSize is " + std::to_string(s.dataSize) + ", this server's " +
+                   std::to_string(m_opt.dataSize) +
                    " (--data-size or controller.dataSize; OpenSees: -dataSize)");
     const int c = s.ctrlSize(Resp::Disp);
     if (c != n)
@@ -123,9 +123,9 @@ bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
                    " (ctrl disp " + std::to_string(c) + "), this server serves " + N + " (" +
                    m_opt.dofs.describe() + "); list the client's " + std::to_string(c) +
                    " DOFs in controller.serverDofs, one entry per DOF in the client's order, "
-                   "e.g. [{\"specimen\": \"" + m_stations[0]->name() +
-                   "\", \"factor\": -1}, {\"specimen\": \"" + m_stations[0]->name() +
-                   "\"}] for a two-node element");
+                   "e.g. [{\"specimen\": \"" +
+                   m_stations[0]->name() + "\", \"factor\": -1}, {\"specimen\": \"" +
+                   m_stations[0]->name() + "\"}] for a two-node element");
     for (Resp r : {Resp::Disp, Resp::Vel, Resp::Accel, Resp::Force})
         if (s.daqSize(r) != 0 && s.daqSize(r) != n)
             return bad("daq sizes must be 0 or the " + N + " DOFs of this server (" +
@@ -133,8 +133,8 @@ bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
     if (s.daqSize(Resp::Time) > 1)
         return bad("daq time must be 0 or 1");
     if (m_opt.protocol == OfProtocol::SimApp && !m_opt.siteServer && s.dataSize < n * n)
-        return bad("an element server of " + N + " DOFs needs dataSize >= n * n = " +
-                   std::to_string(n * n));
+        return bad("an element server of " + N +
+                   " DOFs needs dataSize >= n * n = " + std::to_string(n * n));
     return true;
 }
 
@@ -266,8 +266,8 @@ bool OfServer::trial(const std::vector<double>& frame, std::string& why) {
     m_commanded = m_opt.dofs.deformations(m_ctrl);
     std::vector<std::optional<Message>> result(n);
     for (std::size_t i = 0; i < n; ++i)
-        result[i] = m_stations[i]->target(
-            TargetMsg{m_stations[i]->committedSteps() + 1, m_commanded[i]});
+        result[i] =
+            m_stations[i]->target(TargetMsg{m_stations[i]->committedSteps() + 1, m_commanded[i]});
     // Real time: the step's ticks at the loop rate until every station has its measurement.
     const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
         std::chrono::duration<double>(1.0 / m_opt.rate));
@@ -369,7 +369,7 @@ std::vector<double> OfServer::matrix(int action) const {
 
 void OfServer::refuse(OfSocket& socket) {
     if (m_sizes.dataSize < 1)
-        return; // sizes that cannot frame anything: close
+        return;                           // sizes that cannot frame anything: close
     constexpr double kRefusedIdle = 10.0; // [s] without a frame before a refused session closes
     const bool generic = m_opt.protocol == OfProtocol::GenericTcp;
     const std::size_t frameBytes = static_cast<std::size_t>(m_sizes.dataSize) * sizeof(double);

@@ -58,8 +58,8 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
                 return std::make_unique<of::SimAppControl>(address.host, address.port, spec.name,
                                                            o);
             if (protocol == "adapter")
-                return std::make_unique<of::AdapterControl>(address.host, address.port,
-                                                            spec.name, o);
+                return std::make_unique<of::AdapterControl>(address.host, address.port, spec.name,
+                                                            o);
             return std::make_unique<of::GenericTcpControl>(address.host, address.port, spec.name,
                                                            o);
         };

@@ -4,9 +4,9 @@
 // connection, and TCP keep-alive so that a peer whose machine vanished is eventually noticed
 // even when nobody is sending. After every read (and at connect) TCP_QUICKACK is re-armed
 // (Linux): OpenSees and OpenFresco leave Nagle on and write two frames back to back, and the
-// second would otherwise wait for our delayed ACK of the first (about 40-45 ms per step). A read or write that times out, fails or is cancelled closes
-// the socket: the fixed-length OpenFresco stream has no framing to resynchronize on, so a
-// half-read frame must never be followed by another read.
+// second would otherwise wait for our delayed ACK of the first (about 40-45 ms per step). A read or
+// write that times out, fails or is cancelled closes the socket: the fixed-length OpenFresco stream
+// has no framing to resynchronize on, so a half-read frame must never be followed by another read.
 // Thread rules: one thread per object. setCancel()'s predicate is polled about every 0.2 s
 // during a wait (a server's stop flag).
 

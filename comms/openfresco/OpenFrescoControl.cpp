@@ -95,8 +95,7 @@ ControlResult OpenFrescoControl::connectOnce() {
     if (!m_socket->read(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error)) {
         // A closed or reset connection: the server refused the header (an OpenFresco element
         // server exits when the sizes do not fit its element).
-        const bool refused = m_socket->closedByPeer() ||
-                             error.find("reset") != std::string::npos;
+        const bool refused = m_socket->closedByPeer() || error.find("reset") != std::string::npos;
         const std::string n = std::to_string(m_opt.sizes.ctrlSize(Resp::Disp));
         return linkFault(
             refused ? "the server closed the connection after the sizes header (" +
@@ -104,7 +103,8 @@ ControlResult OpenFrescoControl::connectOnce() {
                           "): it does not accept these sizes. This console sends ctrl disp " + n +
                           " (one DOF); an OpenFresco element server needs ctrl disp, daq disp "
                           "and daq force equal to its element's DOF count (a twoNodeLink on 2 "
-                          "nodes has 2: its log says \"want: 2 but got: " + n +
+                          "nodes has 2: its log says \"want: 2 but got: " +
+                          n +
                           "\"; serve such a specimen by a site server, startSimAppSiteServer, "
                           "or a one-node expElement generic), a site server its setup's sizes; "
                           "make controller.dataSize, controller.ctrlSizes and "

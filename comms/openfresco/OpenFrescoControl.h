@@ -19,8 +19,8 @@
 // The destructor sends [99] (terminate) on an open link and waits up to 2 s for the server to
 // close first (OfSocket::closeAfterPeer: its port stays reusable). Every read and write has a
 // deadline; a timeout, a closed or vanished peer or a malformed reply closes the link and
-// returns a fault (the test holds with every committed step kept). OpenFresco has no session or step
-// count to resume from, so a lost link is not reconnected: resume() on a closed link leaves
+// returns a fault (the test holds with every committed step kept). OpenFresco has no session or
+// step count to resume from, so a lost link is not reconnected: resume() on a closed link leaves
 // setTarget() reporting it, and the test is restarted instead.
 // Thread rules: one thread at a time (the test worker).
 

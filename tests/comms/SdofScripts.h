@@ -17,10 +17,9 @@ inline const char* kBoucWenArgs = "0.05 40.0 1.5 100.0 300.0 1.0 0.0 0.2 0.2 1.0
 /// The hsmu configuration with the same spring as the specimen ("Spring", a lateral spring on
 /// the one DOF): served by hsmu-controller; dt as in the Tcl model.
 inline nlohmann::json controllerConfig(double dt = 0.01) {
-    const nlohmann::json law = {{"law", "boucWen"}, {"k0", 40.0},     {"alpha", 0.05},
-                                {"n", 1.5},         {"gamma", 100.0}, {"beta", 300.0},
-                                {"A0", 1.0},        {"deltaA", 0.0},  {"deltaNu", 0.2},
-                                {"deltaEta", 0.2}};
+    const nlohmann::json law = {
+        {"law", "boucWen"}, {"k0", 40.0}, {"alpha", 0.05}, {"n", 1.5},       {"gamma", 100.0},
+        {"beta", 300.0},    {"A0", 1.0},  {"deltaA", 0.0}, {"deltaNu", 0.2}, {"deltaEta", 0.2}};
     return {{"structure",
              {{"dofs", {{{"name", "DOF 1"}, {"mass", 1.0}}}},
               {"elements",
@@ -34,15 +33,15 @@ inline nlohmann::json controllerConfig(double dt = 0.01) {
 }
 
 struct Options {
-    QString element;                            ///< the spring's Tcl line(s), tag 1
-    QString outDir;                             ///< recorder folder
+    QString element; ///< the spring's Tcl line(s), tag 1
+    QString outDir;  ///< recorder folder
     double dt = 0.01;
     int steps = 200;
     QString integrator = "NewmarkExplicit 0.5";
     QString algorithm = "Linear";
-    QString groundMotion;                       ///< one column in g at 0.02 s
-    bool openFresco = false;                    ///< loadPackage OpenFrescoTcl
-    QString extra;                              ///< lines after the element (expControl ...)
+    QString groundMotion;    ///< one column in g at 0.02 s
+    bool openFresco = false; ///< loadPackage OpenFrescoTcl
+    QString extra;           ///< lines after the element (expControl ...)
 };
 
 /// The model with `element` as the spring; recorders disp.out (node 2) and force.out (ele 1).

@@ -203,8 +203,10 @@ private slots:
     void servedOpenSeesRunsEqualTheReference_data() {
         QTest::addColumn<QString>("script");
         QTest::addColumn<QString>("output");
-        QTest::newRow("genericClient -> simapp") << "generic-client.sh" << "generic-client.out";
-        QTest::newRow("two-node genericClient -> serverDofs") << "two-node.sh" << "two-node.out";
+        QTest::newRow("genericClient -> simapp") << "generic-client.sh"
+                                                 << "generic-client.out";
+        QTest::newRow("two-node genericClient -> serverDofs") << "two-node.sh"
+                                                              << "two-node.out";
         QTest::newRow("expControl GenericTCP -> generictcp") << "generic-tcp.sh"
                                                              << "generic-tcp.out";
     }
@@ -222,9 +224,11 @@ private slots:
         QTest::addColumn<QString>("script");
         QTest::addColumn<QString>("folder");
         QTest::addColumn<double>("tolerance");
-        QTest::newRow("simapp:// -> startSimAppSiteServer") << "lab-site.sh" << "lab-site" << 1e-9;
+        QTest::newRow("simapp:// -> startSimAppSiteServer") << "lab-site.sh"
+                                                            << "lab-site" << 1e-9;
         // The adapter's penalty stiffness bounds the agreement (docs/openfresco.md).
-        QTest::newRow("adapter:// -> OpenSees adapter") << "adapter.sh" << "adapter" << 1e-6;
+        QTest::newRow("adapter:// -> OpenSees adapter") << "adapter.sh"
+                                                        << "adapter" << 1e-6;
     }
 
     void consoleRunsEqualTheBuiltInRun() {

@@ -116,12 +116,12 @@ class TestOpenSeesPairings : public QObject {
     }
 
     /// One genericClient run against a fresh hsmu-controller --protocol simapp.
-    std::vector<std::vector<double>> genericClient(const QString& tag, const std::string& config,
-                                                   const QString& element, QString& log,
-                                                   const QString& integrator = "NewmarkExplicit 0.5",
-                                                   const QString& algorithm = "Linear") {
-        ControllerProcess ctl({"--config", QString::fromStdString(config), "--pace", "fast",
-                               "--protocol", "simapp"});
+    std::vector<std::vector<double>>
+    genericClient(const QString& tag, const std::string& config, const QString& element,
+                  QString& log, const QString& integrator = "NewmarkExplicit 0.5",
+                  const QString& algorithm = "Linear") {
+        ControllerProcess ctl(
+            {"--config", QString::fromStdString(config), "--pace", "fast", "--protocol", "simapp"});
         if (!ctl.start()) {
             log = ctl.log();
             return {};
@@ -307,7 +307,8 @@ private slots:
         j["analysis"]["duration"] = 2.0;
         const hsmu::TestConfig cfg = hsmu::loadConfigFile(writeConfig("adapter.json", j));
         const QString dir = sub("adapter");
-        QString script = "wipe\nmodel BasicBuilder -ndm 1 -ndf 1\nnode 1 0.0\nnode 2 0.0\nfix 1 1\n";
+        QString script =
+            "wipe\nmodel BasicBuilder -ndm 1 -ndf 1\nnode 1 0.0\nnode 2 0.0\nfix 1 1\n";
         script += QString("uniaxialMaterial BoucWen 1 %1\n").arg(sdof::kBoucWenArgs);
         script += "element zeroLength 1 1 2 -mat 1 -dir 1\n";
         script += QString("element adapter 2 -node 2 -dof 1 -stif 1.0e10 %1\n").arg(port);
@@ -330,8 +331,8 @@ private slots:
         to.reconnectDelay = 0.25;
         const linkfixture::Run linked = linkfixture::runTest(
             cfg, hsmu::comms::makeControlFactory(
-                     hsmu::comms::LinkAddress{hsmu::comms::LinkAddress::Kind::Adapter,
-                                              "127.0.0.1", port},
+                     hsmu::comms::LinkAddress{hsmu::comms::LinkAddress::Kind::Adapter, "127.0.0.1",
+                                              port},
                      to, cfg.link));
         endProcess(os); // 99 ends OpenSees
         const QString log = QString::fromUtf8(os.readAll());
@@ -367,7 +368,8 @@ private slots:
             log);
         const double diff = opensees::maxDifference(ref, run);
         QVERIFY2(diff <= 1e-12, qPrintable(QString::number(diff) + "\n" + log));
-        QVERIFY2(log.contains("2 DOFs from controller.serverDofs onto 1 specimen"), qPrintable(log));
+        QVERIFY2(log.contains("2 DOFs from controller.serverDofs onto 1 specimen"),
+                 qPrintable(log));
     }
 
     void mismatchedGenericClientIsRefusedPolitely() {
@@ -379,9 +381,10 @@ private slots:
             "element genericClient 1 -node 1 2 -dof 1 -dof 1 -server PORT 127.0.0.1 -dataSize 256",
             log);
         QVERIFY2(log.contains("analyze -> "), qPrintable(log)); // OpenSees finished its script
-        QVERIFY2(log.contains("the client has 2 control DOFs (ctrl disp 2), this server serves 1") &&
-                     log.contains("controller.serverDofs"),
-                 qPrintable(log));
+        QVERIFY2(
+            log.contains("the client has 2 control DOFs (ctrl disp 2), this server serves 1") &&
+                log.contains("controller.serverDofs"),
+            qPrintable(log));
         QVERIFY2(log.contains("answered with NaN"), qPrintable(log));
         bool finite = true;
         for (const auto& row : run)
