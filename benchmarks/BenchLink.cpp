@@ -8,6 +8,12 @@
 //   BM_SimAppRoundTrip     OpenFresco SimApp against hsmu-controller's OfServer (fast pace):
 //                          [3, trial] + [6] -> reply per step, median and p99 (docs/openfresco.md)
 //   BM_SimAppStep          a whole step through SimAppControl (3, 6 -> reply, 5)
+//   BM_OpenSeesGenericClient  the real OpenSees (../shared/tools/opensees; skipped where absent)
+//                          as the client: `element genericClient` -> OfServer (SimApp element
+//                          server, fast pace), an SDOF Bouc-Wen under El Centro, each step
+//                          timed inside OpenSees; median and p99 per step (target <= 0.5 ms)
+//   BM_OpenSeesGenericTcp  the same through OpenFresco's `expControl GenericTCP` -> OfServer
+//                          (GenericTCP server)
 //   BM_RealTimeDeadlines   the real-time pace for HSMU_BENCH_REALTIME_SECONDS seconds (default
 //                          skipped): deadline misses of the 1024 Hz loop (target 0);
 //                          HSMU_BENCH_REALTIME_PRIORITY=P runs the loop under SCHED_FIFO P
@@ -27,6 +33,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
@@ -257,6 +264,156 @@ void BM_HybridTestInProcess(benchmark::State& state) {
 }
 BENCHMARK(BM_HybridTestOverLink)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HybridTestInProcess)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+/// An OfServer of the given protocol serving a Bouc-Wen spring (the OpenSees SDOF's), fast pace.
+class SdofOfServer {
+public:
+    explicit SdofOfServer(of::OfProtocol protocol) {
+        const nlohmann::json law = {
+            {"law", "boucWen"}, {"k0", 40.0}, {"alpha", 0.05}, {"n", 1.5},       {"gamma", 100.0},
+            {"beta", 300.0},    {"A0", 1.0},  {"deltaA", 0.0}, {"deltaNu", 0.2}, {"deltaEta", 0.2}};
+        const nlohmann::json j = {{"structure",
+                                   {{"dofs", {{{"name", "DOF 1"}, {"mass", 1.0}}}},
+                                    {"elements",
+                                     {{{"name", "Spring"},
+                                       {"type", "lateralSpring"},
+                                       {"dof", "DOF 1"},
+                                       {"material", law},
+                                       {"experimental", true},
+                                       {"specimen", {{"material", law}}}}}}}},
+                                  {"analysis", {{"dt", 0.01}}}};
+        const TestConfig cfg = parseConfig(j, "sdof.json");
+        std::vector<std::unique_ptr<SpecimenStation>> st;
+        st.push_back(std::make_unique<SpecimenStation>(0, cfg.elements[0], ControllerSettings{},
+                                                       SpecimenStation::Pace::Fast, nullptr));
+        OfServerOptions o;
+        o.protocol = protocol;
+        o.realTime = false;
+        o.quiet = true;
+        m_server = std::make_unique<OfServer>(o, std::move(st));
+        std::string error;
+        if (!m_server->listen(error))
+            std::fprintf(stderr, "%s\n", error.c_str());
+        m_thread = std::thread([this] { m_server->run(); });
+    }
+    ~SdofOfServer() {
+        m_server->stop();
+        m_thread.join();
+    }
+    std::uint16_t port() const { return m_server->port(); }
+
+private:
+    std::unique_ptr<OfServer> m_server;
+    std::thread m_thread;
+};
+
+/// Run `tcl` in the real OpenSees (under `timeout`), stdin from `input`; its output.
+std::string runOpenSees(const std::string& tcl, const std::string& input, bool& ok) {
+    const std::string dir = std::filesystem::temp_directory_path() / "hsmu_bench_opensees";
+    std::filesystem::create_directories(dir);
+    const std::string script = dir + "/bench.tcl";
+    std::ofstream(script) << tcl;
+    const std::string cmd = "printf '" + input + "' | timeout 600 " + std::string(HSMU_SOURCE_DIR) +
+                            "/../shared/tools/opensees/opensees " + script + " 2>&1";
+    std::string out;
+    ok = false;
+    if (FILE* f = popen(cmd.c_str(), "r")) {
+        char buf[4096];
+        while (std::fgets(buf, sizeof buf, f))
+            out += buf;
+        ok = pclose(f) == 0;
+    }
+    return out;
+}
+
+/// The SDOF with `element` as its spring, `steps` steps of dt 0.01 each timed by OpenSees;
+/// prints "STEP_US median p99".
+std::string timedSdof(const std::string& element, const std::string& extra, bool openFresco,
+                      int steps) {
+    const std::string gm =
+        std::string(HSMU_SOURCE_DIR) + "/../shared/tools/opensees/examples/elcentro_NS_accel_g.txt";
+    std::string s = "wipe\nmodel BasicBuilder -ndm 1 -ndf 1\n";
+    if (openFresco)
+        s += "loadPackage OpenFrescoTcl\n";
+    s += "node 1 0.0\nnode 2 0.0 -mass 1.0\nfix 1 1\n" + extra + element + "\n";
+    s += "timeSeries Path 1 -dt 0.02 -filePath {" + gm + "} -factor 9.80665\n";
+    s += "pattern UniformExcitation 1 1 -accel 1\nrayleigh 0.25298221281347039 0 0 0\n";
+    s += "constraints Plain\nnumberer Plain\nsystem FullGeneral\nalgorithm Linear\n";
+    s += "integrator NewmarkExplicit 0.5\nanalysis Transient\nset times {}\n";
+    s += "for {set i 0} {$i < " + std::to_string(steps) + "} {incr i} {\n";
+    s += "  set t0 [clock microseconds]\n  analyze 1 0.01\n";
+    s += "  lappend times [expr {[clock microseconds] - $t0}]\n}\n";
+    s += "set st [lsort -integer $times]\nset k [llength $st]\n";
+    s += "puts \"STEP_US [lindex $st [expr {$k / 2}]] [lindex $st [expr {int(0.99 * ($k - "
+         "1))}]]\"\n";
+    if (openFresco)
+        s += "wipeExp\n";
+    s += "wipe\n";
+    return s;
+}
+
+void reportOpenSeesSteps(benchmark::State& state, const std::string& out, bool ok) {
+    const auto at = out.find("STEP_US ");
+    double median = 0.0, p99 = 0.0;
+    if (!ok || at == std::string::npos ||
+        std::sscanf(out.c_str() + at, "STEP_US %lf %lf", &median, &p99) != 2) {
+        state.SkipWithError(
+            ("OpenSees run failed: " + out.substr(out.size() > 600 ? out.size() - 600 : 0))
+                .c_str());
+        return;
+    }
+    state.counters["median_us_per_step"] = median;
+    state.counters["p99_us_per_step"] = p99;
+}
+
+bool openSeesAbsent(benchmark::State& state) {
+    const std::string exe = std::string(HSMU_SOURCE_DIR) + "/../shared/tools/opensees/opensees";
+    if (std::filesystem::exists(exe))
+        return false;
+    state.SkipWithError(("the real OpenSees is not at " + exe).c_str());
+    return true;
+}
+
+/// Steps per OpenSees run (HSMU_BENCH_OPENSEES_STEPS, default 1000 = 10 s of El Centro).
+int openSeesSteps() {
+    const char* env = std::getenv("HSMU_BENCH_OPENSEES_STEPS");
+    return env ? std::max(10, std::atoi(env)) : 1000;
+}
+
+void BM_OpenSeesGenericClient(benchmark::State& state) {
+    if (openSeesAbsent(state))
+        return;
+    for (auto _ : state) {
+        SdofOfServer server(of::OfProtocol::SimApp);
+        bool ok = false;
+        const std::string out =
+            runOpenSees(timedSdof("element genericClient 1 -node 2 -dof 1 -server " +
+                                      std::to_string(server.port()) + " 127.0.0.1 -dataSize 256",
+                                  "", false, openSeesSteps()),
+                        "", ok);
+        reportOpenSeesSteps(state, out, ok);
+    }
+}
+BENCHMARK(BM_OpenSeesGenericClient)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_OpenSeesGenericTcp(benchmark::State& state) {
+    if (openSeesAbsent(state))
+        return;
+    for (auto _ : state) {
+        SdofOfServer server(of::OfProtocol::GenericTcp);
+        bool ok = false;
+        const std::string extra =
+            "expControl GenericTCP 1 127.0.0.1 " + std::to_string(server.port()) +
+            " -ctrlModes 1 0 0 0 0 -daqModes 1 0 0 1 0\n"
+            "expSetup OneActuator 1 -control 1 1 -sizeTrialOut 1 1\nexpSite LocalSite 1 1\n";
+        const std::string out =
+            runOpenSees(timedSdof("expElement twoNodeLink 1 1 2 -dir 1 -site 1 -initStif 40.0",
+                                  extra, true, openSeesSteps()),
+                        "\\n\\n", ok);
+        reportOpenSeesSteps(state, out, ok);
+    }
+}
+BENCHMARK(BM_OpenSeesGenericTcp)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_RealTimeDeadlines(benchmark::State& state) {
     const char* env = std::getenv("HSMU_BENCH_REALTIME_SECONDS");

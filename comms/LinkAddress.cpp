@@ -8,8 +8,8 @@ namespace {
 std::optional<LinkAddress> fail(std::string* error, const std::string& text, const char* why) {
     if (error)
         *error = "controller address '" + text + "': " + why +
-                 " (expected 'builtin', 'tcp://HOST:PORT', 'simapp://HOST:PORT' or "
-                 "'generictcp://HOST:PORT')";
+                 " (expected 'builtin', 'tcp://HOST:PORT', 'simapp://HOST:PORT', "
+                 "'generictcp://HOST:PORT' or 'adapter://HOST:PORT')";
     return std::nullopt;
 }
 } // namespace
@@ -17,8 +17,10 @@ std::optional<LinkAddress> fail(std::string* error, const std::string& text, con
 std::optional<LinkAddress> LinkAddress::parse(const std::string& text, std::string* error) {
     if (text.empty() || text == "builtin")
         return LinkAddress{};
-    const std::pair<const char*, Kind> schemes[] = {
-        {"tcp://", Kind::Tcp}, {"simapp://", Kind::SimApp}, {"generictcp://", Kind::GenericTcp}};
+    const std::pair<const char*, Kind> schemes[] = {{"tcp://", Kind::Tcp},
+                                                    {"simapp://", Kind::SimApp},
+                                                    {"generictcp://", Kind::GenericTcp},
+                                                    {"adapter://", Kind::Adapter}};
     std::string rest;
     Kind kind = Kind::Builtin;
     for (const auto& [scheme, k] : schemes)
@@ -64,6 +66,7 @@ std::string LinkAddress::toString() const {
     const bool v6 = host.find(':') != std::string::npos;
     const char* scheme = kind == Kind::SimApp       ? "simapp://"
                          : kind == Kind::GenericTcp ? "generictcp://"
+                         : kind == Kind::Adapter    ? "adapter://"
                                                     : "tcp://";
     return scheme + (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
 }

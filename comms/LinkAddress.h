@@ -1,9 +1,10 @@
 #pragma once
 // LinkAddress: where the console finds an actuator controller, parsed from
-// "builtin", "tcp://HOST:PORT", "simapp://HOST:PORT" or "generictcp://HOST:PORT" (the form of
-// `hsmu run --controller`). tcp:// speaks the protocol the configuration's controller.protocol
-// names (native by default); simapp:// and generictcp:// force that OpenFresco protocol
-// (docs/openfresco.md). No Qt, no sockets.
+// "builtin", "tcp://HOST:PORT", "simapp://HOST:PORT", "generictcp://HOST:PORT" or
+// "adapter://HOST:PORT" (the form of `hsmu run --controller`). tcp:// speaks the protocol the
+// configuration's controller.protocol names (native by default); simapp:// and generictcp://
+// force that OpenFresco protocol, adapter:// drives OpenSees' `adapter` element (a numerical
+// substructure in an OpenSees model; docs/openfresco.md). No Qt, no sockets.
 
 #include <cstdint>
 #include <optional>
@@ -12,7 +13,7 @@
 namespace hsmu::comms {
 
 struct LinkAddress {
-    enum class Kind { Builtin, Tcp, SimApp, GenericTcp };
+    enum class Kind { Builtin, Tcp, SimApp, GenericTcp, Adapter };
     Kind kind = Kind::Builtin;
     std::string host;       ///< for a network kind: host name or IPv4/IPv6 literal
     std::uint16_t port = 0; ///< for a network kind: 1..65535

@@ -12,6 +12,11 @@ packages=(
   libeigen3-dev libboost-dev libboost-system-dev libhdf5-dev hdf5-tools nlohmann-json3-dev
   libbenchmark-dev xvfb xauth
 )
+# The real OpenSees 3.8 + OpenFresco 2.8 the pairing tests run (../shared/tools/opensees, present
+# in CI, absent on a user's machine): its runtime libraries.
+if [ -d "$here/../shared/tools/opensees" ]; then
+  packages+=(tcl8.6 liblapack3 libblas3 libgfortran5 libssl3)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

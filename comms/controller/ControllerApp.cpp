@@ -17,6 +17,7 @@ bool ControllerApp::start(std::string& error) {
     std::string protocol = m_cmd.protocol;
     int dataSize = m_cmd.dataSize;
     double dt = 0.0;
+    OfDofMap dofs;
     try {
         const TestConfig cfg = loadConfigFile(m_cmd.config);
         settings = parseControllerSettings(cfg);
@@ -47,6 +48,12 @@ bool ControllerApp::start(std::string& error) {
             error = m_cmd.config + ": no experimental element (\"experimental\": true) to emulate";
             return false;
         }
+        std::vector<std::string> names;
+        for (const auto& st : stations)
+            names.push_back(st->name());
+        dofs = OfDofMap::parse(cfg.raw.contains("controller") ? cfg.raw.at("controller")
+                                                              : nlohmann::json(),
+                               names, m_cmd.config);
         if (m_journal) {
             std::vector<JournalRecord> records;
             if (!m_journal->open(m_cmd.state, identities, records, error))
@@ -78,6 +85,7 @@ bool ControllerApp::start(std::string& error) {
         o.realTime = !m_cmd.fast;
         o.rate = settings.rate;
         o.quiet = m_cmd.quiet;
+        o.dofs = dofs;
         if (!m_cmd.token.empty())
             std::fprintf(stderr, "hsmu-controller: --token is ignored: the OpenFresco protocols "
                                  "carry no token\n");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <limits>
 #include <thread>
 
 namespace hsmu::comms {
@@ -36,7 +37,9 @@ std::string reasonOf(const Message& m) {
 OfServer::OfServer(const OfServerOptions& options,
                    std::vector<std::unique_ptr<SpecimenStation>> stations)
     : m_opt(options), m_stations(std::move(stations)), m_listener(std::make_unique<OfListener>()),
-      m_measured(m_stations.size()) {
+      m_measured(m_stations.size()), m_commanded(m_stations.size(), 0.0) {
+    if (m_opt.dofs.specimens() != static_cast<int>(m_stations.size()))
+        m_opt.dofs = OfDofMap(static_cast<int>(m_stations.size()));
     m_listener->setCancel([this] { return m_stop.load() || g_signalled != 0; });
 }
 
@@ -46,7 +49,7 @@ std::string OfServer::describe() const {
     std::string role = m_opt.protocol == OfProtocol::GenericTcp ? "generictcp server"
                        : m_opt.siteServer                       ? "simapp site server"
                                                                 : "simapp element server";
-    return role + ", dataSize " + std::to_string(m_opt.dataSize);
+    return role + ", dataSize " + std::to_string(m_opt.dataSize) + ", " + m_opt.dofs.describe();
 }
 
 void OfServer::log(const std::string& line) const {
@@ -97,28 +100,41 @@ bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
         return false;
     }
     const OfSizes s = decodeSizes(bytes);
+    m_sizes = OfSizes{};
+    m_sizes.dataSize = 0; // no frames can be exchanged (refuse() closes at once)
     if (auto p = s.problem()) {
         why = "sizes header " + s.describe() + ": " + *p;
         return false;
     }
-    const int n = static_cast<int>(m_stations.size());
+    m_sizes = s;
+    const int n = m_opt.dofs.dofs();
+    const std::string N = std::to_string(n);
     auto bad = [&](const std::string& what) {
         why = "sizes header " + s.describe() + " refused: " + what;
         return false;
     };
     if (s.dataSize != m_opt.dataSize)
-        return bad("dataSize " + std::to_string(s.dataSize) + ", this server uses " +
-                   std::to_string(m_opt.dataSize));
-    if (s.ctrlSize(Resp::Disp) != n)
-        return bad("ctrl disp must be " + std::to_string(n) + " (one per specimen)");
+        return bad("the client's dataSize is " + std::to_string(s.dataSize) + ", this server's " +
+                   std::to_string(m_opt.dataSize) +
+                   " (--data-size or controller.dataSize; OpenSees: -dataSize)");
+    const int c = s.ctrlSize(Resp::Disp);
+    if (c != n)
+        return bad("the client has " + std::to_string(c) + " control DOF" + (c == 1 ? "" : "s") +
+                   " (ctrl disp " + std::to_string(c) + "), this server serves " + N + " (" +
+                   m_opt.dofs.describe() + "); list the client's " + std::to_string(c) +
+                   " DOFs in controller.serverDofs, one entry per DOF in the client's order, "
+                   "e.g. [{\"specimen\": \"" +
+                   m_stations[0]->name() + "\", \"factor\": -1}, {\"specimen\": \"" +
+                   m_stations[0]->name() + "\"}] for a two-node element");
     for (Resp r : {Resp::Disp, Resp::Vel, Resp::Accel, Resp::Force})
         if (s.daqSize(r) != 0 && s.daqSize(r) != n)
-            return bad("daq sizes must be 0 or " + std::to_string(n));
+            return bad("daq sizes must be 0 or the " + N + " DOFs of this server (" +
+                       m_opt.dofs.describe() + ")");
     if (s.daqSize(Resp::Time) > 1)
         return bad("daq time must be 0 or 1");
     if (m_opt.protocol == OfProtocol::SimApp && !m_opt.siteServer && s.dataSize < n * n)
-        return bad("an element server needs dataSize >= n * n = " + std::to_string(n * n));
-    m_sizes = s;
+        return bad("an element server of " + N +
+                   " DOFs needs dataSize >= n * n = " + std::to_string(n * n));
     return true;
 }
 
@@ -127,6 +143,7 @@ void OfServer::serve(OfSocket& socket) {
     if (!acceptHeader(socket, why)) {
         ++m_stats.sessionsRefused;
         log("refused " + socket.peer() + ": " + why);
+        refuse(socket);
         return;
     }
     log("sizes " + m_sizes.describe());
@@ -144,6 +161,8 @@ void OfServer::serve(OfSocket& socket) {
     m_haveTrial = false;
     for (auto& m : m_measured)
         m = MeasurementMsg{};
+    std::fill(m_commanded.begin(), m_commanded.end(), 0.0);
+    m_ctrl.assign(static_cast<std::size_t>(m_opt.dofs.dofs()), 0.0);
 
     const std::size_t frameBytes = static_cast<std::size_t>(m_sizes.dataSize) * sizeof(double);
     std::vector<std::uint8_t> buffer(std::max(frameBytes, kInitLineBytes));
@@ -236,16 +255,19 @@ bool OfServer::trial(const std::vector<double>& frame, std::string& why) {
     const std::size_t n = m_stations.size();
     if (m_opt.protocol == OfProtocol::GenericTcp && m_haveTrial && !commitAll(why))
         return false;
-    const int first = m_sizes.ctrlIndex(Resp::Disp);
-    std::vector<std::optional<Message>> result(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double d = frame[static_cast<std::size_t>(first) + i];
-        if (!std::isfinite(d)) {
-            why = "trial for specimen '" + m_stations[i]->name() + "' is not finite";
+    const auto first = static_cast<std::size_t>(m_sizes.ctrlIndex(Resp::Disp));
+    for (std::size_t i = 0; i < m_ctrl.size(); ++i) {
+        m_ctrl[i] = frame[first + i];
+        if (!std::isfinite(m_ctrl[i])) {
+            why = "the trial of DOF " + std::to_string(i + 1) + " is not finite";
             return false;
         }
-        result[i] = m_stations[i]->target(TargetMsg{m_stations[i]->committedSteps() + 1, d});
     }
+    m_commanded = m_opt.dofs.deformations(m_ctrl);
+    std::vector<std::optional<Message>> result(n);
+    for (std::size_t i = 0; i < n; ++i)
+        result[i] =
+            m_stations[i]->target(TargetMsg{m_stations[i]->committedSteps() + 1, m_commanded[i]});
     // Real time: the step's ticks at the loop rate until every station has its measurement.
     const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
         std::chrono::duration<double>(1.0 / m_opt.rate));
@@ -302,9 +324,16 @@ bool OfServer::commitAll(std::string& why) {
 
 std::vector<double> OfServer::daqReply(int first, int last) const {
     // [disp..., vel..., accel..., force..., time], each part as long as its daq size (6), or
-    // n values (1 for time) when asked for alone (7-11).
-    const std::size_t n = m_stations.size();
+    // n values (1 for time) when asked for alone (7-11); n = the client's DOFs.
+    const std::size_t n = static_cast<std::size_t>(m_opt.dofs.dofs());
     const bool whole = last - first > 1;
+    std::vector<double> dm(m_stations.size()), fm(m_stations.size());
+    for (std::size_t s = 0; s < m_stations.size(); ++s) {
+        dm[s] = m_measured[s].deformation;
+        fm[s] = m_measured[s].force;
+    }
+    const std::vector<double> disp = m_opt.dofs.measuredDisp(m_ctrl, dm, m_commanded);
+    const std::vector<double> force = m_opt.dofs.forces(fm);
     std::vector<double> v;
     for (int k = first; k < last; ++k) {
         const Resp r = static_cast<Resp>(k);
@@ -313,9 +342,9 @@ std::vector<double> OfServer::daqReply(int first, int last) const {
         for (std::size_t i = 0; i < count; ++i) {
             double x = 0.0;
             if (r == Resp::Disp)
-                x = m_measured[i].deformation;
+                x = disp[i];
             else if (r == Resp::Force)
-                x = m_measured[i].force;
+                x = force[i];
             else if (r == Resp::Time)
                 x = static_cast<double>(m_stations[0]->committedSteps() + (m_haveTrial ? 1 : 0)) *
                     m_opt.dt;
@@ -326,15 +355,59 @@ std::vector<double> OfServer::daqReply(int first, int last) const {
 }
 
 std::vector<double> OfServer::matrix(int action) const {
-    const std::size_t n = m_stations.size();
-    std::vector<double> m(n * n, 0.0); // column-major; only the diagonal is non-zero
-    if (action == static_cast<int>(Action::GetInitialStiff) ||
-        action == static_cast<int>(Action::GetTangentStiff))
-        for (std::size_t i = 0; i < n; ++i)
-            m[i * n + i] = action == static_cast<int>(Action::GetInitialStiff)
-                               ? m_stations[i]->initialStiffness()
-                               : m_stations[i]->tangentStiffness();
-    return m;
+    const std::size_t n = static_cast<std::size_t>(m_opt.dofs.dofs());
+    if (action != static_cast<int>(Action::GetInitialStiff) &&
+        action != static_cast<int>(Action::GetTangentStiff))
+        return std::vector<double>(n * n, 0.0); // damping, mass
+    std::vector<double> k(m_stations.size());
+    for (std::size_t s = 0; s < m_stations.size(); ++s)
+        k[s] = action == static_cast<int>(Action::GetInitialStiff)
+                   ? m_stations[s]->initialStiffness()
+                   : m_stations[s]->tangentStiffness();
+    return m_opt.dofs.stiffness(k); // column-major
+}
+
+void OfServer::refuse(OfSocket& socket) {
+    if (m_sizes.dataSize < 1)
+        return;                           // sizes that cannot frame anything: close
+    constexpr double kRefusedIdle = 10.0; // [s] without a frame before a refused session closes
+    const bool generic = m_opt.protocol == OfProtocol::GenericTcp;
+    const std::size_t frameBytes = static_cast<std::size_t>(m_sizes.dataSize) * sizeof(double);
+    std::vector<std::uint8_t> buffer(std::max(frameBytes, kInitLineBytes)), out;
+    std::vector<double> frame;
+    const std::vector<double> nan(static_cast<std::size_t>(m_sizes.dataSize),
+                                  std::numeric_limits<double>::quiet_NaN());
+    std::string why, error;
+    long answered = 0;
+    for (bool framesStarted = false;;) {
+        if (!socket.read(buffer.data(), 8, kRefusedIdle, why))
+            break;
+        const bool isFrame = startsWithAction(buffer.data());
+        if (!isFrame && (!generic || framesStarted))
+            break; // not a frame of these sizes: the stream cannot be followed
+        const std::size_t total = isFrame ? frameBytes : kInitLineBytes;
+        if (total > 8 && !socket.read(buffer.data() + 8, total - 8, kRefusedIdle, why))
+            break;
+        if (!isFrame)
+            continue;
+        framesStarted = true;
+        decodeFrame(buffer.data(), m_sizes.dataSize, frame);
+        const auto action = actionOf(frame[0]);
+        if (!action || *action == Action::Terminate)
+            break;
+        const int code = static_cast<int>(*action);
+        const bool replies = (code >= 6 && code <= 11) ||
+                             (code >= 12 && code <= 15 && !generic && !m_opt.siteServer);
+        if (!replies)
+            continue;
+        if (!encodeFrame(nan, m_sizes.dataSize, out, error) ||
+            !socket.write(out.data(), out.size(), kWriteTimeout, error))
+            break;
+        ++answered;
+    }
+    if (answered > 0)
+        log("refused session " + socket.peer() + " ended; " + std::to_string(answered) +
+            " request(s) answered with NaN");
 }
 
 } // namespace hsmu::comms

@@ -4,22 +4,28 @@
 // journal). One connection at a time, served with blocking calls (comms/openfresco/OfSocket):
 //
 //   header   11 int32 sizes within 10 s of the connect. Accepted when dataSize equals the
-//            server's, ctrl disp = n (the number of specimens, in configuration order), daq
-//            disp / vel / accel / force each 0 or n, daq time 0 or 1, and (element server)
-//            dataSize >= n * n. Otherwise the reason is logged and the connection closed, which
-//            the client sees at once (SimAppControl's probe reports it). Each accepted session
+//            server's, ctrl disp = n (the client's DOFs: one per specimen in configuration
+//            order, or as controller.serverDofs maps them, OfDofMap), daq disp / vel / accel /
+//            force each 0 or n, daq time 0 or 1, and (element server) dataSize >= n * n.
+//            Otherwise the reason (both sides' sizes and the configuration field) is logged and
+//            the session is refused politely: every request that expects a reply is answered
+//            with a frame of NaN (in the client's dataSize) until 99, the peer closes or 10 s
+//            pass without a frame, so that a client that cannot notice a closed socket
+//            (OpenSees spins on one) ends with visibly non-finite results; a client that sends
+//            nothing more (SimAppControl's probe) sees NaN and reports it. Each accepted session
 //            starts from fresh specimens (OpenFresco has no step count to resume from).
 //   init     GenericTCP: 16385-byte init lines may come before the first frame; a message
 //            whose first 8 bytes are not a double holding an action code is such a line
 //            (logged, otherwise ignored).
 //   frames   of dataSize doubles, code in element 0:
-//            3   trial: station i moves to ctrl disp[i]; no reply. GenericTCP (no commit
+//            3   trial: station s moves to d = B u (OfDofMap); no reply. GenericTCP (no commit
 //                action) commits the previous measured trial first.
 //            5   commit every station; no reply.
-//            6   reply [daq disp (measured), vel (0), accel (0), force (measured), time].
+//            6   reply [daq disp (measured, per DOF), vel (0), accel (0), force (B^T f), time].
 //            7-11  reply the daq disp / vel / accel / force / time part alone, at index 0.
-//            12-15 element server: reply the n x n column-major initial stiffness (diagonal
-//                of the laws' initial tangents), tangent stiffness, damping (0), mass (0);
+//            12-15 element server: reply the n x n column-major initial stiffness
+//                (B^T diag(k0) B), tangent stiffness (B^T diag(kt) B, kt the laws' algorithmic
+//                tangent of the last trial), damping (0), mass (0);
 //                a site server sends nothing (as OpenFresco's site servers do).
 //            1, 2, 4  accepted, nothing to do, no reply.
 //            99  ends the session: the server closes the connection and waits for the next.
@@ -29,6 +35,7 @@
 // Thread rules: listen() and run() on one thread; stop() from any thread (and SIGINT/SIGTERM).
 
 #include "comms/controller/ControllerServer.h"
+#include "comms/controller/OfDofMap.h"
 #include "comms/controller/SpecimenStation.h"
 #include "comms/openfresco/OpenFrescoControl.h"
 
@@ -54,6 +61,8 @@ struct OfServerOptions {
     bool realTime = true;
     double rate = 1024.0; ///< loop rate [Hz] (real-time pace)
     bool quiet = false;
+    /// The client's DOFs onto the stations; default (0 specimens): one DOF per station.
+    OfDofMap dofs;
 };
 
 class OfServer {
@@ -76,6 +85,8 @@ public:
 private:
     void serve(of::OfSocket& socket);
     bool acceptHeader(of::OfSocket& socket, std::string& why);
+    /// Answer a refused client's requests with NaN until it ends (see the header).
+    void refuse(of::OfSocket& socket);
     bool trial(const std::vector<double>& frame, std::string& why);
     bool commitAll(std::string& why);
     std::vector<double> daqReply(int first, int last) const;
@@ -88,6 +99,8 @@ private:
     std::atomic<bool> m_stop{false};
     of::OfSizes m_sizes;
     std::vector<MeasurementMsg> m_measured;
+    std::vector<double> m_commanded; ///< per station: the last trial's deformation
+    std::vector<double> m_ctrl;      ///< per DOF: the last trial's ctrl disp
     bool m_haveTrial = false; ///< a measured trial not yet committed
     ControllerStatistics m_stats;
 };

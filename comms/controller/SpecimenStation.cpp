@@ -51,7 +51,7 @@ double SpecimenStation::initialStiffness() const {
 }
 
 double SpecimenStation::tangentStiffness() const {
-    return m_specimen->trueLaw().trialTangent();
+    return m_specimen->trueLaw().algorithmicTangent();
 }
 
 HelloAckMsg SpecimenStation::status() const {

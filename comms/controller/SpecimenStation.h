@@ -71,8 +71,8 @@ public:
     Message reset();
 
     std::uint64_t committedSteps() const { return m_committed; }
-    /// The specimen law's initial tangent and its tangent at the last trial (force per
-    /// deformation): the stiffness an OpenFresco element server reports (actions 12, 13).
+    /// The specimen law's initial tangent and its algorithmic tangent at the last trial (force
+    /// per deformation): the stiffness an OpenFresco element server reports (actions 12, 13).
     double initialStiffness() const;
     double tangentStiffness() const;
     /// Ticks of one integration step (the loop runs at settings.rate).

@@ -1,5 +1,6 @@
 #include "comms/link/ControlFactory.h"
 
+#include "comms/openfresco/AdapterControl.h"
 #include "comms/openfresco/GenericTcpControl.h"
 #include "comms/openfresco/SimAppControl.h"
 
@@ -24,6 +25,8 @@ std::string linkProtocol(const LinkAddress& address, const LinkSpec& link) {
         return "simapp";
     case LinkAddress::Kind::GenericTcp:
         return "generictcp";
+    case LinkAddress::Kind::Adapter:
+        return "adapter";
     case LinkAddress::Kind::Tcp:
         break;
     }
@@ -39,7 +42,7 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
     const std::string protocol = linkProtocol(address, link);
     if (protocol == "builtin")
         return {};
-    if (protocol == "simapp" || protocol == "generictcp") {
+    if (protocol == "simapp" || protocol == "generictcp" || protocol == "adapter") {
         of::OfControlOptions o;
         o.sizes.ctrl = link.ctrlSizes;
         o.sizes.daq = link.daqSizes;
@@ -49,15 +52,17 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
         o.stepDeadline = options.stepDeadline;
         o.connectAttempts = std::max(1, options.reconnectAttempts);
         o.retryDelay = options.reconnectDelay;
-        const bool simapp = protocol == "simapp";
-        return
-            [address, o, simapp](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
-                if (simapp)
-                    return std::make_unique<of::SimAppControl>(address.host, address.port,
-                                                               spec.name, o);
-                return std::make_unique<of::GenericTcpControl>(address.host, address.port,
-                                                               spec.name, o);
-            };
+        return [address, o,
+                protocol](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
+            if (protocol == "simapp")
+                return std::make_unique<of::SimAppControl>(address.host, address.port, spec.name,
+                                                           o);
+            if (protocol == "adapter")
+                return std::make_unique<of::AdapterControl>(address.host, address.port, spec.name,
+                                                            o);
+            return std::make_unique<of::GenericTcpControl>(address.host, address.port, spec.name,
+                                                           o);
+        };
     }
     TcpControlOptions o = options;
     if (o.sessionId == 0)

@@ -9,6 +9,12 @@
 #include <chrono>
 #include <cstdio>
 
+#if defined(__linux__)
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#endif
+
 namespace hsmu::comms::of {
 
 namespace asio = boost::asio;
@@ -63,8 +69,20 @@ struct OfSocket::Impl {
         boost::system::error_code ec;
         socket->set_option(tcp::no_delay(true), ec);
         socket->set_option(asio::socket_base::keep_alive(true), ec);
+        quickAck();
         const auto ep = socket->remote_endpoint(ec);
         peer = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
+    }
+
+    /// Acknowledge what has arrived at once and stay in quick-ACK mode (Linux leaves it again
+    /// on its own, so this is re-armed after every read). OpenSees' and OpenFresco's sockets
+    /// keep Nagle on and write two frames back to back (e.g. [3] then [6]); without an
+    /// immediate ACK of the first, their second waits for our delayed ACK: about 40 ms.
+    void quickAck() {
+#if defined(__linux__) && defined(TCP_QUICKACK)
+        const int one = 1;
+        ::setsockopt(socket->native_handle(), IPPROTO_TCP, TCP_QUICKACK, &one, sizeof one);
+#endif
     }
 
     void abort() {
@@ -106,6 +124,40 @@ std::string OfSocket::peer() const {
 void OfSocket::close() {
     if (d->socket->is_open())
         d->abort();
+}
+
+void OfSocket::closeAfterPeer(double timeout) {
+    if (!isOpen())
+        return;
+    std::uint8_t sink[4096];
+    std::string error;
+    for (;;) {
+        bool done = false;
+        boost::system::error_code result;
+        d->io->restart();
+        d->socket->async_read_some(asio::buffer(sink),
+                                   [&](const boost::system::error_code& ec, std::size_t) {
+                                       result = ec;
+                                       done = true;
+                                   });
+        if (runUntil(*d->io, done, timeout, d->cancel) != Wait::Done) {
+            d->abort(); // no close from the peer in time: an ordinary close
+            return;
+        }
+        if (result == asio::error::eof) {
+            boost::system::error_code ec;
+            d->socket->set_option(asio::socket_base::linger(true, 0), ec);
+            d->socket->close(ec);
+            d->io->restart();
+            d->io->run();
+            d->peer.clear();
+            return;
+        }
+        if (result) {
+            d->abort();
+            return;
+        }
+    }
 }
 
 bool OfSocket::connect(const std::string& host, std::uint16_t port, double timeout,
@@ -212,6 +264,7 @@ bool OfSocket::read(void* data, std::size_t n, double timeout, std::string& erro
                     : "connection lost: " + result.message();
         return false;
     }
+    d->quickAck();
     return true;
 }
 

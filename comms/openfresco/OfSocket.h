@@ -2,9 +2,11 @@
 // OfSocket / OfListener: blocking TCP helpers for the OpenFresco protocols, every call bounded
 // by a deadline (Asio underneath, kept out of this header). TCP_NODELAY is set on every
 // connection, and TCP keep-alive so that a peer whose machine vanished is eventually noticed
-// even when nobody is sending. A read or write that times out, fails or is cancelled closes
-// the socket: the fixed-length OpenFresco stream has no framing to resynchronize on, so a
-// half-read frame must never be followed by another read.
+// even when nobody is sending. After every read (and at connect) TCP_QUICKACK is re-armed
+// (Linux): OpenSees and OpenFresco leave Nagle on and write two frames back to back, and the
+// second would otherwise wait for our delayed ACK of the first (about 40-45 ms per step). A read or
+// write that times out, fails or is cancelled closes the socket: the fixed-length OpenFresco stream
+// has no framing to resynchronize on, so a half-read frame must never be followed by another read.
 // Thread rules: one thread per object. setCancel()'s predicate is polled about every 0.2 s
 // during a wait (a server's stop flag).
 
@@ -36,6 +38,11 @@ public:
     /// Whether the last failed call ran out of time.
     bool timedOut() const;
     void close();
+    /// The end of a session after the client's 99: wait up to timeout [s] for the peer to close
+    /// (data still arriving is discarded), then close with a reset, so that the server's port
+    /// is not left in TIME_WAIT (OpenSees' servers bind without SO_REUSEADDR and could not
+    /// listen on it again for a minute). A peer that does not close in time: a plain close.
+    void closeAfterPeer(double timeout);
     bool isOpen() const;
     /// "ADDR:PORT" of the peer ("" when closed).
     std::string peer() const;

@@ -8,11 +8,12 @@
 #include <cmath>
 #include <cstdio>
 #include <thread>
+#include <utility>
 
 namespace hsmu::comms::of {
 
 const char* ofProtocolName(OfProtocol p) {
-    return p == OfProtocol::SimApp ? "simapp" : "generictcp";
+    return p == OfProtocol::SimApp ? "simapp" : p == OfProtocol::Adapter ? "adapter" : "generictcp";
 }
 
 OpenFrescoControl::OpenFrescoControl(OfProtocol protocol, std::string host, std::uint16_t port,
@@ -21,8 +22,8 @@ OpenFrescoControl::OpenFrescoControl(OfProtocol protocol, std::string host, std:
       m_port(port), m_element(std::move(element)), m_opt(std::move(options)) {}
 
 OpenFrescoControl::~OpenFrescoControl() {
-    if (m_socket->isOpen())
-        sendRequest(static_cast<int>(Action::Terminate), {});
+    if (m_socket->isOpen() && sendRequest(static_cast<int>(Action::Terminate), {}).ok)
+        m_socket->closeAfterPeer(2.0); // the server's port is not left in TIME_WAIT
     m_socket->close();
 }
 
@@ -33,8 +34,9 @@ std::string OpenFrescoControl::where() const {
 }
 
 std::string OpenFrescoControl::description() const {
-    return std::string(m_protocol == OfProtocol::SimApp ? "OpenFresco SimApp"
-                                                        : "OpenFresco GenericTCP") +
+    return std::string(m_protocol == OfProtocol::SimApp    ? "OpenFresco SimApp"
+                       : m_protocol == OfProtocol::Adapter ? "OpenSees adapter element"
+                                                           : "OpenFresco GenericTCP") +
            " link " + where() + " for specimen '" + m_element + "' (" + m_opt.sizes.describe() +
            ")";
 }
@@ -78,19 +80,54 @@ ControlResult OpenFrescoControl::connectOnce() {
             if (!m_socket->write(bytes.data(), bytes.size(), m_opt.stepDeadline, error))
                 return linkFault("sending the init lines: " + error);
         }
+    if (m_protocol == OfProtocol::Adapter) {
+        // No probe: the adapter takes only 3 (then 10) and 99; anything else ends OpenSees.
+        if (m_opt.logConnect)
+            std::fprintf(stderr, "hsmu: %s connected, specimen '%s': %s\n", where().c_str(),
+                         m_element.c_str(), m_opt.sizes.describe().c_str());
+        m_linkError.clear();
+        return ControlResult::success();
+    }
     // The probe: a whole reply of dataSize doubles proves the server took the header.
     if (ControlResult r = sendRequest(static_cast<int>(Action::GetDaqResponse), {}); !r.ok)
         return r;
     m_buffer.resize(static_cast<std::size_t>(m_opt.sizes.dataSize) * sizeof(double));
     if (!m_socket->read(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error)) {
-        const bool refused = m_socket->closedByPeer();
-        return linkFault(refused ? "the server closed the connection after the sizes header (" +
-                                       m_opt.sizes.describe() +
-                                       "): it does not accept these sizes; make controller."
-                                       "dataSize and the sizes match the server's"
-                                 : "no answer to the first getDaqResponse (" +
-                                       m_opt.sizes.describe() + "): " + error +
-                                       "; a server with another dataSize waits for more bytes");
+        // A closed or reset connection: the server refused the header (an OpenFresco element
+        // server exits when the sizes do not fit its element).
+        const bool refused = m_socket->closedByPeer() || error.find("reset") != std::string::npos;
+        const std::string n = std::to_string(m_opt.sizes.ctrlSize(Resp::Disp));
+        return linkFault(
+            refused ? "the server closed the connection after the sizes header (" +
+                          m_opt.sizes.describe() +
+                          "): it does not accept these sizes. This console sends ctrl disp " + n +
+                          " (one DOF); an OpenFresco element server needs ctrl disp, daq disp "
+                          "and daq force equal to its element's DOF count (a twoNodeLink on 2 "
+                          "nodes has 2: its log says \"want: 2 but got: " +
+                          n +
+                          "\"; serve such a specimen by a site server, startSimAppSiteServer, "
+                          "or a one-node expElement generic), a site server its setup's sizes; "
+                          "make controller.dataSize, controller.ctrlSizes and "
+                          "controller.daqSizes match the server's"
+                    : "no answer to the first getDaqResponse (" + m_opt.sizes.describe() +
+                          "): " + error + "; a server with another dataSize waits for more bytes");
+    }
+    decodeFrame(m_buffer.data(), m_opt.sizes.dataSize, m_values);
+    if (std::any_of(m_values.begin(), m_values.end(), [](double x) { return std::isnan(x); }))
+        return linkFault("the server refused the sizes header (" + m_opt.sizes.describe() +
+                         "): it answers NaN (hsmu-controller's polite refusal; its log names "
+                         "the reason); make controller.dataSize and the sizes match the "
+                         "server's");
+    if (m_protocol == OfProtocol::GenericTcp) {
+        m_pairingWarning =
+            where() +
+            ": GenericTCP has no commit; the server must take each trial as final when the "
+            "next one arrives (as hsmu-controller --protocol generictcp and lab GenericTCP "
+            "controllers do). An OpenFresco SimApp site or element server "
+            "(startSimAppSiteServer / startSimAppElemServer) never commits its specimen over "
+            "GenericTCP and every force is silently wrong: use simapp:// for it.";
+        if (m_opt.warnNoCommit)
+            std::fprintf(stderr, "hsmu: WARNING %s\n", m_pairingWarning.c_str());
     }
     if (m_opt.logConnect)
         std::fprintf(stderr, "hsmu: %s connected, specimen '%s': %s\n", where().c_str(),
@@ -109,6 +146,15 @@ ControlResult OpenFrescoControl::prepare(double dt) {
         return ControlResult::fault(where() +
                                     ": the sizes need ctrl disp, daq disp and daq "
                                     "force of at least 1 (" +
+                                    m_opt.sizes.describe() + ")");
+    if (m_protocol == OfProtocol::Adapter &&
+        (m_opt.sizes.daqSize(Resp::Vel) != 0 || m_opt.sizes.daqSize(Resp::Accel) != 0 ||
+         m_opt.sizes.daqSize(Resp::Time) != 0 || m_opt.sizes.ctrlSize(Resp::Disp) != 1 ||
+         m_opt.sizes.daqSize(Resp::Disp) != 1 || m_opt.sizes.daqSize(Resp::Force) != 1))
+        return ControlResult::fault(where() +
+                                    ": OpenSees' adapter element answers [daq disp, daq force] "
+                                    "only; use controller.ctrlSizes {disp 1} and "
+                                    "controller.daqSizes {disp 1, force 1} (" +
                                     m_opt.sizes.describe() + ")");
     m_dt = dt;
     ControlResult r;
@@ -129,9 +175,9 @@ ControlResult OpenFrescoControl::setTarget(double d) {
         return ControlResult::fault(
             "link to " + where() + " is down (" + m_linkError +
             "); OpenFresco protocols cannot resume a lost session: restart the test");
-    if (m_protocol == OfProtocol::GenericTcp && m_measuredUncommitted)
-        return ControlResult::fault(where() +
-                                    ": GenericTCP has no commit, so a measured step cannot be "
+    if (m_protocol != OfProtocol::SimApp && m_measuredUncommitted)
+        return ControlResult::fault(where() + ": " + ofProtocolName(m_protocol) +
+                                    " has no commit, so a measured step cannot be "
                                     "repeated; restart the test");
     const OfSizes& s = m_opt.sizes;
     std::vector<double> ctrl(static_cast<std::size_t>(s.ctrlTotal()), 0.0);
@@ -142,6 +188,7 @@ ControlResult OpenFrescoControl::setTarget(double d) {
     if (ControlResult r = sendRequest(static_cast<int>(Action::SetTrialResponse), ctrl); !r.ok)
         return r;
     m_awaitingMeasurement = true;
+    m_target = d;
     return ControlResult::success();
 }
 
@@ -149,7 +196,9 @@ ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
     if (!m_awaitingMeasurement)
         return ControlResult::fault(where() + ": measure() without a target");
     m_awaitingMeasurement = false;
-    if (ControlResult r = sendRequest(static_cast<int>(Action::GetDaqResponse), {}); !r.ok)
+    const Action ask =
+        m_protocol == OfProtocol::Adapter ? Action::GetForce : Action::GetDaqResponse;
+    if (ControlResult r = sendRequest(static_cast<int>(ask), {}); !r.ok)
         return r;
     std::string error;
     m_buffer.resize(static_cast<std::size_t>(m_opt.sizes.dataSize) * sizeof(double));
@@ -162,7 +211,17 @@ ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
     if (!std::isfinite(d) || !std::isfinite(f))
         return linkFault("the measured response of step " + std::to_string(m_committed + 1) +
                          " is not finite");
-    out.deformation = d;
+    if (d == 0.0 && m_target != 0.0 && !m_zeroDisp) {
+        m_zeroDisp = true;
+        m_notice = "the daq displacement of " + where() + " reads exactly 0 while the target is " +
+                   std::to_string(m_target) +
+                   " (an OpenFresco element server always answers 0): the commanded "
+                   "deformation is used instead wherever it reads 0 (identification, limits, "
+                   "record)";
+        std::fprintf(stderr, "hsmu: WARNING specimen '%s': %s\n", m_element.c_str(),
+                     m_notice.c_str());
+    }
+    out.deformation = m_zeroDisp && d == 0.0 ? m_target : d;
     out.force = f;
     m_measuredUncommitted = true;
     return ControlResult::success();
@@ -177,6 +236,10 @@ ControlResult OpenFrescoControl::commit() {
     m_measuredUncommitted = false;
     ++m_committed;
     return ControlResult::success();
+}
+
+std::string OpenFrescoControl::takeNotice() {
+    return std::exchange(m_notice, std::string());
 }
 
 void OpenFrescoControl::hold(const std::string& reason) {

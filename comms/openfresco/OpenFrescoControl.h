@@ -9,12 +9,18 @@
 // that desynchronizes later. The negotiated sizes are logged on stderr at connect.
 // Per step:
 //   setTarget(d)  [3, d at ctrl disp, zeros, time at ctrl time when sized]   (no reply)
-//   measure()     [6] -> reply: deformation = daq disp[0], force = daq force[0]
+//   measure()     [6] -> reply: deformation = daq disp[0], force = daq force[0]. A daq disp of
+//                 exactly 0 while the target is not 0 is a dead channel (OpenFresco's element
+//                 servers always answer 0: ExperimentalElement::getDisp returns zeros): the
+//                 link warns once (stderr and takeNotice(), which the test records as an
+//                 alarm) and from then on uses the commanded deformation wherever the channel
+//                 reads exactly 0, for identification, limits and the record.
 //   commit()      SimApp: [5] (no reply); GenericTCP has no commit (nothing is sent)
-// The destructor sends [99] (terminate) on an open link. Every read and write has a deadline;
-// a timeout, a closed or vanished peer or a malformed reply closes the link and returns a
-// fault (the test holds with every committed step kept). OpenFresco has no session or step
-// count to resume from, so a lost link is not reconnected: resume() on a closed link leaves
+// The destructor sends [99] (terminate) on an open link and waits up to 2 s for the server to
+// close first (OfSocket::closeAfterPeer: its port stays reusable). Every read and write has a
+// deadline; a timeout, a closed or vanished peer or a malformed reply closes the link and
+// returns a fault (the test holds with every committed step kept). OpenFresco has no session or
+// step count to resume from, so a lost link is not reconnected: resume() on a closed link leaves
 // setTarget() reporting it, and the test is restarted instead.
 // Thread rules: one thread at a time (the test worker).
 
@@ -30,7 +36,8 @@ namespace hsmu::comms::of {
 
 class OfSocket;
 
-enum class OfProtocol { SimApp, GenericTcp };
+/// SimApp and GenericTCP (OpenFresco), Adapter (OpenSees' adapter element: AdapterControl).
+enum class OfProtocol { SimApp, GenericTcp, Adapter };
 const char* ofProtocolName(OfProtocol p);
 
 struct OfControlOptions {
@@ -41,6 +48,9 @@ struct OfControlOptions {
     int connectAttempts = 3;            ///< attempts in prepare() while nobody listens
     double retryDelay = 0.5;            ///< [s] between them
     bool logConnect = true;             ///< one line on stderr with the negotiated sizes
+    /// GenericTCP: warn on stderr at connect that the server must commit on its own (a SimApp
+    /// site server never does: docs/openfresco.md "Pairings that cannot be right").
+    bool warnNoCommit = true;
 };
 
 class OpenFrescoControl : public ExperimentalControl {
@@ -54,9 +64,17 @@ public:
     ControlResult commit() override;
     void hold(const std::string& reason) override;
     void resume() override;
+    /// Once, when the daq displacement channel is found dead (see the header).
+    std::string takeNotice() override;
+    /// Whether the daq displacement read exactly 0 while the target was not 0: from then on a
+    /// reading of exactly 0 is replaced by the commanded deformation.
+    bool commandedDeformationUsed() const { return m_zeroDisp; }
 
     bool linkUp() const;
     const std::string& linkError() const { return m_linkError; }
+    /// After a GenericTCP connect: the warning that the server must commit on its own (no
+    /// message can tell a GenericTCP controller from a SimApp site server); "" for SimApp.
+    const std::string& pairingWarning() const { return m_pairingWarning; }
     std::uint64_t committedSteps() const { return m_committed; }
     OfProtocol protocol() const { return m_protocol; }
     /// "simapp://HOST:PORT" or "generictcp://HOST:PORT".
@@ -85,6 +103,10 @@ private:
     bool m_connectFailed = false;
     std::string m_holdReason;
     std::string m_linkError;
+    std::string m_pairingWarning;
+    std::string m_notice;
+    bool m_zeroDisp = false;
+    double m_target = 0.0;
     std::vector<std::uint8_t> m_buffer;
     std::vector<double> m_values;
 };

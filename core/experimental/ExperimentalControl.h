@@ -42,6 +42,9 @@ public:
     virtual void hold(const std::string& reason) = 0;
     /// Leave the hold (operator action).
     virtual void resume() = 0;
+    /// A warning the control raised since the last call (e.g. a sensor channel it stopped
+    /// trusting), "" when none; the test records it as an alarm after the step's commit.
+    virtual std::string takeNotice() { return {}; }
 };
 
 } // namespace hsmu

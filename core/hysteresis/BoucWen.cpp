@@ -149,6 +149,31 @@ LawStatus BoucWen::setTrialDeformation(double u) {
     return LawStatus::Ok;
 }
 
+double BoucWen::algorithmicTangent() const {
+    const BoucWenParameters& p = m_p;
+    const double scale = p.fRef / p.uRef;
+    const double z = m_trial.z;
+    if (z == 0.0)
+        return scale * p.k0;
+    const double dx = (m_uTrial - m_uCommitted) / p.uRef;
+    const double c = (1.0 - p.alpha) * p.k0; // de = c z dx
+    const double e = m_trial.e;
+    const double a = p.A0 - p.deltaA * e, nu = 1.0 + p.deltaNu * e, eta = 1.0 + p.deltaEta * e;
+    const double psi = p.gamma + p.beta * (dx * z > 0.0 ? 1.0 : -1.0);
+    const double zn = std::pow(std::abs(z), p.n);
+    const double zn1 = p.n * std::pow(std::abs(z), p.n - 1.0) * (z > 0.0 ? 1.0 : -1.0);
+    const double phi = a - zn * psi * nu;
+    // dPhi/de and deta/de (A, nu, eta are linear in e)
+    const double phiE = -p.deltaA - zn * psi * p.deltaNu;
+    const double etaE = p.deltaEta;
+    const double q = phiE / eta - phi * etaE / (eta * eta); // d(Phi / eta)/de
+    // r = z - z0 - dx Phi(z, e) / eta(e), e = e0 + c dx z
+    const double drdz = 1.0 - dx * (-zn1 * psi * nu / eta + q * c * dx);
+    const double drdx = -phi / eta - dx * q * c * z;
+    const double dzdx = -drdx / drdz;
+    return scale * p.k0 * (p.alpha + (1.0 - p.alpha) * dzdx);
+}
+
 double BoucWen::initialTangent() const {
     return m_p.k0 * (m_p.alpha + (1.0 - m_p.alpha) * m_p.A0) * m_p.fRef / m_p.uRef;
 }

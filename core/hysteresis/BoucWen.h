@@ -134,6 +134,15 @@ public:
     double trialForce() const override { return m_fTrial; }
     /// Computed on demand (a std::pow): explicit integrators never ask for it.
     double trialTangent() const override { return tangentOf(m_trial, m_dirTrial); }
+    /// d(trial force)/d(trial deformation) through the backward-Euler map of one increment
+    /// from the committed (z0, e0), implicit in z with e = e0 + (1 - alpha) k0 dx z:
+    ///   r(z, dx) = z - z0 - dx Phi / eta,  Phi = A - |z|^n Psi nu,  Psi = gamma + beta s,
+    ///   dz/dx = -(dr/ddx) / (dr/dz)  (both partials include e's dependence on z and dx),
+    ///   tangent = fRef / uRef k0 [alpha + (1 - alpha) dz/dx];  z = 0: fRef / uRef k0,
+    /// with s = +1 when dx z > 0, else -1 (so gamma - beta for dx = 0), as OpenSees'
+    /// BoucWenMaterial::getTangent. An increment the law subdivided uses the same one-step
+    /// formula from the committed state (then an approximation of the sub-stepped map).
+    double algorithmicTangent() const override;
     double committedDeformation() const override { return m_uCommitted; }
     double committedForce() const override { return m_fCommitted; }
     double initialTangent() const override;

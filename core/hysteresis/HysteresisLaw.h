@@ -41,6 +41,11 @@ public:
     virtual double trialForce() const = 0;
     /// Tangent dF/du at the trial state (force units per deformation unit).
     virtual double trialTangent() const = 0;
+    /// The algorithmic (consistent) tangent: the derivative of the trial force with respect to
+    /// the trial deformation through the law's integration from the committed state, as
+    /// OpenSees' uniaxial material getTangent() defines it (what an OpenFresco element server
+    /// reports for action 13). Equal to trialTangent() for laws whose update is exact.
+    virtual double algorithmicTangent() const { return trialTangent(); }
 
     virtual double committedDeformation() const = 0;
     virtual double committedForce() const = 0;

@@ -187,6 +187,9 @@ HybridTest::StepResult HybridTest::step()
         return StepResult::Held;
     }
     ++m_step;
+    for (ExperimentalElement* x : m_specimens)
+        if (std::string notice = x->control().takeNotice(); !notice.empty())
+            raise(AlarmSeverity::Warning, AlarmKind::ControlFault, x->name() + ": " + notice);
     std::optional<std::string> updaterHold;
     if (m_updater)
         updaterHold = m_updater->afterCommit(m_step, time(), *m_structure, m_alarms,

@@ -421,8 +421,9 @@ private slots:
         SimAppControl c("127.0.0.1", ctl.port(), "Element 1", ofOptions(128));
         const ControlResult r = c.prepare(0.01);
         QVERIFY(!r.ok);
+        // The server answers the probe with NaN (a polite refusal) instead of closing.
         QVERIFY2(r.reason.find("dataSize 128") != std::string::npos &&
-                     r.reason.find("does not accept these sizes") != std::string::npos,
+                     r.reason.find("refused the sizes header") != std::string::npos,
                  r.reason.c_str());
         QVERIFY(!c.linkUp());
         // Sizes that do not match the specimens (2 ctrl displacements for 1 specimen).
@@ -431,8 +432,10 @@ private slots:
         SimAppControl two("127.0.0.1", ctl.port(), "Element 1", o);
         QVERIFY(!two.prepare(0.01).ok);
         ctl.stop();
-        QVERIFY2(ctl.log().contains("dataSize 128, this server uses 256") &&
-                     ctl.log().contains("ctrl disp must be 1"),
+        QVERIFY2(ctl.log().contains("the client's dataSize is 128, this server's 256") &&
+                     ctl.log().contains("the client has 2 control DOFs (ctrl disp 2), this "
+                                        "server serves 1 (1 DOF per specimen (1 specimen))") &&
+                     ctl.log().contains("controller.serverDofs"),
                  qPrintable(ctl.log()));
     }
 

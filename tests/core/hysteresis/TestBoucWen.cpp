@@ -57,6 +57,7 @@ private slots:
     void normalizationEqualsScaledParameters();
     void invalidInputKeepsCommittedState();
     void tangentMatchesFiniteDifference();
+    void algorithmicTangentIsTheDerivativeOfTheStep();
     void parametersByName();
 };
 
@@ -340,6 +341,40 @@ void TestBoucWen::tangentMatchesFiniteDifference() {
     law.commit();
     QVERIFY(law.setTrialDeformation(u - h) == LawStatus::Ok);
     QVERIFY(std::abs(law.trialTangent() - kUnloading) <= 1e-5 * kUnloading);
+}
+
+void TestBoucWen::algorithmicTangentIsTheDerivativeOfTheStep() {
+    // The consistent tangent is d F(u0 + dx) / d dx of one (unsubdivided) backward-Euler step
+    // from the committed state, for finite dx (where it differs from the continuous slope):
+    // a central difference of two trials at dx +- h, h = 1e-6 dx, has error O(h^2) plus
+    // round-off eps F / h, both below 1e-6 of the tangent. Degradation on (deltaNu, deltaEta),
+    // so e's dependence on z and dx counts.
+    const BoucWenParameters p = paperParameters(0.05, 0.05);
+    BoucWen law(p);
+    for (int i = 1; i <= 20; ++i) {
+        QVERIFY(law.setTrialDeformation(i * 0.01 * p.uRef) == LawStatus::Ok);
+        law.commit();
+    }
+    const double u0 = law.committedDeformation();
+    int differs = 0;
+    for (double dx : {0.02, 0.05, -0.02, -0.1}) {
+        const double u = u0 + dx * p.uRef, h = 1e-6 * std::abs(dx) * p.uRef;
+        QVERIFY(law.setTrialDeformation(u + h) == LawStatus::Ok);
+        const double fPlus = law.trialForce();
+        QVERIFY(law.setTrialDeformation(u - h) == LawStatus::Ok);
+        const double fMinus = law.trialForce();
+        QVERIFY(law.setTrialDeformation(u) == LawStatus::Ok);
+        const double k = law.algorithmicTangent(), fd = (fPlus - fMinus) / (2.0 * h);
+        QVERIFY2(std::abs(fd - k) <= 1e-6 * std::abs(k),
+                 qPrintable(QString("dx %1: %2 vs %3").arg(dx).arg(k).arg(fd)));
+        if (std::abs(law.trialTangent() - k) > 1e-3 * std::abs(k))
+            ++differs; // the continuous slope is another number for a finite step
+    }
+    QVERIFY(differs > 0);
+    // Virgin state, z = 0 after a zero trial: k0 (OpenSees' convention).
+    BoucWen fresh(p);
+    QVERIFY(fresh.setTrialDeformation(0.0) == LawStatus::Ok);
+    QCOMPARE(fresh.algorithmicTangent(), p.k0 * p.fRef / p.uRef);
 }
 
 void TestBoucWen::parametersByName() {

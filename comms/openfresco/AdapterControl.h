@@ -1,0 +1,31 @@
+#pragma once
+// AdapterControl: the console as the client of OpenSees' `adapter` element (OpenSees listens:
+// `element adapter TAG -node ... -dof ... -stif KB PORT`), so that a numerical substructure
+// living in an OpenSees model is driven like any site and its restoring force enters the
+// console's equation of motion. The adapter imposes the client's ctrl disp on its DOFs through
+// the penalty stiffness KB and, one analysis step later, reports [daq disp, daq force] of the
+// converged state. Its exact action sequence, which this client keeps:
+//   connect, sizes header (ctrl disp 1, daq disp 1, daq force 1; no probe: the adapter
+//   accepts nothing else before the first trial)
+//   per step  setTarget(d): [3, d]   measure(): [10] -> [daq disp, daq force]   commit(): nothing
+//   end       [99] (the adapter then ends OpenSees: "The Simulation has successfully completed")
+// Any other action makes the adapter exit OpenSees ("wrong action received: expecting 3"). A
+// step is final once the next trial is sent (no commit, no revert): a measured step cannot be
+// repeated after a hold. The measured deformation is the adapter's daq disp, which differs
+// from the target by force / KB, and the force KB (d - db) carries the rounding of db (KB
+// ulp(d)): KB about 1e10 balances the two (3e-8 kN against the in-process law). OpenSees'
+// `analyze N` must have at least as many steps as the console's test. See OpenFrescoControl.
+
+#include "comms/openfresco/OpenFrescoControl.h"
+
+namespace hsmu::comms::of {
+
+class AdapterControl final : public OpenFrescoControl {
+public:
+    AdapterControl(std::string host, std::uint16_t port, std::string element,
+                   OfControlOptions options)
+        : OpenFrescoControl(OfProtocol::Adapter, std::move(host), port, std::move(element),
+                            std::move(options)) {}
+};
+
+} // namespace hsmu::comms::of
