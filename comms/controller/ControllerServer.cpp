@@ -60,7 +60,7 @@ struct ControllerServer::Impl final : SessionHost {
                     sessions.insert(s);
                     s->start();
                     if (sessions.size() > kMaxConnections)
-                        s->refuse({ErrorCode::Busy, "busy: too many connections"});
+                        s->refuse({ErrorCode::Busy, "too many connections"});
                 }
                 accept();
             });
@@ -91,7 +91,7 @@ struct ControllerServer::Impl final : SessionHost {
                           "this controller has no specimen named '" + hello.element + "'");
         if (hasOwner && owner != hello.sessionId && ownerConnected())
             return refuse(ErrorCode::Busy,
-                          "busy: another console session is running a test on this controller "
+                          "another console session is running a test on this controller "
                           "(one session at a time)");
         if (ControllerSession* old = stationSession[static_cast<std::size_t>(index)]) {
             log("connection " + old->peer() + " replaced by " + s.peer());
