@@ -52,7 +52,7 @@ struct RecordStart {
 class RecordWriter final : public StepObserver {
 public:
     static constexpr double kFlushInterval = 0.5; ///< [s] of wall time
-    static constexpr int kMaxBufferedRows = 16384;
+    static constexpr int kMaxBufferedRows = 500; // crash safety: <= 1,000 rows behind steps.csv
 
     /// Creates (truncates) path. Throws RecordError naming the file on failure.
     RecordWriter(const std::string& path, const RunLayout& layout, const RecordStart& start);
