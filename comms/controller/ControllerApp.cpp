@@ -4,6 +4,8 @@
 #include "core/config/ConfigLoader.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 
 namespace hsmu::comms {
 
@@ -11,8 +13,38 @@ ControllerApp::ControllerApp(ControllerCommandLine commandLine) : m_cmd(std::mov
 
 ControllerApp::~ControllerApp() = default;
 
+namespace {
+
+/// The token: the first line of tokenFile, else HSMU_CONTROLLER_TOKEN, else "" (none).
+bool readToken(const std::string& tokenFile, std::string& token, std::string& error) {
+    token.clear();
+    if (!tokenFile.empty()) {
+        std::ifstream in(tokenFile);
+        if (!in) {
+            error = tokenFile + ": cannot read the token file (--token-file)";
+            return false;
+        }
+        std::getline(in, token);
+        while (!token.empty() && (token.back() == '\r' || token.back() == ' '))
+            token.pop_back();
+        if (token.empty()) {
+            error = tokenFile + ": the token file's first line is empty (--token-file)";
+            return false;
+        }
+        return true;
+    }
+    if (const char* env = std::getenv("HSMU_CONTROLLER_TOKEN"))
+        token = env;
+    return true;
+}
+
+} // namespace
+
 bool ControllerApp::start(std::string& error) {
     std::vector<std::unique_ptr<SpecimenStation>> stations;
+    std::string token;
+    if (!readToken(m_cmd.tokenFile, token, error))
+        return false;
     ControllerSettings settings;
     std::string protocol = m_cmd.protocol;
     int dataSize = m_cmd.dataSize;
@@ -86,9 +118,9 @@ bool ControllerApp::start(std::string& error) {
         o.rate = settings.rate;
         o.quiet = m_cmd.quiet;
         o.dofs = dofs;
-        if (!m_cmd.token.empty())
-            std::fprintf(stderr, "hsmu-controller: --token is ignored: the OpenFresco protocols "
-                                 "carry no token\n");
+        if (!token.empty())
+            std::fprintf(stderr, "hsmu-controller: the token is ignored: the OpenFresco "
+                                 "protocols carry no token\n");
         if (m_cmd.realTimePriority > 0)
             std::fprintf(stderr, "hsmu-controller: --realtime-priority applies to the native "
                                  "protocol only; ignored\n");
@@ -100,7 +132,7 @@ bool ControllerApp::start(std::string& error) {
         ControllerServerOptions o;
         o.bind = m_cmd.bind;
         o.port = m_cmd.port;
-        o.token = m_cmd.token;
+        o.token = token;
         o.idleTimeout = settings.idleTimeout;
         o.rate = settings.rate;
         o.realTime = !m_cmd.fast;

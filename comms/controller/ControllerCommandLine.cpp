@@ -6,7 +6,7 @@ namespace hsmu::comms {
 
 const char* ControllerCommandLine::usage() {
     return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR] "
-           "[--pace realtime|fast] [--token T] [--state FILE] [--quiet]\n"
+           "[--pace realtime|fast] [--token-file F] [--state FILE] [--quiet]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P]\n"
            "  --config FILE   the console's test configuration (JSON); its experimental\n"
@@ -14,7 +14,9 @@ const char* ControllerCommandLine::usage() {
            "  --port PORT     TCP port, 0 = any free port (printed on stdout)\n"
            "  --bind ADDR     address to listen on (default 127.0.0.1)\n"
            "  --pace P        realtime (wall clock, default) or fast (simulated clock)\n"
-           "  --token T       shared secret the console's hello must carry\n"
+           "  --token-file F  file holding the shared secret the console's hello must carry\n"
+           "                  (or the environment variable HSMU_CONTROLLER_TOKEN; never an\n"
+           "                  argument: arguments show in ps)\n"
            "  --state FILE    journal of committed steps: a restart continues the specimen\n"
            "  --quiet         no session log on stderr\n"
            "  --protocol P    native (default), simapp (OpenFresco SimApp element server) or\n"
@@ -83,7 +85,11 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
             if (!value(c.bind))
                 return std::nullopt;
         } else if (a == "--token") {
-            if (!value(c.token))
+            error = "--token is not accepted: arguments show in ps; put the token in a file "
+                    "(--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN";
+            return std::nullopt;
+        } else if (a == "--token-file") {
+            if (!value(c.tokenFile))
                 return std::nullopt;
         } else if (a == "--state") {
             if (!value(c.state))

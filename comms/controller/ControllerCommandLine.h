@@ -2,12 +2,14 @@
 // ControllerCommandLine: the arguments of hsmu-controller.
 //
 //   hsmu-controller --config FILE --port PORT [--bind ADDR] [--pace realtime|fast]
-//                   [--token T] [--state FILE] [--quiet]
+//                   [--token-file F] [--state FILE] [--quiet]
 //                   [--protocol native|simapp|generictcp] [--data-size N] [--simapp-site]
 //                   [--realtime-priority P]
 //
 // --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
 // --bind defaults to 127.0.0.1: exposing the controller is an explicit choice.
+// The token comes from --token-file (its first line) or HSMU_CONTROLLER_TOKEN, never from an
+// argument (ps shows arguments to every user); --token is refused with that sentence.
 
 #include <cstdint>
 #include <optional>
@@ -20,7 +22,7 @@ struct ControllerCommandLine {
     std::string bind = "127.0.0.1";
     std::uint16_t port = 0;
     bool fast = false; ///< --pace fast: simulated clock (as fast as possible)
-    std::string token;
+    std::string tokenFile; ///< --token-file: the token is its first line
     std::string state;
     bool quiet = false;
     bool help = false;

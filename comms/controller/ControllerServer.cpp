@@ -10,6 +10,9 @@
 #include <cstdio>
 #include <cstring>
 
+#include <deque>
+#include <map>
+
 #include <pthread.h>
 #include <sched.h>
 #include <set>
@@ -20,7 +23,14 @@ namespace asio = boost::asio;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-constexpr std::size_t kMaxConnections = 16;
+/// Connections that have not been admitted yet (no valid hello): past this many, the oldest
+/// is closed for the newcomer, so idle strangers can never lock out a token holder (each
+/// must send its hello within 5 s anyway). Admitted connections are not counted.
+constexpr std::size_t kMaxPending = 16;
+/// Failed tokens: at most kMaxTokenFailures per peer address in kTokenWindow; past that the
+/// address's hellos are refused without comparing the token until the window has passed.
+constexpr int kMaxTokenFailures = 5;
+constexpr auto kTokenWindow = std::chrono::seconds(10);
 constexpr auto kSpin = std::chrono::microseconds(100); // real-time pace: see waitTick()
 }
 
@@ -32,6 +42,8 @@ struct ControllerServer::Impl final : SessionHost {
     asio::signal_set signals{io};
     asio::steady_timer ticker{io};
     std::set<std::shared_ptr<ControllerSession>> sessions;
+    std::deque<std::weak_ptr<ControllerSession>> pending; // accepted, not admitted, oldest first
+    std::map<std::string, std::deque<Clock::time_point>> tokenFailures; // per peer address
     std::vector<ControllerSession*> stationSession; // the admitted connection per station
     bool hasOwner = false;
     std::uint64_t owner = 0;
@@ -58,12 +70,53 @@ struct ControllerServer::Impl final : SessionHost {
                 if (!ec) {
                     auto s = std::make_shared<ControllerSession>(std::move(socket), *this);
                     sessions.insert(s);
+                    pending.push_back(s);
                     s->start();
-                    if (sessions.size() > kMaxConnections)
-                        s->refuse({ErrorCode::Busy, "busy: too many connections"});
+                    prunePending();
                 }
                 accept();
             });
+    }
+
+    void prunePending() {
+        std::size_t live = 0;
+        for (auto it = pending.begin(); it != pending.end();) {
+            const auto s = it->lock();
+            if (!s || s->admitted()) {
+                it = pending.erase(it);
+                continue;
+            }
+            ++live;
+            ++it;
+        }
+        while (live > kMaxPending && !pending.empty()) {
+            if (const auto oldest = pending.front().lock()) {
+                log("too many connections without a hello: closing " + oldest->peer());
+                oldest->refuse({ErrorCode::Busy, "too many connections without a hello"});
+                --live;
+            }
+            pending.pop_front();
+        }
+    }
+
+    static std::string addressOf(const std::string& peer) {
+        const auto colon = peer.rfind(':');
+        return colon == std::string::npos ? peer : peer.substr(0, colon);
+    }
+
+    /// Whether this address has used up its failed tokens; forgets failures past the window.
+    bool tokenLocked(const std::string& address) {
+        auto& q = tokenFailures[address];
+        const auto now = Clock::now();
+        while (!q.empty() && now - q.front() > kTokenWindow)
+            q.pop_front();
+        if (q.empty())
+            tokenFailures.erase(address);
+        return q.size() >= std::size_t(kMaxTokenFailures);
+    }
+
+    void dropped(ControllerSession& s, const std::string& why) override {
+        log("dropped " + s.peer() + ": " + why);
     }
 
     bool ownerConnected() const {
@@ -80,8 +133,17 @@ struct ControllerServer::Impl final : SessionHost {
             log("refused " + s.peer() + ": " + why);
             return std::optional<ErrorMsg>(ErrorMsg{c, std::move(why)});
         };
-        if (!opt.token.empty() && hello.token != opt.token)
-            return refuse(ErrorCode::Unauthorized, "wrong token");
+        if (!opt.token.empty()) {
+            const std::string address = addressOf(s.peer());
+            if (tokenLocked(address))
+                return refuse(ErrorCode::Unauthorized,
+                              "too many wrong tokens from " + address + "; wait " +
+                                  std::to_string(kTokenWindow.count()) + " s");
+            if (hello.token != opt.token) {
+                tokenFailures[address].push_back(Clock::now());
+                return refuse(ErrorCode::Unauthorized, "wrong token");
+            }
+        }
         int index = hello.element.empty() ? 0 : -1;
         for (std::size_t i = 0; i < stations.size() && index < 0; ++i)
             if (stations[i]->name() == hello.element)
@@ -91,7 +153,7 @@ struct ControllerServer::Impl final : SessionHost {
                           "this controller has no specimen named '" + hello.element + "'");
         if (hasOwner && owner != hello.sessionId && ownerConnected())
             return refuse(ErrorCode::Busy,
-                          "busy: another console session is running a test on this controller "
+                          "another console session is running a test on this controller "
                           "(one session at a time)");
         if (ControllerSession* old = stationSession[static_cast<std::size_t>(index)]) {
             log("connection " + old->peer() + " replaced by " + s.peer());

@@ -128,6 +128,15 @@ void ControllerSession::send(const Message& m) {
         return; // nothing follows a refusal
     std::vector<std::uint8_t> bytes;
     encodeFrame(m, m_sequence++, bytes);
+    if (m_queuedBytes + bytes.size() > kMaxQueuedBytes) {
+        // The client does not read its replies (e.g. heartbeats sent, never read): drop it
+        // rather than let its queue grow without bound.
+        m_host.dropped(*this, "does not read its replies (send queue past " +
+                                  std::to_string(kMaxQueuedBytes / 1024) + " KiB)");
+        close();
+        return;
+    }
+    m_queuedBytes += bytes.size();
     m_writes.push_back(std::move(bytes));
     write();
 }
@@ -164,6 +173,7 @@ void ControllerSession::write() {
                 self->close();
                 return;
             }
+            self->m_queuedBytes -= self->m_writes.front().size();
             self->m_writes.pop_front();
             if (self->m_writes.empty() && self->m_closeAfterWrite)
                 self->finish();
@@ -181,6 +191,7 @@ void ControllerSession::close() {
     m_socket.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
     m_socket.close(ec);
     m_writes.clear();
+    m_queuedBytes = 0;
     m_host.closed(*this);
 }
 

@@ -7,6 +7,9 @@
 // and its replies sent back; Heartbeat is echoed here; silence past the idle timeout, a
 // malformed frame or Bye closes it. A frame that must close the connection (Error with a
 // closing code) is written completely before the socket is shut down.
+// Bounded: replies wait in a send queue of at most kMaxQueuedBytes; a client that does not
+// read its replies (the queue would grow past it) is dropped, so it cannot grow the
+// controller's memory (docs/protocol.md, "Resource limits").
 // Thread rules: the controller's single io thread.
 
 #include "comms/protocol/FrameDecoder.h"
@@ -37,10 +40,15 @@ public:
     /// The connection is gone (called once).
     virtual void closed(ControllerSession& s) = 0;
     virtual double idleTimeout() const = 0;
+    /// The session is about to be closed for misbehaving (a log line; closed() follows).
+    virtual void dropped(ControllerSession& s, const std::string& why) = 0;
 };
 
 class ControllerSession : public std::enable_shared_from_this<ControllerSession> {
 public:
+    /// [bytes] the send queue's cap (a few thousand frames: far more than any console lags).
+    static constexpr std::size_t kMaxQueuedBytes = 256 * 1024;
+
     ControllerSession(boost::asio::ip::tcp::socket socket, SessionHost& host);
     void start();
     void send(const Message& m);
@@ -68,6 +76,7 @@ private:
     FrameDecoder m_decoder;
     std::array<std::uint8_t, 8192> m_readBuffer{};
     std::deque<std::vector<std::uint8_t>> m_writes;
+    std::size_t m_queuedBytes = 0;
     bool m_writing = false;
     bool m_closeAfterWrite = false;
     bool m_closed = false;

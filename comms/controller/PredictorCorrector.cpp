@@ -17,6 +17,10 @@ void PredictorCorrector::setIncrementLimit(double limit) {
     m_limit = std::isfinite(limit) && limit > 0.0 ? limit : 0.0;
 }
 
+void PredictorCorrector::setDeformationLimit(double limit) {
+    m_bound = std::isfinite(limit) && limit > 0.0 ? limit : 0.0;
+}
+
 void PredictorCorrector::beginStep(double c, double h0, double h1, double h2) {
     m_command = c;
     m_h0 = h0;
@@ -50,6 +54,8 @@ void PredictorCorrector::stop() {
 void PredictorCorrector::moveTo(double c) {
     if (m_limit > 0.0)
         c = std::clamp(c, m_h0 - m_limit, m_h0 + m_limit);
+    if (m_bound > 0.0)
+        c = std::clamp(c, -m_bound, m_bound);
     m_velocity = c - m_command;
     m_command = c;
 }

@@ -41,6 +41,9 @@ public:
     void setHoldRamp(int ticks);
     /// |command - h0| <= limit until the target is reached (infinite or NaN: no limit).
     void setIncrementLimit(double limit);
+    /// |command| <= limit on every tick (the interlock's deformation limit; infinite, NaN or
+    /// <= 0: no bound). A prediction or a correction that would overshoot saturates there.
+    void setDeformationLimit(double limit);
     /// Start a step from the command c with committed targets h0 (last), h1, h2.
     void beginStep(double c, double h0, double h1, double h2);
     /// The step's target arrived: start (or restart) the correction toward it.
@@ -73,6 +76,7 @@ private:
     double m_resumeVelocity = 0.0; ///< v at setTarget after late ticks (smooth resumption)
     bool m_smooth = false;         ///< this correction resumes from a late step
     double m_limit = 0.0;          ///< increment limit (0: none)
+    double m_bound = 0.0;          ///< deformation limit |command| (0: none)
     double m_h0 = 0.0, m_h1 = 0.0, m_h2 = 0.0;
 };
 

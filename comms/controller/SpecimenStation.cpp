@@ -17,6 +17,18 @@ double tighter(double a, double b) {
     return aOn ? a : bOn ? b : std::numeric_limits<double>::infinity();
 }
 
+/// The limits no client can loosen: the element's `limits` and the specimen's `interlock`,
+/// each the tighter of the two.
+SafetyLimits ownLimits(const ElementSpec& spec) {
+    const SafetyLimits& a = spec.limits;
+    const SafetyLimits& b = spec.specimen.options.interlock;
+    SafetyLimits l;
+    l.maxDeformation = tighter(a.maxDeformation, b.maxDeformation);
+    l.maxForce = tighter(a.maxForce, b.maxForce);
+    l.maxIncrement = tighter(a.maxIncrement, b.maxIncrement);
+    return l;
+}
+
 ErrorMsg error(ErrorCode code, std::string reason) {
     return ErrorMsg{code, std::move(reason)};
 }
@@ -28,7 +40,9 @@ SpecimenStation::SpecimenStation(int index, const ElementSpec& spec,
                                  StateJournal* journal)
     : m_index(index), m_spec(spec), m_settings(settings), m_pace(pace), m_journal(journal),
       m_actuator(spec.specimen.options.actuator, settings.rate),
-      m_limits(spec.specimen.options.interlock) {
+      m_limits(ownLimits(spec)) {
+    m_pc.setDeformationLimit(m_limits.maxDeformation);
+    m_pc.setIncrementLimit(m_limits.maxIncrement);
     makeSpecimen();
 }
 
@@ -124,7 +138,9 @@ bool SpecimenStation::replay(const JournalRecord& r, std::string& error) {
 Message SpecimenStation::configure(const ConfigureMsg& m) {
     if (!(m.dt > 0.0) || !std::isfinite(m.dt))
         return error(ErrorCode::ProtocolViolation, "configure: dt must be a positive number");
-    const SafetyLimits& own = m_spec.specimen.options.interlock;
+    // A client may only tighten the configuration's limits: a limit of 0, a negative, NaN or
+    // infinite one leaves the configuration's in force.
+    const SafetyLimits own = ownLimits(m_spec);
     m_limits.maxDeformation = tighter(own.maxDeformation, m.maxDeformation);
     m_limits.maxForce = tighter(own.maxForce, m.maxForce);
     m_limits.maxIncrement = tighter(own.maxIncrement, m.maxIncrement);
@@ -143,6 +159,7 @@ Message SpecimenStation::configure(const ConfigureMsg& m) {
     m_pc.setTiming(m_settings.ticksPerStep(m_dt), m_settings.predictTicks(m_dt));
     m_pc.setHoldRamp(m_settings.holdRampTicks());
     m_pc.setIncrementLimit(m_limits.maxIncrement);
+    m_pc.setDeformationLimit(m_limits.maxDeformation);
     if (!m_configured) {
         m_configured = true;
         if (!m_trial.valid)
@@ -156,8 +173,10 @@ void SpecimenStation::beginStep() {
 }
 
 std::optional<Message> SpecimenStation::advance() {
-    m_pc.tick();
-    const double a = m_actuator.tick(m_pc.command());
+    const double c = m_pc.tick();
+    m_peakCommand = std::isfinite(c) ? std::max(m_peakCommand, std::abs(c))
+                                     : std::numeric_limits<double>::infinity();
+    const double a = m_actuator.tick(c);
     const double limit = m_limits.maxDeformation;
     if (!std::isfinite(a) || (limit > 0.0 && std::isfinite(limit) && std::abs(a) > limit)) {
         char buf[160];

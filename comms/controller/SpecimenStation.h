@@ -17,8 +17,10 @@
 // ends: a law's trial always starts from its committed state (HysteresisLaw), so with an ideal
 // actuator every measurement equals the in-process VirtualSpecimen's for the same targets.
 //
-// Interlock (SafetyLimits; the specimen section's `interlock`, tightened by the limits the
-// console configures): a target past the deformation or increment limit (increment from the
+// Interlock (SafetyLimits): the element's `limits` and the specimen's `interlock` (the
+// tighter of each), which no client can loosen: Configure may only tighten them (a limit of
+// 0, negative, NaN or infinite leaves the configuration's). The predictor-corrector's command
+// saturates at the deformation limit, so no command ever leaves it. A target past the deformation or increment limit (increment from the
 // last committed target), an actuator position past the deformation limit at any tick, or a
 // measured force past the force limit -> the station holds and answers Error(Interlock)
 // whose text names the limit. Targets are refused (Error(Holding)) until Resume.
@@ -81,6 +83,12 @@ public:
     const std::string& holdReason() const { return m_holdReason; }
     long totalHeldTicks() const { return m_totalHeld; }
     int interlockTrips() const { return m_trips; }
+    /// The largest |command| ever given to the actuator (NaN counts as infinite): what the
+    /// limits property test checks against limits().maxDeformation.
+    double peakCommand() const { return m_peakCommand; }
+    /// The limits in force: the configuration's (element `limits`, specimen `interlock`, the
+    /// tighter), tightened by the last Configure.
+    const SafetyLimits& limits() const { return m_limits; }
 
 private:
     struct Trial {
@@ -117,6 +125,7 @@ private:
     std::string m_holdReason;
     long m_totalHeld = 0;
     int m_trips = 0;
+    double m_peakCommand = 0.0;
 };
 
 } // namespace hsmu::comms

@@ -3,9 +3,14 @@
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
+#include "core/util/InputLimits.h"
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 
@@ -30,6 +35,13 @@ MaterialSpec parseMaterial(const JsonCursor& c)
 }
 
 namespace {
+
+std::string fmt(double x)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", x);
+    return buf;
+}
 
 SafetyLimits parseLimits(const JsonCursor& c)
 {
@@ -57,7 +69,7 @@ SpecimenSpec parseSpecimen(const JsonCursor& c)
         c.fail("forceNoiseStd", "expected a standard deviation >= 0");
     if (o.deformationNoiseStd < 0.0)
         c.fail("deformationNoiseStd", "expected a standard deviation >= 0");
-    o.seed = static_cast<std::uint64_t>(c.integer("seed", 1));
+    o.seed = static_cast<std::uint64_t>(c.integer("seed", 1, 0, std::numeric_limits<int>::max()));
     if (c.has("actuator")) {
         const JsonCursor a = c.child("actuator");
         a.allowOnly({"type", "timeConstant", "delay"});
@@ -67,13 +79,16 @@ SpecimenSpec parseSpecimen(const JsonCursor& c)
         else if (type == "lag") {
             o.actuator.type = ActuatorModel::Type::Lag;
             o.actuator.timeConstant = a.number("timeConstant");
-            if (!(o.actuator.timeConstant > 0.0))
-                a.fail("timeConstant", "expected a time constant > 0 s");
+            if (!(o.actuator.timeConstant > 0.0) ||
+                o.actuator.timeConstant > limits::kMaxActuatorTimeConstant)
+                a.fail("timeConstant", "expected a time constant in (0, " +
+                                           fmt(limits::kMaxActuatorTimeConstant) + "] s");
         } else if (type == "delay") {
             o.actuator.type = ActuatorModel::Type::Delay;
             o.actuator.delay = a.number("delay");
-            if (o.actuator.delay < 0.0)
-                a.fail("delay", "expected a delay >= 0 s");
+            if (o.actuator.delay < 0.0 || o.actuator.delay > limits::kMaxActuatorDelay)
+                a.fail("delay",
+                       "expected a delay in [0, " + fmt(limits::kMaxActuatorDelay) + "] s");
         } else
             a.fail("type", "expected 'ideal', 'lag' or 'delay', found '" + type + "'");
     }
@@ -98,11 +113,12 @@ int parseDof(const JsonCursor& c, const nlohmann::json& v, const std::vector<Dof
              const std::string& key)
 {
     if (v.is_number_integer()) {
-        const int i = v.get<int>();
-        if (i < 0 || i >= static_cast<int>(dofs.size()))
-            c.fail(key, "DOF index " + std::to_string(i) + " out of range 0.." +
+        // Compared as 64-bit: 4294967297 must not become DOF 1.
+        const bool neg = !v.is_number_unsigned() && v.get<std::int64_t>() < 0;
+        if (neg || v.get<std::uint64_t>() >= dofs.size())
+            c.fail(key, "DOF index " + v.dump() + " out of range 0.." +
                             std::to_string(dofs.size() - 1));
-        return i;
+        return static_cast<int>(v.get<std::uint64_t>());
     }
     if (v.is_string()) {
         for (std::size_t i = 0; i < dofs.size(); ++i)
@@ -210,11 +226,10 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
             if (d.has("modes")) {
                 const JsonCursor m = d.child("modes");
                 if (m.size() != 2 || !m.node()[0].is_number_integer() ||
-                    !m.node()[1].is_number_integer() || m.node()[0].get<int>() < 1 ||
-                    m.node()[1].get<int>() < 1)
+                    !m.node()[1].is_number_integer())
                     m.fail("", "expected two mode numbers >= 1, e.g. [1, 2]");
-                cfg.damping.modeI = m.node()[0].get<int>();
-                cfg.damping.modeJ = m.node()[1].get<int>();
+                cfg.damping.modeI = m.checkedInteger(m.node()[0], "[0]", 1, 100000);
+                cfg.damping.modeJ = m.checkedInteger(m.node()[1], "[1]", 1, 100000);
             }
         } else {
             cfg.damping.kind = DampingSpec::Kind::Coefficients;
@@ -240,8 +255,12 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
         gm.format = g.string("format", gm.format);
         gm.units = g.string("units", "");
         gm.dt = g.number("dt", 0.0);
+        if (g.has("dt") && (gm.dt < limits::kMinDt || gm.dt > limits::kMaxDt))
+            g.fail("dt", "expected a time step in [" + fmt(limits::kMinDt) + ", " +
+                             fmt(limits::kMaxDt) + "] s");
         gm.scale = g.number("scale", 1.0);
-        gm.seed = static_cast<unsigned>(g.integer("seed", static_cast<int>(gm.seed)));
+        gm.seed = static_cast<unsigned>(
+            g.integer("seed", static_cast<int>(gm.seed), 0, std::numeric_limits<int>::max()));
         if (gm.file.empty() && gm.builtin != "synthetic")
             g.fail("builtin", "expected \"synthetic\" (the only built-in record)");
         if (gm.format != "auto" && gm.format != "at2" && gm.format != "time-acc" &&
@@ -259,9 +278,16 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
         if (an.alpha < -1.0 / 3.0 - 1e-12 || an.alpha > 0.0)
             a.fail("alpha", "expected alpha in [-1/3, 0]");
         an.dt = a.number("dt", an.dt);
-        if (!(an.dt > 0.0))
-            a.fail("dt", "expected a time step > 0 s");
+        if (!(an.dt >= limits::kMinDt && an.dt <= limits::kMaxDt))
+            a.fail("dt", "expected a time step in [" + fmt(limits::kMinDt) + ", " +
+                             fmt(limits::kMaxDt) + "] s");
         an.duration = a.number("duration", 0.0);
+        if (an.duration < 0.0 || an.duration > limits::kMaxDuration)
+            a.fail("duration", "expected a duration in [0, " + fmt(limits::kMaxDuration) +
+                                   "] s (0: the whole ground motion)");
+        if (an.duration / an.dt > double(limits::kMaxSteps))
+            a.fail("duration", "duration / dt = " + fmt(an.duration / an.dt) +
+                                   " steps, more than " + fmt(double(limits::kMaxSteps)));
         an.allowUnstable = a.boolean("allowUnstable", false);
     }
     if (root.has("updating"))
@@ -271,14 +297,38 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
 
 TestConfig loadConfigFile(const std::string& path)
 {
-    std::ifstream in(path);
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw ConfigError(path + ": not a regular file (a folder, device, pipe or socket)");
+    if (const auto size = std::filesystem::file_size(path, ec);
+        !ec && size > limits::kMaxTextFileBytes)
+        throw ConfigError(path + ": too large for a configuration (" + std::to_string(size) +
+                          " bytes)");
+    std::ifstream in(path, std::ios::binary);
     if (!in)
         throw ConfigError(path + ": cannot open the configuration file");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     nlohmann::json doc;
     try {
-        doc = nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/true);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw ConfigError(path + ": not valid JSON (" + std::string(e.what()) + ")");
+        doc = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+    } catch (const nlohmann::json::exception& e) {
+        // parse_error carries the byte offset; out_of_range (a number like 1e999 that
+        // overflows a double) only the token: find it in the text to name the line.
+        std::string where;
+        std::size_t at = std::string::npos;
+        if (const auto* pe = dynamic_cast<const nlohmann::json::parse_error*>(&e))
+            at = pe->byte > 0 ? pe->byte - 1 : 0;
+        const std::string what = e.what();
+        if (const auto q = what.find("parsing '"); at == std::string::npos && q != std::string::npos) {
+            const auto q2 = what.find('\'', q + 9);
+            if (q2 != std::string::npos)
+                at = text.find(what.substr(q + 9, q2 - q - 9));
+        }
+        if (at != std::string::npos && at <= text.size())
+            where = " line " + std::to_string(1 + std::count(text.begin(), text.begin() +
+                                                                 static_cast<std::ptrdiff_t>(at),
+                                                             '\n'));
+        throw ConfigError(path + where + ": not valid JSON (" + what + ")");
     }
     return parseConfig(doc, path);
 }

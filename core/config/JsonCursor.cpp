@@ -1,6 +1,8 @@
 #include "core/config/JsonCursor.h"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace hsmu {
 
@@ -103,6 +105,37 @@ int JsonCursor::integer(const std::string& key, int fallback) const
     const auto& v = m_node.at(key);
     if (!v.is_number_integer())
         fail(key, std::string("expected an integer, found ") + typeWord(v));
+    // No silent truncation: 4294967297 is not 1.
+    const bool fits = v.is_number_unsigned()
+                          ? v.get<std::uint64_t>() <= std::uint64_t(std::numeric_limits<int>::max())
+                          : v.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                                v.get<std::int64_t>() <= std::numeric_limits<int>::max();
+    if (!fits)
+        fail(key, "integer " + v.dump() + " out of range (at most " +
+                      std::to_string(std::numeric_limits<int>::max()) + ")");
+    return v.get<int>();
+}
+
+int JsonCursor::integer(const std::string& key, int fallback, int min, int max) const
+{
+    const int i = integer(key, fallback);
+    if (has(key) && (i < min || i > max))
+        fail(key, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                      "], found " + std::to_string(i));
+    return i;
+}
+
+int JsonCursor::checkedInteger(const nlohmann::json& v, const std::string& key, int min,
+                               int max) const
+{
+    if (!v.is_number_integer())
+        fail(key, std::string("expected an integer, found ") + typeWord(v));
+    const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= std::uint64_t(max)
+                                             : v.get<std::int64_t>() >= min &&
+                                                   v.get<std::int64_t>() <= max;
+    if (!fits)
+        fail(key, "integer " + v.dump() + " out of range [" + std::to_string(min) + ", " +
+                      std::to_string(max) + "]");
     return v.get<int>();
 }
 

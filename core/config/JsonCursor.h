@@ -30,7 +30,12 @@ public:
 
     double number(const std::string& key) const;
     double number(const std::string& key, double fallback) const;
+    /// An int; a JSON integer outside int's range is an error (never truncated).
     int integer(const std::string& key, int fallback) const;
+    /// An int in [min, max] (when present), else an error naming the field.
+    int integer(const std::string& key, int fallback, int min, int max) const;
+    /// v (the value at key, e.g. an array element) as an int in [min, max], else an error.
+    int checkedInteger(const nlohmann::json& v, const std::string& key, int min, int max) const;
     std::string string(const std::string& key) const;
     std::string string(const std::string& key, const std::string& fallback) const;
     bool boolean(const std::string& key, bool fallback) const;

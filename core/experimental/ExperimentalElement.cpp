@@ -31,6 +31,10 @@ ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
     if (ControlResult r = m_control->measure(m); !r.ok)
         return ElementStatus::failure(name() + ": " + r.reason);
     m_measured = m;
+    // The console believes no impossible measurement: past a limit the test holds (critical
+    // alarm), the step is not committed, so no update is computed from the sample.
+    if (auto why = m_limits.violationOfMeasuredDeformation(m.deformation))
+        return ElementStatus::limitReached(name() + ": " + *why);
     if (auto why = m_limits.violationOfForce(m.force))
         return ElementStatus::limitReached(name() + ": " + *why);
     return ElementStatus::success();

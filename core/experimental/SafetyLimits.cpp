@@ -36,4 +36,19 @@ std::optional<std::string> SafetyLimits::violationOfForce(double f) const
     return std::nullopt;
 }
 
+std::optional<std::string> SafetyLimits::violationOfMeasuredDeformation(double d) const
+{
+    if (!std::isfinite(d))
+        return std::string("measured deformation is not a finite number");
+    const double allowed = maxDeformation * (1.0 + kMeasuredDeformationTolerance);
+    if (active(maxDeformation) && std::abs(d) > allowed) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "measured deformation |d| = %.6g exceeds the limit %.6g (+%.0f%% tolerance)",
+                      std::abs(d), maxDeformation, 100.0 * kMeasuredDeformationTolerance);
+        return std::string(buf);
+    }
+    return std::nullopt;
+}
+
 } // namespace hsmu

@@ -1,6 +1,7 @@
 // readAt2: the PEER AT2 reader declared in GroundMotionReader.h.
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/groundmotion/GroundMotionText.h"
+#include "core/util/InputLimits.h"
 
 #include <cctype>
 #include <charconv>
@@ -218,6 +219,11 @@ GroundMotion readAt2(const std::filesystem::path& path, std::optional<Accelerati
     if (!(std::isfinite(header.dt) && header.dt > 0.0))
         throw GroundMotionError(name, 4,
                                 "DT must be a time step > 0 s, found " + excerpt(header.dtText));
+    if (header.dt < limits::kMinDt || header.dt > limits::kMaxDt)
+        throw GroundMotionError(name, 4,
+                                "DT = " + excerpt(header.dtText) + " s is outside [" +
+                                    detail::formatNumber(limits::kMinDt) + ", " +
+                                    detail::formatNumber(limits::kMaxDt) + "] s");
     const auto npts = static_cast<std::size_t>(header.npts);
 
     const std::string upperHeader =

@@ -1,4 +1,5 @@
 #include "core/groundmotion/GroundMotion.h"
+#include "core/util/InputLimits.h"
 
 #include <cmath>
 #include <cstddef>
@@ -82,7 +83,13 @@ GroundMotion GroundMotion::resampled(double newDt) const {
         return result;
 
     const double total = duration();
-    const auto count = static_cast<std::size_t>(std::floor(total / newDt + 1e-9)) + 1;
+    const double samples = std::floor(total / newDt + 1e-9) + 1.0;
+    if (!(samples <= double(limits::kMaxSteps) + 1.0)) // checked before allocating
+        throw std::invalid_argument(
+            "resampling '" + name + "' (" + std::to_string(total) + " s) at dt = " +
+            std::to_string(newDt) + " s would make more than " +
+            std::to_string(limits::kMaxSteps) + " samples");
+    const auto count = static_cast<std::size_t>(samples);
     result.acceleration.resize(count);
     for (std::size_t k = 0; k < count; ++k)
         result.acceleration[k] = interpolateClamped(*this, static_cast<double>(k) * newDt);

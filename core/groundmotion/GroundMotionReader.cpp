@@ -1,5 +1,6 @@
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/groundmotion/GroundMotionText.h"
+#include "core/util/InputLimits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,11 @@ std::vector<Sample> readNumericLines(const detail::TextFile& file) {
 void checkDt(const std::string& name, double dt) {
     if (!(std::isfinite(dt) && dt > 0.0))
         throw GroundMotionError(name, 0, "the time step dt must be > 0 s, got " + formatNumber(dt));
+    if (dt < limits::kMinDt || dt > limits::kMaxDt)
+        throw GroundMotionError(name, 0,
+                                "the time step dt = " + formatNumber(dt) + " s is outside [" +
+                                    formatNumber(limits::kMinDt) + ", " +
+                                    formatNumber(limits::kMaxDt) + "] s");
 }
 
 bool sameStep(double a, double b) {
@@ -109,6 +115,7 @@ GroundMotion readTimeAcceleration(const std::filesystem::path& path, Acceleratio
                                     " s); a uniform step is required (tolerance 1e-6 relative)");
     }
 
+    checkDt(file.name, dt);
     GroundMotion motion;
     motion.name = file.name;
     motion.source = file.source;

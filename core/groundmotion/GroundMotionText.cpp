@@ -1,6 +1,7 @@
 #include "core/groundmotion/GroundMotionText.h"
 
 #include "core/groundmotion/GroundMotionError.h"
+#include "core/util/InputLimits.h"
 
 #include <cctype>
 #include <charconv>
@@ -24,13 +25,30 @@ TextFile readTextFile(const std::filesystem::path& path) {
     if (std::filesystem::is_directory(path, ec))
         throw GroundMotionError(file.name, 0,
                                 "cannot open '" + file.source + "': it is a folder, not a file");
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw GroundMotionError(file.name, 0,
+                                "cannot read '" + file.source +
+                                    "': not a regular file (a device, pipe or socket)");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec || size > limits::kMaxTextFileBytes)
+        throw GroundMotionError(file.name, 0,
+                                "'" + file.source + "' is too large (" +
+                                    (ec ? std::string("size unknown") : std::to_string(size) +
+                                                                            " bytes") +
+                                    ", at most " + std::to_string(limits::kMaxTextFileBytes) +
+                                    " bytes)");
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw GroundMotionError(file.name, 0,
                                 "cannot open '" + file.source + "' for reading (permissions?)");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    const std::string content = buffer.str();
+    std::string content;
+    content.resize(static_cast<std::size_t>(size));
+    in.read(content.data(), static_cast<std::streamsize>(content.size()));
+    content.resize(static_cast<std::size_t>(in.gcount()));
+    if (const std::size_t nul = content.find('\0'); nul != std::string::npos)
+        throw GroundMotionError(file.name, 0,
+                                "'" + file.source + "' is not a text file (binary data at byte " +
+                                    std::to_string(nul) + ")");
 
     std::size_t start = 0;
     while (start < content.size()) {
@@ -100,7 +118,11 @@ std::string excerpt(std::string_view text) {
     std::string result;
     result.reserve(kMax + 5);
     result += '\'';
-    result.append(text.substr(0, kMax));
+    // Never echo raw bytes: control and non-ASCII characters become '?'.
+    for (const char c : text.substr(0, kMax)) {
+        const auto u = static_cast<unsigned char>(c);
+        result += (u >= 0x20 && u < 0x7f) ? c : '?';
+    }
     result += text.size() > kMax ? "...'" : "'";
     return result;
 }

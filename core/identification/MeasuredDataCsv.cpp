@@ -1,4 +1,7 @@
 #include "core/identification/MeasuredDataCsv.h"
+#include "core/util/InputLimits.h"
+
+#include <filesystem>
 
 #include <algorithm>
 #include <array>
@@ -282,6 +285,15 @@ SpecimenHistory readMeasuredDataCsv(std::istream& in, const std::string& source,
 
 SpecimenHistory readMeasuredDataCsv(const std::string& path,
                                     const std::optional<MeasuredDataUnits>& units) {
+    // Bounded before reading: a device (/dev/zero), a pipe or a huge file is refused.
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw MeasuredDataError(path + ": not a regular file (a folder, device, pipe or socket)");
+    if (const auto size = std::filesystem::file_size(path, ec);
+        !ec && size > limits::kMaxTextFileBytes)
+        throw MeasuredDataError(path + ": too large (" + std::to_string(size) +
+                                " bytes, at most " + std::to_string(limits::kMaxTextFileBytes) +
+                                ")");
     std::ifstream in(path);
     if (!in)
         throw MeasuredDataError(path + ": cannot be opened (no such file or no permission)");

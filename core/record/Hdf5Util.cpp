@@ -238,6 +238,9 @@ Extendible::Extendible(hid_t parent, const char* name, hid_t type, int cols,
     const Id space = check(H5Screate_simple(rank, dims, maxDims), where, "cannot make a dataspace");
     const Id dcpl = check(H5Pcreate(H5P_DATASET_CREATE), where, "cannot make a property list");
     check(H5Pset_chunk(dcpl.get(), rank, chunk), where, "cannot set chunking");
+    // Every chunk carries a Fletcher32 checksum: a flipped data byte fails the read
+    // (RecordReader: "damaged or truncated record (cannot read ...)"), it is never replayed.
+    check(H5Pset_fletcher32(dcpl.get()), where, "cannot set the Fletcher32 checksum");
     m_dset =
         check(H5Dcreate2(parent, name, type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
               where, std::string("cannot create dataset ") + name);

@@ -1,6 +1,8 @@
 #include "core/record/RecordReader.h"
 
 #include "core/record/Hdf5Util.h"
+#include "core/record/RecordChecksum.h"
+#include "core/record/RecordProbe.h"
 #include "core/record/RecordSchema.h"
 
 #include <algorithm>
@@ -229,6 +231,10 @@ void RecordReader::Impl::readMetadata() {
     alarmSeverity = column("/alarms/severity", -1);
     alarmKind = column("/alarms/kind", -1);
     alarmMessage = column("/alarms/message", -1);
+    if (h5::hasAttr(root, "metadata_checksum") &&
+        h5::readStringAttr(root, "metadata_checksum", w) != recordMetadataChecksum(m, layout))
+        throw RecordError(path + ": damaged record (the metadata checksum does not match: "
+                                 "attributes or names were altered)");
 }
 
 namespace {
@@ -372,6 +378,26 @@ void RecordReader::Impl::readNewNotes() {
 
 RecordReader::RecordReader(const std::string& path) : m_d(std::make_unique<Impl>()) {
     m_d->path = path;
+    {
+        // First a complete read in a child process with a deadline: a damaged file must fail
+        // within kRecordOpenDeadline, never hang this process inside HDF5.
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec))
+            throw RecordError(path + ": cannot be opened (no such file)");
+        const auto fail = probeRecord(path, kRecordOpenDeadline, [](const std::string& p) {
+            Impl d;
+            d.path = p;
+            const h5::QuietErrors quiet;
+            d.open();
+            d.readMetadata();
+            d.readNewRows();
+            d.readNewAlarms();
+            d.readNewEvents();
+            d.readNewNotes();
+        });
+        if (fail)
+            throw RecordError(*fail);
+    }
     const h5::QuietErrors quiet;
     m_d->open();
     m_d->readMetadata();

@@ -3,6 +3,7 @@
 #include "core/Version.h"
 #include "core/hysteresis/BoucWen.h"
 #include "core/record/Hdf5Util.h"
+#include "core/record/RecordChecksum.h"
 #include "core/record/RecordData.h"
 #include "core/record/RecordSchema.h"
 
@@ -95,16 +96,26 @@ void RecordWriter::Impl::create(const RecordStart& start) {
                      "cannot be created");
     const hid_t root = file.get();
     h5::writeAttr(root, "schema_version", recordschema::kVersion, w);
-    h5::writeAttr(root, "program", std::string("HSMU Console"), w);
-    h5::writeAttr(root, "program_version", std::string(versionString()), w);
-    h5::writeAttr(root, "start_time", isoUtcNow(), w);
-    h5::writeAttr(root, "configuration", start.configuration, w);
-    h5::writeAttr(root, "config_name", start.configName, w);
-    h5::writeAttr(root, "operator_notes", start.operatorNotes, w);
-    h5::writeAttr(root, "dt", start.dt, w);
-    h5::writeAttr(root, "run", start.run, w);
-    h5::writeAttr(root, "numerics",
-                  std::string("UKF sigma points: ") + BoucWen::fastBatchMathName(), w);
+    RecordMetadata meta; // what the reader will read back, for the metadata checksum
+    meta.program = "HSMU Console";
+    meta.programVersion = versionString();
+    meta.startTime = isoUtcNow();
+    meta.configuration = start.configuration;
+    meta.configName = start.configName;
+    meta.operatorNotes = start.operatorNotes;
+    meta.dt = start.dt;
+    meta.run = start.run;
+    meta.numerics = std::string("UKF sigma points: ") + BoucWen::fastBatchMathName();
+    h5::writeAttr(root, "program", meta.program, w);
+    h5::writeAttr(root, "program_version", meta.programVersion, w);
+    h5::writeAttr(root, "start_time", meta.startTime, w);
+    h5::writeAttr(root, "configuration", meta.configuration, w);
+    h5::writeAttr(root, "config_name", meta.configName, w);
+    h5::writeAttr(root, "operator_notes", meta.operatorNotes, w);
+    h5::writeAttr(root, "dt", meta.dt, w);
+    h5::writeAttr(root, "run", meta.run, w);
+    h5::writeAttr(root, "numerics", meta.numerics, w);
+    h5::writeAttr(root, "metadata_checksum", recordMetadataChecksum(meta, layout), w);
 
     const auto group = [&](const char* name) {
         return h5::check(H5Gcreate2(root, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,

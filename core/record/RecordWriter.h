@@ -52,7 +52,7 @@ struct RecordStart {
 class RecordWriter final : public StepObserver {
 public:
     static constexpr double kFlushInterval = 0.5; ///< [s] of wall time
-    static constexpr int kMaxBufferedRows = 16384;
+    static constexpr int kMaxBufferedRows = 500; // crash safety: <= 1,000 rows behind steps.csv
     /// Also flush once the buffered per-step values (DOF and element columns) reach this
     /// many doubles (16 MiB): a 10,000-DOF model flushes every 34 rows, bounding memory.
     static constexpr long kMaxBufferedValues = 1L << 21;

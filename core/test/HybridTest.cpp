@@ -1,4 +1,5 @@
 #include "core/test/HybridTest.h"
+#include "core/util/InputLimits.h"
 
 #include "core/experimental/ExperimentalElement.h"
 #include "core/integration/Integrator.h"
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace hsmu {
@@ -72,6 +74,29 @@ bool HybridTest::prepare()
         return fail("the integration step dt must be a positive number of seconds");
     if (m_groundMotion.acceleration.size() < 2 || !(m_groundMotion.dt > 0.0))
         return fail("the ground motion has fewer than two samples");
+    {
+        // Counted before anything is allocated from them (resampling, records): a run of
+        // 0 steps or of more than limits::kMaxSteps is refused with the figures.
+        const double gmDuration = m_groundMotion.duration();
+        const double span = m_options.duration > 0.0 ? std::min(m_options.duration, gmDuration)
+                                                      : gmDuration;
+        const double steps = std::floor(span / m_options.dt + 1e-9);
+        char buf[300];
+        if (!(steps >= 1.0)) {
+            std::snprintf(buf, sizeof buf,
+                          "the run would make 0 steps: duration %.6g s (ground motion %.6g s) "
+                          "is shorter than dt = %.6g s",
+                          span, gmDuration, m_options.dt);
+            return fail(buf);
+        }
+        if (steps > double(limits::kMaxSteps)) {
+            std::snprintf(buf, sizeof buf,
+                          "the run would make %.6g steps (duration %.6g s / dt %.6g s), more "
+                          "than the %lld allowed",
+                          steps, span, m_options.dt, static_cast<long long>(limits::kMaxSteps));
+            return fail(buf);
+        }
+    }
     try {
         if (std::abs(m_groundMotion.dt - m_options.dt) > 1e-12 * m_options.dt)
             m_groundMotion = m_groundMotion.resampled(m_options.dt);

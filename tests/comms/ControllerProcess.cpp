@@ -1,5 +1,7 @@
 #include "ControllerProcess.h"
 
+#include <QFile>
+
 #include <QDeadlineTimer>
 #include <QRegularExpression>
 
@@ -65,4 +67,15 @@ void ControllerProcess::stop() {
 QString ControllerProcess::log() {
     m_log += QString::fromUtf8(m_process.readAll());
     return m_log;
+}
+
+long ControllerProcess::rssKb(bool peak) const {
+    QFile f(QStringLiteral("/proc/%1/status").arg(m_process.processId()));
+    if (!f.open(QIODevice::ReadOnly))
+        return -1;
+    const QByteArray key = peak ? "VmHWM:" : "VmRSS:";
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (line.startsWith(key))
+            return line.mid(key.size()).trimmed().split(' ').front().toLong();
+    return -1;
 }

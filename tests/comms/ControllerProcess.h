@@ -20,6 +20,9 @@ public:
     void kill();
     void stop();
     bool running() const { return m_process.state() != QProcess::NotRunning; }
+    qint64 pid() const { return m_process.processId(); }
+    /// The process's resident set (VmRSS) and its peak (VmHWM) [kB] from /proc; -1 if unknown.
+    long rssKb(bool peak = false) const;
     /// Everything it wrote (stdout and stderr), for failure messages.
     QString log();
 

@@ -16,6 +16,7 @@
 #include <QtTest>
 
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 using namespace hsmu;
@@ -136,8 +137,11 @@ private slots:
     }
 
     void tokenIsChecked() {
+        // The token comes from a file (never argv, which ps shows).
+        const QString tokenFile = m_dir.filePath("token.txt");
+        std::ofstream(tokenFile.toStdString()) << "open sesame\n";
         ControllerProcess ctl({"--config", QString::fromStdString(m_config), "--pace", "fast",
-                               "--token", "open sesame", "--quiet"});
+                               "--token-file", tokenFile, "--quiet"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         RawClient bad;
         QVERIFY(bad.connect(ctl.port()));
@@ -218,7 +222,10 @@ private slots:
         const auto e = second.expect<ErrorMsg>();
         QVERIFY(e);
         QCOMPARE(e->code, ErrorCode::Busy);
-        QVERIFY(e->reason.find("busy") != std::string::npos);
+        // The code says "busy"; the reason says why, without repeating it ("busy: busy:").
+        QVERIFY2(e->reason.find("another console session") != std::string::npos &&
+                     e->reason.find("busy") == std::string::npos,
+                 e->reason.c_str());
         // Once the first session says bye, the controller is free again (bounded wait).
         QVERIFY(first.send(ByeMsg{"done"}));
         bool admitted = false;

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <random>
 
 using namespace hsmu;
 using namespace hsmu::comms;
@@ -185,6 +186,102 @@ private slots:
         c.maxDeformation = 0.002;
         QVERIFY(acked(st.configure(c)));
         QCOMPARE(asError(st.target(TargetMsg{1, 0.003}))->code, ErrorCode::Interlock);
+    }
+
+    void clientCannotLoosenTheConfigurationLimits() {
+        // The element's `limits` (0.15 rad in the preset) hold whatever a client configures.
+        SpecimenStation st(0, specimenSpec(), ControllerSettings{}, SpecimenStation::Pace::Fast,
+                           nullptr);
+        ConfigureMsg c = configure001();
+        c.maxDeformation = 0.0; // "off"
+        c.maxForce = -1.0;
+        c.maxIncrement = NAN;
+        QVERIFY(acked(st.configure(c)));
+        QCOMPARE(st.limits().maxDeformation, 0.15);
+        QCOMPARE(st.limits().maxIncrement, 0.01);
+        QCOMPARE(st.limits().maxForce, 40.0);
+        const auto e = asError(st.target(TargetMsg{1, 100.0}));
+        QVERIFY(e);
+        QCOMPARE(e->code, ErrorCode::Interlock);
+        QVERIFY2(e->reason.find("target deformation |d| = 100") != std::string::npos,
+                 e->reason.c_str());
+        QCOMPARE(st.peakCommand(), 0.0); // the actuator held
+        c.maxDeformation = 1.0;          // looser than the configuration: ignored
+        QVERIFY(acked(st.configure(c)));
+        QCOMPARE(st.limits().maxDeformation, 0.15);
+    }
+
+    void noCommandEverLeavesTheLimits() {
+        // Property: random configuration limits (element `limits`, `interlock`), random client
+        // limits (looser, tighter, 0, NaN), actuators ideal / lag / delay, both paces, random
+        // walks with wild targets. Whatever happens, no command given to the actuator exceeds
+        // the configuration's deformation limit (or the client's, when tighter), every target
+        // past it is refused with Error(Interlock), and every measurement is inside it.
+        std::mt19937_64 rng(14);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        const double wild[] = {100.0, -100.0, 1e300, -1e300, NAN, INFINITY};
+        int refused = 0, measured = 0;
+        for (int trial = 0; trial < 24; ++trial) {
+            nlohmann::json j = linkfixture::condition3();
+            auto& el = j["structure"]["elements"][0];
+            const double lim = 0.002 + 0.02 * u(rng), inc = 0.3 * lim + 0.01 * u(rng);
+            el["limits"] = {{"deformation", lim}, {"increment", inc}, {"force", 1e6}};
+            if (trial % 3 == 1)
+                el["specimen"]["interlock"] = {{"deformation", 0.5 * lim}};
+            el["specimen"]["forceNoiseStd"] = 0.0;
+            el["specimen"].erase("fracture");
+            const int act = trial % 3;
+            if (act == 1)
+                el["specimen"]["actuator"] = {{"type", "lag"}, {"timeConstant", 0.004}};
+            else if (act == 2)
+                el["specimen"]["actuator"] = {{"type", "delay"}, {"delay", 0.003}};
+            const ElementSpec spec = parseConfig(j, "memory.json").elements[0];
+            const auto pace =
+                trial % 2 ? SpecimenStation::Pace::RealTime : SpecimenStation::Pace::Fast;
+            SpecimenStation st(0, spec, ControllerSettings{}, pace, nullptr);
+            ConfigureMsg c = configure001();
+            const double clientChoices[] = {0.0, -1.0, NAN, INFINITY, 10.0 * lim, 0.7 * lim};
+            c.maxDeformation = clientChoices[trial % 6];
+            QVERIFY(acked(st.configure(c)));
+            double bound = (trial % 3 == 1) ? 0.5 * lim : lim;
+            if (trial % 6 == 5)
+                bound = std::min(bound, 0.7 * lim);
+            QCOMPARE(st.limits().maxDeformation, bound);
+            double last = 0.0;
+            for (std::uint64_t n = 1, k = 0; k < 150; ++k) {
+                if (st.holding())
+                    QVERIFY(acked(st.resume()));
+                double d = last + (2.0 * u(rng) - 1.0) * 0.9 * std::min(inc, bound);
+                if (u(rng) < 0.1)
+                    d = wild[k % 6];
+                else if (u(rng) < 0.1)
+                    d = (u(rng) < 0.5 ? -1.0 : 1.0) * bound * (1.0 + 0.5 * u(rng));
+                std::optional<Message> m = st.target(TargetMsg{n, d});
+                for (int t = 0; t < 1000 && !m && pace == SpecimenStation::Pace::RealTime; ++t)
+                    m = st.tick();
+                QVERIFY(m);
+                const bool outside = !(std::abs(d) <= bound);
+                if (outside) {
+                    const auto e = asError(m);
+                    QVERIFY2(e && e->code == ErrorCode::Interlock,
+                             qPrintable(QString("target %1 accepted").arg(d)));
+                    ++refused;
+                } else if (const auto* mm = std::get_if<MeasurementMsg>(&*m)) {
+                    QVERIFY(std::abs(mm->commanded) <= bound);
+                    QVERIFY(std::abs(mm->deformation) <= bound);
+                    QVERIFY(acked(st.commit(CommitMsg{n})));
+                    last = d;
+                    ++n;
+                    ++measured;
+                }
+                QVERIFY2(st.peakCommand() <= bound,
+                         qPrintable(QString("trial %1: command %2 > %3")
+                                        .arg(trial)
+                                        .arg(st.peakCommand())
+                                        .arg(bound)));
+            }
+        }
+        QVERIFY(refused > 100 && measured > 1000); // both branches exercised
     }
 
     void lateTargetHoldsTheActuator() {

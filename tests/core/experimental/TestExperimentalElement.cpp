@@ -33,7 +33,7 @@ public:
         return failNext ? ControlResult::fault("actuator fault") : ControlResult::success();
     }
     ControlResult measure(ControlMeasurement& out) override {
-        out = {m_d, m_k * m_d};
+        out = {std::isnan(reportDeformation) ? m_d : reportDeformation, m_k * m_d};
         return ControlResult::success();
     }
     ControlResult commit() override {
@@ -43,6 +43,7 @@ public:
     void hold(const std::string&) override { m_log.held = true; }
     void resume() override { m_log.held = false; }
     bool failNext = false;
+    double reportDeformation = NAN; ///< a lying sensor: reported instead of the target
 
 private:
     double m_k, m_d = 0.0;
@@ -75,6 +76,7 @@ private slots:
     void neverSendsPastTheDeformationLimit();
     void neverSendsPastTheIncrementLimit();
     void forceLimitFailsTheTrial();
+    void impossibleMeasuredDeformationFailsTheTrial();
     void controlFaultIsReported();
     void revertForgetsTheUnacceptedReading();
     void raisedLimitsTakeEffect();
@@ -173,6 +175,34 @@ void TestExperimentalElement::forceLimitFailsTheTrial() {
     const QString msg = QString::fromStdString(s.message);
     QVERIFY2(msg.contains("Element 1") && msg.contains("force") && msg.contains("15"),
              qPrintable(msg));
+}
+
+void TestExperimentalElement::impossibleMeasuredDeformationFailsTheTrial() {
+    // A controller reporting 5 rad (limit 0.15) for a 0.01 rad target: a limit, named.
+    SafetyLimits limits;
+    limits.maxDeformation = 0.15;
+    Log log;
+    RecordingControl* control = nullptr;
+    auto e = makeElement(limits, log, &control);
+    control->reportDeformation = 0.155; // inside the 5 % tolerance
+    QVERIFY(e->setTrial(at(0.03)).ok);
+    QVERIFY(e->commit().ok);
+    control->reportDeformation = 5.0;
+    ElementStatus s = e->setTrial(at(0.03));
+    QVERIFY(!s.ok);
+    QVERIFY(s.limit);
+    QString msg = QString::fromStdString(s.message);
+    QVERIFY2(msg.contains("Element 1") && msg.contains("measured deformation |d| = 5 ") &&
+                 msg.contains("0.15"),
+             qPrintable(msg));
+    control->reportDeformation = 0.1576; // just past 0.15 * 1.05
+    QVERIFY(e->setTrial(at(0.03)).limit);
+    control->reportDeformation = NAN;
+    control->reportDeformation = std::numeric_limits<double>::infinity();
+    s = e->setTrial(at(0.03));
+    QVERIFY(s.limit);
+    QVERIFY2(QString::fromStdString(s.message).contains("not a finite"), s.message.c_str());
+    QCOMPARE(log.commits, 1); // nothing past the first step was committed
 }
 
 void TestExperimentalElement::controlFaultIsReported() {

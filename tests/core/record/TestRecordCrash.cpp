@@ -13,6 +13,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <random>
 #include <vector>
 
 using namespace hsmu;
@@ -42,10 +43,13 @@ public:
             const QByteArray line = m_p.readLine().trimmed();
             if (line.startsWith("flushed "))
                 flushes.push_back({line.mid(8).toInt(), m_clock.elapsed()});
+            else if (line.startsWith("step "))
+                steps.push_back({line.mid(5).toInt(), m_clock.elapsed()});
         }
     }
     qint64 now() const { return m_clock.elapsed(); }
     std::vector<Flush> flushes;
+    std::vector<Flush> steps; ///< "step N": N steps given to the writer
 
 private:
     QProcess& m_p;
@@ -58,6 +62,7 @@ class TestRecordCrash : public QObject {
     Q_OBJECT
 private slots:
     void killedWriterLeavesAReadableRecord();
+    void killedFastWriterIsNeverFarBehind();
 };
 
 void TestRecordCrash::killedWriterLeavesAReadableRecord() {
@@ -112,6 +117,54 @@ void TestRecordCrash::killedWriterLeavesAReadableRecord() {
         QCOMPARE(d.time[i], i * 0.01);
     }
     QVERIFY(d.u.allFinite() && d.force.allFinite() && d.parameters.allFinite());
+}
+
+void TestRecordCrash::killedFastWriterIsNeverFarBehind() {
+    // The helper unpaced at dt = 0.001 s (tens of thousands of steps per second), killed with
+    // SIGKILL at seeded random moments: the file opens and holds every step the helper had
+    // given the writer more than 1 s before the kill, and is never more than 1,000 rows
+    // behind the steps it had given (RecordWriter::kMaxBufferedRows = 500 rows a flush).
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    std::mt19937 rng(14);
+    std::uniform_int_distribution<int> killAfter(500, 25000); // steps (the record has 30000)
+    int worstBehind = 0;
+    for (int kill = 0; kill < 6; ++kill) {
+        const QString path = dir.filePath(QString("fast%1.h5").arg(kill));
+        QProcess helper;
+        helper.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        helper.start(QStringLiteral(HSMU_RECORD_HELPER), {path, "0", "0.001"});
+        QVERIFY(helper.waitForStarted());
+        HelperOutput out(helper);
+        const int target = killAfter(rng);
+        for (int i = 0; i < 4000 && (out.steps.empty() || out.steps.back().rows < target) &&
+                        helper.state() == QProcess::Running;
+             ++i)
+            out.pump(5);
+        QVERIFY2(!out.steps.empty(), "the helper reported no step");
+        if (helper.state() != QProcess::Running)
+            continue; // finished before the kill: nothing to measure
+        helper.kill();
+        const qint64 killedAt = out.now();
+        QVERIFY(helper.waitForFinished(5000));
+        out.parse();
+        int givenBefore = 0, givenOneSecondBefore = 0;
+        for (const Flush& s : out.steps) {
+            givenBefore = s.rows; // a lower bound of the steps given before the kill
+            if (s.ms < killedAt - 1000)
+                givenOneSecondBefore = s.rows;
+        }
+        const RecordReader after(path.toStdString());
+        const int rows = after.rows() - 1; // row 0 is the initial state
+        worstBehind = std::max(worstBehind, givenBefore - rows);
+        qInfo("kill %d at %lld ms: steps given >= %d, rows %d (behind by <= %d)", kill,
+              static_cast<long long>(killedAt), givenBefore, rows, givenBefore - rows);
+        QVERIFY(rows >= givenOneSecondBefore);
+        QVERIFY2(givenBefore - rows <= 1000, qPrintable(QString::number(givenBefore - rows)));
+        for (int i = 0; i < after.rows(); ++i)
+            QCOMPARE(after.data().steps[std::size_t(i)], i);
+    }
+    qInfo("worst: %d rows behind the steps given", worstBehind);
 }
 
 QTEST_APPLESS_MAIN(TestRecordCrash)

@@ -36,10 +36,16 @@ public:
         m_targets.push_back(d);
         return m_inner->setTarget(d);
     }
-    ControlResult measure(ControlMeasurement& out) override { return m_inner->measure(out); }
+    ControlResult measure(ControlMeasurement& out) override {
+        const ControlResult r = m_inner->measure(out);
+        if (m_targets.size() > lieAfterTargets)
+            out.deformation *= 30.0; // a controller reporting impossible deformations
+        return r;
+    }
     ControlResult commit() override { return m_inner->commit(); }
     void hold(const std::string& reason) override { m_inner->hold(reason); }
     void resume() override { m_inner->resume(); }
+    std::size_t lieAfterTargets = ~std::size_t(0);
 
 private:
     std::unique_ptr<VirtualSpecimen> m_inner;
@@ -142,6 +148,7 @@ private slots:
     void deformationLimitHoldsAndResumes();
     void operatorHoldAndResume();
     void forceLimitHolds();
+    void impossibleMeasurementHoldsCritically();
     void specimenInterlockIsAControlFault();
     void refusesUnstableExplicitRun();
     void allowUnstableStartsWithWarning();
@@ -274,6 +281,34 @@ void TestHybridTest::forceLimitHolds() {
     QCOMPARE(int(rec.records.size()), t->currentStep() + 1);
     for (const auto& r : rec.records) // no committed step carries a force past the limit
         QVERIFY(std::abs(r.elements[0].force) <= limits.maxForce);
+}
+
+void TestHybridTest::impossibleMeasurementHoldsCritically() {
+    // From the 101st target on the control reports 30 times the true deformation (far past
+    // the limit): the test holds with a critical alarm naming the element and the value, and
+    // nothing from such a sample is committed or published.
+    SafetyLimits limits;
+    limits.maxDeformation = 2.0 * referencePeak(m_reference);
+    std::vector<double> targets;
+    auto s = sdof(&targets, limits);
+    auto* x = static_cast<ExperimentalElement*>(s->elements()[0].get());
+    static_cast<RecordingControl&>(x->control()).lieAfterTargets = 100;
+    auto t = makeTest(std::move(s));
+    Recorder rec;
+    t->addObserver(&rec);
+    QVERIFY(t->prepare());
+    for (int i = 0; i < 400 && t->step() == HybridTest::StepResult::Advanced; ++i) {
+    }
+    QVERIFY(t->state() == HybridTest::State::Holding);
+    QCOMPARE(t->currentStep(), 100);
+    const Alarm* alarm = findAlarm(*t, AlarmKind::LimitExceeded);
+    QVERIFY(alarm != nullptr);
+    QCOMPARE(alarm->severity, AlarmSeverity::Critical);
+    const QString msg = QString::fromStdString(alarm->message);
+    QVERIFY2(msg.contains("Spring") && msg.contains("measured deformation |d| ="), qPrintable(msg));
+    QCOMPARE(int(rec.records.size()), 101);
+    for (const auto& r : rec.records)
+        QVERIFY(std::abs(r.elements[0].deformation) <= limits.maxDeformation);
 }
 
 void TestHybridTest::specimenInterlockIsAControlFault() {

@@ -1,0 +1,201 @@
+// Bounded resources in hsmu-controller (issue 14): hostile and careless clients against a real
+// controller process. A client that sends heartbeats and never reads the replies is dropped
+// (capped send queue); idle strangers (no hello) never lock out a token holder; failed tokens
+// are rate-limited per address; the token is never taken from argv. After every pattern the
+// controller's peak resident set (VmHWM) stays under 100 MB; each figure is printed.
+#include "comms/protocol/FrameCodec.h"
+
+#include "ControllerProcess.h"
+#include "LinkFixture.h"
+#include "RawClient.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <arpa/inet.h>
+#include <cerrno>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <vector>
+
+using namespace hsmu;
+using namespace hsmu::comms;
+using namespace linkfixture;
+
+namespace {
+
+constexpr long kMaxRssKb = 100 * 1024; // 100 MB
+
+/// A plain blocking TCP socket to 127.0.0.1:port (-1 on failure).
+int rawConnect(std::uint16_t port) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(port);
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (fd < 0 || ::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+        if (fd >= 0)
+            ::close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+} // namespace
+
+class TestControllerHostile : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    std::string m_config;
+    QString m_tokenFile;
+
+    ControllerProcess controller() {
+        return ControllerProcess({"--config", QString::fromStdString(m_config), "--pace", "fast",
+                                  "--token-file", m_tokenFile});
+    }
+
+private slots:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        m_config = writeConfig(m_dir.path(), "c3.json", condition3(1.0));
+        m_tokenFile = m_dir.filePath("token");
+        std::ofstream(m_tokenFile.toStdString()) << "s3cret\n";
+    }
+
+    void nonReadingClientIsDropped() {
+        ControllerProcess ctl = controller();
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const int fd = rawConnect(ctl.port());
+        QVERIFY(fd >= 0);
+        int small = 4096; // keep the kernel's buffers small: the queue is the controller's
+        ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+        std::vector<std::uint8_t> hello, beats;
+        encodeFrame(HelloMsg{kProtocolVersion, 1, "s3cret", ""}, 1, hello);
+        QCOMPARE(::write(fd, hello.data(), hello.size()), ssize_t(hello.size()));
+        std::uint32_t sequence = 2; // the decoder wants consecutive sequence numbers
+        const auto refill = [&] {
+            beats.clear();
+            for (int i = 0; i < 4096; ++i) {
+                std::vector<std::uint8_t> f;
+                encodeFrame(HeartbeatMsg{sequence}, sequence, f);
+                ++sequence;
+                beats.insert(beats.end(), f.begin(), f.end());
+            }
+        };
+        std::size_t offset = 0;
+        refill();
+        ::fcntl(fd, F_SETFL, O_NONBLOCK);
+        // Up to 64 MB of heartbeats (each answered by the controller), never reading: the
+        // controller must drop the connection long before.
+        std::size_t sent = 0;
+        bool closed = false;
+        for (int round = 0; round < 100000 && sent < (64u << 20) && !closed; ++round) {
+            const ssize_t n =
+                ::send(fd, beats.data() + offset, beats.size() - offset, MSG_NOSIGNAL);
+            if (n > 0) {
+                sent += std::size_t(n);
+                offset += std::size_t(n);
+                if (offset == beats.size()) {
+                    refill();
+                    offset = 0;
+                }
+                continue;
+            }
+            if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
+                closed = true; // reset by the controller
+                break;
+            }
+            pollfd p{fd, POLLOUT, 0};
+            if (::poll(&p, 1, 200) > 0 && (p.revents & (POLLERR | POLLHUP)))
+                closed = true;
+            if (round > 200 && ::poll(&p, 1, 0) == 0)
+                break; // the controller stopped reading us: it dropped or blocks
+        }
+        ::close(fd);
+        const long peak = ctl.rssKb(true);
+        qInfo("non-reading client: %zu bytes of heartbeats sent; controller VmHWM %ld kB", sent,
+              peak);
+        QVERIFY(peak > 0 && peak < kMaxRssKb);
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("does not read its replies"), qPrintable(ctl.log()));
+    }
+
+    void idleStrangersDoNotLockOutTheTokenHolder() {
+        ControllerProcess ctl = controller();
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        std::vector<int> strangers;
+        for (int i = 0; i < 64; ++i) {
+            const int fd = rawConnect(ctl.port());
+            QVERIFY(fd >= 0);
+            strangers.push_back(fd);
+        }
+        RawClient console;
+        QVERIFY(console.connect(ctl.port()));
+        QVERIFY2(console.hello(7, "s3cret"), qPrintable(ctl.log()));
+        const long peak = ctl.rssKb(true);
+        qInfo("64 idle strangers: controller VmHWM %ld kB", peak);
+        QVERIFY(peak > 0 && peak < kMaxRssKb);
+        for (const int fd : strangers)
+            ::close(fd);
+    }
+
+    void failedTokensAreRateLimited() {
+        ControllerProcess ctl = controller();
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        int wrong = 0, limited = 0;
+        for (int i = 0; i < 300; ++i) {
+            RawClient c;
+            QVERIFY(c.connect(ctl.port()));
+            QVERIFY(c.send(HelloMsg{kProtocolVersion, 1, "guess" + std::to_string(i), ""}));
+            const auto e = c.expect<ErrorMsg>();
+            QVERIFY(e && e->code == ErrorCode::Unauthorized);
+            if (e->reason.find("too many wrong tokens") != std::string::npos)
+                ++limited;
+            else
+                ++wrong;
+        }
+        // 300 tries: the token was compared at most 5 times (the window is 10 s; the loop may
+        // straddle one window boundary on a slow machine, hence <= 10).
+        qInfo("300 wrong tokens: %d compared, %d refused unread; controller VmHWM %ld kB", wrong,
+              limited, ctl.rssKb(true));
+        QVERIFY2(wrong <= 10, qPrintable(QString::number(wrong)));
+        QVERIFY(ctl.rssKb(true) < kMaxRssKb);
+    }
+
+    void tokenIsNeverAnArgument() {
+        QProcess p;
+        p.start(QStringLiteral(HSMU_CONTROLLER_EXE),
+                {"--config", QString::fromStdString(m_config), "--port", "0", "--token", "x"});
+        QVERIFY(p.waitForFinished(20000));
+        QVERIFY(p.exitCode() != 0);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.contains("--token-file") && err.contains("HSMU_CONTROLLER_TOKEN"),
+                 qPrintable(err));
+        // The environment variable works.
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("HSMU_CONTROLLER_TOKEN", "from-env");
+        QProcess q;
+        q.setProcessEnvironment(env);
+        q.setProcessChannelMode(QProcess::MergedChannels);
+        q.start(QStringLiteral(HSMU_CONTROLLER_EXE), {"--config", QString::fromStdString(m_config),
+                                                      "--port", "0", "--pace", "fast"});
+        QVERIFY(q.waitForReadyRead(20000));
+        const QString line = QString::fromUtf8(q.readLine());
+        const auto m = QRegularExpression(":(\\d+) ").match(line);
+        QVERIFY2(m.hasMatch(), qPrintable(line));
+        RawClient c;
+        QVERIFY(c.connect(quint16(m.captured(1).toUInt())));
+        QVERIFY(c.hello(3, "from-env"));
+        q.terminate();
+        QVERIFY(q.waitForFinished(20000));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestControllerHostile)
+#include "TestControllerHostile.moc"
