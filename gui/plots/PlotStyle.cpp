@@ -1,5 +1,7 @@
 #include "gui/plots/PlotStyle.h"
 
+#include "gui/plots/PlotTools.h"
+
 #include <qcustomplot.h>
 
 #include <array>
@@ -35,6 +37,7 @@ void PlotStyle::apply(QCustomPlot& plot) {
         axis->grid()->setZeroLinePen(QPen(QColor(150, 150, 150), 0));
     }
     plot.setMinimumSize(240, 180);
+    PlotTools::attach(plot); // cursor read-out, zoom / pan, autoscale, channels, CSV export
 }
 
 QPen PlotStyle::seriesPen(int i) {
@@ -57,7 +60,9 @@ void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
 }
 
 void PlotStyle::rescaleWithMargin(QCustomPlot& plot) {
-    plot.rescaleAxes();
+    if (!PlotTools::autoscale(plot))
+        return; // the operator's zoom / pinned window stays
+    plot.rescaleAxes(true); // visible channels only
     padRange(plot.xAxis);
     padRange(plot.yAxis);
     // Visible horizontal reference lines (thresholds, bounds) stay in view.
