@@ -9,6 +9,9 @@
 #   cpack -G DEB (in build/) makes hsmu_<version>_<arch>.deb with the run-time packages of
 #   Debian 12 as dependencies (dpkg-shlibdeps when available).
 include(GNUInstallDirs)
+# `install` (and cpack's preinstall) need only what is installed, not every test and
+# benchmark: build hsmu and hsmu-controller first (CI builds everything before ctest).
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 if(TARGET hsmu)
   install(TARGETS hsmu RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
@@ -23,8 +26,8 @@ install(FILES ${PROJECT_SOURCE_DIR}/resources/desktop/hsmu.desktop
         DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
 install(FILES ${PROJECT_SOURCE_DIR}/resources/desktop/hsmu.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
-install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}
+install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/hsmu)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/hsmu
         FILES_MATCHING PATTERN "*.md")
 
 set(CPACK_PACKAGE_NAME hsmu)

@@ -336,6 +336,7 @@ private slots:
                  QString::number(m_run.records[50].u[0], 'g', 6).toDouble());
         // Keyboard: Right steps forward, Left back.
         w->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(w.get()));
         QTest::keyClick(w.get(), Qt::Key_Right);
         QCOMPARE(w->rowsShown(), 52);
         QTest::keyClick(w.get(), Qt::Key_Left);
@@ -360,7 +361,7 @@ private slots:
 
         // Plots as SVG and PDF: one file per plot.
         const QList<QCustomPlot*> plots = w->panel().findChildren<QCustomPlot*>();
-        for (const QString format : {QStringLiteral("svg"), QStringLiteral("pdf")}) {
+        for (const QString& format : {QStringLiteral("svg"), QStringLiteral("pdf")}) {
             QStringList errors;
             const QStringList files =
                 ReplayExport::exportPlots(plots, dir.path(), format, &errors);

@@ -22,7 +22,7 @@ check_tree() { # PREFIX
 }
 
 run_test() { # PREFIX
-    (cd "$work" && "$1/bin/hsmu" run paper-condition-3 > "$work/run.log" 2>&1) ||
+    (cd "$work" && "$1/bin/hsmu" run paper-condition-3 --out "$work/out-$(basename "$(dirname "$1")")" > "$work/run.log" 2>&1) ||
         { cat "$work/run.log"; echo "FAIL: $1/bin/hsmu run paper-condition-3"; exit 1; }
     echo "ok: $1/bin/hsmu run paper-condition-3: $(tail -1 "$work/run.log")"
 }
