@@ -123,7 +123,8 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
 
     auto* buttons = new QDialogButtonBox(this);
     m_start = buttons->addButton(tr("Start test"), QDialogButtonBox::AcceptRole);
-    buttons->addButton(QDialogButtonBox::Cancel);
+    // Our own words (Qt's standard buttons are not translated without Qt's catalogues).
+    buttons->addButton(tr("Cancel"), QDialogButtonBox::RejectRole);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);

@@ -27,7 +27,7 @@ TestStatusBar::TestStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_link->setObjectName(QStringLiteral("statusLink"));
     m_recording->setObjectName(QStringLiteral("statusRecording"));
     for (QLabel* l : {m_link, m_recording})
-        l->setMaximumWidth(420); // long addresses and paths: cut, in full in the tool tip
+        l->setMaximumWidth(280); // long addresses and paths: cut, in full in the tool tip
     setProgress(0, 0, 0.0, 0.0);
     setRunState(RunState::Idle);
     setLink(tr("no link"), true);

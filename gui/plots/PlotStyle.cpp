@@ -4,6 +4,8 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
+
 #include <array>
 #include <cmath>
 
@@ -28,7 +30,13 @@ void PlotStyle::apply(QCustomPlot& plot) {
     plot.setPlottingHint(QCP::phFastPolylines, true); // thousands of points per live curve
     plot.setNotAntialiasedElements(QCP::aeFills);
     plot.legend->setVisible(false);
-    plot.legend->setBrush(QColor(255, 255, 255, 220));
+    // Small and see-through: at 1280x720 a legend must not hide the traces.
+    plot.legend->setBrush(QColor(255, 255, 255, 150));
+    QFont legendFont = plot.font();
+    legendFont.setPointSizeF(std::max(6.0, legendFont.pointSizeF() - 2.0));
+    plot.legend->setFont(legendFont);
+    plot.legend->setIconSize(16, 8);
+    plot.legend->setRowSpacing(-3);
     plot.legend->setBorderPen(QPen(QColor(180, 180, 180)));
     plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
     for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
@@ -55,7 +63,8 @@ void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
         return;
     }
     plot.plotLayout()->insertRow(0);
-    auto* element = new QCPTextElement(&plot, title, QFont(plot.font().family(), 11, QFont::Bold));
+    // 10 pt: the longest title fits a plot cell at 1280x720.
+    auto* element = new QCPTextElement(&plot, title, QFont(plot.font().family(), 10, QFont::Bold));
     plot.plotLayout()->addElement(0, 0, element);
 }
 
