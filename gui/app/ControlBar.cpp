@@ -30,6 +30,9 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
         if (!id.isEmpty())
             emit presetChosen(id);
     });
+    // Narrow enough for 1280 px in every language; the list opens as wide as it needs.
+    m_presets->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_presets->setMinimumContentsLength(14);
     addWidget(m_presets);
 
     m_open = addAction(tr("Open configuration..."), this, &ControlBar::openRequested);
@@ -55,7 +58,7 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
                            .arg(holdKey.toString(QKeySequence::NativeText)));
     if (QWidget* button = widgetForAction(m_hold))
         button->setStyleSheet(QStringLiteral("QToolButton { color: white; background: #c62828;"
-                                             " font-weight: bold; padding: 3px 10px; }"));
+                                             " font-weight: bold; padding: 3px 6px; }"));
     addSeparator();
 
     addWidget(new QLabel(tr(" Speed: "), this));
@@ -80,6 +83,8 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
     m_wallPerStep->setToolTip(tr("Each step takes this long in wall time (pseudo-dynamic pace)"));
     connect(m_speed, &QComboBox::currentIndexChanged, this, [this] { emitPace(); });
     connect(m_wallPerStep, &QDoubleSpinBox::valueChanged, this, [this] { emitPace(); });
+    m_speed->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_speed->setMinimumContentsLength(12);
     addWidget(m_speed);
     m_wallPerStepAction = addWidget(m_wallPerStep);
     m_wallPerStepAction->setVisible(false);

@@ -66,6 +66,7 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_summary);
     layout->addWidget(m_tree, 1);
     setSnapshot({});
+    setEditable(false); // nothing to decide before a test is loaded
 }
 
 void PendingUpdatesPanel::emitPolicy() {

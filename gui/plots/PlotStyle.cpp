@@ -58,6 +58,7 @@ QPen PlotStyle::seriesPen(int i) {
 }
 
 void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
+    plot.setProperty("hsmuTitle", title);
     if (auto* existing = qobject_cast<QCPTextElement*>(plot.plotLayout()->element(0, 0))) {
         existing->setText(title);
         return;
@@ -66,6 +67,16 @@ void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
     // 10 pt: the longest title fits a plot cell at 1280x720.
     auto* element = new QCPTextElement(&plot, title, QFont(plot.font().family(), 10, QFont::Bold));
     plot.plotLayout()->addElement(0, 0, element);
+    // A title wider than its plot (a narrow cell, a long translation) is cut with "...", the
+    // full title in the plot's tool tip.
+    QObject::connect(&plot, &QCustomPlot::beforeReplot, element, [&plot, element] {
+        const QString full = plot.property("hsmuTitle").toString();
+        const QString shown = QFontMetrics(element->font())
+                                  .elidedText(full, Qt::ElideRight, std::max(40, plot.width() - 12));
+        if (element->text() != shown)
+            element->setText(shown);
+        plot.setToolTip(shown == full ? QString() : full);
+    });
 }
 
 void PlotStyle::rescaleWithMargin(QCustomPlot& plot) {

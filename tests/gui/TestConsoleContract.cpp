@@ -23,6 +23,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QSignalSpy>
+#include <QTreeWidget>
 #include <QtTest>
 
 using namespace hsmu;
@@ -172,6 +174,47 @@ private slots:
         QFile file(settings.fileName());
         if (file.open(QIODevice::ReadOnly))
             QVERIFY(!file.readAll().contains(secret.toUtf8()));
+    }
+
+    // Items 4-5: proposals replace each other every step under approval; the panel shows the
+    // latest in place (the buttons stay under the mouse) with the count since the decision.
+    void proposalsCoalesceWithAVisibleCount() {
+        PendingUpdatesPanel panel;
+        panel.setEditable(true);
+        panel.show();
+        UpdatingSnapshot s;
+        s.enabled = true;
+        s.policy = ReporterPolicy::OnApproval;
+        auto proposal = [](int id, double k0) {
+            UpdateProposal p;
+            p.id = id;
+            p.step = id * 10;
+            p.time = id * 0.1;
+            p.element = "Element 2";
+            p.proposed = {{"k0", k0}};
+            p.current = {{"k0", 1.0}};
+            return p;
+        };
+        s.pending = {proposal(5, 1.10)};
+        panel.setSnapshot(s);
+        QPushButton* approve = panel.findChild<QPushButton*>(QStringLiteral("approve5"));
+        QVERIFY(approve);
+        s.pending = {proposal(6, 1.12)};
+        panel.setSnapshot(s);
+        s.pending = {proposal(7, 1.15)};
+        panel.setSnapshot(s);
+        QCOMPARE(panel.coalescedCount(QStringLiteral("Element 2")), 3);
+        QCOMPARE(panel.findChild<QPushButton*>(QStringLiteral("approve7")), approve); // in place
+        const QTreeWidgetItem* top = panel.tree()->topLevelItem(0);
+        QVERIFY2(top->text(0).startsWith(QStringLiteral("#7 Element 2")), qPrintable(top->text(0)));
+        QVERIFY2(top->text(0).contains(QStringLiteral("latest of 3 proposals")),
+                 qPrintable(top->text(0)));
+        QCOMPARE(top->child(0)->text(2), QStringLiteral("1.15")); // the proposed value shown
+        QSignalSpy approved(&panel, &PendingUpdatesPanel::approveRequested);
+        approve->click();
+        QCOMPARE(approved.count(), 1);
+        QCOMPARE(approved.at(0).at(0).toInt(), 7); // the proposal shown when clicked
+        QCOMPARE(panel.coalescedCount(QStringLiteral("Element 2")), 0);
     }
 
 private:
