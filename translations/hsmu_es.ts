@@ -263,6 +263,13 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>GroundMotionCheck</name>
+    <message>
+        <source>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</source>
+        <translation>%1 no es un archivo de texto con números (contiene datos binarios, p. ej. una imagen); se espera un registro PEER AT2, dos columnas (tiempo, aceleración) o una columna de valores</translation>
+    </message>
+</context>
+<context>
     <name>MaterialCommand</name>
     <message>
         <source>Drive one hysteresis law with a deformation history.</source>
@@ -1328,10 +1335,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Note (recorded with the current step and test time):</source>
         <translation>Nota (se registra con el paso y el tiempo de ensayo actuales):</translation>
-    </message>
-    <message>
-        <source>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</source>
-        <translation>%1 no es un archivo de texto con números (contiene datos binarios, p. ej. una imagen); se espera un registro PEER AT2, dos columnas (tiempo, aceleración) o una columna de valores</translation>
     </message>
     <message>
         <source>Quit the console (asks first while a test runs)</source>

@@ -263,6 +263,13 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>GroundMotionCheck</name>
+    <message>
+        <source>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</source>
+        <translation>%1 不是数字文本文件（含二进制数据，例如图像）；应为 PEER AT2 记录、两列（时间、加速度）或一列数值</translation>
+    </message>
+</context>
+<context>
     <name>MaterialCommand</name>
     <message>
         <source>Drive one hysteresis law with a deformation history.</source>
@@ -1327,10 +1334,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Note (recorded with the current step and test time):</source>
         <translation>备注（连同当前步和试验时间一起记录）：</translation>
-    </message>
-    <message>
-        <source>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</source>
-        <translation>%1 不是数字文本文件（含二进制数据，例如图像）；应为 PEER AT2 记录、两列（时间、加速度）或一列数值</translation>
     </message>
     <message>
         <source>Quit the console (asks first while a test runs)</source>

@@ -4,6 +4,7 @@
 #include "gui/app/AlarmList.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
+#include "gui/app/GroundMotionCheck.h"
 #include "gui/app/ParametersPanel.h"
 #include "gui/app/PendingUpdatesPanel.h"
 #include "gui/app/PreflightChecks.h"
@@ -41,25 +42,6 @@ namespace hsmu::gui {
 namespace {
 bool active(RunState s) {
     return s == RunState::Running || s == RunState::Paused || s == RunState::Holding;
-}
-
-/// A binary file (an image, a PDF, an HDF5 record ...) chosen as a ground motion: "" if the
-/// start of the file looks like text.
-QString binaryFileProblem(const QString& path) {
-    QFile f(path);
-    if (path.isEmpty() || !f.open(QIODevice::ReadOnly))
-        return {}; // the reader names a missing file itself
-    const QByteArray head = f.read(4096);
-    int control = 0;
-    for (const char c : head)
-        if (c == '\0' || (uchar(c) < 0x20 && c != '\n' && c != '\r' && c != '\t'))
-            ++control;
-    if (control == 0)
-        return {};
-    return MainWindow::tr("%1 is not a text file of numbers (it holds binary data, e.g. an "
-                          "image); expected a PEER AT2 record, two columns (time, "
-                          "acceleration) or one column of values")
-        .arg(QFileInfo(path).fileName());
 }
 } // namespace
 
@@ -367,7 +349,7 @@ void MainWindow::previewGroundMotion() {
         QString file = QString::fromStdString(cfg->groundMotion.file);
         if (!file.isEmpty() && QFileInfo(file).isRelative() && !cfg->sourcePath.empty())
             file = QFileInfo(QString::fromStdString(cfg->sourcePath)).dir().filePath(file);
-        error = binaryFileProblem(file);
+        error = GroundMotionCheck::binaryFileProblem(file);
     }
     if (cfg && error.isEmpty() && m_plots->showGroundMotionOf(*cfg, &error)) {
         m_setup->setGroundMotionStatus(QString());
