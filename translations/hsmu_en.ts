@@ -263,6 +263,13 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>GroundMotionCheck</name>
+    <message>
+        <source>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</source>
+        <translation>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</translation>
+    </message>
+</context>
+<context>
     <name>MaterialCommand</name>
     <message>
         <source>Drive one hysteresis law with a deformation history.</source>
@@ -306,6 +313,69 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>OperatorEvent</name>
+    <message>
+        <source>pre-flight confirmed by the operator (zero offsets)</source>
+        <translation>pre-flight confirmed by the operator (zero offsets)</translation>
+    </message>
+    <message>
+        <source>test started by the operator</source>
+        <translation>test started by the operator</translation>
+    </message>
+    <message>
+        <source>paused by the operator</source>
+        <translation>paused by the operator</translation>
+    </message>
+    <message>
+        <source>single step by the operator</source>
+        <translation>single step by the operator</translation>
+    </message>
+    <message>
+        <source>resumed by the operator</source>
+        <translation>resumed by the operator</translation>
+    </message>
+    <message>
+        <source>emergency hold before the test was armed: nothing is armed, the pre-flight check must be confirmed again</source>
+        <translation>emergency hold before the test was armed: nothing is armed, the pre-flight check must be confirmed again</translation>
+    </message>
+    <message>
+        <source>emergency hold by the operator</source>
+        <translation>emergency hold by the operator</translation>
+    </message>
+    <message>
+        <source>test ended by the operator, data kept</source>
+        <translation>test ended by the operator, data kept</translation>
+    </message>
+    <message>
+        <source>update %1 approved by the operator: %2 -&gt; %3</source>
+        <translation>update %1 approved by the operator: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <source>update %1 rejected by the operator (%2)</source>
+        <translation>update %1 rejected by the operator (%2)</translation>
+    </message>
+    <message>
+        <source>bounds changed: %1 -&gt; %2</source>
+        <translation>bounds changed: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>lock changed: %1 -&gt; %2</source>
+        <translation>lock changed: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>fit-error threshold changed: %1 -&gt; %2</source>
+        <translation>fit-error threshold changed: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>updating policy changed: %1 -&gt; %2</source>
+        <translation>updating policy changed: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>%1 (wall time %2)</source>
+        <translation>%1 (wall time %2)</translation>
+    </message>
+</context>
+<context>
     <name>OverrideOptions</name>
     <message>
         <source>Ground-motion record file.</source>
@@ -341,6 +411,61 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: the plot could not be written</source>
         <translation>%1: the plot could not be written</translation>
+    </message>
+</context>
+<context>
+    <name>PreflightChecks</name>
+    <message>
+        <source>time step dt [s]</source>
+        <translation>time step dt [s]</translation>
+    </message>
+    <message>
+        <source>duration [s]</source>
+        <translation>duration [s]</translation>
+    </message>
+    <message>
+        <source>ground motion</source>
+        <translation>ground motion</translation>
+    </message>
+    <message>
+        <source>ground motion scale [-]</source>
+        <translation>ground motion scale [-]</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>integrator</translation>
+    </message>
+    <message>
+        <source>controller</source>
+        <translation>controller</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>steps</translation>
+    </message>
+    <message>
+        <source>PGA [m/s²]</source>
+        <translation>PGA [m/s²]</translation>
+    </message>
+    <message>
+        <source>Unusual step count: %L1 steps (more than %L2); check dt and the duration.</source>
+        <translation>Unusual step count: %L1 steps (more than %L2); check dt and the duration.</translation>
+    </message>
+    <message>
+        <source>Unusual PGA: %1 m/s² (above %2 m/s²); check the ground motion scale.</source>
+        <translation>Unusual PGA: %1 m/s² (above %2 m/s²); check the ground motion scale.</translation>
+    </message>
+    <message>
+        <source>The ground motion is zero (PGA 0 m/s²).</source>
+        <translation>The ground motion is zero (PGA 0 m/s²).</translation>
+    </message>
+    <message>
+        <source>Very small time step: dt = %1 s.</source>
+        <translation>Very small time step: dt = %1 s.</translation>
+    </message>
+    <message>
+        <source>Changed since the last run: %1 %2 -&gt; %3</source>
+        <translation>Changed since the last run: %1 %2 -&gt; %3</translation>
     </message>
 </context>
 <context>
@@ -455,6 +580,17 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: cannot create the output directory</source>
         <translation>%1: cannot create the output directory</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayExport</name>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: cannot be written (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -826,10 +962,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Resume</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>Stop</translation>
-    </message>
-    <message>
         <source> Speed: </source>
         <translation> Speed: </translation>
     </message>
@@ -872,6 +1004,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Hold the test at once, between two steps (%1)</source>
         <translation>Hold the test at once, between two steps (%1)</translation>
+    </message>
+    <message>
+        <source>Stop...</source>
+        <translation>Stop...</translation>
+    </message>
+    <message>
+        <source>End the test, keeping the data (asks for confirmation)</source>
+        <translation>End the test, keeping the data (asks for confirmation)</translation>
+    </message>
+    <message>
+        <source>1/%1 x real time</source>
+        <translation>1/%1 x real time</translation>
+    </message>
+    <message>
+        <source>fixed wall time per step</source>
+        <translation>fixed wall time per step</translation>
+    </message>
+    <message>
+        <source> s of wall time per step</source>
+        <translation> s of wall time per step</translation>
+    </message>
+    <message>
+        <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
+        <translation>Each step takes this long in wall time (pseudo-dynamic pace)</translation>
     </message>
 </context>
 <context>
@@ -1130,14 +1286,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>(none)</translation>
     </message>
     <message>
-        <source>update #%1 approved by the operator</source>
-        <translation>update #%1 approved by the operator</translation>
-    </message>
-    <message>
-        <source>update #%1 rejected by the operator</source>
-        <translation>update #%1 rejected by the operator</translation>
-    </message>
-    <message>
         <source>setup not applied: %1</source>
         <translation>setup not applied: %1</translation>
     </message>
@@ -1148,10 +1296,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>start cancelled at the pre-flight check</source>
         <translation>start cancelled at the pre-flight check</translation>
-    </message>
-    <message>
-        <source>pre-flight confirmed by the operator (zero offsets)</source>
-        <translation>pre-flight confirmed by the operator (zero offsets)</translation>
     </message>
     <message>
         <source>built-in virtual lab</source>
@@ -1199,6 +1343,50 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Note (recorded with the current step and test time):</source>
         <translation>Note (recorded with the current step and test time):</translation>
+    </message>
+    <message>
+        <source>Quit the console (asks first while a test runs)</source>
+        <translation>Quit the console (asks first while a test runs)</translation>
+    </message>
+    <message>
+        <source>testing the link...</source>
+        <translation>testing the link...</translation>
+    </message>
+    <message>
+        <source>This ground motion cannot be used: %1</source>
+        <translation>This ground motion cannot be used: %1</translation>
+    </message>
+    <message>
+        <source>ground motion not usable: %1</source>
+        <translation>ground motion not usable: %1</translation>
+    </message>
+    <message>
+        <source>A test is running</source>
+        <translation>A test is running</translation>
+    </message>
+    <message>
+        <source>Continue the test</source>
+        <translation>Continue the test</translation>
+    </message>
+    <message>
+        <source>End the test now? The specimen is held, the test cannot be resumed, and every step so far stays in the record.</source>
+        <translation>End the test now? The specimen is held, the test cannot be resumed, and every step so far stays in the record.</translation>
+    </message>
+    <message>
+        <source>End the test and keep the data</source>
+        <translation>End the test and keep the data</translation>
+    </message>
+    <message>
+        <source>link tested: %1 answered; the test is prepared, Start shows the pre-flight check</source>
+        <translation>link tested: %1 answered; the test is prepared, Start shows the pre-flight check</translation>
+    </message>
+    <message>
+        <source>A test is running. Quit the console? The test is ended first: the specimen is held and every step so far stays in the record.</source>
+        <translation>A test is running. Quit the console? The test is ended first: the specimen is held and every step so far stays in the record.</translation>
+    </message>
+    <message>
+        <source>End the test, keep the data and quit</source>
+        <translation>End the test, keep the data and quit</translation>
     </message>
 </context>
 <context>
@@ -1351,6 +1539,52 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Reject</source>
         <translation>Reject</translation>
     </message>
+    <message numerus="yes">
+        <source> - latest of %n proposal(s) since the last decision</source>
+        <translation>
+            <numerusform> - latest of %n proposal(s) since the last decision</numerusform>
+            <numerusform> - latest of %n proposal(s) since the last decision</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PlotTools</name>
+    <message>
+        <source>x = %1, y = %2</source>
+        <translation>x = %1, y = %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3</source>
+        <translation>%1: %2 at %3</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: cannot be written (%2)</translation>
+    </message>
+    <message>
+        <source>Autoscale</source>
+        <translation>Autoscale</translation>
+    </message>
+    <message>
+        <source>Channels</source>
+        <translation>Channels</translation>
+    </message>
+    <message>
+        <source>curve %1</source>
+        <translation>curve %1</translation>
+    </message>
+    <message>
+        <source>Export visible data as CSV...</source>
+        <translation>Export visible data as CSV...</translation>
+    </message>
+    <message>
+        <source>Export visible data</source>
+        <translation>Export visible data</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PreflightDialog</name>
@@ -1458,6 +1692,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Start test</source>
         <translation>Start test</translation>
     </message>
+    <message>
+        <source>Please check:</source>
+        <translation>Please check:</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReidentifyDialog</name>
@@ -1500,6 +1742,56 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>{"model": ..., "updating": ...} merged into the recorded settings, as hsmu replay --config</source>
         <translation>{"model": ..., "updating": ...} merged into the recorded settings, as hsmu replay --config</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayEventList</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>Time [s]</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Kind</translation>
+    </message>
+    <message>
+        <source>Event, alarm or note</source>
+        <translation>Event, alarm or note</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>operator</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>note</translation>
+    </message>
+    <message>
+        <source>Double-click (or Enter) to jump to the step</source>
+        <translation>Double-click (or Enter) to jump to the step</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayReadout</name>
+    <message>
+        <source>Quantity</source>
+        <translation>Quantity</translation>
+    </message>
+    <message>
+        <source>Value at the cursor</source>
+        <translation>Value at the cursor</translation>
     </message>
 </context>
 <context>
@@ -1576,6 +1868,70 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Re-identification failed</source>
         <translation>Re-identification failed</translation>
     </message>
+    <message>
+        <source>Events, alarms and notes</source>
+        <translation>Events, alarms and notes</translation>
+    </message>
+    <message>
+        <source>Values at the cursor</source>
+        <translation>Values at the cursor</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>Export time window as &amp;CSV...</source>
+        <translation>Export time window as &amp;CSV...</translation>
+    </message>
+    <message>
+        <source>Export time window</source>
+        <translation>Export time window</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export &amp;plots (PNG, SVG or PDF)...</source>
+        <translation>Export &amp;plots (PNG, SVG or PDF)...</translation>
+    </message>
+    <message>
+        <source>Export plots</source>
+        <translation>Export plots</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png);;SVG drawings (*.svg);;PDF documents (*.pdf)</source>
+        <translation>PNG images (*.png);;SVG drawings (*.svg);;PDF documents (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Close</translation>
+    </message>
+    <message>
+        <source>&amp;Playback</source>
+        <translation>&amp;Playback</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>Step &amp;back</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>Step &amp;forward</translation>
+    </message>
+    <message>
+        <source>To the &amp;start</source>
+        <translation>To the &amp;start</translation>
+    </message>
+    <message>
+        <source>To the &amp;end</source>
+        <translation>To the &amp;end</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;View</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::SettingsDialog</name>
@@ -1618,6 +1974,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Recent files:</source>
         <translation>Recent files:</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
     </message>
 </context>
 <context>
@@ -1731,14 +2095,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>enabled</translation>
     </message>
     <message>
-        <source>Apply updates:</source>
-        <translation>Apply updates:</translation>
-    </message>
-    <message>
-        <source>N [steps]:</source>
-        <translation>N [steps]:</translation>
-    </message>
-    <message>
         <source>Fit-error threshold [-]:</source>
         <translation>Fit-error threshold [-]:</translation>
     </message>
@@ -1788,6 +2144,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>OpenFresco GenericTCP controller</source>
         <translation>OpenFresco GenericTCP controller</translation>
     </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>The token hsmu-controller --token expects; not saved</source>
+        <translation>The token hsmu-controller --token expects; not saved</translation>
+    </message>
+    <message>
+        <source>Token:</source>
+        <translation>Token:</translation>
+    </message>
+    <message>
+        <source>Test link</source>
+        <translation>Test link</translation>
+    </message>
+    <message>
+        <source>Connect to the controller now (the test is prepared; nothing moves before the pre-flight check)</source>
+        <translation>Connect to the controller now (the test is prepared; nothing moves before the pre-flight check)</translation>
+    </message>
+    <message>
+        <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
+        <translation>When updates are applied is chosen in the Pending updates panel (one setting for the test).</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::TestStatusBar</name>
@@ -1822,10 +2202,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
-    <message>
-        <source>stopped by the operator</source>
-        <translation>stopped by the operator</translation>
-    </message>
     <message>
         <source>emergency hold by the operator</source>
         <translation>emergency hold by the operator</translation>

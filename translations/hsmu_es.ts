@@ -263,6 +263,13 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>GroundMotionCheck</name>
+    <message>
+        <source>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</source>
+        <translation>%1 no es un archivo de texto con números (contiene datos binarios, p. ej. una imagen); se espera un registro PEER AT2, dos columnas (tiempo, aceleración) o una columna de valores</translation>
+    </message>
+</context>
+<context>
     <name>MaterialCommand</name>
     <message>
         <source>Drive one hysteresis law with a deformation history.</source>
@@ -306,6 +313,69 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>OperatorEvent</name>
+    <message>
+        <source>pre-flight confirmed by the operator (zero offsets)</source>
+        <translation>comprobación previa confirmada por el operador (ceros)</translation>
+    </message>
+    <message>
+        <source>test started by the operator</source>
+        <translation>ensayo iniciado por el operador</translation>
+    </message>
+    <message>
+        <source>paused by the operator</source>
+        <translation>pausado por el operador</translation>
+    </message>
+    <message>
+        <source>single step by the operator</source>
+        <translation>paso único por el operador</translation>
+    </message>
+    <message>
+        <source>resumed by the operator</source>
+        <translation>reanudado por el operador</translation>
+    </message>
+    <message>
+        <source>emergency hold before the test was armed: nothing is armed, the pre-flight check must be confirmed again</source>
+        <translation>retención de emergencia antes de armar el ensayo: nada está armado, hay que confirmar de nuevo la comprobación previa</translation>
+    </message>
+    <message>
+        <source>emergency hold by the operator</source>
+        <translation>retención de emergencia por el operador</translation>
+    </message>
+    <message>
+        <source>test ended by the operator, data kept</source>
+        <translation>ensayo terminado por el operador, datos conservados</translation>
+    </message>
+    <message>
+        <source>update %1 approved by the operator: %2 -&gt; %3</source>
+        <translation>actualización %1 aprobada por el operador: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <source>update %1 rejected by the operator (%2)</source>
+        <translation>actualización %1 rechazada por el operador (%2)</translation>
+    </message>
+    <message>
+        <source>bounds changed: %1 -&gt; %2</source>
+        <translation>límites cambiados: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>lock changed: %1 -&gt; %2</source>
+        <translation>bloqueo cambiado: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>fit-error threshold changed: %1 -&gt; %2</source>
+        <translation>umbral del error de ajuste cambiado: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>updating policy changed: %1 -&gt; %2</source>
+        <translation>política de actualización cambiada: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>%1 (wall time %2)</source>
+        <translation>%1 (hora real %2)</translation>
+    </message>
+</context>
+<context>
     <name>OverrideOptions</name>
     <message>
         <source>Ground-motion record file.</source>
@@ -341,6 +411,61 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: the plot could not be written</source>
         <translation>%1: no se pudo escribir la gráfica</translation>
+    </message>
+</context>
+<context>
+    <name>PreflightChecks</name>
+    <message>
+        <source>time step dt [s]</source>
+        <translation>paso de tiempo dt [s]</translation>
+    </message>
+    <message>
+        <source>duration [s]</source>
+        <translation>duración [s]</translation>
+    </message>
+    <message>
+        <source>ground motion</source>
+        <translation>movimiento del suelo</translation>
+    </message>
+    <message>
+        <source>ground motion scale [-]</source>
+        <translation>escala del movimiento del suelo [-]</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>integrador</translation>
+    </message>
+    <message>
+        <source>controller</source>
+        <translation>controlador</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>pasos</translation>
+    </message>
+    <message>
+        <source>PGA [m/s²]</source>
+        <translation>PGA [m/s²]</translation>
+    </message>
+    <message>
+        <source>Unusual step count: %L1 steps (more than %L2); check dt and the duration.</source>
+        <translation>Número de pasos inusual: %L1 pasos (más de %L2); revise dt y la duración.</translation>
+    </message>
+    <message>
+        <source>Unusual PGA: %1 m/s² (above %2 m/s²); check the ground motion scale.</source>
+        <translation>PGA inusual: %1 m/s² (más de %2 m/s²); revise la escala del movimiento del suelo.</translation>
+    </message>
+    <message>
+        <source>The ground motion is zero (PGA 0 m/s²).</source>
+        <translation>El movimiento del suelo es nulo (PGA 0 m/s²).</translation>
+    </message>
+    <message>
+        <source>Very small time step: dt = %1 s.</source>
+        <translation>Paso de tiempo muy pequeño: dt = %1 s.</translation>
+    </message>
+    <message>
+        <source>Changed since the last run: %1 %2 -&gt; %3</source>
+        <translation>Cambiado desde el último ensayo: %1 %2 -&gt; %3</translation>
     </message>
 </context>
 <context>
@@ -455,6 +580,17 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: cannot create the output directory</source>
         <translation>%1: no se puede crear el directorio de salida</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayExport</name>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: no se puede escribir (%2)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -826,10 +962,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Reanudar</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>Detener</translation>
-    </message>
-    <message>
         <source> Speed: </source>
         <translation> Velocidad: </translation>
     </message>
@@ -872,6 +1004,30 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Hold the test at once, between two steps (%1)</source>
         <translation>Retiene el ensayo de inmediato, entre dos pasos (%1)</translation>
+    </message>
+    <message>
+        <source>Stop...</source>
+        <translation>Detener...</translation>
+    </message>
+    <message>
+        <source>End the test, keeping the data (asks for confirmation)</source>
+        <translation>Terminar el ensayo conservando los datos (pide confirmación)</translation>
+    </message>
+    <message>
+        <source>1/%1 x real time</source>
+        <translation>1/%1 x tiempo real</translation>
+    </message>
+    <message>
+        <source>fixed wall time per step</source>
+        <translation>tiempo real fijo por paso</translation>
+    </message>
+    <message>
+        <source> s of wall time per step</source>
+        <translation> s de tiempo real por paso</translation>
+    </message>
+    <message>
+        <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
+        <translation>Cada paso dura este tiempo real (ritmo pseudodinámico)</translation>
     </message>
 </context>
 <context>
@@ -1130,14 +1286,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>(ninguno)</translation>
     </message>
     <message>
-        <source>update #%1 approved by the operator</source>
-        <translation>actualización #%1 aprobada por el operador</translation>
-    </message>
-    <message>
-        <source>update #%1 rejected by the operator</source>
-        <translation>actualización #%1 rechazada por el operador</translation>
-    </message>
-    <message>
         <source>setup not applied: %1</source>
         <translation>configuración no aplicada: %1</translation>
     </message>
@@ -1148,10 +1296,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>start cancelled at the pre-flight check</source>
         <translation>inicio cancelado en la comprobación previa</translation>
-    </message>
-    <message>
-        <source>pre-flight confirmed by the operator (zero offsets)</source>
-        <translation>comprobación previa confirmada por el operador (ajuste de cero)</translation>
     </message>
     <message>
         <source>built-in virtual lab</source>
@@ -1199,6 +1343,50 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Note (recorded with the current step and test time):</source>
         <translation>Nota (se registra con el paso y el tiempo de ensayo actuales):</translation>
+    </message>
+    <message>
+        <source>Quit the console (asks first while a test runs)</source>
+        <translation>Salir de la consola (pregunta antes si hay un ensayo en curso)</translation>
+    </message>
+    <message>
+        <source>testing the link...</source>
+        <translation>probando el enlace...</translation>
+    </message>
+    <message>
+        <source>This ground motion cannot be used: %1</source>
+        <translation>Este movimiento del suelo no se puede usar: %1</translation>
+    </message>
+    <message>
+        <source>ground motion not usable: %1</source>
+        <translation>movimiento del suelo no utilizable: %1</translation>
+    </message>
+    <message>
+        <source>A test is running</source>
+        <translation>Hay un ensayo en curso</translation>
+    </message>
+    <message>
+        <source>Continue the test</source>
+        <translation>Continuar el ensayo</translation>
+    </message>
+    <message>
+        <source>End the test now? The specimen is held, the test cannot be resumed, and every step so far stays in the record.</source>
+        <translation>¿Terminar el ensayo ahora? La probeta queda retenida, el ensayo no se puede reanudar y todos los pasos hasta ahora quedan en el registro.</translation>
+    </message>
+    <message>
+        <source>End the test and keep the data</source>
+        <translation>Terminar el ensayo y conservar los datos</translation>
+    </message>
+    <message>
+        <source>link tested: %1 answered; the test is prepared, Start shows the pre-flight check</source>
+        <translation>enlace probado: %1 respondió; el ensayo está preparado, Iniciar muestra la comprobación previa</translation>
+    </message>
+    <message>
+        <source>A test is running. Quit the console? The test is ended first: the specimen is held and every step so far stays in the record.</source>
+        <translation>Hay un ensayo en curso. ¿Salir de la consola? Primero se termina el ensayo: la probeta queda retenida y todos los pasos hasta ahora quedan en el registro.</translation>
+    </message>
+    <message>
+        <source>End the test, keep the data and quit</source>
+        <translation>Terminar el ensayo, conservar los datos y salir</translation>
     </message>
 </context>
 <context>
@@ -1351,6 +1539,52 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Reject</source>
         <translation>Rechazar</translation>
     </message>
+    <message numerus="yes">
+        <source> - latest of %n proposal(s) since the last decision</source>
+        <translation>
+            <numerusform> - la última de %n propuesta desde la última decisión</numerusform>
+            <numerusform> - la última de %n propuestas desde la última decisión</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PlotTools</name>
+    <message>
+        <source>x = %1, y = %2</source>
+        <translation>x = %1, y = %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3</source>
+        <translation>%1: %2 en %3</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: no se puede escribir (%2)</translation>
+    </message>
+    <message>
+        <source>Autoscale</source>
+        <translation>Escala automática</translation>
+    </message>
+    <message>
+        <source>Channels</source>
+        <translation>Canales</translation>
+    </message>
+    <message>
+        <source>curve %1</source>
+        <translation>curva %1</translation>
+    </message>
+    <message>
+        <source>Export visible data as CSV...</source>
+        <translation>Exportar los datos visibles como CSV...</translation>
+    </message>
+    <message>
+        <source>Export visible data</source>
+        <translation>Exportar los datos visibles</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PreflightDialog</name>
@@ -1458,6 +1692,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Start test</source>
         <translation>Iniciar ensayo</translation>
     </message>
+    <message>
+        <source>Please check:</source>
+        <translation>Revise:</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReidentifyDialog</name>
@@ -1500,6 +1742,56 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>{&quot;model&quot;: ..., &quot;updating&quot;: ...} merged into the recorded settings, as hsmu replay --config</source>
         <translation>{&quot;model&quot;: ..., &quot;updating&quot;: ...} combinado con la configuración registrada, como hsmu replay --config</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayEventList</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>Tiempo [s]</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Paso</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Event, alarm or note</source>
+        <translation>Evento, alarma o nota</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>operador</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>nota</translation>
+    </message>
+    <message>
+        <source>Double-click (or Enter) to jump to the step</source>
+        <translation>Doble clic (o Intro) para ir al paso</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayReadout</name>
+    <message>
+        <source>Quantity</source>
+        <translation>Magnitud</translation>
+    </message>
+    <message>
+        <source>Value at the cursor</source>
+        <translation>Valor en el cursor</translation>
     </message>
 </context>
 <context>
@@ -1576,6 +1868,70 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Re-identification failed</source>
         <translation>La reidentificación falló</translation>
     </message>
+    <message>
+        <source>Events, alarms and notes</source>
+        <translation>Eventos, alarmas y notas</translation>
+    </message>
+    <message>
+        <source>Values at the cursor</source>
+        <translation>Valores en el cursor</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>Export time window as &amp;CSV...</source>
+        <translation>Exportar la ventana de tiempo como &amp;CSV...</translation>
+    </message>
+    <message>
+        <source>Export time window</source>
+        <translation>Exportar la ventana de tiempo</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export &amp;plots (PNG, SVG or PDF)...</source>
+        <translation>Exportar &amp;gráficos (PNG, SVG o PDF)...</translation>
+    </message>
+    <message>
+        <source>Export plots</source>
+        <translation>Exportar gráficos</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png);;SVG drawings (*.svg);;PDF documents (*.pdf)</source>
+        <translation>Imágenes PNG (*.png);;Dibujos SVG (*.svg);;Documentos PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Cerrar</translation>
+    </message>
+    <message>
+        <source>&amp;Playback</source>
+        <translation>&amp;Reproducción</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>Paso &amp;atrás</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>Paso a&amp;delante</translation>
+    </message>
+    <message>
+        <source>To the &amp;start</source>
+        <translation>Al &amp;inicio</translation>
+    </message>
+    <message>
+        <source>To the &amp;end</source>
+        <translation>Al &amp;final</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::SettingsDialog</name>
@@ -1618,6 +1974,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Recent files:</source>
         <translation>Archivos recientes:</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
     </message>
 </context>
 <context>
@@ -1731,14 +2095,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>habilitada</translation>
     </message>
     <message>
-        <source>Apply updates:</source>
-        <translation>Aplicar actualizaciones:</translation>
-    </message>
-    <message>
-        <source>N [steps]:</source>
-        <translation>N [pasos]:</translation>
-    </message>
-    <message>
         <source>Fit-error threshold [-]:</source>
         <translation>Umbral del error de ajuste [-]:</translation>
     </message>
@@ -1788,6 +2144,30 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>OpenFresco GenericTCP controller</source>
         <translation>controlador OpenFresco GenericTCP</translation>
     </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>The token hsmu-controller --token expects; not saved</source>
+        <translation>El token que espera hsmu-controller --token; no se guarda</translation>
+    </message>
+    <message>
+        <source>Token:</source>
+        <translation>Token:</translation>
+    </message>
+    <message>
+        <source>Test link</source>
+        <translation>Probar enlace</translation>
+    </message>
+    <message>
+        <source>Connect to the controller now (the test is prepared; nothing moves before the pre-flight check)</source>
+        <translation>Conectar ahora con el controlador (el ensayo se prepara; nada se mueve antes de la comprobación previa)</translation>
+    </message>
+    <message>
+        <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
+        <translation>Cuándo se aplican las actualizaciones se elige en el panel Actualizaciones pendientes (un solo ajuste para el ensayo).</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::TestStatusBar</name>
@@ -1822,10 +2202,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
-    <message>
-        <source>stopped by the operator</source>
-        <translation>detenido por el operador</translation>
-    </message>
     <message>
         <source>emergency hold by the operator</source>
         <translation>retención de emergencia por el operador</translation>

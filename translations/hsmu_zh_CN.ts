@@ -263,6 +263,13 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>GroundMotionCheck</name>
+    <message>
+        <source>%1 is not a text file of numbers (it holds binary data, e.g. an image); expected a PEER AT2 record, two columns (time, acceleration) or one column of values</source>
+        <translation>%1 不是数字文本文件（含二进制数据，例如图像）；应为 PEER AT2 记录、两列（时间、加速度）或一列数值</translation>
+    </message>
+</context>
+<context>
     <name>MaterialCommand</name>
     <message>
         <source>Drive one hysteresis law with a deformation history.</source>
@@ -306,6 +313,69 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>OperatorEvent</name>
+    <message>
+        <source>pre-flight confirmed by the operator (zero offsets)</source>
+        <translation>操作员已确认试验前检查（零点）</translation>
+    </message>
+    <message>
+        <source>test started by the operator</source>
+        <translation>操作员已开始试验</translation>
+    </message>
+    <message>
+        <source>paused by the operator</source>
+        <translation>操作员已暂停</translation>
+    </message>
+    <message>
+        <source>single step by the operator</source>
+        <translation>操作员执行单步</translation>
+    </message>
+    <message>
+        <source>resumed by the operator</source>
+        <translation>操作员已继续</translation>
+    </message>
+    <message>
+        <source>emergency hold before the test was armed: nothing is armed, the pre-flight check must be confirmed again</source>
+        <translation>试验未就绪前的紧急保持：没有任何就绪项，必须重新确认试验前检查</translation>
+    </message>
+    <message>
+        <source>emergency hold by the operator</source>
+        <translation>操作员紧急保持</translation>
+    </message>
+    <message>
+        <source>test ended by the operator, data kept</source>
+        <translation>操作员已结束试验，数据已保留</translation>
+    </message>
+    <message>
+        <source>update %1 approved by the operator: %2 -&gt; %3</source>
+        <translation>操作员批准了更新 %1：%2 -&gt; %3</translation>
+    </message>
+    <message>
+        <source>update %1 rejected by the operator (%2)</source>
+        <translation>操作员拒绝了更新 %1（%2）</translation>
+    </message>
+    <message>
+        <source>bounds changed: %1 -&gt; %2</source>
+        <translation>界限已更改：%1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>lock changed: %1 -&gt; %2</source>
+        <translation>锁定已更改：%1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>fit-error threshold changed: %1 -&gt; %2</source>
+        <translation>拟合误差阈值已更改：%1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>updating policy changed: %1 -&gt; %2</source>
+        <translation>更新策略已更改：%1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>%1 (wall time %2)</source>
+        <translation>%1（实际时间 %2）</translation>
+    </message>
+</context>
+<context>
     <name>OverrideOptions</name>
     <message>
         <source>Ground-motion record file.</source>
@@ -341,6 +411,61 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: the plot could not be written</source>
         <translation>%1：无法写出图表</translation>
+    </message>
+</context>
+<context>
+    <name>PreflightChecks</name>
+    <message>
+        <source>time step dt [s]</source>
+        <translation>时间步长 dt [s]</translation>
+    </message>
+    <message>
+        <source>duration [s]</source>
+        <translation>持续时间 [s]</translation>
+    </message>
+    <message>
+        <source>ground motion</source>
+        <translation>地震动</translation>
+    </message>
+    <message>
+        <source>ground motion scale [-]</source>
+        <translation>地震动缩放系数 [-]</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>积分器</translation>
+    </message>
+    <message>
+        <source>controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>步数</translation>
+    </message>
+    <message>
+        <source>PGA [m/s²]</source>
+        <translation>PGA [m/s²]</translation>
+    </message>
+    <message>
+        <source>Unusual step count: %L1 steps (more than %L2); check dt and the duration.</source>
+        <translation>步数异常：%L1 步（超过 %L2）；请检查 dt 和持续时间。</translation>
+    </message>
+    <message>
+        <source>Unusual PGA: %1 m/s² (above %2 m/s²); check the ground motion scale.</source>
+        <translation>PGA 异常：%1 m/s²（超过 %2 m/s²）；请检查地震动缩放系数。</translation>
+    </message>
+    <message>
+        <source>The ground motion is zero (PGA 0 m/s²).</source>
+        <translation>地震动为零（PGA 0 m/s²）。</translation>
+    </message>
+    <message>
+        <source>Very small time step: dt = %1 s.</source>
+        <translation>时间步长很小：dt = %1 s。</translation>
+    </message>
+    <message>
+        <source>Changed since the last run: %1 %2 -&gt; %3</source>
+        <translation>自上次试验以来已更改：%1 %2 -&gt; %3</translation>
     </message>
 </context>
 <context>
@@ -455,6 +580,17 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: cannot create the output directory</source>
         <translation>%1：无法创建输出目录</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayExport</name>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1：无法写入（%2）</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
@@ -826,10 +962,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>继续</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
         <source> Speed: </source>
         <translation> 速度: </translation>
     </message>
@@ -872,6 +1004,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Hold the test at once, between two steps (%1)</source>
         <translation>在两步之间立即保持试验（%1）</translation>
+    </message>
+    <message>
+        <source>Stop...</source>
+        <translation>停止...</translation>
+    </message>
+    <message>
+        <source>End the test, keeping the data (asks for confirmation)</source>
+        <translation>结束试验并保留数据（需确认）</translation>
+    </message>
+    <message>
+        <source>1/%1 x real time</source>
+        <translation>1/%1 倍实时</translation>
+    </message>
+    <message>
+        <source>fixed wall time per step</source>
+        <translation>每步固定实际时间</translation>
+    </message>
+    <message>
+        <source> s of wall time per step</source>
+        <translation> 秒实际时间/步</translation>
+    </message>
+    <message>
+        <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
+        <translation>每一步占用这么长的实际时间（拟动力速度）</translation>
     </message>
 </context>
 <context>
@@ -1130,14 +1286,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>（无）</translation>
     </message>
     <message>
-        <source>update #%1 approved by the operator</source>
-        <translation>更新 #%1 已由操作员批准</translation>
-    </message>
-    <message>
-        <source>update #%1 rejected by the operator</source>
-        <translation>更新 #%1 已被操作员拒绝</translation>
-    </message>
-    <message>
         <source>setup not applied: %1</source>
         <translation>设置未应用：%1</translation>
     </message>
@@ -1148,10 +1296,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>start cancelled at the pre-flight check</source>
         <translation>启动已在预检时取消</translation>
-    </message>
-    <message>
-        <source>pre-flight confirmed by the operator (zero offsets)</source>
-        <translation>预检已由操作员确认（零点偏移）</translation>
     </message>
     <message>
         <source>built-in virtual lab</source>
@@ -1198,6 +1342,50 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Note (recorded with the current step and test time):</source>
         <translation>备注（连同当前步和试验时间一起记录）：</translation>
+    </message>
+    <message>
+        <source>Quit the console (asks first while a test runs)</source>
+        <translation>退出控制台（试验进行中会先询问）</translation>
+    </message>
+    <message>
+        <source>testing the link...</source>
+        <translation>正在测试连接...</translation>
+    </message>
+    <message>
+        <source>This ground motion cannot be used: %1</source>
+        <translation>此地震动无法使用：%1</translation>
+    </message>
+    <message>
+        <source>ground motion not usable: %1</source>
+        <translation>地震动不可用：%1</translation>
+    </message>
+    <message>
+        <source>A test is running</source>
+        <translation>试验正在进行</translation>
+    </message>
+    <message>
+        <source>Continue the test</source>
+        <translation>继续试验</translation>
+    </message>
+    <message>
+        <source>End the test now? The specimen is held, the test cannot be resumed, and every step so far stays in the record.</source>
+        <translation>现在结束试验？试件将保持，试验无法继续，目前为止的每一步都保留在记录中。</translation>
+    </message>
+    <message>
+        <source>End the test and keep the data</source>
+        <translation>结束试验并保留数据</translation>
+    </message>
+    <message>
+        <source>link tested: %1 answered; the test is prepared, Start shows the pre-flight check</source>
+        <translation>连接已测试：%1 已响应；试验已准备好，“开始”将显示试验前检查</translation>
+    </message>
+    <message>
+        <source>A test is running. Quit the console? The test is ended first: the specimen is held and every step so far stays in the record.</source>
+        <translation>试验正在进行。退出控制台？将先结束试验：试件保持，目前为止的每一步都保留在记录中。</translation>
+    </message>
+    <message>
+        <source>End the test, keep the data and quit</source>
+        <translation>结束试验、保留数据并退出</translation>
     </message>
 </context>
 <context>
@@ -1349,6 +1537,51 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Reject</source>
         <translation>拒绝</translation>
     </message>
+    <message numerus="yes">
+        <source> - latest of %n proposal(s) since the last decision</source>
+        <translation>
+            <numerusform> - 自上次决定以来 %n 个提议中的最新一个</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PlotTools</name>
+    <message>
+        <source>x = %1, y = %2</source>
+        <translation>x = %1，y = %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3</source>
+        <translation>%1：%2（位于 %3）</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1：无法写入（%2）</translation>
+    </message>
+    <message>
+        <source>Autoscale</source>
+        <translation>自动缩放</translation>
+    </message>
+    <message>
+        <source>Channels</source>
+        <translation>通道</translation>
+    </message>
+    <message>
+        <source>curve %1</source>
+        <translation>曲线 %1</translation>
+    </message>
+    <message>
+        <source>Export visible data as CSV...</source>
+        <translation>将可见数据导出为 CSV...</translation>
+    </message>
+    <message>
+        <source>Export visible data</source>
+        <translation>导出可见数据</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PreflightDialog</name>
@@ -1456,6 +1689,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Start test</source>
         <translation>开始试验</translation>
     </message>
+    <message>
+        <source>Please check:</source>
+        <translation>请检查：</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReidentifyDialog</name>
@@ -1498,6 +1739,56 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>{&quot;model&quot;: ..., &quot;updating&quot;: ...} merged into the recorded settings, as hsmu replay --config</source>
         <translation>{&quot;model&quot;: ..., &quot;updating&quot;: ...} 合并到记录的设置中，同 hsmu replay --config</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>确定</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayEventList</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Event, alarm or note</source>
+        <translation>事件、报警或备注</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>Double-click (or Enter) to jump to the step</source>
+        <translation>双击（或回车）跳转到该步</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ReplayReadout</name>
+    <message>
+        <source>Quantity</source>
+        <translation>物理量</translation>
+    </message>
+    <message>
+        <source>Value at the cursor</source>
+        <translation>光标处的值</translation>
     </message>
 </context>
 <context>
@@ -1574,6 +1865,70 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Re-identification failed</source>
         <translation>重新识别失败</translation>
     </message>
+    <message>
+        <source>Events, alarms and notes</source>
+        <translation>事件、报警和备注</translation>
+    </message>
+    <message>
+        <source>Values at the cursor</source>
+        <translation>光标处的值</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Export time window as &amp;CSV...</source>
+        <translation>将时间窗导出为 &amp;CSV...</translation>
+    </message>
+    <message>
+        <source>Export time window</source>
+        <translation>导出时间窗</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export &amp;plots (PNG, SVG or PDF)...</source>
+        <translation>导出图表(&amp;P)（PNG、SVG 或 PDF）...</translation>
+    </message>
+    <message>
+        <source>Export plots</source>
+        <translation>导出图表</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png);;SVG drawings (*.svg);;PDF documents (*.pdf)</source>
+        <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>关闭(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Playback</source>
+        <translation>回放(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>后退一步(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>前进一步(&amp;F)</translation>
+    </message>
+    <message>
+        <source>To the &amp;start</source>
+        <translation>到开头(&amp;S)</translation>
+    </message>
+    <message>
+        <source>To the &amp;end</source>
+        <translation>到结尾(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::SettingsDialog</name>
@@ -1616,6 +1971,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Recent files:</source>
         <translation>最近文件：</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>确定</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
     </message>
 </context>
 <context>
@@ -1729,14 +2092,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>启用</translation>
     </message>
     <message>
-        <source>Apply updates:</source>
-        <translation>应用更新：</translation>
-    </message>
-    <message>
-        <source>N [steps]:</source>
-        <translation>N [步]：</translation>
-    </message>
-    <message>
         <source>Fit-error threshold [-]:</source>
         <translation>拟合误差阈值 [-]：</translation>
     </message>
@@ -1786,6 +2141,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>OpenFresco GenericTCP controller</source>
         <translation>OpenFresco GenericTCP 控制器</translation>
     </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>The token hsmu-controller --token expects; not saved</source>
+        <translation>hsmu-controller --token 所需的令牌；不保存</translation>
+    </message>
+    <message>
+        <source>Token:</source>
+        <translation>令牌：</translation>
+    </message>
+    <message>
+        <source>Test link</source>
+        <translation>测试连接</translation>
+    </message>
+    <message>
+        <source>Connect to the controller now (the test is prepared; nothing moves before the pre-flight check)</source>
+        <translation>立即连接控制器（试验会被准备；在试验前检查之前不会有任何运动）</translation>
+    </message>
+    <message>
+        <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
+        <translation>何时应用更新在“待处理更新”面板中选择（试验只有一个设置）。</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::TestStatusBar</name>
@@ -1820,10 +2199,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
-    <message>
-        <source>stopped by the operator</source>
-        <translation>由操作员停止</translation>
-    </message>
     <message>
         <source>emergency hold by the operator</source>
         <translation>操作员触发紧急保持</translation>

@@ -1,6 +1,8 @@
 #include "comms/controller/ControllerCommandLine.h"
 
 #include <cstdlib>
+#include <filesystem>
+#include <system_error>
 
 namespace hsmu::comms {
 
@@ -9,7 +11,8 @@ const char* ControllerCommandLine::usage() {
            "[--pace realtime|fast] [--token-file F] [--state FILE] [--quiet]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P]\n"
-           "  --config FILE   the console's test configuration (JSON); its experimental\n"
+           "  --config FILE   the console's test configuration (JSON) or a preset name\n"
+           "                  (e.g. paper-condition-3); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
            "  --port PORT     TCP port, 0 = any free port (printed on stdout)\n"
            "  --bind ADDR     address to listen on (default 127.0.0.1)\n"
@@ -128,7 +131,27 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
         error = "--port PORT is required (0 = any free port)";
         return std::nullopt;
     }
+    c.config = resolveConfig(c.config);
     return c;
+}
+
+std::string ControllerCommandLine::resolveConfig(const std::string& configOrPreset) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(configOrPreset, ec) || configOrPreset.find('/') != std::string::npos)
+        return configOrPreset;
+    const std::string file = configOrPreset + ".json";
+    std::vector<fs::path> dirs;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) // installed: PREFIX/bin/hsmu-controller -> PREFIX/share/hsmu/presets
+        dirs.push_back(exe.parent_path().parent_path() / "share" / "hsmu" / "presets");
+#ifdef HSMU_PRESET_SOURCE_DIR
+    dirs.emplace_back(HSMU_PRESET_SOURCE_DIR); // a build tree
+#endif
+    for (const fs::path& d : dirs)
+        if (fs::exists(d / file, ec))
+            return (d / file).string();
+    return configOrPreset; // the loader's error names it
 }
 
 } // namespace hsmu::comms

@@ -1,7 +1,7 @@
 #pragma once
 // ControllerCommandLine: the arguments of hsmu-controller.
 //
-//   hsmu-controller --config FILE --port PORT [--bind ADDR] [--pace realtime|fast]
+//   hsmu-controller --config FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]
 //                   [--token-file F] [--state FILE] [--quiet]
 //                   [--protocol native|simapp|generictcp] [--data-size N] [--simapp-site]
 //                   [--realtime-priority P]
@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace hsmu::comms {
 
@@ -35,6 +36,10 @@ struct ControllerCommandLine {
     static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,
                                                       std::string& error);
     static const char* usage();
+    /// A preset name (no '/', no such file) -> PREFIX/share/hsmu/presets/NAME.json next to
+    /// the installed program, else the source tree's resources/presets/NAME.json; otherwise
+    /// returned unchanged. parse() applies it to --config.
+    static std::string resolveConfig(const std::string& configOrPreset);
 };
 
 } // namespace hsmu::comms

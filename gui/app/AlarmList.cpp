@@ -81,6 +81,11 @@ void AlarmList::addMessage(const QString& text, AlarmSeverity severity) {
     add(QString(), QString(), severity, tr("console"), text);
 }
 
+void AlarmList::addEvent(double time, int step, const QString& text) {
+    add(QString::number(time, 'f', 2), QString::number(step), AlarmSeverity::Info,
+        describe(AlarmKind::OperatorHold), text);
+}
+
 void AlarmList::add(const QString& time, const QString& step, AlarmSeverity severity,
                     const QString& kind, const QString& text) {
     auto* item = new QTreeWidgetItem(this);

@@ -21,6 +21,8 @@ public:
     void addAlarm(const Alarm& alarm);
     /// A console message that is not a test alarm (e.g. a configuration error).
     void addMessage(const QString& text, AlarmSeverity severity);
+    /// An operator action at test time `time` [s] and step `step` (kind "operator").
+    void addEvent(double time, int step, const QString& text);
     /// Remove every entry (a new test).
     void clearAlarms();
 

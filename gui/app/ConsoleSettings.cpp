@@ -15,6 +15,14 @@ const QString kGeometry = QStringLiteral("window/geometry");
 const QString kState = QStringLiteral("window/state");
 } // namespace
 
+QVariantMap ConsoleSettings::lastRun(const QString& name) {
+    return QSettings().value(QStringLiteral("lastRun/") + name.toUtf8().toBase64()).toMap();
+}
+
+void ConsoleSettings::setLastRun(const QString& name, const QVariantMap& settings) {
+    QSettings().setValue(QStringLiteral("lastRun/") + name.toUtf8().toBase64(), settings);
+}
+
 QStringList ConsoleSettings::recentFiles() {
     QStringList out;
     for (const QString& f : QSettings().value(kRecent).toStringList())

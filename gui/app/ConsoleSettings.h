@@ -9,6 +9,7 @@
 #include <QByteArray>
 #include <QString>
 #include <QStringList>
+#include <QVariantMap>
 
 namespace hsmu::gui {
 
@@ -31,6 +32,10 @@ public:
 
     static QString language();
     static void setLanguage(const QString& code);
+
+    /// The settings of the last confirmed run of configuration `name` (PreflightChecks).
+    static QVariantMap lastRun(const QString& name);
+    static void setLastRun(const QString& name, const QVariantMap& settings);
 
     static QByteArray windowGeometry();
     static QByteArray windowState();

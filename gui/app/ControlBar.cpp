@@ -4,6 +4,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QSignalBlocker>
 
@@ -29,6 +30,9 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
         if (!id.isEmpty())
             emit presetChosen(id);
     });
+    // Narrow enough for 1280 px in every language; the list opens as wide as it needs.
+    m_presets->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_presets->setMinimumContentsLength(14);
     addWidget(m_presets);
 
     m_open = addAction(tr("Open configuration..."), this, &ControlBar::openRequested);
@@ -39,7 +43,10 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
     m_step = addAction(tr("Single step"), this, &ControlBar::singleStepRequested);
     m_step->setToolTip(tr("Run exactly one integration step, then stay paused"));
     m_resume = addAction(tr("Resume"), this, &ControlBar::resumeRequested);
-    m_stop = addAction(tr("Stop"), this, &ControlBar::stopRequested);
+    addSeparator(); // Stop ends the test: apart from Resume (and it asks first)
+    m_stop = addAction(tr("Stop..."), this, &ControlBar::stopRequested);
+    m_stop->setObjectName(QStringLiteral("stopTest"));
+    m_stop->setToolTip(tr("End the test, keeping the data (asks for confirmation)"));
     addSeparator();
     const QKeySequence holdKey = emergencyHoldShortcut();
     m_hold = addAction(tr("Emergency hold (%1)").arg(holdKey.toString(QKeySequence::NativeText)),
@@ -51,20 +58,36 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
                            .arg(holdKey.toString(QKeySequence::NativeText)));
     if (QWidget* button = widgetForAction(m_hold))
         button->setStyleSheet(QStringLiteral("QToolButton { color: white; background: #c62828;"
-                                             " font-weight: bold; padding: 3px 10px; }"));
+                                             " font-weight: bold; padding: 3px 6px; }"));
     addSeparator();
 
     addWidget(new QLabel(tr(" Speed: "), this));
     m_speed = new QComboBox(this);
     m_speed->setToolTip(tr("Test time per wall-clock time"));
+    // Pseudo-dynamic tests run at 1/10 to 1/100 of real time, or at a fixed wall time per step.
+    for (double f : {0.01, 0.02, 0.05, 0.1, 0.2})
+        m_speed->addItem(tr("1/%1 x real time").arg(qRound(1.0 / f)), f);
     m_speed->addItem(tr("0.5 x real time"), 0.5);
     m_speed->addItem(tr("real time"), 1.0);
     m_speed->addItem(tr("2 x real time"), 2.0);
     m_speed->addItem(tr("5 x real time"), 5.0);
     m_speed->addItem(tr("as fast as possible"), 0.0);
-    m_speed->setCurrentIndex(1);
-    connect(m_speed, &QComboBox::currentIndexChanged, this, [this] { emit speedChanged(speed()); });
+    m_speed->addItem(tr("fixed wall time per step"), kWallPerStep);
+    m_speed->setCurrentIndex(m_speed->findData(1.0));
+    m_wallPerStep = new QDoubleSpinBox(this);
+    m_wallPerStep->setObjectName(QStringLiteral("wallTimePerStep"));
+    m_wallPerStep->setRange(0.001, 600.0);
+    m_wallPerStep->setDecimals(3);
+    m_wallPerStep->setValue(1.0);
+    m_wallPerStep->setSuffix(tr(" s of wall time per step"));
+    m_wallPerStep->setToolTip(tr("Each step takes this long in wall time (pseudo-dynamic pace)"));
+    connect(m_speed, &QComboBox::currentIndexChanged, this, [this] { emitPace(); });
+    connect(m_wallPerStep, &QDoubleSpinBox::valueChanged, this, [this] { emitPace(); });
+    m_speed->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_speed->setMinimumContentsLength(12);
     addWidget(m_speed);
+    m_wallPerStepAction = addWidget(m_wallPerStep);
+    m_wallPerStepAction->setVisible(false);
     setRunState(RunState::Idle);
 }
 
@@ -93,13 +116,32 @@ void ControlBar::selectPreset(const QString& id) {
 }
 
 double ControlBar::speed() const {
-    return m_speed->currentData().toDouble();
+    const double f = m_speed->currentData().toDouble();
+    return f == kWallPerStep ? 0.0 : f;
+}
+
+double ControlBar::wallTimePerStep() const {
+    return m_speed->currentData().toDouble() == kWallPerStep ? m_wallPerStep->value() : 0.0;
+}
+
+void ControlBar::setWallTimePerStep(double seconds) {
+    if (seconds > 0.0) {
+        m_wallPerStep->setValue(seconds);
+        m_speed->setCurrentIndex(m_speed->findData(kWallPerStep));
+    }
+}
+
+void ControlBar::emitPace() {
+    m_wallPerStepAction->setVisible(wallTimePerStep() > 0.0);
+    emit paceChanged(speed(), wallTimePerStep());
+    emit speedChanged(speed());
 }
 
 void ControlBar::setSpeed(double factor) {
     int best = 0;
     for (int i = 0; i < m_speed->count(); ++i)
-        if (std::abs(m_speed->itemData(i).toDouble() - factor) <
+        if (m_speed->itemData(i).toDouble() != kWallPerStep &&
+            std::abs(m_speed->itemData(i).toDouble() - factor) <
             std::abs(m_speed->itemData(best).toDouble() - factor))
             best = i;
     m_speed->setCurrentIndex(best);

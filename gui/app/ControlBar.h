@@ -2,7 +2,8 @@
 // ControlBar: the operator's tool bar: preset selector, "Open configuration...", Start,
 // Pause, Single step, Resume, Stop, Emergency hold (Ctrl+H, shown on the button; application-
 // wide and never disabled; a chord, so it cannot be typed by accident into a table or a field,
-// unlike Esc) and the pacing (test speed relative to real time). It only emits requests; MainWindow
+// unlike Esc) and the pacing: test speed relative to real time from 1/100 x up to as fast
+// as possible, or a fixed wall time per step [s] (pseudo-dynamic tests). It only emits requests; MainWindow
 // wires them to the TestController and feeds back the RunState to enable the right buttons. Thread
 // rules: GUI thread only.
 
@@ -13,6 +14,7 @@
 
 class QAction;
 class QComboBox;
+class QDoubleSpinBox;
 
 namespace hsmu::gui {
 
@@ -25,9 +27,13 @@ public:
     void setRunState(RunState state);
     /// Select a preset in the selector without emitting presetChosen().
     void selectPreset(const QString& id);
-    /// The pacing factor currently selected (<= 0: as fast as possible).
+    /// The pacing factor currently selected (<= 0: as fast as possible, or a fixed wall time
+    /// per step).
     double speed() const;
     void setSpeed(double factor);
+    /// The wall time per step [s] when "fixed wall time per step" is chosen, else 0.
+    double wallTimePerStep() const;
+    void setWallTimePerStep(double seconds);
     QAction* emergencyHoldAction() const { return m_hold; }
     /// The shortcut of the emergency hold.
     static QKeySequence emergencyHoldShortcut();
@@ -42,9 +48,16 @@ signals:
     void stopRequested();
     void emergencyHoldRequested();
     void speedChanged(double factor);
+    /// factor: test time per wall time (0: see wallPerStep); wallPerStep [s] (0: use factor).
+    void paceChanged(double factor, double wallPerStep);
 
 private:
+    static constexpr double kWallPerStep = -1.0; ///< the selector's "fixed wall time" item
+    void emitPace();
+
     QComboBox* m_presets = nullptr;
+    QDoubleSpinBox* m_wallPerStep = nullptr;
+    QAction* m_wallPerStepAction = nullptr;
     QComboBox* m_speed = nullptr;
     QAction* m_open = nullptr;
     QAction* m_start = nullptr;

@@ -4,13 +4,16 @@
 #include "gui/app/AlarmList.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
+#include "gui/app/GroundMotionCheck.h"
 #include "gui/app/ParametersPanel.h"
 #include "gui/app/PendingUpdatesPanel.h"
+#include "gui/app/PreflightChecks.h"
 #include "gui/app/PreflightDialog.h"
 #include "gui/app/SettingsDialog.h"
 #include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
 #include "gui/app/TestStatusBar.h"
+#include "gui/app/WheelGuard.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/replay/ReplayWindow.h"
 
@@ -18,7 +21,10 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFile>
+#include <QHeaderView>
 #include <QFileInfo>
+#include <QDir>
 #include <QHBoxLayout>
 #include <QInputDialog>
 #include <QLabel>
@@ -60,7 +66,11 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
                                            " QLabel { color: white; font-weight: bold; }"));
     auto* bh = new QHBoxLayout(m_banner);
     m_bannerText = new QLabel(m_banner);
+    m_bannerText->setObjectName(QStringLiteral("attentionText"));
     m_bannerText->setWordWrap(true);
+    // A long message (a long path) must not widen the window: cut, the full text in the tip.
+    m_bannerText->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_bannerText->setMinimumWidth(1);
     auto* ack = new QPushButton(tr("Acknowledge all"), m_banner);
     bh->addWidget(m_bannerText, 1);
     bh->addWidget(ack);
@@ -95,15 +105,21 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     m_alarms = new AlarmList(alarmPanel);
     auto* ackSelected = new QPushButton(tr("Acknowledge selected"), alarmPanel);
     auto* ackAll = new QPushButton(tr("Acknowledge all"), alarmPanel);
-    auto* ah = new QHBoxLayout;
-    ah->addWidget(new QLabel(tr("Critical alarms stay red until acknowledged (double-click "
-                                "or the buttons)."),
-                             alarmPanel),
-                  1);
-    ah->addWidget(ackSelected);
-    ah->addWidget(ackAll);
-    av->addLayout(ah);
+    const QString ackHelp = tr("Critical alarms stay red until acknowledged (double-click or "
+                               "the buttons).");
+    ackSelected->setToolTip(ackHelp);
+    ackAll->setToolTip(ackHelp);
+    m_alarms->setToolTip(ackHelp);
+    // The list takes the whole height (at 1280x720 it shows 5+ rows); the buttons on its right.
+    av->setDirection(QBoxLayout::LeftToRight);
     av->addWidget(m_alarms, 1);
+    auto* buttons = new QVBoxLayout;
+    buttons->addWidget(ackSelected);
+    buttons->addWidget(ackAll);
+    buttons->addStretch(1);
+    av->addLayout(buttons);
+    m_alarms->setMinimumHeight(m_alarms->header()->sizeHint().height() +
+                               5 * (m_alarms->fontMetrics().height() + 4));
     m_alarmDock = addDock(alarmPanel, tr("Alarms and events"), QStringLiteral("alarmDock"),
                           Qt::BottomDockWidgetArea);
     connect(ackSelected, &QPushButton::clicked, m_alarms, &AlarmList::acknowledgeSelected);
@@ -117,7 +133,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     wireController();
 
     resize(1500, 920);
-    resizeDocks({m_alarmDock}, {150}, Qt::Vertical);
+    resizeDocks({m_alarmDock}, {200}, Qt::Vertical); // 5+ rows at 1280x720
     resizeDocks({m_setupDock}, {440}, Qt::Horizontal);
     resizeDocks({m_setupDock, pending}, {520, 260}, Qt::Vertical);
     m_setup->setControllerAddress(ConsoleSettings::controllerAddress());
@@ -125,6 +141,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
         restoreGeometry(g);
     if (const QByteArray s = ConsoleSettings::windowState(); !s.isEmpty())
         restoreState(s);
+    WheelGuard::install(this); // no value changes by scrolling over a field
 }
 
 MainWindow::~MainWindow() = default;
@@ -154,7 +171,9 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     file->addAction(tr("&Settings..."), this, &MainWindow::openSettings);
     file->addSeparator();
-    file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    quit->setToolTip(tr("Quit the console (asks first while a test runs)"));
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         m_viewMenu->addAction(dock->toggleViewAction());
@@ -197,12 +216,23 @@ void MainWindow::wireController() {
     connect(m_controls, &ControlBar::pauseRequested, m_controller, &TestController::pause);
     connect(m_controls, &ControlBar::singleStepRequested, this, &MainWindow::singleStep);
     connect(m_controls, &ControlBar::resumeRequested, m_controller, &TestController::resume);
-    connect(m_controls, &ControlBar::stopRequested, m_controller, &TestController::stop);
-    connect(m_controls, &ControlBar::emergencyHoldRequested, m_controller,
-            [this] { m_controller->emergencyHold(); });
-    connect(m_controls, &ControlBar::speedChanged, m_controller, &TestController::setSpeed);
+    connect(m_controls, &ControlBar::stopRequested, this, &MainWindow::requestStop);
+    connect(m_controls, &ControlBar::emergencyHoldRequested, m_controller, [this] {
+        if (m_preflight) { // nothing may start from the dialog, nothing is armed
+            m_pendingRun = RunRequest::None;
+            m_preflight->reject();
+        }
+        m_controller->emergencyHold();
+    });
+    connect(m_controls, &ControlBar::paceChanged, m_controller,
+            [this](double factor, double wallPerStep) {
+                m_controller->setWallTimePerStep(wallPerStep);
+                m_controller->setSpeed(factor);
+            });
     m_controller->setSpeed(m_controls->speed());
     connect(m_setup, &SetupPanel::applyRequested, this, &MainWindow::applySetup);
+    connect(m_setup, &SetupPanel::groundMotionChosen, this, &MainWindow::previewGroundMotion);
+    connect(m_setup, &SetupPanel::testLinkRequested, this, &MainWindow::testLink);
 
     connect(m_parameters, &ParametersPanel::boundsEdited, m_controller,
             &TestController::setParameterBounds);
@@ -216,16 +246,9 @@ void MainWindow::wireController() {
             &TestController::approveUpdate);
     connect(m_pending, &PendingUpdatesPanel::rejectRequested, m_controller,
             &TestController::rejectUpdate);
-    connect(m_pending, &PendingUpdatesPanel::policyChosen, m_controller,
-            &TestController::setReporterPolicy);
-    connect(m_pending, &PendingUpdatesPanel::approveRequested, this, [this](int id) {
-        m_alarms->addMessage(tr("update #%1 approved by the operator").arg(id),
-                             AlarmSeverity::Info);
-    });
-    connect(m_pending, &PendingUpdatesPanel::rejectRequested, this, [this](int id) {
-        m_alarms->addMessage(tr("update #%1 rejected by the operator").arg(id),
-                             AlarmSeverity::Info);
-    });
+    connect(m_pending, &PendingUpdatesPanel::policyChosen, this, &MainWindow::onPolicyChosen);
+    connect(m_controller, &TestController::operatorEvent, this,
+            [this](const OperatorEvent& e) { m_alarms->addEvent(e.time, e.step, e.describe()); });
 
     connect(m_controller, &TestController::testLoaded, this, &MainWindow::onTestLoaded);
     connect(m_controller, &TestController::recordsArrived, m_plots,
@@ -253,11 +276,15 @@ bool MainWindow::loadConfiguration(const QString& nameOrPath, QString* error) {
     try {
         TestConfig cfg = PresetLibrary::load(nameOrPath);
         m_overrides.applyTo(cfg);
+        if (nameOrPath != m_source)
+            m_policyChoice.reset(); // another test: its own policy
+        applyPolicyChoice(cfg);
         m_setup->setConfig(cfg);
         QString why;
         const auto address = m_setup->controller(&why);
         if (!address)
             throw std::runtime_error(why.toStdString());
+        m_controller->setLinkToken(m_setup->token());
         m_controller->load(cfg, *address);
     } catch (const std::exception& e) {
         const QString message = QString::fromStdString(e.what());
@@ -290,7 +317,10 @@ bool MainWindow::applySetup() {
         return false;
     }
     try {
-        m_controller->load(*cfg, *address);
+        TestConfig withPolicy = *cfg;
+        applyPolicyChoice(withPolicy);
+        m_controller->setLinkToken(m_setup->token());
+        m_controller->load(withPolicy, *address);
     } catch (const std::exception& e) {
         const QString message = QString::fromStdString(e.what());
         m_alarms->addMessage(tr("setup not applied: %1").arg(message), AlarmSeverity::Critical);
@@ -300,6 +330,81 @@ bool MainWindow::applySetup() {
     ConsoleSettings::setControllerAddress(m_setup->controllerText());
     m_setup->markApplied();
     return true;
+}
+
+void MainWindow::testLink() {
+    const RunState s = m_controller->state();
+    if (active(s))
+        return;
+    if ((m_setup->isDirty() || s != RunState::Ready) && !applySetup())
+        return;
+    m_status->showMessage(tr("testing the link..."), 5000);
+    m_controller->prepare(); // connects; -> preflightReady (link shown connected) or Failed
+}
+
+void MainWindow::previewGroundMotion() {
+    QString error;
+    const auto cfg = m_setup->edited(&error);
+    if (cfg) {
+        QString file = QString::fromStdString(cfg->groundMotion.file);
+        if (!file.isEmpty() && QFileInfo(file).isRelative() && !cfg->sourcePath.empty())
+            file = QFileInfo(QString::fromStdString(cfg->sourcePath)).dir().filePath(file);
+        error = GroundMotionCheck::binaryFileProblem(file);
+    }
+    if (cfg && error.isEmpty() && m_plots->showGroundMotionOf(*cfg, &error)) {
+        m_setup->setGroundMotionStatus(QString());
+        return;
+    }
+    m_setup->setGroundMotionStatus(tr("This ground motion cannot be used: %1").arg(error));
+    m_alarms->addMessage(tr("ground motion not usable: %1").arg(error), AlarmSeverity::Warning);
+}
+
+void MainWindow::onPolicyChosen(ReporterPolicy policy, int everyN) {
+    m_policyChoice = std::make_pair(policy, everyN);
+    m_controller->setReporterPolicy(policy, everyN); // recorded by the worker as an event
+}
+
+void MainWindow::applyPolicyChoice(TestConfig& cfg) const {
+    if (!m_policyChoice || !cfg.updating.enabled)
+        return;
+    cfg.updating.policy = m_policyChoice->first;
+    cfg.updating.everyN = m_policyChoice->second;
+}
+
+void MainWindow::confirmEnd(const QString& objectName, const QString& question,
+                            const QString& yes, std::function<void()> then) {
+    if (m_confirmation)
+        return;
+    m_confirmation = new QMessageBox(QMessageBox::Warning, tr("A test is running"), question,
+                                     QMessageBox::NoButton, this);
+    m_confirmation->setObjectName(objectName);
+    m_confirmation->setAttribute(Qt::WA_DeleteOnClose);
+    m_confirmation->addAction(m_controls->emergencyHoldAction());
+    QPushButton* end = m_confirmation->addButton(yes, QMessageBox::AcceptRole);
+    end->setObjectName(QStringLiteral("confirmEnd"));
+    QPushButton* keep =
+        m_confirmation->addButton(tr("Continue the test"), QMessageBox::RejectRole);
+    keep->setObjectName(QStringLiteral("continueTest"));
+    m_confirmation->setDefaultButton(keep); // Enter does not end a test
+    connect(m_confirmation, &QMessageBox::finished, this,
+            [this, end, then = std::move(then)](int) {
+                const bool confirmed = m_confirmation && m_confirmation->clickedButton() == end;
+                m_confirmation = nullptr;
+                if (confirmed)
+                    then();
+            });
+    m_confirmation->open();
+}
+
+void MainWindow::requestStop() {
+    if (!active(m_controller->state())) {
+        m_controller->stop();
+        return;
+    }
+    confirmEnd(QStringLiteral("stopConfirmation"),
+               tr("End the test now? The specimen is held, the test cannot be resumed, and "
+                  "every step so far stays in the record."),
+               tr("End the test and keep the data"), [this] { m_controller->stop(); });
 }
 
 void MainWindow::setControllerAddress(const QString& address) {
@@ -348,12 +453,24 @@ void MainWindow::requestRun(RunRequest request) {
 
 void MainWindow::showPreflight(const PreflightReport& report) {
     showLinkState(true, false);
+    if (m_pendingRun == RunRequest::None && !m_preflight) { // Test link
+        m_alarms->addMessage(
+            tr("link tested: %1 answered; the test is prepared, Start shows the pre-flight check")
+                .arg(QString::fromStdString(m_controller->controllerAddress().toString())),
+            AlarmSeverity::Info);
+        return;
+    }
     if (m_pendingRun == RunRequest::None || m_preflight)
         return;
-    m_preflight = new PreflightDialog(report, this);
+    const QVariantMap current = PreflightChecks::runSettingsOf(
+        m_controller->config(), QString::fromStdString(m_controller->controllerAddress().toString()),
+        report);
+    const QString name = QString::fromStdString(m_controller->config().name);
+    m_preflight = new PreflightDialog(
+        report, PreflightChecks::warnings(report, current, ConsoleSettings::lastRun(name)), this);
     m_preflight->setAttribute(Qt::WA_DeleteOnClose);
     m_preflight->addAction(m_controls->emergencyHoldAction()); // alive over the modal dialog
-    connect(m_preflight, &QDialog::finished, this, [this](int result) {
+    connect(m_preflight, &QDialog::finished, this, [this, current, name](int result) {
         const RunRequest request = m_pendingRun;
         m_pendingRun = RunRequest::None;
         m_preflight = nullptr;
@@ -362,8 +479,8 @@ void MainWindow::showPreflight(const PreflightReport& report) {
                                  AlarmSeverity::Info);
             return;
         }
-        m_alarms->addMessage(tr("pre-flight confirmed by the operator (zero offsets)"),
-                             AlarmSeverity::Info);
+        ConsoleSettings::setLastRun(name, current);
+        m_controller->confirmPreflight(); // an event in the record and the list
         request == RunRequest::Start ? m_controller->start() : m_controller->singleStep();
     });
     m_preflight->open(); // window-modal, never a nested wait on the GUI thread
@@ -469,11 +586,24 @@ void MainWindow::onAttention(int count, const QString& latest) {
         return;
     m_bannerText->setText(
         tr("%n critical alarm(s) not acknowledged. Latest: %1", nullptr, count).arg(latest));
+    m_bannerText->setToolTip(m_bannerText->text());
     m_alarmDock->show();
     m_alarmDock->raise();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (active(m_controller->state()) && !m_closeConfirmed) {
+        event->ignore();
+        confirmEnd(QStringLiteral("quitConfirmation"),
+                   tr("A test is running. Quit the console? The test is ended first: the "
+                      "specimen is held and every step so far stays in the record."),
+                   tr("End the test, keep the data and quit"), [this] {
+                       m_closeConfirmed = true;
+                       m_controller->stop();
+                       close();
+                   });
+        return;
+    }
     ConsoleSettings::saveWindow(saveGeometry(), saveState());
     QMainWindow::closeEvent(event);
 }

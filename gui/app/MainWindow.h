@@ -11,20 +11,30 @@
 //     (Ctrl+N, TestController::addNote), settings, quit), View
 // Start goes through the pre-flight: the worker prepares the test (connects a link, checks
 // stability) and the PreflightDialog must be confirmed before the first step; a command-line
-// --start is the operator's confirmation (setConfirmBeforeStart(false)).
+// --start is the operator's confirmation (setConfirmBeforeStart(false)). An emergency hold
+// while the pre-flight is open closes it: nothing is armed. Stop and Quit ask for
+// confirmation while a test runs ("end the test and keep the data"). Spin boxes and combo
+// boxes take the wheel only when focused (WheelGuard). Operator events come back from the
+// worker stamped with step and time and go into the alarm and event list.
 // It owns the TestController. Thread rules: GUI thread only.
 
 #include "gui/ConfigOverrides.h"
 #include "gui/app/PreflightReport.h"
 #include "gui/app/RunState.h"
 
+#include "core/updating/Reporter.h"
+
 #include <QMainWindow>
 
+#include <functional>
+#include <optional>
+#include <utility>
 #include <vector>
 
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QMessageBox;
 class QPushButton;
 
 namespace hsmu {
@@ -64,6 +74,8 @@ public:
     void setControllerAddress(const QString& address);
     /// The pre-flight dialog while it is open, else nullptr.
     PreflightDialog* preflightDialog() const { return m_preflight; }
+    /// The Stop / Quit confirmation while it is open, else nullptr.
+    QMessageBox* confirmation() const { return m_confirmation; }
 
 public slots:
     /// Start the loaded test (unapplied setup edits are applied first; a finished or stopped
@@ -73,6 +85,8 @@ public slots:
     void singleStep();
     /// Rebuild the test from the setup panel.
     bool applySetup();
+    /// Stop the test; while one runs, only after the operator confirmed ("end and keep data").
+    void requestStop();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -95,6 +109,17 @@ private:
     void onAlarm(const Alarm& alarm);
     void onAttention(int count, const QString& latest);
     void showLinkState(bool connected, bool fault);
+    /// The updating policy chosen in the Pending updates panel: the one setting, kept for
+    /// every reload of the same configuration.
+    void onPolicyChosen(ReporterPolicy policy, int everyN);
+    /// Check and plot the ground motion chosen in the setup at once (before any Apply).
+    void previewGroundMotion();
+    /// "Test link": apply the setup and prepare the test now (connects the controller).
+    void testLink();
+    void applyPolicyChoice(TestConfig& cfg) const;
+    /// Ask "end the test and keep the data?" (non-blocking); then() runs on confirmation.
+    void confirmEnd(const QString& objectName, const QString& question, const QString& yes,
+                    std::function<void()> then);
 
     ConfigOverrides m_overrides;
     QString m_source; ///< preset id or file of the loaded test
@@ -116,6 +141,9 @@ private:
     QMenu* m_recentMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     PreflightDialog* m_preflight = nullptr;
+    QMessageBox* m_confirmation = nullptr;
+    bool m_closeConfirmed = false;
+    std::optional<std::pair<ReporterPolicy, int>> m_policyChoice;
 };
 
 } // namespace hsmu::gui

@@ -23,7 +23,8 @@ QString num(double v) {
 }
 } // namespace
 
-PreflightDialog::PreflightDialog(const PreflightReport& report, QWidget* parent)
+PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringList& warnings,
+                                 QWidget* parent)
     : QDialog(parent), m_report(report) {
     setObjectName(QStringLiteral("preflightDialog"));
     setWindowTitle(tr("Pre-flight check"));
@@ -105,6 +106,15 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, QWidget* parent)
     sv->addWidget(note);
     layout->addWidget(specimens, 1);
 
+    if (!warnings.isEmpty()) {
+        auto* flagged = new QLabel(tr("Please check:") + QStringLiteral("\n• ") +
+                                       warnings.join(QStringLiteral("\n• ")),
+                                   this);
+        flagged->setObjectName(QStringLiteral("preflightWarnings"));
+        flagged->setWordWrap(true);
+        flagged->setStyleSheet(QStringLiteral("color: #8a4b00; background: #fff3cd; padding: 4px;"));
+        layout->addWidget(flagged);
+    }
     m_zero = new QCheckBox(tr("I confirm the zero offsets: with the specimen unloaded the "
                               "actuator displacement and the load cell read zero."),
                            this);
@@ -113,7 +123,8 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, QWidget* parent)
 
     auto* buttons = new QDialogButtonBox(this);
     m_start = buttons->addButton(tr("Start test"), QDialogButtonBox::AcceptRole);
-    buttons->addButton(QDialogButtonBox::Cancel);
+    // Our own words (Qt's standard buttons are not translated without Qt's catalogues).
+    buttons->addButton(tr("Cancel"), QDialogButtonBox::RejectRole);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);

@@ -47,10 +47,20 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     m_name = new QLabel(tr("No configuration loaded: choose a preset or open a file."), this);
+    m_name->setObjectName(QStringLiteral("setupName"));
     m_name->setWordWrap(true);
+    // A long path must not widen the dock (nor the window): wrapped, cut, full in the tip.
+    m_name->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_name->setMinimumWidth(1);
     layout->addWidget(m_name);
-    layout->addWidget(buildRunGroup());
-    layout->addWidget(buildControllerGroup());
+    // No values are shown before a configuration is loaded (no placeholder numbers).
+    m_body = new QWidget(this);
+    m_body->setObjectName(QStringLiteral("setupBody"));
+    auto* body = new QVBoxLayout(m_body);
+    body->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_body);
+    body->addWidget(buildRunGroup());
+    body->addWidget(buildControllerGroup());
 
     auto* limitsBox = new QGroupBox(tr("Safety limits (0 = none; the specimen's units)"), this);
     auto* lv = new QVBoxLayout(limitsBox);
@@ -63,17 +73,17 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     m_limits->setMaximumHeight(110);
     connect(m_limits, &QTableWidget::itemChanged, this, &SetupPanel::markDirty);
     lv->addWidget(m_limits);
-    layout->addWidget(limitsBox);
-    layout->addWidget(buildUpdatingGroup());
+    body->addWidget(limitsBox);
+    body->addWidget(buildUpdatingGroup());
 
     m_apply = new QPushButton(tr("Apply (reload the test)"), this);
     m_apply->setObjectName(QStringLiteral("applySetup"));
     connect(m_apply, &QPushButton::clicked, this, &SetupPanel::applyRequested);
-    layout->addWidget(m_apply);
+    body->addWidget(m_apply);
+    m_body->hide();
     layout->addStretch(1);
     m_inputs << m_groundMotion << m_scale << m_dt << m_duration << m_integrator << m_alpha
-             << m_controllerKind << m_host << m_port << m_limits << m_updating << m_policy
-             << m_everyN << m_threshold;
+             << m_controllerKind << m_host << m_port << m_token << m_limits << m_updating << m_threshold;
     setEditable(true);
     m_apply->setEnabled(false);
 }
@@ -90,6 +100,20 @@ QWidget* SetupPanel::buildRunGroup() {
     gmRow->addWidget(m_groundMotion, 1);
     gmRow->addWidget(browse);
     form->addRow(tr("Ground motion file:"), gmRow);
+    m_groundMotionStatus = new QLabel(box);
+    m_groundMotionStatus->setObjectName(QStringLiteral("groundMotionStatus"));
+    m_groundMotionStatus->setWordWrap(true);
+    m_groundMotionStatus->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_groundMotionStatus->setMinimumWidth(1);
+    m_groundMotionStatus->setStyleSheet(QStringLiteral("color: #c62828;"));
+    m_groundMotionStatus->hide();
+    form->addRow(m_groundMotionStatus);
+    connect(m_groundMotion, &QLineEdit::editingFinished, this, [this] {
+        if (m_groundMotion->isModified()) {
+            m_groundMotion->setModified(false);
+            emit groundMotionChosen();
+        }
+    });
     m_scale = spin(box, 0.0, 100.0, 3, QString());
     m_scale->setObjectName(QStringLiteral("groundMotionScale"));
     form->addRow(tr("Scale [-]:"), m_scale);
@@ -135,10 +159,26 @@ QWidget* SetupPanel::buildControllerGroup() {
     form->addRow(tr("Specimens driven by:"), m_controllerKind);
     form->addRow(tr("Host:"), m_host);
     form->addRow(tr("Port:"), m_port);
+    // The controller's shared secret: kept in memory for this session only, never in the
+    // settings file.
+    m_token = new QLineEdit(box);
+    m_token->setObjectName(QStringLiteral("controllerToken"));
+    m_token->setEchoMode(QLineEdit::Password);
+    m_token->setPlaceholderText(tr("none"));
+    m_token->setToolTip(tr("The token hsmu-controller --token expects; not saved"));
+    form->addRow(tr("Token:"), m_token);
+    auto* testLink = new QPushButton(tr("Test link"), box);
+    testLink->setObjectName(QStringLiteral("testLink"));
+    testLink->setToolTip(tr("Connect to the controller now (the test is prepared; nothing "
+                            "moves before the pre-flight check)"));
+    connect(testLink, &QPushButton::clicked, this, &SetupPanel::testLinkRequested);
+    form->addRow(QString(), testLink);
+    connect(m_token, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
     connect(m_controllerKind, &QComboBox::currentIndexChanged, this, [this] {
         const bool remote = m_controllerKind->currentData() != QStringLiteral("builtin");
         m_host->setEnabled(remote && m_editable);
         m_port->setEnabled(remote && m_editable);
+        m_token->setEnabled(remote && m_editable);
         markDirty();
     });
     connect(m_host, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
@@ -151,22 +191,27 @@ QWidget* SetupPanel::buildUpdatingGroup() {
     auto* form = new QFormLayout(box);
     m_updating = new QCheckBox(tr("enabled"), box);
     form->addRow(m_updating);
-    m_policy = new QComboBox(box);
-    m_policy->setObjectName(QStringLiteral("setupPolicy"));
-    for (ReporterPolicy p : {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
-                             ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval})
-        m_policy->addItem(PendingUpdatesPanel::describe(p), int(p));
-    form->addRow(tr("Apply updates:"), m_policy);
-    m_everyN = new QSpinBox(box);
-    m_everyN->setRange(1, 100000);
-    form->addRow(tr("N [steps]:"), m_everyN);
+    // One control decides when updates are applied: the Pending updates panel's.
+    auto* policy = new QLabel(tr("When updates are applied is chosen in the Pending updates "
+                                 "panel (one setting for the test)."),
+                              box);
+    policy->setWordWrap(true);
+    form->addRow(policy);
     m_threshold = spin(box, 0.001, 10.0, 3, QString());
     form->addRow(tr("Fit-error threshold [-]:"), m_threshold);
     connect(m_updating, &QCheckBox::toggled, this, &SetupPanel::markDirty);
-    connect(m_policy, &QComboBox::currentIndexChanged, this, &SetupPanel::markDirty);
-    connect(m_everyN, &QSpinBox::valueChanged, this, &SetupPanel::markDirty);
     connect(m_threshold, &QDoubleSpinBox::valueChanged, this, &SetupPanel::markDirty);
     return box;
+}
+
+void SetupPanel::setGroundMotionStatus(const QString& error) {
+    m_groundMotionStatus->setText(error);
+    m_groundMotionStatus->setToolTip(error);
+    m_groundMotionStatus->setVisible(!error.isEmpty());
+}
+
+QString SetupPanel::groundMotionStatus() const {
+    return m_groundMotionStatus->isHidden() ? QString() : m_groundMotionStatus->text();
 }
 
 void SetupPanel::browseGroundMotion() {
@@ -177,6 +222,7 @@ void SetupPanel::browseGroundMotion() {
         return;
     m_groundMotion->setText(file);
     markDirty();
+    emit groundMotionChosen(); // checked and plotted at once
 }
 
 void SetupPanel::setConfig(const TestConfig& cfg) {
@@ -191,6 +237,9 @@ void SetupPanel::setConfig(const TestConfig& cfg) {
                             .arg(QString::fromStdString(cfg.name),
                                  cfg.sourcePath.empty() ? tr("(built in)")
                                                         : QString::fromStdString(cfg.sourcePath)));
+        m_name->setToolTip(m_name->text());
+        m_body->show();
+        setGroundMotionStatus(QString());
         m_groundMotion->clear();
         m_groundMotion->setPlaceholderText(
             cfg.groundMotion.file.empty()
@@ -226,8 +275,6 @@ void SetupPanel::setConfig(const TestConfig& cfg) {
         const bool canUpdate = up.enabled || !up.specimen.empty();
         m_updating->setChecked(up.enabled);
         m_updating->setProperty("available", canUpdate);
-        m_policy->setCurrentIndex(std::max(0, m_policy->findData(int(up.policy))));
-        m_everyN->setValue(up.everyN);
         m_threshold->setValue(up.inspector.threshold);
     }
     markApplied();
@@ -274,8 +321,6 @@ std::optional<TestConfig> SetupPanel::edited(QString* error) const {
     if (m_updating->isChecked() && cfg.updating.specimen.empty())
         return fail(tr("this configuration has no updating section to enable"));
     cfg.updating.enabled = m_updating->isChecked();
-    cfg.updating.policy = ReporterPolicy(m_policy->currentData().toInt());
-    cfg.updating.everyN = m_everyN->value();
     cfg.updating.inspector.threshold = m_threshold->value();
     return cfg;
 }
@@ -293,6 +338,10 @@ QString SetupPanel::controllerText() const {
     if (scheme == QStringLiteral("builtin"))
         return scheme;
     return QStringLiteral("%1://%2:%3").arg(scheme, m_host->text().trimmed()).arg(m_port->value());
+}
+
+QString SetupPanel::token() const {
+    return m_token->text();
 }
 
 void SetupPanel::setControllerAddress(const QString& address) {
@@ -318,6 +367,7 @@ void SetupPanel::setEditable(bool editable) {
     const bool remote = m_controllerKind->currentData() != QStringLiteral("builtin");
     m_host->setEnabled(editable && remote);
     m_port->setEnabled(editable && remote);
+    m_token->setEnabled(editable && remote);
     m_alpha->setEnabled(editable && m_integrator->currentData() == QStringLiteral("alphaOS"));
     m_updating->setEnabled(editable && m_updating->property("available").toBool());
     for (QPushButton* b : findChildren<QPushButton*>())

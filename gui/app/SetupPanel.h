@@ -3,9 +3,9 @@
 // file and scale [-], integration step dt [s], duration [s] (0 = the whole record), the
 // controller (built-in virtual lab or hsmu-controller at tcp://host:port), each specimen's
 // safety limits (0 = no limit; the specimen's units), the integrator (explicit Newmark or
-// alpha-OS with its alpha) and the updating settings (on/off, reporter policy, N, inspector
-// threshold). Editable while no test runs, read-only while one does. Apply (or Start with
-// unapplied edits) rebuilds the test from edited(); the loaded configuration is the base.
+// alpha-OS with its alpha) and the updating settings (on/off, inspector threshold; when
+// updates are applied is the Pending updates panel's one control). Editable while no test
+// runs, read-only while one does. Apply (or Start with unapplied edits) rebuilds the test from edited(); the loaded configuration is the base.
 // Thread rules: GUI thread only.
 
 #include "comms/LinkAddress.h"
@@ -40,13 +40,23 @@ public:
     std::optional<comms::LinkAddress> controller(QString* error = nullptr) const;
     void setControllerAddress(const QString& address);
     QString controllerText() const;
+    /// The controller's token (session only: never written to the settings).
+    QString token() const;
     void setEditable(bool editable);
     /// Edits not yet applied to the loaded test.
     bool isDirty() const { return m_dirty; }
     void markApplied();
 
+    /// Show why the chosen ground motion cannot be used (empty: hide).
+    void setGroundMotionStatus(const QString& error);
+    QString groundMotionStatus() const;
+
 signals:
     void applyRequested();
+    /// A ground-motion file was chosen or typed (the window checks and plots it at once).
+    void groundMotionChosen();
+    /// "Test link": connect to the controller now.
+    void testLinkRequested();
     void dirtyChanged(bool dirty);
 
 private:
@@ -61,6 +71,8 @@ private:
     bool m_dirty = false;
     bool m_editable = true;
     QLabel* m_name = nullptr;
+    QWidget* m_body = nullptr;
+    QLabel* m_groundMotionStatus = nullptr;
     QLineEdit* m_groundMotion = nullptr;
     QDoubleSpinBox* m_scale = nullptr;
     QDoubleSpinBox* m_dt = nullptr;
@@ -70,10 +82,9 @@ private:
     QComboBox* m_controllerKind = nullptr;
     QLineEdit* m_host = nullptr;
     QSpinBox* m_port = nullptr;
+    QLineEdit* m_token = nullptr;
     QTableWidget* m_limits = nullptr;
     QCheckBox* m_updating = nullptr;
-    QComboBox* m_policy = nullptr;
-    QSpinBox* m_everyN = nullptr;
     QDoubleSpinBox* m_threshold = nullptr;
     QPushButton* m_apply = nullptr;
     QList<QWidget*> m_inputs;

@@ -19,6 +19,7 @@ TestController::TestController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<hsmu::Alarm>();
     qRegisterMetaType<hsmu::gui::PreflightReport>();
     qRegisterMetaType<hsmu::gui::UpdatingSnapshot>();
+    qRegisterMetaType<hsmu::gui::OperatorEvent>();
     m_drainTimer.setSingleShot(true);
     m_drainTimer.setInterval(kDrainIntervalMs);
     connect(&m_drainTimer, &QTimer::timeout, this, &TestController::drain);
@@ -53,6 +54,7 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
     m_delivered = 0;
     comms::TcpControlOptions link;
     link.connectTimeout = 3.0; // an absent controller is an error within seconds
+    link.token = m_token.toStdString();
     std::unique_ptr<HybridTest> test =
         buildHybridTest(cfg, comms::makeControlFactory(controller, link, cfg.link)); // may throw
     m_config = cfg;
@@ -65,9 +67,8 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
         name.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_.-]+")), QStringLiteral("-"));
         const QString run =
             QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz-")) + name;
-        const QDir dir(m_recordDir);
-        if (dir.mkpath(run))
-            m_recordPath = dir.filePath(run + QStringLiteral("/record.h5"));
+        // The worker creates the folder at the first driven step (no empty run folders).
+        m_recordPath = QDir(m_recordDir).filePath(run + QStringLiteral("/record.h5"));
     }
     // The JSON is the file as read; what the console's setup changed is in the notes.
     const std::string notes =
@@ -113,8 +114,13 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
             Qt::QueuedConnection);
     connect(m_worker, &TestWorker::recordingStarted, this, &TestController::recordingStarted,
             Qt::QueuedConnection);
+    connect(m_worker, &TestWorker::operatorEvent, this, &TestController::operatorEvent,
+            Qt::QueuedConnection);
     m_thread->start();
-    onWorker([s = m_speed](TestWorker* w) { w->setSpeed(s); });
+    onWorker([s = effectiveSpeed()](TestWorker* w) {
+        w->setSpeed(s);
+        w->publishUpdating(); // the parameters and the policy are shown before a start
+    });
     m_state = RunState::Ready;
     emit testLoaded();
     emit stateChanged(m_state, QString());
@@ -132,6 +138,9 @@ template <class F> void TestController::onWorker(F&& f) {
 
 void TestController::prepare() {
     onWorker([](TestWorker* w) { w->prepare(); });
+}
+void TestController::confirmPreflight() {
+    onWorker([](TestWorker* w) { w->confirmPreflight(); });
 }
 void TestController::start() {
     onWorker([](TestWorker* w) { w->start(); });
@@ -155,7 +164,18 @@ void TestController::emergencyHold(const QString& reason) {
 
 void TestController::setSpeed(double factor) {
     m_speed = factor;
-    onWorker([factor](TestWorker* w) { w->setSpeed(factor); });
+    onWorker([s = effectiveSpeed()](TestWorker* w) { w->setSpeed(s); });
+}
+
+void TestController::setWallTimePerStep(double seconds) {
+    m_wallPerStep = seconds;
+    onWorker([s = effectiveSpeed()](TestWorker* w) { w->setSpeed(s); });
+}
+
+double TestController::effectiveSpeed() const {
+    if (m_wallPerStep > 0.0 && m_config.analysis.dt > 0.0)
+        return m_config.analysis.dt / m_wallPerStep;
+    return m_speed;
 }
 
 void TestController::setParameterBounds(const QString& name, double lower, double upper) {

@@ -6,7 +6,7 @@
 // TCP link to hsmu-controller, then moves a TestWorker holding it to a fresh QThread.
 // Commands (prepare, start, pause, single step, ...) and the operator's updating decisions are
 // queued to the worker and run between steps; with a record directory each test also writes
-// its HDF5 record (opened when it is prepared); nothing here ever waits for the worker except
+// its HDF5 record (its run folder created at the first driven step); nothing here ever waits for the worker except
 // load() / the destructor, which stop the old test first.
 // Rows reach the GUI through a RecordBuffer: on the worker's coalesced recordsAvailable() a
 // single-shot ~30 Hz timer starts; when it fires, every pending row is moved out and emitted
@@ -21,6 +21,7 @@
 #include "core/output/RunLayout.h"
 #include "core/test/StepRecord.h"
 #include "gui/app/AlarmMetaType.h"
+#include "gui/app/OperatorEvent.h"
 #include "gui/app/PreflightReport.h"
 #include "gui/app/RunState.h"
 #include "gui/app/UpdatingSnapshot.h"
@@ -57,6 +58,9 @@ public:
     const TestConfig& config() const { return m_config; }
     const comms::LinkAddress& controllerAddress() const { return m_address; }
     RunState state() const { return m_state; }
+    /// The token the next load()ed tests send in their hello to hsmu-controller ("" = none);
+    /// held in memory only.
+    void setLinkToken(const QString& token) { m_token = token; }
     /// Where the next load()ed tests record (DIR/<date-time>-<name>/record.h5); "" = none.
     void setRecordDirectory(const QString& dir) { m_recordDir = dir; }
     /// The record of the current test ("" if none).
@@ -73,7 +77,9 @@ public:
 public slots:
     /// Prepare the test (connect the link, check stability) and report preflightReady().
     void prepare();
-    /// Start stepping (prepares first if needed, without a pre-flight report).
+    /// Record that the operator confirmed the pre-flight check (call before start()).
+    void confirmPreflight();
+    /// Arm and start stepping (prepares first if needed, without a pre-flight report).
     void start();
     void pause();
     void singleStep();
@@ -82,6 +88,10 @@ public slots:
     void emergencyHold(const QString& reason = QString());
     /// Test seconds per wall second (1 = real time); <= 0 as fast as possible.
     void setSpeed(double factor);
+    /// Pace by wall time per step [s] instead (speed = dt / seconds); <= 0: use setSpeed's.
+    void setWallTimePerStep(double seconds);
+    /// The pace in force: test seconds per wall second (<= 0: as fast as possible).
+    double effectiveSpeed() const;
 
     void setParameterBounds(const QString& name, double lower, double upper);
     void setParameterLocked(const QString& name, bool locked);
@@ -102,8 +112,10 @@ signals:
     void preflightReady(const hsmu::gui::PreflightReport& report);
     void updatingChanged(const hsmu::gui::UpdatingSnapshot& snapshot);
     void commandRefused(const QString& reason);
-    /// The current test's HDF5 record was opened (at prepare()).
+    /// The current test's HDF5 record was opened (at the first driven step).
     void recordingStarted(const QString& path);
+    /// An operator action as the worker stamped and recorded it.
+    void operatorEvent(const hsmu::gui::OperatorEvent& event);
     /// A new test was loaded (layout() and config() describe it).
     void testLoaded();
 
@@ -123,10 +135,12 @@ private:
     comms::LinkAddress m_address;
     RunState m_state = RunState::Idle;
     double m_speed = 1.0;
+    double m_wallPerStep = 0.0; ///< [s]; > 0 overrides m_speed
     qint64 m_delivered = 0;
     std::optional<PreflightReport> m_preflight;
     UpdatingSnapshot m_updating;
     QString m_recordDir;
+    QString m_token;
     QString m_recordPath;
 };
 

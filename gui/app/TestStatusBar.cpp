@@ -26,6 +26,8 @@ TestStatusBar::TestStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_state->setObjectName(QStringLiteral("statusState"));
     m_link->setObjectName(QStringLiteral("statusLink"));
     m_recording->setObjectName(QStringLiteral("statusRecording"));
+    for (QLabel* l : {m_link, m_recording})
+        l->setMaximumWidth(280); // long addresses and paths: cut, in full in the tool tip
     setProgress(0, 0, 0.0, 0.0);
     setRunState(RunState::Idle);
     setLink(tr("no link"), true);
@@ -47,6 +49,7 @@ void TestStatusBar::setRunState(RunState state) {
 
 void TestStatusBar::setLink(const QString& text, bool ok) {
     m_link->setText(tr("link: %1").arg(text));
+    m_link->setToolTip(m_link->text());
     m_link->setStyleSheet(ok ? QString() : QStringLiteral("color: white; background: #c62828;"));
 }
 

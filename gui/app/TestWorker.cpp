@@ -6,15 +6,52 @@
 #include "core/updating/ModelUpdater.h"
 #include "gui/app/RecordBuffer.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QTimer>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
+#include <sstream>
 
 namespace hsmu::gui {
 
 namespace {
 constexpr int kChunkMs = 15;     // longest stretch of stepping before queued calls are served
 constexpr int kProgressMs = 100; // progress / snapshot period while running
+
+std::string number(double v) {
+    std::ostringstream o;
+    o.precision(10);
+    o << v;
+    return o.str();
+}
+
+std::string valuesText(const ParameterValues& values) {
+    std::string out;
+    for (const auto& [name, v] : values)
+        out += (out.empty() ? "" : ", ") + name + "=" + number(v);
+    return out;
+}
+
+/// The configuration text and notes with the updating policy in force at the first step.
+void withPolicy(RecordStart& start, const Reporter& reporter) {
+    try {
+        nlohmann::json cfg = nlohmann::json::parse(start.configuration);
+        if (cfg.contains("updating") && cfg["updating"].is_object()) {
+            cfg["updating"]["reporter"]["policy"] = reporterPolicyName(reporter.policy());
+            cfg["updating"]["reporter"]["everyN"] = reporter.everyN();
+            start.configuration = cfg.dump();
+        }
+    } catch (const std::exception&) {
+        // not JSON (a test's hand-made RecordStart): kept as given
+    }
+    const std::string key = ", updating = ";
+    if (const auto at = start.operatorNotes.find(key); at != std::string::npos)
+        start.operatorNotes = start.operatorNotes.substr(0, at) + key +
+                              reporterPolicyName(reporter.policy());
+}
 } // namespace
 
 TestWorker::TestWorker(std::unique_ptr<HybridTest> test, std::shared_ptr<RecordBuffer> buffer,
@@ -26,38 +63,71 @@ TestWorker::TestWorker(std::unique_ptr<HybridTest> test, std::shared_ptr<RecordB
 
 TestWorker::~TestWorker() {
     m_test->removeObserver(this);
-    if (m_record) {
-        m_test->removeObserver(m_record.get());
+    if (m_record)
         m_record->finish();
-    }
 }
 
 bool TestWorker::openRecord() {
-    if (m_recordPath.isEmpty())
+    if (m_recordPath.isEmpty() || m_record)
         return true;
     try {
+        if (!QDir().mkpath(QFileInfo(m_recordPath).absolutePath()))
+            throw std::runtime_error("cannot create the folder " +
+                                     QFileInfo(m_recordPath).absolutePath().toStdString());
+        if (const ModelUpdater* u = m_test->updater())
+            withPolicy(m_recordStart, u->reporter());
         m_record = std::make_unique<RecordWriter>(m_recordPath.toStdString(),
                                                   RunLayout::of(*m_test), m_recordStart);
     } catch (const std::exception& e) {
+        m_recordPath.clear();
         setState(RunState::Failed, tr("the record cannot be written: %1").arg(e.what()));
         return false;
     }
     m_record->trackAlarms(&m_test->alarms());
-    m_test->addObserver(m_record.get());
+    for (const StepRecord& row : m_unrecorded)
+        m_record->onStep(row);
+    m_unrecorded.clear();
+    for (const Note& n : m_unrecordedNotes)
+        m_record->addNote(n.time, n.step, n.text);
+    m_unrecordedNotes.clear();
+    m_record->flush();
     emit recordingStarted(m_recordPath);
     return true;
+}
+
+void TestWorker::logEvent(const char* action, std::string oldValue, std::string newValue) {
+    const OperatorEvent e = OperatorEvent::now(m_test->currentStep(), m_test->time(), action,
+                                               std::move(oldValue), std::move(newValue));
+    if (m_record)
+        m_record->addNote(e.time, e.step, e.recordText());
+    else if (!m_recordPath.isEmpty())
+        m_unrecordedNotes.push_back({e.time, e.step, e.recordText()});
+    emit operatorEvent(e);
 }
 
 void TestWorker::onStep(const StepRecord& record) {
     if (m_buffer->push(record))
         emit recordsAvailable();
+    if (m_recordPath.isEmpty())
+        return;
+    if (!m_record) {
+        m_unrecorded.push_back(record); // step 0 of prepare(), written when the record opens
+        return;
+    }
+    if (m_approved.empty() || !record.hasUpdating) {
+        m_record->onStep(record);
+        return;
+    }
+    // Updates approved between two steps go to /updating/events with this row.
+    StepRecord row = record;
+    row.updating.applied.insert(row.updating.applied.begin(), m_approved.begin(), m_approved.end());
+    m_approved.clear();
+    m_record->onStep(row);
 }
 
 bool TestWorker::ensurePrepared() {
     if (m_prepared)
         return true;
-    if (!m_record && !openRecord()) // before prepare(): step 0 is recorded too
-        return false;
     if (!m_test->prepare()) {
         setState(RunState::Failed, QString::fromStdString(m_test->lastError()));
         return false;
@@ -74,27 +144,39 @@ void TestWorker::prepare() {
     emit preflightReady(preflightOf(*m_test, m_allowUnstable));
 }
 
+void TestWorker::confirmPreflight() {
+    if (m_state == RunState::Ready)
+        logEvent(OperatorEvent::kPreflightConfirmed, "unconfirmed", "confirmed");
+}
+
 void TestWorker::start() {
-    if (m_state != RunState::Ready || !ensurePrepared())
+    if (m_state != RunState::Ready || !ensurePrepared() || !openRecord())
         return;
+    m_armed = true;
+    logEvent(OperatorEvent::kStart, "ready", "running");
     restartPacing();
     setState(RunState::Running);
     schedule(0);
 }
 
 void TestWorker::pause() {
-    if (m_state == RunState::Running)
-        setState(RunState::Paused);
+    if (m_state != RunState::Running)
+        return;
+    logEvent(OperatorEvent::kPause, "running", "paused");
+    setState(RunState::Paused);
 }
 
 void TestWorker::singleStep() {
     if (m_state == RunState::Ready) {
-        if (!ensurePrepared())
+        if (!ensurePrepared() || !openRecord())
             return;
+        m_armed = true;
         setState(RunState::Paused);
     }
     if (m_state != RunState::Paused)
         return;
+    logEvent(OperatorEvent::kSingleStep, std::to_string(m_test->currentStep()),
+             std::to_string(m_test->currentStep() + 1));
     if (stepOnce()) {
         emitProgress(true);
         publishUpdating();
@@ -102,10 +184,14 @@ void TestWorker::singleStep() {
 }
 
 void TestWorker::resume() {
+    if (!m_armed)
+        return; // never drives a test the operator has not confirmed
     if (m_state == RunState::Holding)
         m_test->resume();
     else if (m_state != RunState::Paused)
         return;
+    logEvent(OperatorEvent::kResume, m_state == RunState::Holding ? "holding" : "paused",
+             "running");
     publishAlarms();
     restartPacing();
     setState(RunState::Running);
@@ -113,8 +199,11 @@ void TestWorker::resume() {
 }
 
 void TestWorker::stop() {
+    if (m_state == RunState::Running || m_state == RunState::Paused ||
+        m_state == RunState::Holding)
+        logEvent(OperatorEvent::kStop, "armed", "stopped, data kept");
     if (m_state == RunState::Running || m_state == RunState::Paused) {
-        m_test->hold(tr("stopped by the operator").toStdString());
+        m_test->hold("stopped by the operator"); // the record's text: language-neutral
         publishAlarms();
     }
     if (m_state != RunState::Finished && m_state != RunState::Failed &&
@@ -123,13 +212,22 @@ void TestWorker::stop() {
 }
 
 void TestWorker::emergencyHold(const QString& reason) {
-    const bool prepared = m_state == RunState::Ready && m_prepared;
-    if (m_state != RunState::Running && m_state != RunState::Paused && !prepared)
+    if (m_state == RunState::Ready) {
+        // Nothing was driven and nothing is armed: the test stays Ready; a start must go
+        // through the pre-flight again.
+        logEvent(OperatorEvent::kHold, "ready", "not-armed");
         return;
-    const QString why = reason.isEmpty() ? tr("emergency hold by the operator") : reason;
-    m_test->hold(why.toStdString());
+    }
+    if (m_state != RunState::Running && m_state != RunState::Paused)
+        return;
+    // The record's text is language-neutral; the console shows the translation.
+    const std::string why =
+        reason.isEmpty() ? std::string("emergency hold by the operator") : reason.toStdString();
+    logEvent(OperatorEvent::kHold, m_state == RunState::Running ? "running" : "paused", "held");
+    m_test->hold(why);
     publishAlarms();
-    setState(RunState::Holding, why);
+    setState(RunState::Holding,
+             reason.isEmpty() ? tr("emergency hold by the operator") : reason);
 }
 
 void TestWorker::setSpeed(double factor) {
@@ -140,11 +238,14 @@ void TestWorker::setSpeed(double factor) {
 void TestWorker::addNote(const QString& text) {
     if (text.trimmed().isEmpty())
         return;
-    if (!m_record || !m_record->ok()) {
+    if (m_recordPath.isEmpty() || (m_record && !m_record->ok())) {
         emit commandRefused(tr("the note was not kept: this test is not recorded"));
         return;
     }
-    m_record->addNote(m_test->time(), m_test->currentStep(), text.toStdString());
+    if (m_record)
+        m_record->addNote(m_test->time(), m_test->currentStep(), text.toStdString());
+    else // written when the record opens, at the first driven step
+        m_unrecordedNotes.push_back({m_test->time(), m_test->currentStep(), text.toStdString()});
 }
 
 void TestWorker::setParameterBounds(const QString& name, double lower, double upper) {
@@ -154,12 +255,19 @@ void TestWorker::setParameterBounds(const QString& name, double lower, double up
     if (!(lower <= upper) || !std::isfinite(lower) || !std::isfinite(upper))
         return emit commandRefused(
             tr("%1: the lower bound must be a number not above the upper bound").arg(name));
+    ParameterBounds before{std::nan(""), std::nan("")};
+    if (const auto it = u->identifier().bounds().find(name.toStdString());
+        it != u->identifier().bounds().end())
+        before = it->second;
     if (!u->identifier().setBounds(name.toStdString(), {lower, upper}))
         return emit commandRefused(tr("%1: bounds [%2, %3] refused (they would not keep the "
                                       "law admissible)")
                                        .arg(name)
                                        .arg(lower)
                                        .arg(upper));
+    logEvent(OperatorEvent::kBounds,
+             name.toStdString() + " [" + number(before.lower) + ", " + number(before.upper) + "]",
+             name.toStdString() + " [" + number(lower) + ", " + number(upper) + "]");
     publishUpdating();
 }
 
@@ -171,21 +279,43 @@ void TestWorker::setParameterLocked(const QString& name, bool locked) {
         return emit commandRefused(
             tr("%1: the %2 cannot lock this parameter")
                 .arg(name, QString::fromStdString(u->identifier().methodName())));
+    logEvent(OperatorEvent::kLock, name.toStdString() + (locked ? " unlocked" : " locked"),
+             name.toStdString() + (locked ? " locked" : " unlocked"));
     publishUpdating();
 }
 
 void TestWorker::approveUpdate(int proposalId) {
-    if (!m_test->approveUpdate(proposalId))
+    std::optional<UpdateProposal> proposal;
+    if (const ModelUpdater* u = m_test->updater())
+        for (const UpdateProposal& p : u->reporter().pending())
+            if (p.id == proposalId)
+                proposal = p;
+    if (!m_test->approveUpdate(proposalId)) {
         emit commandRefused(tr("update #%1 was not applied (no longer pending, or refused by "
                                "the law; see the alarms)")
                                 .arg(proposalId));
+    } else if (proposal) {
+        logEvent(OperatorEvent::kApprove,
+                 "#" + std::to_string(proposalId) + " " + proposal->element + " " +
+                     valuesText(proposal->current),
+                 valuesText(proposal->proposed));
+        m_approved.push_back({m_test->currentStep(), m_test->time(), proposal->element,
+                              proposal->proposed, true, {}});
+    }
     publishAlarms();
     publishUpdating();
 }
 
 void TestWorker::rejectUpdate(int proposalId) {
+    std::string element;
+    if (const ModelUpdater* u = m_test->updater())
+        for (const UpdateProposal& p : u->reporter().pending())
+            if (p.id == proposalId)
+                element = p.element + " " + valuesText(p.proposed);
     if (!m_test->rejectUpdate(proposalId))
         emit commandRefused(tr("update #%1 is no longer pending").arg(proposalId));
+    else
+        logEvent(OperatorEvent::kReject, "#" + std::to_string(proposalId), "rejected " + element);
     publishUpdating();
 }
 
@@ -193,7 +323,16 @@ void TestWorker::setReporterPolicy(ReporterPolicy policy, int everyN) {
     ModelUpdater* u = m_test->updater();
     if (!u)
         return emit commandRefused(tr("this test has no model updating"));
+    const Reporter& r = u->reporter();
+    const std::string before = std::string(reporterPolicyName(r.policy())) +
+                               (r.policy() == ReporterPolicy::EveryNSteps
+                                    ? " N=" + std::to_string(r.everyN()) : std::string());
     u->reporter().setPolicy(policy, everyN);
+    const std::string after = std::string(reporterPolicyName(policy)) +
+                              (policy == ReporterPolicy::EveryNSteps
+                                   ? " N=" + std::to_string(everyN) : std::string());
+    if (after != before)
+        logEvent(OperatorEvent::kPolicy, before, after);
     publishUpdating();
 }
 
@@ -204,6 +343,7 @@ void TestWorker::setFitThreshold(double threshold) {
     if (!(threshold > 0.0) || !std::isfinite(threshold))
         return emit commandRefused(tr("the fit-error threshold must be a positive number"));
     InspectorSettings s = u->inspector().settings();
+    logEvent(OperatorEvent::kThreshold, number(s.threshold), number(threshold));
     s.threshold = threshold;
     u->inspector().setSettings(s);
     publishUpdating();

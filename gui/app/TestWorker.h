@@ -9,7 +9,18 @@
 // recordsAvailable() is emitted only when the buffer turns non-empty (one coalesced signal per
 // GUI drain). With a record path, every step (from step 0) and alarm also goes into an HDF5
 // record (RecordWriter), flushed at every state change and finished with the test; operator
-// notes (addNote) go there too, stamped with the current step and test time. The updating
+// notes (addNote) go there too, stamped with the current step and test time. The record (and
+// its run folder) is created only when the test is armed and its first step is driven, so a
+// test that is loaded, prepared or cancelled at the pre-flight leaves no folder behind; notes
+// and events from before are written then with their own step and time.
+// Arming: start() and singleStep() arm the test (the console calls them only after the
+// pre-flight was confirmed, confirmPreflight()); an emergency hold before arming holds
+// nothing and leaves the test Ready and unarmed (the pre-flight must be confirmed again), so
+// Resume can never drive an unconfirmed test.
+// Every operator action (pre-flight confirmation, start, pause, single step, resume, hold,
+// stop, approve / reject, bounds, lock, threshold, policy) becomes an OperatorEvent: emitted
+// to the console and written to the record (language-neutral, as a /notes row). An approved
+// update is also written to /updating/events with the next committed step. The updating
 // panels get an UpdatingSnapshot at most ~10 times a second while running, and at once after every
 // operator decision and state change.
 //
@@ -21,6 +32,7 @@
 #include "core/test/StepRecord.h"
 #include "core/updating/Reporter.h"
 #include "gui/app/AlarmMetaType.h"
+#include "gui/app/OperatorEvent.h"
 #include "gui/app/PreflightReport.h"
 #include "gui/app/RunState.h"
 #include "gui/app/UpdatingSnapshot.h"
@@ -53,7 +65,9 @@ public slots:
     /// prepare() the test (connects a link, emits step 0) and report preflightReady(); Failed
     /// if it cannot start. Idempotent: a second call repeats the report.
     void prepare();
-    /// Prepare if needed and start stepping; Failed if it cannot start.
+    /// The operator confirmed the pre-flight check (recorded as an event).
+    void confirmPreflight();
+    /// Prepare if needed, arm and start stepping; Failed if it cannot start.
     void start();
     void pause();
     /// Exactly one step from Ready or Paused, then Paused (or Finished / Holding / Failed).
@@ -62,7 +76,8 @@ public slots:
     void resume();
     /// End the test in a safe hold.
     void stop();
-    /// Hold at once, between steps (works while running, paused or prepared).
+    /// Hold at once, between steps (running or paused); before arming: nothing is armed,
+    /// the test stays Ready (an event says so).
     void emergencyHold(const QString& reason);
     /// Test seconds per wall second; <= 0: as fast as possible.
     void setSpeed(double factor);
@@ -74,6 +89,8 @@ public slots:
     void rejectUpdate(int proposalId);
     void setReporterPolicy(hsmu::ReporterPolicy policy, int everyN);
     void setFitThreshold(double threshold);
+    /// Emit the updating snapshot now (e.g. right after loading, before any start).
+    void publishUpdating();
     /// An operator note at the current step and test time, into the record
     /// (RecordWriter::addNote); refused with commandRefused() when nothing is recorded.
     void addNote(const QString& text);
@@ -88,12 +105,17 @@ signals:
     void updatingChanged(const hsmu::gui::UpdatingSnapshot& snapshot);
     /// An operator command that could not be carried out, and why.
     void commandRefused(const QString& reason);
-    /// The HDF5 record was opened at `path` (prepare()).
+    /// The HDF5 record was opened at `path` (before the first driven step).
     void recordingStarted(const QString& path);
+    /// An operator action, stamped with step, test time and wall time.
+    void operatorEvent(const hsmu::gui::OperatorEvent& event);
 
 private:
     bool ensurePrepared();
+    /// Open the record before the first driven step (idempotent); false: Failed, no step.
     bool openRecord();
+    /// Stamp, emit and record an operator event.
+    void logEvent(const char* action, std::string oldValue = {}, std::string newValue = {});
     void runChunk();
     /// One step; false (state changed to Finished / Holding / Failed) if it did not advance.
     bool stepOnce();
@@ -101,7 +123,6 @@ private:
     void setState(RunState state, const QString& message = {});
     void publishAlarms();
     void emitProgress(bool force);
-    void publishUpdating();
     void restartPacing();
 
     std::unique_ptr<HybridTest> m_test;
@@ -110,7 +131,16 @@ private:
     RecordStart m_recordStart;
     QString m_recordPath;
     std::unique_ptr<RecordWriter> m_record;
+    std::vector<StepRecord> m_unrecorded; ///< rows committed before the record opened (step 0)
+    struct Note {
+        double time;
+        int step;
+        std::string text;
+    };
+    std::vector<Note> m_unrecordedNotes;     ///< notes and events before the record opened
+    std::vector<UpdateEvent> m_approved;     ///< approved between steps, for the next row
     bool m_prepared = false;
+    bool m_armed = false;
     RunState m_state = RunState::Ready;
     double m_speed = 1.0;
     bool m_scheduled = false;

@@ -115,6 +115,11 @@ void LivePlotsPanel::configure(const RunLayout& layout, const PlotReferences& re
 
 void LivePlotsPanel::configure(const RunLayout& layout, const TestConfig& cfg) {
     configure(layout, PlotReferences::of(cfg));
+    // On failure the test's own loader reports the problem; the rows carry the acceleration.
+    showGroundMotionOf(cfg);
+}
+
+bool LivePlotsPanel::showGroundMotionOf(const TestConfig& cfg, QString* error) {
     try {
         const GroundMotion g = buildGroundMotion(cfg.groundMotion, cfg.sourcePath);
         QVector<double> t(qsizetype(g.acceleration.size())), a(t.size());
@@ -130,8 +135,11 @@ void LivePlotsPanel::configure(const RunLayout& layout, const TestConfig& cfg) {
             a.resize(n);
         }
         setGroundMotion(t, a);
-    } catch (const std::exception&) {
-        // The test's own loader reports the problem; the rows still carry the acceleration.
+        return true;
+    } catch (const std::exception& e) {
+        if (error)
+            *error = QString::fromStdString(e.what());
+        return false;
     }
 }
 

@@ -65,6 +65,10 @@ public:
     /// ground-motion record of cfg (scaled; falls back to the rows' ground acceleration if
     /// the record cannot be read).
     void configure(const RunLayout& layout, const TestConfig& cfg);
+    /// Read and show cfg's ground-motion record (scaled, cut at the duration); false and
+    /// *error (the reader's message, naming the file) if it cannot be read. The plot keeps
+    /// what it showed.
+    bool showGroundMotionOf(const TestConfig& cfg, QString* error = nullptr);
     /// Show this whole ground-motion record (time [s], acceleration [m/s^2]) instead of the
     /// rows' ground acceleration; the time cursor marks the latest row.
     void setGroundMotion(const QVector<double>& time, const QVector<double>& acceleration);

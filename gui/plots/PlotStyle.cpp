@@ -1,6 +1,10 @@
 #include "gui/plots/PlotStyle.h"
 
+#include "gui/plots/PlotTools.h"
+
 #include <qcustomplot.h>
+
+#include <algorithm>
 
 #include <array>
 #include <cmath>
@@ -26,7 +30,13 @@ void PlotStyle::apply(QCustomPlot& plot) {
     plot.setPlottingHint(QCP::phFastPolylines, true); // thousands of points per live curve
     plot.setNotAntialiasedElements(QCP::aeFills);
     plot.legend->setVisible(false);
-    plot.legend->setBrush(QColor(255, 255, 255, 220));
+    // Small and see-through: at 1280x720 a legend must not hide the traces.
+    plot.legend->setBrush(QColor(255, 255, 255, 150));
+    QFont legendFont = plot.font();
+    legendFont.setPointSizeF(std::max(6.0, legendFont.pointSizeF() - 2.0));
+    plot.legend->setFont(legendFont);
+    plot.legend->setIconSize(16, 8);
+    plot.legend->setRowSpacing(-3);
     plot.legend->setBorderPen(QPen(QColor(180, 180, 180)));
     plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
     for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
@@ -35,6 +45,7 @@ void PlotStyle::apply(QCustomPlot& plot) {
         axis->grid()->setZeroLinePen(QPen(QColor(150, 150, 150), 0));
     }
     plot.setMinimumSize(240, 180);
+    PlotTools::attach(plot); // cursor read-out, zoom / pan, autoscale, channels, CSV export
 }
 
 QPen PlotStyle::seriesPen(int i) {
@@ -47,17 +58,31 @@ QPen PlotStyle::seriesPen(int i) {
 }
 
 void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
+    plot.setProperty("hsmuTitle", title);
     if (auto* existing = qobject_cast<QCPTextElement*>(plot.plotLayout()->element(0, 0))) {
         existing->setText(title);
         return;
     }
     plot.plotLayout()->insertRow(0);
-    auto* element = new QCPTextElement(&plot, title, QFont(plot.font().family(), 11, QFont::Bold));
+    // 10 pt: the longest title fits a plot cell at 1280x720.
+    auto* element = new QCPTextElement(&plot, title, QFont(plot.font().family(), 10, QFont::Bold));
     plot.plotLayout()->addElement(0, 0, element);
+    // A title wider than its plot (a narrow cell, a long translation) is cut with "...", the
+    // full title in the plot's tool tip.
+    QObject::connect(&plot, &QCustomPlot::beforeReplot, element, [&plot, element] {
+        const QString full = plot.property("hsmuTitle").toString();
+        const QString shown = QFontMetrics(element->font())
+                                  .elidedText(full, Qt::ElideRight, std::max(40, plot.width() - 12));
+        if (element->text() != shown)
+            element->setText(shown);
+        plot.setToolTip(shown == full ? QString() : full);
+    });
 }
 
 void PlotStyle::rescaleWithMargin(QCustomPlot& plot) {
-    plot.rescaleAxes();
+    if (!PlotTools::autoscale(plot))
+        return; // the operator's zoom / pinned window stays
+    plot.rescaleAxes(true); // visible channels only
     padRange(plot.xAxis);
     padRange(plot.yAxis);
     // Visible horizontal reference lines (thresholds, bounds) stay in view.

@@ -5,9 +5,14 @@
 #include "gui/replay/RecordPlayback.h"
 #include "gui/replay/Reidentification.h"
 #include "gui/replay/ReidentifyDialog.h"
+#include "gui/replay/ReplayPanels.h"
+#include "gui/plots/HistoryPlot.h"
 
 #include <QAction>
 #include <QComboBox>
+#include <QDockWidget>
+#include <QMenu>
+#include <QMenuBar>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
@@ -121,7 +126,8 @@ ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString
     m_timer = new QTimer(this);
     m_timer->setInterval(kTickMs);
     connect(m_timer, &QTimer::timeout, this, &ReplayWindow::tick);
-    resize(1280, 800);
+    buildPanelsAndMenus();
+    resize(1280, 720);
     seek(1); // the initial state
 }
 
@@ -248,6 +254,82 @@ void ReplayWindow::showRows(const std::vector<StepRecord>& rows, bool restart) {
         m_panel->refresh();
     updateControls();
     emit positionChanged(m_playback->shown());
+}
+
+void ReplayWindow::buildPanelsAndMenus() {
+    const RecordData& d = m_playback->data();
+    m_events = new ReplayEventList(d, this);
+    connect(m_events, &ReplayEventList::jumpTo, this, [this](int rows) {
+        pause();
+        seek(rows);
+    });
+    auto* events = new QDockWidget(tr("Events, alarms and notes"), this);
+    events->setObjectName(QStringLiteral("replayEventsDock"));
+    events->setWidget(m_events);
+    addDockWidget(Qt::BottomDockWidgetArea, events);
+    m_readout = new ReplayReadout(d, this);
+    auto* readout = new QDockWidget(tr("Values at the cursor"), this);
+    readout->setObjectName(QStringLiteral("replayReadoutDock"));
+    readout->setWidget(m_readout);
+    addDockWidget(Qt::RightDockWidgetArea, readout);
+    connect(this, &ReplayWindow::positionChanged, m_readout,
+            [this](int shown) { m_readout->showRow(shown - 1); });
+
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("Export time window as &CSV..."), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export time window"),
+                                                          QString(), tr("CSV files (*.csv)"));
+        QString error;
+        if (!path.isEmpty() && !exportWindowCsv(path, &error))
+            QMessageBox::warning(this, tr("Export time window"), error);
+    });
+    file->addAction(tr("Export &plots (PNG, SVG or PDF)..."), this, [this] {
+        QString filter;
+        const QString base = QFileDialog::getSaveFileName(
+            this, tr("Export plots"), QString(),
+            tr("PNG images (*.png);;SVG drawings (*.svg);;PDF documents (*.pdf)"), &filter);
+        if (base.isEmpty())
+            return;
+        const QFileInfo info(base);
+        const QString format = info.suffix().isEmpty()
+                                   ? filter.section(QStringLiteral("*."), 1).left(3)
+                                   : info.suffix();
+        QStringList errors;
+        ReplayExport::exportPlots(m_panel->findChildren<QCustomPlot*>(), info.absolutePath(),
+                                  format, &errors);
+        if (!errors.isEmpty())
+            QMessageBox::warning(this, tr("Export plots"), errors.join(QLatin1Char('\n')));
+    });
+    file->addSeparator();
+    QAction* close = file->addAction(tr("&Close"), this, &QWidget::close);
+    close->setObjectName(QStringLiteral("closeReplay"));
+    close->setShortcuts({QKeySequence::Close, QKeySequence(Qt::CTRL | Qt::Key_W)});
+    QMenu* playback = menuBar()->addMenu(tr("&Playback"));
+    playback->addAction(m_playAction);
+    QAction* back = playback->addAction(tr("Step &back"), this, [this] {
+        pause();
+        seek(m_playback->shown() - 1);
+    });
+    back->setShortcut(Qt::Key_Left);
+    QAction* forward = playback->addAction(tr("Step &forward"), this, [this] {
+        pause();
+        seek(m_playback->shown() + 1);
+    });
+    forward->setShortcut(Qt::Key_Right);
+    playback->addAction(tr("To the &start"), this, [this] { seek(1); })
+        ->setShortcut(Qt::Key_Home);
+    playback->addAction(tr("To the &end"), this, [this] { seek(m_playback->rows()); })
+        ->setShortcut(Qt::Key_End);
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(events->toggleViewAction());
+    view->addAction(readout->toggleViewAction());
+}
+
+bool ReplayWindow::exportWindowCsv(const QString& path, QString* error, int* rows) const {
+    // The time window shown by the displacement plot (zoom it to pin a window).
+    const auto* plot = m_panel->findChild<HistoryPlot*>(QStringLiteral("displacementPlot"));
+    const QCPRange r = plot ? plot->xAxis->range() : QCPRange(-1e300, 1e300);
+    return ReplayExport::exportWindowCsv(m_playback->data(), r.lower, r.upper, path, error, rows);
 }
 
 void ReplayWindow::updateControls() {

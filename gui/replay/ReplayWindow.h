@@ -11,6 +11,11 @@
 // thread, the window staying responsive with a busy bar; the re-identified parameter history
 // is then overlaid on the parameter plots as "re-identified (METHOD)" for comparison with the
 // recorded one; an error goes to a message box (and reidentificationFailed()).
+// Panels: every alarm, operator event and note of the record (double-click: jump to its
+// step) and the numeric values at the cursor step (ReplayPanels.h). Menus: File (export the
+// time window the displacement plot shows as CSV, export the plots as PNG / SVG / PDF,
+// Close: Ctrl+W), Playback (Play / Pause: Space, step back / forward: Left / Right, Home,
+// End), View (the panels). Every plot has the console's plot tools (PlotTools.h).
 // Thread rules: GUI thread only (the identification runs on its own QThread, joined on close).
 
 #include <QElapsedTimer>
@@ -36,6 +41,8 @@ namespace hsmu::gui {
 
 class LivePlotsPanel;
 class RecordPlayback;
+class ReplayEventList;
+class ReplayReadout;
 
 class ReplayWindow : public QMainWindow {
     Q_OBJECT
@@ -55,6 +62,10 @@ public:
     int rowCount() const;
     bool isPlaying() const;
     bool isReidentifying() const { return m_reidentifier != nullptr; }
+    ReplayEventList& events() const { return *m_events; }
+    ReplayReadout& readout() const { return *m_readout; }
+    /// The rows inside the time window the displacement plot shows, as CSV (ReplayExport).
+    bool exportWindowCsv(const QString& path, QString* error = nullptr, int* rows = nullptr) const;
     /// The overlay curve name of a re-identification by method ("UKF" / "Nelder-Mead").
     static QString reidentifiedCurveName(const QString& method);
 
@@ -85,10 +96,13 @@ private:
     void tick();
     void showRows(const std::vector<StepRecord>& rows, bool restart);
     void updateControls();
+    void buildPanelsAndMenus();
     void showReidentification();
 
     std::unique_ptr<RecordPlayback> m_playback;
     LivePlotsPanel* m_panel = nullptr;
+    ReplayEventList* m_events = nullptr;
+    ReplayReadout* m_readout = nullptr;
     QAction* m_playAction = nullptr;
     QComboBox* m_speed = nullptr;
     QSlider* m_slider = nullptr;

@@ -22,7 +22,10 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
+#include <QMessageBox>
+#include <QWheelEvent>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSettings>
@@ -147,21 +150,153 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Finished, 30000);
     }
 
+    // Issue 16 item 1: a hold while the pre-flight is open leaves nothing armed; Resume
+    // cannot drive the test; no run folder is left behind (item 16).
     void emergencyHoldDuringThePreflightStartsNothing() {
+        QTemporaryDir records;
+        ConsoleSettings::setRecordDirectory(records.path());
         MainWindow window;
         window.setSpeed(0.0);
         window.show();
         QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
         window.startTest();
         QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
-        QAction* hold = window.findChild<ControlBar*>()->emergencyHoldAction();
+        auto* bar = window.findChild<ControlBar*>();
+        QAction* hold = bar->emergencyHoldAction();
         QVERIFY(window.preflightDialog()->actions().contains(hold)); // alive over the dialog
         hold->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Holding, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
-        QTest::qWait(100);
-        QCOMPARE(window.controller().state(), RunState::Holding);
+        QVERIFY(window.preflightDialog() == nullptr); // closed at once
+        auto* alarms = window.findChild<AlarmList*>();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !alarms->findItems(QStringLiteral("nothing is armed"), Qt::MatchContains,
+                               AlarmList::Message)
+                 .isEmpty(),
+            5000);
+        const QTreeWidgetItem* event =
+            alarms->findItems(QStringLiteral("nothing is armed"), Qt::MatchContains,
+                              AlarmList::Message)
+                .front();
+        QCOMPARE(event->text(AlarmList::Step), QStringLiteral("0"));
+        QCOMPARE(event->text(AlarmList::Time), QStringLiteral("0.00"));
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        QAction* resume = nullptr;
+        for (QAction* a : bar->actions())
+            if (a->text() == QStringLiteral("Resume"))
+                resume = a;
+        QVERIFY(resume && !resume->isEnabled());
+        window.controller().resume(); // even if asked directly: nothing drives
+        QTest::qWait(200);
+        QCOMPARE(window.controller().state(), RunState::Ready);
         QCOMPARE(window.controller().recordsCommitted(), qint64(1)); // step 0 only
+        QVERIFY(QDir(records.path()).entryList(QDir::Dirs | QDir::NoDotAndDotDot).isEmpty());
+        // Start again: the pre-flight is shown again and must be confirmed.
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        window.preflightDialog()->reject();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        QVERIFY(QDir(records.path()).entryList(QDir::Dirs | QDir::NoDotAndDotDot).isEmpty());
+        ConsoleSettings::setRecordDirectory(m_records.path());
+    }
+
+    // Issue 16 item 2: the wheel over an unfocused field scrolls, it does not edit.
+    void wheelEditsOnlyTheFocusedField() {
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* scale = setup->findChild<QDoubleSpinBox*>(QStringLiteral("groundMotionScale"));
+        auto* dt = setup->findChild<QDoubleSpinBox*>(QStringLiteral("timeStep"));
+        QVERIFY(scale && dt);
+        const double before = scale->value();
+        auto wheel = [](QWidget* w) {
+            const QPointF at(w->width() / 2.0, w->height() / 2.0);
+            QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(w, &e);
+        };
+        QCOMPARE(scale->focusPolicy(), Qt::StrongFocus);
+        QVERIFY(!scale->hasFocus());
+        wheel(scale);
+        wheel(dt);
+        QCOMPARE(scale->value(), before);
+        QCOMPARE(dt->value(), 0.01);
+        QVERIFY(!setup->isDirty());
+        scale->setFocus();
+        QTRY_VERIFY(scale->hasFocus());
+        wheel(scale);
+        QVERIFY(scale->value() > before); // focused: the wheel edits, as expected
+    }
+
+    // Issue 16 item 2: the pre-flight flags what changed since the last run and unusual values.
+    void preflightFlagsChangesAndUnusualValues() {
+        MainWindow window;
+        window.setSpeed(0.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        window.preflightDialog()->zeroConfirmation()->setChecked(true);
+        window.preflightDialog()->startButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Finished, 30000);
+        // Scale x40 and dt / 1000 (what a wheel accident did): both flagged, with old -> new.
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* scale = setup->findChild<QDoubleSpinBox*>(QStringLiteral("groundMotionScale"));
+        auto* dt = setup->findChild<QDoubleSpinBox*>(QStringLiteral("timeStep"));
+        const double dt0 = dt->value();
+        scale->setValue(scale->value() * 40.0);
+        dt->setValue(dt0 / 1000.0);
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        auto* flagged = window.preflightDialog()->findChild<QLabel*>(
+            QStringLiteral("preflightWarnings"));
+        QVERIFY(flagged);
+        const QString text = flagged->text();
+        QVERIFY2(text.contains(QStringLiteral("Unusual step count")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Unusual PGA")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("ground motion scale [-] 1 -> 40")),
+                 qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("time step dt [s] %1 -> ").arg(dt0)),
+                 qPrintable(text));
+        window.preflightDialog()->reject();
+    }
+
+    // Issue 16 item 3: Stop and Quit ask first while a test runs; "end and keep data".
+    void stopAndQuitAskWhileATestRuns() {
+        MainWindow window;
+        window.setConfirmBeforeStart(false);
+        window.setSpeed(1.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        window.startTest();
+        TestController& c = window.controller();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Running, 5000);
+        QAction* stop = window.findChild<QAction*>(QStringLiteral("stopTest"));
+        QVERIFY(stop && stop->isEnabled());
+        stop->trigger();
+        QVERIFY(window.confirmation());
+        QCOMPARE(window.confirmation()->objectName(), QStringLiteral("stopConfirmation"));
+        QTest::qWait(100);
+        QCOMPARE(c.state(), RunState::Running); // nothing ended yet
+        window.confirmation()->findChild<QPushButton*>(QStringLiteral("continueTest"))->click();
+        QTRY_VERIFY(window.confirmation() == nullptr);
+        QTest::qWait(100);
+        QCOMPARE(c.state(), RunState::Running);
+        // Quit (Ctrl+Q / the window's close) asks too.
+        QVERIFY(!window.close());
+        QVERIFY(window.isVisible());
+        QVERIFY(window.confirmation());
+        QCOMPARE(window.confirmation()->objectName(), QStringLiteral("quitConfirmation"));
+        window.confirmation()->findChild<QPushButton*>(QStringLiteral("continueTest"))->click();
+        QTRY_VERIFY(window.confirmation() == nullptr);
+        QCOMPARE(c.state(), RunState::Running);
+        stop->trigger();
+        QVERIFY(window.confirmation());
+        window.confirmation()->findChild<QPushButton*>(QStringLiteral("confirmEnd"))->click();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
+        QVERIFY(window.close()); // nothing runs: no question
     }
 
     void parameterTableEditsReachTheUpdater() {
@@ -218,8 +353,12 @@ private slots:
         auto* dt = setup->findChild<QDoubleSpinBox*>(QStringLiteral("timeStep"));
         auto* scale = setup->findChild<QDoubleSpinBox*>(QStringLiteral("groundMotionScale"));
         auto* limits = setup->findChild<QTableWidget*>(QStringLiteral("limitsTable"));
-        auto* policy = setup->findChild<QComboBox*>(QStringLiteral("setupPolicy"));
+        // Issue 16 items 4-7: one policy control (the Pending updates panel's).
+        QVERIFY(!setup->findChild<QComboBox*>(QStringLiteral("setupPolicy")));
+        auto* policy = window.findChild<PendingUpdatesPanel*>()->findChild<QComboBox*>(
+            QStringLiteral("approvalPolicy"));
         QVERIFY(dt && scale && limits && policy);
+        QTRY_VERIFY_WITH_TIMEOUT(policy->isEnabled(), 5000);
         QCOMPARE(dt->value(), 0.01);
         QCOMPARE(limits->rowCount(), 1);
         QCOMPARE(limits->item(0, 0)->text(), QStringLiteral("Element 1"));
@@ -228,6 +367,7 @@ private slots:
         scale->setValue(0.5);
         limits->item(0, 2)->setText(QStringLiteral("35"));
         policy->setCurrentIndex(policy->findData(int(ReporterPolicy::OnApproval)));
+        emit policy->activated(policy->currentIndex()); // as the operator's choice
         QVERIFY(setup->isDirty());
         // A limit that is not a number is refused with the element named; nothing is built.
         limits->item(0, 1)->setText(QStringLiteral("abc"));
@@ -239,7 +379,6 @@ private slots:
         QVERIFY2(cfg, qPrintable(error));
         QCOMPARE(cfg->analysis.dt, 0.005);
         QCOMPARE(cfg->groundMotion.scale, 0.5);
-        QCOMPARE(cfg->updating.policy, ReporterPolicy::OnApproval);
         const ElementSpec* e1 = nullptr;
         for (const ElementSpec& e : cfg->elements)
             if (e.name == "Element 1")
@@ -256,6 +395,9 @@ private slots:
         QVERIFY(!setup->isDirty());
         QVERIFY(!dt->isEnabled());
         QVERIFY(!limits->isEnabled());
+        // The operator's policy survived the reload of the Start (it reverted before).
+        QCOMPARE(c.config().updating.policy, ReporterPolicy::OnApproval);
+        QCOMPARE(policy->currentData().toInt(), int(ReporterPolicy::OnApproval));
 
         // Approve a pending update with the panel's button.
         QTRY_VERIFY_WITH_TIMEOUT(c.recordsDelivered() >= 50, 20000);
@@ -274,9 +416,57 @@ private slots:
         approve->click();
         QTRY_COMPARE_WITH_TIMEOUT(c.updating().appliedUpdates, 1, 5000);
         QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals().isEmpty(), 5000);
+        const int approvedAt = c.updating().step;
+        c.singleStep(); // the approved update is written with the next committed step
+        QTRY_VERIFY_WITH_TIMEOUT(c.updating().step > approvedAt, 5000);
+        // The approval is in the event list with its time and step.
+        auto* alarms = window.findChild<AlarmList*>();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !alarms->findItems(QStringLiteral("update #%1 approved").arg(id), Qt::MatchContains,
+                               AlarmList::Message)
+                 .isEmpty(),
+            5000);
+        const QTreeWidgetItem* approved =
+            alarms->findItems(QStringLiteral("update #%1 approved").arg(id), Qt::MatchContains,
+                              AlarmList::Message)
+                .front();
+        QVERIFY(approved->text(AlarmList::Step).toInt() > 0);
+        QVERIFY(!approved->text(AlarmList::Time).isEmpty());
+        // A policy change during the run is an event too (the one control, live).
+        policy->setCurrentIndex(policy->findData(int(ReporterPolicy::EveryStep)));
+        emit policy->activated(policy->currentIndex());
+        QTRY_COMPARE_WITH_TIMEOUT(c.updating().policy, ReporterPolicy::EveryStep, 5000);
         c.stop();
         QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
         QVERIFY(dt->isEnabled());
+
+        // The record: the approved update in /updating/events, the policy in force in the
+        // configuration and the notes, and every operator action as a language-neutral note.
+        const RecordData data = RecordReader(c.recordPath().toStdString()).data();
+        QCOMPARE(int(data.updateEvents.size()), 1);
+        QCOMPARE(data.updateEvents.front().step, approved->text(AlarmList::Step).toInt());
+        QVERIFY2(data.meta.configuration.find("\"onApproval\"") != std::string::npos,
+                 data.meta.configuration.c_str());
+        QVERIFY2(data.meta.operatorNotes.find("updating = onApproval") != std::string::npos,
+                 data.meta.operatorNotes.c_str());
+        QStringList actions;
+        for (const RecordNote& n : data.notes) {
+            const QString t = QString::fromStdString(n.text);
+            QVERIFY2(t.startsWith(QStringLiteral("operator-event action=")), qPrintable(t));
+            QVERIFY2(t.contains(QStringLiteral("; wall=20")), qPrintable(t));
+            actions << t.section(QLatin1Char(';'), 0, 0).section(QLatin1Char('='), 1);
+        }
+        QVERIFY2(actions.contains(QStringLiteral("updating-policy")), qPrintable(actions.join(',')));
+        bool policyEvent = false;
+        for (const RecordNote& n : data.notes)
+            policyEvent = policyEvent ||
+                          n.text.find("action=updating-policy; old=onApproval; new=everyStep;") !=
+                              std::string::npos;
+        QVERIFY(policyEvent);
+        QVERIFY2(actions.contains(QStringLiteral("start")), qPrintable(actions.join(',')));
+        QVERIFY2(actions.contains(QStringLiteral("pause")), qPrintable(actions.join(',')));
+        QVERIFY2(actions.contains(QStringLiteral("approve-update")), qPrintable(actions.join(',')));
+        QVERIFY2(actions.contains(QStringLiteral("stop")), qPrintable(actions.join(',')));
     }
 
     void criticalAlarmDemandsAttentionUntilAcknowledged() {

@@ -15,8 +15,12 @@
 #include "gui/plots/ParameterPlot.h"
 #include "gui/replay/RecordPlayback.h"
 #include "gui/replay/ReplayWindow.h"
+#include "gui/replay/ReplayPanels.h"
+#include "gui/plots/PlotTools.h"
 
+#include <QAction>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -277,6 +281,102 @@ private slots:
         QVERIFY(failed[0][0].toString().contains(QStringLiteral("cannot be opened")));
         for (const ParameterPlot* plot : w->panel().parameterPlots())
             QVERIFY(!plot->overlayGraph(ReplayWindow::reidentifiedCurveName(QStringLiteral("UKF"))));
+    }
+
+    // Issue 16 item 15: event / alarm / note list with jump-to, the numeric read-out of the
+    // cursor step, exports (CSV of the shown time window, PNG / SVG / PDF of the plots), a
+    // menu with Close and keyboard shortcuts.
+    void eventsReadoutExportsAndMenu() {
+        // A record with an operator note at step 50 and an operator event at step 120.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("noted.h5"));
+        {
+            TestConfig cfg = PresetLibrary::load(QStringLiteral("paper-condition-3"));
+            cfg.analysis.duration = kDuration;
+            std::unique_ptr<HybridTest> test = buildHybridTest(cfg);
+            RecordWriter writer(path.toStdString(), RunLayout::of(*test),
+                                RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt});
+            writer.trackAlarms(&test->alarms());
+            test->addObserver(&writer);
+            QVERIFY(test->prepare());
+            while (test->step() == HybridTest::StepResult::Advanced) {
+                if (test->currentStep() == 50)
+                    writer.addNote(test->time(), 50, "crack at the base");
+                if (test->currentStep() == 120)
+                    writer.addNote(test->time(), 120,
+                                   "operator-event action=pause; old=running; new=paused; "
+                                   "wall=2026-01-01T00:00:00.000Z");
+            }
+            test->removeObserver(&writer);
+            QVERIFY(writer.finish());
+        }
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(path, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        w->show();
+        ReplayEventList& events = w->events();
+        const QList<QTreeWidgetItem*> crack =
+            events.findItems(QStringLiteral("crack"), Qt::MatchContains, ReplayEventList::Text);
+        QCOMPARE(crack.size(), 1);
+        QCOMPARE(crack.front()->text(ReplayEventList::Step), QStringLiteral("50"));
+        QCOMPARE(crack.front()->text(ReplayEventList::Kind), QStringLiteral("note"));
+        const QList<QTreeWidgetItem*> pause =
+            events.findItems(QStringLiteral("action=pause"), Qt::MatchContains, ReplayEventList::Text);
+        QCOMPARE(pause.size(), 1);
+        QCOMPARE(pause.front()->text(ReplayEventList::Kind), QStringLiteral("operator"));
+        // Jump to the note: steps 0..50 shown, the read-out shows step 50.
+        emit events.itemActivated(crack.front(), 0);
+        QCOMPARE(w->rowsShown(), 51);
+        QCOMPARE(w->readout().value(QStringLiteral("step")), QStringLiteral("50"));
+        const double dt = m_run.config.analysis.dt;
+        QCOMPARE(w->readout().value(QStringLiteral("t [s]")).toDouble(), 50 * dt);
+        QCOMPARE(w->readout().value(QStringLiteral("u %1 [m]").arg(QString::fromStdString(
+                                        m_run.layout.dofNames.front())))
+                     .toDouble(),
+                 QString::number(m_run.records[50].u[0], 'g', 6).toDouble());
+        // Keyboard: Right steps forward, Left back.
+        w->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(w.get()));
+        QTest::keyClick(w.get(), Qt::Key_Right);
+        QCOMPARE(w->rowsShown(), 52);
+        QTest::keyClick(w.get(), Qt::Key_Left);
+        QCOMPARE(w->rowsShown(), 51);
+
+        // CSV of the time window shown (zoomed to 0.20 .. 0.40 s): 21 rows, t column exact.
+        auto* disp = w->panel().findChild<HistoryPlot*>(QStringLiteral("displacementPlot"));
+        QVERIFY(disp);
+        PlotTools::of(*disp)->setAutoscale(false);
+        disp->xAxis->setRange(20 * dt, 40 * dt);
+        const QString csv = dir.filePath(QStringLiteral("window.csv"));
+        int rows = 0;
+        QVERIFY2(w->exportWindowCsv(csv, &error, &rows), qPrintable(error));
+        QCOMPARE(rows, 21);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
+        const QStringList lines =
+            QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 22);
+        QVERIFY(lines[0].startsWith(QStringLiteral("step,t [s],ag [m/s^2],u ")));
+        QCOMPARE(lines[1].section(QLatin1Char(','), 0, 0), QStringLiteral("20"));
+
+        // Plots as SVG and PDF: one file per plot.
+        const QList<QCustomPlot*> plots = w->panel().findChildren<QCustomPlot*>();
+        for (const QString& format : {QStringLiteral("svg"), QStringLiteral("pdf")}) {
+            QStringList errors;
+            const QStringList files =
+                ReplayExport::exportPlots(plots, dir.path(), format, &errors);
+            QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+            QCOMPARE(files.size(), plots.size());
+            for (const QString& file : files)
+                QVERIFY(QFileInfo(file).size() > 100);
+        }
+
+        // The menu closes the window (Ctrl+W).
+        auto* close = w->findChild<QAction*>(QStringLiteral("closeReplay"));
+        QVERIFY(close);
+        QVERIFY(close->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::Key_W)));
+        close->trigger();
+        QVERIFY(!w->isVisible());
     }
 
     void commandScreenshotOfARecord() {

@@ -173,8 +173,21 @@ private slots:
         const QString path = controller.recordPath();
         controller.load(cfg); // the old worker finishes its record
         const RecordReader reader(path.toStdString());
-        const RecordData& d = reader.data();
+        RecordData d = reader.data();
         QCOMPARE(d.rows(), 301);
+        // The operator's actions are notes too (OperatorEvent): start, pause, resume.
+        std::vector<RecordNote> events;
+        std::erase_if(d.notes, [&events](const RecordNote& n) {
+            const bool event = n.text.rfind("operator-event ", 0) == 0;
+            if (event)
+                events.push_back(n);
+            return event;
+        });
+        QCOMPARE(int(events.size()), 3);
+        QVERIFY(events[0].text.find("action=start;") != std::string::npos);
+        QVERIFY(events[1].text.find("action=pause;") != std::string::npos);
+        QVERIFY(events[2].text.find("action=resume;") != std::string::npos);
+        QCOMPARE(events[2].step, pausedAt);
         QCOMPARE(int(d.notes.size()), 2);
         QCOMPARE(d.notes[0].step, pausedAt);
         QCOMPARE(d.notes[0].text, std::string("crack at the base, east side"));

@@ -1,0 +1,72 @@
+#include "gui/app/OperatorEvent.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+
+#include <cstring>
+
+namespace hsmu::gui {
+
+namespace {
+bool is(const std::string& action, const char* key) {
+    return action == key;
+}
+} // namespace
+
+OperatorEvent OperatorEvent::now(int step, double time, std::string action, std::string oldValue,
+                                 std::string newValue) {
+    OperatorEvent e;
+    e.step = step;
+    e.time = time;
+    e.wallTime = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
+    e.action = std::move(action);
+    e.oldValue = std::move(oldValue);
+    e.newValue = std::move(newValue);
+    return e;
+}
+
+std::string OperatorEvent::recordText() const {
+    return "operator-event action=" + action + "; old=" + oldValue + "; new=" + newValue +
+           "; wall=" + wallTime.toStdString();
+}
+
+QString OperatorEvent::describe() const {
+    const QString o = QString::fromStdString(oldValue);
+    const QString n = QString::fromStdString(newValue);
+    QString what;
+    if (is(action, kPreflightConfirmed))
+        what = tr("pre-flight confirmed by the operator (zero offsets)");
+    else if (is(action, kStart))
+        what = tr("test started by the operator");
+    else if (is(action, kPause))
+        what = tr("paused by the operator");
+    else if (is(action, kSingleStep))
+        what = tr("single step by the operator");
+    else if (is(action, kResume))
+        what = tr("resumed by the operator");
+    else if (is(action, kHold))
+        what = n == QStringLiteral("not-armed")
+                   ? tr("emergency hold before the test was armed: nothing is armed, the "
+                        "pre-flight check must be confirmed again")
+                   : tr("emergency hold by the operator");
+    else if (is(action, kStop))
+        what = tr("test ended by the operator, data kept");
+    else if (is(action, kApprove)) // old: "#id element values", new: the values applied
+        what = tr("update %1 approved by the operator: %2 -> %3")
+                   .arg(o.section(QLatin1Char(' '), 0, 0), o.section(QLatin1Char(' '), 1), n);
+    else if (is(action, kReject))
+        what = tr("update %1 rejected by the operator (%2)").arg(o, n);
+    else if (is(action, kBounds))
+        what = tr("bounds changed: %1 -> %2").arg(o, n);
+    else if (is(action, kLock))
+        what = tr("lock changed: %1 -> %2").arg(o, n);
+    else if (is(action, kThreshold))
+        what = tr("fit-error threshold changed: %1 -> %2").arg(o, n);
+    else if (is(action, kPolicy))
+        what = tr("updating policy changed: %1 -> %2").arg(o, n);
+    else
+        what = QString::fromStdString(action);
+    return tr("%1 (wall time %2)").arg(what, wallTime);
+}
+
+} // namespace hsmu::gui

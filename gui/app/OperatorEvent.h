@@ -1,0 +1,57 @@
+#pragma once
+// OperatorEvent: one operator action on a test (pre-flight confirmation, start, pause, single
+// step, resume, hold, stop, approve / reject an update, bounds, lock, fit-error threshold,
+// updating policy), stamped by the test worker with the committed step, the test time [s] and
+// the wall time (UTC), with the value before and after.
+// The record keeps it language-neutral as an operator note (/notes, docs/recording.md):
+//   "operator-event action=<key>; old=<value>; new=<value>; wall=<yyyy-MM-ddTHH:mm:ss.zzzZ>"
+// (keys below; values in the law's normalized units, the policy by its configuration name);
+// the console shows it translated in the alarm and event list (describe()).
+// Thread rules: plain data, copied through queued signals.
+
+#include <QCoreApplication>
+#include <QMetaType>
+#include <QString>
+
+#include <string>
+
+namespace hsmu::gui {
+
+struct OperatorEvent {
+    Q_DECLARE_TR_FUNCTIONS(OperatorEvent)
+
+public:
+    // Action keys (language-neutral; the record's vocabulary).
+    static constexpr const char* kPreflightConfirmed = "preflight-confirmed";
+    static constexpr const char* kStart = "start";
+    static constexpr const char* kPause = "pause";
+    static constexpr const char* kSingleStep = "single-step";
+    static constexpr const char* kResume = "resume";
+    static constexpr const char* kHold = "hold";
+    static constexpr const char* kStop = "stop";
+    static constexpr const char* kApprove = "approve-update";
+    static constexpr const char* kReject = "reject-update";
+    static constexpr const char* kBounds = "bounds";
+    static constexpr const char* kLock = "lock";
+    static constexpr const char* kThreshold = "fit-threshold";
+    static constexpr const char* kPolicy = "updating-policy";
+
+    int step = 0;
+    double time = 0.0;  ///< test time [s]
+    QString wallTime;   ///< ISO 8601 UTC, milliseconds
+    std::string action; ///< one of the keys above
+    std::string oldValue;
+    std::string newValue;
+
+    /// Stamp an event with the current wall time.
+    static OperatorEvent now(int step, double time, std::string action, std::string oldValue,
+                             std::string newValue);
+    /// The record's language-neutral text (format above).
+    std::string recordText() const;
+    /// The operator's language, for the event list (e.g. "update #3 approved: ...").
+    QString describe() const;
+};
+
+} // namespace hsmu::gui
+
+Q_DECLARE_METATYPE(hsmu::gui::OperatorEvent)

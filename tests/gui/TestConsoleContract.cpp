@@ -1,0 +1,225 @@
+// The console's written contract (docs/console.md), issue 16 items 8-10, 13, 14: clarity
+// before a start (no placeholder values, the UKF preset's parameters and policy shown at
+// load, the ground motion checked and plotted when chosen), long messages that do not widen
+// the window, the layout at 1280x720, the pace down to 1/100 x and by wall time per step,
+// the Test link button and a token that never reaches the settings file.
+
+#include "gui/app/AlarmList.h"
+#include "gui/app/ConsoleSettings.h"
+#include "gui/app/ControlBar.h"
+#include "gui/app/MainWindow.h"
+#include "gui/app/PendingUpdatesPanel.h"
+#include "gui/app/SetupPanel.h"
+#include "gui/app/TestController.h"
+#include "gui/plots/HistoryPlot.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QSignalSpy>
+#include <QTreeWidget>
+#include <QtTest>
+
+using namespace hsmu;
+using namespace hsmu::gui;
+
+class TestConsoleContract : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+        QVERIFY(m_records.isValid());
+        ConsoleSettings::setRecordDirectory(m_records.path());
+    }
+
+    // Item 8: no values before a load; the UKF preset's updating shown before a start.
+    void clarityBeforeTheStart() {
+        MainWindow window;
+        window.show();
+        auto* body = window.findChild<QWidget*>(QStringLiteral("setupBody"));
+        QVERIFY(body && body->isHidden()); // no "Scale 0.000", "dt 0.00001 s"
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        QVERIFY(!body->isHidden());
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller().updating().enabled, 5000);
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        for (QLabel* l : window.findChild<PendingUpdatesPanel*>()->findChildren<QLabel*>())
+            QVERIFY2(!l->text().contains(QStringLiteral("No online model updating")),
+                     qPrintable(l->text()));
+        QVERIFY(!window.controller().updating().parameters.empty());
+    }
+
+    // Item 8: a ground motion is checked and plotted when chosen, before any Apply.
+    void groundMotionCheckedAndPlottedWhenChosen() {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* file = setup->findChild<QLineEdit*>(QStringLiteral("groundMotionFile"));
+        auto* plot = window.findChild<HistoryPlot*>(QStringLiteral("groundMotionPlot"));
+        QVERIFY(file && plot);
+        QTemporaryDir dir;
+        // Two columns time [s], acceleration [g]: 0.5 s at 0.01 s, a 0.1 g ramp.
+        const QString good = dir.filePath(QStringLiteral("ramp.txt"));
+        {
+            QFile f(good);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+            for (int i = 0; i <= 50; ++i)
+                f.write(QStringLiteral("%1 %2\n").arg(i * 0.01).arg(0.002 * i).toUtf8());
+        }
+        file->setText(good);
+        file->setModified(true);
+        emit file->editingFinished();
+        QCOMPARE(setup->groundMotionStatus(), QString());
+        QCOMPARE(plot->graph(0)->dataCount(), 51);
+        QVERIFY(std::abs(plot->graph(0)->data()->at(50)->value - 0.1 * 9.80665) < 1e-9);
+        // A PNG: reported at once, clearly, naming the file; nothing else changes.
+        const QString png = dir.filePath(QStringLiteral("photo.png"));
+        {
+            QFile f(png);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray::fromHex("89504e470d0a1a0a0000000d49484452000000100000001008060000"));
+        }
+        file->setText(png);
+        file->setModified(true);
+        emit file->editingFinished();
+        const QString status = setup->groundMotionStatus();
+        QVERIFY2(status.contains(QStringLiteral("photo.png")) &&
+                     status.contains(QStringLiteral("not a text file of numbers")),
+                 qPrintable(status));
+        QCOMPARE(plot->graph(0)->dataCount(), 51); // the last good record stays
+        QCOMPARE(window.controller().state(), RunState::Ready);
+    }
+
+    // Items 9, 10: a 260-character path in an error does not widen the window; 1280x720.
+    void longMessagesDoNotWidenTheWindow() {
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        const QString path = QStringLiteral("/nonexistent/") + QString(250, QLatin1Char('x')) +
+                             QStringLiteral(".json");
+        QVERIFY(path.size() >= 260);
+        QString error;
+        QVERIFY(!window.loadConfiguration(path, &error));
+        QCoreApplication::processEvents();
+        QTest::qWait(50);
+        QCOMPARE(window.width(), 1280);
+        QVERIFY(window.minimumSizeHint().width() <= 1280);
+        auto* banner = window.findChild<QLabel*>(QStringLiteral("attentionText"));
+        QVERIFY(banner && banner->isVisible());
+        QVERIFY(banner->toolTip().contains(path)); // the full text is in the tool tip
+        // The alarm dock shows more than three rows at 1280x720.
+        auto* alarms = window.findChild<AlarmList*>();
+        QVERIFY(alarms->viewport()->height() >= 4 * alarms->sizeHintForRow(0));
+    }
+
+    // Item 13: pace from 1/100 x real time, and seconds of wall time per step.
+    void paceDownToOneHundredthAndWallTimePerStep() {
+        MainWindow window;
+        auto* bar = window.findChild<ControlBar*>();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        const double dt = window.controller().config().analysis.dt;
+        window.setSpeed(0.01);
+        QCOMPARE(bar->speed(), 0.01);
+        QCOMPARE(window.controller().effectiveSpeed(), 0.01);
+        bar->setWallTimePerStep(2.0);
+        QCOMPARE(bar->wallTimePerStep(), 2.0);
+        QCOMPARE(window.controller().effectiveSpeed(), dt / 2.0);
+        auto* wall = bar->findChild<QDoubleSpinBox*>(QStringLiteral("wallTimePerStep"));
+        QVERIFY(wall);
+        wall->setValue(0.5);
+        QCOMPARE(window.controller().effectiveSpeed(), dt / 0.5);
+        window.setSpeed(1.0);
+        QCOMPARE(bar->wallTimePerStep(), 0.0);
+        QCOMPARE(window.controller().effectiveSpeed(), 1.0);
+    }
+
+    // Item 13: Test link connects now (an absent controller is reported); the token field
+    // is never written to the settings.
+    void testLinkAndTokenNeverStored() {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* test = setup->findChild<QPushButton*>(QStringLiteral("testLink"));
+        QVERIFY(test);
+        test->click(); // built-in lab: prepared at once
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller().preflight().has_value(), 10000);
+        QCOMPARE(window.controller().state(), RunState::Ready);
+        auto* alarms = window.findChild<AlarmList*>();
+        QVERIFY(!alarms->findItems(QStringLiteral("link tested"), Qt::MatchContains,
+                                   AlarmList::Message)
+                     .isEmpty());
+        // A controller that is not there, with a token: Failed, said at once; no token stored.
+        const QString secret = QStringLiteral("s3cret-token-4242");
+        window.setControllerAddress(QStringLiteral("tcp://127.0.0.1:9"));
+        auto* token = setup->findChild<QLineEdit*>(QStringLiteral("controllerToken"));
+        QVERIFY(token && token->echoMode() == QLineEdit::Password);
+        token->setText(secret);
+        test->click();
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller().state(), RunState::Failed, 15000);
+        QSettings settings;
+        settings.sync();
+        for (const QString& key : settings.allKeys())
+            QVERIFY2(!settings.value(key).toString().contains(secret), qPrintable(key));
+        QFile file(settings.fileName());
+        if (file.open(QIODevice::ReadOnly))
+            QVERIFY(!file.readAll().contains(secret.toUtf8()));
+    }
+
+    // Items 4-5: proposals replace each other every step under approval; the panel shows the
+    // latest in place (the buttons stay under the mouse) with the count since the decision.
+    void proposalsCoalesceWithAVisibleCount() {
+        PendingUpdatesPanel panel;
+        panel.setEditable(true);
+        panel.show();
+        UpdatingSnapshot s;
+        s.enabled = true;
+        s.policy = ReporterPolicy::OnApproval;
+        auto proposal = [](int id, double k0) {
+            UpdateProposal p;
+            p.id = id;
+            p.step = id * 10;
+            p.time = id * 0.1;
+            p.element = "Element 2";
+            p.proposed = {{"k0", k0}};
+            p.current = {{"k0", 1.0}};
+            return p;
+        };
+        s.pending = {proposal(5, 1.10)};
+        panel.setSnapshot(s);
+        QPushButton* approve = panel.findChild<QPushButton*>(QStringLiteral("approve5"));
+        QVERIFY(approve);
+        s.pending = {proposal(6, 1.12)};
+        panel.setSnapshot(s);
+        s.pending = {proposal(7, 1.15)};
+        panel.setSnapshot(s);
+        QCOMPARE(panel.coalescedCount(QStringLiteral("Element 2")), 3);
+        QCOMPARE(panel.findChild<QPushButton*>(QStringLiteral("approve7")), approve); // in place
+        const QTreeWidgetItem* top = panel.tree()->topLevelItem(0);
+        QVERIFY2(top->text(0).startsWith(QStringLiteral("#7 Element 2")), qPrintable(top->text(0)));
+        QVERIFY2(top->text(0).contains(QStringLiteral("latest of 3 proposals")),
+                 qPrintable(top->text(0)));
+        QCOMPARE(top->child(0)->text(2), QStringLiteral("1.15")); // the proposed value shown
+        QSignalSpy approved(&panel, &PendingUpdatesPanel::approveRequested);
+        approve->click();
+        QCOMPARE(approved.count(), 1);
+        QCOMPARE(approved.at(0).at(0).toInt(), 7); // the proposal shown when clicked
+        QCOMPARE(panel.coalescedCount(QStringLiteral("Element 2")), 0);
+    }
+
+private:
+    QTemporaryDir m_records;
+};
+
+QTEST_MAIN(TestConsoleContract)
+#include "TestConsoleContract.moc"

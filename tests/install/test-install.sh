@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# test_install: `cmake --install` into a fresh prefix, then the installed programs run from
+# there: `hsmu run paper-condition-3`, `hsmu-controller --config paper-condition-3` (a preset
+# name, found under PREFIX/share/hsmu/presets). With dpkg-deb, the .deb made by
+# `cpack -G DEB` is unpacked into a fresh root and its hsmu runs the same test.
+# usage: test-install.sh BUILD_DIR WORK_DIR
+set -euo pipefail
+build="$1"
+work="$2"
+rm -rf "$work"
+mkdir -p "$work/home"
+export HOME="$work/home" XDG_CONFIG_HOME="$work/home/.config" XDG_DATA_HOME="$work/home/.local/share"
+export QT_QPA_PLATFORM=offscreen
+
+check_tree() { # PREFIX
+    for f in bin/hsmu bin/hsmu-controller share/hsmu/presets/paper-condition-3.json \
+             share/hsmu/translations/hsmu_es.qm share/hsmu/translations/hsmu_zh_CN.qm \
+             share/applications/hsmu.desktop share/icons/hicolor/scalable/apps/hsmu.svg \
+             share/doc/hsmu/console.md; do
+        [ -e "$1/$f" ] || { echo "FAIL: $1/$f is not installed"; exit 1; }
+    done
+}
+
+run_test() { # PREFIX
+    (cd "$work" && "$1/bin/hsmu" run paper-condition-3 --out "$work/out-$(basename "$(dirname "$1")")" > "$work/run.log" 2>&1) ||
+        { cat "$work/run.log"; echo "FAIL: $1/bin/hsmu run paper-condition-3"; exit 1; }
+    echo "ok: $1/bin/hsmu run paper-condition-3: $(tail -1 "$work/run.log")"
+}
+
+prefix="$work/prefix"
+cmake --install "$build" --prefix "$prefix" > "$work/install.log"
+check_tree "$prefix"
+if command -v desktop-file-validate > /dev/null; then
+    desktop-file-validate "$prefix/share/applications/hsmu.desktop"
+fi
+run_test "$prefix"
+
+# The controller takes a preset name (resolved next to the installed program).
+"$prefix/bin/hsmu-controller" --config paper-condition-3 --port 0 --quiet \
+    > "$work/controller.out" 2> "$work/controller.err" &
+pid=$!
+for _ in $(seq 1 100); do
+    grep -q listening "$work/controller.out" 2> /dev/null && break
+    kill -0 "$pid" 2> /dev/null || break
+    sleep 0.1
+done
+if ! grep -q listening "$work/controller.out"; then
+    cat "$work/controller.err"; kill "$pid" 2> /dev/null || true
+    echo "FAIL: hsmu-controller --config paper-condition-3 did not start"; exit 1
+fi
+kill "$pid"
+wait "$pid" 2> /dev/null || true
+echo "ok: hsmu-controller --config paper-condition-3: $(head -1 "$work/controller.out")"
+
+if command -v dpkg-deb > /dev/null && command -v cpack > /dev/null; then
+    (cd "$build" && cpack -G DEB -B "$work/package" > "$work/cpack.log" 2>&1) ||
+        { cat "$work/cpack.log"; echo "FAIL: cpack -G DEB"; exit 1; }
+    deb=$(ls "$work"/package/hsmu_*.deb)
+    dpkg-deb --info "$deb" | grep -E "Package|Version|Depends"
+    dpkg-deb -x "$deb" "$work/root"
+    check_tree "$work/root/usr"
+    run_test "$work/root/usr"
+fi
+echo "PASS"
