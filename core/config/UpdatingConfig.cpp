@@ -4,6 +4,7 @@
 #include "core/hysteresis/BoucWen.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/NelderMeadIdentifier.h"
+#include "core/updating/RobustUkfIdentifier.h"
 #include "core/updating/UkfIdentifier.h"
 
 namespace hsmu {
@@ -58,6 +59,10 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     if (u.method == "ukf" && sp->material.law != "boucWen")
         c.fail("method", "the UKF identifies a boucWen model; the specimen's model is '" +
                              sp->material.law + "' (use nelderMead)");
+    if (auto it = sp->material.params.find("uRef"); it != sp->material.params.end())
+        u.modelURef = it->second;
+    if (auto it = sp->material.params.find("fRef"); it != sp->material.params.end())
+        u.modelFRef = it->second;
     if (c.has("bounds")) {
         const JsonCursor b = c.child("bounds");
         b.requireObject();
@@ -71,7 +76,11 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     }
     if (c.has("ukf")) {
         const JsonCursor k = c.child("ukf");
-        k.allowOnly({"a", "b", "kappa", "forceNoise", "parameterNoise", "initialStdFraction"});
+        k.allowOnly({"formulation", "a", "b", "kappa", "forceNoise", "parameterNoise",
+                     "initialStdFraction"});
+        u.ukfFormulation = k.string("formulation", u.ukfFormulation);
+        if (u.ukfFormulation != "robust" && u.ukfFormulation != "paper")
+            k.fail("formulation", "expected 'robust' or 'paper'");
         u.ukfA = k.number("a", u.ukfA);
         u.ukfB = k.number("b", u.ukfB);
         if (k.has("kappa"))
@@ -174,6 +183,9 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
             const auto* bw = dynamic_cast<const BoucWen*>(&model);
             if (!bw)
                 throw ConfigError(where + ": the UKF needs a boucWen specimen model");
+            if (u.ukfFormulation == "robust")
+                return std::make_unique<RobustUkfIdentifier>(bw->parameters(), u.modelURef,
+                                                             u.modelFRef, u.bounds);
             BoucWenUkfSettings s;
             s.ukf.a = u.ukfA;
             s.ukf.b = u.ukfB;

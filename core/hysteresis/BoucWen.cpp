@@ -209,6 +209,22 @@ bool BoucWen::setParameter(const std::string& name, double value) {
 int BoucWen::setParameterValues(std::span<const int> indices, std::span<const double> values,
                                 bool allOrNothing) {
     BoucWenParameters p = m_p;
+    if (allOrNothing) { // judged together: a vector may cross an inadmissible intermediate
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            const int i = indices[k];
+            if (i < 0 || static_cast<std::size_t>(i) >= kFields.size())
+                return static_cast<int>(k);
+            p.*(kFields[static_cast<std::size_t>(i)].second) = values[k];
+        }
+        if (!admissible(p)) {
+            for (std::size_t k = 0; k < indices.size(); ++k)
+                if (!std::isfinite(values[k]))
+                    return static_cast<int>(k);
+            return indices.empty() ? -1 : 0;
+        }
+        setParameters(p);
+        return -1;
+    }
     bool changed = false;
     int firstRefused = -1;
     for (std::size_t k = 0; k < indices.size(); ++k) {

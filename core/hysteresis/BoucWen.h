@@ -147,6 +147,10 @@ public:
     bool setParameter(const std::string& name, double value) override;
     /// As the base class says, deciding each value on a copy of the parameters (the same
     /// admissible() test setParameter makes) and setting them all with one setParameters().
+    /// With allOrNothing the values are judged together, as one parameter set: a vector that
+    /// is admissible is applied even if setting its values one by one would pass through an
+    /// inadmissible set (beta and gamma changing sign together); a refused set returns the
+    /// position of its first non-finite value, or 0.
     int setParameterValues(std::span<const int> indices, std::span<const double> values,
                            bool allOrNothing) override;
 

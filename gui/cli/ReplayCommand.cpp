@@ -46,7 +46,7 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
         ReplayCommand::tr("Units of the imported columns time,deformation,force, e.g. s,mm,kN."),
         QStringLiteral("t,d,f"));
     const QCommandLineOption methodOpt(QStringLiteral("method"),
-                                       ReplayCommand::tr("ukf or nelder-mead."),
+                                       ReplayCommand::tr("ukf, nelder-mead or calibration (only the whole-history fit)."),
                                        QStringLiteral("method"));
     const QCommandLineOption configOpt(
         QStringLiteral("config"),
@@ -137,6 +137,32 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
         out << ReplayCommand::tr("  estimator warnings: %1 (see summary.json)")
                    .arg(r.estimatorWarnings)
             << Qt::endl;
+    if (r.calibration && r.calibration->ok) {
+        const CalibrationResult& c = *r.calibration;
+        out << ReplayCommand::tr("  calibration over the whole history (%1 starts, %2 s): "
+                                 "NRMSE %3 %")
+                   .arg(c.startsTried)
+                   .arg(QString::number(c.computeSeconds, 'f', 2))
+                   .arg(QString::number(100.0 * c.nrmse, 'f', 2))
+            << Qt::endl;
+        for (std::size_t i = 0; i < c.names.size(); ++i) {
+            const auto k = Eigen::Index(i);
+            const double sd = c.standardDeviation[k];
+            out << QStringLiteral("    %1 %2 %3")
+                       .arg(QString::fromStdString(c.names[i]), -10)
+                       .arg(num(c.estimate[k]), 12)
+                       .arg(c.onBound[i] ? ReplayCommand::tr("on its bound")
+                                         : QStringLiteral("+- %1").arg(num(1.96 * sd)))
+                << Qt::endl;
+        }
+        for (const char* scale : {"uRef", "fRef"})
+            if (auto it = c.parameters.find(scale); it != c.parameters.end())
+                out << QStringLiteral("    %1 %2\n").arg(QString::fromLatin1(scale), -10)
+                           .arg(num(it->second), 12);
+    }
+    if (!r.verdict.empty())
+        out << ReplayCommand::tr("  verdict: %1").arg(QString::fromStdString(r.verdict))
+            << Qt::endl;
     out << ReplayCommand::tr("  outputs: %1").arg(QDir::toNativeSeparators(dir)) << Qt::endl;
 }
 
@@ -166,7 +192,9 @@ int ReplayCommand::exec(const QStringList& arguments) {
             settings = identificationSettingsFrom(cfg, o.specimen.toStdString());
             history = historyFromRecord(d, settings.specimen, o.record.toStdString());
         }
-        settings = withOverrides(settings, o.config, o.method);
+        const bool calibrationOnly = o.method == QLatin1String("calibration");
+        settings = withOverrides(settings, o.config, calibrationOnly ? QString() : o.method);
+        settings.online = !calibrationOnly;
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
