@@ -75,7 +75,8 @@ struct AnalysisSpec {
     bool allowUnstable = false;
 };
 
-/// Online model updating (METHOD.md sections 2-5); absent or enabled = false: no updating.
+/// Online model updating (docs/method.md, Online model updating to The paper's UKF); absent or
+/// enabled = false: no updating.
 struct UpdatingSpec {
     bool enabled = false;
     std::string specimen;            ///< the experimental element identified

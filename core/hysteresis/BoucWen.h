@@ -1,6 +1,6 @@
 #pragma once
-// Bouc-Wen hysteresis with Baber-Noori degradation (METHOD.md section 4, paper Eqs 1-6),
-// in the convention of OpenSees `uniaxialMaterial BoucWen`:
+// Bouc-Wen hysteresis with Baber-Noori degradation (docs/method.md, The Bouc-Wen law with
+// degradation; paper Eqs 1-6), in the convention of OpenSees `uniaxialMaterial BoucWen`:
 //
 //   F     = alpha k0 x + (1 - alpha) k0 z                                   (Eq. 1)
 //   dz/dx = [ A - |z|^n (beta sgn(dx z) + gamma) nu ] / eta                 (Eq. 2)

@@ -1,7 +1,7 @@
 #pragma once
-// BoucWenUkf: joint state-parameter estimation of one Bouc-Wen element by the UKF (METHOD.md
-// section 5, paper Eqs 7-15), driven each step by the specimen's measured deformation and
-// force.
+// BoucWenUkf: joint state-parameter estimation of one Bouc-Wen element by the UKF
+// (docs/method.md, The paper's UKF; paper Eqs 7-15), driven each step by the specimen's
+// measured deformation and force.
 //
 // State (paper Eq. 8, indices BoucWenUkfIndex): x = [z, e, k0, alpha, beta, gamma, n,
 // deltaNu, deltaEta], in the law's normalized units: deformation x = u / uRef, force

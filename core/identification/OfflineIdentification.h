@@ -3,8 +3,8 @@
 // measured history (a run record or an imported CSV; SpecimenHistory.h), with the recorded
 // or overridden settings (IdentificationSettings.h). docs/cli.md, `hsmu replay --identify`.
 //
-// Each sample goes through the same ModelUpdater as the online run (METHOD.md section 3:
-// auxiliary model <- measured deformation, identifier <- (deformation, force), inspector
+// Each sample goes through the same ModelUpdater as the online run (docs/method.md, The four
+// modules: auxiliary model <- measured deformation, identifier <- (deformation, force), inspector
 // <- auxiliary vs measured force), the specimen's measurement being played back instead of
 // measured. So with the recorded settings the parameter history equals the online one (the
 // UKF is deterministic: equal to the last bit on the same machine and build), and the

@@ -1,7 +1,7 @@
 #pragma once
 // Identifier: parameter identification of one specimen's law from its measured response
-// (METHOD.md sections 3 and 5). Implementations: UkfIdentifier (every step) and
-// NelderMeadIdentifier (over the stored history, when the Inspector asks).
+// (docs/method.md, The four modules and The paper's UKF). Implementations: UkfIdentifier (every
+// step) and NelderMeadIdentifier (over the stored history, when the Inspector asks).
 // Values are in the law's own units (normalized for Bouc-Wen with uRef/fRef).
 
 #include "core/updating/ParameterSet.h"
