@@ -158,7 +158,7 @@ BoucWenParameters RobustUkfIdentifier::fromCalibration(const CalibrationResult& 
     return p;
 }
 
-IdentificationStatus RobustUkfIdentifier::anchor(bool diverged) {
+IdentificationStatus RobustUkfIdentifier::anchor(bool diverged, bool global) {
     IdentificationStatus st;
     const HistoryScales scales = deriveHistoryScales(m_u, m_f);
     CalibrationRequest request;
@@ -170,6 +170,14 @@ IdentificationStatus RobustUkfIdentifier::anchor(bool diverged) {
         return st;
     }
     CalibrationSpec spec = defaultCalibrationSpec(request, scales);
+    if (m_ukf && !global) { // a local refit: from the anchor (and the estimate below) only
+        std::vector<double> s;
+        for (const auto& q : spec.fitted)
+            for (BoucWenUkfIndex i : kParams)
+                if (q.name == boucWenUkfIndexName(i))
+                    s.push_back(field(m_anchor, i));
+        spec.starts.assign(1, s);
+    }
     if (m_ukf) { // the current estimate is one more start
         const BoucWenParameters now = m_ukf->estimate();
         std::vector<double> s;
@@ -277,7 +285,7 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         const auto [lo, hi] = std::minmax_element(m_u.begin(), m_u.end());
         if (int(turningPoints(m_u, 0.02 * (*hi - *lo)).size()) < m_settings.warmUpReversals)
             return st; // warm-up: nothing to identify yet
-        st = anchor(false);
+        st = anchor(false, true);
         publish();
         return st;
     }
@@ -297,7 +305,7 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         !finite || windowRms > m_settings.divergenceRatio * std::max(m_anchorRms, 1e-2);
     if (diverging) {
         ++m_divergences;
-        IdentificationStatus again = anchor(true);
+        IdentificationStatus again = anchor(true, false);
         m_recovering = m_settings.divergenceWindow;
         publish();
         again.ok = false;
@@ -307,8 +315,8 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
                         " steps, anchor " + fixed(m_anchorRms, 3) + "): " + again.message;
         return again;
     }
-    bool grown = double(m_u.size()) >= m_settings.anchorGrowth * double(m_anchorSize) ||
-                 m_maxAmplitude >= m_settings.amplitudeGrowth * m_anchorAmplitude;
+    const bool doubled = double(m_u.size()) >= m_settings.anchorGrowth * double(m_anchorSize);
+    bool grown = doubled || m_maxAmplitude >= m_settings.amplitudeGrowth * m_anchorAmplitude;
     std::string drift;
     bool verified = false;
     if (!grown && m_u.size() >= m_nextCheck) {
@@ -320,7 +328,7 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         const bool okU = replayState(s.estimate, zs, nu);
         const bool okA = replayState(m_anchor, za, na);
         if (okA && na > m_settings.staleRatio * m_anchorNrmse &&
-            double(m_u.size()) >= 1.1 * double(m_anchorSize)) {
+            double(m_u.size()) >= 1.25 * double(m_anchorSize)) {
             grown = true; // the anchor no longer fits what was measured since: refit
         } else if (okA && (!okU || nu > m_settings.driftRatio * na)) {
             m_ukf->restart(m_anchor, za, m_u.back(), m_anchorSd);
@@ -338,7 +346,7 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         }
     }
     if (grown) {
-        st = anchor(false);
+        st = anchor(false, doubled); // multi-start when the history doubled, else local
         publish();
         st.reportable = m_recovering == 0;
         return st;

@@ -18,8 +18,9 @@
 //     the sensor's noise, bounds what the filter can explain).
 //  3. Track. The UKF runs every step (unscented transform a = 1, kappa = 0, b = 2: positive
 //     weights), sigma points and means kept admissible (BoucWenUkf.h).
-//  4. Re-anchor when the history has grown by anchorGrowth since the last anchor, or the
-//     deformation amplitude by amplitudeGrowth (new cycles the anchor has not seen).
+//  4. Re-anchor when the history has grown by anchorGrowth since the last anchor (with the
+//     calibration's multi-start), or the deformation amplitude by amplitudeGrowth (new
+//     cycles the anchor has not seen; a local refit from the anchor and the estimate).
 //  5. Divergence. The a-priori force error (UKF prediction - measured) / fRef, RMS over the
 //     last divergenceWindow steps, above divergenceRatio times the anchor's RMS error (at
 //     least 1 % of fRef), a non-finite estimate or a rejected step: the step is rejected
@@ -87,7 +88,9 @@ public:
     double anchorNrmse() const { return m_anchorNrmse; }
 
 private:
-    IdentificationStatus anchor(bool diverged);
+    /// global: the calibration's multi-start (first anchor, history doubled); else a local
+    /// refit from the anchor and the current estimate.
+    IdentificationStatus anchor(bool diverged, bool global);
     /// The law's (z, e) after replaying the history with p; false if the law fails.
     bool replayState(const BoucWenParameters& p, BoucWenState& state, double& nrmse) const;
     void publish();
