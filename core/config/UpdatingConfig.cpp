@@ -36,6 +36,9 @@ std::vector<std::string> defaultTargetParameters(const std::string& law)
 {
     if (law == "boucWen")
         return {"k0", "alpha", "n", "beta", "gamma", "deltaNu", "deltaEta"};
+    if (law == "boucWenPinching")
+        return {"k0",    "alpha", "n", "beta", "gamma", "deltaNu",  "deltaEta",
+                "zetaS", "p",     "q", "psi",  "deltaPsi", "lambda"};
     if (law == "bilinear")
         return {"k0", "fy", "b"};
     return {"k"};
@@ -111,7 +114,10 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     // No fracture is judged before the specimen carried a tenth of its reference force.
     {
         const auto& mp = sp->material.params;
-        const char* key = sp->material.law == "boucWen" ? "fRef" : (sp->material.law == "bilinear" ? "fy" : "");
+        const std::string& law = sp->material.law;
+        const char* key = law == "boucWen" || law == "boucWenPinching"
+                              ? "fRef"
+                              : (law == "bilinear" ? "fy" : "");
         if (*key)
             u.inspector.minimumForce = 0.1 * (mp.count(key) ? mp.at(key) : 1.0);
     }

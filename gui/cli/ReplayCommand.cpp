@@ -24,7 +24,7 @@ int fail(const QString& message) {
 }
 
 struct ReplayOptions {
-    QString record, import, units, method, config, specimen, outDir;
+    QString record, import, units, columns, method, config, specimen, outDir;
 };
 
 std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
@@ -39,11 +39,20 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
                                          ReplayCommand::tr("Re-run the identification headless."));
     const QCommandLineOption importOpt(
         QStringLiteral("import"),
-        ReplayCommand::tr("Measured data: CSV of time, deformation, force with units."),
+        ReplayCommand::tr("Measured data: CSV or text of time (or a sample index), deformation, "
+                          "force with units."),
         QStringLiteral("csv"));
     const QCommandLineOption unitsOpt(
         QStringLiteral("units"),
-        ReplayCommand::tr("Units of the imported columns time,deformation,force, e.g. s,mm,kN."),
+        ReplayCommand::tr("Units of the imported columns time,deformation,force, e.g. s,mm,kN "
+                          "(time: s, ms or step; deformation: m, cm, mm, in, ft, rad, mrad, "
+                          "deg; force: N, kN, MN, lbf, kip, kgf, tonf, g or a moment such as "
+                          "kN*m, kip*in)."),
+        QStringLiteral("t,d,f"));
+    const QCommandLineOption columnsOpt(
+        QStringLiteral("columns"),
+        ReplayCommand::tr("Positions (from 1) of the imported time, deformation and force "
+                          "columns, e.g. 1,2,3; other columns are ignored."),
         QStringLiteral("t,d,f"));
     const QCommandLineOption methodOpt(QStringLiteral("method"),
                                        ReplayCommand::tr("ukf, nelder-mead or calibration (only the whole-history fit)."),
@@ -57,7 +66,8 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
                                          QStringLiteral("name"));
     const QCommandLineOption outOpt(QStringLiteral("out"), ReplayCommand::tr("Output directory."),
                                     QStringLiteral("dir"));
-    p.addOptions({identifyOpt, importOpt, unitsOpt, methodOpt, configOpt, specimenOpt, outOpt});
+    p.addOptions(
+        {identifyOpt, importOpt, unitsOpt, columnsOpt, methodOpt, configOpt, specimenOpt, outOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed;
     const QStringList pos = p.positionalArguments();
@@ -72,6 +82,9 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
     o.units = p.value(unitsOpt);
     if (!o.units.isEmpty() && o.import.isEmpty())
         return ReplayCommand::tr("--units applies to --import only (a record has its units)");
+    o.columns = p.value(columnsOpt);
+    if (!o.columns.isEmpty() && o.import.isEmpty())
+        return ReplayCommand::tr("--columns applies to --import only");
     o.method = p.value(methodOpt);
     o.config = p.value(configOpt);
     o.specimen = p.value(specimenOpt);
@@ -178,10 +191,12 @@ int ReplayCommand::exec(const QStringList& arguments) {
     std::optional<RecordReader> reader;
     try {
         if (!o.import.isEmpty()) {
-            std::optional<MeasuredDataUnits> units;
+            MeasuredDataOptions options;
             if (!o.units.isEmpty())
-                units = parseMeasuredDataUnits(o.units.toStdString());
-            history = readMeasuredDataCsv(o.import.toStdString(), units);
+                options.units = parseMeasuredDataUnits(o.units.toStdString());
+            if (!o.columns.isEmpty())
+                options.columns = parseMeasuredDataColumns(o.columns.toStdString());
+            history = readMeasuredDataCsv(o.import.toStdString(), options);
             settings = defaultIdentificationSettings();
             settings.dt = history.meanStep() > 0.0 ? history.meanStep() : settings.dt;
         } else {
