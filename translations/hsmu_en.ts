@@ -373,10 +373,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Re-run the identification headless.</translation>
     </message>
     <message>
-        <source>ukf or nelder-mead.</source>
-        <translation>ukf or nelder-mead.</translation>
-    </message>
-    <message>
         <source>JSON with "model" and/or "updating" settings to override.</source>
         <translation>JSON with "model" and/or "updating" settings to override.</translation>
     </message>
@@ -467,6 +463,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--columns applies to --import only</source>
         <translation>--columns applies to --import only</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
+        <translation>ukf, nelder-mead or calibration (only the whole-history fit).</translation>
+    </message>
+    <message>
+        <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
+        <translation>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</translation>
+    </message>
+    <message>
+        <source>on its bound</source>
+        <translation>on its bound</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  verdict: %1</translation>
     </message>
 </context>
 <context>

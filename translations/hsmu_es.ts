@@ -373,10 +373,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Repite la identificación sin interfaz gráfica.</translation>
     </message>
     <message>
-        <source>ukf or nelder-mead.</source>
-        <translation>ukf o nelder-mead.</translation>
-    </message>
-    <message>
         <source>JSON with &quot;model&quot; and/or &quot;updating&quot; settings to override.</source>
         <translation>JSON con los ajustes &quot;model&quot; y/o &quot;updating&quot; que se sobrescriben.</translation>
     </message>
@@ -467,6 +463,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--columns applies to --import only</source>
         <translation>--columns solo se aplica a --import</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
+        <translation>ukf, nelder-mead o calibration (solo el ajuste de toda la historia).</translation>
+    </message>
+    <message>
+        <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
+        <translation>  calibración sobre toda la historia (%1 puntos de partida, %2 s): NRMSE %3 %</translation>
+    </message>
+    <message>
+        <source>on its bound</source>
+        <translation>en su límite</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  veredicto: %1</translation>
     </message>
 </context>
 <context>

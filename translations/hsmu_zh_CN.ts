@@ -373,10 +373,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>以无界面方式重新运行参数识别。</translation>
     </message>
     <message>
-        <source>ukf or nelder-mead.</source>
-        <translation>ukf 或 nelder-mead。</translation>
-    </message>
-    <message>
         <source>JSON with &quot;model&quot; and/or &quot;updating&quot; settings to override.</source>
         <translation>用于覆盖 &quot;model&quot; 和/或 &quot;updating&quot; 设置的 JSON。</translation>
     </message>
@@ -467,6 +463,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--columns applies to --import only</source>
         <translation>--columns 仅适用于 --import</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
+        <translation>ukf、nelder-mead 或 calibration（仅对整个历程拟合）。</translation>
+    </message>
+    <message>
+        <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
+        <translation>  整个历程上的标定（%1 个初始点，%2 s）：NRMSE %3 %</translation>
+    </message>
+    <message>
+        <source>on its bound</source>
+        <translation>位于边界</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  结论：%1</translation>
     </message>
 </context>
 <context>

@@ -212,15 +212,25 @@ int BoucWen::setParameterValues(std::span<const int> indices, std::span<const do
     if (allOrNothing) { // judged together: a vector may cross an inadmissible intermediate
         for (std::size_t k = 0; k < indices.size(); ++k) {
             const int i = indices[k];
-            if (i < 0 || static_cast<std::size_t>(i) >= kFields.size())
+            if (i < 0 || static_cast<std::size_t>(i) >= kFields.size()) {
+                setParameters(m_p);
                 return static_cast<int>(k);
+            }
             p.*(kFields[static_cast<std::size_t>(i)].second) = values[k];
         }
         if (!admissible(p)) {
-            for (std::size_t k = 0; k < indices.size(); ++k)
-                if (!std::isfinite(values[k]))
-                    return static_cast<int>(k);
-            return indices.empty() ? -1 : 0;
+            // Refused: name the first value that is inadmissible on its own, else the first.
+            int refused = 0;
+            for (std::size_t k = 0; k < indices.size(); ++k) {
+                BoucWenParameters alone = m_p;
+                alone.*(kFields[static_cast<std::size_t>(indices[k])].second) = values[k];
+                if (!admissible(alone)) {
+                    refused = static_cast<int>(k);
+                    break;
+                }
+            }
+            setParameters(m_p); // as a refused by-name set: force re-evaluated, trial dropped
+            return refused;
         }
         setParameters(p);
         return -1;

@@ -150,7 +150,7 @@ public:
     /// With allOrNothing the values are judged together, as one parameter set: a vector that
     /// is admissible is applied even if setting its values one by one would pass through an
     /// inadmissible set (beta and gamma changing sign together); a refused set returns the
-    /// position of its first non-finite value, or 0.
+    /// position of the first value that is inadmissible on its own, or 0.
     int setParameterValues(std::span<const int> indices, std::span<const double> values,
                            bool allOrNothing) override;
 

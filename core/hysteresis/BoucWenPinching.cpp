@@ -291,6 +291,32 @@ bool BoucWenPinching::setParameter(const std::string& name, double value) {
 int BoucWenPinching::setParameterValues(std::span<const int> indices,
                                         std::span<const double> values, bool allOrNothing) {
     BoucWenPinchingParameters p = m_p;
+    if (allOrNothing) { // judged together, as BoucWen does (BoucWen.h)
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            double* field = fieldAt(p, indices[k]);
+            if (!field) {
+                setParameters(m_p);
+                return static_cast<int>(k);
+            }
+            *field = values[k];
+        }
+        if (!admissible(p)) {
+            // Refused: name the first value that is inadmissible on its own, else the first.
+            int refused = 0;
+            for (std::size_t k = 0; k < indices.size(); ++k) {
+                BoucWenPinchingParameters alone = m_p;
+                *fieldAt(alone, indices[k]) = values[k];
+                if (!admissible(alone)) {
+                    refused = static_cast<int>(k);
+                    break;
+                }
+            }
+            setParameters(m_p); // as a refused by-name set: force re-evaluated, trial dropped
+            return refused;
+        }
+        setParameters(p);
+        return -1;
+    }
     bool changed = false;
     int firstRefused = -1;
     for (std::size_t k = 0; k < indices.size(); ++k) {

@@ -90,6 +90,7 @@ public:
     std::vector<std::string> parameterNames() const override;
     std::optional<double> parameter(const std::string& name) const override;
     bool setParameter(const std::string& name, double value) override;
+    /// As BoucWen's: with allOrNothing the values are judged together as one set.
     int setParameterValues(std::span<const int> indices, std::span<const double> values,
                            bool allOrNothing) override;
 

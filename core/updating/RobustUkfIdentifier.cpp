@@ -75,6 +75,7 @@ RobustUkfIdentifier::RobustUkfIdentifier(const BoucWenParameters& initial,
     m_published = m_initial;
     m_bounds = bounds;
     m_window.assign(std::size_t(std::max(settings.divergenceWindow, 1)), 0.0);
+    m_anchorWindow = m_window;
     publish();
 }
 
@@ -222,7 +223,7 @@ IdentificationStatus RobustUkfIdentifier::anchor(bool diverged, bool global) {
                                            ? cal.standardDeviation[Eigen::Index(q)]
                                            : std::nan("");
                 const double floor = 1e-2 * spec.fitted[q].typical;
-                const double cap = 0.01 * (spec.fitted[q].upper - spec.fitted[q].lower);
+                const double cap = 0.1 * spec.fitted[q].typical;
                 sd[at] = std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
             }
     BoucWenUkfSettings us;
@@ -248,6 +249,10 @@ IdentificationStatus RobustUkfIdentifier::anchor(bool diverged, bool global) {
     m_ukf->restart(best, state, m_u.back(), sd);
     for (BoucWenUkfIndex i : kParams)
         m_bounds[boucWenUkfIndexName(i)] = {box[std::size_t(i)].lower, box[std::size_t(i)].upper};
+    m_anchorLaw.emplace(best);
+    m_anchorLaw->setCommittedState(state, m_u.back());
+    std::fill(m_anchorWindow.begin(), m_anchorWindow.end(), 0.0);
+    m_anchorWindowSum = 0.0;
     m_anchor = best;
     m_published = best;
     m_anchorSd = sd;
@@ -257,6 +262,7 @@ IdentificationStatus RobustUkfIdentifier::anchor(bool diverged, bool global) {
     m_nextCheck = m_u.size() + std::max<std::size_t>(50, m_u.size() / 20);
     std::fill(m_window.begin(), m_window.end(), 0.0);
     m_windowSum = 0.0;
+    m_windowNext = 0;
     ++m_anchors;
     st.updated = true;
     st.refit = true;
@@ -293,16 +299,28 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
     m_predicted = s.predictedForce;
     const double e = (s.predictedForce - force) / m_anchor.fRef;
     const double e2 = std::isfinite(e) ? e * e : 1e300;
+    // The anchor's own prediction over the same steps: what the model family can do here.
+    double a2 = 0.0;
+    if (m_anchorLaw && m_anchorLaw->setTrialDeformation(deformation) == LawStatus::Ok) {
+        m_anchorLaw->commit();
+        const double a = (m_anchorLaw->committedForce() - force) / m_anchor.fRef;
+        a2 = a * a;
+    }
     m_windowSum += e2 - m_window[m_windowNext];
     m_window[m_windowNext] = e2;
+    m_anchorWindowSum += a2 - m_anchorWindow[m_windowNext];
+    m_anchorWindow[m_windowNext] = a2;
     m_windowNext = (m_windowNext + 1) % m_window.size();
     const double windowRms = std::sqrt(std::max(m_windowSum, 0.0) / double(m_window.size()));
+    const double anchorRms =
+        std::sqrt(std::max(m_anchorWindowSum, 0.0) / double(m_window.size()));
     bool finite = true;
     for (double v : {s.estimate.k0, s.estimate.alpha, s.estimate.beta, s.estimate.gamma,
                      s.estimate.n, s.estimate.deltaNu, s.estimate.deltaEta})
         finite = finite && std::isfinite(v);
     const bool diverging =
-        !finite || windowRms > m_settings.divergenceRatio * std::max(m_anchorRms, 1e-2);
+        !finite || windowRms > m_settings.divergenceRatio *
+                                   std::max({anchorRms, m_anchorRms, m_settings.divergenceFloor});
     if (diverging) {
         ++m_divergences;
         IdentificationStatus again = anchor(true, false);
@@ -312,7 +330,7 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         again.reportable = false;
         again.message = "UKF diverging (prediction error " + fixed(windowRms, 3) +
                         " of fRef over the last " + std::to_string(m_window.size()) +
-                        " steps, anchor " + fixed(m_anchorRms, 3) + "): " + again.message;
+                        " steps, the anchor's " + fixed(anchorRms, 3) + "): " + again.message;
         return again;
     }
     const bool doubled = double(m_u.size()) >= m_settings.anchorGrowth * double(m_anchorSize);

@@ -13,7 +13,7 @@
 //     at the first anchor (HistoryScales.h) and then published as the estimate's uRef / fRef
 //     so that the auxiliary model and the twins take them with the other parameters. The UKF
 //     restarts at the anchor: parameters, the law's (z, e) replayed over the history, P0 from
-//     the calibration's standard deviations (at least 1 % of each parameter's typical scale),
+//     the calibration's standard deviations (1 % to 10 % of each parameter's typical scale),
 //     R from the anchor's RMS error (noise levels scaled from the data: the model error, not
 //     the sensor's noise, bounds what the filter can explain).
 //  3. Track. The UKF runs every step (unscented transform a = 1, kappa = 0, b = 2: positive
@@ -22,8 +22,11 @@
 //     calibration's multi-start), or the deformation amplitude by amplitudeGrowth (new
 //     cycles the anchor has not seen; a local refit from the anchor and the estimate).
 //  5. Divergence. The a-priori force error (UKF prediction - measured) / fRef, RMS over the
-//     last divergenceWindow steps, above divergenceRatio times the anchor's RMS error (at
-//     least 1 % of fRef), a non-finite estimate or a rejected step: the step is rejected
+//     last divergenceWindow steps, above divergenceRatio times the larger of: the anchor
+//     model's own error over the same steps (stepped along beside the filter: what the model
+//     family can do there, so a specimen the law cannot follow is not a divergence), the
+//     anchor's RMS error over its history, and divergenceFloor; or a non-finite estimate:
+//     the step is rejected
 //     (ok false, a message saying why), the UKF restarts from the last anchor, and for the
 //     next divergenceWindow steps its estimates are not reportable (the Reporter passes
 //     nothing to the twins until it has recovered).
@@ -55,7 +58,8 @@ struct RobustUkfSettings {
     double anchorGrowth = 2.0;     ///< re-anchor when the history grew by this factor
     double amplitudeGrowth = 1.25; ///< ... or the deformation amplitude by this factor
     int divergenceWindow = 50;     ///< [steps]
-    double divergenceRatio = 4.0;  ///< window RMS error / anchor RMS error that diverges
+    double divergenceRatio = 4.0;  ///< window RMS error / the anchor's that diverges
+    double divergenceFloor = 0.02; ///< errors below this fraction of fRef never diverge
     double parameterNoise = 1e-5;  ///< random walk per step, fraction of the box width
     double driftRatio = 1.05;      ///< UKF estimate's history NRMSE / the anchor's: pull back
     double staleRatio = 1.1;       ///< anchor's history NRMSE / at its fit: refit
@@ -109,7 +113,10 @@ private:
     std::size_t m_anchorSize = 0;
     double m_anchorNrmse = std::numeric_limits<double>::quiet_NaN();
     double m_anchorRms = 0.0; ///< RMS force error of the anchor / fRef [-]
-    std::vector<double> m_window; ///< squared a-priori errors / fRef^2 (ring)
+    std::optional<BoucWen> m_anchorLaw;  ///< the anchor's model, stepped along the samples
+    std::vector<double> m_window;        ///< squared a-priori errors / fRef^2 (ring)
+    std::vector<double> m_anchorWindow;  ///< the anchor model's squared errors (same ring)
+    double m_anchorWindowSum = 0.0;
     std::size_t m_windowNext = 0;
     double m_windowSum = 0.0;
     int m_recovering = 0;
