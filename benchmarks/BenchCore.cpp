@@ -1,5 +1,6 @@
 // Core compute benchmarks (issue targets on the 2-core dev machine):
 //   Bouc-Wen trial + commit per step      <= 0.3 us
+//   pinching Bouc-Wen trial + commit       <= 0.4 us (issue 12)
 //   one HybridTest step, condition-3 frame <= 2 us
 //   the whole 31 s El Centro run, frame     <= 20 ms (compute only: no output observers)
 //   one step of the frame with online updating <= 8 us (issue 3)
@@ -8,6 +9,7 @@
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
+#include "core/hysteresis/BoucWenPinching.h"
 #include "core/test/HybridTest.h"
 
 #include <benchmark/benchmark.h>
@@ -40,6 +42,26 @@ void bmBoucWenStep(benchmark::State& state)
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(bmBoucWenStep);
+
+void bmBoucWenPinchingStep(benchmark::State& state)
+{
+    // bmBoucWenStep's law and history with pinching (Foliente's wood-joint order of values);
+    // pinching is active from the first dissipated energy on (every step but the first).
+    BoucWenPinchingParameters p;
+    BoucWenParameters& b = p.boucWen;
+    b.k0 = 1.0; b.alpha = 0.03; b.n = 2.0; b.beta = 2.5; b.gamma = 0.5;
+    b.deltaNu = 0.03; b.deltaEta = 0.03; b.uRef = 0.02; b.fRef = 20.0;
+    p.pinching = {0.8, 1.0, 0.1, 0.2, 0.01, 0.5}; // zetaS, p, q, psi, deltaPsi, lambda
+    BoucWenPinching law(p);
+    long i = 0;
+    for (auto _ : state) {
+        const double u = 0.04 * std::sin(2.0 * M_PI * double(i++) / 400.0);
+        benchmark::DoNotOptimize(law.setTrialDeformation(u));
+        law.commit();
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(bmBoucWenPinchingStep);
 
 /// The condition-3 frame; `updating` false: the issue-2 frame alone (no identification).
 TestConfig frameConfig(bool elCentro, bool updating = false)

@@ -261,6 +261,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 steps, %2 alarms; written:</source>
         <translation>%1 steps, %2 alarms; written:</translation>
     </message>
+    <message>
+        <source>Units of the CSV columns, e.g. length=in,force=kip,rotation=deg,moment=kip*in,time=ms (length: m, cm, mm, in, ft; force: N, kN, MN, lbf, kip, kgf, tonf; rotation: rad, mrad, deg; moment: a force unit times a length unit; time: s, ms). Default: kN, m, s, rad.</source>
+        <translation>Units of the CSV columns, e.g. length=in,force=kip,rotation=deg,moment=kip*in,time=ms (length: m, cm, mm, in, ft; force: N, kN, MN, lbf, kip, kgf, tonf; rotation: rad, mrad, deg; moment: a force unit times a length unit; time: s, ms). Default: kN, m, s, rad.</translation>
+    </message>
 </context>
 <context>
     <name>GroundMotionCheck</name>
@@ -494,18 +498,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Re-run the identification headless.</translation>
     </message>
     <message>
-        <source>Measured data: CSV of time, deformation, force with units.</source>
-        <translation>Measured data: CSV of time, deformation, force with units.</translation>
-    </message>
-    <message>
-        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</source>
-        <translation>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</translation>
-    </message>
-    <message>
-        <source>ukf or nelder-mead.</source>
-        <translation>ukf or nelder-mead.</translation>
-    </message>
-    <message>
         <source>JSON with "model" and/or "updating" settings to override.</source>
         <translation>JSON with "model" and/or "updating" settings to override.</translation>
     </message>
@@ -580,6 +572,38 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: cannot create the output directory</source>
         <translation>%1: cannot create the output directory</translation>
+    </message>
+    <message>
+        <source>Measured data: CSV or text of time (or a sample index), deformation, force with units.</source>
+        <translation>Measured data: CSV or text of time (or a sample index), deformation, force with units.</translation>
+    </message>
+    <message>
+        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN (time: s, ms or step; deformation: m, cm, mm, in, ft, rad, mrad, deg; force: N, kN, MN, lbf, kip, kgf, tonf, g or a moment such as kN*m, kip*in).</source>
+        <translation>Units of the imported columns time,deformation,force, e.g. s,mm,kN (time: s, ms or step; deformation: m, cm, mm, in, ft, rad, mrad, deg; force: N, kN, MN, lbf, kip, kgf, tonf, g or a moment such as kN*m, kip*in).</translation>
+    </message>
+    <message>
+        <source>Positions (from 1) of the imported time, deformation and force columns, e.g. 1,2,3; other columns are ignored.</source>
+        <translation>Positions (from 1) of the imported time, deformation and force columns, e.g. 1,2,3; other columns are ignored.</translation>
+    </message>
+    <message>
+        <source>--columns applies to --import only</source>
+        <translation>--columns applies to --import only</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
+        <translation>ukf, nelder-mead or calibration (only the whole-history fit).</translation>
+    </message>
+    <message>
+        <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
+        <translation>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</translation>
+    </message>
+    <message>
+        <source>on its bound</source>
+        <translation>on its bound</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  verdict: %1</translation>
     </message>
 </context>
 <context>

@@ -261,6 +261,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 steps, %2 alarms; written:</source>
         <translation>%1 pasos, %2 alarmas; escrito:</translation>
     </message>
+    <message>
+        <source>Units of the CSV columns, e.g. length=in,force=kip,rotation=deg,moment=kip*in,time=ms (length: m, cm, mm, in, ft; force: N, kN, MN, lbf, kip, kgf, tonf; rotation: rad, mrad, deg; moment: a force unit times a length unit; time: s, ms). Default: kN, m, s, rad.</source>
+        <translation>Unidades de las columnas CSV, p. ej. length=in,force=kip,rotation=deg,moment=kip*in,time=ms (longitud: m, cm, mm, in, ft; fuerza: N, kN, MN, lbf, kip, kgf, tonf; rotación: rad, mrad, deg; momento: una unidad de fuerza por una de longitud; tiempo: s, ms). Por defecto: kN, m, s, rad.</translation>
+    </message>
 </context>
 <context>
     <name>GroundMotionCheck</name>
@@ -494,18 +498,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Repite la identificación sin interfaz gráfica.</translation>
     </message>
     <message>
-        <source>Measured data: CSV of time, deformation, force with units.</source>
-        <translation>Datos medidos: CSV de tiempo, deformación y fuerza con unidades.</translation>
-    </message>
-    <message>
-        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</source>
-        <translation>Unidades de las columnas importadas tiempo,deformación,fuerza, p. ej. s,mm,kN.</translation>
-    </message>
-    <message>
-        <source>ukf or nelder-mead.</source>
-        <translation>ukf o nelder-mead.</translation>
-    </message>
-    <message>
         <source>JSON with &quot;model&quot; and/or &quot;updating&quot; settings to override.</source>
         <translation>JSON con los ajustes &quot;model&quot; y/o &quot;updating&quot; que se sobrescriben.</translation>
     </message>
@@ -580,6 +572,38 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: cannot create the output directory</source>
         <translation>%1: no se puede crear el directorio de salida</translation>
+    </message>
+    <message>
+        <source>Measured data: CSV or text of time (or a sample index), deformation, force with units.</source>
+        <translation>Datos medidos: CSV o texto de tiempo (o un índice de muestra), deformación y fuerza con unidades.</translation>
+    </message>
+    <message>
+        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN (time: s, ms or step; deformation: m, cm, mm, in, ft, rad, mrad, deg; force: N, kN, MN, lbf, kip, kgf, tonf, g or a moment such as kN*m, kip*in).</source>
+        <translation>Unidades de las columnas importadas tiempo,deformación,fuerza, p. ej. s,mm,kN (tiempo: s, ms o step; deformación: m, cm, mm, in, ft, rad, mrad, deg; fuerza: N, kN, MN, lbf, kip, kgf, tonf, g o un momento como kN*m, kip*in).</translation>
+    </message>
+    <message>
+        <source>Positions (from 1) of the imported time, deformation and force columns, e.g. 1,2,3; other columns are ignored.</source>
+        <translation>Posiciones (desde 1) de las columnas importadas de tiempo, deformación y fuerza, p. ej. 1,2,3; las demás columnas se ignoran.</translation>
+    </message>
+    <message>
+        <source>--columns applies to --import only</source>
+        <translation>--columns solo se aplica a --import</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
+        <translation>ukf, nelder-mead o calibration (solo el ajuste de toda la historia).</translation>
+    </message>
+    <message>
+        <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
+        <translation>  calibración sobre toda la historia (%1 puntos de partida, %2 s): NRMSE %3 %</translation>
+    </message>
+    <message>
+        <source>on its bound</source>
+        <translation>en su límite</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  veredicto: %1</translation>
     </message>
 </context>
 <context>

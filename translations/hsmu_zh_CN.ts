@@ -261,6 +261,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 steps, %2 alarms; written:</source>
         <translation>%1 步，%2 条报警；已写出：</translation>
     </message>
+    <message>
+        <source>Units of the CSV columns, e.g. length=in,force=kip,rotation=deg,moment=kip*in,time=ms (length: m, cm, mm, in, ft; force: N, kN, MN, lbf, kip, kgf, tonf; rotation: rad, mrad, deg; moment: a force unit times a length unit; time: s, ms). Default: kN, m, s, rad.</source>
+        <translation>CSV 各列的单位，例如 length=in,force=kip,rotation=deg,moment=kip*in,time=ms（长度：m、cm、mm、in、ft；力：N、kN、MN、lbf、kip、kgf、tonf；转角：rad、mrad、deg；弯矩：力单位乘以长度单位；时间：s、ms）。默认：kN、m、s、rad。</translation>
+    </message>
 </context>
 <context>
     <name>GroundMotionCheck</name>
@@ -494,18 +498,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>以无界面方式重新运行参数识别。</translation>
     </message>
     <message>
-        <source>Measured data: CSV of time, deformation, force with units.</source>
-        <translation>实测数据：包含时间、变形、力及其单位的 CSV。</translation>
-    </message>
-    <message>
-        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN.</source>
-        <translation>导入列（时间、变形、力）的单位，例如 s,mm,kN。</translation>
-    </message>
-    <message>
-        <source>ukf or nelder-mead.</source>
-        <translation>ukf 或 nelder-mead。</translation>
-    </message>
-    <message>
         <source>JSON with &quot;model&quot; and/or &quot;updating&quot; settings to override.</source>
         <translation>用于覆盖 &quot;model&quot; 和/或 &quot;updating&quot; 设置的 JSON。</translation>
     </message>
@@ -580,6 +572,38 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1: cannot create the output directory</source>
         <translation>%1：无法创建输出目录</translation>
+    </message>
+    <message>
+        <source>Measured data: CSV or text of time (or a sample index), deformation, force with units.</source>
+        <translation>测量数据：含单位的时间（或样本序号）、变形、力的 CSV 或文本文件。</translation>
+    </message>
+    <message>
+        <source>Units of the imported columns time,deformation,force, e.g. s,mm,kN (time: s, ms or step; deformation: m, cm, mm, in, ft, rad, mrad, deg; force: N, kN, MN, lbf, kip, kgf, tonf, g or a moment such as kN*m, kip*in).</source>
+        <translation>导入列 时间,变形,力 的单位，例如 s,mm,kN（时间：s、ms 或 step；变形：m、cm、mm、in、ft、rad、mrad、deg；力：N、kN、MN、lbf、kip、kgf、tonf、g，或弯矩如 kN*m、kip*in）。</translation>
+    </message>
+    <message>
+        <source>Positions (from 1) of the imported time, deformation and force columns, e.g. 1,2,3; other columns are ignored.</source>
+        <translation>导入的时间、变形、力列的位置（从 1 开始），例如 1,2,3；其他列被忽略。</translation>
+    </message>
+    <message>
+        <source>--columns applies to --import only</source>
+        <translation>--columns 仅适用于 --import</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
+        <translation>ukf、nelder-mead 或 calibration（仅对整个历程拟合）。</translation>
+    </message>
+    <message>
+        <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
+        <translation>  整个历程上的标定（%1 个初始点，%2 s）：NRMSE %3 %</translation>
+    </message>
+    <message>
+        <source>on its bound</source>
+        <translation>位于边界</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  结论：%1</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,6 @@
 #pragma once
-// PredictorCorrector: the actuator command generator of the lab's outer loop (METHOD.md
-// section 8), one call per tick of the controller's loop (1024 Hz by default).
+// PredictorCorrector: the actuator command generator of the lab's outer loop (docs/method.md,
+// The lab loop), one call per tick of the controller's loop (1024 Hz by default).
 //
 // A step lasts N ticks. After the previous step is committed the command is extrapolated
 // from the last three committed targets h0 (newest), h1, h2 by the quadratic through them

@@ -7,7 +7,8 @@
 //
 // Step indices count the specimen's committed steps over its life: the target for step
 // committedSteps + 1 is the next trial; re-sending the target of an uncommitted step, or of
-// the last committed one, is answered idempotently (METHOD.md section 8, docs/protocol.md).
+// the last committed one, is answered idempotently (docs/method.md, The lab loop;
+// docs/protocol.md).
 
 #include "comms/protocol/Protocol.h"
 

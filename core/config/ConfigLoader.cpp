@@ -1,5 +1,6 @@
 #include "core/config/ConfigLoader.h"
 #include "core/config/UpdatingConfig.h"
+#include "core/config/ConfigUnits.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
@@ -177,7 +178,10 @@ ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 
 TestConfig parseConfig(const nlohmann::json& document, const std::string& sourceName)
 {
-    const JsonCursor root(document, sourceName);
+    // Values in the console's units from here on (the "units" block, ConfigUnits.h); cfg.raw
+    // keeps the document as written.
+    const nlohmann::json converted = toConsoleUnits(document, sourceName);
+    const JsonCursor root(converted, sourceName);
     // "controller": the link fields here (LinkConfig); the rest is hsmu-controller's
     // (comms/controller/ControllerSettings.h).
     root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis",

@@ -75,14 +75,21 @@ struct AnalysisSpec {
     bool allowUnstable = false;
 };
 
-/// Online model updating (METHOD.md sections 2-5); absent or enabled = false: no updating.
+/// Online model updating (docs/method.md, Online model updating to The paper's UKF); absent or
+/// enabled = false: no updating.
 struct UpdatingSpec {
     bool enabled = false;
     std::string specimen;            ///< the experimental element identified
     std::string method = "ukf";      ///< "ukf" (Bouc-Wen) or "nelderMead" (Bouc-Wen, bilinear)
     ParameterBoundsMap bounds;       ///< per parameter; ukf default: Table III
     std::vector<std::string> parameters; ///< nelderMead: the fitted parameters
-    // UKF settings (defaults: the paper's a, b, kappa = 3 - L)
+    /// "robust" (the default: RobustUkfIdentifier, anchored by calibrations of the history)
+    /// or "paper" (the paper's UKF as published: UkfIdentifier with the settings below)
+    std::string ukfFormulation = "robust";
+    /// The specimen model's uRef / fRef when the configuration gives them (the robust UKF
+    /// derives missing ones from the data)
+    std::optional<double> modelURef, modelFRef;
+    // UKF settings of the paper's formulation (defaults: the paper's a, b, kappa = 3 - L)
     double ukfA = 1e-4, ukfB = 2.0;
     std::optional<double> ukfKappa;
     double forceNoise = 0.01;        ///< expected noise std of F / fRef

@@ -4,6 +4,7 @@
 #include "core/hysteresis/BoucWen.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/NelderMeadIdentifier.h"
+#include "core/updating/RobustUkfIdentifier.h"
 #include "core/updating/UkfIdentifier.h"
 
 namespace hsmu {
@@ -35,6 +36,9 @@ std::vector<std::string> defaultTargetParameters(const std::string& law)
 {
     if (law == "boucWen")
         return {"k0", "alpha", "n", "beta", "gamma", "deltaNu", "deltaEta"};
+    if (law == "boucWenPinching")
+        return {"k0",    "alpha", "n", "beta", "gamma", "deltaNu",  "deltaEta",
+                "zetaS", "p",     "q", "psi",  "deltaPsi", "lambda"};
     if (law == "bilinear")
         return {"k0", "fy", "b"};
     return {"k"};
@@ -58,6 +62,10 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     if (u.method == "ukf" && sp->material.law != "boucWen")
         c.fail("method", "the UKF identifies a boucWen model; the specimen's model is '" +
                              sp->material.law + "' (use nelderMead)");
+    if (auto it = sp->material.params.find("uRef"); it != sp->material.params.end())
+        u.modelURef = it->second;
+    if (auto it = sp->material.params.find("fRef"); it != sp->material.params.end())
+        u.modelFRef = it->second;
     if (c.has("bounds")) {
         const JsonCursor b = c.child("bounds");
         b.requireObject();
@@ -71,7 +79,11 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     }
     if (c.has("ukf")) {
         const JsonCursor k = c.child("ukf");
-        k.allowOnly({"a", "b", "kappa", "forceNoise", "parameterNoise", "initialStdFraction"});
+        k.allowOnly({"formulation", "a", "b", "kappa", "forceNoise", "parameterNoise",
+                     "initialStdFraction"});
+        u.ukfFormulation = k.string("formulation", u.ukfFormulation);
+        if (u.ukfFormulation != "robust" && u.ukfFormulation != "paper")
+            k.fail("formulation", "expected 'robust' or 'paper'");
         u.ukfA = k.number("a", u.ukfA);
         u.ukfB = k.number("b", u.ukfB);
         if (k.has("kappa"))
@@ -102,7 +114,10 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     // No fracture is judged before the specimen carried a tenth of its reference force.
     {
         const auto& mp = sp->material.params;
-        const char* key = sp->material.law == "boucWen" ? "fRef" : (sp->material.law == "bilinear" ? "fy" : "");
+        const std::string& law = sp->material.law;
+        const char* key = law == "boucWen" || law == "boucWenPinching"
+                              ? "fRef"
+                              : (law == "bilinear" ? "fy" : "");
         if (*key)
             u.inspector.minimumForce = 0.1 * (mp.count(key) ? mp.at(key) : 1.0);
     }
@@ -174,6 +189,9 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
             const auto* bw = dynamic_cast<const BoucWen*>(&model);
             if (!bw)
                 throw ConfigError(where + ": the UKF needs a boucWen specimen model");
+            if (u.ukfFormulation == "robust")
+                return std::make_unique<RobustUkfIdentifier>(bw->parameters(), u.modelURef,
+                                                             u.modelFRef, u.bounds);
             BoucWenUkfSettings s;
             s.ukf.a = u.ukfA;
             s.ukf.b = u.ukfB;

@@ -2,10 +2,11 @@
 // ExperimentalElement: an element whose force comes from an ExperimentalControl (a specimen).
 // Its generalized deformation q = sum c_k u_k (e.g. rotation u / L of a base spring under a
 // rigid column) is the *target* sent to the control; the measured force closes the equation
-// of motion (METHOD.md section 1). Safety limits are checked before anything is sent:
-// a target past them is never issued; a measurement past them (deformation beyond the limit
-// plus SafetyLimits::kMeasuredDeformationTolerance, force beyond the limit, or not finite)
-// fails the trial as a limit, so the test holds and nothing is committed or updated from it.
+// of motion (docs/method.md, Hybrid simulation). Safety limits are checked before anything
+// is sent: a target past them is never issued; a measurement past them (deformation beyond
+// the limit plus SafetyLimits::kMeasuredDeformationTolerance, force beyond the limit, or not
+// finite) fails the trial as a limit, so the test holds and nothing is committed or updated
+// from it.
 
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"

@@ -1,6 +1,6 @@
 #pragma once
-// Bilinear: elastic - linear-hardening law with kinematic hardening (METHOD.md section 4, the
-// law of the paper's first example, its Figures 1-2).
+// Bilinear: elastic - linear-hardening law with kinematic hardening (docs/method.md, Bilinear
+// law: the law of the paper's first example, its Figures 1-2).
 //
 // With initial stiffness k0, yield force fy and post-yield stiffness ratio b:
 //   F = k0 (u - up)                                 elastic stiffness k0

@@ -234,6 +234,32 @@ bool BoucWen::setParameter(const std::string& name, double value) {
 int BoucWen::setParameterValues(std::span<const int> indices, std::span<const double> values,
                                 bool allOrNothing) {
     BoucWenParameters p = m_p;
+    if (allOrNothing) { // judged together: a vector may cross an inadmissible intermediate
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            const int i = indices[k];
+            if (i < 0 || static_cast<std::size_t>(i) >= kFields.size()) {
+                setParameters(m_p);
+                return static_cast<int>(k);
+            }
+            p.*(kFields[static_cast<std::size_t>(i)].second) = values[k];
+        }
+        if (!admissible(p)) {
+            // Refused: name the first value that is inadmissible on its own, else the first.
+            int refused = 0;
+            for (std::size_t k = 0; k < indices.size(); ++k) {
+                BoucWenParameters alone = m_p;
+                alone.*(kFields[static_cast<std::size_t>(indices[k])].second) = values[k];
+                if (!admissible(alone)) {
+                    refused = static_cast<int>(k);
+                    break;
+                }
+            }
+            setParameters(m_p); // as a refused by-name set: force re-evaluated, trial dropped
+            return refused;
+        }
+        setParameters(p);
+        return -1;
+    }
     bool changed = false;
     int firstRefused = -1;
     for (std::size_t k = 0; k < indices.size(); ++k) {

@@ -1,6 +1,6 @@
 #pragma once
-// Bouc-Wen hysteresis with Baber-Noori degradation (METHOD.md section 4, paper Eqs 1-6),
-// in the convention of OpenSees `uniaxialMaterial BoucWen`:
+// Bouc-Wen hysteresis with Baber-Noori degradation (docs/method.md, The Bouc-Wen law with
+// degradation; paper Eqs 1-6), in the convention of OpenSees `uniaxialMaterial BoucWen`:
 //
 //   F     = alpha k0 x + (1 - alpha) k0 z                                   (Eq. 1)
 //   dz/dx = [ A - |z|^n (beta sgn(dx z) + gamma) nu ] / eta                 (Eq. 2)
@@ -156,6 +156,10 @@ public:
     bool setParameter(const std::string& name, double value) override;
     /// As the base class says, deciding each value on a copy of the parameters (the same
     /// admissible() test setParameter makes) and setting them all with one setParameters().
+    /// With allOrNothing the values are judged together, as one parameter set: a vector that
+    /// is admissible is applied even if setting its values one by one would pass through an
+    /// inadmissible set (beta and gamma changing sign together); a refused set returns the
+    /// position of the first value that is inadmissible on its own, or 0.
     int setParameterValues(std::span<const int> indices, std::span<const double> values,
                            bool allOrNothing) override;
 

@@ -2,6 +2,7 @@
 
 #include "core/hysteresis/Bilinear.h"
 #include "core/hysteresis/BoucWen.h"
+#include "core/hysteresis/BoucWenPinching.h"
 #include "core/hysteresis/LinearElastic.h"
 
 #include <algorithm>
@@ -52,6 +53,15 @@ const ParameterSpec<BoucWenParameters> kBoucWenSpecs[] = {
     {"fRef", &BoucWenParameters::fRef, positive, "a finite number > 0"},
 };
 
+const ParameterSpec<PinchingParameters> kPinchingSpecs[] = {
+    {"zetaS", &PinchingParameters::zetaS, belowOne, "a number with 0 <= zetaS < 1"},
+    {"p", &PinchingParameters::p, nonNegative, "a finite number >= 0"},
+    {"q", &PinchingParameters::q, belowOne, "a number with 0 <= q < 1"},
+    {"psi", &PinchingParameters::psi, positive, "a finite number > 0"},
+    {"deltaPsi", &PinchingParameters::deltaPsi, nonNegative, "a finite number >= 0"},
+    {"lambda", &PinchingParameters::lambda, positive, "a finite number > 0"},
+};
+
 const ParameterSpec<BilinearParameters> kBilinearSpecs[] = {
     {"k0", &BilinearParameters::k0, positive, "a finite number > 0"},
     {"fy", &BilinearParameters::fy, positive, "a finite number > 0"},
@@ -71,20 +81,32 @@ std::string formatValue(double v) {
     return std::string(buffer, result.ptr);
 }
 
+template <typename P, std::size_t N> std::string nameList(const ParameterSpec<P> (&specs)[N]) {
+    std::string list;
+    for (const auto& s : specs) {
+        list += list.empty() ? s.name : std::string(", ") + s.name;
+    }
+    return list;
+}
+
+// Fills P from the params named in specs; a name not in specs is an error naming
+// `expectedNames` (all of the law's names), unless `others` (the law's other names) has it.
 template <typename P, std::size_t N>
 P fillParameters(const std::string& law, const ParameterSpec<P> (&specs)[N],
-                 const std::map<std::string, double>& params) {
+                 const std::map<std::string, double>& params,
+                 const std::vector<std::string>& others = {},
+                 const std::string& expectedNames = {}) {
     P p{};
     for (const auto& [name, value] : params) {
         const auto* spec = std::find_if(std::begin(specs), std::end(specs),
                                         [&](const auto& s) { return name == s.name; });
         if (spec == std::end(specs)) {
-            std::string list;
-            for (const auto& s : specs) {
-                list += list.empty() ? s.name : std::string(", ") + s.name;
+            if (std::find(others.begin(), others.end(), name) != others.end()) {
+                continue;
             }
-            throw std::invalid_argument(law + ": unknown parameter '" + name +
-                                        "' (expected one of " + list + ")");
+            throw std::invalid_argument(
+                law + ": unknown parameter '" + name + "' (expected one of " +
+                (expectedNames.empty() ? nameList(specs) : expectedNames) + ")");
         }
         if (!spec->ok(value)) {
             throw std::invalid_argument(law + ": parameter '" + name + "' = " + formatValue(value) +
@@ -101,6 +123,22 @@ std::string lowerCase(std::string s) {
     return s;
 }
 
+void requireBoundedZ(const std::string& law, const BoucWenParameters& p) {
+    if (!(p.beta + p.gamma > 0.0)) {
+        throw std::invalid_argument(law + ": parameters 'beta' + 'gamma' = " +
+                                    formatValue(p.beta + p.gamma) +
+                                    " is not admissible (expected beta + gamma > 0 for a bounded z)");
+    }
+}
+
+template <typename P, std::size_t N> std::vector<std::string> namesOf(const ParameterSpec<P> (&specs)[N]) {
+    std::vector<std::string> names;
+    for (const auto& s : specs) {
+        names.emplace_back(s.name);
+    }
+    return names;
+}
+
 } // namespace
 
 std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
@@ -108,12 +146,17 @@ std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
     const std::string key = lowerCase(lawName);
     if (key == "boucwen" || key == "bouc-wen") {
         const auto p = fillParameters("boucWen", kBoucWenSpecs, params);
-        if (!(p.beta + p.gamma > 0.0)) {
-            throw std::invalid_argument(
-                "boucWen: parameters 'beta' + 'gamma' = " + formatValue(p.beta + p.gamma) +
-                " is not admissible (expected beta + gamma > 0 for a bounded z)");
-        }
+        requireBoundedZ("boucWen", p);
         return std::make_unique<BoucWen>(p);
+    }
+    if (key == "boucwenpinching" || key == "bouc-wen-pinching") {
+        const std::string law = "boucWenPinching";
+        const std::string all = nameList(kBoucWenSpecs) + ", " + nameList(kPinchingSpecs);
+        BoucWenPinchingParameters p;
+        p.boucWen = fillParameters(law, kBoucWenSpecs, params, namesOf(kPinchingSpecs), all);
+        p.pinching = fillParameters(law, kPinchingSpecs, params, namesOf(kBoucWenSpecs), all);
+        requireBoundedZ(law, p.boucWen);
+        return std::make_unique<BoucWenPinching>(p);
     }
     if (key == "bilinear") {
         return std::make_unique<Bilinear>(fillParameters("bilinear", kBilinearSpecs, params));
@@ -122,11 +165,12 @@ std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
         return std::make_unique<LinearElastic>(fillParameters("elastic", kElasticSpecs, params).k);
     }
     throw std::invalid_argument("unknown hysteresis law '" + lawName +
-                                "' (expected one of boucWen, bouc-wen, bilinear, elastic)");
+                                "' (expected one of boucWen, bouc-wen, boucWenPinching, "
+                                "bouc-wen-pinching, bilinear, elastic)");
 }
 
 std::vector<std::string> knownLaws() {
-    return {"boucWen", "bilinear", "elastic"};
+    return {"boucWen", "boucWenPinching", "bilinear", "elastic"};
 }
 
 } // namespace hsmu

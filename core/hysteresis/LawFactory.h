@@ -2,10 +2,13 @@
 // LawFactory: builds a HysteresisLaw from a law name and named parameters, as given in a
 // configuration file or on the `hsmu material` command line.
 //
-// Law names (case-insensitive): "boucWen" (also "bouc-wen"), "bilinear", "elastic".
+// Law names (case-insensitive): "boucWen" (also "bouc-wen"), "boucWenPinching" (also
+// "bouc-wen-pinching"), "bilinear", "elastic".
 // Parameter names are those of each law's parameterNames():
 //   boucWen   k0, alpha, n, beta, gamma, A0, deltaA, deltaNu, deltaEta, uRef, fRef
 //             (defaults of BoucWenParameters; see BoucWen.h for the equations)
+//   boucWenPinching  boucWen's names and zetaS, p, q, psi, deltaPsi, lambda (defaults of
+//             BoucWenParameters and PinchingParameters; BoucWenPinching.h)
 //   bilinear  k0, fy, b   (defaults of BilinearParameters: 1, 1, 0.1)
 //   elastic   k           (default 1)
 // Unspecified parameters take the defaults.
@@ -25,7 +28,7 @@ class HysteresisLaw;
 std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
                                        const std::map<std::string, double>& params);
 
-/// The canonical law names: "boucWen", "bilinear", "elastic".
+/// The canonical law names: "boucWen", "boucWenPinching", "bilinear", "elastic".
 std::vector<std::string> knownLaws();
 
 } // namespace hsmu

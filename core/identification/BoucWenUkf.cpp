@@ -19,6 +19,19 @@ constexpr int kN = static_cast<int>(BoucWenUkfIndex::N);
 constexpr int kDeltaNu = static_cast<int>(BoucWenUkfIndex::DeltaNu);
 constexpr int kDeltaEta = static_cast<int>(BoucWenUkfIndex::DeltaEta);
 constexpr int kFirstParameter = kK0;
+/// beta + gamma is held at or above this (the law needs beta + gamma > 0).
+constexpr double kBetaGammaMargin = 1e-3;
+
+/// Moves (beta, gamma) along (1, 1) onto beta + gamma = margin when the sum is below it;
+/// true if it moved them. A box with lower beta + lower gamma > margin never triggers it.
+bool projectAdmissible(double& beta, double& gamma) {
+    const double deficit = kBetaGammaMargin - (beta + gamma);
+    if (!(deficit > 0.0))
+        return false;
+    beta += 0.5 * deficit;
+    gamma += 0.5 * deficit;
+    return true;
+}
 
 bool isParameter(BoucWenUkfIndex index) {
     const int i = static_cast<int>(index);
@@ -75,7 +88,7 @@ bool BoucWenUkf::boundsAdmissible(const BoundsArray& b) {
     }
     return b[kK0].lower > 0.0 && b[kAlpha].lower >= 0.0 && b[kAlpha].upper <= 1.0 &&
            b[kN].lower > 0.0 && b[kDeltaNu].lower >= 0.0 && b[kDeltaEta].lower >= 0.0 &&
-           b[kBeta].lower + b[kGamma].lower > 0.0;
+           b[kBeta].upper + b[kGamma].upper > kBetaGammaMargin;
 }
 
 BoucWenUkf::BoucWenUkf(const BoucWenParameters& initial, const BoucWenUkfSettings& settings,
@@ -113,6 +126,31 @@ void BoucWenUkf::reset(const BoucWenParameters& initial) {
     m_refreshNeeded = true;
     m_lastX = 0.0;
     m_x = 0.0;
+}
+
+void BoucWenUkf::restart(const BoucWenParameters& estimate, const BoucWenState& state,
+                         double deformation, const std::array<double, kBoucWenUkfSize>& stddev) {
+    m_fixed = estimate;
+    Eigen::VectorXd x(kBoucWenUkfSize);
+    x << state.z, state.e, estimate.k0, estimate.alpha, estimate.beta, estimate.gamma, estimate.n,
+        estimate.deltaNu, estimate.deltaEta;
+    for (int i = kFirstParameter; i < kBoucWenUkfSize; ++i)
+        if (m_locked[static_cast<std::size_t>(i)])
+            m_lockedValue[static_cast<std::size_t>(i)] = x(i);
+    refreshBoxes();
+    project(x, true);
+    projectAdmissible(x(kBeta), x(kGamma));
+    Eigen::MatrixXd P = Eigen::MatrixXd::Zero(kBoucWenUkfSize, kBoucWenUkfSize);
+    for (int i = 0; i < kBoucWenUkfSize; ++i) {
+        const double sd = std::isfinite(stddev[static_cast<std::size_t>(i)])
+                              ? stddev[static_cast<std::size_t>(i)]
+                              : 0.0;
+        P(i, i) = m_locked[static_cast<std::size_t>(i)] ? 0.0 : sd * sd;
+    }
+    m_ukf.init(x, P);
+    m_refreshNeeded = true;
+    m_lastX = deformation / m_fixed.uRef;
+    m_x = m_lastX;
 }
 
 void BoucWenUkf::project(Eigen::Ref<Eigen::VectorXd> x, bool mean) const {
@@ -274,14 +312,19 @@ BoucWenUkfStep BoucWenUkf::step(double deformation, double force) {
             m_sigmaParameters.resize(count);
             m_sigmaStates.resize(count);
             m_sigmaIncrements.resize(count);
+            values = points;
             for (std::size_t i = 0; i < count; ++i) {
                 const auto column = points.col(static_cast<Eigen::Index>(i));
                 m_sigmaParameters[i] = parametersOf(column);
                 m_sigmaStates[i] = {column(kZ), column(kE)};
+                BoucWenParameters& q = m_sigmaParameters[i];
+                if (projectAdmissible(q.beta, q.gamma)) { // the point itself moves too
+                    values(kBeta, static_cast<Eigen::Index>(i)) = q.beta;
+                    values(kGamma, static_cast<Eigen::Index>(i)) = q.gamma;
+                }
             }
             BoucWen::integrateStates(m_sigmaParameters, m_sigmaStates, dx, m_sigmaIncrements,
                                      BoucWen::BatchMath::Fast);
-            values = points;
             for (std::size_t i = 0; i < count; ++i) {
                 const BoucWenIncrement& inc = m_sigmaIncrements[i];
                 if (inc.status != LawStatus::Ok) {
@@ -334,6 +377,8 @@ BoucWenUkfStep BoucWenUkf::step(double deformation, double force) {
         return result(updated, std::numeric_limits<double>::quiet_NaN());
     }
     updated.jitter = std::max(updated.jitter, predicted.jitter);
+    if (Eigen::VectorXd post = m_ukf.state(); projectAdmissible(post(kBeta), post(kGamma)))
+        m_ukf.setState(post, m_ukf.covariance()); // the posterior mean made admissible
     return result(updated, m_ukf.predictedMeasurement()(0));
 }
 

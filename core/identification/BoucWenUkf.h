@@ -1,7 +1,7 @@
 #pragma once
-// BoucWenUkf: joint state-parameter estimation of one Bouc-Wen element by the UKF (METHOD.md
-// section 5, paper Eqs 7-15), driven each step by the specimen's measured deformation and
-// force.
+// BoucWenUkf: joint state-parameter estimation of one Bouc-Wen element by the UKF
+// (docs/method.md, The paper's UKF; paper Eqs 7-15), driven each step by the specimen's
+// measured deformation and force.
 //
 // State (paper Eq. 8, indices BoucWenUkfIndex): x = [z, e, k0, alpha, beta, gamma, n,
 // deltaNu, deltaEta], in the law's normalized units: deformation x = u / uRef, force
@@ -33,9 +33,12 @@
 //            deltaNu 0.001-0.1, deltaEta 0.001-0.1); z and e unbounded
 // Bounds: sigma points are held in [lower, upper]; the predicted and posterior means
 // boundMargin (1e-3) of the width inside, so that a parameter that reached a bound can
-// still leave it (see UnscentedKalmanFilter.h, Bounds). A bound must keep the law
-// admissible: finite, lower <= upper, k0 > 0, 0 <= alpha <= 1, n > 0, deltaNu and
-// deltaEta >= 0, lower beta + lower gamma > 0.
+// still leave it (see UnscentedKalmanFilter.h, Bounds). Bounds must be finite with
+// lower <= upper, k0 > 0, 0 <= alpha <= 1, n > 0, deltaNu and deltaEta >= 0, and leave some
+// admissible (beta, gamma): upper beta + upper gamma > 1e-3. The box need not be admissible
+// as a whole: every sigma point and every posterior mean with beta + gamma below 1e-3 is
+// moved along (1, 1) onto beta + gamma = 1e-3 (docs/method.md, "Admissibility"); with the
+// paper's Table III (lower sum 2.5) this never happens.
 // A locked parameter keeps its value: zero variance, zero Q, both bounds at its value.
 //
 // Faults: a sigma point whose integration fails (LawStatus not Ok), and everything the UKF
@@ -102,6 +105,13 @@ public:
     /// Restart from `initial` in the virgin state with the initial covariance; bounds, locks
     /// and settings are kept.
     void reset(const BoucWenParameters& initial);
+
+    /// Restart at a known point of a history: the estimate (its uRef and fRef become the
+    /// filter's scales), the law's state (z, e) at physical deformation `deformation`, and
+    /// the standard deviations of each state entry (normalized; NaN counts as 0). Bounds,
+    /// locks and settings are kept; a locked parameter takes the estimate's value.
+    void restart(const BoucWenParameters& estimate, const BoucWenState& state, double deformation,
+                 const std::array<double, kBoucWenUkfSize>& stddev);
 
     /// One committed step: measured deformation u and force F (physical units).
     BoucWenUkfStep step(double deformation, double force);

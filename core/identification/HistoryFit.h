@@ -1,6 +1,7 @@
 #pragma once
-// HistoryFit: the paper's Nelder-Mead identification over the stored history (METHOD.md
-// sections 3-4; the bilinear example of the paper's Figures 1-2).
+// HistoryFit: the paper's Nelder-Mead identification over the stored history (docs/method.md,
+// Nelder-Mead over the history and Bilinear law; the bilinear example of the paper's
+// Figures 1-2).
 //
 // Given the measured deformation u_k and force F_k of a specimen (k = 0 .. N-1, physical
 // units) and a law with initial parameters, it minimizes over the named parameters, inside

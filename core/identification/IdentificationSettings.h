@@ -30,6 +30,13 @@ struct IdentificationSettings {
     /// Nelder-Mead only: after the last sample, one more fit over the whole history (what a
     /// calibration from an old test wants); the online run has no such fit.
     bool finalFit = true;
+    /// Replay the online method over the samples (false: only the calibration below).
+    bool online = true;
+    /// Calibrate the law over the whole history (Calibration.h): the best the law can do,
+    /// reported beside the online result, and the verdict on the model family.
+    bool calibrate = true;
+    /// A calibration NRMSE above this says that the law cannot represent the specimen [-].
+    double verdictNrmse = 0.25;
 };
 
 /// Settings for the experimental element `specimen` of a parsed configuration ("": the

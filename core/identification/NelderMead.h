@@ -1,6 +1,7 @@
 #pragma once
-// NelderMead: bounded Nelder-Mead simplex minimizer (Lagarias et al. 1998, the paper's ref.
-// [17]; METHOD.md section 3: the slow identification run only at triggered steps).
+// NelderMead: bounded Nelder-Mead simplex minimizer (Lagarias et al. 1998, the paper's ref. [17];
+// docs/method.md, Nelder-Mead over the history: the slow identification run only at
+// triggered steps).
 //
 // Method: n + 1 vertices; each iteration reflects the worst vertex through the centroid of
 // the others and expands, contracts (outside or inside) or shrinks the simplex. Coefficients

@@ -5,6 +5,7 @@
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/ExperimentalElement.h"
 #include "core/hysteresis/HysteresisLaw.h"
+#include "core/identification/CalibrationDefaults.h"
 #include "core/identification/HistoryFit.h"
 #include "core/structure/Structure.h"
 #include "core/updating/Identifier.h"
@@ -87,10 +88,57 @@ void finalFit(const SpecimenHistory& h, const IdentificationSettings& s,
 
 } // namespace
 
+/// The calibration over the whole history, and the verdict.
+void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
+                    OfflineIdentificationResult& r) {
+    CalibrationRequest request;
+    request.law = s.model.law;
+    request.uRef = s.updating.modelURef;
+    request.fRef = s.updating.modelFRef;
+    if (s.updating.method == "ukf" && s.updating.ukfFormulation == "robust")
+        request.bounds = s.updating.bounds; // the paper's bounds are for its normalization
+    try {
+        r.calibration = calibrateHistory(h.deformation, h.force, request);
+    } catch (const std::exception& e) {
+        r.messages.push_back(at(h.time.back(), std::string("calibration: ") + e.what()));
+        return;
+    }
+    if (!r.calibration->ok) {
+        r.messages.push_back(at(h.time.back(), "calibration failed: " + r.calibration->reason));
+        return;
+    }
+    if (r.calibration->nrmse > s.verdictNrmse) {
+        std::ostringstream m;
+        m.setf(std::ios::fixed);
+        m.precision(2);
+        m << "the model family cannot represent this specimen (best NRMSE "
+          << r.calibration->nrmse << ")";
+        r.verdict = m.str();
+    }
+}
+
 OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
                                             const IdentificationSettings& settings) {
     if (const std::string why = history.problem(); !why.empty())
         throw std::invalid_argument(history.source + ": " + why);
+    if (!settings.online) {
+        OfflineIdentificationResult r;
+        r.method = "calibration";
+        calibrateWhole(history, settings, r);
+        if (!r.calibration || !r.calibration->ok)
+            throw std::invalid_argument("calibration of " + history.source + " failed: " +
+                                        (r.messages.empty() ? "" : r.messages.back()));
+        r.parameterNames = r.calibration->names;
+        for (std::size_t j = 0; j < r.parameterNames.size(); ++j) {
+            const double sd = r.calibration->standardDeviation[Eigen::Index(j)];
+            r.finalEstimate[r.parameterNames[j]] = r.calibration->estimate[Eigen::Index(j)];
+            r.finalStddev[r.parameterNames[j]] = std::isfinite(sd) ? sd : 0.0;
+            r.initial[r.parameterNames[j]] = r.calibration->estimate[Eigen::Index(j)];
+        }
+        r.finalNrmse = r.calibration->nrmse;
+        r.finalRmsError = r.calibration->rmsError;
+        return r;
+    }
     const std::string where = "identification of " + history.source;
     auto model = buildLaw(settings.model, where);
     std::map<std::string, double> all; // every parameter of the law (for the replays)
@@ -161,6 +209,8 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
         sumF2 += f * f;
     const double rmsF = std::sqrt(sumF2 / double(n));
     r.finalNrmse = rmsF > 0.0 ? r.finalRmsError / rmsF : 0.0;
+    if (settings.calibrate)
+        calibrateWhole(history, settings, r);
     return r;
 }
 

@@ -3,8 +3,8 @@
 // measured history (a run record or an imported CSV; SpecimenHistory.h), with the recorded
 // or overridden settings (IdentificationSettings.h). docs/cli.md, `hsmu replay --identify`.
 //
-// Each sample goes through the same ModelUpdater as the online run (METHOD.md section 3:
-// auxiliary model <- measured deformation, identifier <- (deformation, force), inspector
+// Each sample goes through the same ModelUpdater as the online run (docs/method.md, The four
+// modules: auxiliary model <- measured deformation, identifier <- (deformation, force), inspector
 // <- auxiliary vs measured force), the specimen's measurement being played back instead of
 // measured. So with the recorded settings the parameter history equals the online one (the
 // UKF is deterministic: equal to the last bit on the same machine and build), and the
@@ -19,18 +19,25 @@
 // Summary: the final estimate and the RMS force error of the final model replayed from the
 // virgin state over the whole history (HistoryFit::rmsError) [force units] and its ratio to
 // RMS(F) [-].
+// Calibration (settings.calibrate): the law fitted over the whole history by the global-then-
+// local least squares of Calibration.h, with the scales and bounds of CalibrationDefaults.h
+// unless the model gives uRef / fRef and the updating section bounds; its NRMSE is the best
+// the law can do, and above settings.verdictNrmse the verdict says so. settings.online false
+// skips the online pass (only the calibration; no per-sample rows).
 // Errors: std::invalid_argument for an unusable history (SpecimenHistory::problem()),
 // ConfigError for settings the method cannot use. A rejected UKF step is reported, not
 // fatal (offline the estimator never holds).
 // Cost: one online identification step per sample (UKF: a few us) plus the refits.
 // Thread rules: none; independent calls may run on different threads.
 
+#include "core/identification/Calibration.h"
 #include "core/identification/IdentificationSettings.h"
 #include "core/identification/SpecimenHistory.h"
 #include "core/updating/ParameterSet.h"
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +58,11 @@ struct OfflineIdentificationResult {
     int estimatorWarnings = 0;         ///< inspector alarms "estimator rejected" (rejected updates)
     int refits = 0;                    ///< Nelder-Mead fits accepted (the final fit included)
     std::vector<std::string> messages; ///< "t = T s: ..." identifier and inspector messages
+    /// The calibration over the whole history (settings.calibrate): the law's optimum.
+    std::optional<CalibrationResult> calibration;
+    /// "" or "the model family cannot represent this specimen (best NRMSE x.xx)" when the
+    /// calibration's NRMSE is above settings.verdictNrmse.
+    std::string verdict;
 };
 
 OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -79,6 +80,37 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
     j["refits"] = result.refits;
     j["estimatorWarnings"] = result.estimatorWarnings;
     j["messages"] = result.messages;
+    if (result.calibration && result.calibration->ok) {
+        const CalibrationResult& c = *result.calibration;
+        nlohmann::json cal = {{"nrmse", c.nrmse},
+                              {"rmsError", c.rmsError},
+                              {"starts", c.startsTried},
+                              {"replays", c.residualEvaluations},
+                              {"seconds", c.computeSeconds}};
+        nlohmann::json all = nlohmann::json::object();
+        for (const auto& [name, v] : c.parameters)
+            all[name] = v;
+        cal["model"] = all;
+        nlohmann::json fitted = nlohmann::json::object();
+        for (std::size_t i = 0; i < c.names.size(); ++i) {
+            const auto k = Eigen::Index(i);
+            const double sd = c.standardDeviation[k];
+            nlohmann::json p = {{"value", c.estimate[k]}, {"onBound", bool(c.onBound[i])}};
+            if (std::isfinite(sd)) {
+                p["stddev"] = sd;
+                p["ci95"] = {c.estimate[k] - 1.96 * sd, c.estimate[k] + 1.96 * sd};
+                nlohmann::json corr = nlohmann::json::object();
+                for (std::size_t m = 0; m < c.names.size(); ++m)
+                    if (std::isfinite(c.correlation(k, Eigen::Index(m))))
+                        corr[c.names[m]] = c.correlation(k, Eigen::Index(m));
+                p["correlation"] = corr;
+            }
+            fitted[c.names[i]] = p;
+        }
+        cal["parameters"] = fitted;
+        j["calibration"] = cal;
+    }
+    j["verdict"] = result.verdict;
     const std::string path = (d / "summary.json").string();
     std::ofstream out(path);
     out << j.dump(2) << '\n';

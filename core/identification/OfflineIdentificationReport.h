@@ -10,7 +10,11 @@
 //                     "updating": the settings section used,
 //                     "parameters": { NAME: {"initial", "final", "stddev"[, "online"]} },
 //                     "finalRmsError", "finalNrmse", "finalFitError", "refits",
-//                     "estimatorWarnings", "messages": [...] }
+//                     "estimatorWarnings", "messages": [...],
+//                     "calibration": { "nrmse", "rmsError", "starts", "replays", "seconds",
+//                        "model": {every parameter}, "parameters": { NAME: {"value",
+//                        "onBound", "stddev", "ci95": [lo, hi], "correlation": {NAME: r}}}},
+//                     "verdict": "" or "the model family cannot represent ..." }
 // "online" is the run's own final estimate when the record holds one for the same method
 // and parameter. Parameters are in the law's units (normalized by uRef / fRef for Bouc-Wen).
 // Throws std::runtime_error naming a file that cannot be written.

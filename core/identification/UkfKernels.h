@@ -2,7 +2,7 @@
 // UkfKernels: the small dense kernels of UnscentedKalmanFilter, written as plain loops over
 // column-major storage. For the L <= ~20 of an estimator they are several times faster than
 // Eigen's dynamic-size LLT and products, whose blocking and dispatch dominate at that size
-// (the filter's step budget is a few microseconds, METHOD.md section 5 / issue 3).
+// (the filter's step budget is a few microseconds, docs/method.md, The paper's UKF / issue 3).
 
 #include <Eigen/Core>
 

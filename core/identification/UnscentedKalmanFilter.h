@@ -1,6 +1,7 @@
 #pragma once
-// UnscentedKalmanFilter: a generic, dynamic-size unscented Kalman filter (METHOD.md section 5,
-// paper Eqs 7-15) with guarded numerics. API after mherb/kalman: predict(f) then update(h, z).
+// UnscentedKalmanFilter: a generic, dynamic-size unscented Kalman filter (docs/method.md, The
+// paper's UKF; paper Eqs 7-15) with guarded numerics. API after mherb/kalman: predict(f) then
+// update(h, z).
 //
 // Scaled unscented transform, L = state size, 2L + 1 sigma points (paper Eqs 9, 10, 13):
 //   lambda = a^2 (L + kappa) - L,   c = sqrt(L + lambda)

@@ -1,5 +1,6 @@
 #pragma once
-// Explicit Newmark (beta = 0, gamma = 1/2), the paper's scheme (METHOD.md section 1):
+// Explicit Newmark (beta = 0, gamma = 1/2), the paper's scheme (docs/method.md, Hybrid
+// simulation):
 //
 //   u[n+1] = u[n] + dt v[n] + dt^2/2 a[n]                              (predict; to specimen)
 //   (M + gamma dt C) a[n+1] = F[n+1] - R[n+1] - C (v[n] + (1-gamma) dt a[n])

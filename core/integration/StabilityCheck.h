@@ -1,6 +1,6 @@
 #pragma once
 // StabilityCheck: omega_max dt of the initial-stiffness model against an integrator's limit
-// (METHOD.md section 1: explicit Newmark needs omega_max dt <= 2).
+// (docs/method.md, Hybrid simulation: explicit Newmark needs omega_max dt <= 2).
 
 #include <string>
 

@@ -19,6 +19,10 @@
 // law's normalized units), as `hsmu replay --import` reads it. Numbers are written in the
 // shortest form that reads back to the same double (std::to_chars, '.' whatever the locale);
 // NaN is "nan". Text fields are quoted when they hold a comma, a quote or a line break.
+// ExportUnits (`hsmu export --units`, docs/units.md) write the columns in lab units instead:
+// lengths, forces, rotations, moments and times in the units named (core/util/Units.h),
+// velocities and accelerations in length / time and length / time^2, moments by default in
+// force x length; each header names the unit written.
 // Thread rules: none.
 
 #include <string>
@@ -28,8 +32,20 @@ namespace hsmu {
 
 struct RecordData;
 
+/// Output units (Units.h symbols); an empty field: the console's unit (moment: force x length
+/// when force or length is given, else kN m).
+struct ExportUnits {
+    std::string length, force, rotation, moment, time;
+};
+
+/// Parse "length=in,force=kip,rotation=deg,moment=kip*in,time=ms" (any subset). Throws
+/// std::invalid_argument naming the pair or the unit and listing the accepted ones.
+ExportUnits parseExportUnits(const std::string& text);
+
 /// Writes the files above into the existing directory `dir` (overwriting). Returns the paths
-/// written. Throws std::runtime_error naming a file that cannot be written.
-std::vector<std::string> exportRecordCsv(const RecordData& record, const std::string& dir);
+/// written. Throws std::runtime_error naming a file that cannot be written. `units` must hold
+/// units parseExportUnits accepts.
+std::vector<std::string> exportRecordCsv(const RecordData& record, const std::string& dir,
+                                         const ExportUnits& units = {});
 
 } // namespace hsmu

@@ -1,7 +1,7 @@
 #pragma once
 // Structure: N-DOF lumped-mass model with elements, Rayleigh damping and equal-DOF
-// constraints (METHOD.md section 6: condition 1's rigid truss is the constraint u_slave =
-// u_master, not a huge stiffness).
+// constraints (docs/method.md, The paper's test frame: condition 1's rigid truss is the
+// constraint u_slave = u_master, not a huge stiffness).
 //
 // Units: a consistent set; the presets use kN, m, s and t (tonne = kN s^2/m).
 // Coordinates: "full" DOFs are the ones the user declares; constraints merge slaves into

@@ -1,6 +1,6 @@
 #pragma once
-// ComparisonProtocol: the paper's test protocol (METHOD.md section 7, paper sec. 7) for one
-// configuration, three runs under the same record:
+// ComparisonProtocol: the paper's test protocol (docs/method.md, The test protocol; paper sec. 7)
+// for one configuration, three runs under the same record:
 //   reference  the compared element, and every other element the updating reaches, is a
 //              specimen too: a copy of the true specimen (the updating specimen's
 //              `specimen` section, noise-free, each with its own state);

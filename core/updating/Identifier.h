@@ -1,11 +1,12 @@
 #pragma once
 // Identifier: parameter identification of one specimen's law from its measured response
-// (METHOD.md sections 3 and 5). Implementations: UkfIdentifier (every step) and
-// NelderMeadIdentifier (over the stored history, when the Inspector asks).
+// (docs/method.md, The four modules and The paper's UKF). Implementations: UkfIdentifier (every
+// step) and NelderMeadIdentifier (over the stored history, when the Inspector asks).
 // Values are in the law's own units (normalized for Bouc-Wen with uRef/fRef).
 
 #include "core/updating/ParameterSet.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,12 @@ struct IdentificationStatus {
     bool updated = false; ///< the estimate changed at this step
     bool refit = false;   ///< a batch fit over the whole history (replay dependent models)
     std::string message;  ///< why, when !ok; what ran, when informative
+    /// false: the estimate is not to be passed to the twins yet (an estimator recovering
+    /// from a divergence); the auxiliary model still takes it.
+    bool reportable = true;
+    /// Set when the best fit the method found stays poor: its NRMSE [-] (the Inspector says
+    /// the model family cannot represent the specimen).
+    std::optional<double> modelInadequate;
 };
 
 class Identifier {

@@ -1,6 +1,6 @@
 #pragma once
-// Inspector (METHOD.md section 3): watches the specimen's health and the model's fit, and
-// decides when updating is needed.
+// Inspector (docs/method.md, The four modules): watches the specimen's health and the model's
+// fit, and decides when updating is needed.
 //
 //   fit error   e = RMS(F_aux - F_meas) / RMS(F_meas) over a sliding window of W seconds
 //               (normalized RMS error; RMS(F_meas) floored at 1e-6 fRef-like scale);

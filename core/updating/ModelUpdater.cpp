@@ -56,7 +56,9 @@ void ModelUpdater::applyToAuxiliary(const std::vector<double>& values)
             m_auxValues.push_back(values[k]);
         }
     }
-    m_aux->setParameterValues(m_auxApply, m_auxValues, false);
+    // As one set first (beta and gamma may change sign together), value by value if refused.
+    if (m_aux->setParameterValues(m_auxApply, m_auxValues, true) != -1)
+        m_aux->setParameterValues(m_auxApply, m_auxValues, false);
 }
 
 void ModelUpdater::report(std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms,
@@ -110,9 +112,11 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
         } else {
             applyToAuxiliary(m_values);
         }
-        if (!st.message.empty())
+        if (!st.message.empty() && !st.modelInadequate)
             alarms.push_back({time, step, AlarmSeverity::Info, AlarmKind::ModelUpdate, st.message});
     }
+    if (st.modelInadequate)
+        alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::FitError, st.message});
 
     InspectorInput in;
     in.step = step;
@@ -129,7 +133,7 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     in.parameterBounds = m_boundValues;
     m_inspector.observe(in, alarms);
 
-    if (st.updated) {
+    if (st.updated && st.reportable) {
         m_events.clear();
         m_reporter->offerValues(step, time, m_values, structure, m_events);
         report(m_events, alarms, step, time, out); // counts the applied ones

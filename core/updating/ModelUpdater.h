@@ -1,6 +1,6 @@
 #pragma once
-// ModelUpdater: the paper's four modules (its Figure 4, METHOD.md section 3) around one
-// specimen, run by HybridTest after every committed step:
+// ModelUpdater: the paper's four modules (its Figure 4; docs/method.md, The four modules) around
+// one specimen, run by HybridTest after every committed step:
 //
 //   auxiliary model  <- measured deformation d_m        (its force F_aux vs measured F_m)
 //   identifier       <- (d_m, F_m)                      (UKF every step / Nelder-Mead on request)

@@ -1,6 +1,6 @@
 #pragma once
-// Reporter (METHOD.md section 3): decides *when* identified parameters reach the target
-// numerical elements and *which* ones go, with an optional conversion for category-2 twins.
+// Reporter (docs/method.md, The four modules): decides *when* identified parameters reach the
+// target numerical elements and *which* ones go, with an optional conversion for category-2 twins.
 //
 // Policies:
 //   EveryStep     apply every offer at once;

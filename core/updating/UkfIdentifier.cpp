@@ -44,9 +44,10 @@ BoucWenUkf::BoundsArray toArray(const ParameterBoundsMap& bounds)
         a[static_cast<int>(*i)] = {b.lower, b.upper};
     }
     if (!BoucWenUkf::boundsAdmissible(a))
-        throw std::invalid_argument("updating.bounds: the bounds do not keep the Bouc-Wen law "
-                                    "admissible (need lower <= upper, k0 > 0, 0 <= alpha <= 1, "
-                                    "n > 0, deltas >= 0, beta + gamma > 0)");
+        throw std::invalid_argument("updating.bounds: the bounds leave no admissible Bouc-Wen "
+                                    "law (need finite lower <= upper, k0 > 0, "
+                                    "0 <= alpha <= 1, n > 0, deltas >= 0 and upper beta + "
+                                    "upper gamma > 0.001)");
     return a;
 }
 } // namespace

@@ -1,8 +1,8 @@
 #pragma once
 // UkfIdentifier: the Identifier of a Bouc-Wen specimen by the joint state-parameter UKF
-// (BoucWenUkf, METHOD.md section 5), run every step. Parameter values and standard deviations
-// are in the law's normalized units. Identified: k0, alpha, beta, gamma, n, deltaNu, deltaEta
-// (A0 and deltaA stay fixed, as in the paper).
+// (BoucWenUkf; docs/method.md, The paper's UKF), run every step. Parameter values and standard
+// deviations are in the law's normalized units. Identified: k0, alpha, beta, gamma, n, deltaNu,
+// deltaEta (A0 and deltaA stay fixed, as in the paper).
 
 #include "core/identification/BoucWenUkf.h"
 #include "core/updating/Identifier.h"

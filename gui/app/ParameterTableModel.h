@@ -4,7 +4,7 @@
 // an edit is not written into the model but emitted (boundsEdited / lockEdited) for the
 // TestController, and shows once the worker's next UpdatingSnapshot confirms it, so the table
 // always shows what the updater really uses. Values in the law's own units (normalized by
-// uRef / fRef for Bouc-Wen, METHOD.md section 4).
+// uRef / fRef for Bouc-Wen, docs/method.md, Normalized units).
 // Thread rules: GUI thread only.
 
 #include "gui/app/UpdatingSnapshot.h"

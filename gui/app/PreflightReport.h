@@ -1,8 +1,8 @@
 #pragma once
-// PreflightReport: what the operator confirms before a test starts (as OpenFresco's
-// GenericTCP control asks before its first step): the integrator and its stability check
-// (METHOD.md section 1: explicit Newmark needs omega_max dt <= 2), the ground motion, and per
-// specimen its control, its safety limits and the values measured after the control was
+// PreflightReport: what the operator confirms before a test starts (as OpenFresco's GenericTCP
+// control asks before its first step): the integrator and its stability check
+// (docs/method.md, Hybrid simulation: explicit Newmark needs omega_max dt <= 2), the ground motion,
+// and per specimen its control, its safety limits and the values measured after the control was
 // prepared (the zero the test starts from). Units: the specimen's (rad and kN m for a
 // rotational spring, m and kN for a lateral one); s; m/s^2.
 // Thread rules: plain data; preflightOf() on the thread that runs the test, after prepare().

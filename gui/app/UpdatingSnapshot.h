@@ -3,7 +3,7 @@
 // show (parameters with sigma, bounds and locks; pending proposals; the reporter's policy and
 // the inspector's threshold), copied out of the live ModelUpdater on the worker thread so the
 // GUI never touches the test. Values are in the law's own units (normalized by uRef / fRef for
-// a Bouc-Wen law, METHOD.md section 4); times in s.
+// a Bouc-Wen law, docs/method.md, Normalized units); times in s.
 // Thread rules: plain data; snapshotOf() on the thread that runs the test.
 
 #include "core/updating/Reporter.h"

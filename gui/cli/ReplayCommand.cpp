@@ -24,7 +24,7 @@ int fail(const QString& message) {
 }
 
 struct ReplayOptions {
-    QString record, import, units, method, config, specimen, outDir;
+    QString record, import, units, columns, method, config, specimen, outDir;
 };
 
 std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
@@ -39,14 +39,23 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
                                          ReplayCommand::tr("Re-run the identification headless."));
     const QCommandLineOption importOpt(
         QStringLiteral("import"),
-        ReplayCommand::tr("Measured data: CSV of time, deformation, force with units."),
+        ReplayCommand::tr("Measured data: CSV or text of time (or a sample index), deformation, "
+                          "force with units."),
         QStringLiteral("csv"));
     const QCommandLineOption unitsOpt(
         QStringLiteral("units"),
-        ReplayCommand::tr("Units of the imported columns time,deformation,force, e.g. s,mm,kN."),
+        ReplayCommand::tr("Units of the imported columns time,deformation,force, e.g. s,mm,kN "
+                          "(time: s, ms or step; deformation: m, cm, mm, in, ft, rad, mrad, "
+                          "deg; force: N, kN, MN, lbf, kip, kgf, tonf, g or a moment such as "
+                          "kN*m, kip*in)."),
+        QStringLiteral("t,d,f"));
+    const QCommandLineOption columnsOpt(
+        QStringLiteral("columns"),
+        ReplayCommand::tr("Positions (from 1) of the imported time, deformation and force "
+                          "columns, e.g. 1,2,3; other columns are ignored."),
         QStringLiteral("t,d,f"));
     const QCommandLineOption methodOpt(QStringLiteral("method"),
-                                       ReplayCommand::tr("ukf or nelder-mead."),
+                                       ReplayCommand::tr("ukf, nelder-mead or calibration (only the whole-history fit)."),
                                        QStringLiteral("method"));
     const QCommandLineOption configOpt(
         QStringLiteral("config"),
@@ -57,7 +66,8 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
                                          QStringLiteral("name"));
     const QCommandLineOption outOpt(QStringLiteral("out"), ReplayCommand::tr("Output directory."),
                                     QStringLiteral("dir"));
-    p.addOptions({identifyOpt, importOpt, unitsOpt, methodOpt, configOpt, specimenOpt, outOpt});
+    p.addOptions(
+        {identifyOpt, importOpt, unitsOpt, columnsOpt, methodOpt, configOpt, specimenOpt, outOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed;
     const QStringList pos = p.positionalArguments();
@@ -72,6 +82,9 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
     o.units = p.value(unitsOpt);
     if (!o.units.isEmpty() && o.import.isEmpty())
         return ReplayCommand::tr("--units applies to --import only (a record has its units)");
+    o.columns = p.value(columnsOpt);
+    if (!o.columns.isEmpty() && o.import.isEmpty())
+        return ReplayCommand::tr("--columns applies to --import only");
     o.method = p.value(methodOpt);
     o.config = p.value(configOpt);
     o.specimen = p.value(specimenOpt);
@@ -137,6 +150,32 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
         out << ReplayCommand::tr("  estimator warnings: %1 (see summary.json)")
                    .arg(r.estimatorWarnings)
             << Qt::endl;
+    if (r.calibration && r.calibration->ok) {
+        const CalibrationResult& c = *r.calibration;
+        out << ReplayCommand::tr("  calibration over the whole history (%1 starts, %2 s): "
+                                 "NRMSE %3 %")
+                   .arg(c.startsTried)
+                   .arg(QString::number(c.computeSeconds, 'f', 2))
+                   .arg(QString::number(100.0 * c.nrmse, 'f', 2))
+            << Qt::endl;
+        for (std::size_t i = 0; i < c.names.size(); ++i) {
+            const auto k = Eigen::Index(i);
+            const double sd = c.standardDeviation[k];
+            out << QStringLiteral("    %1 %2 %3")
+                       .arg(QString::fromStdString(c.names[i]), -10)
+                       .arg(num(c.estimate[k]), 12)
+                       .arg(c.onBound[i] ? ReplayCommand::tr("on its bound")
+                                         : QStringLiteral("+- %1").arg(num(1.96 * sd)))
+                << Qt::endl;
+        }
+        for (const char* scale : {"uRef", "fRef"})
+            if (auto it = c.parameters.find(scale); it != c.parameters.end())
+                out << QStringLiteral("    %1 %2\n").arg(QString::fromLatin1(scale), -10)
+                           .arg(num(it->second), 12);
+    }
+    if (!r.verdict.empty())
+        out << ReplayCommand::tr("  verdict: %1").arg(QString::fromStdString(r.verdict))
+            << Qt::endl;
     out << ReplayCommand::tr("  outputs: %1").arg(QDir::toNativeSeparators(dir)) << Qt::endl;
 }
 
@@ -152,10 +191,12 @@ int ReplayCommand::exec(const QStringList& arguments) {
     std::optional<RecordReader> reader;
     try {
         if (!o.import.isEmpty()) {
-            std::optional<MeasuredDataUnits> units;
+            MeasuredDataOptions options;
             if (!o.units.isEmpty())
-                units = parseMeasuredDataUnits(o.units.toStdString());
-            history = readMeasuredDataCsv(o.import.toStdString(), units);
+                options.units = parseMeasuredDataUnits(o.units.toStdString());
+            if (!o.columns.isEmpty())
+                options.columns = parseMeasuredDataColumns(o.columns.toStdString());
+            history = readMeasuredDataCsv(o.import.toStdString(), options);
             settings = defaultIdentificationSettings();
             settings.dt = history.meanStep() > 0.0 ? history.meanStep() : settings.dt;
         } else {
@@ -166,7 +207,9 @@ int ReplayCommand::exec(const QStringList& arguments) {
             settings = identificationSettingsFrom(cfg, o.specimen.toStdString());
             history = historyFromRecord(d, settings.specimen, o.record.toStdString());
         }
-        settings = withOverrides(settings, o.config, o.method);
+        const bool calibrationOnly = o.method == QLatin1String("calibration");
+        settings = withOverrides(settings, o.config, calibrationOnly ? QString() : o.method);
+        settings.online = !calibrationOnly;
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }

@@ -27,7 +27,7 @@ public:
 
     /// Replace the curves by one per element index in `elements` (indices into layout).
     void showElements(const RunLayout& layout, const std::vector<int>& elements);
-    /// Overlay the auxiliary model (METHOD.md section 3): its force
+    /// Overlay the auxiliary model (docs/method.md, The four modules): its force
     /// (StepRecord::updating.auxiliaryForce) against the specimen's measured deformation.
     /// Nothing if layout has no updating or its specimen is unknown. Call after showElements().
     void addAuxiliaryModel(const RunLayout& layout);

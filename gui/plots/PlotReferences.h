@@ -1,7 +1,8 @@
 #pragma once
 // PlotReferences: the reference lines the console's plots draw besides the data: the
 // identification bounds of each parameter (the law's own units, normalized by uRef / fRef for
-// Bouc-Wen, METHOD.md Table III) and the inspector's fit-error threshold [-].
+// Bouc-Wen: docs/method.md, Normalized units; the paper's bounds: docs/method.md, The paper's
+// bounds (Table III)) and the inspector's fit-error threshold [-].
 // Taken from a TestConfig (live) or from the configuration JSON stored in a record (replay).
 // Thread rules: plain data, copy freely.
 

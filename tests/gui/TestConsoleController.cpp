@@ -242,7 +242,8 @@ private slots:
         const PreflightReport& r = *c.preflight();
         QCOMPARE(r.dt, 0.01);
         QCOMPARE(r.totalSteps, 200);
-        // Explicit Newmark: omega_max dt against the limit 2 (METHOD.md section 1).
+        // Explicit Newmark: omega_max dt against the limit 2 (docs/method.md, Hybrid
+        // simulation).
         QCOMPARE(r.stability.limit, 2.0);
         QVERIFY(r.stability.stable);
         QVERIFY(std::abs(r.stability.omegaDt - r.stability.omegaMax * r.dt) < 1e-12);

@@ -6,7 +6,8 @@
 // - compare writes three readable records (reference, initial, updated);
 // - imported CSVs: a good one identifies (Nelder-Mead, with a settings override); a malformed
 //   one and a file that is not a record are clear errors (exit 1); (replay without --identify
-//   opens the replay window: TestReplayWindow).
+//   opens the replay window: TestReplayWindow);
+// - lab units: export --units and import --columns round trip, and their errors.
 
 #include "CliTestSupport.h"
 
@@ -47,6 +48,7 @@ private slots:
     void compareWritesThreeRecords();
     void importIdentifies();
     void errorsAreClear();
+    void labUnitsOutAndBackIn();
 
 private:
     QTemporaryDir m_dir;
@@ -214,6 +216,49 @@ void TestReplayCommand::errorsAreClear() {
                        QStringLiteral("--out"), path(m_dir, "x")});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("expected ukf or nelder-mead")), qPrintable(r.err));
+}
+
+void TestReplayCommand::labUnitsOutAndBackIn() {
+    // `hsmu export --units` writes in, kip, deg, kip in, ms; `hsmu replay --import --columns`
+    // reads Element 1 back (the header gives the units) to the record's values.
+    const QString out = path(m_dir, "lab-csv");
+    Result r = clitest::hsmu({QStringLiteral("export"), m_record, QStringLiteral("--csv"), out,
+                              QStringLiteral("--units"),
+                              QStringLiteral("length=in,force=kip,rotation=deg,moment=kip*in,"
+                                             "time=ms")});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    const hsmu::RecordReader reader(m_record.toStdString());
+    const hsmu::RecordData& d = reader.data();
+    const QStringList elements = readLines(out + QStringLiteral("/elements.csv"));
+    QVERIFY2(elements[0].startsWith(QStringLiteral("step,time [ms],Element 1 deformation [deg],"
+                                                   "Element 1 force [kip in]")),
+             qPrintable(elements[0]));
+    const QStringList row = elements[100].split(QLatin1Char(','));
+    const double kipIn = 4.4482216152605 * 0.0254;
+    QVERIFY(std::abs(row[3].toDouble() * kipIn - d.force(99, 0)) <=
+            1e-14 * std::abs(d.force(99, 0)));
+    const QString back = path(m_dir, "lab-back");
+    r = clitest::hsmu({QStringLiteral("replay"), QStringLiteral("--import"),
+                       out + QStringLiteral("/elements.csv"), QStringLiteral("--columns"),
+                       QStringLiteral("2,3,4"), QStringLiteral("--out"), back});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    const QJsonObject summary = readJson(back + QStringLiteral("/summary.json"));
+    QCOMPARE(summary.value(QStringLiteral("samples")).toInt(), d.rows());
+    QCOMPARE(summary.value(QStringLiteral("units")).toObject().value(QStringLiteral("force")).toString(),
+             QStringLiteral("kN m"));
+
+    r = clitest::hsmu({QStringLiteral("export"), m_record, QStringLiteral("--csv"), out,
+                       QStringLiteral("--units"), QStringLiteral("length=yd")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("--units: unknown length unit 'yd' (expected m, cm, "
+                                           "mm, in, ft)")),
+             qPrintable(r.err));
+    r = clitest::hsmu({QStringLiteral("replay"), m_record, QStringLiteral("--identify"),
+                       QStringLiteral("--columns"), QStringLiteral("1,2,3"),
+                       QStringLiteral("--out"), path(m_dir, "x")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("--columns applies to --import only")),
+             qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(TestReplayCommand)

@@ -1,5 +1,5 @@
 // Tests of the shipped presets (resources/presets/*.json): each loads, builds and runs, and
-// the paper-frame presets have the physics METHOD.md section 6 asks of them:
+// the paper-frame presets have the physics docs/method.md, The paper's test frame, asks of them:
 //   condition 1: a rigid truss (a constraint) gives Elements 1 and 2 identical rotations;
 //     with the same material and no noise, identical moments too;
 //   condition 3: m2 = m1 / 2 puts the larger demand on Element 1 (design targets of the

@@ -1,8 +1,8 @@
 #pragma once
-// Independent reference for TestBoucWen: the Bouc-Wen ODE (METHOD.md section 4, Eqs 1-6)
-// integrated with classical fourth-order Runge-Kutta in x, written here without using the
-// BoucWen class. Between two history points x moves linearly, so sgn(dx) is constant over each
-// segment and the segment is split into `subSteps` RK4 steps.
+// Independent reference for TestBoucWen: the Bouc-Wen ODE (docs/method.md, The Bouc-Wen law with
+// degradation, Eqs 1-6) integrated with classical fourth-order Runge-Kutta in x, written here
+// without using the BoucWen class. Between two history points x moves linearly, so sgn(dx) is
+// constant over each segment and the segment is split into `subSteps` RK4 steps.
 
 #include "core/hysteresis/BoucWen.h"
 

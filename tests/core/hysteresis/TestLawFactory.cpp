@@ -44,7 +44,8 @@ private slots:
 };
 
 void TestLawFactory::makesEachLawWithDefaults() {
-    QVERIFY(knownLaws() == (std::vector<std::string>{"boucWen", "bilinear", "elastic"}));
+    QVERIFY(knownLaws() ==
+            (std::vector<std::string>{"boucWen", "boucWenPinching", "bilinear", "elastic"}));
     for (const std::string& name : knownLaws()) {
         const auto law = makeLaw(name, {});
         QVERIFY(law != nullptr);

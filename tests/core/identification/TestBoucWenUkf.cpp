@@ -19,7 +19,7 @@ namespace {
 constexpr int kPointsPerCycle = 400;
 constexpr int kCycles = 6;
 
-// The "true" specimen (METHOD.md section 4 scales: uRef 0.02 rad, fRef 20 kN m).
+// The "true" specimen (docs/method.md, Normalized units: uRef 0.02 rad, fRef 20 kN m).
 BoucWenParameters truth() {
     BoucWenParameters p;
     p.k0 = 1.0;
@@ -162,8 +162,8 @@ void TestBoucWenUkf::recoversParametersNoiseFree() {
     QCOMPARE(r.rejected, 0);
     QVERIFY2(fit <= 0.02, qPrintable(QString::number(fit)));
     QVERIFY2(replayFit <= 0.05, qPrintable(QString::number(replayFit)));
-    // Well-identifiable parameters. beta and gamma trade off (METHOD.md section 5): their sum
-    // sets the ultimate z, which is checked instead of each.
+    // Well-identifiable parameters. beta and gamma trade off (docs/method.md, Identifiability):
+    // their sum sets the ultimate z, which is checked instead of each.
     // Tolerances: k0 5 %, alpha 10 %, n 5 % (measured: 2.4 %, 2.8 %, 1.7 %).
     QVERIFY2(std::abs(e.k0 - t.k0) <= 0.05 * t.k0, qPrintable(QString::number(e.k0)));
     QVERIFY2(std::abs(e.alpha - t.alpha) <= 0.10 * t.alpha, qPrintable(QString::number(e.alpha)));

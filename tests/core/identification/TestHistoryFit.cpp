@@ -8,6 +8,8 @@
 #include "core/hysteresis/BoucWen.h"
 #include "core/identification/HistoryFit.h"
 
+#include "SyntheticHistory.h"
+
 #include <QtTest>
 
 #include <cmath>
@@ -15,29 +17,8 @@
 
 using namespace hsmu;
 
-namespace {
-
-// Cyclic deformation with an amplitude growing linearly to `peak` over `cycles` cycles.
-std::vector<double> cyclic(double peak, int cycles, int pointsPerCycle) {
-    std::vector<double> u;
-    for (int k = 1; k <= cycles * pointsPerCycle; ++k) {
-        const double c = double(k) / pointsPerCycle;
-        u.push_back(peak * c / cycles * std::sin(2.0 * M_PI * c));
-    }
-    return u;
-}
-
-std::vector<double> forcesOf(HysteresisLaw& law, const std::vector<double>& u) {
-    std::vector<double> f;
-    for (const double v : u) {
-        law.setTrialDeformation(v);
-        law.commit();
-        f.push_back(law.committedForce());
-    }
-    return f;
-}
-
-} // namespace
+using hsmu::testing::cyclic;
+using hsmu::testing::forcesOf;
 
 class TestHistoryFit : public QObject {
     Q_OBJECT

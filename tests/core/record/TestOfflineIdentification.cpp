@@ -8,7 +8,8 @@
 // - synthetic Bouc-Wen data with known parameters, written as CSV in ms, mm and N and read
 //   back through the importer, identifies them: the force of the identified model replayed
 //   over the whole history matches the data (NRMSE bounds below), and the well-identified
-//   parameters k0 and alpha come close to the truth (beta and gamma trade off, METHOD.md 5);
+//   parameters k0 and alpha come close to the truth (beta and gamma trade off:
+//   docs/method.md, Identifiability);
 // - settings overrides: unknown keys and a method the model cannot use are clear errors.
 
 #include "RecordFixture.h"
@@ -183,7 +184,8 @@ void TestOfflineIdentification::importedSyntheticDataIdentifiesKnownParameters_d
     QTest::addColumn<double>("k0AlphaTolerance"); // relative, k0 and alpha
     QTest::addColumn<double>("allTolerance");     // relative, every identified parameter
     // Measured on this data set (noise free, 1000 samples): UKF final NRMSE 2.6 %, k0 +2.3 %,
-    // alpha -3.6 %, the others within 21 % (deltaNu; beta and gamma trade off, METHOD.md 5);
+    // alpha -3.6 %, the others within 21 % (deltaNu; beta and gamma trade off:
+    // docs/method.md, Identifiability);
     // Nelder-Mead (whole-history fit of the generating law) recovers them to < 1e-9. The
     // bounds leave about a factor two (UKF) and orders of magnitude (Nelder-Mead) of margin.
     QTest::newRow("ukf") << QStringLiteral("ukf") << 0.05 << 0.06 << 0.35;

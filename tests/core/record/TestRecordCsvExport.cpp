@@ -4,6 +4,7 @@
 
 #include "RecordFixture.h"
 
+#include "core/identification/MeasuredDataCsv.h"
 #include "core/record/RecordCsvExport.h"
 #include "core/record/RecordReader.h"
 
@@ -53,30 +54,41 @@ bool same(const std::string& text, double x) {
     return std::isnan(x) ? std::isnan(y) : std::memcmp(&x, &y, sizeof x) == 0;
 }
 
+bool near(const std::string& text, double x, double relative) {
+    const double y = std::stod(text);
+    return std::abs(y - x) <= relative * std::abs(x) + 1e-300;
+}
+
+/// Paper condition 3, 2 s, recorded to h5 with a note at step 50.
+bool recordRun(const std::string& h5) {
+    const TestConfig cfg = condition3(2.0);
+    auto test = buildHybridTest(cfg);
+    RecordWriter writer(h5, RunLayout::of(*test), recordStart(cfg));
+    writer.trackAlarms(&test->alarms());
+    test->addObserver(&writer);
+    if (!test->prepare())
+        return false;
+    while (test->step() == HybridTest::StepResult::Advanced)
+        if (test->currentStep() == 50)
+            writer.addNote(test->time(), 50, "valve \"B\" checked, ok");
+    const bool ok = writer.finish();
+    test->removeObserver(&writer);
+    return ok;
+}
+
 } // namespace
 
 class TestRecordCsvExport : public QObject {
     Q_OBJECT
 private slots:
     void valuesEqualTheDatasets();
+    void labUnits();
 };
 
 void TestRecordCsvExport::valuesEqualTheDatasets() {
     QTemporaryDir dir;
     const std::string h5 = dir.filePath("record.h5").toStdString();
-    const TestConfig cfg = condition3(2.0);
-    {
-        auto test = buildHybridTest(cfg);
-        RecordWriter writer(h5, RunLayout::of(*test), recordStart(cfg));
-        writer.trackAlarms(&test->alarms());
-        test->addObserver(&writer);
-        QVERIFY(test->prepare());
-        while (test->step() == HybridTest::StepResult::Advanced)
-            if (test->currentStep() == 50)
-                writer.addNote(test->time(), 50, "valve \"B\" checked, ok");
-        QVERIFY(writer.finish());
-        test->removeObserver(&writer);
-    }
+    QVERIFY(recordRun(h5));
     const RecordData d = RecordReader(h5).data();
     const std::string out = dir.filePath("csv").toStdString();
     std::filesystem::create_directory(out);
@@ -161,6 +173,64 @@ void TestRecordCsvExport::valuesEqualTheDatasets() {
     QCOMPARE(notes.size(), std::size_t(2));
     QCOMPARE(notes[1][2], std::string("valve \"B\" checked, ok"));
     QVERIFY(same(notes[1][0], d.time[50]));
+}
+
+void TestRecordCsvExport::labUnits() {
+    // The same record in in, kip, deg, kip in and ms: headers name those units, every value is
+    // the record's divided by the exact factor (to 1e-15 relative: one division), and
+    // `hsmu replay --import` reads one element's columns back to the record's values.
+    QTemporaryDir dir;
+    const std::string h5 = dir.filePath("record.h5").toStdString();
+    QVERIFY(recordRun(h5));
+    const RecordData d = RecordReader(h5).data();
+    const std::string out = dir.filePath("lab").toStdString();
+    std::filesystem::create_directory(out);
+    const ExportUnits units =
+        parseExportUnits("length=in, force=kip, rotation=deg, moment=kip*in, time=ms");
+    exportRecordCsv(d, out, units);
+    const double kip = 0.45359237 * 9.80665, in = 0.0254, deg = M_PI / 180.0;
+    const auto steps = readCsv(out + "/steps.csv");
+    QCOMPARE(steps[0], (std::vector<std::string>{"step", "time [ms]",
+                                                 "ground_acceleration [in/ms^2]"}));
+    const auto dofs = readCsv(out + "/dofs.csv");
+    QCOMPARE(dofs[0][2], std::string("u DOF 1 [in]"));
+    QCOMPARE(dofs[0][4], std::string("v DOF 1 [in/ms]"));
+    const auto elements = readCsv(out + "/elements.csv");
+    QCOMPARE(elements[0][2], std::string("Element 1 deformation [deg]"));
+    QCOMPARE(elements[0][3], std::string("Element 1 force [kip in]"));
+    const auto updating = readCsv(out + "/updating.csv");
+    QCOMPARE(updating[0][std::size_t(2 + 2 * d.parameters.cols())],
+             std::string("auxiliary_force [kip in]"));
+    for (int i = 1; i < d.rows(); ++i) {
+        const auto& s = steps[std::size_t(i + 1)];
+        QVERIFY(near(s[1], d.time[i] * 1000.0, 1e-15));
+        QVERIFY(near(s[2], d.groundAcceleration[i] / in / 1e6, 1e-15));
+        QVERIFY(near(dofs[std::size_t(i + 1)][2], d.u(i, 0) / in, 1e-15));
+        QVERIFY(near(dofs[std::size_t(i + 1)][4], d.v(i, 0) / in * 1e-3, 1e-15));
+        QVERIFY(near(elements[std::size_t(i + 1)][2], d.deformation(i, 0) / deg, 1e-15));
+        QVERIFY(near(elements[std::size_t(i + 1)][3], d.force(i, 0) / (kip * in), 1e-15));
+    }
+    // Back in: time, Element 1 deformation, force by position (the header gives the units).
+    MeasuredDataOptions o;
+    o.columns = parseMeasuredDataColumns("2,3,4");
+    const SpecimenHistory h = readMeasuredDataCsv(out + "/elements.csv", o);
+    QCOMPARE(h.size(), d.rows());
+    QCOMPARE(h.forceUnits, std::string("kN m"));
+    for (int i = 1; i < d.rows(); ++i) {
+        QVERIFY(std::abs(h.time[std::size_t(i)] - d.time[i]) <= 1e-14 * d.time[i]);
+        QVERIFY(std::abs(h.deformation[std::size_t(i)] - d.deformation(i, 0)) <=
+                1e-14 * std::abs(d.deformation(i, 0)) + 1e-300);
+        QVERIFY(std::abs(h.force[std::size_t(i)] - d.force(i, 0)) <=
+                1e-14 * std::abs(d.force(i, 0)) + 1e-300);
+    }
+    for (const char* bad : {"length=yd", "speed=m/s", "force"}) {
+        try {
+            parseExportUnits(bad);
+            QFAIL(bad);
+        } catch (const std::invalid_argument& e) {
+            QVERIFY2(std::string(e.what()).find("--units:") == 0, e.what());
+        }
+    }
 }
 
 QTEST_APPLESS_MAIN(TestRecordCsvExport)

@@ -1,6 +1,6 @@
-// Online model updating end to end on the paper's frame (presets paper-condition-1/3):
-// the reference / initial / updated protocol's acceptance figures (METHOD.md section 7), the
-// auxiliary model's fit, bounds on every step, no NaN into a numerical element, fracture
+// Online model updating end to end on the paper's frame (presets paper-condition-1/3): the
+// reference / initial / updated protocol's acceptance figures (docs/method.md, The test protocol),
+// the auxiliary model's fit, bounds on every step, no NaN into a numerical element, fracture
 // detection time, a bound changed mid-run, and the diverging-estimator hold.
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"

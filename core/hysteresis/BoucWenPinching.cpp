@@ -1,0 +1,357 @@
+#include "core/hysteresis/BoucWenPinching.h"
+
+#include "core/hysteresis/BoucWenNewton.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace hsmu {
+
+namespace {
+
+using namespace boucwen;
+
+constexpr std::array<const char*, 17> kNames{"k0",      "alpha",   "n",        "beta",   "gamma",
+                                             "A0",      "deltaA",  "deltaNu",  "deltaEta", "uRef",
+                                             "fRef",    "zetaS",   "p",        "q",      "psi",
+                                             "deltaPsi", "lambda"};
+
+// The field at position i of parameterNames(); nullptr for an index out of range.
+double* fieldAt(BoucWenPinchingParameters& p, int i) {
+    BoucWenParameters& b = p.boucWen;
+    PinchingParameters& c = p.pinching;
+    double* fields[] = {&b.k0,       &b.alpha,    &b.n,     &b.beta,  &b.gamma, &b.A0,
+                        &b.deltaA,   &b.deltaNu,  &b.deltaEta, &b.uRef, &b.fRef, &c.zetaS,
+                        &c.p,        &c.q,        &c.psi,   &c.deltaPsi, &c.lambda};
+    return i >= 0 && i < static_cast<int>(kNames.size()) ? fields[i] : nullptr;
+}
+
+int indexOf(const std::string& name) {
+    for (std::size_t i = 0; i < kNames.size(); ++i) {
+        if (name == kNames[i]) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+// zeta1, zeta2 and q zu of P2-P4 at energy e (negative e counts as 0).
+struct Pinch {
+    double zeta1 = 0.0, zeta2 = 1.0, qzu = 0.0;
+};
+
+Pinch pinchAt(const BoucWenPinchingParameters& p, double e) {
+    const PinchingParameters& c = p.pinching;
+    Pinch pinch;
+    if (c.zetaS == 0.0 || c.p == 0.0 || !(e > 0.0)) {
+        return pinch; // zeta1 = 0: no pinching
+    }
+    pinch.zeta1 = -c.zetaS * std::expm1(-c.p * e);
+    pinch.zeta2 = (c.psi + c.deltaPsi * e) * (c.lambda + pinch.zeta1);
+    const Degradation d = degradationAt(p.boucWen, e);
+    const double ratio = d.a / (d.nu * (p.boucWen.beta + p.boucWen.gamma));
+    pinch.qzu = ratio > 0.0 ? c.q * std::pow(ratio, 1.0 / p.boucWen.n) : 0.0;
+    return pinch;
+}
+
+// h of P2 and dh/dz at z for motion in direction s (+1 / -1).
+struct PinchValue {
+    double h, dhdz;
+};
+
+PinchValue pinchValue(const Pinch& pinch, double z, double s) {
+    const double w = z * s - pinch.qzu;
+    const double g = std::exp(-(w * w) / (pinch.zeta2 * pinch.zeta2));
+    return {1.0 - pinch.zeta1 * g, pinch.zeta1 * g * 2.0 * w * s / (pinch.zeta2 * pinch.zeta2)};
+}
+
+// One backward-Euler step of P1 with Eqs 3-6 from (z0, e0), the pinching frozen at e0:
+//   r(z) = z - z0 - dx h(z) Phi(z, e(z)) / eta(e(z)),  e(z) = e0 + (1 - alpha) k0 z dx,
+// Newton from z0 with BoucWen's tolerances and divergence test (BoucWenNewton.h).
+bool pinchedStep(const BoucWenParameters& p, const Pinch& pinch, BoucWenState& state, double dx,
+                 StepLimits& limits) {
+    const double c = (1.0 - p.alpha) * p.k0;
+    const double z0 = state.z, e0 = state.e;
+    const double s = dx < 0.0 ? -1.0 : 1.0;
+    const double dedz = c * dx;
+    double z = z0;
+    for (int iteration = 0; iteration < kMaxNewtonIterations; ++iteration) {
+        const double e = e0 + c * z * dx;
+        const Degradation d = degradationAt(p, e);
+        const double absZ = std::abs(z);
+        const double psi = p.gamma + p.beta * signOf(dx * z);
+        const double absZn = std::pow(absZ, p.n);
+        const double phi = d.a - absZn * psi * d.nu;
+        const double dAbsZn = absZ > 0.0 ? p.n * absZn / absZ * signOf(z) : 0.0;
+        const double dPhi = -p.deltaA * dedz - dAbsZn * psi * d.nu - absZn * psi * p.deltaNu * dedz;
+        const PinchValue hv = pinchValue(pinch, z, s);
+        const double g = hv.h * phi;
+        const double dg = hv.h * dPhi + hv.dhdz * phi;
+        const double r = z - z0 - dx * g / d.eta;
+        const double dEta = p.deltaEta * dedz;
+        const double dr = 1.0 - dx * (dg * d.eta - g * dEta) / (d.eta * d.eta);
+        const double delta = r / dr;
+        z -= delta;
+        if (!std::isfinite(z) || !limits.withinZBound(std::abs(z))) {
+            return false;
+        }
+        if (std::abs(delta) <= kRelativeTolerance * std::max(std::abs(z), std::abs(z0))) {
+            const BoucWenState end{z, e0 + c * z * dx};
+            if (!std::isfinite(end.e)) {
+                return false;
+            }
+            state = end;
+            return true;
+        }
+    }
+    return false;
+}
+
+// BoucWen.cpp's integrateSplit with the pinched step: a sub-step with zeta1 = 0 is BoucWen's
+// step; with zeta1 > 0 it is also halved while |dx| A / eta > zeta2.
+bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, double dx,
+                    int levelsLeft, StepLimits& limits, int& subSteps) {
+    const Pinch pinch = pinchAt(p, state.e);
+    bool withinPinchStep = true;
+    if (pinch.zeta1 > 0.0) {
+        const Degradation d = degradationAt(p.boucWen, state.e);
+        withinPinchStep = std::abs(dx) * std::abs(d.a) <= pinch.zeta2 * d.eta;
+    }
+    if (levelsLeft <= 0 || (limits.withinMaxStep(std::abs(dx)) && withinPinchStep)) {
+        bool converged = false;
+        if (pinch.zeta1 > 0.0) {
+            converged = pinchedStep(p.boucWen, pinch, state, dx, limits);
+        } else {
+            BackwardEuler newton(p.boucWen, state, dx);
+            auto progress = BackwardEuler::Progress::Iterating;
+            while (progress == BackwardEuler::Progress::Iterating) {
+                progress = newton.iterate(limits);
+            }
+            converged = progress == BackwardEuler::Progress::Converged;
+            if (converged) {
+                state = newton.state();
+            }
+        }
+        if (converged) {
+            ++subSteps;
+            return true;
+        }
+        if (levelsLeft <= 0) {
+            return false;
+        }
+    }
+    const double half = 0.5 * dx;
+    return integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps) &&
+           integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps);
+}
+
+BoucWenIncrement integrateAdmissible(const BoucWenPinchingParameters& p, const BoucWenState& from,
+                                     double dx, int maxSubdivisions) {
+    if (!std::isfinite(dx) || !std::isfinite(from.z) || !std::isfinite(from.e)) {
+        return {LawStatus::InvalidInput, from, 0.0, 0};
+    }
+    StepLimits limits(p.boucWen, from);
+    BoucWenState end = from;
+    int subSteps = 0;
+    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, subSteps)) {
+        return {LawStatus::NoConvergence, from, 0.0, 0};
+    }
+    return {LawStatus::Ok, end, 0.0, subSteps};
+}
+
+double slopeWithPinching(const BoucWenPinchingParameters& p, const BoucWenState& s, double dir) {
+    const double slope = slopeAt(p.boucWen, s, dir);
+    const Pinch pinch = pinchAt(p, s.e);
+    return pinch.zeta1 > 0.0 ? pinchValue(pinch, s.z, dir).h * slope : slope;
+}
+
+} // namespace
+
+BoucWenPinching::BoucWenPinching(const BoucWenPinchingParameters& p) : m_p(p) {
+    if (!admissible(p)) {
+        throw std::invalid_argument("BoucWenPinching: parameters are not admissible");
+    }
+    revertToStart();
+}
+
+BoucWenIncrement BoucWenPinching::integrate(const BoucWenPinchingParameters& p,
+                                            const BoucWenState& from, double dx,
+                                            int maxSubdivisions) {
+    if (!admissible(p)) {
+        return {LawStatus::InvalidInput, from, 0.0, 0};
+    }
+    BoucWenIncrement result = integrateAdmissible(p, from, dx, maxSubdivisions);
+    if (result.status == LawStatus::Ok) {
+        result.dzdx = slopeWithPinching(p, result.state, dx < 0.0 ? -1.0 : 1.0);
+    }
+    return result;
+}
+
+bool BoucWenPinching::admissible(const BoucWenPinchingParameters& p) {
+    const PinchingParameters& c = p.pinching;
+    const bool finite = std::isfinite(c.zetaS) && std::isfinite(c.p) && std::isfinite(c.q) &&
+                        std::isfinite(c.psi) && std::isfinite(c.deltaPsi) &&
+                        std::isfinite(c.lambda);
+    return admissibleParameters(p.boucWen) && finite && c.zetaS >= 0.0 && c.zetaS < 1.0 &&
+           c.p >= 0.0 && c.q >= 0.0 && c.q < 1.0 && c.psi > 0.0 && c.deltaPsi >= 0.0 &&
+           c.lambda > 0.0;
+}
+
+double BoucWenPinching::pinchingFactor(const BoucWenPinchingParameters& p, const BoucWenState& s,
+                                       double dir) {
+    const Pinch pinch = pinchAt(p, s.e);
+    return pinch.zeta1 > 0.0 ? pinchValue(pinch, s.z, dir < 0.0 ? -1.0 : 1.0).h : 1.0;
+}
+
+bool BoucWenPinching::setParameters(const BoucWenPinchingParameters& p) {
+    if (!admissible(p)) {
+        return false;
+    }
+    m_p = p;
+    m_fCommitted = forceOf(m_uCommitted / m_p.boucWen.uRef, m_committed);
+    revert();
+    return true;
+}
+
+LawStatus BoucWenPinching::setTrialDeformation(double u) {
+    if (!std::isfinite(u)) {
+        revert();
+        return LawStatus::InvalidInput;
+    }
+    const double dx = (u - m_uCommitted) / m_p.boucWen.uRef;
+    const BoucWenIncrement inc =
+        integrateAdmissible(m_p, m_committed, dx, BoucWen::kDefaultMaxSubdivisions);
+    if (inc.status != LawStatus::Ok) {
+        revert();
+        return inc.status;
+    }
+    m_trial = inc.state;
+    m_uTrial = u;
+    m_dirTrial = dx > 0.0 ? 1.0 : (dx < 0.0 ? -1.0 : m_dirCommitted);
+    m_fTrial = forceOf(u / m_p.boucWen.uRef, m_trial);
+    return LawStatus::Ok;
+}
+
+double BoucWenPinching::initialTangent() const {
+    const BoucWenParameters& b = m_p.boucWen;
+    return b.k0 * (b.alpha + (1.0 - b.alpha) * b.A0) * b.fRef / b.uRef;
+}
+
+void BoucWenPinching::commit() {
+    m_committed = m_trial;
+    m_uCommitted = m_uTrial;
+    m_fCommitted = m_fTrial;
+    m_dirCommitted = m_dirTrial;
+}
+
+void BoucWenPinching::revert() {
+    m_trial = m_committed;
+    m_uTrial = m_uCommitted;
+    m_fTrial = m_fCommitted;
+    m_dirTrial = m_dirCommitted;
+}
+
+void BoucWenPinching::revertToStart() {
+    m_committed = BoucWenState{};
+    m_uCommitted = 0.0;
+    m_fCommitted = 0.0;
+    m_dirCommitted = 1.0;
+    revert();
+}
+
+std::unique_ptr<HysteresisLaw> BoucWenPinching::clone() const {
+    return std::make_unique<BoucWenPinching>(*this);
+}
+
+std::vector<std::string> BoucWenPinching::parameterNames() const {
+    return {kNames.begin(), kNames.end()};
+}
+
+std::optional<double> BoucWenPinching::parameter(const std::string& name) const {
+    BoucWenPinchingParameters p = m_p;
+    const double* field = fieldAt(p, indexOf(name));
+    if (field == nullptr) {
+        return std::nullopt;
+    }
+    return *field;
+}
+
+bool BoucWenPinching::setParameter(const std::string& name, double value) {
+    BoucWenPinchingParameters p = m_p;
+    double* field = fieldAt(p, indexOf(name));
+    if (field == nullptr) {
+        return false;
+    }
+    *field = value;
+    return setParameters(p);
+}
+
+int BoucWenPinching::setParameterValues(std::span<const int> indices,
+                                        std::span<const double> values, bool allOrNothing) {
+    BoucWenPinchingParameters p = m_p;
+    if (allOrNothing) { // judged together, as BoucWen does (BoucWen.h)
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            double* field = fieldAt(p, indices[k]);
+            if (!field) {
+                setParameters(m_p);
+                return static_cast<int>(k);
+            }
+            *field = values[k];
+        }
+        if (!admissible(p)) {
+            // Refused: name the first value that is inadmissible on its own, else the first.
+            int refused = 0;
+            for (std::size_t k = 0; k < indices.size(); ++k) {
+                BoucWenPinchingParameters alone = m_p;
+                *fieldAt(alone, indices[k]) = values[k];
+                if (!admissible(alone)) {
+                    refused = static_cast<int>(k);
+                    break;
+                }
+            }
+            setParameters(m_p); // as a refused by-name set: force re-evaluated, trial dropped
+            return refused;
+        }
+        setParameters(p);
+        return -1;
+    }
+    bool changed = false;
+    int firstRefused = -1;
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        if (double* field = fieldAt(p, indices[k])) {
+            const double previous = *field;
+            *field = values[k];
+            if (admissible(p)) {
+                changed = true;
+                continue;
+            }
+            *field = previous;
+        }
+        if (firstRefused < 0) {
+            firstRefused = static_cast<int>(k);
+        }
+        if (allOrNothing) {
+            setParameters(m_p);
+            return firstRefused;
+        }
+    }
+    if (changed) {
+        setParameters(p);
+    }
+    return firstRefused;
+}
+
+double BoucWenPinching::forceOf(double x, const BoucWenState& s) const {
+    const BoucWenParameters& b = m_p.boucWen;
+    return b.fRef * b.k0 * (b.alpha * x + (1.0 - b.alpha) * s.z);
+}
+
+double BoucWenPinching::tangentOf(const BoucWenState& s, double dir) const {
+    const BoucWenParameters& b = m_p.boucWen;
+    const double dzdx = slopeWithPinching(m_p, s, dir);
+    return b.k0 * (b.alpha + (1.0 - b.alpha) * dzdx) * b.fRef / b.uRef;
+}
+
+} // namespace hsmu

@@ -1,0 +1,252 @@
+#include "core/identification/Calibration.h"
+
+#include "core/hysteresis/HysteresisLaw.h"
+#include "core/hysteresis/LawFactory.h"
+#include "core/identification/HistoryScales.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <numeric>
+
+namespace hsmu {
+
+namespace {
+
+constexpr double kBetaGammaMargin = 1e-3;
+
+/// Replays a law along chosen samples and returns the scaled force residuals.
+class Replay {
+public:
+    Replay(HysteresisLaw& law, std::vector<int> indices, const std::vector<double>& u,
+           const std::vector<double>& f, std::vector<std::size_t> keep, double scale)
+        : m_law(law), m_indices(std::move(indices)), m_u(u), m_f(f), m_keep(std::move(keep)),
+          m_scale(scale) {}
+
+    bool operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+        if (m_law.setParameterValues(m_indices, {x.data(), std::size_t(x.size())}, true) != -1)
+            return false;
+        m_law.revertToStart();
+        r.resize(Eigen::Index(m_keep.size()));
+        for (std::size_t j = 0; j < m_keep.size(); ++j) {
+            const std::size_t k = m_keep[j];
+            if (m_law.setTrialDeformation(m_u[k]) != LawStatus::Ok)
+                return false;
+            m_law.commit();
+            r[Eigen::Index(j)] = (m_law.committedForce() - m_f[k]) / m_scale;
+        }
+        return r.allFinite();
+    }
+
+private:
+    HysteresisLaw& m_law;
+    std::vector<int> m_indices;
+    const std::vector<double>& m_u;
+    const std::vector<double>& m_f;
+    std::vector<std::size_t> m_keep;
+    double m_scale;
+};
+
+struct Candidate {
+    Eigen::VectorXd x;
+    double cost;
+};
+
+} // namespace
+
+void projectBetaGamma(Eigen::VectorXd& x, int iBeta, int iGamma, double fixedBeta,
+                      double fixedGamma) {
+    if (iBeta < 0 && iGamma < 0)
+        return;
+    const double beta = iBeta >= 0 ? x[iBeta] : fixedBeta;
+    const double gamma = iGamma >= 0 ? x[iGamma] : fixedGamma;
+    const double deficit = kBetaGammaMargin - (beta + gamma);
+    if (!(deficit > 0))
+        return;
+    if (iBeta >= 0 && iGamma >= 0) {
+        x[iBeta] += 0.5 * deficit;
+        x[iGamma] += 0.5 * deficit;
+    } else if (iBeta >= 0) {
+        x[iBeta] += deficit;
+    } else {
+        x[iGamma] += deficit;
+    }
+}
+
+std::vector<std::size_t> reducedHistory(const std::vector<double>& u, std::size_t target) {
+    std::vector<std::size_t> keep;
+    if (u.size() <= target || target < 2) {
+        keep.resize(u.size());
+        std::iota(keep.begin(), keep.end(), std::size_t(0));
+        return keep;
+    }
+    const auto [lo, hi] = std::minmax_element(u.begin(), u.end());
+    const std::vector<std::size_t> tps = turningPoints(u, 0.01 * (*hi - *lo));
+    double path = 0.0;
+    std::size_t prev = 0;
+    for (std::size_t tp : tps) {
+        path += std::abs(u[tp] - u[prev]);
+        prev = tp;
+    }
+    path += std::abs(u.back() - u[prev]);
+    const double spacing = path / double(target);
+    std::size_t next = 0; // next turning point to keep
+    keep.push_back(0);
+    double last = u[0];
+    for (std::size_t k = 1; k + 1 < u.size(); ++k) {
+        const bool turning = next < tps.size() && tps[next] == k;
+        if (turning)
+            ++next;
+        if (turning || std::abs(u[k] - last) >= spacing) {
+            keep.push_back(k);
+            last = u[k];
+        }
+    }
+    keep.push_back(u.size() - 1);
+    return keep;
+}
+
+CalibrationResult calibrate(const std::vector<double>& u, const std::vector<double>& f,
+                            const CalibrationSpec& spec) {
+    const auto start = std::chrono::steady_clock::now();
+    CalibrationResult out;
+    const auto done = [&](std::string reason) {
+        out.reason = std::move(reason);
+        out.computeSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return out;
+    };
+    if (u.size() < 3 || u.size() != f.size())
+        return done("the history needs equally many deformations and forces (at least 3)");
+    if (!std::all_of(u.begin(), u.end(), [](double v) { return std::isfinite(v); }) ||
+        !std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); }))
+        return done("the history contains a non-finite value");
+    if (spec.fitted.empty() || spec.starts.empty())
+        return done("no parameter to fit or no start");
+    std::unique_ptr<HysteresisLaw> law;
+    try {
+        law = makeLaw(spec.law, spec.fixed);
+    } catch (const std::exception& e) {
+        return done(e.what());
+    }
+    const auto p = Eigen::Index(spec.fitted.size());
+    std::vector<int> indices;
+    Eigen::VectorXd lower(p), upper(p), typical(p);
+    int iBeta = -1, iGamma = -1;
+    for (Eigen::Index i = 0; i < p; ++i) {
+        const CalibrationSpec::Parameter& q = spec.fitted[std::size_t(i)];
+        const int index = law->parameterIndex(q.name);
+        if (index < 0)
+            return done(spec.law + ": unknown parameter '" + q.name + "'");
+        if (!(q.lower <= q.upper) || !std::isfinite(q.lower) || !std::isfinite(q.upper) ||
+            !(q.typical > 0))
+            return done(q.name + ": the box needs finite lower <= upper and a typical > 0");
+        indices.push_back(index);
+        lower[i] = q.lower;
+        upper[i] = q.upper;
+        typical[i] = q.typical;
+        out.names.push_back(q.name);
+        if (q.name == "beta")
+            iBeta = int(i);
+        if (q.name == "gamma")
+            iGamma = int(i);
+    }
+    const double fixedBeta = law->parameter("beta").value_or(1.0);
+    const double fixedGamma = law->parameter("gamma").value_or(0.0);
+    const LevenbergMarquardt::Projection project = [&](Eigen::VectorXd& x) {
+        projectBetaGamma(x, iBeta, iGamma, fixedBeta, fixedGamma);
+    };
+    double sumF2 = 0.0;
+    for (double v : f)
+        sumF2 += v * v;
+    const double rmsF = std::sqrt(sumF2 / double(f.size()));
+    if (!(rmsF > 0))
+        return done("the measured force is zero throughout");
+
+    // 1. Global phase on the reduced history.
+    const std::vector<std::size_t> reduced = reducedHistory(u, spec.reducedSamples);
+    const Replay coarse(*law, indices, u, f, reduced, rmsF);
+    std::vector<Candidate> candidates;
+    for (const std::vector<double>& s : spec.starts) {
+        if (s.size() != spec.fitted.size())
+            return done("a start has the wrong number of values");
+        const Eigen::VectorXd x0 = Eigen::Map<const Eigen::VectorXd>(s.data(), p);
+        const LevenbergMarquardtResult r =
+            LevenbergMarquardt(spec.global).minimize(coarse, x0, lower, upper, typical, project);
+        ++out.startsTried;
+        out.residualEvaluations += r.residualEvaluations;
+        if (std::isfinite(r.cost))
+            candidates.push_back({r.x, r.cost});
+    }
+    if (candidates.empty())
+        return done("the law could not replay the history from any start");
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+
+    // 2. Local phase on the whole history.
+    std::vector<std::size_t> all(u.size());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    const Replay fine(*law, indices, u, f, all, rmsF);
+    LevenbergMarquardtResult best;
+    best.cost = std::numeric_limits<double>::infinity();
+    const std::size_t polish = std::min(candidates.size(), std::size_t(std::max(spec.polished, 1)));
+    for (std::size_t c = 0; c < polish; ++c) {
+        LevenbergMarquardtResult r = LevenbergMarquardt(spec.local)
+                                         .minimize(fine, candidates[c].x, lower, upper, typical,
+                                                   project);
+        out.residualEvaluations += r.residualEvaluations;
+        if (r.cost < best.cost)
+            best = std::move(r);
+    }
+    if (!std::isfinite(best.cost))
+        return done("the law could not replay the whole history from the best starts");
+
+    // 3. The result and its statistics.
+    Eigen::VectorXd r;
+    fine(best.x, r); // leaves the law at the optimum's parameters
+    for (const std::string& name : law->parameterNames())
+        out.parameters[name] = *law->parameter(name);
+    out.estimate = best.x;
+    out.nrmse = std::sqrt(2.0 * best.cost / double(u.size()));
+    out.rmsError = out.nrmse * rmsF;
+    out.onBound.resize(std::size_t(p));
+    std::vector<Eigen::Index> freeIdx;
+    for (Eigen::Index i = 0; i < p; ++i) {
+        const double tol = 1e-9 * (upper[i] - lower[i]);
+        out.onBound[std::size_t(i)] = best.x[i] <= lower[i] + tol || best.x[i] >= upper[i] - tol;
+        if (!out.onBound[std::size_t(i)])
+            freeIdx.push_back(i);
+    }
+    out.standardDeviation = Eigen::VectorXd::Constant(p, std::nan(""));
+    out.correlation = Eigen::MatrixXd::Constant(p, p, std::nan(""));
+    const auto m = Eigen::Index(freeIdx.size());
+    const double dof = double(u.size()) - double(m);
+    if (m > 0 && dof > 0 && best.jacobian.cols() == p) {
+        Eigen::MatrixXd JF(best.jacobian.rows(), m);
+        for (Eigen::Index k = 0; k < m; ++k)
+            JF.col(k) = best.jacobian.col(freeIdx[std::size_t(k)]) * rmsF; // force units
+        const Eigen::MatrixXd A = JF.transpose() * JF;
+        const double s2 = 2.0 * best.cost * rmsF * rmsF / dof;
+        Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+        if (lu.isInvertible()) {
+            const Eigen::MatrixXd cov = s2 * lu.inverse();
+            for (Eigen::Index a = 0; a < m; ++a) {
+                const Eigen::Index ia = freeIdx[std::size_t(a)];
+                out.standardDeviation[ia] = std::sqrt(std::max(cov(a, a), 0.0));
+                for (Eigen::Index b = 0; b < m; ++b) {
+                    const Eigen::Index ib = freeIdx[std::size_t(b)];
+                    out.correlation(ia, ib) = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
+                }
+            }
+        }
+    }
+    out.ok = true;
+    return done(best.converged ? "converged" : "iteration budget spent");
+}
+
+} // namespace hsmu

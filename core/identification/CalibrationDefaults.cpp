@@ -1,0 +1,199 @@
+#include "core/identification/CalibrationDefaults.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hsmu {
+
+namespace {
+
+bool isBoucWenFamily(const std::string& law) {
+    return law == "boucWen" || law == "boucWenPinching";
+}
+
+using Box = CalibrationSpec::Parameter;
+
+std::vector<Box> boucWenBox(const HistoryScales& s) {
+    const double e = std::max(s.energy, 1.0);
+    return {{"k0", 0.02, 50.0, 1.0},      {"alpha", 0.0, 0.9, 0.05},
+            {"n", 0.2, 10.0, 1.0},        {"beta", -20.0, 20.0, 1.0},
+            {"gamma", -20.0, 20.0, 1.0},  {"deltaNu", 0.0, 20.0 / e, 0.1 / e},
+            {"deltaEta", 0.0, 20.0 / e, 0.1 / e}};
+}
+
+std::vector<Box> pinchingBox(const HistoryScales& s) {
+    const double e = std::max(s.energy, 1.0);
+    return {{"zetaS", 0.0, 0.99, 0.1}, {"p", 0.0, 20.0 / e, 0.1 / e},
+            {"q", 0.0, 0.5, 0.05},     {"psi", 0.01, 2.0, 0.1},
+            {"deltaPsi", 0.0, 20.0 / e, 0.1 / e}, {"lambda", 0.01, 2.0, 0.1}};
+}
+
+std::vector<std::vector<double>> boucWenStarts() {
+    std::vector<std::vector<double>> starts;
+    for (double alpha : {0.02, 0.15})
+        for (double n : {1.0, 2.0, 5.0})
+            for (double share : {0.5, 0.9, 1.4}) {
+                const double sum = std::pow(0.8, -n);
+                starts.push_back({1.0, alpha, n, share * sum, (1.0 - share) * sum, 0.0, 0.0});
+            }
+    return starts;
+}
+
+/// Apply the user's bounds (and keep the typical scale inside the new box).
+void applyBounds(std::vector<Box>& box, const ParameterBoundsMap& user) {
+    for (const auto& [name, b] : user) {
+        auto it = std::find_if(box.begin(), box.end(), [&](const Box& x) { return x.name == name; });
+        if (it == box.end())
+            continue; // fixed parameters: the caller's business (see the request)
+        it->lower = b.lower;
+        it->upper = b.upper;
+        if (std::isfinite(b.lower) && std::isfinite(b.upper) && b.upper > b.lower)
+            it->typical = std::min(it->typical, b.upper - b.lower);
+    }
+}
+
+void restrictTo(std::vector<Box>& box, const std::vector<std::string>& names) {
+    if (names.empty())
+        return;
+    std::vector<Box> kept;
+    for (const std::string& n : names) {
+        auto it = std::find_if(box.begin(), box.end(), [&](const Box& x) { return x.name == n; });
+        if (it == box.end())
+            throw std::invalid_argument("calibration: parameter '" + n +
+                                        "' has no default range; give its bounds");
+        kept.push_back(*it);
+    }
+    box = kept;
+}
+
+/// Starts re-ordered from full (default-box order) vectors to the spec's fitted order.
+std::vector<std::vector<double>> reorder(const std::vector<Box>& defaults,
+                                         const std::vector<std::vector<double>>& full,
+                                         const std::vector<Box>& fitted) {
+    std::vector<std::vector<double>> out;
+    for (const auto& s : full) {
+        std::vector<double> v;
+        for (const Box& f : fitted) {
+            auto it = std::find_if(defaults.begin(), defaults.end(),
+                                   [&](const Box& x) { return x.name == f.name; });
+            v.push_back(it != defaults.end() ? s[std::size_t(it - defaults.begin())]
+                                             : 0.5 * (f.lower + f.upper));
+        }
+        out.push_back(std::move(v));
+    }
+    return out;
+}
+
+} // namespace
+
+CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
+                                       const HistoryScales& scales) {
+    CalibrationSpec spec;
+    spec.law = request.law;
+    std::vector<Box> defaults;
+    std::vector<std::vector<double>> starts;
+    if (isBoucWenFamily(request.law)) {
+        spec.fixed = {{"A0", 1.0},
+                      {"deltaA", 0.0},
+                      {"uRef", request.uRef.value_or(scales.uRef)},
+                      {"fRef", request.fRef.value_or(scales.fRef)}};
+        defaults = boucWenBox(scales);
+        starts = boucWenStarts();
+        if (request.law == "boucWenPinching") {
+            const std::vector<Box> pin = pinchingBox(scales);
+            defaults.insert(defaults.end(), pin.begin(), pin.end());
+            for (auto& s : starts) // no pinching: the starts of the plain law
+                s.insert(s.end(), {0.0, 0.0, 0.1, 0.2, 0.0, 0.5});
+        }
+    } else if (request.law == "bilinear") {
+        const double k = scales.stiffness, f = scales.fRef;
+        defaults = {{"k0", 0.05 * k, 20.0 * k, k}, {"fy", 0.02 * f, 2.0 * f, 0.1 * f},
+                    {"b", 0.0, 0.9, 0.05}};
+        for (double fy : {0.3, 0.6, 0.9})
+            for (double b : {0.02, 0.1})
+                starts.push_back({k, fy * f, b});
+    } else {
+        throw std::invalid_argument("calibration: no default ranges for the law '" +
+                                    request.law + "' (expected boucWen, boucWenPinching or "
+                                    "bilinear)");
+    }
+    std::vector<Box> box = defaults;
+    restrictTo(box, request.fitted);
+    applyBounds(box, request.bounds);
+    spec.fitted = box;
+    spec.starts = reorder(defaults, starts, box);
+    return spec;
+}
+
+CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vector<double>& f,
+                                   const CalibrationRequest& request) {
+    const HistoryScales scales = deriveHistoryScales(u, f);
+    if (!scales.ok && !(request.uRef && request.fRef)) {
+        CalibrationResult r;
+        r.reason = "no scales: " + scales.reason;
+        return r;
+    }
+    if (request.law == "boucWen" && !(request.uRef && request.fRef)) {
+        // The scales only set where the default box sits. A fit that lands far from k0 = 1
+        // (a specimen whose branches leave the reversals much stiffer or softer than the
+        // slope over 10 % of the range says) is repeated once with uRef moved by that k0.
+        CalibrationResult r = calibrate(u, f, defaultCalibrationSpec(request, scales));
+        const double k0 = r.ok ? r.parameters.at("k0") : 1.0;
+        if (!(k0 < 0.5 || k0 > 2.0) || request.uRef)
+            return r;
+        CalibrationRequest moved = request;
+        moved.uRef = scales.uRef / k0;
+        CalibrationResult again = calibrate(u, f, defaultCalibrationSpec(moved, scales));
+        again.residualEvaluations += r.residualEvaluations;
+        again.computeSeconds += r.computeSeconds;
+        again.startsTried += r.startsTried;
+        return again.ok && again.nrmse < r.nrmse ? again : r;
+    }
+    if (request.law != "boucWenPinching")
+        return calibrate(u, f, defaultCalibrationSpec(request, scales));
+    // Pinching: the plain law's optimum first, then the pinching law from it.
+    CalibrationRequest plain = request;
+    plain.law = "boucWen";
+    plain.fitted.clear();
+    ParameterBoundsMap plainBounds;
+    for (const auto& [name, b] : request.bounds)
+        plainBounds[name] = b;
+    plain.bounds = plainBounds;
+    const CalibrationResult base = calibrate(u, f, defaultCalibrationSpec(plain, scales));
+    CalibrationSpec spec = defaultCalibrationSpec(request, scales);
+    if (base.ok) {
+        spec.starts.clear();
+        const std::vector<std::vector<double>> shapes = {
+            {0.0, 0.0, 0.1, 0.2, 0.0, 0.5},  {0.5, 1.0, 0.05, 0.2, 0.0, 0.5},
+            {0.8, 1.0, 0.1, 0.3, 0.0, 0.3},  {0.5, 1.0, 0.2, 0.1, 0.0, 0.2},
+            {0.9, 0.2, 0.0, 0.5, 0.0, 0.5}};
+        for (const auto& shape : shapes) {
+            std::vector<double> s;
+            for (const Box& b : spec.fitted) {
+                if (auto it = base.parameters.find(b.name);
+                    it != base.parameters.end() && b.name != "p" && b.name != "q" &&
+                    b.name != "lambda")
+                    s.push_back(it->second);
+                else {
+                    static const char* names[] = {"zetaS", "p", "q", "psi", "deltaPsi", "lambda"};
+                    double v = 0.5 * (b.lower + b.upper);
+                    for (int i = 0; i < 6; ++i)
+                        if (b.name == names[i])
+                            v = shape[std::size_t(i)] * (i == 1 || i == 4
+                                                             ? 1.0 / std::max(scales.energy, 1.0)
+                                                             : 1.0);
+                    s.push_back(v);
+                }
+            }
+            spec.starts.push_back(std::move(s));
+        }
+        spec.polished = 3;
+    }
+    CalibrationResult pinched = calibrate(u, f, spec);
+    pinched.residualEvaluations += base.residualEvaluations;
+    pinched.computeSeconds += base.computeSeconds;
+    return pinched;
+}
+
+} // namespace hsmu

@@ -1,0 +1,49 @@
+#pragma once
+// CalibrationDefaults: the calibration (Calibration.h) of a law to a history when the user
+// gives no scales, bounds or starts (docs/method.md, "Scaling from the data" and "Default
+// bounds"). For the Bouc-Wen laws the law runs normalized by the history's own scales
+// (HistoryScales.h: fRef the peak force, uRef = fRef / K), so that the normalized k0 is about
+// 1 and the ultimate z about 1, and the default normalized box is
+//   k0 [0.02, 50]   alpha [0, 0.9]   n [0.5, 10]   beta, gamma [-20, 20] (beta + gamma > 0)
+//   deltaNu, deltaEta [0, 20 / max(E, 1)]   (E: the history's normalized path work, so that
+//                                            nu and eta stay below 21 over the history)
+//   A0 = 1, deltaA = 0 fixed (as the paper; A and k0 are not separately identifiable)
+// and, for boucWenPinching, on top: zetaS [0, 0.99], p [0, 20/max(E,1)], q [0, 0.5],
+// psi [0.01, 2], deltaPsi [0, 20/max(E,1)], lambda [0.01, 2].
+// Starts: k0 = 1 with alpha in {0.02, 0.15}, n in {1, 2, 5} and three loop shapes
+// beta / (beta + gamma) in {0.5, 0.9, 1.4} at beta + gamma = 0.8^-n (ultimate z 0.8),
+// no degradation. The pinching law starts from the Bouc-Wen optimum with a few pinching
+// shapes. Bilinear: k0 [0.05 K, 20 K], fy [0.02, 2] x the peak force, b [0, 0.9].
+// A user's bounds replace the defaults name by name; a user's uRef / fRef replace the
+// derived scales.
+// Thread rules: none.
+
+#include "core/identification/Calibration.h"
+#include "core/identification/HistoryScales.h"
+#include "core/updating/ParameterSet.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct CalibrationRequest {
+    std::string law = "boucWen";
+    ParameterBoundsMap bounds;           ///< user bounds, replacing defaults by name
+    std::optional<double> uRef, fRef;    ///< user scales (Bouc-Wen laws)
+    std::vector<std::string> fitted;     ///< the parameters to fit ("": the law's default set)
+};
+
+/// The default spec for `law` on a history with these scales. Throws std::invalid_argument
+/// for a law without defaults or a bound on a parameter that is not fitted.
+CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
+                                       const HistoryScales& scales);
+
+/// The whole default calibration: scales from the data, the default spec, and for the
+/// pinching law a Bouc-Wen fit first that seeds it.
+CalibrationResult calibrateHistory(const std::vector<double>& deformation,
+                                   const std::vector<double>& force,
+                                   const CalibrationRequest& request);
+
+} // namespace hsmu
