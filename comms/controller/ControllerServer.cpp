@@ -110,9 +110,10 @@ struct ControllerServer::Impl final : SessionHost {
         const auto now = Clock::now();
         while (!q.empty() && now - q.front() > kTokenWindow)
             q.pop_front();
-        if (q.empty())
-            tokenFailures.erase(address);
-        return q.size() >= std::size_t(kMaxTokenFailures);
+        const std::size_t failures = q.size();
+        if (failures == 0)
+            tokenFailures.erase(address); // q dangles from here on
+        return failures >= std::size_t(kMaxTokenFailures);
     }
 
     void dropped(ControllerSession& s, const std::string& why) override {

@@ -13,11 +13,13 @@
 #include <QDockWidget>
 #include <QMenu>
 #include <QMenuBar>
+#include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QProgressDialog>
 #include <QSlider>
 #include <QThread>
 #include <QTimer>
@@ -33,19 +35,68 @@ struct ReplayWindow::Outcome {
     QString error;
 };
 
-ReplayWindow* ReplayWindow::open(const QString& path, QWidget* parent, QString* error) {
-    std::shared_ptr<const RecordData> data;
+namespace {
+
+/// The record's data, or nullptr with the reader's message in error. Any thread.
+std::shared_ptr<const RecordData> loadRecord(const QString& path, QString& error) {
     try {
         const RecordReader reader(path.toStdString());
         if (reader.rows() == 0)
             throw std::runtime_error(path.toStdString() + ": the record holds no step");
-        data = std::make_shared<const RecordData>(reader.data());
+        return std::make_shared<const RecordData>(reader.data());
     } catch (const std::exception& e) {
+        error = QString::fromStdString(e.what());
+        return nullptr;
+    }
+}
+
+} // namespace
+
+ReplayWindow* ReplayWindow::open(const QString& path, QWidget* parent, QString* error) {
+    QString why;
+    auto data = loadRecord(path, why);
+    if (!data) {
         if (error)
-            *error = QString::fromStdString(e.what());
+            *error = why;
         return nullptr;
     }
     return new ReplayWindow(std::move(data), path, parent);
+}
+
+ReplayWindow* ReplayWindow::openInBackground(const QString& path, QWidget* parent,
+                                             QString* error) {
+    struct Loaded {
+        std::shared_ptr<const RecordData> data;
+        QString error;
+    };
+    auto loaded = std::make_shared<Loaded>(); // shared: a cancelled worker may outlive us
+    QThread* worker = QThread::create([loaded, path] {
+        loaded->data = loadRecord(path, loaded->error);
+    });
+    QProgressDialog busy(parent); // Qt's own (translated) Cancel button
+    busy.setWindowTitle(tr("Open record"));
+    busy.setLabelText(QFileInfo(path).fileName());
+    busy.setRange(0, 0); // a busy indicator
+    busy.setMinimumDuration(0);
+    busy.setWindowModality(Qt::WindowModal);
+    QEventLoop loop;
+    QObject::connect(worker, &QThread::finished, &loop, &QEventLoop::quit);
+    QObject::connect(worker, &QThread::finished, worker, &QObject::deleteLater);
+    QObject::connect(&busy, &QProgressDialog::canceled, &loop, &QEventLoop::quit);
+    worker->start();
+    busy.show();
+    loop.exec();
+    if (error)
+        error->clear();
+    if (!worker->isFinished() && busy.wasCanceled())
+        return nullptr; // the worker ends within the reader's deadline and deletes itself
+    busy.close();
+    if (!loaded->data) {
+        if (error)
+            *error = loaded->error;
+        return nullptr;
+    }
+    return new ReplayWindow(loaded->data, path, parent);
 }
 
 ReplayWindow* ReplayWindow::openWithDialog(QWidget* parent) {
@@ -54,9 +105,10 @@ ReplayWindow* ReplayWindow::openWithDialog(QWidget* parent) {
     if (path.isEmpty())
         return nullptr;
     QString error;
-    ReplayWindow* window = open(path, parent, &error);
+    ReplayWindow* window = openInBackground(path, parent, &error);
     if (!window) {
-        QMessageBox::critical(parent, tr("Cannot open the record"), error);
+        if (!error.isEmpty())
+            QMessageBox::critical(parent, tr("Cannot open the record"), error);
         return nullptr;
     }
     window->setAttribute(Qt::WA_DeleteOnClose);

@@ -51,7 +51,13 @@ public:
 
     /// A window on the record at path, or nullptr with the reason in *error (never throws).
     static ReplayWindow* open(const QString& path, QWidget* parent, QString* error);
-    /// File dialog, then open() and show (deleted on close); a bad file: an error box.
+    /// open() with the file read on a worker thread while a modal busy dialog (Qt's own
+    /// Cancel button) keeps the GUI responsive; RecordReader fails a damaged file within 5 s.
+    /// nullptr with error set on failure; nullptr with error empty when cancelled (the worker
+    /// then finishes on its own and its result is dropped).
+    static ReplayWindow* openInBackground(const QString& path, QWidget* parent, QString* error);
+    /// File dialog, then openInBackground() and show (deleted on close); a bad file: an error
+    /// box.
     static ReplayWindow* openWithDialog(QWidget* parent);
 
     ~ReplayWindow() override;

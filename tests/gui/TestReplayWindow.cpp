@@ -189,6 +189,11 @@ private slots:
         QString error;
         ReplayWindow::open(text, nullptr, &error);
         QVERIFY2(error.contains(QStringLiteral("not an HSMU record")), qPrintable(error));
+        // The same off the GUI thread (the File > Open path): the error, and a good record.
+        QVERIFY(!ReplayWindow::openInBackground(truncated, nullptr, &error));
+        QVERIFY2(error.startsWith(truncated), qPrintable(error));
+        std::unique_ptr<ReplayWindow> good(ReplayWindow::openInBackground(m_record, nullptr, &error));
+        QVERIFY2(good && good->rowCount() == 201, qPrintable(error));
 
         // The command: exit code 1 and the reason on stderr, no window left open.
         QProcess p;
