@@ -3,7 +3,7 @@
 // reach within 5 % of an independent multi-start least-squares fit of the same law (OpenSees'
 // BoucWen, 7 parameters; figures in docs/validation.md), and the default online identifier
 // (the robust UKF, replayed sample by sample as online) must end within 25 % of the
-// calibration's NRMSE, with at most one divergence (detected and recovered) and with no
+// calibration's NRMSE, without a divergence (HDRB: a known failure, QEXPECT_FAIL) and with no
 // parameter on a bound that the calibration does not also put there.
 // One CTest test per record: the executable takes a data tag (e.g. `calibrates:gill`).
 
@@ -87,15 +87,18 @@ private slots:
         // The online robust UKF.
         QVERIFY2(r.finalNrmse <= 1.25 * best,
                  qPrintable(QString("online NRMSE %1 > 1.25 x %2").arg(r.finalNrmse).arg(best)));
-        // Divergences are detected and recovered from (a restart from a fresh anchor); the
-        // HDRB record still has one restart (at 90.8 s), the others none: at most one.
+        // No divergence. On the HDRB record the filter still diverges (detected, and recovered
+        // by a restart from a fresh anchor, so the final NRMSE above holds): a known failure of
+        // issue 12's acceptance, kept visible here (an unexpected pass fails the test).
         int divergences = 0;
         for (const std::string& m : r.messages)
             if (m.find("UKF diverging") != std::string::npos &&
                 m.find("identification step rejected") == std::string::npos)
                 ++divergences;
         qInfo("  divergences detected and recovered: %d", divergences);
-        QVERIFY2(divergences <= 1, qPrintable(QString("%1 divergences").arg(divergences)));
+        QEXPECT_FAIL("hdrb", "the robust UKF still diverges on HDRB (detected, restarted)",
+                     Continue);
+        QVERIFY2(divergences == 0, qPrintable(QString("%1 divergences").arg(divergences)));
         // No parameter on a bound unless the data put it there: a bound of the default box
         // (CalibrationDefaults.h; the deltas' upper bounds depend on the energy seen, their
         // lower bound 0 does not) is reached online only where the calibration sits on it.
