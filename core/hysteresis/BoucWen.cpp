@@ -88,6 +88,15 @@ BoucWen::BoucWen(const BoucWenParameters& p) : m_p(p) {
     revertToStart();
 }
 
+bool BoucWen::projectBetaGamma(double& beta, double& gamma) {
+    const double deficit = kBetaGammaMargin - (beta + gamma);
+    if (!(deficit > 0.0))
+        return false;
+    beta += 0.5 * deficit;
+    gamma += 0.5 * deficit;
+    return true;
+}
+
 BoucWenIncrement BoucWen::integrate(const BoucWenParameters& p, const BoucWenState& from, double dx,
                                     int maxSubdivisions) {
     BoucWenIncrement result = integrateState(p, from, dx, maxSubdivisions);

@@ -120,6 +120,12 @@ public:
     /// (as by revert()). False, and nothing changes, if p is not admissible.
     bool setParameters(const BoucWenParameters& p);
     static bool admissible(const BoucWenParameters& p);
+    /// The estimators keep beta + gamma at or above this margin (docs/method.md,
+    /// "Admissibility").
+    static constexpr double kBetaGammaMargin = 1e-3;
+    /// Moves (beta, gamma) along (1, 1) onto beta + gamma = kBetaGammaMargin when the sum is
+    /// below it (the nearest such point); true if it moved them.
+    static bool projectBetaGamma(double& beta, double& gamma);
 
     BoucWenState committedState() const { return m_committed; }
     BoucWenState trialState() const { return m_trial; }

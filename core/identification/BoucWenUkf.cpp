@@ -19,18 +19,10 @@ constexpr int kN = static_cast<int>(BoucWenUkfIndex::N);
 constexpr int kDeltaNu = static_cast<int>(BoucWenUkfIndex::DeltaNu);
 constexpr int kDeltaEta = static_cast<int>(BoucWenUkfIndex::DeltaEta);
 constexpr int kFirstParameter = kK0;
-/// beta + gamma is held at or above this (the law needs beta + gamma > 0).
-constexpr double kBetaGammaMargin = 1e-3;
+constexpr double kBetaGammaMargin = BoucWen::kBetaGammaMargin;
 
-/// Moves (beta, gamma) along (1, 1) onto beta + gamma = margin when the sum is below it;
-/// true if it moved them. A box with lower beta + lower gamma > margin never triggers it.
 bool projectAdmissible(double& beta, double& gamma) {
-    const double deficit = kBetaGammaMargin - (beta + gamma);
-    if (!(deficit > 0.0))
-        return false;
-    beta += 0.5 * deficit;
-    gamma += 0.5 * deficit;
-    return true;
+    return BoucWen::projectBetaGamma(beta, gamma);
 }
 
 bool isParameter(BoucWenUkfIndex index) {

@@ -1,5 +1,6 @@
 #include "core/identification/Calibration.h"
 
+#include "core/hysteresis/BoucWen.h"
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
 #include "core/identification/HistoryScales.h"
@@ -17,8 +18,6 @@
 namespace hsmu {
 
 namespace {
-
-constexpr double kBetaGammaMargin = 1e-3;
 
 /// Replays a law along chosen samples and returns the scaled force residuals.
 class Replay {
@@ -65,13 +64,14 @@ void projectBetaGamma(Eigen::VectorXd& x, int iBeta, int iGamma, double fixedBet
         return;
     const double beta = iBeta >= 0 ? x[iBeta] : fixedBeta;
     const double gamma = iGamma >= 0 ? x[iGamma] : fixedGamma;
-    const double deficit = kBetaGammaMargin - (beta + gamma);
+    if (iBeta >= 0 && iGamma >= 0) {
+        BoucWen::projectBetaGamma(x[iBeta], x[iGamma]);
+        return;
+    }
+    const double deficit = BoucWen::kBetaGammaMargin - (beta + gamma);
     if (!(deficit > 0))
         return;
-    if (iBeta >= 0 && iGamma >= 0) {
-        x[iBeta] += 0.5 * deficit;
-        x[iGamma] += 0.5 * deficit;
-    } else if (iBeta >= 0) {
+    if (iBeta >= 0) {
         x[iBeta] += deficit;
     } else {
         x[iGamma] += deficit;

@@ -156,10 +156,6 @@ CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vect
     CalibrationRequest plain = request;
     plain.law = "boucWen";
     plain.fitted.clear();
-    ParameterBoundsMap plainBounds;
-    for (const auto& [name, b] : request.bounds)
-        plainBounds[name] = b;
-    plain.bounds = plainBounds;
     const CalibrationResult base = calibrate(u, f, defaultCalibrationSpec(plain, scales));
     CalibrationSpec spec = defaultCalibrationSpec(request, scales);
     if (base.ok) {
@@ -168,22 +164,23 @@ CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vect
             {0.0, 0.0, 0.1, 0.2, 0.0, 0.5},  {0.5, 1.0, 0.05, 0.2, 0.0, 0.5},
             {0.8, 1.0, 0.1, 0.3, 0.0, 0.3},  {0.5, 1.0, 0.2, 0.1, 0.0, 0.2},
             {0.9, 0.2, 0.0, 0.5, 0.0, 0.5}};
+        // The Bouc-Wen optimum with each pinching shape (zetaS, p, q, psi, deltaPsi, lambda;
+        // the energy rates p and deltaPsi per unit of the history's normalized work).
+        const std::vector<Box> pin = pinchingBox(scales);
+        const double perEnergy = 1.0 / std::max(scales.energy, 1.0);
         for (const auto& shape : shapes) {
             std::vector<double> s;
             for (const Box& b : spec.fitted) {
-                if (auto it = base.parameters.find(b.name);
-                    it != base.parameters.end() && b.name != "p" && b.name != "q" &&
-                    b.name != "lambda")
+                const auto at = std::find_if(pin.begin(), pin.end(),
+                                             [&](const Box& x) { return x.name == b.name; });
+                if (at != pin.end()) {
+                    const std::size_t i = std::size_t(at - pin.begin());
+                    const bool rate = b.name == "p" || b.name == "deltaPsi";
+                    s.push_back(shape[i] * (rate ? perEnergy : 1.0));
+                } else if (auto it = base.parameters.find(b.name); it != base.parameters.end()) {
                     s.push_back(it->second);
-                else {
-                    static const char* names[] = {"zetaS", "p", "q", "psi", "deltaPsi", "lambda"};
-                    double v = 0.5 * (b.lower + b.upper);
-                    for (int i = 0; i < 6; ++i)
-                        if (b.name == names[i])
-                            v = shape[std::size_t(i)] * (i == 1 || i == 4
-                                                             ? 1.0 / std::max(scales.energy, 1.0)
-                                                             : 1.0);
-                    s.push_back(v);
+                } else {
+                    s.push_back(0.5 * (b.lower + b.upper));
                 }
             }
             spec.starts.push_back(std::move(s));

@@ -36,6 +36,16 @@ double& field(BoucWenParameters& p, BoucWenUkfIndex i) {
     }
 }
 
+/// The values of p for the spec's fitted parameters, in its order (a calibration start).
+std::vector<double> startOf(const CalibrationSpec& spec, BoucWenParameters p) {
+    std::vector<double> s;
+    for (const auto& q : spec.fitted)
+        for (BoucWenUkfIndex i : kParams)
+            if (q.name == boucWenUkfIndexName(i))
+                s.push_back(field(p, i));
+    return s;
+}
+
 bool isUkfParameter(const std::string& name) {
     for (BoucWenUkfIndex i : kParams)
         if (name == boucWenUkfIndexName(i))
@@ -171,21 +181,10 @@ IdentificationStatus RobustUkfIdentifier::anchor(bool diverged, bool global) {
         return st;
     }
     CalibrationSpec spec = defaultCalibrationSpec(request, scales);
-    if (m_ukf && !global) { // a local refit: from the anchor (and the estimate below) only
-        std::vector<double> s;
-        for (const auto& q : spec.fitted)
-            for (BoucWenUkfIndex i : kParams)
-                if (q.name == boucWenUkfIndexName(i))
-                    s.push_back(field(m_anchor, i));
-        spec.starts.assign(1, s);
-    }
+    if (m_ukf && !global) // a local refit: from the anchor (and the estimate below) only
+        spec.starts.assign(1, startOf(spec, m_anchor));
     if (m_ukf) { // the current estimate is one more start
-        const BoucWenParameters now = m_ukf->estimate();
-        std::vector<double> s;
-        for (const auto& q : spec.fitted)
-            for (BoucWenUkfIndex i : kParams)
-                if (q.name == boucWenUkfIndexName(i))
-                    s.push_back(field(const_cast<BoucWenParameters&>(now), i));
+        std::vector<double> s = startOf(spec, m_ukf->estimate());
         if (s.size() == spec.fitted.size())
             spec.starts.push_back(std::move(s));
     }
