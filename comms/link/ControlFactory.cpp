@@ -2,6 +2,7 @@
 
 #include "comms/openfresco/AdapterControl.h"
 #include "comms/openfresco/GenericTcpControl.h"
+#include "comms/openfresco/OpenSeesTwinSite.h"
 #include "comms/openfresco/SimAppControl.h"
 
 #include <algorithm>
@@ -39,6 +40,8 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
 
 ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options,
                                   const LinkSpec& link) {
+    // Numerical elements on an OpenSees site, for every front end that builds through comms.
+    of::installOpenSeesTwins({options.connectTimeout, options.stepDeadline});
     const std::string protocol = linkProtocol(address, link);
     if (protocol == "builtin")
         return {};

@@ -13,6 +13,8 @@
 //                        element (comms/openfresco), with link's dataSize, sizes and init
 //                        lines; deadlines from options (connectTimeout, stepDeadline).
 // The returned controls connect in prepare(), i.e. when HybridTest::prepare() runs.
+// Every call also installs the factory of OpenSees twins (numerical elements with a
+// "numericalSite", comms/openfresco/OpenSeesTwinSite.h) with options' connect and step times.
 
 #include "comms/LinkAddress.h"
 #include "comms/link/TcpControl.h"

@@ -62,6 +62,7 @@ struct OfSocket::Impl {
     std::shared_ptr<asio::io_context> io = std::make_shared<asio::io_context>(1);
     std::unique_ptr<tcp::socket> socket = std::make_unique<tcp::socket>(*io);
     std::function<bool()> cancel;
+    std::string lineBuffer; ///< readLine(): bytes read past the last line
     bool eof = false, timedOut = false;
     std::string peer;
 
@@ -92,6 +93,7 @@ struct OfSocket::Impl {
         io->restart();
         io->run(); // the aborted handler runs here, before its captures go out of scope
         peer.clear();
+        lineBuffer.clear();
     }
 };
 
@@ -345,6 +347,62 @@ bool OfListener::accept(OfSocket& out, double timeout, std::string& error) {
     }
     out.d->configure();
     return true;
+}
+
+bool OfSocket::readLine(std::string& line, std::size_t maxBytes, double timeout,
+                        std::string& error) {
+    d->eof = d->timedOut = false;
+    if (!isOpen()) {
+        error = "not connected";
+        return false;
+    }
+    const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                             std::chrono::duration<double>(timeout));
+    for (;;) {
+        if (const auto nl = d->lineBuffer.find('\n'); nl != std::string::npos) {
+            line.assign(d->lineBuffer, 0, nl);
+            d->lineBuffer.erase(0, nl + 1);
+            if (!line.empty() && line.back() == '\r')
+                line.pop_back();
+            return true;
+        }
+        if (d->lineBuffer.size() > maxBytes) {
+            d->abort();
+            error = "a line longer than " + std::to_string(maxBytes) + " bytes";
+            return false;
+        }
+        char chunk[512];
+        bool done = false;
+        boost::system::error_code result;
+        std::size_t got = 0;
+        d->io->restart();
+        d->socket->async_read_some(asio::buffer(chunk),
+                                   [&](const boost::system::error_code& ec, std::size_t k) {
+                                       result = ec;
+                                       got = k;
+                                       done = true;
+                                   });
+        const double left =
+            timeout > 0.0 ? std::chrono::duration<double>(deadline - Clock::now()).count() : 0.0;
+        const Wait w = timeout > 0.0 && left <= 0.0 ? Wait::TimedOut
+                                                     : runUntil(*d->io, done, timeout > 0.0 ? left : 0.0,
+                                                                d->cancel);
+        if (w != Wait::Done) {
+            d->abort();
+            d->timedOut = w == Wait::TimedOut;
+            error = w == Wait::TimedOut ? "no reply within " + secondsText(timeout) : "cancelled";
+            return false;
+        }
+        if (result) {
+            d->eof = result == asio::error::eof;
+            d->abort();
+            error = d->eof ? "the peer closed the connection"
+                           : "connection lost: " + result.message();
+            return false;
+        }
+        d->lineBuffer.append(chunk, got);
+        d->quickAck();
+    }
 }
 
 } // namespace hsmu::comms::of

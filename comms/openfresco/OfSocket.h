@@ -33,6 +33,11 @@ public:
     bool write(const void* data, std::size_t n, double timeout, std::string& error);
     /// Read exactly n bytes within timeout [s] (timeout <= 0: no deadline, only cancel()).
     bool read(void* data, std::size_t n, double timeout, std::string& error);
+    /// Read up to and including the next '\n' within timeout [s], the line without it (and
+    /// without a '\r') into line; fails on a line longer than maxBytes. Bytes after the line
+    /// stay buffered for the next readLine(): do not mix read() and readLine() on one
+    /// connection (the text protocol of the OpenSees twin, docs/opensees-twins.md).
+    bool readLine(std::string& line, std::size_t maxBytes, double timeout, std::string& error);
     /// Whether the last failed read met an orderly close by the peer (EOF).
     bool closedByPeer() const;
     /// Whether the last failed call ran out of time.

@@ -1,4 +1,5 @@
 #include "core/config/ConfigLoader.h"
+#include "core/config/NumericalSite.h"
 #include "core/config/UpdatingConfig.h"
 #include "core/config/ConfigUnits.h"
 
@@ -133,7 +134,7 @@ int parseDof(const JsonCursor& c, const nlohmann::json& v, const std::vector<Dof
 ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 {
     c.allowOnly({"name", "type", "dof", "dofs", "height", "ei", "material", "experimental",
-                 "specimen", "limits"});
+                 "specimen", "limits", "numericalSite"});
     ElementSpec e;
     e.name = c.string("name");
     e.type = c.string("type");
@@ -170,6 +171,16 @@ ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
             e.limits = parseLimits(c.child("limits"));
     } else if (c.has("specimen")) {
         c.fail("specimen", "only allowed with \"experimental\": true");
+    }
+    if (c.has("numericalSite")) {
+        if (e.experimental)
+            c.fail("numericalSite", "only for numerical elements (a specimen has a controller)");
+        if (std::isfinite(e.ei))
+            c.fail("numericalSite", "not with a flexible column (ei): its spring is evaluated "
+                                    "several times per step, the site once");
+        e.numericalSite = c.string("numericalSite");
+        if (std::string why = numericalSiteProblem(e.numericalSite); !why.empty())
+            c.fail("numericalSite", why);
     }
     return e;
 }

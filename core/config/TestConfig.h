@@ -42,6 +42,9 @@ struct ElementSpec {
     bool experimental = false;
     SpecimenSpec specimen;       ///< when experimental
     SafetyLimits limits;         ///< when experimental
+    /// A numerical element whose force another program computes: "opensees://HOST:PORT" (an
+    /// OpenSees twin, docs/opensees-twins.md); "" = in process.
+    std::string numericalSite;
 };
 
 struct DofSpec {

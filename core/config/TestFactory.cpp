@@ -1,6 +1,7 @@
 #include "core/config/TestFactory.h"
 
 #include "core/config/JsonCursor.h"
+#include "core/config/NumericalSite.h"
 #include "core/config/UpdatingConfig.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/experimental/ExperimentalElement.h"
@@ -34,6 +35,30 @@ std::unique_ptr<ExperimentalControl> buildVirtualSpecimen(const ElementSpec& spe
     return std::make_unique<VirtualSpecimen>(std::move(law), spec.specimen.options);
 }
 
+namespace {
+
+// The law of a numerical element on a site (NumericalSite.h): its model law, computed elsewhere.
+std::unique_ptr<HysteresisLaw> buildSiteLaw(const ElementSpec& e, std::unique_ptr<HysteresisLaw> model,
+                                            const std::string& where)
+{
+    const NumericalSiteFactory factory = numericalSiteFactory();
+    if (!factory)
+        throw ConfigError(where + ": numericalSite " + e.numericalSite +
+                          " needs the console or hsmu run (no site support in this program)");
+    try {
+        auto law = factory(e, std::move(model));
+        if (!law)
+            throw ConfigError("no law was made");
+        return law;
+    } catch (const ConfigError& x) {
+        throw ConfigError(where + ": numericalSite: " + x.what());
+    } catch (const std::exception& x) {
+        throw ConfigError(where + ": numericalSite: " + x.what());
+    }
+}
+
+} // namespace
+
 std::unique_ptr<Structure> buildStructure(const TestConfig& cfg, const ControlFactory& controls)
 {
     auto s = std::make_unique<Structure>();
@@ -44,6 +69,8 @@ std::unique_ptr<Structure> buildStructure(const TestConfig& cfg, const ControlFa
     for (const auto& e : cfg.elements) {
         const std::string where = cfg.sourcePath + ": element '" + e.name + "'";
         auto law = buildLaw(e.material, where);
+        if (!e.numericalSite.empty())
+            law = buildSiteLaw(e, std::move(law), where);
         if (e.experimental) {
             std::vector<DofTerm> terms{{e.dofs[0], 1.0}};
             if (e.type == "rotationalBaseSpring")

@@ -47,6 +47,10 @@ public:
     /// reports for action 13). Equal to trialTangent() for laws whose update is exact.
     virtual double algorithmicTangent() const { return trialTangent(); }
 
+    /// Why the last setTrialDeformation() failed, when the status alone does not say (a law
+    /// computed by another program: "OpenSees twin: no reply within 10 s"); "" otherwise.
+    virtual std::string failureReason() const { return {}; }
+
     virtual double committedDeformation() const = 0;
     virtual double committedForce() const = 0;
 

@@ -36,8 +36,10 @@ std::unique_ptr<SpringElement> SpringElement::rotationalRigid(std::string name, 
 ElementStatus SpringElement::setTrial(const Eigen::VectorXd& uFull)
 {
     const LawStatus s = m_law->setTrialDeformation(kinematicDeformation(uFull));
-    if (s != LawStatus::Ok)
-        return ElementStatus::failure(name() + ": " + lawStatusName(s));
+    if (s != LawStatus::Ok) {
+        const std::string why = m_law->failureReason();
+        return ElementStatus::failure(name() + ": " + (why.empty() ? lawStatusName(s) : why));
+    }
     return ElementStatus::success();
 }
 
