@@ -3,6 +3,7 @@
 #     PREFIX/bin/hsmu, PREFIX/bin/hsmu-controller
 #     PREFIX/share/hsmu/presets/*.json            (also embedded in both programs)
 #     PREFIX/share/hsmu/translations/hsmu_*.qm    (also embedded in hsmu)
+#     PREFIX/share/hsmu/opensees/hsmu_twin.tcl    (the OpenSees side of numerical twins)
 #     PREFIX/share/applications/hsmu.desktop
 #     PREFIX/share/icons/hicolor/scalable/apps/hsmu.svg
 #     PREFIX/share/doc/hsmu/{README.md, *.md}
@@ -26,6 +27,8 @@ install(FILES ${PROJECT_SOURCE_DIR}/resources/desktop/hsmu.desktop
         DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
 install(FILES ${PROJECT_SOURCE_DIR}/resources/desktop/hsmu.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
+install(FILES ${PROJECT_SOURCE_DIR}/opensees/hsmu_twin.tcl
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/hsmu/opensees)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/hsmu)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/hsmu
         FILES_MATCHING PATTERN "*.md")
