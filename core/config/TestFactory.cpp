@@ -44,7 +44,9 @@ std::unique_ptr<HysteresisLaw> buildSiteLaw(const ElementSpec& e, std::unique_pt
     const NumericalSiteFactory factory = numericalSiteFactory();
     if (!factory)
         throw ConfigError(where + ": numericalSite " + e.numericalSite +
-                          " needs the console or hsmu run (no site support in this program)");
+                          " is not supported here (the console and hsmu run support it; "
+                          "elsewhere, e.g. hsmu compare, remove the field to run the element in "
+                          "process)");
     try {
         auto law = factory(e, std::move(model));
         if (!law)

@@ -6,6 +6,7 @@
 //  - the paper's frame, condition 3 (resources/presets/paper-condition-3-opensees.json), Element
 //    2 in OpenSees and updated every step by the UKF, equals the built-in run to 1e-6 of Element
 //    2's peak force (the updates matter: without them the force differs by far more);
+//  - the preset run as the docs say (the helper on its default port, `hsmu run`);
 //  - no helper listening: the test holds with a message naming the site.
 #include "comms/link/ControlFactory.h"
 #include "comms/openfresco/OfSocket.h"
@@ -20,6 +21,7 @@
 
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <algorithm>
@@ -164,7 +166,7 @@ private slots:
             QVERIFY(twin.roundTrips() >= 400);
         }
         endHelper(helper);
-        qInfo("law: max |F_OpenSees - F_in-process| = %.3g of a peak %.4g kN m", worst, peak);
+        qInfo("law: max |F_OpenSees - F_in-process| = %.3g kN m (peak %.4g kN m)", worst, peak);
         QVERIFY(peak > 5.0);
         QVERIFY2(worst <= 1e-9 * peak, qPrintable(QString::number(worst / peak)));
     }
@@ -212,6 +214,78 @@ private slots:
         QVERIFY(updates > 100);
         QVERIFY(frozenDiff > 1e-3 * peak); // the updates change Element 2's force
         QVERIFY2(diff <= 1e-6 * peak, qPrintable(QString::number(diff / peak)));
+    }
+
+    // docs/opensees-twins.md and docs/presets.md verbatim: the helper on its default port, then
+    // `hsmu run paper-condition-3-opensees`; Element 2's force column equals the built-in
+    // preset's (steps.csv, 10 digits) to 1e-6 of its peak.
+    void presetRunsFromTheDocs()
+    {
+#ifndef HSMU_EXE
+        QSKIP("the hsmu executable is not built (HSMU_BUILD_GUI off)");
+#else
+        {
+            comms::of::OfListener probe;
+            std::string e;
+            if (!probe.listen("127.0.0.1", 7790, e))
+                QSKIP("port 7790 (the preset's) is in use here");
+        }
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QProcess helper;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("HSMU_TWIN_PORT");
+        env.remove("HSMU_TWIN_BIND");
+        helper.setProcessEnvironment(env);
+        helper.setProcessChannelMode(QProcess::MergedChannels);
+        helper.setWorkingDirectory(HSMU_SOURCE_DIR);
+        helper.start(opensees::interpreter(), {"opensees/hsmu_twin.tcl"});
+        QVERIFY(helper.waitForStarted(30000));
+        QByteArray out;
+        while (!out.contains("hsmu-twin: listening on 127.0.0.1:7790")) {
+            QVERIFY2(helper.waitForReadyRead(30000), out.constData());
+            out += helper.readAll();
+        }
+        auto hsmuRun = [&](const QString& preset, const QString& outDir) {
+            QProcess p;
+            p.setProcessChannelMode(QProcess::MergedChannels);
+            p.start(HSMU_EXE, {"run", preset, "--out", outDir});
+            const bool done = p.waitForFinished(120000);
+            const QByteArray text = p.readAll();
+            return done && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0
+                       ? QString()
+                       : QString::fromUtf8(text);
+        };
+        const QString twinDir = dir.filePath("twin"), refDir = dir.filePath("ref");
+        const QString twinError = hsmuRun("paper-condition-3-opensees", twinDir);
+        endHelper(helper);
+        QVERIFY2(twinError.isEmpty(), qPrintable(twinError));
+        const QString refError = hsmuRun("paper-condition-3", refDir);
+        QVERIFY2(refError.isEmpty(), qPrintable(refError));
+        auto column = [](const QString& csv, const QString& name) {
+            std::vector<double> v;
+            QFile f(csv);
+            if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+                return v;
+            const QStringList header = QString::fromUtf8(f.readLine()).trimmed().split(',');
+            const qsizetype at = header.indexOf(name);
+            if (at < 0)
+                return v;
+            while (!f.atEnd()) {
+                const QStringList row = QString::fromUtf8(f.readLine()).trimmed().split(',');
+                if (row.size() > at)
+                    v.push_back(row[at].toDouble());
+            }
+            return v;
+        };
+        const auto f = column(twinDir + "/steps.csv", "Element 2_force_kNm");
+        const auto fRef = column(refDir + "/steps.csv", "Element 2_force_kNm");
+        QVERIFY(f.size() > 1000);
+        QCOMPARE(f.size(), fRef.size());
+        const double peak = peakAbs(fRef);
+        qInfo("hsmu run: Element 2 %.3g of the peak from the built-in preset", maxDiff(f, fRef) / peak);
+        QVERIFY(maxDiff(f, fRef) <= 1e-6 * peak);
+#endif
     }
 
     void noHelperHoldsWithTheReason()

@@ -144,6 +144,36 @@ const std::vector<BrokenCase>& brokenCases() {
         {"unknown law name",
          [](json& d) { d["structure"]["elements"][0]["material"]["law"] = "boucwenn"; },
          {"structure.elements[0].material", "boucwenn"}},
+        {"numericalSite on a specimen",
+         [](json& d) { d["structure"]["elements"][0]["numericalSite"] = "opensees://127.0.0.1:7790"; },
+         {"structure.elements[0].numericalSite", "numerical elements"}},
+        {"numericalSite not an opensees address",
+         [](json& d) {
+             auto& e = d["structure"]["elements"][0];
+             e.erase("specimen");
+             e.erase("limits");
+             e["experimental"] = false;
+             e["numericalSite"] = "tcp://127.0.0.1:7790";
+         },
+         {"structure.elements[0].numericalSite", "opensees://HOST:PORT"}},
+        {"numericalSite without a port",
+         [](json& d) {
+             auto& e = d["structure"]["elements"][0];
+             e.erase("specimen");
+             e.erase("limits");
+             e["experimental"] = false;
+             e["numericalSite"] = "opensees://127.0.0.1:0";
+         },
+         {"structure.elements[0].numericalSite", "port"}},
+        {"numericalSite where nothing provides sites (core alone)",
+         [](json& d) {
+             auto& e = d["structure"]["elements"][0];
+             e.erase("specimen");
+             e.erase("limits");
+             e["experimental"] = false;
+             e["numericalSite"] = "opensees://127.0.0.1:7790";
+         },
+         {"element 'Spring'", "numericalSite", "not supported here"}},
         {"inadmissible law parameter",
          [](json& d) { d["structure"]["elements"][0]["material"]["alpha"] = 2.0; },
          {"structure.elements[0].material", "alpha"}},
