@@ -14,7 +14,7 @@
 #
 # The protocol: text lines (LF) over TCP, numbers as the console prints them (%.17g: every
 # double exactly). Requests (console -> OpenSees), each answered by one line unless marked:
-#   hello hsmu-twin 1                          -> ok hsmu-twin 1 OpenSees VERSION
+#   hello hsmu-twin 1 {ELEMENT}                -> ok hsmu-twin 1 OpenSees VERSION
 #   twin LAW NAME VALUE ...                    -> ok twin NAME ...   (builds the model once)
 #   param NAME VALUE ...                       (no answer) updateParameter, committed state kept
 #   commit                                     (no answer) the last trial is accepted
@@ -161,6 +161,8 @@ proc hsmuTwin::handle {line} {
     set args [lrange $line 1 end]
     switch -- $cmd {
         hello {
+            puts "hsmu-twin: the console's element [lindex $args 2]"
+            flush stdout
             return "ok hsmu-twin 1 OpenSees [version]"
         }
         twin {

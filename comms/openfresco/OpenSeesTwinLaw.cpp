@@ -110,7 +110,11 @@ bool OpenSeesTwinLaw::ensureOpen()
         std::this_thread::sleep_for(std::chrono::milliseconds(100)); // refused: not up yet
     }
     std::string answer;
-    if (!request("hello hsmu-twin 1\n", answer))
+    std::string name = m_element; // a Tcl list word: no braces, backslashes or line breaks
+    for (char& c : name)
+        if (c == '{' || c == '}' || c == '\\' || c == '\n' || c == '\r')
+            c = '_';
+    if (!request("hello hsmu-twin 1 {" + name + "}\n", answer))
         return false;
     if (answer.rfind("ok hsmu-twin 1", 0) != 0) {
         m_broken = true;
