@@ -66,6 +66,7 @@ public:
     void resume() override;
     /// Once, when the daq displacement channel is found dead (see the header).
     std::string takeNotice() override;
+    bool connected() const override { return linkUp(); }
     /// Whether the daq displacement read exactly 0 while the target was not 0: from then on a
     /// reading of exactly 0 is replaced by the commanded deformation.
     bool commandedDeformationUsed() const { return m_zeroDisp; }

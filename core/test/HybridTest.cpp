@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace hsmu {
@@ -147,6 +148,12 @@ void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
         x->control().hold(reason);
     raise(AlarmSeverity::Critical, kind, "test held: " + reason);
     m_state = State::Holding;
+    updateSites();
+}
+
+void HybridTest::updateSites()
+{
+    m_siteMonitor->update(siteStatuses(m_specimens), m_state == State::Holding);
 }
 
 void HybridTest::hold(const std::string& reason)
@@ -164,6 +171,7 @@ void HybridTest::resume()
         x->control().resume();
     raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed");
     m_state = State::Running;
+    updateSites();
 }
 
 HybridTest::StepResult HybridTest::step()
@@ -254,6 +262,14 @@ void HybridTest::publish()
         if (e.isExperimental())
             s.commanded = m_step == 0 ? 0.0
                                       : static_cast<const ExperimentalElement&>(e).commandedDeformation();
+    }
+    if (!m_specimens.empty()) {
+        std::vector<SiteStatus> sites = siteStatuses(m_specimens);
+        rec.siteRoundTrips.resize(sites.size());
+        for (std::size_t i = 0; i < sites.size(); ++i)
+            rec.siteRoundTrips[i] = m_step == 0 ? std::numeric_limits<double>::quiet_NaN()
+                                                : sites[i].lastRoundTrip;
+        m_siteMonitor->update(std::move(sites), m_state == State::Holding);
     }
     rec.hasUpdating = m_updater != nullptr;
     if (m_updater && m_step == 0) {
