@@ -195,8 +195,10 @@ struct ControllerServer::Impl final : SessionHost {
             }
         } else if (const auto* c = std::get_if<CommitMsg>(&m))
             reply = st.commit(*c);
-        else if (const auto* h = std::get_if<HoldMsg>(&m))
+        else if (const auto* h = std::get_if<HoldMsg>(&m)) {
             reply = st.hold(h->reason);
+            log("specimen '" + st.name() + "' holds at the console's request: " + h->reason);
+        }
         else if (std::holds_alternative<ResumeMsg>(m))
             reply = st.resume();
         else if (std::holds_alternative<ResetMsg>(m))
