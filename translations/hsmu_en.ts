@@ -2203,13 +2203,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
-    <message numerus="yes">
-        <source> (%n fault(s))</source>
-        <translation>
-            <numerusform> (%n fault(s))</numerusform>
-            <numerusform> (%n fault(s))</numerusform>
-        </translation>
-    </message>
     <message>
         <source>%1: %2 (%3) - %4</source>
         <translation>%1: %2 (%3) - %4</translation>
@@ -2221,6 +2214,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>sites: %1</source>
         <translation>sites: %1</translation>
+    </message>
+    <message>
+        <source> (faults: %1)</source>
+        <translation> (faults: %1)</translation>
     </message>
 </context>
 <context>

@@ -2200,12 +2200,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
-    <message numerus="yes">
-        <source> (%n fault(s))</source>
-        <translation>
-            <numerusform> (%n 次故障)</numerusform>
-        </translation>
-    </message>
     <message>
         <source>%1: %2 (%3) - %4</source>
         <translation>%1: %2 (%3) - %4</translation>
@@ -2217,6 +2211,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>sites: %1</source>
         <translation>站点：%1</translation>
+    </message>
+    <message>
+        <source> (faults: %1)</source>
+        <translation> (故障：%1)</translation>
     </message>
 </context>
 <context>

@@ -12,7 +12,7 @@ QString siteHealthText(const SiteStatus& site) {
                                                            site.lastRoundTrip * 1e3, 0, 'f', 2)
                                                      : QStringLiteral("-");
     if (site.faults > 0)
-        text += SiteHealthLabel::tr(" (%n fault(s))", nullptr, site.faults);
+        text += SiteHealthLabel::tr(" (faults: %1)").arg(site.faults);
     return text;
 }
 

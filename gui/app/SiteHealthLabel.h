@@ -1,6 +1,6 @@
 #pragma once
 // SiteHealthLabel: the status bar's per-site health (sites: docs/configuration.md), e.g.
-// "sites: Lab C 0.62 ms | Lab D down (2 faults)", in the alarm colour when a site's link is
+// "sites: Lab C 0.62 ms | Lab D down (faults: 2)", in the alarm colour when a site's link is
 // down or the test holds. Polls a core SiteMonitor (written by the test's thread) every
 // 250 ms; the tool tip lists every site with its description, elements and last fault.
 // siteHealthText() formats one site for this label and the setup panel's SiteHealthView.
@@ -16,7 +16,7 @@ class QTimer;
 
 namespace hsmu::gui {
 
-/// "0.62 ms", "down", "down (2 faults)", "0.62 ms (1 fault)", "-" before the first step.
+/// "0.62 ms", "down", "down (faults: 2)", "0.62 ms (faults: 1)", "-" before the first step.
 QString siteHealthText(const SiteStatus& site);
 
 class SiteHealthLabel : public QLabel {
