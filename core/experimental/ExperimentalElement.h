@@ -56,6 +56,7 @@ public:
     const ExperimentalControl& control() const { return *m_control; }
 
     std::string site() const override { return m_site; }
+    const std::string& siteName() const { return m_site; }
     void setSite(std::string site) { m_site = std::move(site); }
     /// [s] target sent -> measurement received, of the last measured trial; NaN before.
     double lastRoundTrip() const { return m_roundTrip; }

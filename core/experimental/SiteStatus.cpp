@@ -22,10 +22,10 @@ std::vector<SiteStatus> siteStatuses(const std::vector<ExperimentalElement*>& sp
     std::vector<SiteStatus> sites;
     for (const ExperimentalElement* x : specimens) {
         auto it = std::find_if(sites.begin(), sites.end(),
-                               [&](const SiteStatus& s) { return s.name == x->site(); });
+                               [&](const SiteStatus& s) { return s.name == x->siteName(); });
         if (it == sites.end()) {
             SiteStatus s;
-            s.name = x->site();
+            s.name = x->siteName();
             s.description = x->control().description();
             sites.push_back(std::move(s));
             it = sites.end() - 1;
@@ -42,6 +42,29 @@ std::vector<SiteStatus> siteStatuses(const std::vector<ExperimentalElement*>& sp
     return sites;
 }
 
+void refreshSiteHealth(std::vector<SiteStatus>& sites,
+                       const std::vector<ExperimentalElement*>& specimens)
+{
+    for (SiteStatus& s : sites) {
+        s.connected = true;
+        s.lastRoundTrip = std::numeric_limits<double>::quiet_NaN();
+        s.faults = 0;
+    }
+    for (const ExperimentalElement* x : specimens) {
+        auto it = std::find_if(sites.begin(), sites.end(),
+                               [&](const SiteStatus& s) { return s.name == x->siteName(); });
+        if (it == sites.end())
+            continue;
+        it->connected = it->connected && x->control().connected();
+        const double rt = x->lastRoundTrip();
+        if (std::isfinite(rt) && !(rt <= it->lastRoundTrip))
+            it->lastRoundTrip = rt;
+        it->faults += x->faults();
+        if (!x->lastFault().empty() && x->faults() > 0)
+            it->lastFault = x->name() + ": " + x->lastFault();
+    }
+}
+
 std::vector<std::string> siteNames(const Structure& structure)
 {
     std::vector<std::string> names;
@@ -52,10 +75,10 @@ std::vector<std::string> siteNames(const Structure& structure)
     return names;
 }
 
-void SiteMonitor::update(std::vector<SiteStatus> sites, bool holding)
+void SiteMonitor::update(const std::vector<SiteStatus>& sites, bool holding)
 {
     std::lock_guard lock(m_mutex);
-    m_sites = std::move(sites);
+    m_sites = sites;
     m_holding = holding;
 }
 

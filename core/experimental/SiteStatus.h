@@ -32,12 +32,18 @@ struct SiteStatus {
 std::vector<SiteStatus> siteStatuses(const Structure& structure);
 /// The same from the experimental elements themselves (the test's cached list).
 std::vector<SiteStatus> siteStatuses(const std::vector<ExperimentalElement*>& specimens);
+/// Refresh the per-step fields (connected, lastRoundTrip, faults, lastFault) of sites made by
+/// siteStatuses(specimens) from the same specimens, without rebuilding names, descriptions
+/// and element lists (no allocation in a step without faults).
+void refreshSiteHealth(std::vector<SiteStatus>& sites,
+                       const std::vector<ExperimentalElement*>& specimens);
 /// Just the names, same order (RunLayout::sites, the record's /sites columns).
 std::vector<std::string> siteNames(const Structure& structure);
 
 class SiteMonitor {
 public:
-    void update(std::vector<SiteStatus> sites, bool holding);
+    /// Copy-assigns (reuses the strings' storage: no allocation per step).
+    void update(const std::vector<SiteStatus>& sites, bool holding);
     std::vector<SiteStatus> sites() const;
     /// Whether the test holds (a fault at any site holds every site).
     bool holding() const;

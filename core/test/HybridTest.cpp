@@ -153,7 +153,8 @@ void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
 
 void HybridTest::updateSites()
 {
-    m_siteMonitor->update(siteStatuses(m_specimens), m_state == State::Holding);
+    m_sites = siteStatuses(m_specimens); // descriptions change with (re)connections
+    m_siteMonitor->update(m_sites, m_state == State::Holding);
 }
 
 void HybridTest::hold(const std::string& reason)
@@ -264,12 +265,15 @@ void HybridTest::publish()
                                       : static_cast<const ExperimentalElement&>(e).commandedDeformation();
     }
     if (!m_specimens.empty()) {
-        std::vector<SiteStatus> sites = siteStatuses(m_specimens);
-        rec.siteRoundTrips.resize(sites.size());
-        for (std::size_t i = 0; i < sites.size(); ++i)
+        if (m_sites.empty() || m_step == 0)
+            m_sites = siteStatuses(m_specimens);
+        else
+            refreshSiteHealth(m_sites, m_specimens);
+        rec.siteRoundTrips.resize(m_sites.size());
+        for (std::size_t i = 0; i < m_sites.size(); ++i)
             rec.siteRoundTrips[i] = m_step == 0 ? std::numeric_limits<double>::quiet_NaN()
-                                                : sites[i].lastRoundTrip;
-        m_siteMonitor->update(std::move(sites), m_state == State::Holding);
+                                                : m_sites[i].lastRoundTrip;
+        m_siteMonitor->update(m_sites, m_state == State::Holding);
     }
     rec.hasUpdating = m_updater != nullptr;
     if (m_updater && m_step == 0) {

@@ -105,6 +105,7 @@ private:
     std::unique_ptr<ModelUpdater> m_updater;
     StepRecord m_record;
     std::shared_ptr<SiteMonitor> m_siteMonitor = std::make_shared<SiteMonitor>();
+    std::vector<SiteStatus> m_sites; // rebuilt at prepare, hold and resume; refreshed per step
     void updateSites();
 };
 

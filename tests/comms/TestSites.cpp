@@ -5,6 +5,7 @@
 //   - killing one site's controller (SIGKILL) holds both sites (the other controller logs the
 //     console's hold); restarting it with its state file resumes both, and the test completes
 //     with every step recorded once and the uninterrupted run's result;
+//   - a site in process (builtin) and an OpenFresco SimApp site in one test, same result;
 //   - the configuration's site mapping is checked (names, elements, addresses).
 #include "comms/link/ControlFactory.h"
 #include "core/config/ConfigLoader.h"
@@ -160,6 +161,40 @@ private slots:
         QVERIFY2(labC.log().contains("on specimen 'Bearing C'") &&
                      !labC.log().contains("on specimen 'Bearing D'"),
                  qPrintable(labC.log()));
+    }
+
+    void aVirtualLabAndAnOpenFrescoSiteInOneTest() {
+        // Lab D in process (builtin), Lab C an OpenFresco SimApp element server (hsmu-controller
+        // --protocol simapp serving Bearing C only): the same result as the single process.
+        nlohmann::json cOnly = twoLabs(1.5);
+        for (auto& e : cOnly["structure"]["elements"])
+            if (e["name"] == "Bearing D") {
+                e.erase("experimental");
+                e.erase("specimen");
+                e.erase("limits");
+            }
+        cOnly.erase("sites"); // the controller's own file: Bearing C its only specimen
+        cOnly.erase("updating");
+        const std::string cPath = writeConfig(m_dir.path(), "c-only.json", cOnly);
+        ControllerProcess labC({"--config", QString::fromStdString(cPath), "--pace", "fast",
+                                "--protocol", "simapp"});
+        QVERIFY2(labC.start(), qPrintable(labC.log()));
+        nlohmann::json j = twoLabs(1.5);
+        j["sites"][0]["address"] = "builtin";
+        j["sites"][1]["address"] = "simapp://127.0.0.1:" + std::to_string(labC.port());
+        const std::string path = writeConfig(m_dir.path(), "mixed.json", j);
+        const TestConfig cfg = loadConfigFile(path);
+        const Run mixed = runTest(cfg, makeControlFactory(LinkAddress{}, patientOptions(), cfg));
+        QVERIFY2(mixed.prepared, mixed.error.c_str());
+        QCOMPARE(mixed.state, HybridTest::State::Finished);
+        QVERIFY(everyStepOnce(mixed));
+        const double diff = maxDifference(m_reference, mixed);
+        QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
+        for (std::size_t i = 1; i < mixed.records.size(); ++i)
+            for (double t : mixed.records[i].siteRoundTrips)
+                QVERIFY(t >= 0.0 && t < 30.0);
+        labC.stop();
+        QVERIFY2(labC.log().contains("simapp element server"), qPrintable(labC.log()));
     }
 
     void killingOneLabHoldsBothAndARestartResumesBoth() {
