@@ -5,6 +5,8 @@
 //   BM_LinkStep            a whole step through TcpControl (target, measurement, commit, ack)
 //   BM_HybridTestOverLink  paper-condition-3, 10 s record, as fast as possible over the link,
 //                          against BM_HybridTestInProcess
+//   BM_SitesStep/N         a HybridTest step with N = 1, 2, 4 specimens at N sites, each
+//                          answering 0.5 ms late (--reply-delay): target 4 sites <= 1.3 x 1 site
 //   BM_SimAppRoundTrip     OpenFresco SimApp against hsmu-controller's OfServer (fast pace):
 //                          [3, trial] + [6] -> reply per step, median and p99 (docs/openfresco.md)
 //   BM_SimAppStep          a whole step through SimAppControl (3, 6 -> reply, 5)
@@ -52,14 +54,18 @@ TestConfig condition3(double duration) {
 /// A controller serving the preset's specimen on 127.0.0.1:<any port>, on its own thread.
 class LocalController {
 public:
-    explicit LocalController(bool realTime) {
+    /// specimen: the element served (default: the preset's); replyDelay [s]: the site's added
+    /// latency (ControllerServerOptions::replyDelay).
+    explicit LocalController(bool realTime, const ElementSpec* specimen = nullptr,
+                             double replyDelay = 0.0) {
         const TestConfig cfg = condition3(10.0);
         std::vector<std::unique_ptr<SpecimenStation>> st;
         st.push_back(std::make_unique<SpecimenStation>(
-            0, cfg.elements[0], ControllerSettings{},
+            0, specimen ? *specimen : cfg.elements[0], ControllerSettings{},
             realTime ? SpecimenStation::Pace::RealTime : SpecimenStation::Pace::Fast, nullptr));
         ControllerServerOptions o;
         o.realTime = realTime;
+        o.replyDelay = replyDelay;
         if (const char* prio = std::getenv("HSMU_BENCH_REALTIME_PRIORITY"))
             o.realTimePriority = std::atoi(prio); // SCHED_FIFO for the controller's loop
         o.quiet = true;
@@ -264,6 +270,75 @@ void BM_HybridTestInProcess(benchmark::State& state) {
 }
 BENCHMARK(BM_HybridTestOverLink)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HybridTestInProcess)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+/// N independent Bouc-Wen SDOFs, each specimen at a site of its own.
+nlohmann::json sitesModel(int n) {
+    const nlohmann::json law = {
+        {"law", "boucWen"}, {"k0", 40.0}, {"alpha", 0.05}, {"n", 1.5},       {"gamma", 100.0},
+        {"beta", 300.0},    {"A0", 1.0},  {"deltaA", 0.0}, {"deltaNu", 0.2}, {"deltaEta", 0.2}};
+    nlohmann::json dofs = nlohmann::json::array(), elements = nlohmann::json::array();
+    for (int i = 1; i <= n; ++i) {
+        const std::string k = std::to_string(i);
+        dofs.push_back({{"name", "DOF " + k}, {"mass", 1.0}});
+        elements.push_back({{"name", "Spring " + k},
+                            {"type", "lateralSpring"},
+                            {"dof", "DOF " + k},
+                            {"material", law},
+                            {"experimental", true},
+                            {"specimen", {{"material", law}}}});
+    }
+    return {{"structure", {{"dofs", dofs}, {"elements", elements}}},
+            {"analysis", {{"dt", 0.01}}}};
+}
+
+// Step time of a HybridTest whose N specimens are at N sites (ControllerServers on threads of
+// this process, loopback, fast pace), each site answering 0.5 ms after the target arrives
+// (--reply-delay). Sequential dispatch would cost N x 0.5 ms; send-all / acquire-all costs
+// about one. Counters: median and p99 step time [us], wall clock per step.
+void BM_SitesStep(benchmark::State& state) {
+    const int n = int(state.range(0));
+    constexpr double kReplyDelay = 0.5e-3;
+    nlohmann::json j = sitesModel(n);
+    const TestConfig plain = parseConfig(j, "sites.json");
+    std::vector<std::unique_ptr<LocalController>> labs;
+    for (int i = 0; i < n; ++i) {
+        labs.push_back(std::make_unique<LocalController>(false, &plain.elements[std::size_t(i)],
+                                                         kReplyDelay));
+        j["sites"].push_back({{"name", "Lab " + std::to_string(i + 1)},
+                              {"address", "tcp://127.0.0.1:" + std::to_string(labs.back()->port())},
+                              {"elements", {"Spring " + std::to_string(i + 1)}}});
+    }
+    const TestConfig cfg = parseConfig(j, "sites.json");
+    auto test = buildHybridTest(cfg, makeControlFactory(LinkAddress{}, TcpControlOptions{}, cfg));
+    if (!test->prepare()) {
+        state.SkipWithError(test->lastError().c_str());
+        return;
+    }
+    std::vector<double> times;
+    for (auto _ : state) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto r = test->step();
+        const auto t1 = std::chrono::steady_clock::now();
+        if (r != HybridTest::StepResult::Advanced) {
+            state.SkipWithError(("step: " + test->lastError() +
+                                 (test->alarms().empty() ? "" : test->alarms().back().message))
+                                    .c_str());
+            return;
+        }
+        const double s = std::chrono::duration<double>(t1 - t0).count();
+        state.SetIterationTime(s);
+        times.push_back(s);
+    }
+    state.counters["median_us"] = percentile(times, 0.5) * 1e6;
+    state.counters["p99_us"] = percentile(times, 0.99) * 1e6;
+}
+BENCHMARK(BM_SitesStep)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->UseManualTime()
+    ->Iterations(1000)
+    ->Unit(benchmark::kMicrosecond);
 
 /// An OfServer of the given protocol serving a Bouc-Wen spring (the OpenSees SDOF's), fast pace.
 class SdofOfServer {

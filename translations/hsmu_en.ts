@@ -2194,6 +2194,60 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::SiteHealthLabel</name>
+    <message>
+        <source>down</source>
+        <translation>down</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3) - %4</source>
+        <translation>%1: %2 (%3) - %4</translation>
+    </message>
+    <message>
+        <source>last fault: %1</source>
+        <translation>last fault: %1</translation>
+    </message>
+    <message>
+        <source>sites: %1</source>
+        <translation>sites: %1</translation>
+    </message>
+    <message>
+        <source> (faults: %1)</source>
+        <translation> (faults: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SiteHealthView</name>
+    <message>
+        <source>Sites</source>
+        <translation>Sites</translation>
+    </message>
+    <message>
+        <source>Site</source>
+        <translation>Site</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Specimens</source>
+        <translation>Specimens</translation>
+    </message>
+    <message>
+        <source>Health</source>
+        <translation>Health</translation>
+    </message>
+    <message>
+        <source>the controller above</source>
+        <translation>the controller above</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::TestStatusBar</name>
     <message>
         <source>t = %1 s</source>

@@ -2194,6 +2194,60 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::SiteHealthLabel</name>
+    <message>
+        <source>down</source>
+        <translation>caído</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3) - %4</source>
+        <translation>%1: %2 (%3) - %4</translation>
+    </message>
+    <message>
+        <source>last fault: %1</source>
+        <translation>último fallo: %1</translation>
+    </message>
+    <message>
+        <source>sites: %1</source>
+        <translation>sitios: %1</translation>
+    </message>
+    <message>
+        <source> (faults: %1)</source>
+        <translation> (fallos: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SiteHealthView</name>
+    <message>
+        <source>Sites</source>
+        <translation>Sitios</translation>
+    </message>
+    <message>
+        <source>Site</source>
+        <translation>Sitio</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Dirección</translation>
+    </message>
+    <message>
+        <source>Specimens</source>
+        <translation>Probetas</translation>
+    </message>
+    <message>
+        <source>Health</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>the controller above</source>
+        <translation>el controlador de arriba</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::TestStatusBar</name>
     <message>
         <source>t = %1 s</source>

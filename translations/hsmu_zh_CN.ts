@@ -2191,6 +2191,60 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::SiteHealthLabel</name>
+    <message>
+        <source>down</source>
+        <translation>断开</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3) - %4</source>
+        <translation>%1: %2 (%3) - %4</translation>
+    </message>
+    <message>
+        <source>last fault: %1</source>
+        <translation>最近故障：%1</translation>
+    </message>
+    <message>
+        <source>sites: %1</source>
+        <translation>站点：%1</translation>
+    </message>
+    <message>
+        <source> (faults: %1)</source>
+        <translation> (故障：%1)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SiteHealthView</name>
+    <message>
+        <source>Sites</source>
+        <translation>站点</translation>
+    </message>
+    <message>
+        <source>Site</source>
+        <translation>站点</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Specimens</source>
+        <translation>试件</translation>
+    </message>
+    <message>
+        <source>Health</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>the controller above</source>
+        <translation>上方的控制器</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::TestStatusBar</name>
     <message>
         <source>t = %1 s</source>

@@ -124,6 +124,9 @@ bool ControllerApp::start(std::string& error) {
         if (m_cmd.realTimePriority > 0)
             std::fprintf(stderr, "hsmu-controller: --realtime-priority applies to the native "
                                  "protocol only; ignored\n");
+        if (m_cmd.replyDelay > 0.0)
+            std::fprintf(stderr, "hsmu-controller: --reply-delay applies to the native "
+                                 "protocol only; ignored\n");
         m_ofServer = std::make_unique<OfServer>(o, std::move(stations));
         if (!m_ofServer->listen(error))
             return false;
@@ -138,6 +141,7 @@ bool ControllerApp::start(std::string& error) {
         o.realTime = !m_cmd.fast;
         o.realTimePriority = m_cmd.realTimePriority;
         o.quiet = m_cmd.quiet;
+        o.replyDelay = m_cmd.replyDelay;
         m_server = std::make_unique<ControllerServer>(o, std::move(stations));
         if (!m_server->listen(error))
             return false;

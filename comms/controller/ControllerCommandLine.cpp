@@ -10,7 +10,7 @@ const char* ControllerCommandLine::usage() {
     return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR] "
            "[--pace realtime|fast] [--token-file F] [--state FILE] [--quiet]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
-           "[--simapp-site] [--realtime-priority P]\n"
+           "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "  --config FILE   the console's test configuration (JSON) or a preset name\n"
            "                  (e.g. paper-condition-3); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
@@ -29,7 +29,11 @@ const char* ControllerCommandLine::usage() {
            "  --simapp-site   SimApp: answer as a site server (no replies to actions 12-15)\n"
            "  --realtime-priority P\n"
            "                  native protocol, real-time pace: run the 1024 Hz loop under\n"
-           "                  SCHED_FIFO priority P (1..99; needs root or CAP_SYS_NICE)\n";
+           "                  SCHED_FIFO priority P (1..99; needs root or CAP_SYS_NICE)\n"
+           "  --reply-delay MS\n"
+           "                  native protocol: send every measurement MS milliseconds\n"
+           "                  (0..1000) after its target arrived, like a distant lab (tests\n"
+           "                  and benchmarks of sites; never for a real specimen)\n";
 }
 
 std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, const char* const* argv,
@@ -81,6 +85,16 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
                 return std::nullopt;
             }
             c.realTimePriority = static_cast<int>(p);
+        } else if (a == "--reply-delay") {
+            if (!value(v))
+                return std::nullopt;
+            char* end = nullptr;
+            const double ms = std::strtod(v.c_str(), &end);
+            if (v.empty() || *end != '\0' || !(ms >= 0.0 && ms <= 1000.0)) {
+                error = "--reply-delay: expected 0..1000 milliseconds, found '" + v + "'";
+                return std::nullopt;
+            }
+            c.replyDelay = ms * 1e-3;
         } else if (a == "--config") {
             if (!value(c.config))
                 return std::nullopt;

@@ -31,6 +31,7 @@ struct ControllerCommandLine {
     int dataSize = 0;        ///< OpenFresco doubles per frame; 0 = controller.dataSize (256)
     bool siteServer = false; ///< SimApp: behave as a site server (no replies to 12-15)
     int realTimePriority = 0; ///< native, real-time pace: SCHED_FIFO priority 1..99; 0 = normal
+    double replyDelay = 0.0;  ///< --reply-delay MS, in seconds (native; tests and benchmarks)
 
     /// nullopt with a sentence in error when the arguments are wrong.
     static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,

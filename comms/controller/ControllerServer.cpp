@@ -181,10 +181,24 @@ struct ControllerServer::Impl final : SessionHost {
             if (opt.realTime)
                 catchUp(); // the ticks due before this target arrived come first
             reply = st.target(*t);
+            if (opt.replyDelay > 0.0 && reply) {
+                // Test setting: the measurement leaves replyDelay after the target came.
+                auto timer = std::make_shared<asio::steady_timer>(
+                    io, std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(opt.replyDelay)));
+                timer->async_wait([timer, self = s.shared_from_this(),
+                                   measured = std::move(*reply)](const boost::system::error_code& ec) {
+                    if (!ec)
+                        self->send(measured);
+                });
+                reply.reset();
+            }
         } else if (const auto* c = std::get_if<CommitMsg>(&m))
             reply = st.commit(*c);
-        else if (const auto* h = std::get_if<HoldMsg>(&m))
+        else if (const auto* h = std::get_if<HoldMsg>(&m)) {
             reply = st.hold(h->reason);
+            log("specimen '" + st.name() + "' holds at the console's request: " + h->reason);
+        }
         else if (std::holds_alternative<ResumeMsg>(m))
             reply = st.resume();
         else if (std::holds_alternative<ResetMsg>(m))

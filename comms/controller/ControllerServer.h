@@ -30,6 +30,10 @@ struct ControllerServerOptions {
     /// (or an rtprio limit); if refused, a log line and normal scheduling.
     int realTimePriority = 0;
     bool quiet = false; ///< no session log lines on stderr
+    /// Test and benchmark setting (hsmu-controller --reply-delay): every measurement is sent
+    /// this many seconds after its target arrived (an asio timer: the loop keeps running), as
+    /// a remote lab's latency would delay it. 0 (default): at once.
+    double replyDelay = 0.0;
 };
 
 struct ControllerStatistics {

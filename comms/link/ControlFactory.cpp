@@ -4,9 +4,11 @@
 #include "comms/openfresco/GenericTcpControl.h"
 #include "comms/openfresco/OpenSeesTwinSite.h"
 #include "comms/openfresco/SimAppControl.h"
+#include "core/config/JsonCursor.h"
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <random>
 
 namespace hsmu::comms {
@@ -72,6 +74,38 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
         o.sessionId = newSessionId();
     return [address, o](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
         return std::make_unique<TcpControl>(address.host, address.port, spec.name, spec.limits, o);
+    };
+}
+
+ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options,
+                                  const TestConfig& cfg) {
+    ControlFactory fallback = makeControlFactory(address, options, cfg.link);
+    if (cfg.sites.empty())
+        return fallback;
+    std::map<std::string, ControlFactory> bySite;
+    for (const SiteSpec& site : cfg.sites) {
+        std::string error;
+        const auto a = LinkAddress::parse(site.address, &error);
+        if (!a)
+            throw ConfigError(cfg.sourcePath + ": sites '" + site.name + "': address: " + error);
+        TcpControlOptions o = options;
+        o.sessionId = 0; // one console session per site
+        if (!site.token.empty())
+            o.token = site.token;
+        if (site.connectTimeout)
+            o.connectTimeout = *site.connectTimeout;
+        if (site.stepDeadline)
+            o.stepDeadline = *site.stepDeadline;
+        ControlFactory f = makeControlFactory(*a, o, site.link);
+        if (!f)
+            f = [](const ElementSpec& spec) { return buildVirtualSpecimen(spec); };
+        bySite.emplace(site.name, std::move(f));
+    }
+    return [fallback, bySite](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
+        if (!spec.site.empty())
+            if (auto it = bySite.find(spec.site); it != bySite.end())
+                return it->second(spec);
+        return fallback ? fallback(spec) : buildVirtualSpecimen(spec);
     };
 }
 

@@ -27,6 +27,15 @@ ControlFactory makeControlFactory(const LinkAddress& address,
 /// The same, with the configuration's link section choosing the protocol for tcp://.
 ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options,
                                   const LinkSpec& link);
+/// The configuration's sites (cfg.sites, docs/configuration.md "Sites"): each experimental
+/// element a site lists gets a control for that site's address, protocol, sizes, token
+/// (options.token otherwise) and timeouts (options' otherwise); one session id per site.
+/// A site at "builtin" gets in-process VirtualSpecimens. Every other experimental element
+/// belongs to the default site: address with cfg.link, as makeControlFactory(address,
+/// options, cfg.link). Without sites this is exactly that factory (empty for builtin).
+/// Throws ConfigError naming the configuration and the site when an address does not parse.
+ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options,
+                                  const TestConfig& cfg);
 /// The protocol a link to address speaks: "native", "simapp" or "generictcp" ("builtin" for
 /// the in-process specimens).
 std::string linkProtocol(const LinkAddress& address, const LinkSpec& link);

@@ -70,7 +70,11 @@ struct LinkClient::Impl {
     // shared with the caller
     mutable std::mutex mu;
     std::condition_variable cv;
-    std::deque<Message> inbox;
+    struct Arrived {
+        Message message;
+        Clock::time_point at;
+    };
+    std::deque<Arrived> inbox;
     bool open = false;
     std::string reason;
 
@@ -132,7 +136,7 @@ struct LinkClient::Impl {
                     if (std::holds_alternative<HeartbeatMsg>(f.message))
                         continue;
                     std::lock_guard lock(mu);
-                    inbox.push_back(std::move(f.message));
+                    inbox.push_back({std::move(f.message), Clock::now()});
                     cv.notify_all();
                 }
                 read(c);
@@ -308,11 +312,14 @@ bool LinkClient::sendRaw(std::vector<std::uint8_t> bytes, std::string& error) {
     return true;
 }
 
-std::optional<Message> LinkClient::receive(double timeout, std::string& error) {
+std::optional<Message> LinkClient::receive(double timeout, std::string& error,
+                                           std::chrono::steady_clock::time_point* arrived) {
     std::unique_lock lock(d->mu);
     d->cv.wait_for(lock, seconds(timeout), [&] { return !d->inbox.empty() || !d->open; });
     if (!d->inbox.empty()) {
-        Message m = std::move(d->inbox.front());
+        Message m = std::move(d->inbox.front().message);
+        if (arrived)
+            *arrived = d->inbox.front().at;
         d->inbox.pop_front();
         return m;
     }

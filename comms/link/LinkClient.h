@@ -12,6 +12,7 @@
 
 #include "comms/protocol/Messages.h"
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -46,8 +47,11 @@ public:
     bool sendRaw(std::vector<std::uint8_t> bytes, std::string& error);
     /// The next message other than Heartbeat, waiting at most timeout [s]. Messages that
     /// arrived before the link closed are still delivered. nullopt with error set on timeout
-    /// ("no reply within ...") or a closed link (its reason).
-    std::optional<Message> receive(double timeout, std::string& error);
+    /// ("no reply within ...") or a closed link (its reason). arrived (optional): when the io
+    /// thread decoded it (steady clock), for round-trip times that do not count the wait
+    /// before the caller asked.
+    std::optional<Message> receive(double timeout, std::string& error,
+                                   std::chrono::steady_clock::time_point* arrived = nullptr);
 
 private:
     struct Impl;

@@ -187,6 +187,8 @@ ControlResult TcpControl::setTarget(double d) {
         return ControlResult::fault("link to " + where() + " is down (" + m_linkError +
                                     "); resume to reconnect");
     std::string error;
+    m_commitSent = false;
+    m_targetSentAt = std::chrono::steady_clock::now();
     if (!m_link->send(TargetMsg{m_committed + 1, d}, error))
         return linkFault(error);
     m_sentTarget = d;
@@ -199,7 +201,8 @@ ControlResult TcpControl::measure(ControlMeasurement& out) {
         return ControlResult::fault("TCP link: measure() without a target");
     m_awaitingMeasurement = false;
     std::string error;
-    const auto m = m_link->receive(m_opt.stepDeadline, error);
+    std::chrono::steady_clock::time_point arrived{};
+    const auto m = m_link->receive(m_opt.stepDeadline, error, &arrived);
     if (!m)
         return linkFault("no measurement for step " + std::to_string(m_committed + 1) + ": " +
                          error);
@@ -213,16 +216,27 @@ ControlResult TcpControl::measure(ControlMeasurement& out) {
         return linkFault("measurement for step " + std::to_string(mm->step) + ", expected " +
                          std::to_string(m_committed + 1));
     m_last = *mm;
+    m_latency = std::chrono::duration<double>(arrived - m_targetSentAt).count();
     out.deformation = mm->deformation;
     out.force = mm->force;
     return ControlResult::success();
 }
 
+ControlResult TcpControl::beginCommit() {
+    m_commitSent = false;
+    std::string error;
+    if (m_link->isOpen() && m_link->send(CommitMsg{m_committed + 1}, error))
+        m_commitSent = true;
+    return ControlResult::success();
+}
+
 ControlResult TcpControl::commit() {
+    const bool sent = m_commitSent;
+    m_commitSent = false;
     if (!m_link->isOpen())
         return recoverCommit("link down (" + m_linkError + ")");
     std::string error;
-    if (!m_link->send(CommitMsg{m_committed + 1}, error))
+    if (!sent && !m_link->send(CommitMsg{m_committed + 1}, error))
         return recoverCommit(error);
     ControlResult r = await(MessageType::Commit, m_opt.stepDeadline);
     if (r.ok) {
@@ -276,6 +290,7 @@ ControlResult TcpControl::recoverCommit(const std::string& why) {
 }
 
 void TcpControl::hold(const std::string& reason) {
+    m_commitSent = false;
     m_holding = true;
     m_holdReason = reason;
     m_awaitingMeasurement = false;

@@ -25,7 +25,9 @@
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"
 
+#include <chrono>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -58,9 +60,15 @@ public:
     ControlResult prepare(double dt) override;
     ControlResult setTarget(double d) override;
     ControlResult measure(ControlMeasurement& out) override;
+    /// Sends the commit (no wait); commit() then awaits its acknowledgement. A failed send is
+    /// left to commit(), which settles it (reconnect) as for any lost commit.
+    ControlResult beginCommit() override;
     ControlResult commit() override;
     void hold(const std::string& reason) override;
     void resume() override;
+    bool connected() const override { return linkUp(); }
+    /// Target sent -> measurement frame decoded on the link's io thread [s].
+    double replyLatency() const override { return m_latency; }
 
     /// Close any connection and connect again (up to reconnectAttempts attempts).
     ControlResult reconnect();
@@ -99,6 +107,9 @@ private:
     bool m_connectFailed = false;
     std::uint64_t m_controllerCommitted = 0; // as of the last hello-ack
     double m_sentTarget = 0.0;
+    bool m_commitSent = false;
+    std::chrono::steady_clock::time_point m_targetSentAt{};
+    double m_latency = std::numeric_limits<double>::quiet_NaN();
 };
 
 } // namespace hsmu::comms

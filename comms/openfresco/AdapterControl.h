@@ -7,7 +7,7 @@
 // converged state. Its exact action sequence, which this client keeps:
 //   connect, sizes header (ctrl disp 1, daq disp 1, daq force 1; no probe: the adapter
 //   accepts nothing else before the first trial)
-//   per step  setTarget(d): [3, d]   measure(): [10] -> [daq disp, daq force]   commit(): nothing
+//   per step  setTarget(d): [3, d] [10]   measure(): -> [daq disp, daq force]   commit(): nothing
 //   end       [99] (the adapter then ends OpenSees: "The Simulation has successfully completed")
 // Any other action makes the adapter exit OpenSees ("wrong action received: expecting 3"). A
 // step is final once the next trial is sent (no commit, no revert): a measured step cannot be

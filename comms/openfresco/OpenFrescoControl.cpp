@@ -187,6 +187,13 @@ ControlResult OpenFrescoControl::setTarget(double d) {
             static_cast<double>(m_committed + 1) * m_dt;
     if (ControlResult r = sendRequest(static_cast<int>(Action::SetTrialResponse), ctrl); !r.ok)
         return r;
+    // The response is asked for at once (the same frames, in the same order, as asking in
+    // measure()), so that with several sites every site works while the others are asked:
+    // measure() only reads the reply (docs/configuration.md "Sites").
+    const Action ask =
+        m_protocol == OfProtocol::Adapter ? Action::GetForce : Action::GetDaqResponse;
+    if (ControlResult r = sendRequest(static_cast<int>(ask), {}); !r.ok)
+        return r;
     m_awaitingMeasurement = true;
     m_target = d;
     return ControlResult::success();
@@ -196,10 +203,6 @@ ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
     if (!m_awaitingMeasurement)
         return ControlResult::fault(where() + ": measure() without a target");
     m_awaitingMeasurement = false;
-    const Action ask =
-        m_protocol == OfProtocol::Adapter ? Action::GetForce : Action::GetDaqResponse;
-    if (ControlResult r = sendRequest(static_cast<int>(ask), {}); !r.ok)
-        return r;
     std::string error;
     m_buffer.resize(static_cast<std::size_t>(m_opt.sizes.dataSize) * sizeof(double));
     if (!m_socket->read(m_buffer.data(), m_buffer.size(), m_opt.stepDeadline, error))

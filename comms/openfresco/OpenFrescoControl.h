@@ -8,8 +8,9 @@
 // OfServer) therefore fails prepare() with a message naming the sizes, instead of a stream
 // that desynchronizes later. The negotiated sizes are logged on stderr at connect.
 // Per step:
-//   setTarget(d)  [3, d at ctrl disp, zeros, time at ctrl time when sized]   (no reply)
-//   measure()     [6] -> reply: deformation = daq disp[0], force = daq force[0]. A daq disp of
+//   setTarget(d)  [3, d at ctrl disp, zeros, time at ctrl time when sized]   (no reply), then
+//                 at once [6] (so that several sites work in parallel: measure() only reads)
+//   measure()     the reply to [6]: deformation = daq disp[0], force = daq force[0]. A daq disp of
 //                 exactly 0 while the target is not 0 is a dead channel (OpenFresco's element
 //                 servers always answer 0: ExperimentalElement::getDisp returns zeros): the
 //                 link warns once (stderr and takeNotice(), which the test records as an
@@ -66,6 +67,7 @@ public:
     void resume() override;
     /// Once, when the daq displacement channel is found dead (see the header).
     std::string takeNotice() override;
+    bool connected() const override { return linkUp(); }
     /// Whether the daq displacement read exactly 0 while the target was not 0: from then on a
     /// reading of exactly 0 is replaced by the commanded deformation.
     bool commandedDeformationUsed() const { return m_zeroDisp; }

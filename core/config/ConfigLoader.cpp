@@ -196,7 +196,7 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
     // "controller": the link fields here (LinkConfig); the rest is hsmu-controller's
     // (comms/controller/ControllerSettings.h).
     root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis",
-                    "controller", "updating"});
+                    "controller", "sites", "updating"});
     TestConfig cfg;
     cfg.sourcePath = sourceName;
     cfg.raw = document;
@@ -260,6 +260,10 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
                 elements.at(i).fail("name", "duplicate element name '" +
                                                 cfg.elements.back().name + "'");
     }
+    cfg.sites = parseSites(
+        root, sourceName.empty() ? std::string()
+                                 : std::filesystem::path(sourceName).parent_path().string(),
+        cfg.link, cfg.elements);
 
     if (root.has("groundMotion")) {
         const JsonCursor g = root.child("groundMotion");

@@ -24,11 +24,14 @@ std::array<int, 5> parseSizes(const JsonCursor& c, std::array<int, 5> sizes) {
 } // namespace
 
 LinkSpec parseLinkSpec(const JsonCursor& root, const std::string& baseDir) {
-    LinkSpec s;
     if (!root.has("controller"))
-        return s;
+        return LinkSpec{};
     const JsonCursor c = root.child("controller");
     c.requireObject();
+    return parseLinkFields(c, baseDir, LinkSpec{});
+}
+
+LinkSpec parseLinkFields(const JsonCursor& c, const std::string& baseDir, LinkSpec s) {
     s.protocol = c.string("protocol", s.protocol);
     if (s.protocol != "native" && s.protocol != "simapp" && s.protocol != "generictcp")
         c.fail("protocol", std::string("expected ") + kLinkProtocols);

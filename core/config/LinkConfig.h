@@ -29,5 +29,8 @@ inline constexpr const char* kLinkProtocols = "native, simapp or generictcp";
 /// Read the link fields of root.controller (defaults when absent). baseDir resolves a relative
 /// initFile. Throws ConfigError naming the field.
 LinkSpec parseLinkSpec(const JsonCursor& root, const std::string& baseDir);
+/// The link fields (protocol, dataSize, ctrlSizes, daqSizes, initFile) of the object at c,
+/// starting from defaults (a site in "sites" starts from the controller section's).
+LinkSpec parseLinkFields(const JsonCursor& c, const std::string& baseDir, LinkSpec defaults);
 
 } // namespace hsmu

@@ -4,6 +4,7 @@
 // Units: kN, m, s, t (tonne) throughout; rotations in rad, moments in kN m.
 
 #include "core/config/LinkConfig.h"
+#include "core/config/SiteConfig.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
 #include "core/updating/Inspector.h"
@@ -45,6 +46,8 @@ struct ElementSpec {
     /// A numerical element whose force another program computes: "opensees://HOST:PORT" (an
     /// OpenSees twin, docs/opensees-twins.md); "" = in process.
     std::string numericalSite;
+    /// The site serving it (a name from "sites"); "": the default site kDefaultSiteName.
+    std::string site;
 };
 
 struct DofSpec {
@@ -123,6 +126,7 @@ struct TestConfig {
     AnalysisSpec analysis;
     UpdatingSpec updating;
     LinkSpec link; ///< the console's link protocol (the "controller" section)
+    std::vector<SiteSpec> sites; ///< the "sites" section (empty: one site, "controller")
     nlohmann::json raw; ///< the document as read (for records and reports)
 };
 

@@ -82,8 +82,10 @@ std::unique_ptr<Structure> buildStructure(const TestConfig& cfg, const ControlFa
             auto control = controls ? controls(e) : buildVirtualSpecimen(e);
             if (!control)
                 throw ConfigError(where + ": no experimental control could be made");
-            s->addElement(std::make_unique<ExperimentalElement>(
-                e.name, e.type, terms, std::move(control), e.limits, law->initialTangent()));
+            auto x = std::make_unique<ExperimentalElement>(
+                e.name, e.type, terms, std::move(control), e.limits, law->initialTangent());
+            x->setSite(e.site.empty() ? kDefaultSiteName : e.site);
+            s->addElement(std::move(x));
         } else if (e.type == "lateralSpring") {
             s->addElement(SpringElement::lateral(e.name, e.dofs[0], std::move(law)));
         } else if (e.type == "truss") {

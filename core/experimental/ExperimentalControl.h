@@ -9,6 +9,7 @@
 // and moment [kN m] for a rotational spring; [m] and [kN] for a lateral one).
 // No call may block without a deadline; a fault is returned, never thrown.
 
+#include <limits>
 #include <string>
 
 namespace hsmu {
@@ -38,6 +39,15 @@ public:
     virtual ControlResult measure(ControlMeasurement& out) = 0;
     /// The step was accepted.
     virtual ControlResult commit() = 0;
+    /// Two-phase commit (sites): send the commit without waiting for its acknowledgement;
+    /// the next commit() completes it. Default: nothing (commit() does everything).
+    virtual ControlResult beginCommit() { return ControlResult::success(); }
+    /// Whether the link to the specimen is up (in-process controls: always).
+    virtual bool connected() const { return true; }
+    /// Seconds from the last setTarget() to the arrival of its measurement, when the control
+    /// knows it (TcpControl: the frame's arrival on the link's io thread); NaN: unknown (the
+    /// element then times setTarget() .. measure() itself).
+    virtual double replyLatency() const { return std::numeric_limits<double>::quiet_NaN(); }
     /// Go to a safe hold: keep the current position, accept no new target until resumed.
     virtual void hold(const std::string& reason) = 0;
     /// Leave the hold (operator action).

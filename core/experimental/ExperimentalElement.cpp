@@ -1,5 +1,8 @@
 #include "core/experimental/ExperimentalElement.h"
 
+#include <chrono>
+#include <cmath>
+
 namespace hsmu {
 
 ExperimentalElement::ExperimentalElement(std::string name, std::string typeName,
@@ -18,18 +21,42 @@ std::optional<std::string> ExperimentalElement::targetViolation(const Eigen::Vec
     return std::nullopt;
 }
 
-ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
+ElementStatus ExperimentalElement::fault(const ControlResult& r)
 {
+    ++m_faults;
+    m_lastFault = r.reason;
+    return ElementStatus::failure(name() + ": " + r.reason);
+}
+
+ElementStatus ExperimentalElement::sendTrial(const Eigen::VectorXd& uFull)
+{
+    m_sent = false;
     // Defence in depth: the test checks every target before sending any, and so do we.
     if (auto why = targetViolation(uFull))
         return ElementStatus::limitReached(*why);
     const double target = kinematicDeformation(uFull);
+    m_sentAt = std::chrono::steady_clock::now().time_since_epoch().count();
     if (ControlResult r = m_control->setTarget(target); !r.ok)
-        return ElementStatus::failure(name() + ": " + r.reason);
+        return fault(r);
     m_commanded = target;
+    m_sent = true;
+    return ElementStatus::success();
+}
+
+ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
+{
+    if (!m_sent)
+        if (ElementStatus s = sendTrial(uFull); !s.ok)
+            return s;
+    m_sent = false;
     ControlMeasurement m;
     if (ControlResult r = m_control->measure(m); !r.ok)
-        return ElementStatus::failure(name() + ": " + r.reason);
+        return fault(r);
+    const double latency = m_control->replyLatency();
+    m_roundTrip = std::isfinite(latency)
+                      ? latency
+                      : 1e-9 * double(std::chrono::steady_clock::now().time_since_epoch().count() -
+                                      m_sentAt);
     m_measured = m;
     // The console believes no impossible measurement: past a limit the test holds (critical
     // alarm), the step is not committed, so no update is computed from the sample.
@@ -40,10 +67,20 @@ ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
     return ElementStatus::success();
 }
 
+ElementStatus ExperimentalElement::beginCommit()
+{
+    m_commitSent = false;
+    if (ControlResult r = m_control->beginCommit(); !r.ok)
+        return fault(r);
+    m_commitSent = true;
+    return ElementStatus::success();
+}
+
 ElementStatus ExperimentalElement::commit()
 {
+    m_commitSent = false;
     if (ControlResult r = m_control->commit(); !r.ok)
-        return ElementStatus::failure(name() + ": " + r.reason);
+        return fault(r);
     m_lastCommitted = m_commanded;
     m_committedMeasured = m_measured;
     return ElementStatus::success();
@@ -52,6 +89,7 @@ ElementStatus ExperimentalElement::commit()
 void ExperimentalElement::revert()
 {
     // A specimen cannot be un-deformed; reverting only forgets the unaccepted reading.
+    m_sent = m_commitSent = false;
     m_commanded = m_lastCommitted;
     m_measured = m_committedMeasured;
 }

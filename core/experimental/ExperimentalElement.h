@@ -7,11 +7,18 @@
 // the limit plus SafetyLimits::kMeasuredDeformationTolerance, force beyond the limit, or not
 // finite) fails the trial as a limit, so the test holds and nothing is committed or updated
 // from it.
+// Two phases (sites, docs/configuration.md): sendTrial() checks the limits and sends the
+// target; setTrial() then awaits the measurement (it sends first when sendTrial() was not
+// called). beginCommit() / commit() likewise. Each element belongs to a site (site()): its
+// round trip (target sent -> measurement received) and its control faults are kept for the
+// site's health (SiteStatus.h).
 
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/structure/Element.h"
 
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -32,8 +39,11 @@ public:
     /// Why the target for full displacements u must not be sent, if it must not.
     std::optional<std::string> targetViolation(const Eigen::VectorXd& uFull) const;
 
-    /// Check limits, send the target, read the measurement.
+    /// Check limits and send the target (no wait).
+    ElementStatus sendTrial(const Eigen::VectorXd& uFull) override;
+    /// Send the target unless sendTrial() did, then read the measurement.
     ElementStatus setTrial(const Eigen::VectorXd& uFull) override;
+    ElementStatus beginCommit() override;
     double deformation() const override { return m_measured.deformation; }
     double force() const override { return m_measured.force; }
     double initialGeneralizedStiffness() const override { return m_k0; }
@@ -43,11 +53,29 @@ public:
     double commandedDeformation() const { return m_commanded; }
     const ControlMeasurement& measurement() const { return m_measured; }
     ExperimentalControl& control() { return *m_control; }
+    const ExperimentalControl& control() const { return *m_control; }
+
+    std::string site() const override { return m_site; }
+    const std::string& siteName() const { return m_site; }
+    void setSite(std::string site) { m_site = std::move(site); }
+    /// [s] target sent -> measurement received, of the last measured trial; NaN before.
+    double lastRoundTrip() const { return m_roundTrip; }
+    /// Control faults so far (send, measure or commit refused or lost) and the last one's text.
+    int faults() const { return m_faults; }
+    const std::string& lastFault() const { return m_lastFault; }
     const SafetyLimits& limits() const { return m_limits; }
     void setLimits(const SafetyLimits& limits) { m_limits = limits; }
 
 private:
+    ElementStatus fault(const ControlResult& r);
+
     std::string m_typeName;
+    std::string m_site = "controller";
+    bool m_sent = false, m_commitSent = false;
+    std::int64_t m_sentAt = 0; // steady_clock ticks [ns]
+    double m_roundTrip = std::numeric_limits<double>::quiet_NaN();
+    int m_faults = 0;
+    std::string m_lastFault;
     std::unique_ptr<ExperimentalControl> m_control;
     SafetyLimits m_limits;
     double m_k0;

@@ -1,5 +1,6 @@
 #include "core/output/RunLayout.h"
 
+#include "core/experimental/SiteStatus.h"
 #include "core/structure/Structure.h"
 #include "core/test/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
@@ -19,6 +20,7 @@ RunLayout RunLayout::of(const Structure& structure) {
         info.units = elementUnits(info.type);
         layout.elements.push_back(std::move(info));
     }
+    layout.sites = siteNames(structure);
     return layout;
 }
 

@@ -39,6 +39,9 @@ struct RunLayout {
     std::vector<std::string> dofNames; ///< full DOFs, displacement in m
     std::vector<ElementInfo> elements;
     std::optional<UpdatingInfo> updating; ///< set when the test runs online model updating
+    /// Sites of the experimental elements (docs/configuration.md), order of
+    /// StepRecord::siteRoundTrips; empty without experimental elements.
+    std::vector<std::string> sites;
 
     /// Valid before or after Structure::finalize(); no updating information.
     static RunLayout of(const Structure& structure);

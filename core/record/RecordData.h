@@ -57,6 +57,9 @@ struct RecordData {
     Eigen::MatrixXd deformation;        ///< [N x nElem] element units (measured for specimens)
     Eigen::MatrixXd force;              ///< [N x nElem] element units (measured for specimens)
     Eigen::MatrixXd commanded;          ///< [N x nElem] NaN for numerical elements
+    /// [N x nSite] each step's round trip per site [s] (layout.sites order; row 0 NaN); empty
+    /// in records without /sites (no experimental element, or written before sites)
+    Eigen::MatrixXd siteRoundTrip;
 
     // Online model updating (empty unless layout.updating).
     Eigen::MatrixXd parameters;        ///< [N x nParam] estimate

@@ -67,6 +67,7 @@ struct RecordReader::Impl {
     RecordData data;
     Column step, time, ag, u, v, a, def, force, cmd, par, sd, aux, fit, applied, thisStep, pending;
     Column tracking, requested; // schema 2
+    Column siteRoundTrip;       // /sites, when the test had experimental elements
     Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
     Column eventStep, eventTime, eventElement, eventValues, noteTime, noteStep, noteText;
     bool v2 = false; // schema 2 datasets present
@@ -118,6 +119,8 @@ std::vector<Column*> RecordReader::Impl::stepColumns() {
     if (data.layout.updating && v2)
         for (Column* x : {&tracking, &requested})
             c.push_back(x);
+    if (!data.layout.sites.empty())
+        c.push_back(&siteRoundTrip);
     return c;
 }
 
@@ -193,6 +196,12 @@ void RecordReader::Impl::readMetadata() {
     v = column("/dofs/v", nDof);
     a = column("/dofs/a", nDof);
     cmd = column("/elements/commanded", nElem);
+    if (H5Lexists(root, "sites", H5P_DEFAULT) > 0) {
+        const h5::Id g = h5::check(H5Gopen2(root, "sites", H5P_DEFAULT), w,
+                                   "damaged record (no group /sites)");
+        layout.sites = h5::readStringsAttr(g.get(), "names", w);
+        siteRoundTrip = column("/sites/round_trip", int(layout.sites.size()));
+    }
     if (H5Lexists(root, "updating", H5P_DEFAULT) > 0) {
         const h5::Id g = h5::check(H5Gopen2(root, "updating", H5P_DEFAULT), w,
                                    "damaged record (no group /updating)");
@@ -297,6 +306,8 @@ int RecordReader::Impl::readNewRows() {
     appendRows(data.deformation, def, r0, n, w);
     appendRows(data.force, force, r0, n, w);
     appendRows(data.commanded, cmd, r0, n, w);
+    if (!data.layout.sites.empty())
+        appendRows(data.siteRoundTrip, siteRoundTrip, r0, n, w);
     if (data.layout.updating) {
         appendRows(data.parameters, par, r0, n, w);
         appendRows(data.stddev, sd, r0, n, w);

@@ -53,7 +53,7 @@ void pushValues(std::vector<double>& out, const std::vector<double>& x, std::siz
 struct RecordWriter::Impl {
     std::string path;
     RunLayout layout;
-    std::size_t nDof = 0, nElem = 0, nPar = 0;
+    std::size_t nDof = 0, nElem = 0, nPar = 0, nSite = 0;
     h5::Id file;
     h5::Id severityType, kindType, messageType, noteType;
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
@@ -61,10 +61,11 @@ struct RecordWriter::Impl {
     h5::Extendible eventStep, eventTime, eventElement, eventValues;
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
     h5::Extendible noteTime, noteStep, noteText;
+    h5::Extendible siteRoundTrip;
 
     std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement;
     std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
-        bTracking, bEventTime, bEventValues;
+        bTracking, bEventTime, bEventValues, bSiteRoundTrip;
     std::vector<Alarm> bAlarms;
     std::vector<RecordNote> bNotes;
 
@@ -176,6 +177,14 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     }
     if (layout.updating)
         createUpdating(root);
+    if (nSite > 0) {
+        // Sites (docs/configuration.md): each step's round trip per site [s].
+        const h5::Id g = group("sites");
+        h5::writeAttr(g.get(), "names", layout.sites, w);
+        siteRoundTrip = h5::Extendible(g.get(), "round_trip", f64, int(nSite), w);
+        h5::writeAttr(siteRoundTrip.id(), "names", layout.sites, w);
+        units(siteRoundTrip, "s");
+    }
     createLogs(root);
     h5::check(H5Fflush(root, H5F_SCOPE_GLOBAL), w, "cannot be flushed");
     h5::check(H5Fstart_swmr_write(root), w, "cannot start SWMR writing");
@@ -252,7 +261,7 @@ void RecordWriter::Impl::clearBuffers() {
          {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement})
         b->clear();
     for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
-                    &bTracking, &bEventTime, &bEventValues})
+                    &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip})
         b->clear();
     bAlarms.clear();
     bNotes.clear();
@@ -270,6 +279,8 @@ void RecordWriter::Impl::writeBuffers() {
         def.append(bDef.data(), n);
         force.append(bForce.data(), n);
         cmd.append(bCmd.data(), n);
+        if (nSite > 0)
+            siteRoundTrip.append(bSiteRoundTrip.data(), n);
         if (layout.updating) {
             par.append(bPar.data(), n);
             sd.append(bSd.data(), n);
@@ -354,7 +365,8 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
             &def,           &force,     &cmd,          &par,         &sd,        &aux,
             &fit,           &applied,   &thisStep,     &pending,     &tracking,  &requested,
             &eventStep,     &eventTime, &eventElement, &eventValues, &alarmTime, &alarmStep,
-            &alarmSeverity, &alarmKind, &alarmMessage, &noteTime,    &noteStep,  &noteText};
+            &alarmSeverity, &alarmKind, &alarmMessage, &noteTime,    &noteStep,  &noteText,
+            &siteRoundTrip};
 }
 
 RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
@@ -365,6 +377,7 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->nDof = layout.dofNames.size();
     m_d->nElem = layout.elements.size();
     m_d->nPar = layout.updating ? layout.updating->parameters.size() : 0;
+    m_d->nSite = layout.sites.size();
     const h5::QuietErrors quiet;
     m_d->create(start); // on a throw, Impl's handles close the partial file
 }
@@ -390,6 +403,7 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.bForce.push_back(s.force);
         d.bCmd.push_back(s.commanded);
     }
+    pushValues(d.bSiteRoundTrip, r.siteRoundTrips, d.nSite, true);
     if (d.layout.updating) {
         const UpdatingSample& up = r.updating;
         pushValues(d.bPar, up.parameters, d.nPar, r.hasUpdating);

@@ -52,6 +52,15 @@ public:
 
     /// Evaluate at full-DOF displacements u from the committed state.
     virtual ElementStatus setTrial(const Eigen::VectorXd& uFull) = 0;
+    /// Two-phase trial (sites, docs/configuration.md): issue the trial at u without waiting
+    /// for its response; the next setTrial(u) completes it. Structure::setTrial sends every
+    /// experimental element's trial before it awaits any, so that a step costs the slowest
+    /// site's round trip, not the sum. Default: nothing to send (setTrial does everything).
+    virtual ElementStatus sendTrial(const Eigen::VectorXd& /*uFull*/) { return ElementStatus::success(); }
+    /// Two-phase commit: send the commit without waiting; the next commit() completes it.
+    virtual ElementStatus beginCommit() { return ElementStatus::success(); }
+    /// The site (lab, controller) answering for the element; "" for a numerical element.
+    virtual std::string site() const { return {}; }
     /// Deformation of the element's own law (rotation, displacement) at the trial state.
     virtual double deformation() const = 0;
     /// Force of the element's own law (moment, force) at the trial state.

@@ -184,8 +184,27 @@ ElementStatus Structure::setTrial(const Eigen::VectorXd& uFree)
     if (m_order.size() != m_elements.size())
         buildOrder();
     const Eigen::VectorXd u = toFull(uFree);
-    for (Element* e : m_order) {
-        ElementStatus s = e->setTrial(u);
+    // Send every specimen's target before any measurement is awaited (sites answer in
+    // parallel: the step costs the slowest round trip, not the sum). Experimental elements
+    // come first in m_order. A send that fails stops further sends; every target already
+    // sent is still awaited, so no link is left with a reply in flight.
+    std::size_t sent = 0;
+    ElementStatus first = ElementStatus::success();
+    for (; sent < m_order.size() && m_order[sent]->isExperimental(); ++sent) {
+        if (ElementStatus s = m_order[sent]->sendTrial(u); !s.ok) {
+            first = s;
+            break;
+        }
+    }
+    for (std::size_t i = 0; i < sent; ++i) {
+        ElementStatus s = m_order[i]->setTrial(u);
+        if (!s.ok && first.ok)
+            first = s;
+    }
+    if (!first.ok)
+        return first;
+    for (std::size_t i = sent; i < m_order.size(); ++i) {
+        ElementStatus s = m_order[i]->setTrial(u);
         if (!s.ok)
             return s;
     }
@@ -206,15 +225,28 @@ Eigen::VectorXd Structure::restoringForce() const
 ElementStatus Structure::commit()
 {
     // Specimens first: a failed specimen commit leaves every numerical element uncommitted,
-    // so the step can be retried.
+    // so the step can be retried. Every specimen's commit is sent before any acknowledgement
+    // is awaited (a failed send is settled by that element's commit(), e.g. a reconnect).
     if (m_order.size() != m_elements.size())
         buildOrder();
     for (Element* e : m_order) {
-        ElementStatus s = e->commit();
-        if (!s.ok)
-            return s;
+        if (!e->isExperimental())
+            break;
+        e->beginCommit(); // a failure here is reported (and recovered) by commit() below
     }
-    return ElementStatus::success();
+    // Every specimen's commit is completed even after one failed (no acknowledgement left
+    // in flight on a link); numerical elements only when all specimens committed.
+    ElementStatus first = ElementStatus::success();
+    for (Element* e : m_order) {
+        if (!e->isExperimental() && !first.ok)
+            break;
+        ElementStatus s = e->commit();
+        if (!s.ok && !e->isExperimental())
+            return s;
+        if (!s.ok && first.ok)
+            first = s;
+    }
+    return first;
 }
 
 void Structure::revert()

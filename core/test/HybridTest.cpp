@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace hsmu {
@@ -147,6 +148,13 @@ void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
         x->control().hold(reason);
     raise(AlarmSeverity::Critical, kind, "test held: " + reason);
     m_state = State::Holding;
+    updateSites();
+}
+
+void HybridTest::updateSites()
+{
+    m_sites = siteStatuses(m_specimens); // descriptions change with (re)connections
+    m_siteMonitor->update(m_sites, m_state == State::Holding);
 }
 
 void HybridTest::hold(const std::string& reason)
@@ -164,6 +172,7 @@ void HybridTest::resume()
         x->control().resume();
     raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed");
     m_state = State::Running;
+    updateSites();
 }
 
 HybridTest::StepResult HybridTest::step()
@@ -254,6 +263,17 @@ void HybridTest::publish()
         if (e.isExperimental())
             s.commanded = m_step == 0 ? 0.0
                                       : static_cast<const ExperimentalElement&>(e).commandedDeformation();
+    }
+    if (!m_specimens.empty()) {
+        if (m_sites.empty() || m_step == 0)
+            m_sites = siteStatuses(m_specimens);
+        else
+            refreshSiteHealth(m_sites, m_specimens);
+        rec.siteRoundTrips.resize(m_sites.size());
+        for (std::size_t i = 0; i < m_sites.size(); ++i)
+            rec.siteRoundTrips[i] = m_step == 0 ? std::numeric_limits<double>::quiet_NaN()
+                                                : m_sites[i].lastRoundTrip;
+        m_siteMonitor->update(m_sites, m_state == State::Holding);
     }
     rec.hasUpdating = m_updater != nullptr;
     if (m_updater && m_step == 0) {

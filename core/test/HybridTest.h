@@ -14,6 +14,7 @@
 
 #include "core/groundmotion/GroundMotion.h"
 #include "core/integration/StabilityCheck.h"
+#include "core/experimental/SiteStatus.h"
 #include "core/test/Alarm.h"
 #include "core/test/StepRecord.h"
 
@@ -76,6 +77,10 @@ public:
     bool approveUpdate(int proposalId);
     bool rejectUpdate(int proposalId);
 
+    /// Per-site health (sites: docs/configuration.md), updated after every step, hold and
+    /// resume; readable from any thread.
+    std::shared_ptr<const SiteMonitor> siteMonitor() const { return m_siteMonitor; }
+
     /// Observers are not owned; they must outlive the test or be removed.
     void addObserver(StepObserver* observer);
     void removeObserver(StepObserver* observer);
@@ -99,6 +104,9 @@ private:
     std::vector<ExperimentalElement*> m_specimens; // owned by the structure
     std::unique_ptr<ModelUpdater> m_updater;
     StepRecord m_record;
+    std::shared_ptr<SiteMonitor> m_siteMonitor = std::make_shared<SiteMonitor>();
+    std::vector<SiteStatus> m_sites; // rebuilt at prepare, hold and resume; refreshed per step
+    void updateSites();
 };
 
 const char* testStateName(HybridTest::State s);

@@ -25,6 +25,9 @@ struct StepRecord {
     double groundAcceleration = 0.0; ///< [m/s^2]
     Eigen::VectorXd u, v, a;        ///< DOF displacement [m], velocity [m/s], acceleration [m/s^2]
     std::vector<ElementSample> elements;
+    /// Per site (RunLayout::sites order): the step's round trip [s], the slowest of the site's
+    /// elements from target sent to measurement received; NaN at step 0.
+    std::vector<double> siteRoundTrips;
     bool hasUpdating = false; ///< the test runs online model updating
     UpdatingSample updating;  ///< valid when hasUpdating (step 0: initial estimate)
 };

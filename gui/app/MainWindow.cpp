@@ -525,6 +525,8 @@ void MainWindow::onTestLoaded() {
 }
 
 void MainWindow::showLinkState(bool connected, bool fault) {
+    m_status->setSites(m_controller->siteMonitor()); // per-site health (sites)
+    m_setup->setSiteMonitor(m_controller->siteMonitor());
     const comms::LinkAddress& a = m_controller->controllerAddress();
     if (a.kind == comms::LinkAddress::Kind::Builtin) {
         m_status->setLink(tr("built-in virtual lab"), true);

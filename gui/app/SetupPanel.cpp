@@ -3,6 +3,7 @@
 #include "core/output/ElementUnits.h"
 #include "gui/ConfigOverrides.h"
 #include "gui/app/PendingUpdatesPanel.h"
+#include "gui/app/SiteHealthView.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -61,6 +62,8 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_body);
     body->addWidget(buildRunGroup());
     body->addWidget(buildControllerGroup());
+    m_sites = new SiteHealthView(this); // sites of the configuration (hidden without)
+    body->addWidget(m_sites);
 
     auto* limitsBox = new QGroupBox(tr("Safety limits (0 = none; the specimen's units)"), this);
     auto* lv = new QVBoxLayout(limitsBox);
@@ -225,9 +228,14 @@ void SetupPanel::browseGroundMotion() {
     emit groundMotionChosen(); // checked and plotted at once
 }
 
+void SetupPanel::setSiteMonitor(std::shared_ptr<const SiteMonitor> monitor) {
+    m_sites->setMonitor(std::move(monitor));
+}
+
 void SetupPanel::setConfig(const TestConfig& cfg) {
     m_base = cfg;
     m_loaded = true;
+    m_sites->setConfig(cfg);
     {
         std::vector<QSignalBlocker> blocks;
         blocks.reserve(std::size_t(m_inputs.size()));

@@ -13,6 +13,7 @@
 
 #include <QWidget>
 
+#include <memory>
 #include <optional>
 
 class QCheckBox;
@@ -24,7 +25,13 @@ class QPushButton;
 class QSpinBox;
 class QTableWidget;
 
+namespace hsmu {
+class SiteMonitor;
+}
+
 namespace hsmu::gui {
+
+class SiteHealthView;
 
 class SetupPanel : public QWidget {
     Q_OBJECT
@@ -33,6 +40,8 @@ public:
 
     /// Show cfg (the configuration as loaded, with the command-line overrides applied).
     void setConfig(const TestConfig& cfg);
+    /// Per-site health of the loaded test in the "Sites" box (SiteHealthView).
+    void setSiteMonitor(std::shared_ptr<const SiteMonitor> monitor);
     bool hasConfig() const { return m_loaded; }
     /// The loaded configuration with the panel's edits; nullopt and *error if one is invalid.
     std::optional<TestConfig> edited(QString* error = nullptr) const;
@@ -71,6 +80,7 @@ private:
     bool m_dirty = false;
     bool m_editable = true;
     QLabel* m_name = nullptr;
+    SiteHealthView* m_sites = nullptr;
     QWidget* m_body = nullptr;
     QLabel* m_groundMotionStatus = nullptr;
     QLineEdit* m_groundMotion = nullptr;

@@ -44,6 +44,7 @@ void TestController::teardown() {
     m_worker = nullptr;
     m_thread = nullptr;
     m_buffer.reset();
+    m_siteMonitor.reset();
     m_state = RunState::Idle;
     m_preflight.reset();
     m_updating = UpdatingSnapshot{};
@@ -56,7 +57,8 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
     link.connectTimeout = 3.0; // an absent controller is an error within seconds
     link.token = m_token.toStdString();
     std::unique_ptr<HybridTest> test =
-        buildHybridTest(cfg, comms::makeControlFactory(controller, link, cfg.link)); // may throw
+        buildHybridTest(cfg, comms::makeControlFactory(controller, link, cfg)); // may throw
+    m_siteMonitor = test->siteMonitor();
     m_config = cfg;
     m_address = controller;
     m_layout = RunLayout::of(*test); // with the updater's parameters, for the plots

@@ -18,6 +18,7 @@
 #include "comms/LinkAddress.h"
 #include "core/config/TestConfig.h"
 #include "core/config/TestFactory.h"
+#include "core/experimental/SiteStatus.h"
 #include "core/output/RunLayout.h"
 #include "core/test/StepRecord.h"
 #include "gui/app/AlarmMetaType.h"
@@ -57,6 +58,8 @@ public:
     const RunLayout& layout() const { return m_layout; }
     const TestConfig& config() const { return m_config; }
     const comms::LinkAddress& controllerAddress() const { return m_address; }
+    /// Per-site health of the loaded test (sites); nullptr before a load.
+    std::shared_ptr<const SiteMonitor> siteMonitor() const { return m_siteMonitor; }
     RunState state() const { return m_state; }
     /// The token the next load()ed tests send in their hello to hsmu-controller ("" = none);
     /// held in memory only.
@@ -133,6 +136,7 @@ private:
     RunLayout m_layout;
     TestConfig m_config;
     comms::LinkAddress m_address;
+    std::shared_ptr<const SiteMonitor> m_siteMonitor;
     RunState m_state = RunState::Idle;
     double m_speed = 1.0;
     double m_wallPerStep = 0.0; ///< [s]; > 0 overrides m_speed

@@ -1,5 +1,7 @@
 #include "gui/app/TestStatusBar.h"
 
+#include "gui/app/SiteHealthLabel.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QLabel>
@@ -19,6 +21,8 @@ TestStatusBar::TestStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_rate = label(120);
     m_state = label(120);
     m_link = label(160);
+    m_sites = new SiteHealthLabel(this);
+    addPermanentWidget(m_sites);
     m_recording = label(120);
     m_time->setObjectName(QStringLiteral("statusTime"));
     m_step->setObjectName(QStringLiteral("statusStep"));
@@ -60,6 +64,10 @@ void TestStatusBar::setRecordingFile(const QString& file) {
                              ? tr("not recording")
                              : tr("recording: %1/%2").arg(info.dir().dirName(), info.fileName()));
     m_recording->setToolTip(file);
+}
+
+void TestStatusBar::setSites(std::shared_ptr<const SiteMonitor> monitor) {
+    m_sites->setMonitor(std::move(monitor));
 }
 
 } // namespace hsmu::gui

@@ -8,9 +8,17 @@
 
 #include <QStatusBar>
 
+#include <memory>
+
 class QLabel;
 
+namespace hsmu {
+class SiteMonitor;
+}
+
 namespace hsmu::gui {
+
+class SiteHealthLabel;
 
 class TestStatusBar : public QStatusBar {
     Q_OBJECT
@@ -23,6 +31,8 @@ public:
     void setLink(const QString& text, bool ok);
     /// Empty: not recording.
     void setRecordingFile(const QString& file);
+    /// Per-site health of the loaded test (SiteHealthLabel); nullptr hides it.
+    void setSites(std::shared_ptr<const SiteMonitor> monitor);
 
 private:
     QLabel* m_time = nullptr;
@@ -31,6 +41,7 @@ private:
     QLabel* m_state = nullptr;
     QLabel* m_link = nullptr;
     QLabel* m_recording = nullptr;
+    SiteHealthLabel* m_sites = nullptr;
 };
 
 } // namespace hsmu::gui

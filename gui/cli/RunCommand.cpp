@@ -115,7 +115,7 @@ int RunCommand::exec(const QStringList& arguments) {
             cfg.updating.approval = options.approval.toStdString();
         }
         test = buildHybridTest(
-            cfg, comms::makeControlFactory(options.controller, linkOptions(options), cfg.link));
+            cfg, comms::makeControlFactory(options.controller, linkOptions(options), cfg));
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }

@@ -128,7 +128,12 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
         QVERIFY(same(d.tracking(i, 1), r.updating.tracking.j2));
         QVERIFY(same(d.tracking(i, 2), r.updating.tracking.j3));
         QCOMPARE(d.updateRequested[std::size_t(i)], r.updating.updateRequested ? 1 : 0);
+        // Sites: one (the built-in virtual lab as the default site), its round trip per step.
+        QCOMPARE(r.siteRoundTrips.size(), std::size_t(1));
+        QVERIFY(same(d.siteRoundTrip(i, 0), r.siteRoundTrips[0]));
+        QVERIFY(i == 0 ? std::isnan(d.siteRoundTrip(i, 0)) : d.siteRoundTrip(i, 0) >= 0.0);
     }
+    QCOMPARE(d.layout.sites, std::vector<std::string>{"controller"});
     QCOMPARE(nanCommanded, 2 * d.rows()); // Elements 2 and 3 are numerical
     QVERIFY(d.appliedUpdates.back() > 0);
 

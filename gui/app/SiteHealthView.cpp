@@ -1,0 +1,82 @@
+#include "gui/app/SiteHealthView.h"
+
+#include "gui/app/SiteHealthLabel.h"
+
+#include <QHeaderView>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace hsmu::gui {
+
+SiteHealthView::SiteHealthView(QWidget* parent) : QGroupBox(tr("Sites"), parent) {
+    setObjectName(QStringLiteral("sitesBox"));
+    auto* layout = new QVBoxLayout(this);
+    m_table = new QTableWidget(0, 4, this);
+    m_table->setObjectName(QStringLiteral("sitesTable"));
+    m_table->setHorizontalHeaderLabels({tr("Site"), tr("Address"), tr("Specimens"), tr("Health")});
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setMaximumHeight(130);
+    layout->addWidget(m_table);
+    m_timer = new QTimer(this);
+    m_timer->setInterval(500);
+    connect(m_timer, &QTimer::timeout, this, &SiteHealthView::refresh);
+    hide();
+}
+
+void SiteHealthView::setConfig(const TestConfig& cfg) {
+    m_table->setRowCount(0);
+    auto addRow = [this](const QString& name, const QString& address, const QString& elements) {
+        const int row = m_table->rowCount();
+        m_table->insertRow(row);
+        m_table->setItem(row, 0, new QTableWidgetItem(name));
+        m_table->setItem(row, 1, new QTableWidgetItem(address));
+        m_table->setItem(row, 2, new QTableWidgetItem(elements));
+        m_table->setItem(row, 3, new QTableWidgetItem(QStringLiteral("-")));
+    };
+    for (const SiteSpec& s : cfg.sites) {
+        QStringList names;
+        for (const std::string& e : s.elements)
+            names << QString::fromStdString(e);
+        addRow(QString::fromStdString(s.name), QString::fromStdString(s.address),
+               names.join(QStringLiteral(", ")));
+    }
+    QStringList rest;
+    for (const ElementSpec& e : cfg.elements)
+        if (e.experimental && e.site.empty())
+            rest << QString::fromStdString(e.name);
+    if (!cfg.sites.empty() && !rest.isEmpty())
+        addRow(QString::fromLatin1(kDefaultSiteName), tr("the controller above"),
+               rest.join(QStringLiteral(", ")));
+    setVisible(!cfg.sites.empty());
+    refresh();
+}
+
+void SiteHealthView::setMonitor(std::shared_ptr<const SiteMonitor> monitor) {
+    m_monitor = std::move(monitor);
+    if (m_monitor)
+        m_timer->start();
+    else
+        m_timer->stop();
+    refresh();
+}
+
+void SiteHealthView::refresh() {
+    if (!m_monitor)
+        return;
+    for (const SiteStatus& s : m_monitor->sites()) {
+        const QString name = QString::fromStdString(s.name);
+        for (int row = 0; row < m_table->rowCount(); ++row) {
+            if (m_table->item(row, 0)->text() != name)
+                continue;
+            QTableWidgetItem* item = m_table->item(row, 3);
+            item->setText(siteHealthText(s));
+            item->setToolTip(QString::fromStdString(s.lastFault));
+            item->setForeground(s.connected ? palette().text().color() : QColor(0xc6, 0x28, 0x28));
+        }
+    }
+}
+
+} // namespace hsmu::gui

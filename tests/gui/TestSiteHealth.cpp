@@ -1,0 +1,102 @@
+// The console's per-site health (sites: docs/configuration.md): the status bar's
+// SiteHealthLabel reads a SiteMonitor (round trip in ms, a site that is down, faults, the
+// alarm colour while a link is down or the test holds); the setup panel's SiteHealthView lists
+// the configuration's sites (address, specimens, the default site for unlisted specimens) and
+// fills each site's health from the monitor. Offscreen.
+
+#include "core/config/ConfigLoader.h"
+#include "gui/app/SiteHealthLabel.h"
+#include "gui/app/SiteHealthView.h"
+
+#include <QTableWidget>
+#include <QtTest>
+
+#include <fstream>
+
+using namespace hsmu;
+using namespace hsmu::gui;
+
+namespace {
+
+SiteStatus site(const std::string& name, bool connected, double roundTrip, int faults) {
+    SiteStatus s;
+    s.name = name;
+    s.description = "TCP link to " + name;
+    s.elements = {"Bearing " + name.substr(name.size() - 1)};
+    s.connected = connected;
+    s.lastRoundTrip = roundTrip;
+    s.faults = faults;
+    if (faults > 0)
+        s.lastFault = s.elements[0] + ": link lost";
+    return s;
+}
+
+nlohmann::json twoLabs() {
+    std::ifstream in(std::string(HSMU_SOURCE_DIR) +
+                     "/resources/presets/paper-bridge-two-labs.json");
+    return nlohmann::json::parse(in);
+}
+
+} // namespace
+
+class TestSiteHealth : public QObject {
+    Q_OBJECT
+private slots:
+    void statusBarLabelShowsEverySite() {
+        auto monitor = std::make_shared<SiteMonitor>();
+        SiteHealthLabel label;
+        label.setMonitor(nullptr);
+        QVERIFY(label.isHidden());
+        monitor->update({site("Lab C", true, 0.62e-3, 0), site("Lab D", true, 1.5e-3, 0)}, false);
+        label.setMonitor(monitor);
+        QVERIFY(!label.isHidden());
+        QCOMPARE(label.text(), QStringLiteral("sites: Lab C 0.62 ms | Lab D 1.50 ms"));
+        QVERIFY(label.styleSheet().isEmpty());
+        QVERIFY(label.toolTip().contains(QStringLiteral("TCP link to Lab D (Bearing D)")));
+
+        monitor->update({site("Lab C", false, 0.62e-3, 1), site("Lab D", true, 1.5e-3, 0)}, true);
+        label.refresh();
+        QCOMPARE(label.text(), QStringLiteral("sites: Lab C down (faults: 1) | Lab D 1.50 ms"));
+        QVERIFY(label.styleSheet().contains(QStringLiteral("#c62828")));
+        QVERIFY(label.toolTip().contains(QStringLiteral("last fault: Bearing C: link lost")));
+
+        SiteStatus fresh = site("Lab C", true, std::nan(""), 0);
+        QCOMPARE(siteHealthText(fresh), QStringLiteral("-"));
+    }
+
+    void setupPanelListsTheConfiguredSites() {
+        nlohmann::json j = twoLabs();
+        // Bearing C on no site: it goes to the default site "controller".
+        j["sites"].erase(1);
+        const TestConfig cfg = parseConfig(j, "two-labs.json");
+        SiteHealthView view;
+        view.setConfig(cfg);
+        QVERIFY(!view.isHidden());
+        auto* table = view.findChild<QTableWidget*>(QStringLiteral("sitesTable"));
+        QVERIFY(table);
+        QCOMPARE(table->rowCount(), 2);
+        QCOMPARE(table->item(0, 0)->text(), QStringLiteral("Lab D"));
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("tcp://127.0.0.1:5101"));
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("Bearing D"));
+        QCOMPARE(table->item(1, 0)->text(), QStringLiteral("controller"));
+        QCOMPARE(table->item(1, 2)->text(), QStringLiteral("Bearing C"));
+        QCOMPARE(table->item(0, 3)->text(), QStringLiteral("-"));
+
+        auto monitor = std::make_shared<SiteMonitor>();
+        SiteStatus d = site("Lab D", true, 2.25e-3, 0), c = site("controller", false, 1e-3, 2);
+        monitor->update({c, d}, true);
+        view.setMonitor(monitor);
+        QCOMPARE(table->item(0, 3)->text(), QStringLiteral("2.25 ms"));
+        QCOMPARE(table->item(1, 3)->text(), QStringLiteral("down (faults: 2)"));
+
+        // Without sites the box is hidden (one site: the controller above).
+        nlohmann::json plain = twoLabs();
+        plain.erase("sites");
+        view.setConfig(parseConfig(plain, "plain.json"));
+        QVERIFY(view.isHidden());
+        QCOMPARE(table->rowCount(), 0);
+    }
+};
+
+QTEST_MAIN(TestSiteHealth)
+#include "TestSiteHealth.moc"
