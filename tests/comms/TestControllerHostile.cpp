@@ -11,6 +11,7 @@
 #include "RawClient.h"
 
 #include <QDeadlineTimer>
+#include <QDir>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -23,6 +24,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <fstream>
 #include <vector>
 
@@ -51,6 +53,22 @@ int rawConnect(std::uint16_t port) {
         return -1;
     }
     return fd;
+}
+
+/// How many sockets the process has open (-1 if unknown).
+int socketsOf(qint64 pid) {
+    const QDir fds(QStringLiteral("/proc/%1/fd").arg(pid));
+    if (!fds.exists())
+        return -1;
+    int n = 0;
+    for (const QString& name : fds.entryList(QDir::System | QDir::NoDotAndDotDot)) {
+        char target[64] = {};
+        const QByteArray path = fds.filePath(name).toLocal8Bit();
+        if (::readlink(path.constData(), target, sizeof target - 1) > 0 &&
+            std::strncmp(target, "socket:", 7) == 0)
+            ++n;
+    }
+    return n;
 }
 
 } // namespace
@@ -100,7 +118,7 @@ private slots:
         // Heartbeats (each answered by the controller), never reading: the controller must drop
         // the connection once its queue of unread replies passes its cap.
         std::size_t sent = 0;
-        bool closed = false;
+        bool closed = false, accepted = false;
         const QDeadlineTimer bound(120000); // [ms] a bound on the loop, not a timing assertion
         // Sends until the controller drops the connection (however slowly a loaded machine
         // lets it get there); the deadline only keeps a broken controller from hanging us.
@@ -123,6 +141,16 @@ private slots:
             pollfd p{fd, POLLOUT, 0};
             if (::poll(&p, 1, 200) > 0 && (p.revents & (POLLERR | POLLHUP)))
                 closed = true;
+            // The controller may have closed its end while this socket cannot hear of it yet:
+            // on loopback with this tiny receive buffer both kernels can drop each other's
+            // segments and back their retransmissions off for a minute or more (observed),
+            // so the controller's own sockets are looked at too.
+            const int sockets = socketsOf(ctl.pid());
+            if (sockets >= 2)
+                accepted = true; // the listener and this connection
+            else if (accepted && sockets == 1)
+                closed = true; // the listener only: the connection is gone
+
             if (bound.hasExpired())
                 break; // never hang: the log check below then fails
         }
@@ -132,8 +160,10 @@ private slots:
               peak);
         QVERIFY(peak > 0 && peak < kMaxRssKb);
         ctl.stop();
-        // Dropped: the controller closed the connection, at the send-queue cap or (a machine
-        // so loaded that the stream stalls) at the idle timeout; either way it says so.
+        // Dropped: the controller closed the connection, at the send-queue cap or at the idle
+        // timeout when the stream stalls (seen about once in 60 runs under load: the two
+        // kernels dropped each other's segments and backed off for a minute; the old session
+        // then hung on its undeliverable timeout refusal). Either way it says so.
         // (The timeout paths themselves: test_comms_controller_session.)
         qInfo("dropped at the queue cap: %s",
               ctl.log().contains("send queue past") ? "yes" : "no (timeout)");
