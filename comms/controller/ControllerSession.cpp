@@ -65,9 +65,8 @@ void ControllerSession::waitIdle() {
             self->waitIdle();
             return;
         }
-        const std::string why =
-            self->m_admitted ? "no frame for " + std::to_string(s) + " s"
-                             : "no hello within " + std::to_string(s) + " s";
+        const std::string why = self->m_admitted ? "no frame for " + std::to_string(s) + " s"
+                                                 : "no hello within " + std::to_string(s) + " s";
         self->m_host.dropped(*self, why);
         self->refuse({ErrorCode::Timeout, why});
     });

@@ -111,7 +111,7 @@ private:
     std::vector<MeasurementMsg> m_measured;
     std::vector<double> m_commanded; ///< per station: the last trial's deformation
     std::vector<double> m_ctrl;      ///< per DOF: the last trial's ctrl disp
-    bool m_haveTrial = false; ///< a measured trial not yet committed
+    bool m_haveTrial = false;        ///< a measured trial not yet committed
     std::chrono::steady_clock::time_point m_lastFrame; ///< the session's last frame (or start)
     bool m_replaced = false; ///< the session was closed for a waiting client
     ControllerStatistics m_stats;

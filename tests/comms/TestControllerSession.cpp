@@ -193,8 +193,8 @@ private slots:
             QVERIFY(p.send(heartbeats(sequence, 200)));
             p.run(100);
             replies += p.drain();
-            QVERIFY2(!p.host.isClosed, p.host.drops.empty() ? "closed"
-                                                             : p.host.drops.front().c_str());
+            QVERIFY2(!p.host.isClosed,
+                     p.host.drops.empty() ? "closed" : p.host.drops.front().c_str());
         }
         QVERIFY(replies > 0);
     }
