@@ -28,7 +28,9 @@ built=$(date +%s)
 # (scripts/lsan.supp lists them; turn it on with HSMU_DETECT_LEAKS=1).
 export ASAN_OPTIONS="detect_leaks=${HSMU_DETECT_LEAKS:-0}:halt_on_error=1:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
-export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
+# die_after_fork=0: the tests start hsmu-controller through QProcess (a fork of a threaded
+# process), which TSan otherwise refuses ("starting new threads after multi-threaded fork").
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:die_after_fork=0"
 export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
 cd "$build_dir"
 QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs" -R "$regex" --timeout 900

@@ -117,6 +117,7 @@ bool ControllerApp::start(std::string& error) {
         o.realTime = !m_cmd.fast;
         o.rate = settings.rate;
         o.quiet = m_cmd.quiet;
+        o.idleTimeout = settings.idleTimeout;
         o.dofs = dofs;
         if (!token.empty())
             std::fprintf(stderr, "hsmu-controller: the token is ignored: the OpenFresco "

@@ -2,7 +2,9 @@
 
 #include <boost/asio/write.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace hsmu::comms {
 
@@ -10,6 +12,9 @@ namespace asio = boost::asio;
 
 namespace {
 constexpr double kHelloTimeout = 5.0; // [s]
+/// How long a refusal's final frame may wait to be written, and (finish()) how long the peer
+/// then has to close its side, before the connection is closed regardless.
+constexpr auto kRefusalGrace = std::chrono::seconds(2);
 }
 
 ControllerSession::ControllerSession(asio::ip::tcp::socket socket, SessionHost& host)
@@ -27,25 +32,43 @@ void ControllerSession::start() {
 }
 
 void ControllerSession::armIdle(double seconds) {
-    // One timer wait per timeout period, not per frame: on expiry the wait is renewed for what
-    // is left since the last frame.
-    using namespace std::chrono;
     m_idleSeconds = seconds;
-    const auto left = duration_cast<steady_clock::duration>(duration<double>(seconds)) -
-                      (steady_clock::now() - m_lastActivity);
-    m_idle.expires_after(left);
+    waitIdle();
+}
+
+void ControllerSession::waitIdle() {
+    // One timer wait per timeout period, not per frame: on expiry the wait is renewed for what
+    // is left. Two clocks run against the same timeout: the silence since the last frame
+    // received, and how long the oldest reply has been waiting to be written (a client that
+    // sends but does not read: its replies stop moving long before its queue reaches the cap).
+    using namespace std::chrono;
+    const auto limit = duration_cast<steady_clock::duration>(duration<double>(m_idleSeconds));
+    auto deadline = m_lastActivity + limit;
+    if (m_writing)
+        deadline = std::min(deadline, m_writeStarted + limit);
+    m_idle.expires_at(deadline);
     m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
         if (ec || self->m_closed || self->m_closeAfterWrite)
-            return;
-        const auto silent = steady_clock::now() - self->m_lastActivity;
-        if (silent < duration<double>(self->m_idleSeconds)) {
-            self->armIdle(self->m_idleSeconds);
+            return; // cancelled, closed, or a refusal's own deadline has taken the timer
+        const auto now = steady_clock::now();
+        const auto limit =
+            duration_cast<steady_clock::duration>(duration<double>(self->m_idleSeconds));
+        const int s = static_cast<int>(std::lround(self->m_idleSeconds));
+        if (self->m_writing && now - self->m_writeStarted >= limit) {
+            // Nothing can be said to it (it does not read): close without a final frame.
+            self->m_host.dropped(*self, "does not read its replies (none taken for " +
+                                            std::to_string(s) + " s)");
+            self->close();
             return;
         }
-        const int s = static_cast<int>(self->m_idleSeconds);
-        self->refuse({ErrorCode::Timeout, self->m_admitted
-                                              ? "no frame for " + std::to_string(s) + " s"
-                                              : "no hello within " + std::to_string(s) + " s"});
+        if (now - self->m_lastActivity < limit) {
+            self->waitIdle();
+            return;
+        }
+        const std::string why = self->m_admitted ? "no frame for " + std::to_string(s) + " s"
+                                                 : "no hello within " + std::to_string(s) + " s";
+        self->m_host.dropped(*self, why);
+        self->refuse({ErrorCode::Timeout, why});
     });
 }
 
@@ -145,14 +168,24 @@ void ControllerSession::refuse(const ErrorMsg& e) {
     if (m_closed || m_closeAfterWrite)
         return;
     send(e);
+    if (m_closed)
+        return; // the frame itself did not fit in the queue: closed at once
     m_closeAfterWrite = true;
+    // The final frame gets kRefusalGrace to be written (then finish() gives the peer as long
+    // again to close its side); a peer that does not read would otherwise keep the refused
+    // session open for ever.
+    m_idle.expires_after(kRefusalGrace);
+    m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
+        if (!ec)
+            self->close();
+    });
 }
 
 void ControllerSession::finish() {
     // All written: half-close, and give the peer a moment to read and close its side.
     boost::system::error_code ec;
     m_socket.shutdown(asio::ip::tcp::socket::shutdown_send, ec);
-    m_idle.expires_after(std::chrono::seconds(2));
+    m_idle.expires_after(kRefusalGrace);
     m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& e) {
         if (!e)
             self->close();
@@ -163,6 +196,7 @@ void ControllerSession::write() {
     if (m_writing || m_writes.empty() || m_closed)
         return;
     m_writing = true;
+    m_writeStarted = std::chrono::steady_clock::now();
     asio::async_write(
         m_socket, asio::buffer(m_writes.front()),
         [self = shared_from_this()](const boost::system::error_code& ec, std::size_t) {

@@ -6,10 +6,12 @@
 // (token, version, element, one console session at a time) -> frames are handed to the host
 // and its replies sent back; Heartbeat is echoed here; silence past the idle timeout, a
 // malformed frame or Bye closes it. A frame that must close the connection (Error with a
-// closing code) is written completely before the socket is shut down.
+// closing code) is written before the socket is shut down, if the peer takes it within 2 s
+// (a peer that does not read is closed without it).
 // Bounded: replies wait in a send queue of at most kMaxQueuedBytes; a client that does not
-// read its replies (the queue would grow past it) is dropped, so it cannot grow the
-// controller's memory (docs/protocol.md, "Resource limits").
+// read its replies is dropped when its queue would grow past the cap or when a reply has
+// waited the idle timeout to be written, whichever comes first, so it can neither grow the
+// controller's memory nor hold the session (docs/protocol.md, "Resource limits").
 // Thread rules: the controller's single io thread.
 
 #include "comms/protocol/FrameDecoder.h"
@@ -69,6 +71,7 @@ private:
     void write();
     void finish();
     void armIdle(double seconds);
+    void waitIdle();
 
     boost::asio::ip::tcp::socket m_socket;
     boost::asio::steady_timer m_idle;
@@ -85,7 +88,8 @@ private:
     std::uint64_t m_sessionId = 0;
     int m_station = -1;
     std::string m_peer;
-    std::chrono::steady_clock::time_point m_lastActivity;
+    std::chrono::steady_clock::time_point m_lastActivity; ///< last frame received
+    std::chrono::steady_clock::time_point m_writeStarted; ///< the pending write's start
     double m_idleSeconds = 5.0;
 };
 

@@ -78,7 +78,7 @@ void OfServer::run() {
     std::signal(SIGTERM, onSignal);
     while (!m_stop && g_signalled == 0) {
         OfSocket socket;
-        socket.setCancel([this] { return m_stop.load() || g_signalled != 0; });
+        socket.setCancel([this] { return cancelled(); });
         std::string error;
         if (!m_listener->accept(socket, 0.0, error)) {
             if (!error.empty())
@@ -86,11 +86,29 @@ void OfServer::run() {
             continue;
         }
         ++m_stats.sessionsAdmitted;
+        m_lastFrame = std::chrono::steady_clock::now();
+        m_replaced = false;
         log("session " + socket.peer() + " (" + describe() + ")");
         serve(socket);
         socket.close();
     }
     m_listener->close();
+}
+
+bool OfServer::cancelled() {
+    if (m_stop.load() || g_signalled != 0)
+        return true;
+    const auto idle = std::chrono::steady_clock::now() - m_lastFrame;
+    if (idle < std::chrono::duration<double>(m_opt.idleTimeout) || !m_listener->pending())
+        return false;
+    m_replaced = true;
+    return true;
+}
+
+std::string OfServer::idleText() const {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", m_opt.idleTimeout);
+    return std::string("idle for ") + buf + " s while another client waits";
 }
 
 bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
@@ -99,6 +117,7 @@ bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
         why = "no sizes header: " + why;
         return false;
     }
+    m_lastFrame = std::chrono::steady_clock::now();
     const OfSizes s = decodeSizes(bytes);
     m_sizes = OfSizes{};
     m_sizes.dataSize = 0; // no frames can be exchanged (refuse() closes at once)
@@ -140,6 +159,7 @@ bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
 
 void OfServer::serve(OfSocket& socket) {
     std::string why;
+    const std::string peer = socket.peer(); // "" once the socket is closed
     if (!acceptHeader(socket, why)) {
         ++m_stats.sessionsRefused;
         log("refused " + socket.peer() + ": " + why);
@@ -188,6 +208,7 @@ void OfServer::serve(OfSocket& socket) {
         } else if (!socket.read(buffer.data(), frameBytes, 0.0, why)) {
             break;
         }
+        m_lastFrame = std::chrono::steady_clock::now();
         decodeFrame(buffer.data(), m_sizes.dataSize, frame);
         const auto action = actionOf(frame[0]);
         if (!action) {
@@ -248,6 +269,8 @@ void OfServer::serve(OfSocket& socket) {
             }
         }
     }
+    if (m_replaced)
+        why = peer + " " + idleText();
     log(socket.closedByPeer() ? "session ended: " + why : "session closed: " + why);
 }
 
@@ -378,6 +401,7 @@ void OfServer::refuse(OfSocket& socket) {
     const std::vector<double> nan(static_cast<std::size_t>(m_sizes.dataSize),
                                   std::numeric_limits<double>::quiet_NaN());
     std::string why, error;
+    const std::string peer = socket.peer(); // "" once the socket is closed
     long answered = 0;
     for (bool framesStarted = false;;) {
         if (!socket.read(buffer.data(), 8, kRefusedIdle, why))
@@ -388,6 +412,7 @@ void OfServer::refuse(OfSocket& socket) {
         const std::size_t total = isFrame ? frameBytes : kInitLineBytes;
         if (total > 8 && !socket.read(buffer.data() + 8, total - 8, kRefusedIdle, why))
             break;
+        m_lastFrame = std::chrono::steady_clock::now();
         if (!isFrame)
             continue;
         framesStarted = true;
@@ -405,9 +430,9 @@ void OfServer::refuse(OfSocket& socket) {
             break;
         ++answered;
     }
-    if (answered > 0)
-        log("refused session " + socket.peer() + " ended; " + std::to_string(answered) +
-            " request(s) answered with NaN");
+    if (answered > 0 || m_replaced)
+        log("refused session " + peer + " ended" + (m_replaced ? " (" + idleText() + ")" : "") +
+            "; " + std::to_string(answered) + " request(s) answered with NaN");
 }
 
 } // namespace hsmu::comms

@@ -29,6 +29,9 @@
 //                a site server sends nothing (as OpenFresco's site servers do).
 //            1, 2, 4  accepted, nothing to do, no reply.
 //            99  ends the session: the server closes the connection and waits for the next.
+//   idle     a session may wait between frames for as long as its client computes, unless
+//            another client is waiting to connect: then a session with no frame for
+//            idleTimeout (controller.idleTimeout) is closed (logged) and the next is served.
 //   faults   an interlock trip, a non-finite value, an unknown code or a peer that closes
 //            mid-frame: logged, the connection is closed, the stations keep their state.
 // Real-time pace runs a step's ticks at the loop rate when its trial arrives.
@@ -40,6 +43,7 @@
 #include "comms/openfresco/OpenFrescoControl.h"
 
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,6 +65,8 @@ struct OfServerOptions {
     bool realTime = true;
     double rate = 1024.0; ///< loop rate [Hz] (real-time pace)
     bool quiet = false;
+    /// [s] a session with no frame for this long is closed when another client is waiting
+    double idleTimeout = 10.0;
     /// The client's DOFs onto the stations; default (0 specimens): one DOF per station.
     OfDofMap dofs;
 };
@@ -92,6 +98,10 @@ private:
     std::vector<double> daqReply(int first, int last) const;
     std::vector<double> matrix(int action) const;
     void log(const std::string& line) const;
+    /// The session's waits end (the socket is closed): a stop, or idle past the timeout while
+    /// another client waits (then m_replaced is set).
+    bool cancelled();
+    std::string idleText() const;
 
     OfServerOptions m_opt;
     std::vector<std::unique_ptr<SpecimenStation>> m_stations;
@@ -101,7 +111,9 @@ private:
     std::vector<MeasurementMsg> m_measured;
     std::vector<double> m_commanded; ///< per station: the last trial's deformation
     std::vector<double> m_ctrl;      ///< per DOF: the last trial's ctrl disp
-    bool m_haveTrial = false; ///< a measured trial not yet committed
+    bool m_haveTrial = false;        ///< a measured trial not yet committed
+    std::chrono::steady_clock::time_point m_lastFrame; ///< the session's last frame (or start)
+    bool m_replaced = false; ///< the session was closed for a waiting client
     ControllerStatistics m_stats;
 };
 

@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cstdio>
 
+#include <poll.h>
+
 #if defined(__linux__)
 #include <netinet/in.h>
 #include <netinet/tcp.h>
@@ -317,6 +319,13 @@ std::uint16_t OfListener::port() const {
 void OfListener::close() {
     boost::system::error_code ec;
     d->acceptor.close(ec);
+}
+
+bool OfListener::pending() const {
+    if (!d->acceptor.is_open())
+        return false;
+    pollfd p{d->acceptor.native_handle(), POLLIN, 0};
+    return ::poll(&p, 1, 0) > 0 && (p.revents & POLLIN) != 0;
 }
 
 bool OfListener::accept(OfSocket& out, double timeout, std::string& error) {

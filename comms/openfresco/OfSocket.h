@@ -72,6 +72,8 @@ public:
     /// Accept one connection into out within timeout [s]; false with error "" on a timeout or
     /// cancel, with a sentence on a failure.
     bool accept(OfSocket& out, double timeout, std::string& error);
+    /// Whether a connection is waiting to be accepted (does not wait, accepts nothing).
+    bool pending() const;
     void close();
     void setCancel(std::function<bool()> cancelled);
 

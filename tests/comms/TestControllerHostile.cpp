@@ -1,7 +1,9 @@
 // Bounded resources in hsmu-controller (issue 14): hostile and careless clients against a real
-// controller process. Idle strangers (no hello) never lock out a token holder; failed tokens
-// are rate-limited per address; the token is never taken from argv. After every pattern the
-// controller's peak resident set (VmHWM) stays under 100 MB; each figure is printed.
+// controller process. A client that sends heartbeats and never reads the replies is dropped
+// (capped send queue, or the idle timeout); idle strangers (no hello) never lock out a token
+// holder; failed tokens are rate-limited per address; the token is never taken from argv.
+// After every pattern the controller's peak resident set (VmHWM) stays under 100 MB; each
+// figure is printed.
 #include "comms/protocol/FrameCodec.h"
 
 #include "ControllerProcess.h"
@@ -9,6 +11,7 @@
 #include "RawClient.h"
 
 #include <QDeadlineTimer>
+#include <QDir>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -21,6 +24,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <fstream>
 #include <vector>
 
@@ -51,6 +55,22 @@ int rawConnect(std::uint16_t port) {
     return fd;
 }
 
+/// How many sockets the process has open (-1 if unknown).
+int socketsOf(qint64 pid) {
+    const QDir fds(QStringLiteral("/proc/%1/fd").arg(pid));
+    if (!fds.exists())
+        return -1;
+    int n = 0;
+    for (const QString& name : fds.entryList(QDir::System | QDir::NoDotAndDotDot)) {
+        char target[64] = {};
+        const QByteArray path = fds.filePath(name).toLocal8Bit();
+        if (::readlink(path.constData(), target, sizeof target - 1) > 0 &&
+            std::strncmp(target, "socket:", 7) == 0)
+            ++n;
+    }
+    return n;
+}
+
 } // namespace
 
 class TestControllerHostile : public QObject {
@@ -72,11 +92,84 @@ private slots:
         std::ofstream(m_tokenFile.toStdString()) << "s3cret\n";
     }
 
-    // A client that sends heartbeats and never reads its replies: on some runs the controller
-    // stops reading it before its reply queue reaches the cap, so the session is neither
-    // dropped nor timed out (memory stays bounded, ~5.5 MB). That case was removed from this
-    // test until the session is fixed (issue 14, noted); the send-queue cap itself is in
-    // ControllerSession::send.
+    void nonReadingClientIsDropped() {
+        ControllerProcess ctl = controller();
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const int fd = rawConnect(ctl.port());
+        QVERIFY(fd >= 0);
+        int small = 4096; // keep the kernel's buffers small: the queue is the controller's
+        ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+        std::vector<std::uint8_t> hello, beats;
+        encodeFrame(HelloMsg{kProtocolVersion, 1, "s3cret", ""}, 1, hello);
+        QCOMPARE(::write(fd, hello.data(), hello.size()), ssize_t(hello.size()));
+        std::uint32_t sequence = 2; // the decoder wants consecutive sequence numbers
+        const auto refill = [&] {
+            beats.clear();
+            for (int i = 0; i < 4096; ++i) {
+                std::vector<std::uint8_t> f;
+                encodeFrame(HeartbeatMsg{sequence}, sequence, f);
+                ++sequence;
+                beats.insert(beats.end(), f.begin(), f.end());
+            }
+        };
+        std::size_t offset = 0;
+        refill();
+        ::fcntl(fd, F_SETFL, O_NONBLOCK);
+        // Heartbeats (each answered by the controller), never reading: the controller must drop
+        // the connection once its queue of unread replies passes its cap.
+        std::size_t sent = 0;
+        bool closed = false, accepted = false;
+        const QDeadlineTimer bound(120000); // [ms] a bound on the loop, not a timing assertion
+        // Sends until the controller drops the connection (however slowly a loaded machine
+        // lets it get there); the deadline only keeps a broken controller from hanging us.
+        while (!closed) {
+            const ssize_t n =
+                ::send(fd, beats.data() + offset, beats.size() - offset, MSG_NOSIGNAL);
+            if (n > 0) {
+                sent += std::size_t(n);
+                offset += std::size_t(n);
+                if (offset == beats.size()) {
+                    refill();
+                    offset = 0;
+                }
+                continue;
+            }
+            if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
+                closed = true; // reset by the controller
+                break;
+            }
+            pollfd p{fd, POLLOUT, 0};
+            if (::poll(&p, 1, 200) > 0 && (p.revents & (POLLERR | POLLHUP)))
+                closed = true;
+            // The controller may have closed its end while this socket cannot hear of it yet:
+            // on loopback with this tiny receive buffer both kernels can drop each other's
+            // segments and back their retransmissions off for a minute or more (observed),
+            // so the controller's own sockets are looked at too.
+            const int sockets = socketsOf(ctl.pid());
+            if (sockets >= 2)
+                accepted = true; // the listener and this connection
+            else if (accepted && sockets == 1)
+                closed = true; // the listener only: the connection is gone
+
+            if (bound.hasExpired())
+                break; // never hang: the log check below then fails
+        }
+        ::close(fd);
+        const long peak = ctl.rssKb(true);
+        qInfo("non-reading client: %zu bytes of heartbeats sent; controller VmHWM %ld kB", sent,
+              peak);
+        QVERIFY(peak > 0 && peak < kMaxRssKb);
+        ctl.stop();
+        // Dropped: the controller closed the connection, at the send-queue cap or at the idle
+        // timeout when the stream stalls (seen about once in 60 runs under load: the two
+        // kernels dropped each other's segments and backed off for a minute; the old session
+        // then hung on its undeliverable timeout refusal). Either way it says so.
+        // (The timeout paths themselves: test_comms_controller_session.)
+        qInfo("dropped at the queue cap: %s",
+              ctl.log().contains("send queue past") ? "yes" : "no (timeout)");
+        QVERIFY2(closed, qPrintable("the controller never dropped the client: " + ctl.log()));
+        QVERIFY2(ctl.log().contains("dropped "), qPrintable(ctl.log()));
+    }
 
     void idleStrangersDoNotLockOutTheTokenHolder() {
         ControllerProcess ctl = controller();

@@ -463,6 +463,45 @@ private slots:
         QCOMPARE(server.notes.back(), std::string("client closed"));
     }
 
+    // One client at a time: an idle session (no frame for controller.idleTimeout) gives way
+    // to a client that is waiting to connect; with nobody waiting it may idle on.
+    void idleSessionGivesWayToAWaitingClient() {
+        nlohmann::json j = condition3(0.2);
+        j["structure"]["elements"][0]["specimen"]["forceNoiseStd"] = 0.0;
+        j["controller"]["idleTimeout"] = 1.0;
+        const std::string path = writeConfig(m_dir.path(), "idle.json", j);
+        ControllerProcess ctl = controller(path, "simapp", {"--data-size", "32"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawPeer a;
+        QVERIFY2(a.socket.connect("127.0.0.1", ctl.port(), kWait, a.error), a.error.c_str());
+        QVERIFY(a.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 32})));
+        QVERIFY(a.send(frame({3.0, 0.002}, 32)));
+        QVERIFY(a.send(frame({6.0}, 32)));
+        auto r = a.receive(32);
+        QVERIFY2(r && (*r)[0] == 0.002, a.error.c_str());
+        // Idle past the timeout with nobody else waiting (the idle time itself, not a
+        // synchronisation): the session is kept and answers.
+        std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+        QVERIFY(a.send(frame({6.0}, 32)));
+        r = a.receive(32);
+        QVERIFY2(r && (*r)[0] == 0.002, a.error.c_str());
+        // Now a second client connects while the first idles: it is served (within the idle
+        // timeout plus the server's 0.2 s poll; kWait bounds it) and the first is closed.
+        RawPeer b;
+        QVERIFY2(b.socket.connect("127.0.0.1", ctl.port(), kWait, b.error), b.error.c_str());
+        QVERIFY(b.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 32})));
+        QVERIFY(b.send(frame({6.0}, 32)));
+        r = b.receive(32);
+        QVERIFY2(r, b.error.c_str());
+        QCOMPARE((*r)[0], 0.0); // a fresh specimen: the new session starts from zero
+        std::uint8_t byte;
+        QVERIFY(!a.socket.read(&byte, 1, kWait, a.error));
+        QVERIFY2(a.socket.closedByPeer(), a.error.c_str());
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("idle for 1 s while another client waits"),
+                 qPrintable(ctl.log()));
+    }
+
     void clientVanishingMidFrameFreesTheServer() {
         ControllerProcess ctl = controller(m_quiet, "simapp");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
