@@ -952,6 +952,35 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::AlarmPanel</name>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation>Acknowledge selected</translation>
+    </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Acknowledge all</translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation>Critical alarms stay red until acknowledged (double-click or the buttons).</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::AttentionBanner</name>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Acknowledge all</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation>
+            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
+            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ControlBar</name>
     <message>
         <source>Test control</source>
@@ -1254,10 +1283,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>the test cannot start: %1</translation>
     </message>
     <message>
-        <source>Acknowledge all</source>
-        <translation>Acknowledge all</translation>
-    </message>
-    <message>
         <source>Test setup</source>
         <translation>Test setup</translation>
     </message>
@@ -1268,14 +1293,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Pending updates</source>
         <translation>Pending updates</translation>
-    </message>
-    <message>
-        <source>Acknowledge selected</source>
-        <translation>Acknowledge selected</translation>
-    </message>
-    <message>
-        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation>Critical alarms stay red until acknowledged (double-click or the buttons).</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1336,13 +1353,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1 (connects at start)</source>
         <translation>%1 (connects at start)</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation>
-            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
-            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
-        </translation>
     </message>
     <message>
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>

@@ -952,6 +952,35 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::AlarmPanel</name>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation>Reconocer seleccionadas</translation>
+    </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Reconocer todas</translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation>Las alarmas críticas permanecen en rojo hasta que se reconocen (doble clic o los botones).</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::AttentionBanner</name>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Reconocer todas</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation>
+            <numerusform>%n alarma crítica sin reconocer. Última: %1</numerusform>
+            <numerusform>%n alarmas críticas sin reconocer. Última: %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ControlBar</name>
     <message>
         <source>Test control</source>
@@ -1254,10 +1283,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>el ensayo no puede iniciarse: %1</translation>
     </message>
     <message>
-        <source>Acknowledge all</source>
-        <translation>Reconocer todas</translation>
-    </message>
-    <message>
         <source>Test setup</source>
         <translation>Configuración del ensayo</translation>
     </message>
@@ -1268,14 +1293,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Pending updates</source>
         <translation>Actualizaciones pendientes</translation>
-    </message>
-    <message>
-        <source>Acknowledge selected</source>
-        <translation>Reconocer seleccionadas</translation>
-    </message>
-    <message>
-        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation>Las alarmas críticas permanecen en rojo hasta que se reconocen (doble clic o los botones).</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1336,13 +1353,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1 (connects at start)</source>
         <translation>%1 (se conecta al iniciar)</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation>
-            <numerusform>%n alarma crítica sin reconocer. Última: %1</numerusform>
-            <numerusform>%n alarmas críticas sin reconocer. Última: %1</numerusform>
-        </translation>
     </message>
     <message>
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>

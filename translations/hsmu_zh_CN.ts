@@ -952,6 +952,34 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::AlarmPanel</name>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation>确认所选</translation>
+    </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>全部确认</translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation>严重报警在确认前保持红色（双击或使用按钮确认）。</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::AttentionBanner</name>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>全部确认</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation>
+            <numerusform>%n 条严重报警未确认。最新：%1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ControlBar</name>
     <message>
         <source>Test control</source>
@@ -1254,10 +1282,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>试验无法启动：%1</translation>
     </message>
     <message>
-        <source>Acknowledge all</source>
-        <translation>全部确认</translation>
-    </message>
-    <message>
         <source>Test setup</source>
         <translation>试验设置</translation>
     </message>
@@ -1268,14 +1292,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Pending updates</source>
         <translation>待处理更新</translation>
-    </message>
-    <message>
-        <source>Acknowledge selected</source>
-        <translation>确认所选</translation>
-    </message>
-    <message>
-        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation>严重报警在确认前保持红色（双击或使用按钮确认）。</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1336,12 +1352,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1 (connects at start)</source>
         <translation>%1（启动时连接）</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation>
-            <numerusform>%n 条严重报警未确认。最新：%1</numerusform>
-        </translation>
     </message>
     <message>
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>

@@ -16,6 +16,8 @@
 // confirmation while a test runs ("end the test and keep the data"). Spin boxes and combo
 // boxes take the wheel only when focused (WheelGuard). Operator events come back from the
 // worker stamped with step and time and go into the alarm and event list.
+// Menus and signal wiring: MainWindowWiring.cpp; banner, alarm dock and the end confirmation
+// are their own widgets (AttentionBanner, AlarmPanel, EndConfirmation).
 // It owns the TestController. Thread rules: GUI thread only.
 
 #include "gui/ConfigOverrides.h"
@@ -45,6 +47,7 @@ struct Alarm;
 namespace hsmu::gui {
 
 class AlarmList;
+class AttentionBanner;
 class ControlBar;
 class LivePlotsPanel;
 class ParametersPanel;
@@ -128,8 +131,7 @@ private:
     TestController* m_controller = nullptr;
     ControlBar* m_controls = nullptr;
     LivePlotsPanel* m_plots = nullptr;
-    QWidget* m_banner = nullptr;
-    QLabel* m_bannerText = nullptr;
+    AttentionBanner* m_banner = nullptr;
     SetupPanel* m_setup = nullptr;
     ParametersPanel* m_parameters = nullptr;
     PendingUpdatesPanel* m_pending = nullptr;
