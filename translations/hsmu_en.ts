@@ -1554,13 +1554,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Updates are applied %1; choose "on the operator's approval" to decide each one.</source>
         <translation>Updates are applied %1; choose "on the operator's approval" to decide each one.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n update(s) waiting for a decision.</source>
-        <translation>
-            <numerusform>%n update(s) waiting for a decision.</numerusform>
-            <numerusform>%n update(s) waiting for a decision.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
         <translation>#%1 %2 at t = %3 s (step %4)</translation>
@@ -1574,11 +1567,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Reject</translation>
     </message>
     <message numerus="yes">
-        <source> - latest of %n proposal(s) since the last decision</source>
+        <source>%n update(s) waiting for a decision, oldest first.</source>
         <translation>
-            <numerusform> - latest of %n proposal(s) since the last decision</numerusform>
-            <numerusform> - latest of %n proposal(s) since the last decision</numerusform>
+            <numerusform>%n update(s) waiting for a decision, oldest first.</numerusform>
+            <numerusform>%n update(s) waiting for a decision, oldest first.</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
+        <translation>
+            <numerusform>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</numerusform>
+            <numerusform>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, fit error %1</source>
+        <translation>, fit error %1</translation>
     </message>
 </context>
 <context>

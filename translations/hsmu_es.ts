@@ -1554,13 +1554,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Updates are applied %1; choose &quot;on the operator&apos;s approval&quot; to decide each one.</source>
         <translation>Las actualizaciones se aplican %1; elija &quot;con la aprobación del operador&quot; para decidir cada una.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n update(s) waiting for a decision.</source>
-        <translation>
-            <numerusform>%n actualización en espera de una decisión.</numerusform>
-            <numerusform>%n actualizaciones en espera de una decisión.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
         <translation>#%1 %2 en t = %3 s (paso %4)</translation>
@@ -1574,11 +1567,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Rechazar</translation>
     </message>
     <message numerus="yes">
-        <source> - latest of %n proposal(s) since the last decision</source>
+        <source>%n update(s) waiting for a decision, oldest first.</source>
         <translation>
-            <numerusform> - la última de %n propuesta desde la última decisión</numerusform>
-            <numerusform> - la última de %n propuestas desde la última decisión</numerusform>
+            <numerusform>%n actualización esperando una decisión, la más antigua primero.</numerusform>
+            <numerusform>%n actualizaciones esperando una decisión, la más antigua primero.</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
+        <translation>
+            <numerusform>%n propuesta más reciente no se encoló (la cola admite %1); cada una está en el registro.</numerusform>
+            <numerusform>%n propuestas más recientes no se encolaron (la cola admite %1); cada una está en el registro.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, fit error %1</source>
+        <translation>, error de ajuste %1</translation>
     </message>
 </context>
 <context>

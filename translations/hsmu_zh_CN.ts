@@ -1553,12 +1553,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Updates are applied %1; choose &quot;on the operator&apos;s approval&quot; to decide each one.</source>
         <translation>更新应用方式：%1；选择“经操作员批准后”可逐一决定。</translation>
     </message>
-    <message numerus="yes">
-        <source>%n update(s) waiting for a decision.</source>
-        <translation>
-            <numerusform>%n 个更新等待决定。</numerusform>
-        </translation>
-    </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
         <translation>#%1 %2，t = %3 s（第 %4 步）</translation>
@@ -1572,10 +1566,20 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>拒绝</translation>
     </message>
     <message numerus="yes">
-        <source> - latest of %n proposal(s) since the last decision</source>
+        <source>%n update(s) waiting for a decision, oldest first.</source>
         <translation>
-            <numerusform> - 自上次决定以来 %n 个提议中的最新一个</numerusform>
+            <numerusform>%n 个更新等待决定，最早的在前。</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
+        <translation>
+            <numerusform>%n 个较新的提议未入队（队列容量 %1）；每一个都已记录。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, fit error %1</source>
+        <translation>，拟合误差 %1</translation>
     </message>
 </context>
 <context>

@@ -58,11 +58,12 @@ struct RecordWriter::Impl {
     h5::Id severityType, kindType, messageType, noteType;
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
     h5::Extendible par, sd, aux, fit, applied, thisStep, pending, tracking, requested;
-    h5::Extendible eventStep, eventTime, eventElement, eventValues;
+    h5::Extendible eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal;
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
     h5::Extendible noteTime, noteStep, noteText;
 
-    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement;
+    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement,
+        bEventDecision, bEventProposal;
     std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
         bTracking, bEventTime, bEventValues;
     std::vector<Alarm> bAlarms;
@@ -218,6 +219,14 @@ void RecordWriter::Impl::createUpdating(hid_t root) {
     eventElement = h5::Extendible(e.get(), "element", i32, -1, w, chunk);
     eventValues = h5::Extendible(e.get(), "values", f64, int(nPar), w, chunk);
     h5::writeAttr(eventValues.id(), "names", info.parameters, w);
+    // What became of each offer (UpdateDecision, language-neutral codes) and its proposal id.
+    eventDecision = h5::Extendible(e.get(), "decision", i32, -1, w, chunk);
+    std::vector<std::string> codes;
+    for (UpdateDecision d : {UpdateDecision::Applied, UpdateDecision::Refused,
+                             UpdateDecision::Rejected, UpdateDecision::NotQueued})
+        codes.emplace_back(updateDecisionName(d));
+    h5::writeAttr(eventDecision.id(), "codes", codes, w);
+    eventProposal = h5::Extendible(e.get(), "proposal", i32, -1, w, chunk);
 }
 
 void RecordWriter::Impl::createLogs(hid_t root) {
@@ -249,7 +258,8 @@ void RecordWriter::Impl::createLogs(hid_t root) {
 
 void RecordWriter::Impl::clearBuffers() {
     for (auto* b :
-         {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement})
+         {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement,
+          &bEventDecision, &bEventProposal})
         b->clear();
     for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
                     &bTracking, &bEventTime, &bEventValues})
@@ -313,6 +323,8 @@ void RecordWriter::Impl::writeLogs() {
         eventTime.append(bEventTime.data(), m);
         eventElement.append(bEventElement.data(), m);
         eventValues.append(bEventValues.data(), m);
+        eventDecision.append(bEventDecision.data(), m);
+        eventProposal.append(bEventProposal.data(), m);
     }
     if (!bNotes.empty()) {
         std::vector<double> t;
@@ -353,7 +365,8 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
     return {&step,          &time,      &ag,           &u,           &v,         &a,
             &def,           &force,     &cmd,          &par,         &sd,        &aux,
             &fit,           &applied,   &thisStep,     &pending,     &tracking,  &requested,
-            &eventStep,     &eventTime, &eventElement, &eventValues, &alarmTime, &alarmStep,
+            &eventStep,     &eventTime, &eventElement, &eventValues, &eventDecision,
+            &eventProposal, &alarmTime, &alarmStep,
             &alarmSeverity, &alarmKind, &alarmMessage, &noteTime,    &noteStep,  &noteText};
 }
 
@@ -404,8 +417,9 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.bTracking.push_back(r.hasUpdating ? up.tracking.j3 : kNaN);
         d.bRequested.push_back(r.hasUpdating && up.updateRequested ? 1 : 0);
         if (r.hasUpdating)
-            for (const UpdateEvent& ev : up.applied)
-                d.bufferEvent(ev);
+            for (const auto* events : {&up.applied, &up.decided})
+                for (const UpdateEvent& ev : *events)
+                    d.bufferEvent(ev);
     }
     if (d.bTime.size() >= std::size_t(kMaxBufferedRows) ||
         long(d.bU.size() * 3 + d.bDef.size() * 3) >= kMaxBufferedValues ||
@@ -434,6 +448,8 @@ void RecordWriter::Impl::bufferEvent(const UpdateEvent& ev) {
     bEventStep.push_back(ev.step);
     bEventTime.push_back(ev.time);
     bEventElement.push_back(element);
+    bEventDecision.push_back(int(ev.decision));
+    bEventProposal.push_back(ev.proposal);
     for (const std::string& name : layout.updating->parameters) {
         const auto it = ev.applied.find(name);
         bEventValues.push_back(it == ev.applied.end() ? kNaN : it->second);
