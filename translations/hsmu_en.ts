@@ -2,6 +2,61 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>AlarmText</name>
+    <message>
+        <source>operator hold</source>
+        <translation>operator hold</translation>
+    </message>
+    <message>
+        <source>predicted displacement is not finite</source>
+        <translation>predicted displacement is not finite</translation>
+    </message>
+    <message>
+        <source>restoring force or response is not finite</source>
+        <translation>restoring force or response is not finite</translation>
+    </message>
+    <message>
+        <source>test held: %1</source>
+        <translation>test held: %1</translation>
+    </message>
+    <message>
+        <source>test resumed</source>
+        <translation>test resumed</translation>
+    </message>
+    <message>
+        <source>model error %1 % above the threshold %2 %</source>
+        <translation>model error %1 % above the threshold %2 %</translation>
+    </message>
+    <message>
+        <source>sudden strength loss: measured force %1 short of the model's by %2</source>
+        <translation>sudden strength loss: measured force %1 short of the model's by %2</translation>
+    </message>
+    <message>
+        <source>identification step rejected: %1</source>
+        <translation>identification step rejected: %1</translation>
+    </message>
+    <message>
+        <source>actuator tracking error J2 = %1 % (delay J1 = %2 s)</source>
+        <translation>actuator tracking error J2 = %1 % (delay J1 = %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 has been at its bound %2 for %3 s</source>
+        <translation>%1 has been at its bound %2 for %3 s</translation>
+    </message>
+    <message>
+        <source>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</source>
+        <translation>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</translation>
+    </message>
+    <message>
+        <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
+        <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</translation>
+    </message>
+    <message>
+        <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
+        <translation>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</translation>
+    </message>
+</context>
+<context>
     <name>CompareCommand</name>
     <message>
         <source>Run the paper's comparison protocol (reference, initial, updated).</source>
@@ -2006,10 +2061,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Language:</translation>
     </message>
     <message>
-        <source>A new language applies the next time the console starts.</source>
-        <translation>A new language applies the next time the console starts.</translation>
-    </message>
-    <message>
         <source>Recent files:</source>
         <translation>Recent files:</translation>
     </message>
@@ -2020,6 +2071,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Cancel</source>
         <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>A new language applies at once, to every window.</source>
+        <translation>A new language applies at once, to every window.</translation>
     </message>
 </context>
 <context>
@@ -2205,6 +2260,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
         <translation>When updates are applied is chosen in the Pending updates panel (one setting for the test).</translation>
+    </message>
+    <message>
+        <source>OpenSees adapter element (numerical substructure)</source>
+        <translation>OpenSees adapter element (numerical substructure)</translation>
+    </message>
+    <message>
+        <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
+        <translation>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,61 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
 <context>
+    <name>AlarmText</name>
+    <message>
+        <source>operator hold</source>
+        <translation>detención por el operador</translation>
+    </message>
+    <message>
+        <source>predicted displacement is not finite</source>
+        <translation>el desplazamiento predicho no es finito</translation>
+    </message>
+    <message>
+        <source>restoring force or response is not finite</source>
+        <translation>la fuerza restauradora o la respuesta no es finita</translation>
+    </message>
+    <message>
+        <source>test held: %1</source>
+        <translation>ensayo detenido: %1</translation>
+    </message>
+    <message>
+        <source>test resumed</source>
+        <translation>ensayo reanudado</translation>
+    </message>
+    <message>
+        <source>model error %1 % above the threshold %2 %</source>
+        <translation>error del modelo %1 % por encima del umbral %2 %</translation>
+    </message>
+    <message>
+        <source>sudden strength loss: measured force %1 short of the model&apos;s by %2</source>
+        <translation>pérdida súbita de resistencia: la fuerza medida %1 queda %2 por debajo de la del modelo</translation>
+    </message>
+    <message>
+        <source>identification step rejected: %1</source>
+        <translation>paso de identificación rechazado: %1</translation>
+    </message>
+    <message>
+        <source>actuator tracking error J2 = %1 % (delay J1 = %2 s)</source>
+        <translation>error de seguimiento del actuador J2 = %1 % (retardo J1 = %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 has been at its bound %2 for %3 s</source>
+        <translation>%1 lleva %3 s en su límite %2</translation>
+    </message>
+    <message>
+        <source>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</source>
+        <translation>actualización no aplicada: la cola de aprobación está llena (%1 propuestas pendientes); esta y las siguientes ofertas quedan en el registro hasta que el operador decida</translation>
+    </message>
+    <message>
+        <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
+        <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) dentro del límite %5</translation>
+    </message>
+    <message>
+        <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
+        <translation>%1 es inestable para este modelo: omega_max dt = %2 supera %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s o el integrador alphaOS</translation>
+    </message>
+</context>
+<context>
     <name>CompareCommand</name>
     <message>
         <source>Run the paper&apos;s comparison protocol (reference, initial, updated).</source>
@@ -2006,10 +2061,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Idioma:</translation>
     </message>
     <message>
-        <source>A new language applies the next time the console starts.</source>
-        <translation>Un nuevo idioma se aplica la próxima vez que se inicie la consola.</translation>
-    </message>
-    <message>
         <source>Recent files:</source>
         <translation>Archivos recientes:</translation>
     </message>
@@ -2020,6 +2071,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Cancel</source>
         <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>A new language applies at once, to every window.</source>
+        <translation>Un idioma nuevo se aplica de inmediato, a todas las ventanas.</translation>
     </message>
 </context>
 <context>
@@ -2205,6 +2260,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
         <translation>Cuándo se aplican las actualizaciones se elige en el panel Actualizaciones pendientes (un solo ajuste para el ensayo).</translation>
+    </message>
+    <message>
+        <source>OpenSees adapter element (numerical substructure)</source>
+        <translation>elemento adapter de OpenSees (subestructura numérica)</translation>
+    </message>
+    <message>
+        <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
+        <translation>OpenSees escucha: inicie primero el modelo con su `element adapter ... PORT` (su analyze debe tener al menos los pasos del ensayo). Un paso es definitivo cuando se envía el siguiente: tras una detención el ensayo no puede repetirlo.</translation>
     </message>
 </context>
 <context>

@@ -67,7 +67,7 @@ struct RecordReader::Impl {
     RecordData data;
     Column step, time, ag, u, v, a, def, force, cmd, par, sd, aux, fit, applied, thisStep, pending;
     Column tracking, requested; // schema 2
-    Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
+    Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
     Column eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal, noteTime, noteStep, noteText;
     bool v2 = false; // schema 2 datasets present
     std::vector<std::string> decisionCodes; // /updating/events/decision "codes" (if present)
@@ -124,6 +124,8 @@ std::vector<Column*> RecordReader::Impl::stepColumns() {
 
 std::vector<Column*> RecordReader::Impl::logColumns() {
     std::vector<Column*> c = {&alarmTime, &alarmStep, &alarmSeverity, &alarmKind, &alarmMessage};
+    if (alarmCode.dset.valid())
+        c.push_back(&alarmCode);
     if (v2) {
         for (Column* x : {&noteTime, &noteStep, &noteText})
             c.push_back(x);
@@ -242,6 +244,8 @@ void RecordReader::Impl::readMetadata() {
     alarmSeverity = column("/alarms/severity", -1);
     alarmKind = column("/alarms/kind", -1);
     alarmMessage = column("/alarms/message", -1);
+    if (H5Lexists(root, "/alarms/code", H5P_DEFAULT) > 0) // optional (added later)
+        alarmCode = column("/alarms/code", -1);
     if (h5::hasAttr(root, "metadata_checksum") &&
         h5::readStringAttr(root, "metadata_checksum", w) != recordMetadataChecksum(m, layout))
         throw RecordError(path + ": damaged record (the metadata checksum does not match: "
@@ -328,6 +332,8 @@ void RecordReader::Impl::readNewAlarms() {
     hsize_t n = alarmTime.rows();
     for (const Column* c : {&alarmStep, &alarmSeverity, &alarmKind, &alarmMessage})
         n = std::min(n, c->rows());
+    if (alarmCode.dset.valid())
+        n = std::min(n, alarmCode.rows());
     const hsize_t r0 = data.alarms.size();
     if (n <= r0)
         return;
@@ -338,9 +344,11 @@ void RecordReader::Impl::readNewAlarms() {
     const auto sev = readFixedStrings(alarmSeverity, r0, n, path);
     const auto kind = readFixedStrings(alarmKind, r0, n, path);
     const auto msg = readFixedStrings(alarmMessage, r0, n, path);
+    const auto code = alarmCode.dset.valid() ? readFixedStrings(alarmCode, r0, n, path)
+                                             : std::vector<std::string>(n - r0);
     for (std::size_t i = 0; i < t.size(); ++i)
         data.alarms.push_back(
-            {t[i], s[i], severityFromName(sev[i]), kindFromName(kind[i]), msg[i]});
+            {t[i], s[i], severityFromName(sev[i]), kindFromName(kind[i]), msg[i], code[i], {}});
 }
 
 void RecordReader::Impl::readNewEvents() {

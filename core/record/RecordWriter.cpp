@@ -59,7 +59,7 @@ struct RecordWriter::Impl {
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
     h5::Extendible par, sd, aux, fit, applied, thisStep, pending, tracking, requested;
     h5::Extendible eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal;
-    h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
+    h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
     h5::Extendible noteTime, noteStep, noteText;
 
     std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement,
@@ -245,6 +245,9 @@ void RecordWriter::Impl::createLogs(hid_t root) {
         alarmStep = h5::Extendible(g.get(), "step", i32, -1, w, chunk);
         alarmSeverity = h5::Extendible(g.get(), "severity", severityType.get(), -1, w, chunk);
         alarmKind = h5::Extendible(g.get(), "kind", kindType.get(), -1, w, chunk);
+        // The message's template (Alarm::code, "" for none): language-neutral, the console
+        // shows its own translation of it; /alarms/message keeps the English text.
+        alarmCode = h5::Extendible(g.get(), "code", kindType.get(), -1, w, chunk);
         alarmMessage = h5::Extendible(g.get(), "message", messageType.get(), -1, w, chunk);
     }
     const h5::Id g = h5::check(H5Gcreate2(root, "notes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,
@@ -302,13 +305,14 @@ void RecordWriter::Impl::writeLogs() {
     if (!bAlarms.empty()) {
         std::vector<double> t;
         std::vector<int> s;
-        std::vector<char> sev, kind, msg;
+        std::vector<char> sev, kind, msg, code;
         for (const Alarm& al : bAlarms) {
             t.push_back(al.time);
             s.push_back(al.step);
             putFixed(sev, alarmSeverityName(al.severity), recordschema::kSeverityChars);
             putFixed(kind, alarmKindName(al.kind), recordschema::kKindChars);
             putFixed(msg, al.message, recordschema::kMessageChars);
+            putFixed(code, al.code, recordschema::kKindChars);
         }
         const hsize_t m = bAlarms.size();
         alarmTime.append(t.data(), m);
@@ -316,6 +320,7 @@ void RecordWriter::Impl::writeLogs() {
         alarmSeverity.append(sev.data(), m);
         alarmKind.append(kind.data(), m);
         alarmMessage.append(msg.data(), m);
+        alarmCode.append(code.data(), m);
     }
     if (!bEventStep.empty() && layout.updating) {
         const hsize_t m = bEventStep.size();
@@ -367,7 +372,7 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
             &fit,           &applied,   &thisStep,     &pending,     &tracking,  &requested,
             &eventStep,     &eventTime, &eventElement, &eventValues, &eventDecision,
             &eventProposal, &alarmTime, &alarmStep,
-            &alarmSeverity, &alarmKind, &alarmMessage, &noteTime,    &noteStep,  &noteText};
+            &alarmSeverity, &alarmKind, &alarmMessage, &alarmCode, &noteTime,    &noteStep,  &noteText};
 }
 
 RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,

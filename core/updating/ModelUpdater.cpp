@@ -75,7 +75,9 @@ void ModelUpdater::report(std::vector<UpdateEvent>& events, std::vector<Alarm>& 
                 alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::ModelUpdate,
                                   "update not applied: " + ev.message +
                                       " (this and later offers are in the record until the "
-                                      "operator decides)"});
+                                      "operator decides)",
+                                  "approval-queue-full",
+                                  {std::to_string(m_reporter->maxPending())}});
             m_queueFullReported = true;
             out.decided.push_back(std::move(ev));
         } else

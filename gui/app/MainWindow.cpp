@@ -8,6 +8,7 @@
 #include "gui/app/ControlBar.h"
 #include "gui/app/EndConfirmation.h"
 #include "gui/app/GroundMotionCheck.h"
+#include "gui/app/LiveText.h"
 #include "gui/app/ParametersPanel.h"
 #include "gui/app/PendingUpdatesPanel.h"
 #include "gui/app/PreflightChecks.h"
@@ -42,7 +43,6 @@ bool active(RunState s) {
 
 MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     : QMainWindow(parent), m_overrides(overrides) {
-    setWindowTitle(tr("HSMU Console"));
     m_controller = new TestController(this);
     m_controller->setRecordDirectory(ConsoleSettings::recordDirectory());
     m_controls = new ControlBar(this);
@@ -65,13 +65,13 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     setupScroll->setWidget(m_setup);
     setupScroll->setWidgetResizable(true);
     setupScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_setupDock = addDock(setupScroll, tr("Test setup"), QStringLiteral("setupDock"),
+    m_setupDock = addDock(setupScroll, QString(), QStringLiteral("setupDock"),
                           Qt::RightDockWidgetArea);
     m_parameters = new ParametersPanel(this);
-    m_parametersDock = addDock(m_parameters, tr("Parameters"), QStringLiteral("parametersDock"),
+    m_parametersDock = addDock(m_parameters, QString(), QStringLiteral("parametersDock"),
                                Qt::RightDockWidgetArea);
     m_pending = new PendingUpdatesPanel(this);
-    QDockWidget* pending = addDock(m_pending, tr("Pending updates"), QStringLiteral("pendingDock"),
+    QDockWidget* pending = addDock(m_pending, QString(), QStringLiteral("pendingDock"),
                                    Qt::RightDockWidgetArea);
     // The setup matters before a start, the parameters during a run: one tab each, the
     // plots keep the width; the pending updates stay in view below.
@@ -81,7 +81,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
 
     auto* alarmPanel = new AlarmPanel(this);
     m_alarms = alarmPanel->list();
-    m_alarmDock = addDock(alarmPanel, tr("Alarms and events"), QStringLiteral("alarmDock"),
+    m_alarmDock = addDock(alarmPanel, QString(), QStringLiteral("alarmDock"),
                           Qt::BottomDockWidgetArea);
     connect(m_banner, &AttentionBanner::acknowledgeAllRequested, m_alarms,
             &AlarmList::acknowledgeAll);
@@ -102,6 +102,30 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     if (const QByteArray s = ConsoleSettings::windowState(); !s.isEmpty())
         restoreState(s);
     WheelGuard::install(this); // no value changes by scrolling over a field
+    // Live language switching (Translations::install): every piece retranslates itself on
+    // QEvent::LanguageChange (LiveText, changeEvent); here the window's own texts.
+    LiveText::bind(this, [this, pending] {
+        m_setupDock->setWindowTitle(tr("Test setup"));
+        m_parametersDock->setWindowTitle(tr("Parameters"));
+        pending->setWindowTitle(tr("Pending updates"));
+        m_alarmDock->setWindowTitle(tr("Alarms and events"));
+        showTitle();
+        if (m_controller->hasTest())
+            showLinkState(m_linkConnected, m_linkFault);
+        // Plot titles are set when a test is configured: again now if no data would be lost.
+        if (m_controller->hasTest() && !active(m_controller->state()) &&
+            m_controller->state() != RunState::Finished &&
+            m_controller->state() != RunState::Stopped)
+            m_plots->configure(m_controller->layout(), m_controller->config());
+    });
+}
+
+void MainWindow::showTitle() {
+    if (m_controller->hasTest())
+        setWindowTitle(
+            tr("HSMU Console - %1").arg(QString::fromStdString(m_controller->config().name)));
+    else
+        setWindowTitle(tr("HSMU Console"));
 }
 
 MainWindow::~MainWindow() = default;
@@ -344,8 +368,7 @@ void MainWindow::onTestLoaded() {
                              .arg(QString::fromStdString(m_controller->config().name),
                                   QString::fromStdString(m_controller->config().sourcePath)),
                          AlarmSeverity::Info);
-    setWindowTitle(
-        tr("HSMU Console - %1").arg(QString::fromStdString(m_controller->config().name)));
+    showTitle();
     m_status->setProgress(0, 0, 0.0, 0.0);
     m_status->setRecordingFile(QString());
     m_parameters->setSnapshot({});
@@ -356,6 +379,8 @@ void MainWindow::onTestLoaded() {
 }
 
 void MainWindow::showLinkState(bool connected, bool fault) {
+    m_linkConnected = connected;
+    m_linkFault = fault;
     const comms::LinkAddress& a = m_controller->controllerAddress();
     if (a.kind == comms::LinkAddress::Kind::Builtin) {
         m_status->setLink(tr("built-in virtual lab"), true);

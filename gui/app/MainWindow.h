@@ -112,6 +112,8 @@ private:
     void onAlarm(const Alarm& alarm);
     void onAttention(int count, const QString& latest);
     void showLinkState(bool connected, bool fault);
+    /// "HSMU Console - <test>" (or without a test), in the current language.
+    void showTitle();
     /// The updating policy chosen in the Pending updates panel: the one setting, kept for
     /// every reload of the same configuration.
     void onPolicyChosen(ReporterPolicy policy, int everyN);
@@ -145,6 +147,7 @@ private:
     PreflightDialog* m_preflight = nullptr;
     QMessageBox* m_confirmation = nullptr;
     bool m_closeConfirmed = false;
+    bool m_linkConnected = false, m_linkFault = false; ///< the link state shown last
     std::optional<std::pair<ReporterPolicy, int>> m_policyChoice;
 };
 

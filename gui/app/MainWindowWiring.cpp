@@ -5,6 +5,7 @@
 #include "gui/app/AlarmList.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
+#include "gui/app/LiveText.h"
 #include "gui/app/OperatorEvent.h"
 #include "gui/app/ParametersPanel.h"
 #include "gui/app/PendingUpdatesPanel.h"
@@ -26,27 +27,38 @@
 namespace hsmu::gui {
 
 void MainWindow::buildMenus() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QMenu* file = menuBar()->addMenu(QString());
     // Ctrl+O belongs to the tool bar's action: one shortcut, one action.
-    file->addAction(tr("&Open configuration..."), this, &MainWindow::openConfigurationFile);
-    m_recentMenu = file->addMenu(tr("Open &recent"));
+    QAction* open = file->addAction(QString(), this, &MainWindow::openConfigurationFile);
+    m_recentMenu = file->addMenu(QString());
     connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
     rebuildRecentMenu();
     file->addSeparator();
-    file->addAction(tr("Open r&ecord..."), this, [this] { ReplayWindow::openWithDialog(this); });
+    QAction* record =
+        file->addAction(QString(), this, [this] { ReplayWindow::openWithDialog(this); });
     file->addSeparator();
-    QAction* note = file->addAction(tr("Add &note..."), this, &MainWindow::askForNote);
+    QAction* note = file->addAction(QString(), this, &MainWindow::askForNote);
     note->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_N));
-    note->setToolTip(tr("Record a note at the current step of the test"));
     file->addSeparator();
-    file->addAction(tr("&Settings..."), this, &MainWindow::openSettings);
+    QAction* settings = file->addAction(QString(), this, &MainWindow::openSettings);
     file->addSeparator();
-    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    QAction* quit = file->addAction(QString(), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
-    quit->setToolTip(tr("Quit the console (asks first while a test runs)"));
-    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu = menuBar()->addMenu(QString());
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         m_viewMenu->addAction(dock->toggleViewAction());
+    LiveText::bind(menuBar(), [=, this] {
+        file->setTitle(tr("&File"));
+        open->setText(tr("&Open configuration..."));
+        m_recentMenu->setTitle(tr("Open &recent"));
+        record->setText(tr("Open r&ecord..."));
+        note->setText(tr("Add &note..."));
+        note->setToolTip(tr("Record a note at the current step of the test"));
+        settings->setText(tr("&Settings..."));
+        quit->setText(tr("&Quit"));
+        quit->setToolTip(tr("Quit the console (asks first while a test runs)"));
+        m_viewMenu->setTitle(tr("&View"));
+    });
 }
 
 void MainWindow::askForNote() {

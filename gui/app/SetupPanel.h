@@ -18,6 +18,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -60,6 +61,11 @@ signals:
     void dirtyChanged(bool dirty);
 
 private:
+    /// The loaded configuration's name and ground-motion placeholder (or "no configuration").
+    void showName();
+    static void setLabel(QFormLayout* form, QWidget* field, const QString& text);
+    void enableLinkFields();
+    void showLinkNote();
     QWidget* buildRunGroup();
     QWidget* buildControllerGroup();
     QWidget* buildUpdatingGroup();
@@ -71,6 +77,7 @@ private:
     bool m_dirty = false;
     bool m_editable = true;
     QLabel* m_name = nullptr;
+    QLabel* m_linkNote = nullptr;
     QWidget* m_body = nullptr;
     QLabel* m_groundMotionStatus = nullptr;
     QLineEdit* m_groundMotion = nullptr;

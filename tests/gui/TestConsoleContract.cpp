@@ -24,6 +24,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTreeWidget>
 #include <QtTest>
 
@@ -230,6 +231,48 @@ private slots:
         QCOMPARE(panel.shownProposals(), (QList<int>{7, 8}));
         QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the old buttons
         QVERIFY(!panel.findChild<QPushButton*>(QStringLiteral("approve5")));
+    }
+
+    // Issue 13: OpenSees' adapter element is offered in the setup panel with what it needs
+    // (host and port OpenSees listens on; no token), and an adapter:// address round-trips.
+    void adapterLinkIsOfferedInTheSetup() {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* kind = setup->findChild<QComboBox*>(QStringLiteral("controllerKind"));
+        auto* host = setup->findChild<QLineEdit*>(QStringLiteral("controllerHost"));
+        auto* port = setup->findChild<QSpinBox*>(QStringLiteral("controllerPort"));
+        auto* token = setup->findChild<QLineEdit*>(QStringLiteral("controllerToken"));
+        auto* note = setup->findChild<QLabel*>(QStringLiteral("linkNote"));
+        QVERIFY(kind && host && port && token && note);
+        const int adapter = kind->findData(QStringLiteral("adapter"));
+        QVERIFY2(adapter >= 0, "no adapter entry");
+        QVERIFY(note->isHidden());
+        kind->setCurrentIndex(adapter);
+        host->setText(QStringLiteral("127.0.0.1"));
+        port->setValue(44094);
+        QVERIFY(host->isEnabled() && port->isEnabled());
+        QVERIFY(!token->isEnabled()); // OpenSees' adapter knows no token
+        QVERIFY(note->isVisibleTo(setup));
+        QVERIFY2(note->text().contains(QStringLiteral("element adapter")), qPrintable(note->text()));
+        QCOMPARE(setup->controllerText(), QStringLiteral("adapter://127.0.0.1:44094"));
+        QString error;
+        const auto address = setup->controller(&error);
+        QVERIFY2(address, qPrintable(error));
+        QCOMPARE(address->kind, hsmu::comms::LinkAddress::Kind::Adapter);
+        QCOMPARE(int(address->port), 44094);
+        // Applied: the test's link is the adapter (it connects at the pre-flight).
+        QVERIFY(window.applySetup());
+        QCOMPARE(window.controller().controllerAddress().kind,
+                 hsmu::comms::LinkAddress::Kind::Adapter);
+        // And back: an adapter address (command line, settings) selects the entry.
+        kind->setCurrentIndex(0);
+        QVERIFY(note->isHidden());
+        window.setControllerAddress(QStringLiteral("adapter://10.0.0.2:44095"));
+        QCOMPARE(kind->currentIndex(), adapter);
+        QCOMPARE(host->text(), QStringLiteral("10.0.0.2"));
+        QCOMPARE(port->value(), 44095);
     }
 
 private:
