@@ -2,6 +2,61 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>AlarmText</name>
+    <message>
+        <source>operator hold</source>
+        <translation>operator hold</translation>
+    </message>
+    <message>
+        <source>predicted displacement is not finite</source>
+        <translation>predicted displacement is not finite</translation>
+    </message>
+    <message>
+        <source>restoring force or response is not finite</source>
+        <translation>restoring force or response is not finite</translation>
+    </message>
+    <message>
+        <source>test held: %1</source>
+        <translation>test held: %1</translation>
+    </message>
+    <message>
+        <source>test resumed</source>
+        <translation>test resumed</translation>
+    </message>
+    <message>
+        <source>model error %1 % above the threshold %2 %</source>
+        <translation>model error %1 % above the threshold %2 %</translation>
+    </message>
+    <message>
+        <source>sudden strength loss: measured force %1 short of the model's by %2</source>
+        <translation>sudden strength loss: measured force %1 short of the model's by %2</translation>
+    </message>
+    <message>
+        <source>identification step rejected: %1</source>
+        <translation>identification step rejected: %1</translation>
+    </message>
+    <message>
+        <source>actuator tracking error J2 = %1 % (delay J1 = %2 s)</source>
+        <translation>actuator tracking error J2 = %1 % (delay J1 = %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 has been at its bound %2 for %3 s</source>
+        <translation>%1 has been at its bound %2 for %3 s</translation>
+    </message>
+    <message>
+        <source>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</source>
+        <translation>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</translation>
+    </message>
+    <message>
+        <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
+        <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</translation>
+    </message>
+    <message>
+        <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
+        <translation>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</translation>
+    </message>
+</context>
+<context>
     <name>CompareCommand</name>
     <message>
         <source>Run the paper's comparison protocol (reference, initial, updated).</source>
@@ -952,6 +1007,35 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::AlarmPanel</name>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation>Acknowledge selected</translation>
+    </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Acknowledge all</translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation>Critical alarms stay red until acknowledged (double-click or the buttons).</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::AttentionBanner</name>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Acknowledge all</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation>
+            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
+            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ControlBar</name>
     <message>
         <source>Test control</source>
@@ -1254,10 +1338,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>the test cannot start: %1</translation>
     </message>
     <message>
-        <source>Acknowledge all</source>
-        <translation>Acknowledge all</translation>
-    </message>
-    <message>
         <source>Test setup</source>
         <translation>Test setup</translation>
     </message>
@@ -1268,14 +1348,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Pending updates</source>
         <translation>Pending updates</translation>
-    </message>
-    <message>
-        <source>Acknowledge selected</source>
-        <translation>Acknowledge selected</translation>
-    </message>
-    <message>
-        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation>Critical alarms stay red until acknowledged (double-click or the buttons).</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1336,13 +1408,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1 (connects at start)</source>
         <translation>%1 (connects at start)</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation>
-            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
-            <numerusform>%n critical alarm(s) not acknowledged. Latest: %1</numerusform>
-        </translation>
     </message>
     <message>
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
@@ -1544,13 +1609,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Updates are applied %1; choose "on the operator's approval" to decide each one.</source>
         <translation>Updates are applied %1; choose "on the operator's approval" to decide each one.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n update(s) waiting for a decision.</source>
-        <translation>
-            <numerusform>%n update(s) waiting for a decision.</numerusform>
-            <numerusform>%n update(s) waiting for a decision.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
         <translation>#%1 %2 at t = %3 s (step %4)</translation>
@@ -1564,11 +1622,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Reject</translation>
     </message>
     <message numerus="yes">
-        <source> - latest of %n proposal(s) since the last decision</source>
+        <source>%n update(s) waiting for a decision, oldest first.</source>
         <translation>
-            <numerusform> - latest of %n proposal(s) since the last decision</numerusform>
-            <numerusform> - latest of %n proposal(s) since the last decision</numerusform>
+            <numerusform>%n update(s) waiting for a decision, oldest first.</numerusform>
+            <numerusform>%n update(s) waiting for a decision, oldest first.</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
+        <translation>
+            <numerusform>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</numerusform>
+            <numerusform>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, fit error %1</source>
+        <translation>, fit error %1</translation>
     </message>
 </context>
 <context>
@@ -1992,10 +2061,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Language:</translation>
     </message>
     <message>
-        <source>A new language applies the next time the console starts.</source>
-        <translation>A new language applies the next time the console starts.</translation>
-    </message>
-    <message>
         <source>Recent files:</source>
         <translation>Recent files:</translation>
     </message>
@@ -2006,6 +2071,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Cancel</source>
         <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>A new language applies at once, to every window.</source>
+        <translation>A new language applies at once, to every window.</translation>
     </message>
 </context>
 <context>
@@ -2191,6 +2260,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
         <translation>When updates are applied is chosen in the Pending updates panel (one setting for the test).</translation>
+    </message>
+    <message>
+        <source>OpenSees adapter element (numerical substructure)</source>
+        <translation>OpenSees adapter element (numerical substructure)</translation>
+    </message>
+    <message>
+        <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
+        <translation>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,61 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
 <context>
+    <name>AlarmText</name>
+    <message>
+        <source>operator hold</source>
+        <translation>detención por el operador</translation>
+    </message>
+    <message>
+        <source>predicted displacement is not finite</source>
+        <translation>el desplazamiento predicho no es finito</translation>
+    </message>
+    <message>
+        <source>restoring force or response is not finite</source>
+        <translation>la fuerza restauradora o la respuesta no es finita</translation>
+    </message>
+    <message>
+        <source>test held: %1</source>
+        <translation>ensayo detenido: %1</translation>
+    </message>
+    <message>
+        <source>test resumed</source>
+        <translation>ensayo reanudado</translation>
+    </message>
+    <message>
+        <source>model error %1 % above the threshold %2 %</source>
+        <translation>error del modelo %1 % por encima del umbral %2 %</translation>
+    </message>
+    <message>
+        <source>sudden strength loss: measured force %1 short of the model&apos;s by %2</source>
+        <translation>pérdida súbita de resistencia: la fuerza medida %1 queda %2 por debajo de la del modelo</translation>
+    </message>
+    <message>
+        <source>identification step rejected: %1</source>
+        <translation>paso de identificación rechazado: %1</translation>
+    </message>
+    <message>
+        <source>actuator tracking error J2 = %1 % (delay J1 = %2 s)</source>
+        <translation>error de seguimiento del actuador J2 = %1 % (retardo J1 = %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 has been at its bound %2 for %3 s</source>
+        <translation>%1 lleva %3 s en su límite %2</translation>
+    </message>
+    <message>
+        <source>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</source>
+        <translation>actualización no aplicada: la cola de aprobación está llena (%1 propuestas pendientes); esta y las siguientes ofertas quedan en el registro hasta que el operador decida</translation>
+    </message>
+    <message>
+        <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
+        <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) dentro del límite %5</translation>
+    </message>
+    <message>
+        <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
+        <translation>%1 es inestable para este modelo: omega_max dt = %2 supera %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s o el integrador alphaOS</translation>
+    </message>
+</context>
+<context>
     <name>CompareCommand</name>
     <message>
         <source>Run the paper&apos;s comparison protocol (reference, initial, updated).</source>
@@ -952,6 +1007,35 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::AlarmPanel</name>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation>Reconocer seleccionadas</translation>
+    </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Reconocer todas</translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation>Las alarmas críticas permanecen en rojo hasta que se reconocen (doble clic o los botones).</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::AttentionBanner</name>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>Reconocer todas</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation>
+            <numerusform>%n alarma crítica sin reconocer. Última: %1</numerusform>
+            <numerusform>%n alarmas críticas sin reconocer. Última: %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ControlBar</name>
     <message>
         <source>Test control</source>
@@ -1254,10 +1338,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>el ensayo no puede iniciarse: %1</translation>
     </message>
     <message>
-        <source>Acknowledge all</source>
-        <translation>Reconocer todas</translation>
-    </message>
-    <message>
         <source>Test setup</source>
         <translation>Configuración del ensayo</translation>
     </message>
@@ -1268,14 +1348,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Pending updates</source>
         <translation>Actualizaciones pendientes</translation>
-    </message>
-    <message>
-        <source>Acknowledge selected</source>
-        <translation>Reconocer seleccionadas</translation>
-    </message>
-    <message>
-        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation>Las alarmas críticas permanecen en rojo hasta que se reconocen (doble clic o los botones).</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1336,13 +1408,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1 (connects at start)</source>
         <translation>%1 (se conecta al iniciar)</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation>
-            <numerusform>%n alarma crítica sin reconocer. Última: %1</numerusform>
-            <numerusform>%n alarmas críticas sin reconocer. Última: %1</numerusform>
-        </translation>
     </message>
     <message>
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
@@ -1544,13 +1609,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Updates are applied %1; choose &quot;on the operator&apos;s approval&quot; to decide each one.</source>
         <translation>Las actualizaciones se aplican %1; elija &quot;con la aprobación del operador&quot; para decidir cada una.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n update(s) waiting for a decision.</source>
-        <translation>
-            <numerusform>%n actualización en espera de una decisión.</numerusform>
-            <numerusform>%n actualizaciones en espera de una decisión.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
         <translation>#%1 %2 en t = %3 s (paso %4)</translation>
@@ -1564,11 +1622,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Rechazar</translation>
     </message>
     <message numerus="yes">
-        <source> - latest of %n proposal(s) since the last decision</source>
+        <source>%n update(s) waiting for a decision, oldest first.</source>
         <translation>
-            <numerusform> - la última de %n propuesta desde la última decisión</numerusform>
-            <numerusform> - la última de %n propuestas desde la última decisión</numerusform>
+            <numerusform>%n actualización esperando una decisión, la más antigua primero.</numerusform>
+            <numerusform>%n actualizaciones esperando una decisión, la más antigua primero.</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
+        <translation>
+            <numerusform>%n propuesta más reciente no se encoló (la cola admite %1); cada una está en el registro.</numerusform>
+            <numerusform>%n propuestas más recientes no se encolaron (la cola admite %1); cada una está en el registro.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, fit error %1</source>
+        <translation>, error de ajuste %1</translation>
     </message>
 </context>
 <context>
@@ -1992,10 +2061,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Idioma:</translation>
     </message>
     <message>
-        <source>A new language applies the next time the console starts.</source>
-        <translation>Un nuevo idioma se aplica la próxima vez que se inicie la consola.</translation>
-    </message>
-    <message>
         <source>Recent files:</source>
         <translation>Archivos recientes:</translation>
     </message>
@@ -2006,6 +2071,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Cancel</source>
         <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>A new language applies at once, to every window.</source>
+        <translation>Un idioma nuevo se aplica de inmediato, a todas las ventanas.</translation>
     </message>
 </context>
 <context>
@@ -2191,6 +2260,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
         <translation>Cuándo se aplican las actualizaciones se elige en el panel Actualizaciones pendientes (un solo ajuste para el ensayo).</translation>
+    </message>
+    <message>
+        <source>OpenSees adapter element (numerical substructure)</source>
+        <translation>elemento adapter de OpenSees (subestructura numérica)</translation>
+    </message>
+    <message>
+        <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
+        <translation>OpenSees escucha: inicie primero el modelo con su `element adapter ... PORT` (su analyze debe tener al menos los pasos del ensayo). Un paso es definitivo cuando se envía el siguiente: tras una detención el ensayo no puede repetirlo.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,61 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>AlarmText</name>
+    <message>
+        <source>operator hold</source>
+        <translation>操作员暂停</translation>
+    </message>
+    <message>
+        <source>predicted displacement is not finite</source>
+        <translation>预测位移不是有限值</translation>
+    </message>
+    <message>
+        <source>restoring force or response is not finite</source>
+        <translation>恢复力或响应不是有限值</translation>
+    </message>
+    <message>
+        <source>test held: %1</source>
+        <translation>试验已暂停：%1</translation>
+    </message>
+    <message>
+        <source>test resumed</source>
+        <translation>试验已继续</translation>
+    </message>
+    <message>
+        <source>model error %1 % above the threshold %2 %</source>
+        <translation>模型误差 %1 % 高于阈值 %2 %</translation>
+    </message>
+    <message>
+        <source>sudden strength loss: measured force %1 short of the model&apos;s by %2</source>
+        <translation>强度突然丧失：实测力 %1 比模型力低 %2</translation>
+    </message>
+    <message>
+        <source>identification step rejected: %1</source>
+        <translation>识别步被拒绝：%1</translation>
+    </message>
+    <message>
+        <source>actuator tracking error J2 = %1 % (delay J1 = %2 s)</source>
+        <translation>作动器跟踪误差 J2 = %1 %（延迟 J1 = %2 s）</translation>
+    </message>
+    <message>
+        <source>%1 has been at its bound %2 for %3 s</source>
+        <translation>%1 已在其边界 %2 停留 %3 s</translation>
+    </message>
+    <message>
+        <source>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</source>
+        <translation>更新未应用：审批队列已满（%1 个提议待定）；此后的提议在操作员决定前都会记录</translation>
+    </message>
+    <message>
+        <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
+        <translation>%1：omega_max dt = %2（omega_max = %3 rad/s，dt = %4 s）在极限 %5 之内</translation>
+    </message>
+    <message>
+        <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
+        <translation>%1 对该模型不稳定：omega_max dt = %2 超过 %3（omega_max = %4 rad/s，dt = %5 s）；请使用 dt &lt;= %6 s 或 alphaOS 积分器</translation>
+    </message>
+</context>
+<context>
     <name>CompareCommand</name>
     <message>
         <source>Run the paper&apos;s comparison protocol (reference, initial, updated).</source>
@@ -952,6 +1007,34 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>hsmu::gui::AlarmPanel</name>
+    <message>
+        <source>Acknowledge selected</source>
+        <translation>确认所选</translation>
+    </message>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>全部确认</translation>
+    </message>
+    <message>
+        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
+        <translation>严重报警在确认前保持红色（双击或使用按钮确认）。</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::AttentionBanner</name>
+    <message>
+        <source>Acknowledge all</source>
+        <translation>全部确认</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
+        <translation>
+            <numerusform>%n 条严重报警未确认。最新：%1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::ControlBar</name>
     <message>
         <source>Test control</source>
@@ -1254,10 +1337,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>试验无法启动：%1</translation>
     </message>
     <message>
-        <source>Acknowledge all</source>
-        <translation>全部确认</translation>
-    </message>
-    <message>
         <source>Test setup</source>
         <translation>试验设置</translation>
     </message>
@@ -1268,14 +1347,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Pending updates</source>
         <translation>待处理更新</translation>
-    </message>
-    <message>
-        <source>Acknowledge selected</source>
-        <translation>确认所选</translation>
-    </message>
-    <message>
-        <source>Critical alarms stay red until acknowledged (double-click or the buttons).</source>
-        <translation>严重报警在确认前保持红色（双击或使用按钮确认）。</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1336,12 +1407,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>%1 (connects at start)</source>
         <translation>%1（启动时连接）</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n critical alarm(s) not acknowledged. Latest: %1</source>
-        <translation>
-            <numerusform>%n 条严重报警未确认。最新：%1</numerusform>
-        </translation>
     </message>
     <message>
         <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
@@ -1543,12 +1608,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Updates are applied %1; choose &quot;on the operator&apos;s approval&quot; to decide each one.</source>
         <translation>更新应用方式：%1；选择“经操作员批准后”可逐一决定。</translation>
     </message>
-    <message numerus="yes">
-        <source>%n update(s) waiting for a decision.</source>
-        <translation>
-            <numerusform>%n 个更新等待决定。</numerusform>
-        </translation>
-    </message>
     <message>
         <source>#%1 %2 at t = %3 s (step %4)</source>
         <translation>#%1 %2，t = %3 s（第 %4 步）</translation>
@@ -1562,10 +1621,20 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>拒绝</translation>
     </message>
     <message numerus="yes">
-        <source> - latest of %n proposal(s) since the last decision</source>
+        <source>%n update(s) waiting for a decision, oldest first.</source>
         <translation>
-            <numerusform> - 自上次决定以来 %n 个提议中的最新一个</numerusform>
+            <numerusform>%n 个更新等待决定，最早的在前。</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
+        <translation>
+            <numerusform>%n 个较新的提议未入队（队列容量 %1）；每一个都已记录。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, fit error %1</source>
+        <translation>，拟合误差 %1</translation>
     </message>
 </context>
 <context>
@@ -1989,10 +2058,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>语言：</translation>
     </message>
     <message>
-        <source>A new language applies the next time the console starts.</source>
-        <translation>新语言将在下次启动控制台时生效。</translation>
-    </message>
-    <message>
         <source>Recent files:</source>
         <translation>最近文件：</translation>
     </message>
@@ -2003,6 +2068,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Cancel</source>
         <translation>取消</translation>
+    </message>
+    <message>
+        <source>A new language applies at once, to every window.</source>
+        <translation>新语言立即应用于所有窗口。</translation>
     </message>
 </context>
 <context>
@@ -2188,6 +2257,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>When updates are applied is chosen in the Pending updates panel (one setting for the test).</source>
         <translation>何时应用更新在“待处理更新”面板中选择（试验只有一个设置）。</translation>
+    </message>
+    <message>
+        <source>OpenSees adapter element (numerical substructure)</source>
+        <translation>OpenSees adapter 单元（数值子结构）</translation>
+    </message>
+    <message>
+        <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
+        <translation>OpenSees 监听：请先用其 `element adapter ... PORT` 启动模型（其 analyze 的步数至少为试验步数）。发送下一步后该步即为最终：暂停后试验无法重复该步。</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include "core/config/ConfigLoader.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <fstream>
 
@@ -58,8 +59,15 @@ bool ControllerApp::start(std::string& error) {
         if (dataSize == 0)
             dataSize = cfg.link.dataSize;
         dt = cfg.analysis.dt;
-        if (!m_cmd.state.empty())
+        m_cmd.state = m_cmd.stateFile(); // --state-file, the default one, or none
+        if (!m_cmd.state.empty()) {
             m_journal = std::make_unique<StateJournal>();
+            std::error_code ec; // the default folder may not exist yet
+            std::filesystem::create_directories(
+                std::filesystem::path(m_cmd.state).parent_path(), ec);
+            if (!m_cmd.quiet)
+                std::fprintf(stderr, "hsmu-controller: state file %s\n", m_cmd.state.c_str());
+        }
         std::vector<JournalElement> identities;
         const auto pace =
             m_cmd.fast ? SpecimenStation::Pace::Fast : SpecimenStation::Pace::RealTime;
@@ -102,8 +110,11 @@ bool ControllerApp::start(std::string& error) {
     }
     for (const auto& st : stations)
         if (st->committedSteps() > 0)
-            std::fprintf(stderr, "hsmu-controller: specimen '%s' continues after step %llu\n",
-                         st->name().c_str(), static_cast<unsigned long long>(st->committedSteps()));
+            std::fprintf(stderr,
+                         "hsmu-controller: specimen '%s' continues after step %llu (state file "
+                         "%s; --no-state-file, or delete it, for a fresh specimen)\n",
+                         st->name().c_str(), static_cast<unsigned long long>(st->committedSteps()),
+                         m_cmd.state.c_str());
     const std::size_t count = stations.size();
     std::string what;
     if (protocol != "native") {

@@ -8,7 +8,7 @@ namespace hsmu::comms {
 
 const char* ControllerCommandLine::usage() {
     return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR] "
-           "[--pace realtime|fast] [--token-file F] [--state FILE] [--quiet]\n"
+           "[--pace realtime|fast] [--token-file F] [--state-file FILE | --no-state-file] [--quiet]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "  --config FILE   the console's test configuration (JSON) or a preset name\n"
@@ -20,7 +20,13 @@ const char* ControllerCommandLine::usage() {
            "  --token-file F  file holding the shared secret the console's hello must carry\n"
            "                  (or the environment variable HSMU_CONTROLLER_TOKEN; never an\n"
            "                  argument: arguments show in ps)\n"
-           "  --state FILE    journal of committed steps: a restart continues the specimen\n"
+           "  --state-file FILE\n"
+           "                  journal of committed steps: a restart continues the specimen\n"
+           "                  (--state FILE is the same); default\n"
+           "                  $XDG_STATE_HOME/hsmu/controller/CONFIG-PORT.state\n"
+           "                  ($XDG_STATE_HOME: ~/.local/state when unset) for a fixed\n"
+           "                  port; none with --port 0\n"
+           "  --no-state-file keep no journal (a restarted controller starts afresh)\n"
            "  --quiet         no session log on stderr\n"
            "  --protocol P    native (default), simapp (OpenFresco SimApp element server) or\n"
            "                  generictcp (a server for OpenFresco's expControl GenericTCP);\n"
@@ -108,9 +114,11 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
         } else if (a == "--token-file") {
             if (!value(c.tokenFile))
                 return std::nullopt;
-        } else if (a == "--state") {
+        } else if (a == "--state" || a == "--state-file") {
             if (!value(c.state))
                 return std::nullopt;
+        } else if (a == "--no-state-file") {
+            c.noStateFile = true;
         } else if (a == "--port") {
             if (!value(v))
                 return std::nullopt;
@@ -145,8 +153,37 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
         error = "--port PORT is required (0 = any free port)";
         return std::nullopt;
     }
+    if (c.noStateFile && !c.state.empty()) {
+        error = "--no-state-file and --state-file " + c.state + " contradict each other";
+        return std::nullopt;
+    }
     c.config = resolveConfig(c.config);
     return c;
+}
+
+std::string ControllerCommandLine::defaultStateFile(const std::string& config,
+                                                   std::uint16_t port) {
+    namespace fs = std::filesystem;
+    fs::path base;
+    const char* xdg = std::getenv("XDG_STATE_HOME");
+    const char* home = std::getenv("HOME");
+    if (xdg && *xdg && fs::path(xdg).is_absolute()) // the spec: relative values are ignored
+        base = xdg;
+    else if (home && *home)
+        base = fs::path(home) / ".local" / "state";
+    else
+        return {};
+    std::string stem = fs::path(config).stem().string();
+    if (stem.empty())
+        stem = "controller";
+    return (base / "hsmu" / "controller" / (stem + "-" + std::to_string(port) + ".state"))
+        .string();
+}
+
+std::string ControllerCommandLine::stateFile() const {
+    if (!state.empty() || noStateFile || port == 0) // port 0: a restart listens elsewhere
+        return state;
+    return defaultStateFile(config, port);
 }
 
 std::string ControllerCommandLine::resolveConfig(const std::string& configOrPreset) {

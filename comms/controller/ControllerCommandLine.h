@@ -2,7 +2,7 @@
 // ControllerCommandLine: the arguments of hsmu-controller.
 //
 //   hsmu-controller --config FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]
-//                   [--token-file F] [--state FILE] [--quiet]
+//                   [--token-file F] [--state-file FILE | --no-state-file] [--quiet]
 //                   [--protocol native|simapp|generictcp] [--data-size N] [--simapp-site]
 //                   [--realtime-priority P]
 //
@@ -10,6 +10,11 @@
 // --bind defaults to 127.0.0.1: exposing the controller is an explicit choice.
 // The token comes from --token-file (its first line) or HSMU_CONTROLLER_TOKEN, never from an
 // argument (ps shows arguments to every user); --token is refused with that sentence.
+// The state file (StateJournal: a restarted controller continues every specimen) is kept by
+// default: --state-file FILE (or --state FILE) names it, --no-state-file turns it off, and
+// otherwise, on a fixed port, it is defaultStateFile():
+// $XDG_STATE_HOME/hsmu/controller/<config>-<port>.state ($XDG_STATE_HOME defaults to
+// ~/.local/state; docs/cli.md). --port 0 has no default (a restart would listen elsewhere).
 
 #include <cstdint>
 #include <optional>
@@ -24,7 +29,8 @@ struct ControllerCommandLine {
     std::uint16_t port = 0;
     bool fast = false; ///< --pace fast: simulated clock (as fast as possible)
     std::string tokenFile; ///< --token-file: the token is its first line
-    std::string state;
+    std::string state;        ///< --state-file (or --state): the journal; "" = default or none
+    bool noStateFile = false; ///< --no-state-file: no journal at all
     bool quiet = false;
     bool help = false;
     std::string protocol;    ///< "" = the configuration's controller.protocol (native by default)
@@ -41,6 +47,13 @@ struct ControllerCommandLine {
     /// the installed program, else the source tree's resources/presets/NAME.json; otherwise
     /// returned unchanged. parse() applies it to --config.
     static std::string resolveConfig(const std::string& configOrPreset);
+    /// The default state file for this configuration file and port:
+    /// STATE/hsmu/controller/<config file stem>-<port>.state with STATE = $XDG_STATE_HOME if
+    /// set and absolute, else $HOME/.local/state; "" if neither is known (no default).
+    static std::string defaultStateFile(const std::string& config, std::uint16_t port);
+    /// The journal to keep: state, else (unless noStateFile or port 0)
+    /// defaultStateFile(config, port).
+    std::string stateFile() const;
 };
 
 } // namespace hsmu::comms

@@ -37,6 +37,10 @@ struct RecordedUpdate {
     double time = 0.0; ///< [s]
     std::string element;
     std::vector<double> values; ///< [nParam] in layout.updating order; NaN: not sent
+    /// What became of the offer (UpdateDecision's code name: "applied", "refused", "rejected",
+    /// "notQueued"); "applied" in records written before the column existed.
+    std::string decision = "applied";
+    int proposal = 0; ///< the approval proposal's id (0: none)
 };
 
 /// An operator note added during the run (/notes).

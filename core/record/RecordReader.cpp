@@ -68,9 +68,10 @@ struct RecordReader::Impl {
     Column step, time, ag, u, v, a, def, force, cmd, par, sd, aux, fit, applied, thisStep, pending;
     Column tracking, requested; // schema 2
     Column siteRoundTrip;       // /sites, when the test had experimental elements
-    Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
-    Column eventStep, eventTime, eventElement, eventValues, noteTime, noteStep, noteText;
+    Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
+    Column eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal, noteTime, noteStep, noteText;
     bool v2 = false; // schema 2 datasets present
+    std::vector<std::string> decisionCodes; // /updating/events/decision "codes" (if present)
 
     void open();
     void readMetadata();
@@ -126,11 +127,16 @@ std::vector<Column*> RecordReader::Impl::stepColumns() {
 
 std::vector<Column*> RecordReader::Impl::logColumns() {
     std::vector<Column*> c = {&alarmTime, &alarmStep, &alarmSeverity, &alarmKind, &alarmMessage};
+    if (alarmCode.dset.valid())
+        c.push_back(&alarmCode);
     if (v2) {
         for (Column* x : {&noteTime, &noteStep, &noteText})
             c.push_back(x);
         if (data.layout.updating)
             for (Column* x : {&eventStep, &eventTime, &eventElement, &eventValues})
+                c.push_back(x);
+        if (data.layout.updating && eventDecision.dset.valid())
+            for (Column* x : {&eventDecision, &eventProposal})
                 c.push_back(x);
     }
     return c;
@@ -227,6 +233,13 @@ void RecordReader::Impl::readMetadata() {
             eventTime = column("/updating/events/time", -1);
             eventElement = column("/updating/events/element", -1);
             eventValues = column("/updating/events/values", nPar);
+            // Optional (added later): what became of each offer, and its proposal id.
+            if (H5Lexists(root, "/updating/events/decision", H5P_DEFAULT) > 0 &&
+                H5Lexists(root, "/updating/events/proposal", H5P_DEFAULT) > 0) {
+                eventDecision = column("/updating/events/decision", -1);
+                eventProposal = column("/updating/events/proposal", -1);
+                decisionCodes = h5::readStringsAttr(eventDecision.dset.get(), "codes", w);
+            }
         }
     }
     v2 = m.schemaVersion >= 2;
@@ -240,6 +253,8 @@ void RecordReader::Impl::readMetadata() {
     alarmSeverity = column("/alarms/severity", -1);
     alarmKind = column("/alarms/kind", -1);
     alarmMessage = column("/alarms/message", -1);
+    if (H5Lexists(root, "/alarms/code", H5P_DEFAULT) > 0) // optional (added later)
+        alarmCode = column("/alarms/code", -1);
     if (h5::hasAttr(root, "metadata_checksum") &&
         h5::readStringAttr(root, "metadata_checksum", w) != recordMetadataChecksum(m, layout))
         throw RecordError(path + ": damaged record (the metadata checksum does not match: "
@@ -328,6 +343,8 @@ void RecordReader::Impl::readNewAlarms() {
     hsize_t n = alarmTime.rows();
     for (const Column* c : {&alarmStep, &alarmSeverity, &alarmKind, &alarmMessage})
         n = std::min(n, c->rows());
+    if (alarmCode.dset.valid())
+        n = std::min(n, alarmCode.rows());
     const hsize_t r0 = data.alarms.size();
     if (n <= r0)
         return;
@@ -338,17 +355,22 @@ void RecordReader::Impl::readNewAlarms() {
     const auto sev = readFixedStrings(alarmSeverity, r0, n, path);
     const auto kind = readFixedStrings(alarmKind, r0, n, path);
     const auto msg = readFixedStrings(alarmMessage, r0, n, path);
+    const auto code = alarmCode.dset.valid() ? readFixedStrings(alarmCode, r0, n, path)
+                                             : std::vector<std::string>(n - r0);
     for (std::size_t i = 0; i < t.size(); ++i)
         data.alarms.push_back(
-            {t[i], s[i], severityFromName(sev[i]), kindFromName(kind[i]), msg[i]});
+            {t[i], s[i], severityFromName(sev[i]), kindFromName(kind[i]), msg[i], code[i], {}});
 }
 
 void RecordReader::Impl::readNewEvents() {
     if (!v2 || !data.layout.updating)
         return;
     hsize_t n = eventStep.rows();
+    const bool decisions = eventDecision.dset.valid();
     for (const Column* c : {&eventTime, &eventElement, &eventValues})
         n = std::min(n, c->rows());
+    if (decisions)
+        n = std::min({n, eventDecision.rows(), eventProposal.rows()});
     const hsize_t r0 = data.updateEvents.size();
     if (n <= r0)
         return;
@@ -360,14 +382,22 @@ void RecordReader::Impl::readNewEvents() {
     std::vector<int> element(n - r0);
     eventElement.read(r0, n, H5T_NATIVE_INT, element.data(), path);
     appendRows(values, eventValues, 0, n - r0, path, r0);
+    std::vector<int> decision(n - r0, 0), proposal(n - r0, 0);
+    if (decisions) {
+        eventDecision.read(r0, n, H5T_NATIVE_INT, decision.data(), path);
+        eventProposal.read(r0, n, H5T_NATIVE_INT, proposal.data(), path);
+    }
     for (std::size_t i = 0; i < s.size(); ++i) {
         std::vector<double> row(std::size_t(values.cols()));
         for (Eigen::Index j = 0; j < values.cols(); ++j)
             row[std::size_t(j)] = values(Eigen::Index(i), j);
         const auto& elements = data.layout.elements;
         const bool known = element[i] >= 0 && std::size_t(element[i]) < elements.size();
+        const auto code = std::size_t(decision[i]);
         data.updateEvents.push_back(
-            {s[i], t[i], known ? elements[std::size_t(element[i])].name : "", std::move(row)});
+            {s[i], t[i], known ? elements[std::size_t(element[i])].name : "", std::move(row),
+             code < decisionCodes.size() ? decisionCodes[code] : std::string("applied"),
+             proposal[i]});
     }
 }
 

@@ -58,12 +58,13 @@ struct RecordWriter::Impl {
     h5::Id severityType, kindType, messageType, noteType;
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
     h5::Extendible par, sd, aux, fit, applied, thisStep, pending, tracking, requested;
-    h5::Extendible eventStep, eventTime, eventElement, eventValues;
-    h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
+    h5::Extendible eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal;
+    h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
     h5::Extendible noteTime, noteStep, noteText;
     h5::Extendible siteRoundTrip;
 
-    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement;
+    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement,
+        bEventDecision, bEventProposal;
     std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
         bTracking, bEventTime, bEventValues, bSiteRoundTrip;
     std::vector<Alarm> bAlarms;
@@ -227,6 +228,14 @@ void RecordWriter::Impl::createUpdating(hid_t root) {
     eventElement = h5::Extendible(e.get(), "element", i32, -1, w, chunk);
     eventValues = h5::Extendible(e.get(), "values", f64, int(nPar), w, chunk);
     h5::writeAttr(eventValues.id(), "names", info.parameters, w);
+    // What became of each offer (UpdateDecision, language-neutral codes) and its proposal id.
+    eventDecision = h5::Extendible(e.get(), "decision", i32, -1, w, chunk);
+    std::vector<std::string> codes;
+    for (UpdateDecision d : {UpdateDecision::Applied, UpdateDecision::Refused,
+                             UpdateDecision::Rejected, UpdateDecision::NotQueued})
+        codes.emplace_back(updateDecisionName(d));
+    h5::writeAttr(eventDecision.id(), "codes", codes, w);
+    eventProposal = h5::Extendible(e.get(), "proposal", i32, -1, w, chunk);
 }
 
 void RecordWriter::Impl::createLogs(hid_t root) {
@@ -245,6 +254,9 @@ void RecordWriter::Impl::createLogs(hid_t root) {
         alarmStep = h5::Extendible(g.get(), "step", i32, -1, w, chunk);
         alarmSeverity = h5::Extendible(g.get(), "severity", severityType.get(), -1, w, chunk);
         alarmKind = h5::Extendible(g.get(), "kind", kindType.get(), -1, w, chunk);
+        // The message's template (Alarm::code, "" for none): language-neutral, the console
+        // shows its own translation of it; /alarms/message keeps the English text.
+        alarmCode = h5::Extendible(g.get(), "code", kindType.get(), -1, w, chunk);
         alarmMessage = h5::Extendible(g.get(), "message", messageType.get(), -1, w, chunk);
     }
     const h5::Id g = h5::check(H5Gcreate2(root, "notes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), w,
@@ -258,7 +270,8 @@ void RecordWriter::Impl::createLogs(hid_t root) {
 
 void RecordWriter::Impl::clearBuffers() {
     for (auto* b :
-         {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement})
+         {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement,
+          &bEventDecision, &bEventProposal})
         b->clear();
     for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
                     &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip})
@@ -303,13 +316,14 @@ void RecordWriter::Impl::writeLogs() {
     if (!bAlarms.empty()) {
         std::vector<double> t;
         std::vector<int> s;
-        std::vector<char> sev, kind, msg;
+        std::vector<char> sev, kind, msg, code;
         for (const Alarm& al : bAlarms) {
             t.push_back(al.time);
             s.push_back(al.step);
             putFixed(sev, alarmSeverityName(al.severity), recordschema::kSeverityChars);
             putFixed(kind, alarmKindName(al.kind), recordschema::kKindChars);
             putFixed(msg, al.message, recordschema::kMessageChars);
+            putFixed(code, al.code, recordschema::kKindChars);
         }
         const hsize_t m = bAlarms.size();
         alarmTime.append(t.data(), m);
@@ -317,6 +331,7 @@ void RecordWriter::Impl::writeLogs() {
         alarmSeverity.append(sev.data(), m);
         alarmKind.append(kind.data(), m);
         alarmMessage.append(msg.data(), m);
+        alarmCode.append(code.data(), m);
     }
     if (!bEventStep.empty() && layout.updating) {
         const hsize_t m = bEventStep.size();
@@ -324,6 +339,8 @@ void RecordWriter::Impl::writeLogs() {
         eventTime.append(bEventTime.data(), m);
         eventElement.append(bEventElement.data(), m);
         eventValues.append(bEventValues.data(), m);
+        eventDecision.append(bEventDecision.data(), m);
+        eventProposal.append(bEventProposal.data(), m);
     }
     if (!bNotes.empty()) {
         std::vector<double> t;
@@ -364,8 +381,9 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
     return {&step,          &time,      &ag,           &u,           &v,         &a,
             &def,           &force,     &cmd,          &par,         &sd,        &aux,
             &fit,           &applied,   &thisStep,     &pending,     &tracking,  &requested,
-            &eventStep,     &eventTime, &eventElement, &eventValues, &alarmTime, &alarmStep,
-            &alarmSeverity, &alarmKind, &alarmMessage, &noteTime,    &noteStep,  &noteText,
+            &eventStep,     &eventTime, &eventElement, &eventValues, &eventDecision,
+            &eventProposal, &alarmTime, &alarmStep,
+            &alarmSeverity, &alarmKind, &alarmMessage, &alarmCode, &noteTime,    &noteStep,  &noteText,
             &siteRoundTrip};
 }
 
@@ -418,8 +436,9 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.bTracking.push_back(r.hasUpdating ? up.tracking.j3 : kNaN);
         d.bRequested.push_back(r.hasUpdating && up.updateRequested ? 1 : 0);
         if (r.hasUpdating)
-            for (const UpdateEvent& ev : up.applied)
-                d.bufferEvent(ev);
+            for (const auto* events : {&up.applied, &up.decided})
+                for (const UpdateEvent& ev : *events)
+                    d.bufferEvent(ev);
     }
     if (d.bTime.size() >= std::size_t(kMaxBufferedRows) ||
         long(d.bU.size() * 3 + d.bDef.size() * 3) >= kMaxBufferedValues ||
@@ -448,6 +467,8 @@ void RecordWriter::Impl::bufferEvent(const UpdateEvent& ev) {
     bEventStep.push_back(ev.step);
     bEventTime.push_back(ev.time);
     bEventElement.push_back(element);
+    bEventDecision.push_back(int(ev.decision));
+    bEventProposal.push_back(ev.proposal);
     for (const std::string& name : layout.updating->parameters) {
         const auto it = ev.applied.find(name);
         bEventValues.push_back(it == ev.applied.end() ? kNaN : it->second);

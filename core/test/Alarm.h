@@ -1,8 +1,13 @@
 #pragma once
 // Alarm: something the operator must know, with the test time, a severity and a reason.
 // core returns enums and text in English; the GUI chooses how to show (and translate) kinds.
+// A message made from a fixed template also carries the template's stable code and its
+// arguments (as text, in order): the GUI shows its own translation of the code
+// (gui/app/AlarmText), the record keeps the code and the English message (docs/recording.md).
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hsmu {
 
@@ -24,11 +29,19 @@ enum class AlarmKind {
 };
 
 struct Alarm {
+    Alarm() = default;
+    Alarm(double time, int step, AlarmSeverity severity, AlarmKind kind, std::string message,
+          std::string code = {}, std::vector<std::string> args = {})
+        : time(time), step(step), severity(severity), kind(kind), message(std::move(message)),
+          code(std::move(code)), args(std::move(args)) {}
+
     double time = 0.0; ///< test time [s]
     int step = 0;
     AlarmSeverity severity = AlarmSeverity::Info;
     AlarmKind kind = AlarmKind::ElementFault;
-    std::string message;
+    std::string message;            ///< English
+    std::string code;               ///< the message's template, e.g. "fit-error" ("" = none)
+    std::vector<std::string> args;  ///< the template's arguments, in order
 };
 
 const char* alarmSeverityName(AlarmSeverity s);

@@ -62,6 +62,12 @@ void HybridTest::raise(AlarmSeverity severity, AlarmKind kind, const std::string
     m_alarms.push_back({time(), m_step, severity, kind, message});
 }
 
+void HybridTest::raise(AlarmSeverity severity, AlarmKind kind, const std::string& message,
+                       const char* code, std::vector<std::string> args)
+{
+    m_alarms.push_back({time(), m_step, severity, kind, message, code, std::move(args)});
+}
+
 bool HybridTest::prepare()
 {
     auto fail = [this](const std::string& why) {
@@ -146,7 +152,7 @@ void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
     m_structure->revert();
     for (ExperimentalElement* x : m_specimens)
         x->control().hold(reason);
-    raise(AlarmSeverity::Critical, kind, "test held: " + reason);
+    raise(AlarmSeverity::Critical, kind, "test held: " + reason, "test-held", {reason});
     m_state = State::Holding;
     updateSites();
 }
@@ -170,7 +176,7 @@ void HybridTest::resume()
         return;
     for (ExperimentalElement* x : m_specimens)
         x->control().resume();
-    raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed");
+    raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed", "test-resumed", {});
     m_state = State::Running;
     updateSites();
 }

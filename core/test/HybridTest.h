@@ -88,6 +88,9 @@ public:
 private:
     void enterHold(AlarmKind kind, const std::string& reason);
     void raise(AlarmSeverity severity, AlarmKind kind, const std::string& message);
+    /// A message from a template: its code and arguments (Alarm).
+    void raise(AlarmSeverity severity, AlarmKind kind, const std::string& message,
+               const char* code, std::vector<std::string> args);
     void publish();
 
     std::unique_ptr<Structure> m_structure;

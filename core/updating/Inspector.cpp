@@ -19,8 +19,14 @@ Inspector::Inspector(const InspectorSettings& s, double dt) : m_s(s), m_dt(dt > 
 
 void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
 {
-    auto raise = [&](AlarmSeverity sev, AlarmKind kind, std::string msg) {
-        alarms.push_back({in.time, in.step, sev, kind, std::move(msg)});
+    auto raise = [&](AlarmSeverity sev, AlarmKind kind, std::string msg, const char* code,
+                     std::vector<std::string> args) {
+        alarms.push_back({in.time, in.step, sev, kind, std::move(msg), code, std::move(args)});
+    };
+    auto text = [](const char* fmt, double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, fmt, v);
+        return std::string(buf);
     };
 
     // Sliding-window fit error, running sums with a periodic exact refresh against drift.
@@ -51,7 +57,8 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
     if (above && !m_aboveThreshold)
         raise(AlarmSeverity::Warning, AlarmKind::FitError,
               format("model error %.1f %% above the threshold %.1f %%", 100 * m_fitError,
-                     100 * m_s.threshold));
+                     100 * m_s.threshold),
+              "fit-error", {text("%.1f", 100 * m_fitError), text("%.1f", 100 * m_s.threshold)});
     const bool fittedBefore = !m_aboveThreshold && m_residual.size() > 1;
     m_aboveThreshold = above;
 
@@ -67,13 +74,15 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
         m_fractureTime = in.time;
         raise(AlarmSeverity::Critical, AlarmKind::Fracture,
               format("sudden strength loss: measured force %.3g short of the model's by %.3g",
-                     in.measuredForce, shortfall));
+                     in.measuredForce, shortfall),
+              "fracture", {text("%.3g", in.measuredForce), text("%.3g", shortfall)});
     }
     m_lastDeformation = in.measuredDeformation;
 
     if (!in.estimatorOk)
         raise(AlarmSeverity::Warning, AlarmKind::EstimatorRejected,
-              "identification step rejected: " + in.estimatorMessage);
+              "identification step rejected: " + in.estimatorMessage, "estimator-rejected",
+              {in.estimatorMessage});
 
     if (in.parameterNames) {
         const std::vector<std::string>& names = *in.parameterNames;
@@ -112,7 +121,8 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
         if (bad && !m_trackingRaised)
             raise(AlarmSeverity::Warning, AlarmKind::TrackingError,
                   format("actuator tracking error J2 = %.1f %% (delay J1 = %.4f s)",
-                         100 * m_tracking.j2, m_tracking.j1));
+                         100 * m_tracking.j2, m_tracking.j1),
+                  "tracking", {text("%.1f", 100 * m_tracking.j2), text("%.4f", m_tracking.j1)});
         m_trackingRaised = bad;
     }
 }
@@ -143,9 +153,13 @@ void Inspector::checkPinned(PinState& pin, double v, const ParameterBounds& b,
     }
     if (!pin.raised && in.time - pin.since >= m_s.pinnedTime) {
         pin.raised = true;
+        char value[32], since[32];
+        std::snprintf(value, sizeof value, "%.4g", v);
+        std::snprintf(since, sizeof since, "%.1f", in.time - pin.since);
         alarms.push_back({in.time, in.step, AlarmSeverity::Warning, AlarmKind::ParameterPinned,
                           pin.name + format(" has been at its bound %.4g for %.1f s", v,
-                                            in.time - pin.since)});
+                                            in.time - pin.since),
+                          "parameter-pinned", {pin.name, value, since}});
     }
 }
 

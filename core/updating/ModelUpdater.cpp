@@ -68,10 +68,24 @@ void ModelUpdater::report(std::vector<UpdateEvent>& events, std::vector<Alarm>& 
         if (ev.ok) {
             ++out.updatesThisStep;
             out.applied.push_back(std::move(ev));
+        } else if (ev.decision == UpdateDecision::Rejected) {
+            out.decided.push_back(std::move(ev));
+        } else if (ev.decision == UpdateDecision::NotQueued) {
+            if (!m_queueFullReported)
+                alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::ModelUpdate,
+                                  "update not applied: " + ev.message +
+                                      " (this and later offers are in the record until the "
+                                      "operator decides)",
+                                  "approval-queue-full",
+                                  {std::to_string(m_reporter->maxPending())}});
+            m_queueFullReported = true;
+            out.decided.push_back(std::move(ev));
         } else
             alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::ModelUpdate,
                               "update not applied: " + ev.message});
     }
+    if (static_cast<int>(m_reporter->pending().size()) < m_reporter->maxPending())
+        m_queueFullReported = false;
 }
 
 std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Structure& structure,
@@ -135,6 +149,7 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
 
     if (st.updated && st.reportable) {
         m_events.clear();
+        m_reporter->setProposalFitError(m_inspector.fitError());
         m_reporter->offerValues(step, time, m_values, structure, m_events);
         report(m_events, alarms, step, time, out); // counts the applied ones
     }

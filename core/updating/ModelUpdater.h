@@ -40,6 +40,9 @@ struct UpdatingSample {
     TrackingIndices tracking;        ///< inspector's last J1 [s], J2, J3 [-]
     bool updateRequested = false;    ///< inspector: fit error above its threshold
     std::vector<UpdateEvent> applied; ///< updates applied to targets at this step (ok ones)
+    /// Offers decided at this step without being applied: rejected (headless flag) or not
+    /// queued (approval queue full). Written to /updating/events with their decision.
+    std::vector<UpdateEvent> decided;
 };
 
 class ModelUpdater {
@@ -82,7 +85,8 @@ private:
     void applyToAuxiliary(const std::vector<double>& values);
     void fillEstimate(const std::vector<double>& values, const std::vector<double>& sd,
                       UpdatingSample& out) const;
-    /// Moves the applied events into out.applied; refusals become alarms.
+    /// Moves the applied events into out.applied, rejected and not-queued ones into
+    /// out.decided; refusals become alarms (a full approval queue one alarm until it drains).
     void report(std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms, int step,
                 double time, UpdatingSample& out);
 
@@ -107,6 +111,7 @@ private:
     std::vector<UpdateEvent> m_events; ///< this step's update decisions (reused)
     int m_rejections = 0;
     int m_maxRejections = 20;
+    bool m_queueFullReported = false;
 };
 
 } // namespace hsmu

@@ -28,6 +28,17 @@ std::optional<ReporterPolicy> parseReporterPolicy(const std::string& text)
     return std::nullopt;
 }
 
+const char* updateDecisionName(UpdateDecision d)
+{
+    switch (d) {
+    case UpdateDecision::Applied: return "applied";
+    case UpdateDecision::Refused: return "refused";
+    case UpdateDecision::Rejected: return "rejected";
+    case UpdateDecision::NotQueued: return "notQueued";
+    }
+    return "?";
+}
+
 Reporter::Reporter(std::vector<ReporterTarget> targets, ReporterPolicy policy, int everyN)
     : m_targets(std::move(targets)), m_policy(policy), m_everyN(everyN < 1 ? 1 : everyN),
       m_lastForce(m_targets.size(), 0.0)
@@ -62,12 +73,14 @@ UpdateEvent Reporter::apply(const std::string& element, const ParameterValues& v
     HysteresisLaw* law = e ? e->law() : nullptr;
     if (!law) {
         ev.ok = false;
+        ev.decision = UpdateDecision::Refused;
         ev.message = "no numerical element '" + element + "' with a law to update";
         return ev;
     }
     for (const auto& [name, v] : values) {
         if (!std::isfinite(v)) {
             ev.ok = false;
+            ev.decision = UpdateDecision::Refused;
             ev.message = element + ": identified " + name + " is not finite; nothing applied";
             return ev;
         }
@@ -81,6 +94,7 @@ UpdateEvent Reporter::apply(const std::string& element, const ParameterValues& v
             for (const auto& [n, o] : old)
                 law->setParameter(n, o);
             ev.ok = false;
+            ev.decision = UpdateDecision::Refused;
             ev.message = element + ": the law refused " + name + " = " + std::to_string(v);
             return ev;
         }
@@ -104,14 +118,26 @@ bool Reporter::dueNow(std::size_t i, int step, double force)
 }
 
 void Reporter::queueProposal(const ReporterTarget& t, int step, double time,
-                             const ParameterValues& identified, const HysteresisLaw* law)
+                             const ParameterValues& identified, const HysteresisLaw* law,
+                             std::vector<UpdateEvent>& events)
 {
-    UpdateProposal p{m_nextId++, step, time, t.element, proposalFor(t, identified), {}};
+    if (static_cast<int>(m_pending.size()) >= m_maxPending) {
+        ++m_notQueued;
+        UpdateEvent& ev = events.emplace_back();
+        ev.step = step;
+        ev.time = time;
+        ev.element = t.element;
+        ev.applied = proposalFor(t, identified);
+        ev.ok = false;
+        ev.decision = UpdateDecision::NotQueued;
+        ev.message = "approval queue full (" + std::to_string(m_maxPending) +
+                     " proposals pending): not queued";
+        return;
+    }
+    UpdateProposal p{m_nextId++, step, time, t.element, proposalFor(t, identified), {}, m_fitError};
     if (law)
         for (const auto& [name, v] : p.proposed)
             p.current[name] = law->parameter(name).value_or(v);
-    for (auto it = m_pending.begin(); it != m_pending.end();)
-        it = it->element == t.element ? m_pending.erase(it) : it + 1;
     m_pending.push_back(std::move(p));
 }
 
@@ -125,7 +151,7 @@ std::vector<UpdateEvent> Reporter::offer(int step, double time, const ParameterV
         const double force = e && e->law() ? e->law()->committedForce() : 0.0;
         if (m_policy == ReporterPolicy::OnApproval) {
             m_lastForce[i] = force;
-            queueProposal(t, step, time, identified, e ? e->law() : nullptr);
+            queueProposal(t, step, time, identified, e ? e->law() : nullptr, events);
         } else if (dueNow(i, step, force)) {
             events.push_back(apply(t.element, proposalFor(t, identified), structure, step, time));
         }
@@ -198,7 +224,7 @@ int Reporter::offerValues(int step, double time, std::span<const double> identif
         const double force = b.law->committedForce();
         if (m_policy == ReporterPolicy::OnApproval) {
             m_lastForce[i] = force;
-            queueProposal(m_targets[i], step, time, identifiedMap(identified), b.law);
+            queueProposal(m_targets[i], step, time, identifiedMap(identified), b.law, events);
             continue;
         }
         if (!dueNow(i, step, force))
@@ -236,7 +262,9 @@ std::optional<UpdateEvent> Reporter::approve(int id, Structure& structure, int s
         if (it->id == id) {
             UpdateProposal p = *it;
             m_pending.erase(it);
-            return apply(p.element, p.proposed, structure, step, time);
+            UpdateEvent ev = apply(p.element, p.proposed, structure, step, time);
+            ev.proposal = p.id;
+            return ev;
         }
     }
     return std::nullopt;
@@ -244,13 +272,20 @@ std::optional<UpdateEvent> Reporter::approve(int id, Structure& structure, int s
 
 bool Reporter::reject(int id)
 {
+    return rejectProposal(id, 0, 0.0).has_value();
+}
+
+std::optional<UpdateEvent> Reporter::rejectProposal(int id, int step, double time)
+{
     for (auto it = m_pending.begin(); it != m_pending.end(); ++it) {
         if (it->id == id) {
+            UpdateEvent ev{step, time, it->element, it->proposed, false, "rejected by the operator",
+                           UpdateDecision::Rejected, id};
             m_pending.erase(it);
-            return true;
+            return ev;
         }
     }
-    return false;
+    return std::nullopt;
 }
 
 std::vector<UpdateEvent> Reporter::resolveAll(bool approveAll, Structure& structure, int step,
@@ -262,7 +297,7 @@ std::vector<UpdateEvent> Reporter::resolveAll(bool approveAll, Structure& struct
         if (approveAll)
             events.push_back(*approve(id, structure, step, time));
         else
-            reject(id);
+            events.push_back(*rejectProposal(id, step, time));
     }
     return events;
 }

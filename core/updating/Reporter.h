@@ -7,8 +7,11 @@
 //   ZeroCrossing  apply at the first step where the target element's force changed sign
 //                 since the last committed step (no jump in force: the paper's choice);
 //   EveryNSteps   apply every N-th step;
-//   OnApproval    queue a proposal; the operator approves or rejects it (a newer proposal for
-//                 the same element replaces an older pending one).
+//   OnApproval    queue a proposal per target and offer, oldest first (a FIFO: nothing is
+//                 replaced); the operator approves or rejects each one. The queue holds at
+//                 most maxPending() proposals: an offer made while it is full is not queued and
+//                 comes back as an UpdateEvent with decision NotQueued (for the record), never
+//                 dropped silently.
 // Which: each target names its parameters (the paper sends all but A0 and deltaA); a value is
 // multiplied by the target's scale factor for that parameter (default 1) before it is set.
 // Applying keeps the target law's state (z, e for Bouc-Wen): only the parameters change.
@@ -18,6 +21,7 @@
 #include "core/updating/ParameterSet.h"
 
 #include <deque>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -45,15 +49,24 @@ struct UpdateProposal {
     std::string element;
     ParameterValues proposed; ///< after scaling
     ParameterValues current;  ///< the target's values when proposed
+    double fitError = std::numeric_limits<double>::quiet_NaN(); ///< [-] when proposed (NaN: unknown)
 };
+
+/// What became of an offer: applied to the target, refused by its law (or not finite), rejected
+/// by the operator, or not queued (the approval queue was full). The record keeps the code
+/// (updateDecisionName(), language-neutral).
+enum class UpdateDecision { Applied, Refused, Rejected, NotQueued };
+const char* updateDecisionName(UpdateDecision d);
 
 struct UpdateEvent {
     int step = 0;
     double time = 0.0;
     std::string element;
-    ParameterValues applied;
-    bool ok = true;
+    ParameterValues applied; ///< the values applied (Applied) or offered (otherwise)
+    bool ok = true;          ///< decision == Applied
     std::string message; ///< why, when !ok
+    UpdateDecision decision = UpdateDecision::Applied;
+    int proposal = 0; ///< the proposal's id under OnApproval (0: none)
 };
 
 class Reporter {
@@ -74,8 +87,22 @@ public:
     /// Apply a pending proposal (by id) now; nullopt if there is no such proposal.
     std::optional<UpdateEvent> approve(int id, Structure& structure, int step, double time);
     bool reject(int id);
+    /// Reject a pending proposal: its event (decision Rejected, the values it proposed) at
+    /// `step`, `time`; nullopt if there is no such proposal.
+    std::optional<UpdateEvent> rejectProposal(int id, int step, double time);
     /// Apply (true) or reject (false) every pending proposal: the headless approval flag.
+    /// Returns every decision (rejections too, decision Rejected).
     std::vector<UpdateEvent> resolveAll(bool approve, Structure& structure, int step, double time);
+
+    /// The approval queue's capacity (>= 1; default kDefaultMaxPending).
+    void setMaxPending(int n) { m_maxPending = n < 1 ? 1 : n; }
+    int maxPending() const { return m_maxPending; }
+    static constexpr int kDefaultMaxPending = 100;
+    /// The fit error [-] stamped on proposals queued from now on (ModelUpdater: the
+    /// inspector's, before each offer).
+    void setProposalFitError(double fitError) { m_fitError = fitError; }
+    /// Offers not queued because the queue was full, since construction.
+    int notQueuedCount() const { return m_notQueued; }
 
     int appliedCount() const { return m_applied; }
 
@@ -105,8 +132,10 @@ private:
     /// Whether target i takes an offer now (ZeroCrossing: its force changed sign since the
     /// last offer); remembers the force.
     bool dueNow(std::size_t i, int step, double force);
+    /// Queue a proposal, or (queue full) append its NotQueued event to `events`.
     void queueProposal(const ReporterTarget& t, int step, double time,
-                       const ParameterValues& identified, const HysteresisLaw* law);
+                       const ParameterValues& identified, const HysteresisLaw* law,
+                       std::vector<UpdateEvent>& events);
     ParameterValues identifiedMap(std::span<const double> identified) const;
     ParameterValues proposalFor(const ReporterTarget& t, const ParameterValues& identified) const;
     UpdateEvent apply(const std::string& element, const ParameterValues& values,
@@ -122,6 +151,9 @@ private:
     std::deque<UpdateProposal> m_pending;
     int m_nextId = 1;
     int m_applied = 0;
+    int m_maxPending = kDefaultMaxPending;
+    int m_notQueued = 0;
+    double m_fitError = std::numeric_limits<double>::quiet_NaN();
 };
 
 } // namespace hsmu

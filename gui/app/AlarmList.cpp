@@ -1,5 +1,8 @@
 #include "gui/app/AlarmList.h"
 
+#include "gui/app/AlarmText.h"
+#include "gui/app/LiveText.h"
+
 #include <QDateTime>
 #include <QHeaderView>
 
@@ -8,6 +11,11 @@ namespace hsmu::gui {
 namespace {
 constexpr int kSeverityRole = Qt::UserRole;
 constexpr int kAckRole = Qt::UserRole + 1;
+constexpr int kKindRole = Qt::UserRole + 2;
+constexpr int kAckTimeRole = Qt::UserRole + 3;
+constexpr int kCodeRole = Qt::UserRole + 4;
+constexpr int kArgsRole = Qt::UserRole + 5;
+constexpr int kEnglishRole = Qt::UserRole + 6;
 const QColor kCritical(198, 40, 40);
 const QColor kCriticalBackground(255, 205, 210);
 const QColor kWarning(200, 120, 0);
@@ -19,8 +27,6 @@ AlarmList::AlarmList(QWidget* parent) : QTreeWidget(parent) {
     setRootIsDecorated(false);
     setSelectionMode(QAbstractItemView::ExtendedSelection);
     setColumnCount(ColumnCount);
-    setHeaderLabels({tr("Time [s]"), tr("Step"), tr("Severity"), tr("Kind"), tr("Message"),
-                     tr("Acknowledged")});
     header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     header()->setSectionResizeMode(Message, QHeaderView::Stretch);
     header()->setStretchLastSection(false);
@@ -28,6 +34,35 @@ AlarmList::AlarmList(QWidget* parent) : QTreeWidget(parent) {
         acknowledge(item);
         notify();
     });
+    // Headers, severities, kinds and acknowledgements again in the new language (a message is
+    // kept in the language it was shown in, unless it has a code: AlarmText).
+    LiveText::bind(this, [this] {
+        setHeaderLabels({tr("Time [s]"), tr("Step"), tr("Severity"), tr("Kind"), tr("Message"),
+                         tr("Acknowledged")});
+        for (int i = 0; i < topLevelItemCount(); ++i)
+            retranslate(topLevelItem(i));
+        if (m_unacknowledged > 0)
+            notify(); // the banner's latest message, retranslated
+    });
+}
+
+void AlarmList::retranslate(QTreeWidgetItem* item) {
+    item->setText(Severity, describe(AlarmSeverity(item->data(Severity, kSeverityRole).toInt())));
+    const QVariant kind = item->data(Kind, kKindRole);
+    item->setText(Kind, kind.isValid() ? describe(AlarmKind(kind.toInt())) : tr("console"));
+    const QVariant ackAt = item->data(Acknowledged, kAckTimeRole);
+    if (ackAt.isValid())
+        item->setText(Acknowledged, tr("yes, %1").arg(ackAt.toString()));
+    else if (!item->data(Acknowledged, kAckRole).toBool())
+        item->setText(Acknowledged, tr("no"));
+    const QVariant code = item->data(Message, kCodeRole);
+    if (code.isValid()) {
+        const QString text = AlarmText::describe(code.toString().toStdString(),
+                                                 item->data(Message, kArgsRole).toStringList(),
+                                                 item->data(Message, kEnglishRole).toString());
+        item->setText(Message, text);
+        item->setToolTip(Message, text);
+    }
 }
 
 QString AlarmList::describe(AlarmKind kind) {
@@ -73,8 +108,19 @@ QString AlarmList::describe(AlarmSeverity severity) {
 }
 
 void AlarmList::addAlarm(const Alarm& alarm) {
-    add(QString::number(alarm.time, 'f', 2), QString::number(alarm.step), alarm.severity,
-        describe(alarm.kind), QString::fromStdString(alarm.message));
+    QStringList args;
+    for (const std::string& a : alarm.args)
+        args << QString::fromStdString(a);
+    const QString english = QString::fromStdString(alarm.message);
+    QTreeWidgetItem* item =
+        add(QString::number(alarm.time, 'f', 2), QString::number(alarm.step), alarm.severity,
+            describe(alarm.kind), AlarmText::describe(alarm.code, args, english));
+    item->setData(Kind, kKindRole, int(alarm.kind));
+    if (!alarm.code.empty()) {
+        item->setData(Message, kCodeRole, QString::fromStdString(alarm.code));
+        item->setData(Message, kArgsRole, args);
+        item->setData(Message, kEnglishRole, english);
+    }
 }
 
 void AlarmList::addMessage(const QString& text, AlarmSeverity severity) {
@@ -83,11 +129,13 @@ void AlarmList::addMessage(const QString& text, AlarmSeverity severity) {
 
 void AlarmList::addEvent(double time, int step, const QString& text) {
     add(QString::number(time, 'f', 2), QString::number(step), AlarmSeverity::Info,
-        describe(AlarmKind::OperatorHold), text);
+        describe(AlarmKind::OperatorHold), text)
+        ->setData(Kind, kKindRole, int(AlarmKind::OperatorHold));
 }
 
-void AlarmList::add(const QString& time, const QString& step, AlarmSeverity severity,
-                    const QString& kind, const QString& text) {
+QTreeWidgetItem* AlarmList::add(const QString& time, const QString& step,
+                                AlarmSeverity severity, const QString& kind,
+                                const QString& text) {
     auto* item = new QTreeWidgetItem(this);
     item->setText(Time, time);
     item->setText(Step, step);
@@ -112,14 +160,16 @@ void AlarmList::add(const QString& time, const QString& step, AlarmSeverity seve
         ++m_unacknowledged;
         notify();
     }
+    return item;
 }
 
 void AlarmList::acknowledge(QTreeWidgetItem* item) {
     if (!item || item->data(Acknowledged, kAckRole).toBool())
         return;
     item->setData(Acknowledged, kAckRole, true);
-    item->setText(Acknowledged, tr("yes, %1").arg(QDateTime::currentDateTime().toString(
-                                    QStringLiteral("HH:mm:ss"))));
+    const QString at = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss"));
+    item->setData(Acknowledged, kAckTimeRole, at);
+    item->setText(Acknowledged, tr("yes, %1").arg(at));
     for (int c = 0; c < ColumnCount; ++c)
         item->setBackground(c, QBrush());
     --m_unacknowledged;

@@ -38,8 +38,9 @@ signals:
     void attentionChanged(int count, const QString& latest);
 
 private:
-    void add(const QString& time, const QString& step, AlarmSeverity severity, const QString& kind,
-             const QString& text);
+    QTreeWidgetItem* add(const QString& time, const QString& step, AlarmSeverity severity,
+                         const QString& kind, const QString& text);
+    void retranslate(QTreeWidgetItem* item);
     void acknowledge(QTreeWidgetItem* item);
     void notify();
 

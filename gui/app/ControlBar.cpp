@@ -1,6 +1,7 @@
 #include "gui/app/ControlBar.h"
 
 #include "gui/PresetLibrary.h"
+#include "gui/app/LiveText.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -12,15 +13,15 @@
 
 namespace hsmu::gui {
 
-ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
+ControlBar::ControlBar(QWidget* parent) : QToolBar(parent) {
     setObjectName(QStringLiteral("controlBar"));
     setMovable(false);
     setToolButtonStyle(Qt::ToolButtonTextOnly);
 
-    addWidget(new QLabel(tr("Preset: "), this));
+    auto* presetLabel = new QLabel(this);
+    addWidget(presetLabel);
     m_presets = new QComboBox(this);
-    m_presets->setToolTip(tr("Test configurations shipped with the console"));
-    m_presets->addItem(tr("(choose a preset)"), QString());
+    m_presets->addItem(QString(), QString());
     for (const PresetLibrary::Preset& p : PresetLibrary::presets()) {
         m_presets->addItem(p.id, p.id);
         m_presets->setItemData(m_presets->count() - 1, p.title, Qt::ToolTipRole);
@@ -35,52 +36,39 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
     m_presets->setMinimumContentsLength(14);
     addWidget(m_presets);
 
-    m_open = addAction(tr("Open configuration..."), this, &ControlBar::openRequested);
+    m_open = addAction(QString(), this, &ControlBar::openRequested);
     m_open->setShortcut(QKeySequence::Open);
     addSeparator();
-    m_start = addAction(tr("Start"), this, &ControlBar::startRequested);
-    m_pause = addAction(tr("Pause"), this, &ControlBar::pauseRequested);
-    m_step = addAction(tr("Single step"), this, &ControlBar::singleStepRequested);
-    m_step->setToolTip(tr("Run exactly one integration step, then stay paused"));
-    m_resume = addAction(tr("Resume"), this, &ControlBar::resumeRequested);
+    m_start = addAction(QString(), this, &ControlBar::startRequested);
+    m_pause = addAction(QString(), this, &ControlBar::pauseRequested);
+    m_step = addAction(QString(), this, &ControlBar::singleStepRequested);
+    m_resume = addAction(QString(), this, &ControlBar::resumeRequested);
     addSeparator(); // Stop ends the test: apart from Resume (and it asks first)
-    m_stop = addAction(tr("Stop..."), this, &ControlBar::stopRequested);
+    m_stop = addAction(QString(), this, &ControlBar::stopRequested);
     m_stop->setObjectName(QStringLiteral("stopTest"));
-    m_stop->setToolTip(tr("End the test, keeping the data (asks for confirmation)"));
     addSeparator();
     const QKeySequence holdKey = emergencyHoldShortcut();
-    m_hold = addAction(tr("Emergency hold (%1)").arg(holdKey.toString(QKeySequence::NativeText)),
-                       this, &ControlBar::emergencyHoldRequested);
+    m_hold = addAction(QString(), this, &ControlBar::emergencyHoldRequested);
     m_hold->setObjectName(QStringLiteral("emergencyHold"));
     m_hold->setShortcut(holdKey);
     m_hold->setShortcutContext(Qt::ApplicationShortcut);
-    m_hold->setToolTip(tr("Hold the test at once, between two steps (%1)")
-                           .arg(holdKey.toString(QKeySequence::NativeText)));
     if (QWidget* button = widgetForAction(m_hold))
         button->setStyleSheet(QStringLiteral("QToolButton { color: white; background: #c62828;"
                                              " font-weight: bold; padding: 3px 6px; }"));
     addSeparator();
 
-    addWidget(new QLabel(tr(" Speed: "), this));
+    auto* speedLabel = new QLabel(this);
+    addWidget(speedLabel);
     m_speed = new QComboBox(this);
-    m_speed->setToolTip(tr("Test time per wall-clock time"));
     // Pseudo-dynamic tests run at 1/10 to 1/100 of real time, or at a fixed wall time per step.
-    for (double f : {0.01, 0.02, 0.05, 0.1, 0.2})
-        m_speed->addItem(tr("1/%1 x real time").arg(qRound(1.0 / f)), f);
-    m_speed->addItem(tr("0.5 x real time"), 0.5);
-    m_speed->addItem(tr("real time"), 1.0);
-    m_speed->addItem(tr("2 x real time"), 2.0);
-    m_speed->addItem(tr("5 x real time"), 5.0);
-    m_speed->addItem(tr("as fast as possible"), 0.0);
-    m_speed->addItem(tr("fixed wall time per step"), kWallPerStep);
+    for (double f : {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 0.0, kWallPerStep})
+        m_speed->addItem(QString(), f);
     m_speed->setCurrentIndex(m_speed->findData(1.0));
     m_wallPerStep = new QDoubleSpinBox(this);
     m_wallPerStep->setObjectName(QStringLiteral("wallTimePerStep"));
     m_wallPerStep->setRange(0.001, 600.0);
     m_wallPerStep->setDecimals(3);
     m_wallPerStep->setValue(1.0);
-    m_wallPerStep->setSuffix(tr(" s of wall time per step"));
-    m_wallPerStep->setToolTip(tr("Each step takes this long in wall time (pseudo-dynamic pace)"));
     connect(m_speed, &QComboBox::currentIndexChanged, this, [this] { emitPace(); });
     connect(m_wallPerStep, &QDoubleSpinBox::valueChanged, this, [this] { emitPace(); });
     m_speed->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -88,7 +76,47 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(tr("Test control"), parent) {
     addWidget(m_speed);
     m_wallPerStepAction = addWidget(m_wallPerStep);
     m_wallPerStepAction->setVisible(false);
+    LiveText::bind(this, [this, presetLabel, speedLabel, holdKey] {
+        setWindowTitle(tr("Test control"));
+        presetLabel->setText(tr("Preset: "));
+        m_presets->setToolTip(tr("Test configurations shipped with the console"));
+        m_presets->setItemText(0, tr("(choose a preset)"));
+        m_open->setText(tr("Open configuration..."));
+        m_start->setText(tr("Start"));
+        m_pause->setText(tr("Pause"));
+        m_step->setText(tr("Single step"));
+        m_step->setToolTip(tr("Run exactly one integration step, then stay paused"));
+        m_resume->setText(tr("Resume"));
+        m_stop->setText(tr("Stop..."));
+        m_stop->setToolTip(tr("End the test, keeping the data (asks for confirmation)"));
+        const QString key = holdKey.toString(QKeySequence::NativeText);
+        m_hold->setText(tr("Emergency hold (%1)").arg(key));
+        m_hold->setToolTip(tr("Hold the test at once, between two steps (%1)").arg(key));
+        speedLabel->setText(tr(" Speed: "));
+        m_speed->setToolTip(tr("Test time per wall-clock time"));
+        for (int i = 0; i < m_speed->count(); ++i)
+            m_speed->setItemText(i, speedText(m_speed->itemData(i).toDouble()));
+        m_wallPerStep->setSuffix(tr(" s of wall time per step"));
+        m_wallPerStep->setToolTip(
+            tr("Each step takes this long in wall time (pseudo-dynamic pace)"));
+    });
     setRunState(RunState::Idle);
+}
+
+QString ControlBar::speedText(double factor) {
+    if (factor == kWallPerStep)
+        return tr("fixed wall time per step");
+    if (factor == 0.0)
+        return tr("as fast as possible");
+    if (factor < 0.5)
+        return tr("1/%1 x real time").arg(qRound(1.0 / factor));
+    if (factor == 0.5)
+        return tr("0.5 x real time");
+    if (factor == 1.0)
+        return tr("real time");
+    if (factor == 2.0)
+        return tr("2 x real time");
+    return tr("5 x real time");
 }
 
 void ControlBar::setRunState(RunState state) {

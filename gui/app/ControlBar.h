@@ -52,6 +52,8 @@ signals:
     void paceChanged(double factor, double wallPerStep);
 
 private:
+    /// The speed selector's text for a pace factor (kWallPerStep: the fixed wall time entry).
+    static QString speedText(double factor);
     static constexpr double kWallPerStep = -1.0; ///< the selector's "fixed wall time" item
     void emitPace();
 

@@ -2,9 +2,13 @@
 
 #include "gui/PresetLibrary.h"
 #include "gui/app/AlarmList.h"
+#include "gui/app/AlarmPanel.h"
+#include "gui/app/AttentionBanner.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
+#include "gui/app/EndConfirmation.h"
 #include "gui/app/GroundMotionCheck.h"
+#include "gui/app/LiveText.h"
 #include "gui/app/ParametersPanel.h"
 #include "gui/app/PendingUpdatesPanel.h"
 #include "gui/app/PreflightChecks.h"
@@ -15,23 +19,15 @@
 #include "gui/app/TestStatusBar.h"
 #include "gui/app/WheelGuard.h"
 #include "gui/plots/LivePlotsPanel.h"
-#include "gui/replay/ReplayWindow.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFile>
-#include <QHeaderView>
 #include <QFileInfo>
 #include <QDir>
-#include <QHBoxLayout>
-#include <QInputDialog>
-#include <QLabel>
-#include <QMenu>
-#include <QMenuBar>
 #include <QMessageBox>
-#include <QPushButton>
 #include <QScrollArea>
 #include <QVBoxLayout>
 
@@ -47,7 +43,6 @@ bool active(RunState s) {
 
 MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     : QMainWindow(parent), m_overrides(overrides) {
-    setWindowTitle(tr("HSMU Console"));
     m_controller = new TestController(this);
     m_controller->setRecordDirectory(ConsoleSettings::recordDirectory());
     m_controls = new ControlBar(this);
@@ -59,22 +54,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     auto* cv = new QVBoxLayout(centre);
     cv->setContentsMargins(0, 0, 0, 0);
     cv->setSpacing(0);
-    m_banner = new QWidget(centre);
-    m_banner->setObjectName(QStringLiteral("attentionBanner"));
-    m_banner->setAutoFillBackground(true);
-    m_banner->setStyleSheet(QStringLiteral("#attentionBanner { background: #c62828; }"
-                                           " QLabel { color: white; font-weight: bold; }"));
-    auto* bh = new QHBoxLayout(m_banner);
-    m_bannerText = new QLabel(m_banner);
-    m_bannerText->setObjectName(QStringLiteral("attentionText"));
-    m_bannerText->setWordWrap(true);
-    // A long message (a long path) must not widen the window: cut, the full text in the tip.
-    m_bannerText->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    m_bannerText->setMinimumWidth(1);
-    auto* ack = new QPushButton(tr("Acknowledge all"), m_banner);
-    bh->addWidget(m_bannerText, 1);
-    bh->addWidget(ack);
-    m_banner->hide();
+    m_banner = new AttentionBanner(centre);
     m_plots = new LivePlotsPanel(centre);
     cv->addWidget(m_banner);
     cv->addWidget(m_plots, 1);
@@ -85,13 +65,13 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     setupScroll->setWidget(m_setup);
     setupScroll->setWidgetResizable(true);
     setupScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_setupDock = addDock(setupScroll, tr("Test setup"), QStringLiteral("setupDock"),
+    m_setupDock = addDock(setupScroll, QString(), QStringLiteral("setupDock"),
                           Qt::RightDockWidgetArea);
     m_parameters = new ParametersPanel(this);
-    m_parametersDock = addDock(m_parameters, tr("Parameters"), QStringLiteral("parametersDock"),
+    m_parametersDock = addDock(m_parameters, QString(), QStringLiteral("parametersDock"),
                                Qt::RightDockWidgetArea);
     m_pending = new PendingUpdatesPanel(this);
-    QDockWidget* pending = addDock(m_pending, tr("Pending updates"), QStringLiteral("pendingDock"),
+    QDockWidget* pending = addDock(m_pending, QString(), QStringLiteral("pendingDock"),
                                    Qt::RightDockWidgetArea);
     // The setup matters before a start, the parameters during a run: one tab each, the
     // plots keep the width; the pending updates stay in view below.
@@ -99,32 +79,12 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     tabifyDockWidget(m_setupDock, m_parametersDock);
     m_setupDock->raise();
 
-    auto* alarmPanel = new QWidget(this);
-    auto* av = new QVBoxLayout(alarmPanel);
-    av->setContentsMargins(2, 2, 2, 2);
-    m_alarms = new AlarmList(alarmPanel);
-    auto* ackSelected = new QPushButton(tr("Acknowledge selected"), alarmPanel);
-    auto* ackAll = new QPushButton(tr("Acknowledge all"), alarmPanel);
-    const QString ackHelp = tr("Critical alarms stay red until acknowledged (double-click or "
-                               "the buttons).");
-    ackSelected->setToolTip(ackHelp);
-    ackAll->setToolTip(ackHelp);
-    m_alarms->setToolTip(ackHelp);
-    // The list takes the whole height (at 1280x720 it shows 5+ rows); the buttons on its right.
-    av->setDirection(QBoxLayout::LeftToRight);
-    av->addWidget(m_alarms, 1);
-    auto* buttons = new QVBoxLayout;
-    buttons->addWidget(ackSelected);
-    buttons->addWidget(ackAll);
-    buttons->addStretch(1);
-    av->addLayout(buttons);
-    m_alarms->setMinimumHeight(m_alarms->header()->sizeHint().height() +
-                               5 * (m_alarms->fontMetrics().height() + 4));
-    m_alarmDock = addDock(alarmPanel, tr("Alarms and events"), QStringLiteral("alarmDock"),
+    auto* alarmPanel = new AlarmPanel(this);
+    m_alarms = alarmPanel->list();
+    m_alarmDock = addDock(alarmPanel, QString(), QStringLiteral("alarmDock"),
                           Qt::BottomDockWidgetArea);
-    connect(ackSelected, &QPushButton::clicked, m_alarms, &AlarmList::acknowledgeSelected);
-    connect(ackAll, &QPushButton::clicked, m_alarms, &AlarmList::acknowledgeAll);
-    connect(ack, &QPushButton::clicked, m_alarms, &AlarmList::acknowledgeAll);
+    connect(m_banner, &AttentionBanner::acknowledgeAllRequested, m_alarms,
+            &AlarmList::acknowledgeAll);
     connect(m_alarms, &AlarmList::attentionChanged, this, &MainWindow::onAttention);
 
     m_status = new TestStatusBar(this);
@@ -142,6 +102,30 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     if (const QByteArray s = ConsoleSettings::windowState(); !s.isEmpty())
         restoreState(s);
     WheelGuard::install(this); // no value changes by scrolling over a field
+    // Live language switching (Translations::install): every piece retranslates itself on
+    // QEvent::LanguageChange (LiveText, changeEvent); here the window's own texts.
+    LiveText::bind(this, [this, pending] {
+        m_setupDock->setWindowTitle(tr("Test setup"));
+        m_parametersDock->setWindowTitle(tr("Parameters"));
+        pending->setWindowTitle(tr("Pending updates"));
+        m_alarmDock->setWindowTitle(tr("Alarms and events"));
+        showTitle();
+        if (m_controller->hasTest())
+            showLinkState(m_linkConnected, m_linkFault);
+        // Plot titles are set when a test is configured: again now if no data would be lost.
+        if (m_controller->hasTest() && !active(m_controller->state()) &&
+            m_controller->state() != RunState::Finished &&
+            m_controller->state() != RunState::Stopped)
+            m_plots->configure(m_controller->layout(), m_controller->config());
+    });
+}
+
+void MainWindow::showTitle() {
+    if (m_controller->hasTest())
+        setWindowTitle(
+            tr("HSMU Console - %1").arg(QString::fromStdString(m_controller->config().name)));
+    else
+        setWindowTitle(tr("HSMU Console"));
 }
 
 MainWindow::~MainWindow() = default;
@@ -153,123 +137,6 @@ QDockWidget* MainWindow::addDock(QWidget* panel, const QString& title, const QSt
     dock->setWidget(panel);
     addDockWidget(area, dock);
     return dock;
-}
-
-void MainWindow::buildMenus() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    // Ctrl+O belongs to the tool bar's action: one shortcut, one action.
-    file->addAction(tr("&Open configuration..."), this, &MainWindow::openConfigurationFile);
-    m_recentMenu = file->addMenu(tr("Open &recent"));
-    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
-    rebuildRecentMenu();
-    file->addSeparator();
-    file->addAction(tr("Open r&ecord..."), this, [this] { ReplayWindow::openWithDialog(this); });
-    file->addSeparator();
-    QAction* note = file->addAction(tr("Add &note..."), this, &MainWindow::askForNote);
-    note->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_N));
-    note->setToolTip(tr("Record a note at the current step of the test"));
-    file->addSeparator();
-    file->addAction(tr("&Settings..."), this, &MainWindow::openSettings);
-    file->addSeparator();
-    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
-    quit->setToolTip(tr("Quit the console (asks first while a test runs)"));
-    m_viewMenu = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget* dock : findChildren<QDockWidget*>())
-        m_viewMenu->addAction(dock->toggleViewAction());
-}
-
-void MainWindow::askForNote() {
-    if (!m_controller->hasTest()) {
-        QMessageBox::information(this, tr("Add note"), tr("Load and start a test first."));
-        return;
-    }
-    bool ok = false;
-    const QString text = QInputDialog::getMultiLineText(
-        this, tr("Add note"), tr("Note (recorded with the current step and test time):"),
-        QString(), &ok);
-    if (ok && !text.trimmed().isEmpty())
-        m_controller->addNote(text.trimmed());
-}
-
-void MainWindow::rebuildRecentMenu() {
-    m_recentMenu->clear();
-    const QStringList files = ConsoleSettings::recentFiles();
-    for (const QString& f : files)
-        m_recentMenu
-            ->addAction(QFileInfo(f).fileName(), this,
-                        [this, f] {
-                            QString error;
-                            if (!loadConfiguration(f, &error))
-                                QMessageBox::critical(this, tr("Configuration error"), error);
-                        })
-            ->setToolTip(f);
-    if (files.isEmpty())
-        m_recentMenu->addAction(tr("(none)"))->setEnabled(false);
-}
-
-void MainWindow::wireController() {
-    connect(m_controls, &ControlBar::presetChosen, this,
-            [this](const QString& id) { loadConfiguration(id); });
-    connect(m_controls, &ControlBar::openRequested, this, &MainWindow::openConfigurationFile);
-    connect(m_controls, &ControlBar::startRequested, this, &MainWindow::startTest);
-    connect(m_controls, &ControlBar::pauseRequested, m_controller, &TestController::pause);
-    connect(m_controls, &ControlBar::singleStepRequested, this, &MainWindow::singleStep);
-    connect(m_controls, &ControlBar::resumeRequested, m_controller, &TestController::resume);
-    connect(m_controls, &ControlBar::stopRequested, this, &MainWindow::requestStop);
-    connect(m_controls, &ControlBar::emergencyHoldRequested, m_controller, [this] {
-        if (m_preflight) { // nothing may start from the dialog, nothing is armed
-            m_pendingRun = RunRequest::None;
-            m_preflight->reject();
-        }
-        m_controller->emergencyHold();
-    });
-    connect(m_controls, &ControlBar::paceChanged, m_controller,
-            [this](double factor, double wallPerStep) {
-                m_controller->setWallTimePerStep(wallPerStep);
-                m_controller->setSpeed(factor);
-            });
-    m_controller->setSpeed(m_controls->speed());
-    connect(m_setup, &SetupPanel::applyRequested, this, &MainWindow::applySetup);
-    connect(m_setup, &SetupPanel::groundMotionChosen, this, &MainWindow::previewGroundMotion);
-    connect(m_setup, &SetupPanel::testLinkRequested, this, &MainWindow::testLink);
-
-    connect(m_parameters, &ParametersPanel::boundsEdited, m_controller,
-            &TestController::setParameterBounds);
-    connect(m_parameters, &ParametersPanel::lockEdited, m_controller,
-            &TestController::setParameterLocked);
-    connect(m_parameters, &ParametersPanel::thresholdEdited, m_controller,
-            &TestController::setFitThreshold);
-    connect(m_parameters, &ParametersPanel::editRefused, this,
-            [this](const QString& why) { m_alarms->addMessage(why, AlarmSeverity::Warning); });
-    connect(m_pending, &PendingUpdatesPanel::approveRequested, m_controller,
-            &TestController::approveUpdate);
-    connect(m_pending, &PendingUpdatesPanel::rejectRequested, m_controller,
-            &TestController::rejectUpdate);
-    connect(m_pending, &PendingUpdatesPanel::policyChosen, this, &MainWindow::onPolicyChosen);
-    connect(m_controller, &TestController::operatorEvent, this,
-            [this](const OperatorEvent& e) { m_alarms->addEvent(e.time, e.step, e.describe()); });
-
-    connect(m_controller, &TestController::testLoaded, this, &MainWindow::onTestLoaded);
-    connect(m_controller, &TestController::recordsArrived, m_plots,
-            [this](const std::vector<StepRecord>& rows) {
-                m_plots->appendRecords(rows);
-                m_plots->refresh(); // coalesced and budgeted by the panel
-            });
-    connect(m_controller, &TestController::stateChanged, this, &MainWindow::onStateChanged);
-    connect(m_controller, &TestController::progress, m_status, &TestStatusBar::setProgress);
-    connect(m_controller, &TestController::alarmRaised, this, &MainWindow::onAlarm);
-    connect(m_controller, &TestController::updatingChanged, m_parameters,
-            &ParametersPanel::setSnapshot);
-    connect(m_controller, &TestController::updatingChanged, m_pending,
-            &PendingUpdatesPanel::setSnapshot);
-    connect(m_controller, &TestController::commandRefused, this, [this](const QString& why) {
-        m_alarms->addMessage(why, AlarmSeverity::Warning);
-        m_status->showMessage(why, 10000);
-    });
-    connect(m_controller, &TestController::preflightReady, this, &MainWindow::showPreflight);
-    connect(m_controller, &TestController::recordingStarted, m_status,
-            &TestStatusBar::setRecordingFile);
 }
 
 bool MainWindow::loadConfiguration(const QString& nameOrPath, QString* error) {
@@ -375,25 +242,13 @@ void MainWindow::confirmEnd(const QString& objectName, const QString& question,
                             const QString& yes, std::function<void()> then) {
     if (m_confirmation)
         return;
-    m_confirmation = new QMessageBox(QMessageBox::Warning, tr("A test is running"), question,
-                                     QMessageBox::NoButton, this);
-    m_confirmation->setObjectName(objectName);
-    m_confirmation->setAttribute(Qt::WA_DeleteOnClose);
-    m_confirmation->addAction(m_controls->emergencyHoldAction());
-    QPushButton* end = m_confirmation->addButton(yes, QMessageBox::AcceptRole);
-    end->setObjectName(QStringLiteral("confirmEnd"));
-    QPushButton* keep =
-        m_confirmation->addButton(tr("Continue the test"), QMessageBox::RejectRole);
-    keep->setObjectName(QStringLiteral("continueTest"));
-    m_confirmation->setDefaultButton(keep); // Enter does not end a test
-    connect(m_confirmation, &QMessageBox::finished, this,
-            [this, end, then = std::move(then)](int) {
-                const bool confirmed = m_confirmation && m_confirmation->clickedButton() == end;
-                m_confirmation = nullptr;
-                if (confirmed)
-                    then();
-            });
-    m_confirmation->open();
+    m_confirmation = EndConfirmation::open(this, objectName, question, yes,
+                                           m_controls->emergencyHoldAction(),
+                                           [this, then = std::move(then)](bool confirmed) {
+                                               m_confirmation = nullptr;
+                                               if (confirmed)
+                                                   then();
+                                           });
 }
 
 void MainWindow::requestStop() {
@@ -513,8 +368,7 @@ void MainWindow::onTestLoaded() {
                              .arg(QString::fromStdString(m_controller->config().name),
                                   QString::fromStdString(m_controller->config().sourcePath)),
                          AlarmSeverity::Info);
-    setWindowTitle(
-        tr("HSMU Console - %1").arg(QString::fromStdString(m_controller->config().name)));
+    showTitle();
     m_status->setProgress(0, 0, 0.0, 0.0);
     m_status->setRecordingFile(QString());
     m_parameters->setSnapshot({});
@@ -527,6 +381,8 @@ void MainWindow::onTestLoaded() {
 void MainWindow::showLinkState(bool connected, bool fault) {
     m_status->setSites(m_controller->siteMonitor()); // per-site health (sites)
     m_setup->setSiteMonitor(m_controller->siteMonitor());
+    m_linkConnected = connected;
+    m_linkFault = fault;
     const comms::LinkAddress& a = m_controller->controllerAddress();
     if (a.kind == comms::LinkAddress::Kind::Builtin) {
         m_status->setLink(tr("built-in virtual lab"), true);
@@ -583,12 +439,9 @@ void MainWindow::onAlarm(const Alarm& alarm) {
 }
 
 void MainWindow::onAttention(int count, const QString& latest) {
-    m_banner->setVisible(count > 0);
+    m_banner->setAttention(count, latest);
     if (count == 0)
         return;
-    m_bannerText->setText(
-        tr("%n critical alarm(s) not acknowledged. Latest: %1", nullptr, count).arg(latest));
-    m_bannerText->setToolTip(m_bannerText->text());
     m_alarmDock->show();
     m_alarmDock->raise();
 }

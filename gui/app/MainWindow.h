@@ -16,6 +16,8 @@
 // confirmation while a test runs ("end the test and keep the data"). Spin boxes and combo
 // boxes take the wheel only when focused (WheelGuard). Operator events come back from the
 // worker stamped with step and time and go into the alarm and event list.
+// Menus and signal wiring: MainWindowWiring.cpp; banner, alarm dock and the end confirmation
+// are their own widgets (AttentionBanner, AlarmPanel, EndConfirmation).
 // It owns the TestController. Thread rules: GUI thread only.
 
 #include "gui/ConfigOverrides.h"
@@ -45,6 +47,7 @@ struct Alarm;
 namespace hsmu::gui {
 
 class AlarmList;
+class AttentionBanner;
 class ControlBar;
 class LivePlotsPanel;
 class ParametersPanel;
@@ -109,6 +112,8 @@ private:
     void onAlarm(const Alarm& alarm);
     void onAttention(int count, const QString& latest);
     void showLinkState(bool connected, bool fault);
+    /// "HSMU Console - <test>" (or without a test), in the current language.
+    void showTitle();
     /// The updating policy chosen in the Pending updates panel: the one setting, kept for
     /// every reload of the same configuration.
     void onPolicyChosen(ReporterPolicy policy, int everyN);
@@ -128,8 +133,7 @@ private:
     TestController* m_controller = nullptr;
     ControlBar* m_controls = nullptr;
     LivePlotsPanel* m_plots = nullptr;
-    QWidget* m_banner = nullptr;
-    QLabel* m_bannerText = nullptr;
+    AttentionBanner* m_banner = nullptr;
     SetupPanel* m_setup = nullptr;
     ParametersPanel* m_parameters = nullptr;
     PendingUpdatesPanel* m_pending = nullptr;
@@ -143,6 +147,7 @@ private:
     PreflightDialog* m_preflight = nullptr;
     QMessageBox* m_confirmation = nullptr;
     bool m_closeConfirmed = false;
+    bool m_linkConnected = false, m_linkFault = false; ///< the link state shown last
     std::optional<std::pair<ReporterPolicy, int>> m_policyChoice;
 };
 

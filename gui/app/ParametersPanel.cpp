@@ -1,5 +1,6 @@
 #include "gui/app/ParametersPanel.h"
 
+#include "gui/app/LiveText.h"
 #include "gui/app/ParameterTableModel.h"
 
 #include <QDoubleSpinBox>
@@ -14,15 +15,13 @@ namespace hsmu::gui {
 
 ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("parametersPanel"));
-    m_summary = new QLabel(tr("No online model updating in this test."), this);
+    m_summary = new QLabel(this);
     m_summary->setWordWrap(true);
     m_threshold = new QDoubleSpinBox(this);
     m_threshold->setObjectName(QStringLiteral("fitThreshold"));
     m_threshold->setRange(0.001, 10.0);
     m_threshold->setDecimals(3);
     m_threshold->setSingleStep(0.01);
-    m_threshold->setToolTip(tr("Normalized RMS fit error above which the inspector requests "
-                               "an update; effective on the next step"));
     connect(m_threshold, &QDoubleSpinBox::editingFinished, this,
             [this] { emit thresholdEdited(m_threshold->value()); });
 
@@ -41,7 +40,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     m_table->setAlternatingRowColors(true);
 
     auto* thresholdRow = new QHBoxLayout;
-    thresholdRow->addWidget(new QLabel(tr("Fit-error threshold [-]:"), this));
+    auto* thresholdLabel = new QLabel(this);
+    thresholdRow->addWidget(thresholdLabel);
     thresholdRow->addWidget(m_threshold);
     thresholdRow->addStretch(1);
     auto* layout = new QVBoxLayout(this);
@@ -49,18 +49,35 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_summary);
     layout->addLayout(thresholdRow);
     layout->addWidget(m_table, 1);
-    auto* note = new QLabel(tr("Value, sigma (1 standard deviation) and bounds in the law's "
-                               "normalized units (u / u_ref, F / F_ref). Double-click a bound to "
-                               "edit it; bound and lock edits take effect on the next step."),
-                            this);
+    auto* note = new QLabel(this);
     note->setWordWrap(true);
     note->setStyleSheet(QStringLiteral("color: palette(mid);"));
     layout->addWidget(note);
     setEditable(false);
+    LiveText::bind(this, [this, thresholdLabel, note] {
+        m_threshold->setToolTip(tr("Normalized RMS fit error above which the inspector "
+                                   "requests an update; effective on the next step"));
+        thresholdLabel->setText(tr("Fit-error threshold [-]:"));
+        note->setText(tr("Value, sigma (1 standard deviation) and bounds in the law's "
+                         "normalized units (u / u_ref, F / F_ref). Double-click a bound to "
+                         "edit it; bound and lock edits take effect on the next step."));
+        showSummary();
+        emit m_model->headerDataChanged(Qt::Horizontal, 0, m_model->columnCount() - 1);
+    });
 }
 
 void ParametersPanel::setSnapshot(const UpdatingSnapshot& s) {
     m_model->setSnapshot(s);
+    m_snapshot = s;
+    showSummary();
+    if (s.enabled && !m_threshold->hasFocus()) {
+        const QSignalBlocker block(m_threshold);
+        m_threshold->setValue(s.fitThreshold);
+    }
+}
+
+void ParametersPanel::showSummary() {
+    const UpdatingSnapshot& s = m_snapshot;
     if (!s.enabled) {
         m_summary->setText(tr("No online model updating in this test."));
         return;
@@ -73,10 +90,6 @@ void ParametersPanel::setSnapshot(const UpdatingSnapshot& s) {
             .arg(QString::number(s.fitError, 'f', 3))
             .arg(QString::number(s.fitThreshold, 'f', 3))
             .arg(s.appliedUpdates));
-    if (!m_threshold->hasFocus()) {
-        const QSignalBlocker block(m_threshold);
-        m_threshold->setValue(s.fitThreshold);
-    }
 }
 
 void ParametersPanel::setEditable(bool editable) {

@@ -34,6 +34,8 @@ signals:
     void editRefused(const QString& reason);
 
 private:
+    void showSummary();
+    UpdatingSnapshot m_snapshot; ///< the last one shown
     ParameterTableModel* m_model = nullptr;
     QTableView* m_table = nullptr;
     QLabel* m_summary = nullptr;

@@ -1,6 +1,7 @@
 #include "gui/app/PendingUpdatesPanel.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -10,15 +11,16 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
-#include <algorithm>
 #include <cmath>
-#include <iterator>
 
 namespace hsmu::gui {
 
 namespace {
 enum Column { Parameter, Current, Proposed, Change, ColumnCount };
-}
+constexpr int kIdRole = Qt::UserRole;
+constexpr ReporterPolicy kPolicies[] = {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
+                                        ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval};
+} // namespace
 
 QString PendingUpdatesPanel::describe(ReporterPolicy policy) {
     switch (policy) {
@@ -38,26 +40,24 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("pendingUpdatesPanel"));
     m_policy = new QComboBox(this);
     m_policy->setObjectName(QStringLiteral("approvalPolicy"));
-    for (ReporterPolicy p : {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
-                             ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval})
+    for (ReporterPolicy p : kPolicies)
         m_policy->addItem(describe(p), int(p));
     m_everyN = new QSpinBox(this);
     m_everyN->setRange(1, 100000);
-    m_everyN->setPrefix(tr("N = "));
     connect(m_policy, &QComboBox::activated, this, [this] { emitPolicy(); });
     connect(m_everyN, &QSpinBox::editingFinished, this, [this] { emitPolicy(); });
 
     m_summary = new QLabel(this);
+    m_summary->setObjectName(QStringLiteral("pendingSummary"));
     m_summary->setWordWrap(true);
     m_tree = new QTreeWidget(this);
     m_tree->setColumnCount(ColumnCount);
-    m_tree->setHeaderLabels({tr("Parameter"), tr("Current"), tr("Proposed"), tr("Change [%]")});
     m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
-    m_tree->setToolTip(tr("Current and proposed values in the law's normalized units"));
     m_tree->setAlternatingRowColors(true);
 
     auto* policyRow = new QHBoxLayout;
-    policyRow->addWidget(new QLabel(tr("Apply updates:"), this));
+    m_policyLabel = new QLabel(this);
+    policyRow->addWidget(m_policyLabel);
     policyRow->addWidget(m_policy, 1);
     policyRow->addWidget(m_everyN);
     auto* layout = new QVBoxLayout(this);
@@ -65,8 +65,28 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     layout->addLayout(policyRow);
     layout->addWidget(m_summary);
     layout->addWidget(m_tree, 1);
+    retranslateUi();
     setSnapshot({});
     setEditable(false); // nothing to decide before a test is loaded
+}
+
+void PendingUpdatesPanel::retranslateUi() {
+    for (int i = 0; i < m_policy->count(); ++i)
+        m_policy->setItemText(i, describe(ReporterPolicy(m_policy->itemData(i).toInt())));
+    m_everyN->setPrefix(tr("N = "));
+    m_policyLabel->setText(tr("Apply updates:"));
+    m_tree->setHeaderLabels({tr("Parameter"), tr("Current"), tr("Proposed"), tr("Change [%]")});
+    m_tree->setToolTip(tr("Current and proposed values in the law's normalized units"));
+    showSummary();
+    for (const UpdateProposal& p : m_snapshot.pending)
+        if (const auto it = m_items.find(p.id); it != m_items.end())
+            fillProposal(it->second, p);
+}
+
+void PendingUpdatesPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
 }
 
 void PendingUpdatesPanel::emitPolicy() {
@@ -84,22 +104,43 @@ void PendingUpdatesPanel::setEditable(bool editable) {
 }
 
 QList<int> PendingUpdatesPanel::shownProposals() const {
-    return QList<int>(m_shown.begin(), m_shown.end());
+    QList<int> ids;
+    for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
+        ids.push_back(m_tree->topLevelItem(i)->data(Parameter, kIdRole).toInt());
+    return ids;
+}
+
+void PendingUpdatesPanel::showSummary() {
+    const UpdatingSnapshot& s = m_snapshot;
+    QString text;
+    if (!s.enabled)
+        text = tr("No online model updating in this test.");
+    else if (s.policy != ReporterPolicy::OnApproval)
+        text = tr("Updates are applied %1; choose \"on the operator's approval\" to decide each "
+                  "one.")
+                   .arg(describe(s.policy));
+    else
+        text = tr("%n update(s) waiting for a decision, oldest first.", nullptr,
+                  int(s.pending.size()));
+    if (s.enabled && s.notQueued > 0)
+        text += QLatin1Char(' ') +
+                tr("%n newer proposal(s) were not queued (the queue holds %1); each is in the "
+                   "record.",
+                   nullptr, s.notQueued)
+                    .arg(s.maxPending);
+    m_summary->setText(text);
 }
 
 void PendingUpdatesPanel::fillProposal(QTreeWidgetItem* top, const UpdateProposal& p) {
-    const int coalesced = m_coalesced.count(p.element) ? m_coalesced.at(p.element) : 1;
     QString title = tr("#%1 %2 at t = %3 s (step %4)")
                         .arg(p.id)
                         .arg(QString::fromStdString(p.element))
                         .arg(QString::number(p.time, 'f', 2))
                         .arg(p.step);
-    if (coalesced > 1)
-        title += tr(" - latest of %n proposal(s) since the last decision", nullptr, coalesced);
+    if (std::isfinite(p.fitError))
+        title += tr(", fit error %1").arg(QString::number(p.fitError, 'g', 3));
     top->setText(Parameter, title);
     top->setToolTip(Parameter, title);
-    top->setData(Parameter, Qt::UserRole, p.id);
-    top->setData(Parameter, Qt::UserRole + 1, QString::fromStdString(p.element));
     int k = 0;
     for (const auto& [name, proposed] : p.proposed) {
         QTreeWidgetItem* row = top->child(k++);
@@ -114,18 +155,38 @@ void PendingUpdatesPanel::fillProposal(QTreeWidgetItem* top, const UpdateProposa
                                  : QString());
     }
     if (QTreeWidgetItem* decision = top->child(k))
-        if (QWidget* buttons = m_tree->itemWidget(decision, Parameter)) {
-            const QList<QPushButton*> b = buttons->findChildren<QPushButton*>();
-            if (b.size() == 2) {
-                b[0]->setObjectName(QStringLiteral("approve%1").arg(p.id));
-                b[1]->setObjectName(QStringLiteral("reject%1").arg(p.id));
-            }
-        }
+        if (QWidget* buttons = m_tree->itemWidget(decision, Parameter))
+            for (QPushButton* b : buttons->findChildren<QPushButton*>())
+                b->setText(b->objectName().startsWith(QLatin1String("approve")) ? tr("Approve")
+                                                                                : tr("Reject"));
 }
 
-int PendingUpdatesPanel::coalescedCount(const QString& element) const {
-    const auto it = m_coalesced.find(element.toStdString());
-    return it == m_coalesced.end() ? 0 : it->second;
+QTreeWidgetItem* PendingUpdatesPanel::addProposal(const UpdateProposal& p) {
+    // The proposal's title and its decision buttons span the row; its parameters below.
+    auto* top = new QTreeWidgetItem(m_tree);
+    top->setFirstColumnSpanned(true);
+    top->setData(Parameter, kIdRole, p.id);
+    for (std::size_t k = 0; k < p.proposed.size(); ++k)
+        new QTreeWidgetItem(top);
+    auto* buttons = new QWidget(m_tree);
+    auto* h = new QHBoxLayout(buttons);
+    h->setContentsMargins(0, 0, 0, 0);
+    auto* approve = new QPushButton(buttons);
+    auto* reject = new QPushButton(buttons);
+    approve->setObjectName(QStringLiteral("approve%1").arg(p.id));
+    reject->setObjectName(QStringLiteral("reject%1").arg(p.id));
+    h->addWidget(approve);
+    h->addWidget(reject);
+    h->addStretch(1);
+    const int id = p.id;
+    connect(approve, &QPushButton::clicked, this, [this, id] { emit approveRequested(id); });
+    connect(reject, &QPushButton::clicked, this, [this, id] { emit rejectRequested(id); });
+    auto* decision = new QTreeWidgetItem(top);
+    decision->setFirstColumnSpanned(true);
+    m_tree->setItemWidget(decision, Parameter, buttons);
+    top->setExpanded(true);
+    fillProposal(top, p);
+    return top;
 }
 
 void PendingUpdatesPanel::setSnapshot(const UpdatingSnapshot& s) {
@@ -135,72 +196,24 @@ void PendingUpdatesPanel::setSnapshot(const UpdatingSnapshot& s) {
         if (!m_everyN->hasFocus())
             m_everyN->setValue(s.everyN);
     }
-    if (!s.enabled)
-        m_summary->setText(tr("No online model updating in this test."));
-    else if (s.policy != ReporterPolicy::OnApproval)
-        m_summary->setText(tr("Updates are applied %1; choose \"on the operator's approval\" "
-                              "to decide each one.")
-                               .arg(describe(s.policy)));
-    else
-        m_summary->setText(
-            tr("%n update(s) waiting for a decision.", nullptr, int(s.pending.size())));
-
-    std::vector<int> ids;
-    std::vector<std::string> elements;
-    for (const UpdateProposal& p : s.pending) {
-        ids.push_back(p.id);
-        elements.push_back(p.element);
-        // A newer proposal replaces the older one for the same element (the reporter keeps
-        // the latest): count them, so the operator sees how many were coalesced.
-        if (std::find(m_shown.begin(), m_shown.end(), p.id) == m_shown.end())
-            ++m_coalesced[p.element];
+    m_snapshot = s;
+    showSummary();
+    // The queue only grows at its end and loses decided proposals anywhere: remove the rows
+    // no longer pending, append the new ones; rows already shown stay where they are.
+    std::map<int, const UpdateProposal*> pending;
+    for (const UpdateProposal& p : s.pending)
+        pending[p.id] = &p;
+    for (auto it = m_items.begin(); it != m_items.end();) {
+        if (pending.count(it->first)) {
+            ++it;
+            continue;
+        }
+        delete it->second; // its children and button widget with it
+        it = m_items.erase(it);
     }
-    for (auto it = m_coalesced.begin(); it != m_coalesced.end();)
-        it = std::find(elements.begin(), elements.end(), it->first) == elements.end()
-                 ? m_coalesced.erase(it) : std::next(it);
-    if (ids == m_shown)
-        return; // unchanged: keep the operator's selection and scroll position
-    m_shown = ids;
-    if (elements == m_shownElements) {
-        // Same elements, newer proposals: update in place, the buttons stay where they are.
-        for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
-            fillProposal(m_tree->topLevelItem(i), s.pending[std::size_t(i)]);
-        setEditable(m_editable);
-        return;
-    }
-    m_shownElements = elements;
-    m_tree->clear();
-    for (const UpdateProposal& p : s.pending) {
-        // The proposal's title and its decision buttons span the row; its parameters below.
-        auto* top = new QTreeWidgetItem(m_tree);
-        top->setFirstColumnSpanned(true);
-        for (std::size_t k = 0; k < p.proposed.size(); ++k)
-            new QTreeWidgetItem(top);
-        auto* buttons = new QWidget(m_tree);
-        auto* h = new QHBoxLayout(buttons);
-        h->setContentsMargins(0, 0, 0, 0);
-        auto* approve = new QPushButton(tr("Approve"), buttons);
-        auto* reject = new QPushButton(tr("Reject"), buttons);
-        h->addWidget(approve);
-        h->addWidget(reject);
-        // The decision is for the proposal shown when the button is pressed.
-        connect(approve, &QPushButton::clicked, this, [this, top] {
-            const int id = top->data(Parameter, Qt::UserRole).toInt();
-            m_coalesced.erase(top->data(Parameter, Qt::UserRole + 1).toString().toStdString());
-            emit approveRequested(id);
-        });
-        connect(reject, &QPushButton::clicked, this, [this, top] {
-            const int id = top->data(Parameter, Qt::UserRole).toInt();
-            m_coalesced.erase(top->data(Parameter, Qt::UserRole + 1).toString().toStdString());
-            emit rejectRequested(id);
-        });
-        h->addStretch(1);
-        auto* decision = new QTreeWidgetItem(top);
-        decision->setFirstColumnSpanned(true);
-        m_tree->setItemWidget(decision, Parameter, buttons);
-        top->setExpanded(true);
-        fillProposal(top, p);
-    }
+    for (const UpdateProposal& p : s.pending)
+        if (!m_items.count(p.id))
+            m_items[p.id] = addProposal(p);
     setEditable(m_editable);
 }
 

@@ -1,11 +1,14 @@
 #pragma once
 // PendingUpdatesPanel: the reporter's approval policy (every step, zero crossing, every N
-// steps, on approval; effective on the next step) and, under "on approval", each pending
-// proposal: target element, test time [s] and step, and per parameter the target's current
-// value, the proposed one and the change [%], with Approve and Reject buttons. The reporter
-// keeps the latest proposal per element; the panel updates it in place (the buttons stay put)
-// and shows how many proposals were coalesced since the last decision. It only emits
-// the operator's decisions; MainWindow wires them to the TestController.
+// steps, on approval; effective on the next step) and, under "on approval", the approval
+// queue: every pending proposal, oldest first, each with its target element, test time [s],
+// step and the fit error when it was made, and per parameter the target's current value, the
+// proposed one and the change [%], with its own Approve and Reject buttons. Nothing is
+// replaced: a proposal stays until the operator decides (the rows already shown never move
+// when newer ones arrive below). When the queue is full (Reporter::maxPending()) newer offers
+// are not queued: the summary says how many, and each is in the record (/updating/events,
+// decision "notQueued"). It only emits the operator's decisions; MainWindow wires them to the
+// TestController. Retranslates itself on a language change.
 // Thread rules: GUI thread only.
 
 #include "gui/app/UpdatingSnapshot.h"
@@ -13,7 +16,6 @@
 #include <QWidget>
 
 #include <map>
-#include <string>
 #include <vector>
 
 class QComboBox;
@@ -32,11 +34,9 @@ public:
     void setSnapshot(const UpdatingSnapshot& snapshot);
     void setEditable(bool editable);
     QTreeWidget* tree() const { return m_tree; }
-    /// Ids of the proposals shown, oldest first.
+    /// Ids of the proposals shown, oldest first (the reporter's queue order).
     QList<int> shownProposals() const;
-    /// Proposals for `element` seen since the last decision on it (the reporter keeps only
-    /// the latest; the panel shows it with this count).
-    int coalescedCount(const QString& element) const;
+    QLabel* summary() const { return m_summary; }
 
     static QString describe(ReporterPolicy policy);
 
@@ -45,17 +45,23 @@ signals:
     void rejectRequested(int proposalId);
     void policyChosen(hsmu::ReporterPolicy policy, int everyN);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     void emitPolicy();
+    void retranslateUi();
+    void showSummary();
+    QTreeWidgetItem* addProposal(const UpdateProposal& p);
     void fillProposal(QTreeWidgetItem* top, const UpdateProposal& p);
 
     QComboBox* m_policy = nullptr;
     QSpinBox* m_everyN = nullptr;
+    QLabel* m_policyLabel = nullptr;
     QLabel* m_summary = nullptr;
     QTreeWidget* m_tree = nullptr;
-    std::vector<int> m_shown;
-    std::vector<std::string> m_shownElements;
-    std::map<std::string, int> m_coalesced; ///< element -> proposals since the last decision
+    UpdatingSnapshot m_snapshot;                   ///< the last one shown
+    std::map<int, QTreeWidgetItem*> m_items;       ///< proposal id -> its top-level row
     bool m_editable = false;
 };
 

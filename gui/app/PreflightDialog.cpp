@@ -1,5 +1,7 @@
 #include "gui/app/PreflightDialog.h"
 
+#include "gui/app/AlarmText.h"
+
 #include <QCheckBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
@@ -48,15 +50,18 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
                                      std::isfinite(st.limit) ? QString::number(st.limit, 'g', 4)
                                                              : tr("unconditionally stable")),
                    this));
+    // From the report's numbers, in the operator's language (core's message is English).
+    const QString stabilityText = AlarmText::stability(
+        st, QString::fromStdString(report.integrator), report.dt);
     auto* verdict = new QLabel(this);
     verdict->setObjectName(QStringLiteral("stabilityVerdict"));
     verdict->setWordWrap(true);
     if (st.stable)
-        verdict->setText(tr("Stable: %1").arg(QString::fromStdString(st.message)));
+        verdict->setText(tr("Stable: %1").arg(stabilityText));
     else
         verdict->setText(
             tr("UNSTABLE: %1%2")
-                .arg(QString::fromStdString(st.message),
+                .arg(stabilityText,
                      report.allowUnstable ? tr(" (forced by the configuration)") : QString()));
     verdict->setStyleSheet(st.stable ? QStringLiteral("color: #2e7d32;")
                                      : QStringLiteral("color: #c62828; font-weight: bold;"));

@@ -52,7 +52,7 @@ SettingsDialog::SettingsDialog(QWidget* parent) : QDialog(parent) {
     auto* form = new QFormLayout;
     form->addRow(tr("Record folder (HDF5):"), recordRow);
     form->addRow(tr("Language:"), m_language);
-    auto* note = new QLabel(tr("A new language applies the next time the console starts."), this);
+    auto* note = new QLabel(tr("A new language applies at once, to every window."), this);
     note->setWordWrap(true);
     form->addRow(QString(), note);
     form->addRow(tr("Recent files:"), clearRecent);
@@ -71,7 +71,10 @@ SettingsDialog::SettingsDialog(QWidget* parent) : QDialog(parent) {
 }
 
 void SettingsDialog::store() {
-    ConsoleSettings::setLanguage(m_language->currentData().toString());
+    const QString language = m_language->currentData().toString();
+    if (language != ConsoleSettings::language())
+        Translations::install(*QCoreApplication::instance(), language); // live: LanguageChange
+    ConsoleSettings::setLanguage(language);
     ConsoleSettings::setRecordDirectory(m_recordDir->text().trimmed());
 }
 

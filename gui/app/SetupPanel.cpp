@@ -1,5 +1,7 @@
 #include "gui/app/SetupPanel.h"
 
+#include "gui/app/LiveText.h"
+
 #include "core/output/ElementUnits.h"
 #include "gui/ConfigOverrides.h"
 #include "gui/app/PendingUpdatesPanel.h"
@@ -47,7 +49,7 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("setupPanel"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    m_name = new QLabel(tr("No configuration loaded: choose a preset or open a file."), this);
+    m_name = new QLabel(this);
     m_name->setObjectName(QStringLiteral("setupName"));
     m_name->setWordWrap(true);
     // A long path must not widen the dock (nor the window): wrapped, cut, full in the tip.
@@ -65,12 +67,10 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     m_sites = new SiteHealthView(this); // sites of the configuration (hidden without)
     body->addWidget(m_sites);
 
-    auto* limitsBox = new QGroupBox(tr("Safety limits (0 = none; the specimen's units)"), this);
+    auto* limitsBox = new QGroupBox(this);
     auto* lv = new QVBoxLayout(limitsBox);
     m_limits = new QTableWidget(0, 4, limitsBox);
     m_limits->setObjectName(QStringLiteral("limitsTable"));
-    m_limits->setHorizontalHeaderLabels(
-        {tr("Specimen"), tr("Max |d|"), tr("Max |F|"), tr("Max |Δd| per step")});
     m_limits->verticalHeader()->hide();
     m_limits->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_limits->setMaximumHeight(110);
@@ -79,7 +79,7 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     body->addWidget(limitsBox);
     body->addWidget(buildUpdatingGroup());
 
-    m_apply = new QPushButton(tr("Apply (reload the test)"), this);
+    m_apply = new QPushButton(this);
     m_apply->setObjectName(QStringLiteral("applySetup"));
     connect(m_apply, &QPushButton::clicked, this, &SetupPanel::applyRequested);
     body->addWidget(m_apply);
@@ -89,20 +89,27 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
              << m_controllerKind << m_host << m_port << m_token << m_limits << m_updating << m_threshold;
     setEditable(true);
     m_apply->setEnabled(false);
+    LiveText::bind(this, [this, limitsBox] {
+        showName();
+        limitsBox->setTitle(tr("Safety limits (0 = none; the specimen's units)"));
+        m_limits->setHorizontalHeaderLabels(
+            {tr("Specimen"), tr("Max |d|"), tr("Max |F|"), tr("Max |Δd| per step")});
+        m_apply->setText(tr("Apply (reload the test)"));
+    });
 }
 
 QWidget* SetupPanel::buildRunGroup() {
-    auto* box = new QGroupBox(tr("Run"), this);
+    auto* box = new QGroupBox(this);
     auto* form = new QFormLayout(box);
     m_groundMotion = new QLineEdit(box);
     m_groundMotion->setObjectName(QStringLiteral("groundMotionFile"));
-    m_groundMotion->setPlaceholderText(tr("the configuration's record"));
-    auto* browse = new QPushButton(tr("Browse..."), box);
+    auto* browse = new QPushButton(box);
     connect(browse, &QPushButton::clicked, this, &SetupPanel::browseGroundMotion);
     auto* gmRow = new QHBoxLayout;
     gmRow->addWidget(m_groundMotion, 1);
     gmRow->addWidget(browse);
-    form->addRow(tr("Ground motion file:"), gmRow);
+    auto* gmLabel = new QLabel(box);
+    form->addRow(gmLabel, gmRow);
     m_groundMotionStatus = new QLabel(box);
     m_groundMotionStatus->setObjectName(QStringLiteral("groundMotionStatus"));
     m_groundMotionStatus->setWordWrap(true);
@@ -119,19 +126,31 @@ QWidget* SetupPanel::buildRunGroup() {
     });
     m_scale = spin(box, 0.0, 100.0, 3, QString());
     m_scale->setObjectName(QStringLiteral("groundMotionScale"));
-    form->addRow(tr("Scale [-]:"), m_scale);
+    form->addRow(new QLabel(box), m_scale);
     m_dt = spin(box, 1e-5, 1.0, 5, QStringLiteral(" s"));
     m_dt->setObjectName(QStringLiteral("timeStep"));
-    form->addRow(tr("Time step dt [s]:"), m_dt);
+    form->addRow(new QLabel(box), m_dt);
     m_duration = spin(box, 0.0, 1e5, 2, QStringLiteral(" s"));
-    m_duration->setSpecialValueText(tr("whole record"));
-    form->addRow(tr("Duration [s]:"), m_duration);
+    form->addRow(new QLabel(box), m_duration);
     m_integrator = new QComboBox(box);
-    m_integrator->addItem(tr("explicit Newmark"), QStringLiteral("explicitNewmark"));
-    m_integrator->addItem(tr("alpha-OS"), QStringLiteral("alphaOS"));
-    form->addRow(tr("Integrator:"), m_integrator);
+    m_integrator->addItem(QString(), QStringLiteral("explicitNewmark"));
+    m_integrator->addItem(QString(), QStringLiteral("alphaOS"));
+    form->addRow(new QLabel(box), m_integrator);
     m_alpha = spin(box, -1.0 / 3.0, 0.0, 3, QString());
-    form->addRow(tr("alpha-OS alpha [-]:"), m_alpha);
+    form->addRow(new QLabel(box), m_alpha);
+    LiveText::bind(box, [this, box, form, browse, gmLabel] {
+        box->setTitle(tr("Run"));
+        browse->setText(tr("Browse..."));
+        gmLabel->setText(tr("Ground motion file:"));
+        setLabel(form, m_scale, tr("Scale [-]:"));
+        setLabel(form, m_dt, tr("Time step dt [s]:"));
+        m_duration->setSpecialValueText(tr("whole record"));
+        setLabel(form, m_duration, tr("Duration [s]:"));
+        m_integrator->setItemText(0, tr("explicit Newmark"));
+        m_integrator->setItemText(1, tr("alpha-OS"));
+        setLabel(form, m_integrator, tr("Integrator:"));
+        setLabel(form, m_alpha, tr("alpha-OS alpha [-]:"));
+    });
     connect(m_integrator, &QComboBox::currentIndexChanged, this, [this] {
         m_alpha->setEnabled(m_editable && m_integrator->currentData() == QStringLiteral("alphaOS"));
         markDirty();
@@ -143,46 +162,66 @@ QWidget* SetupPanel::buildRunGroup() {
 }
 
 QWidget* SetupPanel::buildControllerGroup() {
-    auto* box = new QGroupBox(tr("Controller"), this);
+    auto* box = new QGroupBox(this);
     auto* form = new QFormLayout(box);
     m_controllerKind = new QComboBox(box);
     m_controllerKind->setObjectName(QStringLiteral("controllerKind"));
-    m_controllerKind->addItem(tr("built-in virtual lab"), QStringLiteral("builtin"));
-    m_controllerKind->addItem(tr("hsmu-controller over TCP"), QStringLiteral("tcp"));
     // OpenFresco's protocols (docs/openfresco.md); dataSize and sizes come from the
-    // configuration's controller section.
-    m_controllerKind->addItem(tr("OpenFresco SimApp site"), QStringLiteral("simapp"));
-    m_controllerKind->addItem(tr("OpenFresco GenericTCP controller"), QStringLiteral("generictcp"));
+    // configuration's controller section. adapter: OpenSees' adapter element (OpenSees
+    // listens on HOST:PORT; a numerical substructure in an OpenSees model).
+    for (const char* scheme : {"builtin", "tcp", "simapp", "generictcp", "adapter"})
+        m_controllerKind->addItem(QString(), QString::fromLatin1(scheme));
     m_host = new QLineEdit(QStringLiteral("127.0.0.1"), box);
     m_host->setObjectName(QStringLiteral("controllerHost"));
     m_port = new QSpinBox(box);
     m_port->setObjectName(QStringLiteral("controllerPort"));
     m_port->setRange(1, 65535);
     m_port->setValue(5600);
-    form->addRow(tr("Specimens driven by:"), m_controllerKind);
-    form->addRow(tr("Host:"), m_host);
-    form->addRow(tr("Port:"), m_port);
+    form->addRow(new QLabel(box), m_controllerKind);
+    form->addRow(new QLabel(box), m_host);
+    form->addRow(new QLabel(box), m_port);
+    // What the chosen link needs on the other side (e.g. the adapter's OpenSees model).
+    m_linkNote = new QLabel(box);
+    m_linkNote->setObjectName(QStringLiteral("linkNote"));
+    m_linkNote->setWordWrap(true);
+    m_linkNote->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_linkNote->setMinimumWidth(1);
+    m_linkNote->hide();
+    form->addRow(m_linkNote);
     // The controller's shared secret: kept in memory for this session only, never in the
     // settings file.
     m_token = new QLineEdit(box);
     m_token->setObjectName(QStringLiteral("controllerToken"));
     m_token->setEchoMode(QLineEdit::Password);
-    m_token->setPlaceholderText(tr("none"));
-    m_token->setToolTip(tr("The token hsmu-controller --token expects; not saved"));
-    form->addRow(tr("Token:"), m_token);
-    auto* testLink = new QPushButton(tr("Test link"), box);
+    form->addRow(new QLabel(box), m_token);
+    auto* testLink = new QPushButton(box);
     testLink->setObjectName(QStringLiteral("testLink"));
-    testLink->setToolTip(tr("Connect to the controller now (the test is prepared; nothing "
-                            "moves before the pre-flight check)"));
     connect(testLink, &QPushButton::clicked, this, &SetupPanel::testLinkRequested);
     form->addRow(QString(), testLink);
     connect(m_token, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
     connect(m_controllerKind, &QComboBox::currentIndexChanged, this, [this] {
-        const bool remote = m_controllerKind->currentData() != QStringLiteral("builtin");
-        m_host->setEnabled(remote && m_editable);
-        m_port->setEnabled(remote && m_editable);
-        m_token->setEnabled(remote && m_editable);
+        enableLinkFields();
+        showLinkNote();
         markDirty();
+    });
+    LiveText::bind(box, [this, box, form, testLink] {
+        box->setTitle(tr("Controller"));
+        const QString kinds[] = {tr("built-in virtual lab"), tr("hsmu-controller over TCP"),
+                                 tr("OpenFresco SimApp site"),
+                                 tr("OpenFresco GenericTCP controller"),
+                                 tr("OpenSees adapter element (numerical substructure)")};
+        for (int i = 0; i < m_controllerKind->count(); ++i)
+            m_controllerKind->setItemText(i, kinds[i]);
+        setLabel(form, m_controllerKind, tr("Specimens driven by:"));
+        setLabel(form, m_host, tr("Host:"));
+        setLabel(form, m_port, tr("Port:"));
+        m_token->setPlaceholderText(tr("none"));
+        m_token->setToolTip(tr("The token hsmu-controller --token expects; not saved"));
+        setLabel(form, m_token, tr("Token:"));
+        testLink->setText(tr("Test link"));
+        testLink->setToolTip(tr("Connect to the controller now (the test is prepared; nothing "
+                                "moves before the pre-flight check)"));
+        showLinkNote();
     });
     connect(m_host, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
     connect(m_port, &QSpinBox::valueChanged, this, &SetupPanel::markDirty);
@@ -190,18 +229,23 @@ QWidget* SetupPanel::buildControllerGroup() {
 }
 
 QWidget* SetupPanel::buildUpdatingGroup() {
-    auto* box = new QGroupBox(tr("Online model updating"), this);
+    auto* box = new QGroupBox(this);
     auto* form = new QFormLayout(box);
-    m_updating = new QCheckBox(tr("enabled"), box);
+    m_updating = new QCheckBox(box);
     form->addRow(m_updating);
     // One control decides when updates are applied: the Pending updates panel's.
-    auto* policy = new QLabel(tr("When updates are applied is chosen in the Pending updates "
-                                 "panel (one setting for the test)."),
-                              box);
+    auto* policy = new QLabel(box);
     policy->setWordWrap(true);
     form->addRow(policy);
     m_threshold = spin(box, 0.001, 10.0, 3, QString());
-    form->addRow(tr("Fit-error threshold [-]:"), m_threshold);
+    form->addRow(new QLabel(box), m_threshold);
+    LiveText::bind(box, [this, box, form, policy] {
+        box->setTitle(tr("Online model updating"));
+        m_updating->setText(tr("enabled"));
+        policy->setText(tr("When updates are applied is chosen in the Pending updates "
+                           "panel (one setting for the test)."));
+        setLabel(form, m_threshold, tr("Fit-error threshold [-]:"));
+    });
     connect(m_updating, &QCheckBox::toggled, this, &SetupPanel::markDirty);
     connect(m_threshold, &QDoubleSpinBox::valueChanged, this, &SetupPanel::markDirty);
     return box;
@@ -211,6 +255,49 @@ void SetupPanel::setGroundMotionStatus(const QString& error) {
     m_groundMotionStatus->setText(error);
     m_groundMotionStatus->setToolTip(error);
     m_groundMotionStatus->setVisible(!error.isEmpty());
+}
+
+void SetupPanel::showName() {
+    if (!m_loaded) {
+        m_name->setText(tr("No configuration loaded: choose a preset or open a file."));
+        m_groundMotion->setPlaceholderText(tr("the configuration's record"));
+        return;
+    }
+    m_name->setText(tr("Configuration: %1\n%2")
+                        .arg(QString::fromStdString(m_base.name),
+                             m_base.sourcePath.empty() ? tr("(built in)")
+                                                       : QString::fromStdString(m_base.sourcePath)));
+    m_name->setToolTip(m_name->text());
+    m_groundMotion->setPlaceholderText(
+        m_base.groundMotion.file.empty()
+            ? tr("built-in %1 record").arg(QString::fromStdString(m_base.groundMotion.builtin))
+            : QString::fromStdString(m_base.groundMotion.file));
+}
+
+void SetupPanel::setLabel(QFormLayout* form, QWidget* field, const QString& text) {
+    if (auto* label = qobject_cast<QLabel*>(form->labelForField(field)))
+        label->setText(text);
+}
+
+void SetupPanel::enableLinkFields() {
+    const QString scheme = m_controllerKind->currentData().toString();
+    const bool remote = scheme != QStringLiteral("builtin");
+    m_host->setEnabled(remote && m_editable);
+    m_port->setEnabled(remote && m_editable);
+    // Only hsmu-controller asks for a token; OpenFresco's and OpenSees' peers know none.
+    m_token->setEnabled(scheme == QStringLiteral("tcp") && m_editable);
+}
+
+void SetupPanel::showLinkNote() {
+    const QString scheme = m_controllerKind->currentData().toString();
+    QString note;
+    if (scheme == QStringLiteral("adapter"))
+        note = tr("OpenSees listens: start the model with its `element adapter ... PORT` first "
+                  "(its analyze must have at least the test's steps). A step is final once the "
+                  "next one is sent: after a hold the test cannot repeat it.");
+    m_linkNote->setText(note);
+    m_linkNote->setToolTip(note);
+    m_linkNote->setVisible(!note.isEmpty());
 }
 
 QString SetupPanel::groundMotionStatus() const {
@@ -241,18 +328,10 @@ void SetupPanel::setConfig(const TestConfig& cfg) {
         blocks.reserve(std::size_t(m_inputs.size()));
         for (QWidget* w : m_inputs)
             blocks.emplace_back(w);
-        m_name->setText(tr("Configuration: %1\n%2")
-                            .arg(QString::fromStdString(cfg.name),
-                                 cfg.sourcePath.empty() ? tr("(built in)")
-                                                        : QString::fromStdString(cfg.sourcePath)));
-        m_name->setToolTip(m_name->text());
+        showName();
         m_body->show();
         setGroundMotionStatus(QString());
         m_groundMotion->clear();
-        m_groundMotion->setPlaceholderText(
-            cfg.groundMotion.file.empty()
-                ? tr("built-in %1 record").arg(QString::fromStdString(cfg.groundMotion.builtin))
-                : QString::fromStdString(cfg.groundMotion.file));
         m_scale->setValue(cfg.groundMotion.scale);
         m_dt->setValue(cfg.analysis.dt);
         m_duration->setValue(std::max(0.0, cfg.analysis.duration));
@@ -360,6 +439,7 @@ void SetupPanel::setControllerAddress(const QString& address) {
     const QString scheme = a->kind == Kind::Tcp          ? QStringLiteral("tcp")
                            : a->kind == Kind::SimApp     ? QStringLiteral("simapp")
                            : a->kind == Kind::GenericTcp ? QStringLiteral("generictcp")
+                           : a->kind == Kind::Adapter    ? QStringLiteral("adapter")
                                                          : QStringLiteral("builtin");
     m_controllerKind->setCurrentIndex(m_controllerKind->findData(scheme));
     if (a->kind != Kind::Builtin) {
@@ -372,10 +452,7 @@ void SetupPanel::setEditable(bool editable) {
     m_editable = editable;
     for (QWidget* w : m_inputs)
         w->setEnabled(editable);
-    const bool remote = m_controllerKind->currentData() != QStringLiteral("builtin");
-    m_host->setEnabled(editable && remote);
-    m_port->setEnabled(editable && remote);
-    m_token->setEnabled(editable && remote);
+    enableLinkFields();
     m_alpha->setEnabled(editable && m_integrator->currentData() == QStringLiteral("alphaOS"));
     m_updating->setEnabled(editable && m_updating->property("available").toBool());
     for (QPushButton* b : findChildren<QPushButton*>())

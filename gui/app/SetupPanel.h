@@ -19,6 +19,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -69,6 +70,11 @@ signals:
     void dirtyChanged(bool dirty);
 
 private:
+    /// The loaded configuration's name and ground-motion placeholder (or "no configuration").
+    void showName();
+    static void setLabel(QFormLayout* form, QWidget* field, const QString& text);
+    void enableLinkFields();
+    void showLinkNote();
     QWidget* buildRunGroup();
     QWidget* buildControllerGroup();
     QWidget* buildUpdatingGroup();
@@ -81,6 +87,7 @@ private:
     bool m_editable = true;
     QLabel* m_name = nullptr;
     SiteHealthView* m_sites = nullptr;
+    QLabel* m_linkNote = nullptr;
     QWidget* m_body = nullptr;
     QLabel* m_groundMotionStatus = nullptr;
     QLineEdit* m_groundMotion = nullptr;

@@ -1,6 +1,7 @@
 #include "gui/app/TestStatusBar.h"
 
 #include "gui/app/SiteHealthLabel.h"
+#include "gui/app/LiveText.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -32,19 +33,24 @@ TestStatusBar::TestStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_recording->setObjectName(QStringLiteral("statusRecording"));
     for (QLabel* l : {m_link, m_recording})
         l->setMaximumWidth(280); // long addresses and paths: cut, in full in the tool tip
-    setProgress(0, 0, 0.0, 0.0);
-    setRunState(RunState::Idle);
     setLink(tr("no link"), true);
-    setRecordingFile(QString());
+    // Every text again in the new language (the link's text comes from its owner).
+    LiveText::bind(this, [this] {
+        setProgress(m_progress.step, m_progress.total, m_progress.time, m_progress.rate);
+        setRunState(m_runState);
+        setRecordingFile(m_recordingFile);
+    });
 }
 
 void TestStatusBar::setProgress(int step, int totalSteps, double testTime, double stepsPerSecond) {
+    m_progress = {step, totalSteps, testTime, stepsPerSecond};
     m_time->setText(tr("t = %1 s").arg(QString::number(testTime, 'f', 2)));
     m_step->setText(tr("step %1 / %2").arg(step).arg(totalSteps));
     m_rate->setText(tr("%1 steps/s").arg(QString::number(stepsPerSecond, 'f', 0)));
 }
 
 void TestStatusBar::setRunState(RunState state) {
+    m_runState = state;
     m_state->setText(describe(state));
     const bool alarm = state == RunState::Holding || state == RunState::Failed;
     m_state->setStyleSheet(alarm ? QStringLiteral("color: white; background: #c62828;")
@@ -59,6 +65,7 @@ void TestStatusBar::setLink(const QString& text, bool ok) {
 
 void TestStatusBar::setRecordingFile(const QString& file) {
     // The run folder names the record; the full path is in the tool tip.
+    m_recordingFile = file;
     const QFileInfo info(file);
     m_recording->setText(file.isEmpty()
                              ? tr("not recording")

@@ -35,6 +35,12 @@ public:
     void setSites(std::shared_ptr<const SiteMonitor> monitor);
 
 private:
+    struct Progress {
+        int step = 0, total = 0;
+        double time = 0.0, rate = 0.0;
+    } m_progress;
+    RunState m_runState = RunState::Idle;
+    QString m_recordingFile;
     QLabel* m_time = nullptr;
     QLabel* m_step = nullptr;
     QLabel* m_rate = nullptr;

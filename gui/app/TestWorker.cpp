@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -118,9 +119,12 @@ void TestWorker::onStep(const StepRecord& record) {
         m_record->onStep(record);
         return;
     }
-    // Updates approved between two steps go to /updating/events with this row.
+    // Updates approved or rejected between two steps go to /updating/events with this row.
     StepRecord row = record;
-    row.updating.applied.insert(row.updating.applied.begin(), m_approved.begin(), m_approved.end());
+    auto firstDecided = std::stable_partition(m_approved.begin(), m_approved.end(),
+                                              [](const UpdateEvent& e) { return e.ok; });
+    row.updating.applied.insert(row.updating.applied.begin(), m_approved.begin(), firstDecided);
+    row.updating.decided.insert(row.updating.decided.begin(), firstDecided, m_approved.end());
     m_approved.clear();
     m_record->onStep(row);
 }
@@ -284,6 +288,15 @@ void TestWorker::setParameterLocked(const QString& name, bool locked) {
     publishUpdating();
 }
 
+namespace {
+// "#<id>", appended rather than "#" + std::to_string(): GCC 12 warns (-Wrestrict) on the latter.
+std::string proposalTag(int id) {
+    std::string tag(1, '#');
+    tag += std::to_string(id);
+    return tag;
+}
+} // namespace
+
 void TestWorker::approveUpdate(int proposalId) {
     std::optional<UpdateProposal> proposal;
     if (const ModelUpdater* u = m_test->updater())
@@ -296,26 +309,32 @@ void TestWorker::approveUpdate(int proposalId) {
                                 .arg(proposalId));
     } else if (proposal) {
         logEvent(OperatorEvent::kApprove,
-                 "#" + std::to_string(proposalId) + " " + proposal->element + " " +
+                 proposalTag(proposalId) + " " + proposal->element + " " +
                      valuesText(proposal->current),
                  valuesText(proposal->proposed));
         m_approved.push_back({m_test->currentStep(), m_test->time(), proposal->element,
-                              proposal->proposed, true, {}});
+                              proposal->proposed, true, {}, UpdateDecision::Applied, proposalId});
     }
     publishAlarms();
     publishUpdating();
 }
 
 void TestWorker::rejectUpdate(int proposalId) {
-    std::string element;
+    std::optional<UpdateProposal> proposal;
     if (const ModelUpdater* u = m_test->updater())
         for (const UpdateProposal& p : u->reporter().pending())
             if (p.id == proposalId)
-                element = p.element + " " + valuesText(p.proposed);
-    if (!m_test->rejectUpdate(proposalId))
+                proposal = p;
+    if (!m_test->rejectUpdate(proposalId) || !proposal) {
         emit commandRefused(tr("update #%1 is no longer pending").arg(proposalId));
-    else
-        logEvent(OperatorEvent::kReject, "#" + std::to_string(proposalId), "rejected " + element);
+    } else {
+        logEvent(OperatorEvent::kReject, proposalTag(proposalId),
+                 "rejected " + proposal->element + " " + valuesText(proposal->proposed));
+        // In /updating/events too (decision "rejected"), with the next committed step.
+        m_approved.push_back({m_test->currentStep(), m_test->time(), proposal->element,
+                              proposal->proposed, false, "rejected by the operator",
+                              UpdateDecision::Rejected, proposalId});
+    }
     publishUpdating();
 }
 

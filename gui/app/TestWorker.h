@@ -138,7 +138,7 @@ private:
         std::string text;
     };
     std::vector<Note> m_unrecordedNotes;     ///< notes and events before the record opened
-    std::vector<UpdateEvent> m_approved;     ///< approved between steps, for the next row
+    std::vector<UpdateEvent> m_approved;     ///< approved / rejected between steps, for the next row
     bool m_prepared = false;
     bool m_armed = false;
     RunState m_state = RunState::Ready;

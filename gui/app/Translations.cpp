@@ -31,6 +31,12 @@ QString Translations::displayName(const QString& code) {
 }
 
 bool Translations::install(QCoreApplication& app, const QString& code) {
+    static QTranslator* current = nullptr; // the catalogue installed last
+    if (current) {
+        QCoreApplication::removeTranslator(current); // -> LanguageChange (English) if none follows
+        delete current;
+        current = nullptr;
+    }
     auto* translator = new QTranslator(&app);
     const bool loaded = code.isEmpty() ? translator->load(QLocale(), QStringLiteral("hsmu"),
                                                           QStringLiteral("_"), kDir)
@@ -40,6 +46,7 @@ bool Translations::install(QCoreApplication& app, const QString& code) {
         return false;
     }
     QCoreApplication::installTranslator(translator);
+    current = translator;
     return true;
 }
 

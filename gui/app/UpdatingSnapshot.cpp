@@ -57,6 +57,8 @@ UpdatingSnapshot snapshotOf(const HybridTest& test) {
     s.fitError = u->inspector().fitError();
     s.fitThreshold = u->inspector().settings().threshold;
     s.appliedUpdates = r.appliedCount();
+    s.notQueued = r.notQueuedCount();
+    s.maxPending = r.maxPending();
     return s;
 }
 

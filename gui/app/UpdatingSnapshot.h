@@ -35,13 +35,15 @@ struct UpdatingSnapshot {
     std::string method;   ///< e.g. "UKF", "Nelder-Mead"
     bool canLock = false; ///< the method can lock parameters
     std::vector<ParameterState> parameters;         ///< identifier order
-    std::vector<UpdateProposal> pending;            ///< oldest first
+    std::vector<UpdateProposal> pending;            ///< the approval queue, oldest first
     std::map<std::string, ParameterValues> targets; ///< target element -> its current values
     ReporterPolicy policy = ReporterPolicy::EveryStep;
     int everyN = 10;
     double fitError = 0.0;     ///< inspector's normalized RMS error [-]
     double fitThreshold = 0.0; ///< inspector's threshold [-]
     int appliedUpdates = 0;
+    int notQueued = 0;   ///< offers not queued (approval queue full), all in the record
+    int maxPending = 0;  ///< the approval queue's capacity
 
     const ParameterState* parameter(const std::string& name) const;
 };

@@ -18,6 +18,10 @@ bool ControllerProcess::start(quint16 port, int timeoutMs) {
     stop();
     QStringList args = m_args;
     args << QStringLiteral("--port") << QString::number(port);
+    // A state file only where the test names one: a restart on the same port must not pick
+    // up a default journal (ControllerCommandLine::defaultStateFile) from another run.
+    if (!args.contains(QStringLiteral("--state")) && !args.contains(QStringLiteral("--state-file")))
+        args << QStringLiteral("--no-state-file");
     m_process.setArguments(args);
     m_process.start();
     if (!m_process.waitForStarted(timeoutMs))

@@ -24,6 +24,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTreeWidget>
 #include <QtTest>
 
@@ -178,13 +179,14 @@ private slots:
 
     // Items 4-5: proposals replace each other every step under approval; the panel shows the
     // latest in place (the buttons stay under the mouse) with the count since the decision.
-    void proposalsCoalesceWithAVisibleCount() {
+    void proposalsQueueInOrderAndNoneIsReplaced() {
         PendingUpdatesPanel panel;
         panel.setEditable(true);
         panel.show();
         UpdatingSnapshot s;
         s.enabled = true;
         s.policy = ReporterPolicy::OnApproval;
+        s.maxPending = 3;
         auto proposal = [](int id, double k0) {
             UpdateProposal p;
             p.id = id;
@@ -193,28 +195,84 @@ private slots:
             p.element = "Element 2";
             p.proposed = {{"k0", k0}};
             p.current = {{"k0", 1.0}};
+            p.fitError = 0.0125;
             return p;
         };
         s.pending = {proposal(5, 1.10)};
         panel.setSnapshot(s);
-        QPushButton* approve = panel.findChild<QPushButton*>(QStringLiteral("approve5"));
-        QVERIFY(approve);
-        s.pending = {proposal(6, 1.12)};
+        QPushButton* approve5 = panel.findChild<QPushButton*>(QStringLiteral("approve5"));
+        QVERIFY(approve5);
+        s.pending = {proposal(5, 1.10), proposal(6, 1.12), proposal(7, 1.15)};
+        s.notQueued = 2;
         panel.setSnapshot(s);
-        s.pending = {proposal(7, 1.15)};
-        panel.setSnapshot(s);
-        QCOMPARE(panel.coalescedCount(QStringLiteral("Element 2")), 3);
-        QCOMPARE(panel.findChild<QPushButton*>(QStringLiteral("approve7")), approve); // in place
-        const QTreeWidgetItem* top = panel.tree()->topLevelItem(0);
-        QVERIFY2(top->text(0).startsWith(QStringLiteral("#7 Element 2")), qPrintable(top->text(0)));
-        QVERIFY2(top->text(0).contains(QStringLiteral("latest of 3 proposal")), // (s): no catalogue
+        QCOMPARE(panel.shownProposals(), (QList<int>{5, 6, 7})); // oldest first, each one
+        QCOMPARE(panel.findChild<QPushButton*>(QStringLiteral("approve5")), approve5); // stays
+        QVERIFY(panel.findChild<QPushButton*>(QStringLiteral("reject7")));
+        const QTreeWidgetItem* top = panel.tree()->topLevelItem(2);
+        QVERIFY2(top->text(0).startsWith(QStringLiteral("#7 Element 2 at t = 0.70 s (step 70)")),
                  qPrintable(top->text(0)));
-        QCOMPARE(top->child(0)->text(2), QStringLiteral("1.15")); // the proposed value shown
+        QVERIFY2(top->text(0).contains(QStringLiteral("fit error 0.0125")), qPrintable(top->text(0)));
+        QCOMPARE(top->child(0)->text(2), QStringLiteral("1.15")); // its own proposed value
+        QCOMPARE(panel.tree()->topLevelItem(0)->child(0)->text(2), QStringLiteral("1.1"));
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("3 update")) &&
+                     panel.summary()->text().contains(QStringLiteral("2 newer proposal")),
+                 qPrintable(panel.summary()->text()));
         QSignalSpy approved(&panel, &PendingUpdatesPanel::approveRequested);
-        approve->click();
+        QSignalSpy rejected(&panel, &PendingUpdatesPanel::rejectRequested);
+        panel.findChild<QPushButton*>(QStringLiteral("reject6"))->click();
+        approve5->click();
+        QCOMPARE(rejected.count(), 1);
+        QCOMPARE(rejected.at(0).at(0).toInt(), 6);
         QCOMPARE(approved.count(), 1);
-        QCOMPARE(approved.at(0).at(0).toInt(), 7); // the proposal shown when clicked
-        QCOMPARE(panel.coalescedCount(QStringLiteral("Element 2")), 0);
+        QCOMPARE(approved.at(0).at(0).toInt(), 5);
+        // Decided ones leave; a newer one is appended below the one still pending.
+        s.pending = {proposal(7, 1.15), proposal(8, 1.16)};
+        panel.setSnapshot(s);
+        QCOMPARE(panel.shownProposals(), (QList<int>{7, 8}));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the old buttons
+        QVERIFY(!panel.findChild<QPushButton*>(QStringLiteral("approve5")));
+    }
+
+    // Issue 13: OpenSees' adapter element is offered in the setup panel with what it needs
+    // (host and port OpenSees listens on; no token), and an adapter:// address round-trips.
+    void adapterLinkIsOfferedInTheSetup() {
+        MainWindow window;
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* kind = setup->findChild<QComboBox*>(QStringLiteral("controllerKind"));
+        auto* host = setup->findChild<QLineEdit*>(QStringLiteral("controllerHost"));
+        auto* port = setup->findChild<QSpinBox*>(QStringLiteral("controllerPort"));
+        auto* token = setup->findChild<QLineEdit*>(QStringLiteral("controllerToken"));
+        auto* note = setup->findChild<QLabel*>(QStringLiteral("linkNote"));
+        QVERIFY(kind && host && port && token && note);
+        const int adapter = kind->findData(QStringLiteral("adapter"));
+        QVERIFY2(adapter >= 0, "no adapter entry");
+        QVERIFY(note->isHidden());
+        kind->setCurrentIndex(adapter);
+        host->setText(QStringLiteral("127.0.0.1"));
+        port->setValue(44094);
+        QVERIFY(host->isEnabled() && port->isEnabled());
+        QVERIFY(!token->isEnabled()); // OpenSees' adapter knows no token
+        QVERIFY(note->isVisibleTo(setup));
+        QVERIFY2(note->text().contains(QStringLiteral("element adapter")), qPrintable(note->text()));
+        QCOMPARE(setup->controllerText(), QStringLiteral("adapter://127.0.0.1:44094"));
+        QString error;
+        const auto address = setup->controller(&error);
+        QVERIFY2(address, qPrintable(error));
+        QCOMPARE(address->kind, hsmu::comms::LinkAddress::Kind::Adapter);
+        QCOMPARE(int(address->port), 44094);
+        // Applied: the test's link is the adapter (it connects at the pre-flight).
+        QVERIFY(window.applySetup());
+        QCOMPARE(window.controller().controllerAddress().kind,
+                 hsmu::comms::LinkAddress::Kind::Adapter);
+        // And back: an adapter address (command line, settings) selects the entry.
+        kind->setCurrentIndex(0);
+        QVERIFY(note->isHidden());
+        window.setControllerAddress(QStringLiteral("adapter://10.0.0.2:44095"));
+        QCOMPARE(kind->currentIndex(), adapter);
+        QCOMPARE(host->text(), QStringLiteral("10.0.0.2"));
+        QCOMPARE(port->value(), 44095);
     }
 
 private:

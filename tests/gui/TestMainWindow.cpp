@@ -404,18 +404,27 @@ private slots:
         c.pause();
         QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
         auto* pending = window.findChild<PendingUpdatesPanel*>();
-        QTRY_COMPARE_WITH_TIMEOUT(pending->shownProposals().size(), qsizetype(1), 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(!c.updating().pending.empty() &&
-                                     pending->shownProposals().front() ==
-                                         c.updating().pending.front().id,
+        // The whole queue is shown, oldest first (nothing replaced).
+        const auto queueIds = [&c] {
+            QList<int> ids;
+            for (const UpdateProposal& p : c.updating().pending)
+                ids.push_back(p.id);
+            return ids;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals().size() > 1 &&
+                                     pending->shownProposals() == queueIds(),
                                  5000);
+        // Reject the oldest, approve the next.
+        const int rejectedId = pending->shownProposals().front();
+        pending->findChild<QPushButton*>(QStringLiteral("reject%1").arg(rejectedId))->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!pending->shownProposals().contains(rejectedId), 5000);
         const int id = pending->shownProposals().front();
         auto* approve = pending->findChild<QPushButton*>(QStringLiteral("approve%1").arg(id));
         QVERIFY(approve && approve->isEnabled());
         QCOMPARE(c.updating().appliedUpdates, 0);
         approve->click();
         QTRY_COMPARE_WITH_TIMEOUT(c.updating().appliedUpdates, 1, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals().isEmpty(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!pending->shownProposals().contains(id), 5000);
         const int approvedAt = c.updating().step;
         c.singleStep(); // the approved update is written with the next committed step
         QTRY_VERIFY_WITH_TIMEOUT(c.updating().step > approvedAt, 5000);
@@ -443,8 +452,21 @@ private slots:
         // The record: the approved update in /updating/events, the policy in force in the
         // configuration and the notes, and every operator action as a language-neutral note.
         const RecordData data = RecordReader(c.recordPath().toStdString()).data();
-        QCOMPARE(int(data.updateEvents.size()), 1);
-        QCOMPARE(data.updateEvents.front().step, approved->text(AlarmList::Step).toInt());
+        std::vector<RecordedUpdate> applied, rejected;
+        for (const RecordedUpdate& e : data.updateEvents) {
+            if (e.decision == "applied")
+                applied.push_back(e);
+            else if (e.decision == "rejected")
+                rejected.push_back(e);
+            else
+                QCOMPARE(e.decision, std::string("notQueued")); // the queue was full
+        }
+        QCOMPARE(int(applied.size()), 1);
+        QCOMPARE(applied.front().step, approved->text(AlarmList::Step).toInt());
+        QCOMPARE(applied.front().proposal, id);
+        QCOMPARE(int(rejected.size()), 1); // the rejection is in the record too
+        QCOMPARE(rejected.front().proposal, rejectedId);
+        QCOMPARE(rejected.front().element, std::string("Element 2"));
         QVERIFY2(data.meta.configuration.find("\"onApproval\"") != std::string::npos,
                  data.meta.configuration.c_str());
         QVERIFY2(data.meta.operatorNotes.find("updating = onApproval") != std::string::npos,

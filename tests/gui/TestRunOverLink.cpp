@@ -30,8 +30,10 @@ public:
 
     /// Listen on port (0: a free one); false if it did not within 30 s.
     bool start(quint16 port = 0) {
-        m_process.setArguments(m_args +
-                               QStringList{QStringLiteral("--port"), QString::number(port)});
+        QStringList args = m_args + QStringList{QStringLiteral("--port"), QString::number(port)};
+        if (!args.contains(QStringLiteral("--state"))) // no default journal from another run
+            args << QStringLiteral("--no-state-file");
+        m_process.setArguments(args);
         m_process.start();
         if (!m_process.waitForStarted(30000))
             return false;

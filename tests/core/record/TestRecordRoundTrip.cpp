@@ -147,6 +147,7 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
         QCOMPARE(d.updateEvents[k].step, events[k].step);
         QVERIFY(same(d.updateEvents[k].time, events[k].time));
         QCOMPARE(d.updateEvents[k].element, events[k].element);
+        QCOMPARE(d.updateEvents[k].decision, std::string("applied"));
         for (Eigen::Index j = 0; j < nPar; ++j) {
             const auto it = events[k].applied.find(layout.updating->parameters[std::size_t(j)]);
             const double v = d.updateEvents[k].values[std::size_t(j)];

@@ -175,12 +175,23 @@ private slots:
         HysteresisLaw* twin = test->structure().element("Element 2")->law();
         const double before = *twin->parameter("k0");
         auto& pending = test->updater()->reporter().pending();
-        QCOMPARE(int(pending.size()), 1);
+        // 200 steps of proposals, none replaced: the queue is full (its capacity), the offers
+        // beyond it counted and reported once as an alarm.
+        const int capacity = test->updater()->reporter().maxPending();
+        QCOMPARE(int(pending.size()), capacity);
+        QVERIFY(test->updater()->reporter().notQueuedCount() > 0);
+        int full = 0;
+        for (const Alarm& a : test->alarms())
+            full += a.message.find("approval queue full") != std::string::npos;
+        QCOMPARE(full, 1);
         const UpdateProposal p = pending.front();
         QVERIFY(test->rejectUpdate(p.id));
         QCOMPARE(*twin->parameter("k0"), before);
-        test->step();
-        const UpdateProposal q = test->updater()->reporter().pending().front();
+        QCOMPARE(int(pending.size()), capacity - 1);
+        test->step(); // room for one more, at the end of the queue
+        QCOMPARE(int(pending.size()), capacity);
+        const UpdateProposal q = test->updater()->reporter().pending().back();
+        QVERIFY(q.step > p.step);
         QVERIFY(test->approveUpdate(q.id));
         QCOMPARE(*twin->parameter("k0"), q.proposed.at("k0"));
     }

@@ -193,13 +193,59 @@ private slots:
         QCOMPARE(*rig.law().parameter("k0"), 1.0); // rejected: unchanged
         QVERIFY(!r.reject(p.id));                   // gone
 
+        r.setProposalFitError(0.25);
         r.offer(2, 0.02, estimate(1.3), rig.s);
-        r.offer(3, 0.03, estimate(1.35), rig.s); // replaces the older pending one
-        QCOMPARE(int(r.pending().size()), 1);
-        const auto ev = r.approve(r.pending().front().id, rig.s, 3, 0.03);
+        r.offer(3, 0.03, estimate(1.35), rig.s); // queued after the older one, not replacing it
+        QCOMPARE(int(r.pending().size()), 2);
+        QCOMPARE(r.pending().front().proposed.at("k0"), 1.3);
+        QCOMPARE(r.pending().back().proposed.at("k0"), 1.35);
+        QCOMPARE(r.pending().back().fitError, 0.25);
+        const auto ev = r.approve(r.pending().back().id, rig.s, 3, 0.03);
         QVERIFY(ev && ev->ok);
+        QCOMPARE(ev->decision, UpdateDecision::Applied);
         QCOMPARE(*rig.law().parameter("k0"), 1.35);
         QCOMPARE(r.appliedCount(), 1);
+        // The older one is still pending; rejecting it is an event with its values.
+        const int older = r.pending().front().id;
+        const auto no = r.rejectProposal(older, 4, 0.04);
+        QVERIFY(no && !no->ok);
+        QCOMPARE(no->decision, UpdateDecision::Rejected);
+        QCOMPARE(no->proposal, older);
+        QCOMPARE(no->applied.at("k0"), 1.3);
+        QCOMPARE(no->step, 4);
+        QCOMPARE(*rig.law().parameter("k0"), 1.35);
+        QVERIFY(r.pending().empty());
+    }
+
+    void aFullApprovalQueueReportsEveryOfferNotQueued()
+    {
+        Rig rig;
+        Reporter r(oneTarget(), ReporterPolicy::OnApproval);
+        r.setMaxPending(3);
+        int notQueued = 0;
+        for (int step = 1; step <= 5; ++step) {
+            const auto events = r.offer(step, 0.01 * step, estimate(1.0 + 0.01 * step), rig.s);
+            for (const UpdateEvent& e : events) {
+                QCOMPARE(e.decision, UpdateDecision::NotQueued);
+                QCOMPARE(e.step, step);
+                QCOMPARE(e.applied.at("k0"), 1.0 + 0.01 * step); // what was offered
+                ++notQueued;
+            }
+        }
+        QCOMPARE(notQueued, 2);
+        QCOMPARE(r.notQueuedCount(), 2);
+        QCOMPARE(int(r.pending().size()), 3);
+        QCOMPARE(r.pending().front().step, 1); // the oldest kept: nothing moves under the operator
+        // A decision makes room for the next offer.
+        QVERIFY(r.reject(r.pending().front().id));
+        QVERIFY(r.offer(6, 0.06, estimate(1.06), rig.s).empty());
+        QCOMPARE(r.pending().back().step, 6);
+        // The headless flag decides every one, rejections included.
+        const auto all = r.resolveAll(false, rig.s, 7, 0.07);
+        QCOMPARE(int(all.size()), 3);
+        for (const UpdateEvent& e : all)
+            QCOMPARE(e.decision, UpdateDecision::Rejected);
+        QCOMPARE(*rig.law().parameter("k0"), 1.0);
     }
 
     void applyingKeepsTheTargetStateContinuous()

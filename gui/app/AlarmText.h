@@ -1,0 +1,34 @@
+#pragma once
+// AlarmText: the operator's language for core's alarm messages. core sends each message in
+// English and, when it is made from a fixed template, the template's stable code and its
+// arguments (Alarm::code, Alarm::args); this maps the code to a tr() text with the same
+// arguments. Unknown codes (or a wrong argument count) show the English text. The record
+// keeps the code and the English text (docs/recording.md), never the translation.
+// Also the pre-flight's stability verdict, made from StabilityReport's numbers.
+// Thread rules: GUI thread (translations are installed there).
+
+#include <QCoreApplication>
+#include <QStringList>
+
+#include <string>
+
+namespace hsmu {
+struct StabilityReport;
+}
+
+namespace hsmu::gui {
+
+class AlarmText {
+    Q_DECLARE_TR_FUNCTIONS(AlarmText)
+public:
+    /// The message for `code` with `args` in the current language; `english` if unknown.
+    static QString describe(const std::string& code, const QStringList& args,
+                            const QString& english);
+    /// A hold reason core gives in English ("operator hold", ...), translated when known.
+    static QString reason(const QString& english);
+    /// The stability check's sentence for the integrator `integrator` at time step dt [s].
+    static QString stability(const StabilityReport& report, const QString& integrator,
+                             double dt);
+};
+
+} // namespace hsmu::gui

@@ -1,0 +1,157 @@
+#include "gui/app/MainWindow.h"
+// MainWindow's menus and signal wiring: which control reaches which TestController slot, and
+// how the operator's events and the worker's reports come back to the panels.
+
+#include "gui/app/AlarmList.h"
+#include "gui/app/ConsoleSettings.h"
+#include "gui/app/ControlBar.h"
+#include "gui/app/LiveText.h"
+#include "gui/app/OperatorEvent.h"
+#include "gui/app/ParametersPanel.h"
+#include "gui/app/PendingUpdatesPanel.h"
+#include "gui/app/PreflightDialog.h"
+#include "gui/app/SetupPanel.h"
+#include "gui/app/TestController.h"
+#include "gui/app/TestStatusBar.h"
+#include "gui/plots/LivePlotsPanel.h"
+#include "gui/replay/ReplayWindow.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+
+namespace hsmu::gui {
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(QString());
+    // Ctrl+O belongs to the tool bar's action: one shortcut, one action.
+    QAction* open = file->addAction(QString(), this, &MainWindow::openConfigurationFile);
+    m_recentMenu = file->addMenu(QString());
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
+    rebuildRecentMenu();
+    file->addSeparator();
+    QAction* record =
+        file->addAction(QString(), this, [this] { ReplayWindow::openWithDialog(this); });
+    file->addSeparator();
+    QAction* note = file->addAction(QString(), this, &MainWindow::askForNote);
+    note->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_N));
+    file->addSeparator();
+    QAction* settings = file->addAction(QString(), this, &MainWindow::openSettings);
+    file->addSeparator();
+    QAction* quit = file->addAction(QString(), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    m_viewMenu = menuBar()->addMenu(QString());
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        m_viewMenu->addAction(dock->toggleViewAction());
+    LiveText::bind(menuBar(), [=, this] {
+        file->setTitle(tr("&File"));
+        open->setText(tr("&Open configuration..."));
+        m_recentMenu->setTitle(tr("Open &recent"));
+        record->setText(tr("Open r&ecord..."));
+        note->setText(tr("Add &note..."));
+        note->setToolTip(tr("Record a note at the current step of the test"));
+        settings->setText(tr("&Settings..."));
+        quit->setText(tr("&Quit"));
+        quit->setToolTip(tr("Quit the console (asks first while a test runs)"));
+        m_viewMenu->setTitle(tr("&View"));
+    });
+}
+
+void MainWindow::askForNote() {
+    if (!m_controller->hasTest()) {
+        QMessageBox::information(this, tr("Add note"), tr("Load and start a test first."));
+        return;
+    }
+    bool ok = false;
+    const QString text = QInputDialog::getMultiLineText(
+        this, tr("Add note"), tr("Note (recorded with the current step and test time):"),
+        QString(), &ok);
+    if (ok && !text.trimmed().isEmpty())
+        m_controller->addNote(text.trimmed());
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList files = ConsoleSettings::recentFiles();
+    for (const QString& f : files)
+        m_recentMenu
+            ->addAction(QFileInfo(f).fileName(), this,
+                        [this, f] {
+                            QString error;
+                            if (!loadConfiguration(f, &error))
+                                QMessageBox::critical(this, tr("Configuration error"), error);
+                        })
+            ->setToolTip(f);
+    if (files.isEmpty())
+        m_recentMenu->addAction(tr("(none)"))->setEnabled(false);
+}
+
+void MainWindow::wireController() {
+    connect(m_controls, &ControlBar::presetChosen, this,
+            [this](const QString& id) { loadConfiguration(id); });
+    connect(m_controls, &ControlBar::openRequested, this, &MainWindow::openConfigurationFile);
+    connect(m_controls, &ControlBar::startRequested, this, &MainWindow::startTest);
+    connect(m_controls, &ControlBar::pauseRequested, m_controller, &TestController::pause);
+    connect(m_controls, &ControlBar::singleStepRequested, this, &MainWindow::singleStep);
+    connect(m_controls, &ControlBar::resumeRequested, m_controller, &TestController::resume);
+    connect(m_controls, &ControlBar::stopRequested, this, &MainWindow::requestStop);
+    connect(m_controls, &ControlBar::emergencyHoldRequested, m_controller, [this] {
+        if (m_preflight) { // nothing may start from the dialog, nothing is armed
+            m_pendingRun = RunRequest::None;
+            m_preflight->reject();
+        }
+        m_controller->emergencyHold();
+    });
+    connect(m_controls, &ControlBar::paceChanged, m_controller,
+            [this](double factor, double wallPerStep) {
+                m_controller->setWallTimePerStep(wallPerStep);
+                m_controller->setSpeed(factor);
+            });
+    m_controller->setSpeed(m_controls->speed());
+    connect(m_setup, &SetupPanel::applyRequested, this, &MainWindow::applySetup);
+    connect(m_setup, &SetupPanel::groundMotionChosen, this, &MainWindow::previewGroundMotion);
+    connect(m_setup, &SetupPanel::testLinkRequested, this, &MainWindow::testLink);
+
+    connect(m_parameters, &ParametersPanel::boundsEdited, m_controller,
+            &TestController::setParameterBounds);
+    connect(m_parameters, &ParametersPanel::lockEdited, m_controller,
+            &TestController::setParameterLocked);
+    connect(m_parameters, &ParametersPanel::thresholdEdited, m_controller,
+            &TestController::setFitThreshold);
+    connect(m_parameters, &ParametersPanel::editRefused, this,
+            [this](const QString& why) { m_alarms->addMessage(why, AlarmSeverity::Warning); });
+    connect(m_pending, &PendingUpdatesPanel::approveRequested, m_controller,
+            &TestController::approveUpdate);
+    connect(m_pending, &PendingUpdatesPanel::rejectRequested, m_controller,
+            &TestController::rejectUpdate);
+    connect(m_pending, &PendingUpdatesPanel::policyChosen, this, &MainWindow::onPolicyChosen);
+    connect(m_controller, &TestController::operatorEvent, this,
+            [this](const OperatorEvent& e) { m_alarms->addEvent(e.time, e.step, e.describe()); });
+
+    connect(m_controller, &TestController::testLoaded, this, &MainWindow::onTestLoaded);
+    connect(m_controller, &TestController::recordsArrived, m_plots,
+            [this](const std::vector<StepRecord>& rows) {
+                m_plots->appendRecords(rows);
+                m_plots->refresh(); // coalesced and budgeted by the panel
+            });
+    connect(m_controller, &TestController::stateChanged, this, &MainWindow::onStateChanged);
+    connect(m_controller, &TestController::progress, m_status, &TestStatusBar::setProgress);
+    connect(m_controller, &TestController::alarmRaised, this, &MainWindow::onAlarm);
+    connect(m_controller, &TestController::updatingChanged, m_parameters,
+            &ParametersPanel::setSnapshot);
+    connect(m_controller, &TestController::updatingChanged, m_pending,
+            &PendingUpdatesPanel::setSnapshot);
+    connect(m_controller, &TestController::commandRefused, this, [this](const QString& why) {
+        m_alarms->addMessage(why, AlarmSeverity::Warning);
+        m_status->showMessage(why, 10000);
+    });
+    connect(m_controller, &TestController::preflightReady, this, &MainWindow::showPreflight);
+    connect(m_controller, &TestController::recordingStarted, m_status,
+            &TestStatusBar::setRecordingFile);
+}
+
+} // namespace hsmu::gui
