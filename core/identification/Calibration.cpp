@@ -136,7 +136,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     }
     const auto p = Eigen::Index(spec.fitted.size());
     std::vector<int> indices;
-    Eigen::VectorXd lower(p), upper(p), typical(p);
+    Eigen::VectorXd lower(p), upper(p), typical(p), searchLower(p), searchUpper(p);
     int iBeta = -1, iGamma = -1;
     for (Eigen::Index i = 0; i < p; ++i) {
         const CalibrationSpec::Parameter& q = spec.fitted[std::size_t(i)];
@@ -150,6 +150,10 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
         lower[i] = q.lower;
         upper[i] = q.upper;
         typical[i] = q.typical;
+        searchLower[i] = std::isnan(q.searchLower) ? q.lower : std::max(q.lower, q.searchLower);
+        searchUpper[i] = std::isnan(q.searchUpper) ? q.upper : std::min(q.upper, q.searchUpper);
+        if (!(searchLower[i] <= searchUpper[i]))
+            return done(q.name + ": the search range lies outside the box");
         out.names.push_back(q.name);
         if (q.name == "beta")
             iBeta = int(i);
@@ -171,13 +175,16 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     // 1. Global phase on the reduced history.
     const std::vector<std::size_t> reduced = reducedHistory(u, spec.reducedSamples);
     const Replay coarse(*law, indices, u, f, reduced, rmsF);
-    std::vector<Candidate> candidates;
+    std::vector<Eigen::VectorXd> starts;
     for (const std::vector<double>& s : spec.starts) {
         if (s.size() != spec.fitted.size())
             return done("a start has the wrong number of values");
-        const Eigen::VectorXd x0 = Eigen::Map<const Eigen::VectorXd>(s.data(), p);
+        starts.push_back(Eigen::Map<const Eigen::VectorXd>(s.data(), p));
+    }
+    std::vector<Candidate> candidates;
+    for (const Eigen::VectorXd& x0 : starts) {
         const LevenbergMarquardtResult r =
-            LevenbergMarquardt(spec.global).minimize(coarse, x0, lower, upper, typical, project);
+            LevenbergMarquardt(spec.global).minimize(coarse, x0, searchLower, searchUpper, typical, project);
         ++out.startsTried;
         out.residualEvaluations += r.residualEvaluations;
         if (std::isfinite(r.cost))

@@ -25,6 +25,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -38,6 +39,11 @@ struct CalibrationSpec {
         std::string name;
         double lower = 0.0, upper = 0.0; ///< the box (finite)
         double typical = 1.0;            ///< scale for difference steps and tolerances (> 0)
+        /// The part of the box the global phase searches (NaN: the whole box); the local
+        /// phase always uses the whole box. Narrower where the wanted basin is known to lie
+        /// (e.g. the pinching search keeps pinching on until the polish).
+        double searchLower = std::numeric_limits<double>::quiet_NaN();
+        double searchUpper = std::numeric_limits<double>::quiet_NaN();
     };
     std::vector<Parameter> fitted;
     /// Starting points (values of the fitted parameters, in `fitted` order); clamped into

@@ -93,10 +93,16 @@ IdentificationSettings withOverride(const IdentificationSettings& base,
         root.child("updating").requireObject();
         section.merge_patch(override["updating"]);
     }
-    if (!method.empty()) {
+    if (method == "calibration") {
+        // Only the calibration runs: the online method is not used, so a model the UKF
+        // cannot identify (e.g. boucWenPinching) must not be refused for it.
+        if (s.model.law != "boucWen")
+            section["method"] = "nelderMead";
+    } else if (!method.empty()) {
         const std::string m = method == "nelder-mead" ? "nelderMead" : method;
         if (m != "ukf" && m != "nelderMead")
-            throw ConfigError("--method: expected ukf or nelder-mead, found '" + method + "'");
+            throw ConfigError("--method: expected ukf, nelder-mead or calibration, found '" +
+                              method + "'");
         section["method"] = m;
     }
     return reparse(s, section, sourceName);

@@ -52,7 +52,8 @@ IdentificationSettings identificationSettingsFrom(const TestConfig& cfg,
 IdentificationSettings defaultIdentificationSettings();
 
 /// base with `override` (the document above) applied, then `method` ("ukf", "nelderMead" or
-/// "nelder-mead"; "" keeps the section's) in the same step, so that a new model and its
+/// "nelder-mead"; "calibration": only the calibration will run, so the online method is not
+/// checked against the model; "" keeps the section's) in the same step, so that a new model and its
 /// method are checked together. sourceName names the override in messages. Throws
 /// ConfigError (unknown keys, bad values, a method the model does not support, e.g. the UKF
 /// on a bilinear model).

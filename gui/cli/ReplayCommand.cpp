@@ -208,7 +208,7 @@ int ReplayCommand::exec(const QStringList& arguments) {
             history = historyFromRecord(d, settings.specimen, o.record.toStdString());
         }
         const bool calibrationOnly = o.method == QLatin1String("calibration");
-        settings = withOverrides(settings, o.config, calibrationOnly ? QString() : o.method);
+        settings = withOverrides(settings, o.config, o.method);
         settings.online = !calibrationOnly;
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));

@@ -122,6 +122,40 @@ private slots:
         QVERIFY2(pinned.isEmpty(), qPrintable("on a bound online only: " + pinned.join(", ")));
     }
 
+    /// The pinching law (boucWenPinching) with no user input: within 5 % of the independent
+    /// Baber-Noori / Foliente fit on the three records that have one, and better than the
+    /// plain law's own optimum by a margin no plain fit can reach (so the search did leave
+    /// the Bouc-Wen basin).
+    void calibratesPinching_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<double>("reference");
+        QTest::addColumn<double>("plainReference");
+        QTest::newRow("gill") << QString::fromStdString(kData + "/rc-column-gill1979/rc_column_force_disp.txt") << 0.105 << 0.138;
+        QTest::newRow("soesianawati") << QString::fromStdString(kData + "/hysteresis/rc-column-soesianawati-unit1/soesianawati_unit1.txt") << 0.126 << 0.170;
+        QTest::newRow("hdrb") << QString::fromStdString(kData + "/hysteresis/isolator-hdrb-gallardo2023/hdrb_test.txt") << 0.110 << 0.144;
+    }
+
+    void calibratesPinching() {
+        QFETCH(QString, file);
+        QFETCH(double, reference);
+        QFETCH(double, plainReference);
+        SpecimenHistory h;
+        if (!readRecord(file.toStdString(), h))
+            QSKIP(qPrintable("shared record absent (a fresh machine has no ../shared/data): " + file));
+        CalibrationRequest request;
+        request.law = "boucWenPinching";
+        const CalibrationResult r = calibrateHistory(h.deformation, h.force, request);
+        QVERIFY2(r.ok, r.reason.c_str());
+        qInfo("%s: pinching calibration NRMSE %.4f (reference %.3f, %.3fx), %d starts, %d "
+              "replays, %.2f s; zetaS %.3f q %.3f",
+              qPrintable(QFileInfo(file).fileName()), r.nrmse, reference, r.nrmse / reference,
+              r.startsTried, r.residualEvaluations, r.computeSeconds, r.parameters.at("zetaS"),
+              r.parameters.at("q"));
+        QVERIFY2(r.nrmse <= 1.05 * reference,
+                 qPrintable(QString("pinching NRMSE %1 > 1.05 x %2").arg(r.nrmse).arg(reference)));
+        QVERIFY(r.nrmse < 0.9 * plainReference);
+        QVERIFY(r.parameters.at("zetaS") > 0.1); // the loops are pinched
+    }
 
     /// The MR damper at 0.88 V is rate-dependent beyond what a Bouc-Wen law can follow: its
     /// best fit stays above the verdict's NRMSE of 0.25 and the verdict says so.
