@@ -19,14 +19,25 @@
 // acknowledgement was lost), reconfigures and sends Resume; the held step is then retried
 // with the same target, which the controller answers without a new trial, so the test
 // continues without a jump and records every step exactly once.
-// Thread rules: one thread at a time (the test worker); all calls bounded by deadlines.
+// Emergency hold (out of band, docs/protocol.md "Emergency hold"): emergencyHold() may be
+// called from any thread while the test worker is blocked in measure() or commit(): it
+// posts a Hold frame to the link's io thread (written at once, behind only frames already
+// posted, never behind a reply the worker waits for) and interrupts the worker's wait, which
+// returns a fault naming the hold with the connection kept. The worker's hold() then takes
+// the controller's Hold acknowledgements (skipping a measurement or commit acknowledgement
+// that crossed them; the step is retried after resume and answered idempotently). Until
+// resume() no target is sent and no reconnection attempted.
+// Thread rules: one thread at a time (the test worker), except emergencyHold(); all calls
+// bounded by deadlines.
 
 #include "comms/protocol/Messages.h"
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 
 namespace hsmu::comms {
@@ -61,6 +72,10 @@ public:
     ControlResult commit() override;
     void hold(const std::string& reason) override;
     void resume() override;
+    /// Any thread: Hold frame posted at once, the worker's wait interrupted (see the header).
+    void emergencyHold(const std::string& reason) override;
+    /// commanded, measured (deformation), held ticks and flags of the last measurement frame.
+    std::optional<ActuatorChannels> actuatorChannels() const override;
 
     /// Close any connection and connect again (up to reconnectAttempts attempts).
     ControlResult reconnect();
@@ -79,6 +94,11 @@ private:
     ControlResult linkFault(const std::string& what);
     ControlResult recoverCommit(const std::string& why);
     ControlResult refused(const ErrorMsg& e);
+    /// A receive that failed: the emergency hold's fault (link kept) or a link fault.
+    ControlResult noReply(const std::string& what, const std::string& error);
+    bool emergency() const { return m_emergency.load(std::memory_order_acquire); }
+    std::string emergencyText() const;
+    void takeEmergencyAcks(int count);
     std::string where() const;
 
     std::unique_ptr<LinkClient> m_link;
@@ -99,6 +119,12 @@ private:
     bool m_connectFailed = false;
     std::uint64_t m_controllerCommitted = 0; // as of the last hello-ack
     double m_sentTarget = 0.0;
+    bool m_measured = false; // m_last holds a measurement
+    // Emergency hold: written by any thread.
+    std::atomic<bool> m_emergency{false};
+    std::atomic<int> m_emergencyHoldsSent{0};
+    mutable std::mutex m_emergencyMutex;
+    std::string m_emergencyReason;
 };
 
 } // namespace hsmu::comms

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <mutex>
 
 #if defined(__linux__)
 #include <netinet/in.h>
@@ -64,8 +65,15 @@ struct OfSocket::Impl {
     std::function<bool()> cancel;
     bool eof = false, timedOut = false;
     std::string peer;
+    // The descriptor interrupt() may shut down from another thread (-1 when closed).
+    std::mutex fdMutex;
+    int fd = -1;
 
     void configure() {
+        {
+            std::lock_guard lock(fdMutex);
+            fd = socket->native_handle();
+        }
         boost::system::error_code ec;
         socket->set_option(tcp::no_delay(true), ec);
         socket->set_option(asio::socket_base::keep_alive(true), ec);
@@ -86,6 +94,10 @@ struct OfSocket::Impl {
     }
 
     void abort() {
+        {
+            std::lock_guard lock(fdMutex); // interrupt() never touches a closed descriptor
+            fd = -1;
+        }
         boost::system::error_code ec;
         socket->shutdown(tcp::socket::shutdown_both, ec);
         socket->close(ec);
@@ -121,6 +133,12 @@ std::string OfSocket::peer() const {
     return d->peer;
 }
 
+void OfSocket::interrupt() {
+    std::lock_guard lock(d->fdMutex);
+    if (d->fd >= 0)
+        ::shutdown(d->fd, SHUT_RDWR);
+}
+
 void OfSocket::close() {
     if (d->socket->is_open())
         d->abort();
@@ -145,6 +163,10 @@ void OfSocket::closeAfterPeer(double timeout) {
             return;
         }
         if (result == asio::error::eof) {
+            {
+                std::lock_guard lock(d->fdMutex);
+                d->fd = -1;
+            }
             boost::system::error_code ec;
             d->socket->set_option(asio::socket_base::linger(true, 0), ec);
             d->socket->close(ec);

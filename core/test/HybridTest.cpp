@@ -121,6 +121,7 @@ bool HybridTest::prepare()
     for (const auto& e : m_structure->elements())
         if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
             m_specimens.push_back(x);
+    m_prepared.store(true, std::memory_order_release);
     for (ExperimentalElement* x : m_specimens)
         if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
             return fail(x->name() + ": " + r.reason);
@@ -140,12 +141,42 @@ bool HybridTest::prepare()
     return true;
 }
 
+std::optional<std::string> HybridTest::takeEmergency()
+{
+    if (!m_emergency.load(std::memory_order_acquire))
+        return std::nullopt;
+    std::lock_guard lock(m_emergencyMutex);
+    m_emergency.store(false, std::memory_order_release);
+    return m_emergencyReason;
+}
+
+void HybridTest::emergencyHold(const std::string& reason)
+{
+    const std::string why =
+        "emergency hold: " + (reason.empty() ? std::string("operator") : reason);
+    {
+        std::lock_guard lock(m_emergencyMutex);
+        m_emergencyReason = why;
+        m_emergency.store(true, std::memory_order_release);
+    }
+    if (!m_prepared.load(std::memory_order_acquire))
+        return;
+    for (ExperimentalElement* x : m_specimens)
+        x->control().emergencyHold(why);
+}
+
 void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
 {
+    std::string why = reason;
+    if (std::optional<std::string> e = takeEmergency()) {
+        // The fault (if any) is what the emergency hold caused: say what held the test.
+        why = kind == AlarmKind::OperatorHold ? *e : *e + " (" + reason + ")";
+        kind = AlarmKind::OperatorHold;
+    }
     m_structure->revert();
     for (ExperimentalElement* x : m_specimens)
-        x->control().hold(reason);
-    raise(AlarmSeverity::Critical, kind, "test held: " + reason);
+        x->control().hold(why);
+    raise(AlarmSeverity::Critical, kind, "test held: " + why);
     m_state = State::Holding;
 }
 
@@ -160,6 +191,7 @@ void HybridTest::resume()
 {
     if (m_state != State::Holding)
         return;
+    takeEmergency(); // an emergency hold raised while held is answered by this resume
     for (ExperimentalElement* x : m_specimens)
         x->control().resume();
     raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed");
@@ -179,6 +211,10 @@ HybridTest::StepResult HybridTest::step()
     if (m_step >= m_totalSteps) {
         m_state = State::Finished;
         return StepResult::Finished;
+    }
+    if (m_emergency.load(std::memory_order_acquire)) {
+        enterHold(AlarmKind::OperatorHold, "");
+        return StepResult::Held;
     }
     m_state = State::Running;
     const double agNext = m_groundMotion.acceleration[m_step + 1];
@@ -222,6 +258,10 @@ HybridTest::StepResult HybridTest::step()
     publish();
     if (updaterHold) {
         enterHold(AlarmKind::EstimatorRejected, *updaterHold);
+        return StepResult::Held;
+    }
+    if (m_emergency.load(std::memory_order_acquire)) { // raised during this step
+        enterHold(AlarmKind::OperatorHold, "");
         return StepResult::Held;
     }
     if (m_step >= m_totalSteps) {
