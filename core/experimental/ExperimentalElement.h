@@ -43,6 +43,7 @@ public:
     double commandedDeformation() const { return m_commanded; }
     const ControlMeasurement& measurement() const { return m_measured; }
     ExperimentalControl& control() { return *m_control; }
+    const ExperimentalControl& control() const { return *m_control; }
     const SafetyLimits& limits() const { return m_limits; }
     void setLimits(const SafetyLimits& limits) { m_limits = limits; }
 

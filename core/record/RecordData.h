@@ -57,6 +57,12 @@ struct RecordData {
     Eigen::MatrixXd deformation;        ///< [N x nElem] element units (measured for specimens)
     Eigen::MatrixXd force;              ///< [N x nElem] element units (measured for specimens)
     Eigen::MatrixXd commanded;          ///< [N x nElem] NaN for numerical elements
+    // Actuator channels (/elements/actuator; 0 x 0 in records written before them): as each
+    // specimen's control reported them with the step's measurement, NaN where it has none.
+    Eigen::MatrixXd actuatorCommanded; ///< [N x nElem] element deformation units
+    Eigen::MatrixXd actuatorMeasured;  ///< [N x nElem] element deformation units
+    Eigen::MatrixXd heldTicks;         ///< [N x nElem] controller ticks held for a late target
+    Eigen::MatrixXd actuatorFlags;     ///< [N x nElem] bit 0 fractured, bit 1 replayed
 
     // Online model updating (empty unless layout.updating).
     Eigen::MatrixXd parameters;        ///< [N x nParam] estimate

@@ -67,6 +67,8 @@ struct RecordReader::Impl {
     RecordData data;
     Column step, time, ag, u, v, a, def, force, cmd, par, sd, aux, fit, applied, thisStep, pending;
     Column tracking, requested; // schema 2
+    Column actCmd, actMeasured, actTicks, actFlags; // /elements/actuator, when present
+    bool actuator = false;
     Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
     Column eventStep, eventTime, eventElement, eventValues, noteTime, noteStep, noteText;
     bool v2 = false; // schema 2 datasets present
@@ -112,6 +114,9 @@ Column RecordReader::Impl::column(const char* name, int cols) {
 
 std::vector<Column*> RecordReader::Impl::stepColumns() {
     std::vector<Column*> c = {&step, &time, &ag, &u, &v, &a, &def, &force, &cmd};
+    if (actuator)
+        for (Column* x : {&actCmd, &actMeasured, &actTicks, &actFlags})
+            c.push_back(x);
     if (data.layout.updating)
         for (Column* x : {&par, &sd, &aux, &fit, &applied, &thisStep, &pending})
             c.push_back(x);
@@ -193,6 +198,13 @@ void RecordReader::Impl::readMetadata() {
     v = column("/dofs/v", nDof);
     a = column("/dofs/a", nDof);
     cmd = column("/elements/commanded", nElem);
+    actuator = H5Lexists(root, "/elements/actuator", H5P_DEFAULT) > 0;
+    if (actuator) {
+        actCmd = column("/elements/actuator/commanded", nElem);
+        actMeasured = column("/elements/actuator/measured", nElem);
+        actTicks = column("/elements/actuator/held_ticks", nElem);
+        actFlags = column("/elements/actuator/flags", nElem);
+    }
     if (H5Lexists(root, "updating", H5P_DEFAULT) > 0) {
         const h5::Id g = h5::check(H5Gopen2(root, "updating", H5P_DEFAULT), w,
                                    "damaged record (no group /updating)");
@@ -297,6 +309,12 @@ int RecordReader::Impl::readNewRows() {
     appendRows(data.deformation, def, r0, n, w);
     appendRows(data.force, force, r0, n, w);
     appendRows(data.commanded, cmd, r0, n, w);
+    if (actuator) {
+        appendRows(data.actuatorCommanded, actCmd, r0, n, w);
+        appendRows(data.actuatorMeasured, actMeasured, r0, n, w);
+        appendRows(data.heldTicks, actTicks, r0, n, w);
+        appendRows(data.actuatorFlags, actFlags, r0, n, w);
+    }
     if (data.layout.updating) {
         appendRows(data.parameters, par, r0, n, w);
         appendRows(data.stddev, sd, r0, n, w);

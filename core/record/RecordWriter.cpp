@@ -2,6 +2,7 @@
 
 #include "core/Version.h"
 #include "core/hysteresis/BoucWen.h"
+#include "core/record/ActuatorColumns.h"
 #include "core/record/Hdf5Util.h"
 #include "core/record/RecordChecksum.h"
 #include "core/record/RecordData.h"
@@ -61,6 +62,7 @@ struct RecordWriter::Impl {
     h5::Extendible eventStep, eventTime, eventElement, eventValues;
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage;
     h5::Extendible noteTime, noteStep, noteText;
+    ActuatorColumns actuator; // /elements/actuator
 
     std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement;
     std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
@@ -173,6 +175,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(def.id(), "units", defUnits, w);
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
+        actuator.create(g.get(), names, defUnits, w);
     }
     if (layout.updating)
         createUpdating(root);
@@ -256,6 +259,7 @@ void RecordWriter::Impl::clearBuffers() {
         b->clear();
     bAlarms.clear();
     bNotes.clear();
+    actuator.clear();
 }
 
 void RecordWriter::Impl::writeBuffers() {
@@ -270,6 +274,7 @@ void RecordWriter::Impl::writeBuffers() {
         def.append(bDef.data(), n);
         force.append(bForce.data(), n);
         cmd.append(bCmd.data(), n);
+        actuator.write(n);
         if (layout.updating) {
             par.append(bPar.data(), n);
             sd.append(bSd.data(), n);
@@ -390,6 +395,7 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.bForce.push_back(s.force);
         d.bCmd.push_back(s.commanded);
     }
+    d.actuator.buffer(r);
     if (d.layout.updating) {
         const UpdatingSample& up = r.updating;
         pushValues(d.bPar, up.parameters, d.nPar, r.hasUpdating);
@@ -470,6 +476,7 @@ bool RecordWriter::finish() {
     const h5::QuietErrors quiet;
     for (h5::Extendible* x : d.datasets())
         *x = h5::Extendible();
+    d.actuator.close();
     for (h5::Id* t : {&d.severityType, &d.kindType, &d.messageType, &d.noteType})
         t->reset();
     if (d.file.valid() && H5Fclose(d.file.release()) < 0 && !d.failed) {

@@ -291,9 +291,14 @@ void HybridTest::publish()
             s.deformation = e.deformation();
             s.force = e.force();
         }
-        if (e.isExperimental())
-            s.commanded = m_step == 0 ? 0.0
-                                      : static_cast<const ExperimentalElement&>(e).commandedDeformation();
+        if (e.isExperimental()) {
+            const auto& x = static_cast<const ExperimentalElement&>(e);
+            s.commanded = m_step == 0 ? 0.0 : x.commandedDeformation();
+            s.actuator = ActuatorChannels{};
+            if (m_step > 0)
+                if (std::optional<ActuatorChannels> c = x.control().actuatorChannels())
+                    s.actuator = *c;
+        }
     }
     rec.hasUpdating = m_updater != nullptr;
     if (m_updater && m_step == 0) {

@@ -75,6 +75,8 @@ private slots:
     void holdReachesASilentSiteWhileTheStepIsBlocked() {
         SilentSite site(5, /*ackHolds=*/true);
         auto test = build(site.port());
+        Recorder rec;
+        test->addObserver(&rec);
         QVERIFY2(test->prepare(), test->lastError().c_str());
         Stepper stepper(*test);
         site.watch(&stepper.done);
@@ -93,6 +95,17 @@ private slots:
                  a.message.c_str());
         QVERIFY2(a.message.find("no reply within") == std::string::npos, a.message.c_str());
         QCOMPARE(site.holds(), 1); // the test's own hold() took the ack, sent nothing more
+        // The native measurement's actuator channels reach the step record (the site
+        // reports the target as both positions, 0 held ticks, no flags).
+        QCOMPARE(rec.records.size(), std::size_t(6));
+        QVERIFY(std::isnan(rec.records[0].elements[0].actuator.commanded));
+        for (std::size_t i = 1; i < rec.records.size(); ++i) {
+            const ElementSample& e = rec.records[i].elements[0];
+            QCOMPARE(e.actuator.commanded, e.commanded);
+            QCOMPARE(e.actuator.measured, e.commanded);
+            QCOMPARE(e.actuator.heldTicks, std::int64_t(0));
+            QCOMPARE(e.actuator.flags, std::int64_t(0));
+        }
 
         // The link stayed up: resume retries step 6, which the site now answers.
         test->resume();
