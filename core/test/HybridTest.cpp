@@ -121,10 +121,12 @@ bool HybridTest::prepare()
     for (const auto& e : m_structure->elements())
         if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
             m_specimens.push_back(x);
-    m_prepared.store(true, std::memory_order_release);
     for (ExperimentalElement* x : m_specimens)
         if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
             return fail(x->name() + ": " + r.reason);
+    // From here on emergencyHold() reaches the controls (connected); one raised while they
+    // connected only holds the first step, which sends the hold in band.
+    m_prepared.store(true, std::memory_order_release);
     if (m_updater) {
         std::string why;
         if (!m_updater->attach(*m_structure, m_options.dt, &why))

@@ -64,7 +64,7 @@ public:
     /// ExperimentalControl::emergencyHold(reason) now, a step blocked on a link returns
     /// promptly, and the test holds (AlarmKind::OperatorHold, "test held: emergency hold:
     /// reason") at the end of the current step() or at the start of the next one. Before
-    /// prepare() nothing is connected: only the next step() holds. Cleared by resume().
+    /// prepare() has connected every control, only the next step() holds. Cleared by resume().
     void emergencyHold(const std::string& reason);
 
     State state() const { return m_state; }
