@@ -16,6 +16,10 @@
 //                          timed inside OpenSees; median and p99 per step (target <= 0.5 ms)
 //   BM_OpenSeesGenericTcp  the same through OpenFresco's `expControl GenericTCP` -> OfServer
 //                          (GenericTCP server)
+//   BM_EmergencyHoldLatency  HybridTest::emergencyHold() from another thread while the step
+//                          thread is blocked on a site that read its target and went silent
+//                          (tests/comms/SilentSite.h): time until the Hold frame has arrived
+//                          at the site; median and max in the counters (target <= 50 ms)
 //   BM_RealTimeDeadlines   the real-time pace for HSMU_BENCH_REALTIME_SECONDS seconds (default
 //                          skipped): deadline misses of the 1024 Hz loop (target 0);
 //                          HSMU_BENCH_REALTIME_PRIORITY=P runs the loop under SCHED_FIFO P
@@ -28,6 +32,8 @@
 #include "comms/openfresco/SimAppControl.h"
 #include "core/config/ConfigLoader.h"
 #include "core/test/HybridTest.h"
+
+#include "../tests/comms/SilentSite.h"
 
 #include <benchmark/benchmark.h>
 
@@ -268,6 +274,52 @@ void BM_HybridTestOverLink(benchmark::State& state) {
 void BM_HybridTestInProcess(benchmark::State& state) {
     runHybrid(state, false);
 }
+void BM_EmergencyHoldLatency(benchmark::State& state) {
+    const TestConfig cfg = condition3(10.0);
+    TcpControlOptions o;
+    o.stepDeadline = 60.0;
+    o.silenceTimeout = 120.0;
+    std::vector<double> latency;
+    for (auto _ : state) {
+        SilentSite site(3, true);
+        auto test = buildHybridTest(
+            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::Tcp, "127.0.0.1", site.port()}, o));
+        if (!test->prepare()) {
+            state.SkipWithError(test->lastError().c_str());
+            return;
+        }
+        std::atomic<bool> done{false};
+        std::thread stepper([&] {
+            while (test->step() == HybridTest::StepResult::Advanced) {
+            }
+            done = true;
+        });
+        site.watch(&done);
+        if (!site.waitSilent(30.0)) {
+            state.SkipWithError("the site never went silent");
+            stepper.join();
+            return;
+        }
+        const auto t0 = SilentSite::Clock::now();
+        test->emergencyHold("benchmark");
+        const bool arrived = site.waitHolds(1, 30.0);
+        stepper.join();
+        if (!arrived || site.stepReturnedAtFirstHold()) {
+            state.SkipWithError("the hold did not arrive while the step was blocked");
+            return;
+        }
+        const double s = std::chrono::duration<double>(site.firstHoldAt() - t0).count();
+        latency.push_back(s);
+        state.SetIterationTime(s);
+    }
+    std::sort(latency.begin(), latency.end());
+    if (!latency.empty()) {
+        state.counters["median_us"] = latency[latency.size() / 2] * 1e6;
+        state.counters["max_us"] = latency.back() * 1e6;
+    }
+}
+BENCHMARK(BM_EmergencyHoldLatency)->UseManualTime()->Iterations(50)->Unit(benchmark::kMicrosecond);
+
 BENCHMARK(BM_HybridTestOverLink)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HybridTestInProcess)->UseRealTime()->Unit(benchmark::kMillisecond);
 

@@ -1216,6 +1216,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>fit error</source>
         <translation>fit error</translation>
     </message>
+    <message>
+        <source>actuator command</source>
+        <translation>actuator command</translation>
+    </message>
+    <message>
+        <source>held ticks</source>
+        <translation>held ticks</translation>
+    </message>
+    <message>
+        <source>Held ticks [-]</source>
+        <translation>Held ticks [-]</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::HysteresisPlot</name>

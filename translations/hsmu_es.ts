@@ -1216,6 +1216,18 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>fit error</source>
         <translation>error de ajuste</translation>
     </message>
+    <message>
+        <source>actuator command</source>
+        <translation>orden del actuador</translation>
+    </message>
+    <message>
+        <source>held ticks</source>
+        <translation>ciclos retenidos</translation>
+    </message>
+    <message>
+        <source>Held ticks [-]</source>
+        <translation>Ciclos retenidos [-]</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::HysteresisPlot</name>

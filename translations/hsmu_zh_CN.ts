@@ -1215,6 +1215,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>fit error</source>
         <translation>拟合误差</translation>
     </message>
+    <message>
+        <source>actuator command</source>
+        <translation>作动器指令</translation>
+    </message>
+    <message>
+        <source>held ticks</source>
+        <translation>保持节拍数</translation>
+    </message>
+    <message>
+        <source>Held ticks [-]</source>
+        <translation>保持节拍数 [-]</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::HysteresisPlot</name>

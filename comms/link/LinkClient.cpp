@@ -76,6 +76,7 @@ struct LinkClient::Impl {
     };
     std::deque<Arrived> inbox;
     bool open = false;
+    bool interrupted = false;
     std::string reason;
 
     explicit Impl(const LinkClientOptions& o) : opt(o) {
@@ -312,10 +313,27 @@ bool LinkClient::sendRaw(std::vector<std::uint8_t> bytes, std::string& error) {
     return true;
 }
 
+void LinkClient::interrupt() {
+    std::lock_guard lock(d->mu);
+    d->interrupted = true;
+    d->cv.notify_all();
+}
+
+void LinkClient::clearInterrupt() {
+    std::lock_guard lock(d->mu);
+    d->interrupted = false;
+}
+
 std::optional<Message> LinkClient::receive(double timeout, std::string& error,
                                            std::chrono::steady_clock::time_point* arrived) {
     std::unique_lock lock(d->mu);
-    d->cv.wait_for(lock, seconds(timeout), [&] { return !d->inbox.empty() || !d->open; });
+    d->cv.wait_for(lock, seconds(timeout),
+                   [&] { return !d->inbox.empty() || !d->open || d->interrupted; });
+    if (d->interrupted) {
+        d->interrupted = false;
+        error = "interrupted";
+        return std::nullopt;
+    }
     if (!d->inbox.empty()) {
         Message m = std::move(d->inbox.front().message);
         if (arrived)

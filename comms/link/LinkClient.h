@@ -7,8 +7,10 @@
 // TCP_NODELAY is on. Sequence numbers are assigned here (1, 2, ... per connection) and checked
 // on what arrives.
 //
-// Thread rules: connect / close / send / receive from one thread at a time (the test worker);
-// the io thread is private. No call blocks longer than its timeout.
+// Thread rules: connect / close / receive from one thread at a time (the test worker);
+// send() and interrupt() from any thread (they only lock a mutex and post to the io thread:
+// an emergency hold is queued behind nothing but frames already posted). The io thread is
+// private. No call blocks longer than its timeout.
 
 #include "comms/protocol/Messages.h"
 
@@ -47,6 +49,11 @@ public:
     bool sendRaw(std::vector<std::uint8_t> bytes, std::string& error);
     /// The next message other than Heartbeat, waiting at most timeout [s]. Messages that
     /// arrived before the link closed are still delivered. nullopt with error set on timeout
+    /// A receive() in progress returns at once (nullopt, error "interrupted"); without one,
+    /// the next receive() does. The link stays open. Any thread.
+    void interrupt();
+    /// Forget an interrupt() that no receive() has taken yet.
+    void clearInterrupt();
     /// ("no reply within ...") or a closed link (its reason). arrived (optional): when the io
     /// thread decoded it (steady clock), for round-trip times that do not count the wait
     /// before the caller asked.

@@ -72,12 +72,25 @@ ControlResult TcpControl::refused(const ErrorMsg& e) {
     return ControlResult::fault("controller at " + where() + ": " + text);
 }
 
+std::string TcpControl::emergencyText() const {
+    std::lock_guard lock(m_emergencyMutex);
+    return "emergency hold: " + m_emergencyReason;
+}
+
+ControlResult TcpControl::noReply(const std::string& what, const std::string& error) {
+    if (emergency()) {
+        m_awaitingMeasurement = false;
+        return ControlResult::fault(where() + ": " + emergencyText() + " (" + what +
+                                    " not awaited)");
+    }
+    return linkFault(what + ": " + error);
+}
+
 ControlResult TcpControl::await(MessageType acked, double timeout) {
     std::string error;
     const auto m = m_link->receive(timeout, error);
     if (!m)
-        return linkFault(std::string("no ") + messageTypeName(acked) +
-                         " acknowledgement: " + error);
+        return noReply(std::string("no ") + messageTypeName(acked) + " acknowledgement", error);
     if (const auto* e = std::get_if<ErrorMsg>(&*m))
         return refused(*e);
     const auto* a = std::get_if<AckMsg>(&*m);
@@ -107,7 +120,7 @@ ControlResult TcpControl::handshake(bool initial) {
         return linkFault(error);
     const auto m = m_link->receive(m_opt.stepDeadline, error);
     if (!m)
-        return linkFault("no answer to the hello: " + error);
+        return noReply("no answer to the hello", error);
     if (const auto* e = std::get_if<ErrorMsg>(&*m))
         return refused(*e);
     const auto* ack = std::get_if<HelloAckMsg>(&*m);
@@ -151,6 +164,8 @@ ControlResult TcpControl::reconnect() {
     const int attempts = std::max(1, m_opt.reconnectAttempts);
     ControlResult last;
     for (int i = 0; i < attempts; ++i) {
+        if (emergency())
+            return ControlResult::fault(where() + ": " + emergencyText());
         if (i > 0)
             std::this_thread::sleep_for(std::chrono::duration<double>(m_opt.reconnectDelay));
         last = handshake(false);
@@ -181,6 +196,8 @@ ControlResult TcpControl::prepare(double dt) {
 }
 
 ControlResult TcpControl::setTarget(double d) {
+    if (emergency())
+        return ControlResult::fault(where() + ": " + emergencyText());
     if (m_holding)
         return ControlResult::fault("TCP link is holding: " + m_holdReason);
     if (!m_link->isOpen())
@@ -204,8 +221,7 @@ ControlResult TcpControl::measure(ControlMeasurement& out) {
     std::chrono::steady_clock::time_point arrived{};
     const auto m = m_link->receive(m_opt.stepDeadline, error, &arrived);
     if (!m)
-        return linkFault("no measurement for step " + std::to_string(m_committed + 1) + ": " +
-                         error);
+        return noReply("no measurement for step " + std::to_string(m_committed + 1), error);
     if (const auto* e = std::get_if<ErrorMsg>(&*m))
         return refused(*e);
     const auto* mm = std::get_if<MeasurementMsg>(&*m);
@@ -217,6 +233,7 @@ ControlResult TcpControl::measure(ControlMeasurement& out) {
                          std::to_string(m_committed + 1));
     m_last = *mm;
     m_latency = std::chrono::duration<double>(arrived - m_targetSentAt).count();
+    m_measured = true;
     out.deformation = mm->deformation;
     out.force = mm->force;
     return ControlResult::success();
@@ -225,7 +242,7 @@ ControlResult TcpControl::measure(ControlMeasurement& out) {
 ControlResult TcpControl::beginCommit() {
     m_commitSent = false;
     std::string error;
-    if (m_link->isOpen() && m_link->send(CommitMsg{m_committed + 1}, error))
+    if (!emergency() && m_link->isOpen() && m_link->send(CommitMsg{m_committed + 1}, error))
         m_commitSent = true;
     return ControlResult::success();
 }
@@ -233,6 +250,8 @@ ControlResult TcpControl::beginCommit() {
 ControlResult TcpControl::commit() {
     const bool sent = m_commitSent;
     m_commitSent = false;
+    if (emergency())
+        return ControlResult::fault(where() + ": " + emergencyText());
     if (!m_link->isOpen())
         return recoverCommit("link down (" + m_linkError + ")");
     std::string error;
@@ -243,7 +262,9 @@ ControlResult TcpControl::commit() {
         ++m_committed;
         return r;
     }
-    return m_link->isOpen() ? r : recoverCommit(m_linkError);
+    // Interrupted by an emergency hold: the step is retried after the resume (a commit the
+    // controller did make is then answered idempotently: same measurement, same ack).
+    return m_link->isOpen() || emergency() ? r : recoverCommit(m_linkError);
 }
 
 ControlResult TcpControl::recoverCommit(const std::string& why) {
@@ -255,6 +276,8 @@ ControlResult TcpControl::recoverCommit(const std::string& why) {
     const int attempts = std::max(1, m_opt.reconnectAttempts);
     ControlResult last = ControlResult::fault("link to " + where() + ": commit lost: " + why);
     for (int i = 0; i < attempts; ++i) {
+        if (emergency())
+            return ControlResult::fault(where() + ": " + emergencyText());
         if (i > 0)
             std::this_thread::sleep_for(std::chrono::duration<double>(m_opt.reconnectDelay));
         if (ControlResult h = handshake(false); !h.ok) {
@@ -289,6 +312,41 @@ ControlResult TcpControl::recoverCommit(const std::string& why) {
     return last;
 }
 
+void TcpControl::emergencyHold(const std::string& reason) {
+    {
+        std::lock_guard lock(m_emergencyMutex);
+        m_emergencyReason = reason.empty() ? std::string("operator") : reason;
+        // Counted before the send, so that hold() on the worker never misses its ack.
+        m_emergencyHoldsSent.fetch_add(1, std::memory_order_acq_rel);
+        std::string error;
+        if (!m_link->send(HoldMsg{reason.substr(0, 512)}, error))
+            m_emergencyHoldsSent.fetch_sub(1, std::memory_order_acq_rel);
+        m_emergency.store(true, std::memory_order_release);
+    }
+    m_link->interrupt();
+}
+
+void TcpControl::takeEmergencyAcks(int count) {
+    // The emergency Hold frames were sent out of band; what arrives before their
+    // acknowledgements (a measurement or commit ack that crossed them, an error such as
+    // "holding") belongs to the interrupted step, which is retried after resume.
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration<double>(std::min(m_opt.stepDeadline, 2.0));
+    while (count > 0) {
+        const double left =
+            std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+        std::string error;
+        const auto m = left > 0.0 ? m_link->receive(left, error) : std::nullopt;
+        if (!m) {
+            linkFault("no acknowledgement of the emergency hold" +
+                      (error.empty() ? std::string() : ": " + error));
+            return;
+        }
+        if (const auto* a = std::get_if<AckMsg>(&*m); a && a->acked == MessageType::Hold)
+            --count;
+    }
+}
+
 void TcpControl::hold(const std::string& reason) {
     m_commitSent = false;
     m_holding = true;
@@ -296,6 +354,11 @@ void TcpControl::hold(const std::string& reason) {
     m_awaitingMeasurement = false;
     if (!m_link->isOpen())
         return;
+    m_link->clearInterrupt();
+    if (const int sent = m_emergencyHoldsSent.exchange(0, std::memory_order_acq_rel); sent > 0) {
+        takeEmergencyAcks(sent);
+        return;
+    }
     std::string error;
     if (!m_link->send(HoldMsg{reason}, error) ||
         !await(MessageType::Hold, std::min(m_opt.stepDeadline, 2.0)).ok)
@@ -303,6 +366,15 @@ void TcpControl::hold(const std::string& reason) {
 }
 
 void TcpControl::resume() {
+    {
+        std::lock_guard lock(m_emergencyMutex);
+        m_emergency.store(false, std::memory_order_release);
+        m_emergencyReason.clear();
+    }
+    m_link->clearInterrupt();
+    if (const int sent = m_emergencyHoldsSent.exchange(0, std::memory_order_acq_rel);
+        sent > 0 && m_link->isOpen())
+        takeEmergencyAcks(sent);
     m_holding = false;
     m_holdReason.clear();
     if (!m_link->isOpen() && !reconnect().ok)
@@ -310,6 +382,17 @@ void TcpControl::resume() {
     std::string error;
     if (!m_link->send(ResumeMsg{}, error) || !await(MessageType::Resume, m_opt.stepDeadline).ok)
         linkFault("no acknowledgement of the resume");
+}
+
+std::optional<ActuatorChannels> TcpControl::actuatorChannels() const {
+    if (!m_measured)
+        return std::nullopt;
+    ActuatorChannels c;
+    c.commanded = m_last.commanded;
+    c.measured = m_last.deformation;
+    c.heldTicks = m_last.heldTicks;
+    c.flags = m_last.flags;
+    return c;
 }
 
 } // namespace hsmu::comms

@@ -19,16 +19,27 @@
 // acknowledgement was lost), reconfigures and sends Resume; the held step is then retried
 // with the same target, which the controller answers without a new trial, so the test
 // continues without a jump and records every step exactly once.
-// Thread rules: one thread at a time (the test worker); all calls bounded by deadlines.
+// Emergency hold (out of band, docs/protocol.md "Emergency hold"): emergencyHold() may be
+// called from any thread while the test worker is blocked in measure() or commit(): it
+// posts a Hold frame to the link's io thread (written at once, behind only frames already
+// posted, never behind a reply the worker waits for) and interrupts the worker's wait, which
+// returns a fault naming the hold with the connection kept. The worker's hold() then takes
+// the controller's Hold acknowledgements (skipping a measurement or commit acknowledgement
+// that crossed them; the step is retried after resume and answered idempotently). Until
+// resume() no target is sent and no reconnection attempted.
+// Thread rules: one thread at a time (the test worker), except emergencyHold(); all calls
+// bounded by deadlines.
 
 #include "comms/protocol/Messages.h"
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"
 
 #include <chrono>
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <string>
 
 namespace hsmu::comms {
@@ -69,6 +80,10 @@ public:
     bool connected() const override { return linkUp(); }
     /// Target sent -> measurement frame decoded on the link's io thread [s].
     double replyLatency() const override { return m_latency; }
+    /// Any thread: Hold frame posted at once, the worker's wait interrupted (see the header).
+    void emergencyHold(const std::string& reason) override;
+    /// commanded, measured (deformation), held ticks and flags of the last measurement frame.
+    std::optional<ActuatorChannels> actuatorChannels() const override;
 
     /// Close any connection and connect again (up to reconnectAttempts attempts).
     ControlResult reconnect();
@@ -87,6 +102,11 @@ private:
     ControlResult linkFault(const std::string& what);
     ControlResult recoverCommit(const std::string& why);
     ControlResult refused(const ErrorMsg& e);
+    /// A receive that failed: the emergency hold's fault (link kept) or a link fault.
+    ControlResult noReply(const std::string& what, const std::string& error);
+    bool emergency() const { return m_emergency.load(std::memory_order_acquire); }
+    std::string emergencyText() const;
+    void takeEmergencyAcks(int count);
     std::string where() const;
 
     std::unique_ptr<LinkClient> m_link;
@@ -110,6 +130,12 @@ private:
     bool m_commitSent = false;
     std::chrono::steady_clock::time_point m_targetSentAt{};
     double m_latency = std::numeric_limits<double>::quiet_NaN();
+    bool m_measured = false; // m_last holds a measurement
+    // Emergency hold: written by any thread.
+    std::atomic<bool> m_emergency{false};
+    std::atomic<int> m_emergencyHoldsSent{0};
+    mutable std::mutex m_emergencyMutex;
+    std::string m_emergencyReason;
 };
 
 } // namespace hsmu::comms

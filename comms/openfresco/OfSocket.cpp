@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <mutex>
 
 #include <poll.h>
 
@@ -67,8 +68,15 @@ struct OfSocket::Impl {
     std::string lineBuffer; ///< readLine(): bytes read past the last line
     bool eof = false, timedOut = false;
     std::string peer;
+    // The descriptor interrupt() may shut down from another thread (-1 when closed).
+    std::mutex fdMutex;
+    int fd = -1;
 
     void configure() {
+        {
+            std::lock_guard lock(fdMutex);
+            fd = socket->native_handle();
+        }
         boost::system::error_code ec;
         socket->set_option(tcp::no_delay(true), ec);
         socket->set_option(asio::socket_base::keep_alive(true), ec);
@@ -89,6 +97,10 @@ struct OfSocket::Impl {
     }
 
     void abort() {
+        {
+            std::lock_guard lock(fdMutex); // interrupt() never touches a closed descriptor
+            fd = -1;
+        }
         boost::system::error_code ec;
         socket->shutdown(tcp::socket::shutdown_both, ec);
         socket->close(ec);
@@ -125,6 +137,12 @@ std::string OfSocket::peer() const {
     return d->peer;
 }
 
+void OfSocket::interrupt() {
+    std::lock_guard lock(d->fdMutex);
+    if (d->fd >= 0)
+        ::shutdown(d->fd, SHUT_RDWR);
+}
+
 void OfSocket::close() {
     if (d->socket->is_open())
         d->abort();
@@ -149,6 +167,10 @@ void OfSocket::closeAfterPeer(double timeout) {
             return;
         }
         if (result == asio::error::eof) {
+            {
+                std::lock_guard lock(d->fdMutex);
+                d->fd = -1;
+            }
             boost::system::error_code ec;
             d->socket->set_option(asio::socket_base::linger(true, 0), ec);
             d->socket->close(ec);

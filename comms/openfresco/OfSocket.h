@@ -7,7 +7,7 @@
 // second would otherwise wait for our delayed ACK of the first (about 40-45 ms per step). A read or
 // write that times out, fails or is cancelled closes the socket: the fixed-length OpenFresco stream
 // has no framing to resynchronize on, so a half-read frame must never be followed by another read.
-// Thread rules: one thread per object. setCancel()'s predicate is polled about every 0.2 s
+// Thread rules: one thread per object, except interrupt() (any thread). setCancel()'s predicate is polled about every 0.2 s
 // during a wait (a server's stop flag).
 
 #include <cstddef>
@@ -52,6 +52,9 @@ public:
     /// "ADDR:PORT" of the peer ("" when closed).
     std::string peer() const;
     void setCancel(std::function<bool()> cancelled);
+    /// Any thread: shut the connection down now (the peer sees it closed; a read or write in
+    /// progress on the owning thread fails at once and closes the socket). No-op when closed.
+    void interrupt();
 
 private:
     struct Impl;

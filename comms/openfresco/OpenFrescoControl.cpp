@@ -49,7 +49,27 @@ ControlResult OpenFrescoControl::linkFault(const std::string& what) {
     m_socket->close();
     m_linkError = what;
     m_awaitingMeasurement = false;
-    return ControlResult::fault("link to " + where() + ": " + what);
+    if (m_emergency.load(std::memory_order_acquire))
+        m_linkError = emergencyText() + " (connection closed)";
+    return ControlResult::fault("link to " + where() + ": " + m_linkError);
+}
+
+std::string OpenFrescoControl::emergencyText() const {
+    std::lock_guard lock(m_emergencyMutex);
+    return "emergency hold: " + m_emergencyReason;
+}
+
+void OpenFrescoControl::emergencyHold(const std::string& reason) {
+    {
+        std::lock_guard lock(m_emergencyMutex);
+        m_emergencyReason = reason.empty() ? std::string("operator") : reason;
+    }
+    m_emergency.store(true, std::memory_order_release);
+    m_socket->interrupt();
+}
+
+std::optional<ActuatorChannels> OpenFrescoControl::actuatorChannels() const {
+    return m_channels;
 }
 
 ControlResult OpenFrescoControl::sendRequest(int action, const std::vector<double>& values) {
@@ -169,6 +189,8 @@ ControlResult OpenFrescoControl::prepare(double dt) {
 }
 
 ControlResult OpenFrescoControl::setTarget(double d) {
+    if (m_emergency.load(std::memory_order_acquire))
+        return ControlResult::fault(where() + ": " + emergencyText());
     if (m_holding)
         return ControlResult::fault(where() + " is holding: " + m_holdReason);
     if (!m_socket->isOpen())
@@ -224,6 +246,10 @@ ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
         std::fprintf(stderr, "hsmu: WARNING specimen '%s': %s\n", m_element.c_str(),
                      m_notice.c_str());
     }
+    ActuatorChannels c;
+    c.commanded = m_target;
+    c.measured = d;
+    m_channels = c;
     out.deformation = m_zeroDisp && d == 0.0 ? m_target : d;
     out.force = f;
     m_measuredUncommitted = true;
@@ -253,6 +279,10 @@ void OpenFrescoControl::hold(const std::string& reason) {
 }
 
 void OpenFrescoControl::resume() {
+    if (m_emergency.exchange(false, std::memory_order_acq_rel) && m_socket->isOpen()) {
+        m_socket->close(); // shut down by the emergency hold: no session to resume
+        m_linkError = "closed by an emergency hold";
+    }
     m_holding = false;
     m_holdReason.clear();
 }

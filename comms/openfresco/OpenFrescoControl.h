@@ -23,13 +23,22 @@
 // returns a fault (the test holds with every committed step kept). OpenFresco has no session or
 // step count to resume from, so a lost link is not reconnected: resume() on a closed link leaves
 // setTarget() reporting it, and the test is restarted instead.
-// Thread rules: one thread at a time (the test worker).
+// Emergency hold: OpenFresco's protocols have no hold message. emergencyHold() (any thread)
+// shuts the connection down at once (OfSocket::interrupt): the blocked read fails promptly
+// and the site server sees its client gone (an OpenFresco site server then stops serving
+// its experimental site, which commands nothing more; hsmu-controller's OpenFresco servers
+// end the session with the specimen where it is). The session cannot be resumed: restart the test.
+// Actuator channels: commanded = the ctrl displacement sent, measured = the daq displacement
+// as read (before the dead-channel substitution); no held ticks or flags (-1).
+// Thread rules: one thread at a time (the test worker), except emergencyHold().
 
 #include "comms/openfresco/OfSizes.h"
 #include "core/experimental/ExperimentalControl.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -68,6 +77,9 @@ public:
     /// Once, when the daq displacement channel is found dead (see the header).
     std::string takeNotice() override;
     bool connected() const override { return linkUp(); }
+    /// Any thread: closes the connection now (see the header).
+    void emergencyHold(const std::string& reason) override;
+    std::optional<ActuatorChannels> actuatorChannels() const override;
     /// Whether the daq displacement read exactly 0 while the target was not 0: from then on a
     /// reading of exactly 0 is replaced by the commanded deformation.
     bool commandedDeformationUsed() const { return m_zeroDisp; }
@@ -111,6 +123,11 @@ private:
     double m_target = 0.0;
     std::vector<std::uint8_t> m_buffer;
     std::vector<double> m_values;
+    std::optional<ActuatorChannels> m_channels;
+    std::atomic<bool> m_emergency{false};
+    mutable std::mutex m_emergencyMutex;
+    std::string m_emergencyReason;
+    std::string emergencyText() const;
 };
 
 } // namespace hsmu::comms::of

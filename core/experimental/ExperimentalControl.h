@@ -8,8 +8,12 @@
 // the step is accepted. Deformation and force are in the specimen's own units (rotation [rad]
 // and moment [kN m] for a rotational spring; [m] and [kN] for a lateral one).
 // No call may block without a deadline; a fault is returned, never thrown.
+// Thread rules: one thread at a time (the test's), except emergencyHold(), which any thread
+// may call at any time (docs/protocol.md, "Emergency hold").
 
+#include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace hsmu {
@@ -17,6 +21,15 @@ namespace hsmu {
 struct ControlMeasurement {
     double deformation = 0.0; ///< measured specimen deformation
     double force = 0.0;       ///< measured specimen force
+};
+
+/// What the actuator reported with the last measurement (docs/recording.md, /elements/actuator).
+/// Positions in the specimen's deformation units; NaN / -1 where the control has no such channel.
+struct ActuatorChannels {
+    double commanded = std::numeric_limits<double>::quiet_NaN(); ///< actuator command at measurement
+    double measured = std::numeric_limits<double>::quiet_NaN();  ///< measured position
+    std::int64_t heldTicks = -1; ///< controller ticks held waiting for a late target (-1: none)
+    std::int64_t flags = -1;     ///< native protocol flags (bit 0 fractured, bit 1 replayed); -1: none
 };
 
 struct ControlResult {
@@ -55,6 +68,15 @@ public:
     /// A warning the control raised since the last call (e.g. a sensor channel it stopped
     /// trusting), "" when none; the test records it as an alarm after the step's commit.
     virtual std::string takeNotice() { return {}; }
+    /// Out of band: any thread, any time (also while another thread is blocked in measure()
+    /// or commit()). Sends the hold to the lab at once with at most a short bounded send,
+    /// wakes a call blocked on the link so that it returns a fault promptly, and refuses new
+    /// targets until resume(). The test still calls hold() afterwards on its own thread.
+    /// Default: nothing, for controls whose calls never block (the in-process virtual
+    /// specimen): the test holds them at its next step boundary (HybridTest::emergencyHold).
+    virtual void emergencyHold(const std::string& reason) { (void)reason; }
+    /// The actuator channels of the last measurement; nullopt when the control has none.
+    virtual std::optional<ActuatorChannels> actuatorChannels() const { return std::nullopt; }
 };
 
 } // namespace hsmu

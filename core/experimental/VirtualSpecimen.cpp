@@ -101,11 +101,21 @@ ControlResult VirtualSpecimen::measure(ControlMeasurement& out)
         out.deformation += m_opt.deformationNoiseStd * m_random.normal();
     if (m_opt.forceNoiseStd > 0.0)
         out.force += m_opt.forceNoiseStd * m_random.normal();
+    ActuatorChannels c;
+    c.commanded = m_lastTarget;
+    c.measured = out.deformation;
+    c.flags = m_trialFractured ? 1 : 0;
+    m_channels = c;
     if (auto why = m_opt.interlock.violationOfForce(out.force)) {
         hold("interlock: " + *why);
         return ControlResult::fault(m_holdReason);
     }
     return ControlResult::success();
+}
+
+std::optional<ActuatorChannels> VirtualSpecimen::actuatorChannels() const
+{
+    return m_channels;
 }
 
 ControlResult VirtualSpecimen::commit()

@@ -61,6 +61,9 @@ public:
     ControlResult commit() override;
     void hold(const std::string& reason) override;
     void resume() override;
+    /// commanded = the last target, measured = the measured deformation (with its noise),
+    /// flags bit 0 = fractured (as hsmu-controller reports it); no held ticks (-1).
+    std::optional<ActuatorChannels> actuatorChannels() const override;
 
     bool holding() const { return m_holding; }
     const std::string& holdReason() const { return m_holdReason; }
@@ -87,6 +90,7 @@ private:
     bool m_fractured = false;
     bool m_trialFractured = false;
     double m_fractureTime = std::numeric_limits<double>::quiet_NaN();
+    std::optional<ActuatorChannels> m_channels;
 };
 
 } // namespace hsmu

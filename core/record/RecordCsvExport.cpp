@@ -132,6 +132,42 @@ void writeElements(const RecordData& r, const std::filesystem::path& dir,
     f.close();
 }
 
+/// actuators.csv: the actuator channels of every specimen (records that have them).
+void writeActuators(const RecordData& r, const std::filesystem::path& dir,
+                    std::vector<std::string>& written, const UnitMap& u) {
+    const Eigen::Index n = Eigen::Index(r.layout.elements.size());
+    if (r.actuatorCommanded.rows() != r.rows() || r.actuatorCommanded.cols() != n ||
+        std::none_of(r.layout.elements.begin(), r.layout.elements.end(),
+                     [](const ElementInfo& e) { return e.experimental; }))
+        return;
+    CsvFile f((dir / "actuators.csv").string(), written);
+    f.column("step", "");
+    f.column("time", u.symbol("s"));
+    for (const ElementInfo& e : r.layout.elements) {
+        if (!e.experimental)
+            continue;
+        f.column(e.name + " actuator commanded", u.symbol(e.units.deformation));
+        f.column(e.name + " actuator measured", u.symbol(e.units.deformation));
+        f.column(e.name + " held ticks", "-");
+        f.column(e.name + " flags", "-");
+    }
+    f.endHeader();
+    for (Eigen::Index i = 0; i < r.rows(); ++i) {
+        auto row = stepAndTime(r, i, u);
+        for (Eigen::Index j = 0; j < n; ++j) {
+            const ElementInfo& e = r.layout.elements[std::size_t(j)];
+            if (!e.experimental)
+                continue;
+            row.push_back(u.number(r.actuatorCommanded(i, j), e.units.deformation));
+            row.push_back(u.number(r.actuatorMeasured(i, j), e.units.deformation));
+            row.push_back(number(r.heldTicks(i, j)));
+            row.push_back(number(r.actuatorFlags(i, j)));
+        }
+        f.line(row);
+    }
+    f.close();
+}
+
 void writeUpdating(const RecordData& r, const std::filesystem::path& dir,
                    std::vector<std::string>& written, const UnitMap& u) {
     const UpdatingInfo& info = *r.layout.updating;
@@ -258,6 +294,7 @@ std::vector<std::string> exportRecordCsv(const RecordData& record, const std::st
     writeSteps(record, d, written, u);
     writeDofs(record, d, written, u);
     writeElements(record, d, written, u);
+    writeActuators(record, d, written, u);
     if (record.layout.updating)
         writeUpdating(record, d, written, u);
     writeLogs(record, d, written, u);

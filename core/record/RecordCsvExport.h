@@ -6,6 +6,9 @@
 //   dofs.csv           step, time [s], u <dof> [m] ..., v <dof> [m/s] ..., a <dof> [m/s^2] ...
 //   elements.csv       step, time [s], then per element: <name> deformation [unit],
 //                      <name> force [unit], <name> commanded [unit]
+//   actuators.csv      step, time [s], then per specimen: <name> actuator commanded [unit],
+//                      <name> actuator measured [unit], <name> held ticks [-], <name> flags [-]
+//                      (records with /elements/actuator and a specimen; nan: no channel)
 //   updating.csv       step, time [s], <parameter> [-] ..., stddev <parameter> [-] ...,
 //                      auxiliary_force [unit], fit_error [-], applied_updates [-],
 //                      updates_this_step [-], pending_proposals [-] and, from schema 2,

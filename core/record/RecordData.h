@@ -64,6 +64,12 @@ struct RecordData {
     /// [N x nSite] each step's round trip per site [s] (layout.sites order; row 0 NaN); empty
     /// in records without /sites (no experimental element, or written before sites)
     Eigen::MatrixXd siteRoundTrip;
+    // Actuator channels (/elements/actuator; 0 x 0 in records written before them): as each
+    // specimen's control reported them with the step's measurement, NaN where it has none.
+    Eigen::MatrixXd actuatorCommanded; ///< [N x nElem] element deformation units
+    Eigen::MatrixXd actuatorMeasured;  ///< [N x nElem] element deformation units
+    Eigen::MatrixXd heldTicks;         ///< [N x nElem] controller ticks held for a late target
+    Eigen::MatrixXd actuatorFlags;     ///< [N x nElem] bit 0 fractured, bit 1 replayed
 
     // Online model updating (empty unless layout.updating).
     Eigen::MatrixXd parameters;        ///< [N x nParam] estimate

@@ -70,6 +70,8 @@ struct RecordReader::Impl {
     Column siteRoundTrip;       // /sites, when the test had experimental elements
     Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
     Column eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal, noteTime, noteStep, noteText;
+    Column actCmd, actMeasured, actTicks, actFlags; // /elements/actuator, when present
+    bool actuator = false;
     bool v2 = false; // schema 2 datasets present
     std::vector<std::string> decisionCodes; // /updating/events/decision "codes" (if present)
 
@@ -114,6 +116,9 @@ Column RecordReader::Impl::column(const char* name, int cols) {
 
 std::vector<Column*> RecordReader::Impl::stepColumns() {
     std::vector<Column*> c = {&step, &time, &ag, &u, &v, &a, &def, &force, &cmd};
+    if (actuator)
+        for (Column* x : {&actCmd, &actMeasured, &actTicks, &actFlags})
+            c.push_back(x);
     if (data.layout.updating)
         for (Column* x : {&par, &sd, &aux, &fit, &applied, &thisStep, &pending})
             c.push_back(x);
@@ -207,6 +212,13 @@ void RecordReader::Impl::readMetadata() {
                                    "damaged record (no group /sites)");
         layout.sites = h5::readStringsAttr(g.get(), "names", w);
         siteRoundTrip = column("/sites/round_trip", int(layout.sites.size()));
+    }
+    actuator = H5Lexists(root, "/elements/actuator", H5P_DEFAULT) > 0;
+    if (actuator) {
+        actCmd = column("/elements/actuator/commanded", nElem);
+        actMeasured = column("/elements/actuator/measured", nElem);
+        actTicks = column("/elements/actuator/held_ticks", nElem);
+        actFlags = column("/elements/actuator/flags", nElem);
     }
     if (H5Lexists(root, "updating", H5P_DEFAULT) > 0) {
         const h5::Id g = h5::check(H5Gopen2(root, "updating", H5P_DEFAULT), w,
@@ -323,6 +335,12 @@ int RecordReader::Impl::readNewRows() {
     appendRows(data.commanded, cmd, r0, n, w);
     if (!data.layout.sites.empty())
         appendRows(data.siteRoundTrip, siteRoundTrip, r0, n, w);
+    if (actuator) {
+        appendRows(data.actuatorCommanded, actCmd, r0, n, w);
+        appendRows(data.actuatorMeasured, actMeasured, r0, n, w);
+        appendRows(data.heldTicks, actTicks, r0, n, w);
+        appendRows(data.actuatorFlags, actFlags, r0, n, w);
+    }
     if (data.layout.updating) {
         appendRows(data.parameters, par, r0, n, w);
         appendRows(data.stddev, sd, r0, n, w);

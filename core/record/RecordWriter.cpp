@@ -2,6 +2,7 @@
 
 #include "core/Version.h"
 #include "core/hysteresis/BoucWen.h"
+#include "core/record/ActuatorColumns.h"
 #include "core/record/Hdf5Util.h"
 #include "core/record/RecordChecksum.h"
 #include "core/record/RecordData.h"
@@ -62,6 +63,7 @@ struct RecordWriter::Impl {
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
     h5::Extendible noteTime, noteStep, noteText;
     h5::Extendible siteRoundTrip;
+    ActuatorColumns actuator; // /elements/actuator
 
     std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement,
         bEventDecision, bEventProposal;
@@ -175,6 +177,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(def.id(), "units", defUnits, w);
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
+        actuator.create(g.get(), names, defUnits, w);
     }
     if (layout.updating)
         createUpdating(root);
@@ -278,6 +281,7 @@ void RecordWriter::Impl::clearBuffers() {
         b->clear();
     bAlarms.clear();
     bNotes.clear();
+    actuator.clear();
 }
 
 void RecordWriter::Impl::writeBuffers() {
@@ -294,6 +298,7 @@ void RecordWriter::Impl::writeBuffers() {
         cmd.append(bCmd.data(), n);
         if (nSite > 0)
             siteRoundTrip.append(bSiteRoundTrip.data(), n);
+        actuator.write(n);
         if (layout.updating) {
             par.append(bPar.data(), n);
             sd.append(bSd.data(), n);
@@ -422,6 +427,7 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.bCmd.push_back(s.commanded);
     }
     pushValues(d.bSiteRoundTrip, r.siteRoundTrips, d.nSite, true);
+    d.actuator.buffer(r);
     if (d.layout.updating) {
         const UpdatingSample& up = r.updating;
         pushValues(d.bPar, up.parameters, d.nPar, r.hasUpdating);
@@ -505,6 +511,7 @@ bool RecordWriter::finish() {
     const h5::QuietErrors quiet;
     for (h5::Extendible* x : d.datasets())
         *x = h5::Extendible();
+    d.actuator.close();
     for (h5::Id* t : {&d.severityType, &d.kindType, &d.messageType, &d.noteType})
         t->reset();
     if (d.file.valid() && H5Fclose(d.file.release()) < 0 && !d.failed) {

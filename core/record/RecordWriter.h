@@ -6,6 +6,8 @@
 //   /steps/{step,time,ground_acceleration}            [N]
 //   /dofs/{u,v,a}                                     [N x nDof]   attribute names, units
 //   /elements/{deformation,force,commanded}           [N x nElem]  attributes names, units, ...
+//   /elements/actuator/{commanded,measured,held_ticks,flags}  [N x nElem]  the actuator
+//            channels of each specimen's control (NaN where it reports none)
 //   /updating/{parameters,stddev} [N x nParam], {auxiliary_force,fit_error,applied_updates,
 //            updates_this_step,pending_proposals,update_requested} [N], tracking [N x 3]
 //            (the inspector's J1 [s], J2, J3), events/{step,time,element (an /elements

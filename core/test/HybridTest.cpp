@@ -131,6 +131,9 @@ bool HybridTest::prepare()
     for (ExperimentalElement* x : m_specimens)
         if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
             return fail(x->name() + ": " + r.reason);
+    // From here on emergencyHold() reaches the controls (connected); one raised while they
+    // connected only holds the first step, which sends the hold in band.
+    m_prepared.store(true, std::memory_order_release);
     if (m_updater) {
         std::string why;
         if (!m_updater->attach(*m_structure, m_options.dt, &why))
@@ -147,12 +150,42 @@ bool HybridTest::prepare()
     return true;
 }
 
+std::optional<std::string> HybridTest::takeEmergency()
+{
+    if (!m_emergency.load(std::memory_order_acquire))
+        return std::nullopt;
+    std::lock_guard lock(m_emergencyMutex);
+    m_emergency.store(false, std::memory_order_release);
+    return m_emergencyReason;
+}
+
+void HybridTest::emergencyHold(const std::string& reason)
+{
+    const std::string why =
+        "emergency hold: " + (reason.empty() ? std::string("operator") : reason);
+    {
+        std::lock_guard lock(m_emergencyMutex);
+        m_emergencyReason = why;
+        m_emergency.store(true, std::memory_order_release);
+    }
+    if (!m_prepared.load(std::memory_order_acquire))
+        return;
+    for (ExperimentalElement* x : m_specimens)
+        x->control().emergencyHold(why);
+}
+
 void HybridTest::enterHold(AlarmKind kind, const std::string& reason)
 {
+    std::string why = reason;
+    if (std::optional<std::string> e = takeEmergency()) {
+        // The fault (if any) is what the emergency hold caused: say what held the test.
+        why = kind == AlarmKind::OperatorHold ? *e : *e + " (" + reason + ")";
+        kind = AlarmKind::OperatorHold;
+    }
     m_structure->revert();
     for (ExperimentalElement* x : m_specimens)
-        x->control().hold(reason);
-    raise(AlarmSeverity::Critical, kind, "test held: " + reason, "test-held", {reason});
+        x->control().hold(why);
+    raise(AlarmSeverity::Critical, kind, "test held: " + why, "test-held", {why});
     m_state = State::Holding;
     updateSites();
 }
@@ -174,6 +207,7 @@ void HybridTest::resume()
 {
     if (m_state != State::Holding)
         return;
+    takeEmergency(); // an emergency hold raised while held is answered by this resume
     for (ExperimentalElement* x : m_specimens)
         x->control().resume();
     raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed", "test-resumed", {});
@@ -194,6 +228,10 @@ HybridTest::StepResult HybridTest::step()
     if (m_step >= m_totalSteps) {
         m_state = State::Finished;
         return StepResult::Finished;
+    }
+    if (m_emergency.load(std::memory_order_acquire)) {
+        enterHold(AlarmKind::OperatorHold, "");
+        return StepResult::Held;
     }
     m_state = State::Running;
     const double agNext = m_groundMotion.acceleration[m_step + 1];
@@ -239,6 +277,10 @@ HybridTest::StepResult HybridTest::step()
         enterHold(AlarmKind::EstimatorRejected, *updaterHold);
         return StepResult::Held;
     }
+    if (m_emergency.load(std::memory_order_acquire)) { // raised during this step
+        enterHold(AlarmKind::OperatorHold, "");
+        return StepResult::Held;
+    }
     if (m_step >= m_totalSteps) {
         m_state = State::Finished;
         return StepResult::Finished;
@@ -266,9 +308,14 @@ void HybridTest::publish()
             s.deformation = e.deformation();
             s.force = e.force();
         }
-        if (e.isExperimental())
-            s.commanded = m_step == 0 ? 0.0
-                                      : static_cast<const ExperimentalElement&>(e).commandedDeformation();
+        if (e.isExperimental()) {
+            const auto& x = static_cast<const ExperimentalElement&>(e);
+            s.commanded = m_step == 0 ? 0.0 : x.commandedDeformation();
+            s.actuator = ActuatorChannels{};
+            if (m_step > 0)
+                if (std::optional<ActuatorChannels> c = x.control().actuatorChannels())
+                    s.actuator = *c;
+        }
     }
     if (!m_specimens.empty()) {
         if (m_sites.empty() || m_step == 0)

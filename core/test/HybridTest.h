@@ -11,6 +11,8 @@
 // A fault never throws out of step(): the test goes to State::Holding with an Alarm saying
 // why, every committed step has already reached the observers, and resume() retries the
 // same step (after the operator changed what caused the hold).
+// Thread rules: one thread (the caller of step()), except emergencyHold(), which any thread
+// may call at any time, also while step() is blocked on a silent link.
 
 #include "core/groundmotion/GroundMotion.h"
 #include "core/integration/StabilityCheck.h"
@@ -18,7 +20,10 @@
 #include "core/test/Alarm.h"
 #include "core/test/StepRecord.h"
 
+#include <atomic>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +60,13 @@ public:
     void hold(const std::string& reason);
     /// Leave a hold; the held step is retried by the next step().
     void resume();
+    /// Out of band, thread-safe (any thread, any time; returns after at most a short bounded
+    /// send per control): every experimental element's control gets
+    /// ExperimentalControl::emergencyHold(reason) now, a step blocked on a link returns
+    /// promptly, and the test holds (AlarmKind::OperatorHold, "test held: emergency hold:
+    /// reason") at the end of the current step() or at the start of the next one. Before
+    /// prepare() has connected every control, only the next step() holds. Cleared by resume().
+    void emergencyHold(const std::string& reason);
 
     State state() const { return m_state; }
     int currentStep() const { return m_step; }
@@ -87,6 +99,8 @@ public:
 
 private:
     void enterHold(AlarmKind kind, const std::string& reason);
+    /// The pending emergency hold's reason (and clears it), nullopt when none.
+    std::optional<std::string> takeEmergency();
     void raise(AlarmSeverity severity, AlarmKind kind, const std::string& message);
     /// A message from a template: its code and arguments (Alarm).
     void raise(AlarmSeverity severity, AlarmKind kind, const std::string& message,
@@ -110,6 +124,11 @@ private:
     std::shared_ptr<SiteMonitor> m_siteMonitor = std::make_shared<SiteMonitor>();
     std::vector<SiteStatus> m_sites; // rebuilt at prepare, hold and resume; refreshed per step
     void updateSites();
+    // Emergency hold (written by any thread).
+    std::atomic<bool> m_prepared{false}; // m_specimens is complete and never changes again
+    std::atomic<bool> m_emergency{false};
+    std::mutex m_emergencyMutex;
+    std::string m_emergencyReason;
 };
 
 const char* testStateName(HybridTest::State s);

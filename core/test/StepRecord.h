@@ -3,6 +3,7 @@
 // feed, CSV writer, statistics). Vectors are over the *full* DOFs; element entries follow the
 // structure's element order. Units: those of the structure (presets: m, s, kN, rad, kN m).
 
+#include "core/experimental/ExperimentalControl.h"
 #include "core/updating/ModelUpdater.h"
 
 #include <Eigen/Core>
@@ -17,6 +18,10 @@ struct ElementSample {
     double force = 0.0;       ///< law force (measured for a specimen)
     /// Commanded deformation for a specimen; NaN for a numerical element.
     double commanded = std::numeric_limits<double>::quiet_NaN();
+    /// A specimen's actuator channels as its control reported them with the step's
+    /// measurement (ExperimentalControl::actuatorChannels); NaN / -1 where it reports none,
+    /// always for a numerical element and at step 0.
+    ActuatorChannels actuator{};
 };
 
 struct StepRecord {

@@ -42,6 +42,7 @@ void TestController::teardown() {
     // Signals the old worker queued to us must not reach the next test's state.
     QCoreApplication::removePostedEvents(this, QEvent::MetaCall);
     m_worker = nullptr;
+    m_test = nullptr;
     m_thread = nullptr;
     m_buffer.reset();
     m_siteMonitor.reset();
@@ -81,6 +82,7 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
         ", controller = " + controller.toString() +
         ", updating = " + (cfg.updating.enabled ? reporterPolicyName(cfg.updating.policy) : "off");
     RecordStart start{cfg.raw.dump(), cfg.name, notes, cfg.analysis.dt};
+    m_test = test.get();
     m_worker =
         new TestWorker(std::move(test), m_buffer, cfg.analysis.allowUnstable, start, m_recordPath);
     m_thread = new QThread;
@@ -161,6 +163,11 @@ void TestController::stop() {
 }
 
 void TestController::emergencyHold(const QString& reason) {
+    // Not before arming (Ready): nothing is driven, nothing may be held at the lab.
+    if (m_test && (m_state == RunState::Running || m_state == RunState::Paused ||
+                   m_state == RunState::Holding))
+        m_test->emergencyHold(reason.isEmpty() ? std::string("operator (console)")
+                                               : reason.toStdString());
     onWorker([reason](TestWorker* w) { w->emergencyHold(reason); });
 }
 

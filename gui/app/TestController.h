@@ -88,6 +88,9 @@ public slots:
     void singleStep();
     void resume();
     void stop();
+    /// Out of band while a test runs, is paused or holds: HybridTest::emergencyHold() is
+    /// called here, on the GUI thread, so that the hold reaches every site at once even while
+    /// the worker is blocked in a step; then the worker is told (queued) to show the hold.
     void emergencyHold(const QString& reason = QString());
     /// Test seconds per wall second (1 = real time); <= 0 as fast as possible.
     void setSpeed(double factor);
@@ -131,6 +134,7 @@ private:
 
     QThread* m_thread = nullptr;
     TestWorker* m_worker = nullptr;
+    HybridTest* m_test = nullptr; ///< owned by m_worker; only emergencyHold() is called on it
     std::shared_ptr<RecordBuffer> m_buffer;
     QTimer m_drainTimer;
     RunLayout m_layout;

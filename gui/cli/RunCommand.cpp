@@ -12,6 +12,7 @@
 #include "gui/cli/RecordCollector.h"
 #include "gui/cli/RunOptions.h"
 #include "gui/cli/RunReport.h"
+#include "gui/cli/SignalHold.h"
 #include "gui/plots/PlotExporter.h"
 
 #include <QDir>
@@ -53,8 +54,9 @@ bool heldOnControlFault(const HybridTest& test) {
 }
 
 /// Steps to the end, a hold or a failure, printing progress on stderr; resumes after a
-/// control fault as the --reconnect policy allows.
-HybridTest::StepResult runLoop(HybridTest& test, const RunOptions& options, RecordWriter& record) {
+/// control fault as the --reconnect policy allows (never after SIGINT / SIGTERM held it).
+HybridTest::StepResult runLoop(HybridTest& test, const RunOptions& options, RecordWriter& record,
+                               const SignalHold& signalHold) {
     QElapsedTimer wall;
     wall.start();
     const int total = std::max(1, test.totalSteps());
@@ -79,7 +81,7 @@ HybridTest::StepResult runLoop(HybridTest& test, const RunOptions& options, Reco
             return result;
         if (test.currentStep() > stepAtResume)
             attempts = 0; // the test advanced since the last resume: a new fault
-        if (attempts >= options.reconnect || !heldOnControlFault(test))
+        if (signalHold.signalled() || attempts >= options.reconnect || !heldOnControlFault(test))
             return result;
         ++attempts;
         stepAtResume = test.currentStep();
@@ -163,12 +165,14 @@ int RunCommand::exec(const QStringList& arguments) {
                      .arg(QString::fromStdString(options.controller.toString()),
                           QString::fromStdString(comms::linkProtocol(options.controller, cfg.link)))
               << Qt::endl;
+    // SIGINT / SIGTERM from here on hold every site out of band (even mid-step).
+    SignalHold signalHold(*test);
     if (!test->prepare())
         return fail(tr("the test cannot start: %1").arg(QString::fromStdString(test->lastError())));
 
     QElapsedTimer wall;
     wall.start();
-    const HybridTest::StepResult result = runLoop(*test, options, *record);
+    const HybridTest::StepResult result = runLoop(*test, options, *record, signalHold);
     RunInfo info;
     info.configName = cfg.name;
     info.configFile = cfg.sourcePath;

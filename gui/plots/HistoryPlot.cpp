@@ -15,17 +15,21 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QCustomPlot(parent) {
 }
 
 void HistoryPlot::setChannels(const QString& title, const QString& yLabel,
-                              std::vector<Channel> channels) {
+                              std::vector<Channel> channels, const QString& rightLabel) {
     clearGraphs();
     m_graphs.clear();
     m_channels = std::move(channels);
+    bool right = false;
     for (std::size_t i = 0; i < m_channels.size(); ++i) {
-        QCPGraph* g = addGraph(xAxis, yAxis);
+        right = right || m_channels[i].rightAxis;
+        QCPGraph* g = addGraph(xAxis, m_channels[i].rightAxis ? yAxis2 : yAxis);
         g->setName(m_channels[i].name);
         g->setPen(PlotStyle::seriesPen(int(i)));
         m_graphs.push_back(g);
     }
     yAxis->setLabel(yLabel);
+    yAxis2->setVisible(right);
+    yAxis2->setLabel(right ? rightLabel : QString());
     PlotStyle::setTitle(*this, title);
     legend->setVisible(!m_channels.empty());
     replot();
@@ -87,9 +91,22 @@ void HistoryPlot::showTracking(const RunLayout& layout, int specimen) {
                   [i](const StepRecord& r) {
                       return i < r.elements.size() ? r.elements[i].commanded : qQNaN();
                   }},
-                 {tr("measured"), [i](const StepRecord& r) {
+                 {tr("measured"),
+                  [i](const StepRecord& r) {
                       return i < r.elements.size() ? r.elements[i].deformation : qQNaN();
-                  }}});
+                  }},
+                 {tr("actuator command"),
+                  [i](const StepRecord& r) {
+                      return i < r.elements.size() ? r.elements[i].actuator.commanded : qQNaN();
+                  }},
+                 {tr("held ticks"),
+                  [i](const StepRecord& r) {
+                      const std::int64_t t =
+                          i < r.elements.size() ? r.elements[i].actuator.heldTicks : -1;
+                      return t < 0 ? qQNaN() : double(t);
+                  },
+                  true}},
+                tr("Held ticks [-]"));
 }
 
 void HistoryPlot::showFitError(double threshold) {

@@ -24,12 +24,15 @@ public:
     struct Channel {
         QString name;
         std::function<double(const StepRecord&)> value;
+        bool rightAxis = false; ///< plotted against the right y axis (rightLabel)
     };
 
     explicit HistoryPlot(QWidget* parent = nullptr);
 
-    /// Replace the graphs: one per channel; y axis labelled yLabel (with its unit).
-    void setChannels(const QString& title, const QString& yLabel, std::vector<Channel> channels);
+    /// Replace the graphs: one per channel; y axis labelled yLabel (with its unit); channels
+    /// with rightAxis against a right y axis labelled rightLabel (shown only then).
+    void setChannels(const QString& title, const QString& yLabel, std::vector<Channel> channels,
+                     const QString& rightLabel = QString());
     /// Channels for the displacement of every DOF of layout [m].
     void showDisplacements(const RunLayout& layout);
     /// One channel: the ground acceleration [m/s^2].
@@ -40,7 +43,11 @@ public:
     /// Force (moment for rotational elements) of each element in `elements` (indices into
     /// layout), which must share one force unit (that of the first).
     void showForces(const RunLayout& layout, const std::vector<int>& elements);
-    /// Commanded and measured deformation of element `specimen` (an experimental element).
+    /// Commanded and measured deformation of element `specimen` (an experimental element),
+    /// the actuator's own command as its control reported it (ElementSample::actuator; the
+    /// predictor-corrector's command for hsmu-controller) and, on the right axis, the ticks
+    /// the controller held waiting for a late target. Channels a control does not report
+    /// stay empty.
     void showTracking(const RunLayout& layout, int specimen);
     /// The inspector's normalized fit error [-] (StepRecord::updating.fitError) and its
     /// threshold line (NaN: none).

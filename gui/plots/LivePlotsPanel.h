@@ -6,7 +6,8 @@
 //   force          force / moment history of the specimen and its twins
 //   displacement   every DOF's displacement history [m]
 //   ground motion  the ground acceleration [m/s^2] with a time cursor at the latest row
-//   tracking       the specimen's commanded vs measured deformation
+//   tracking       the specimen's commanded vs measured deformation, the actuator's own command
+//                  and (right axis) the ticks its controller held (HistoryPlot::showTracking)
 //   fit error      the inspector's normalized RMS error with its threshold line (updating)
 //   parameters     one small ParameterPlot per identified parameter: estimate, ± 2 sigma
 //                  band, identification bounds (updating)

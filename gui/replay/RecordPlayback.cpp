@@ -21,6 +21,14 @@ StepRecord RecordPlayback::rowAt(const RecordData& d, int i) {
         e.deformation = d.deformation(i, j);
         e.force = d.force(i, j);
         e.commanded = d.commanded(i, j);
+        if (i < d.actuatorCommanded.rows() && j < d.actuatorCommanded.cols()) {
+            e.actuator.commanded = d.actuatorCommanded(i, j);
+            e.actuator.measured = d.actuatorMeasured(i, j);
+            e.actuator.heldTicks =
+                std::isnan(d.heldTicks(i, j)) ? -1 : std::int64_t(d.heldTicks(i, j));
+            e.actuator.flags =
+                std::isnan(d.actuatorFlags(i, j)) ? -1 : std::int64_t(d.actuatorFlags(i, j));
+        }
     }
     r.hasUpdating = d.layout.updating.has_value() && d.parameters.rows() > i;
     if (r.hasUpdating) {

@@ -16,7 +16,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <atomic>
+#include <condition_variable>
 #include <cstring>
+#include <mutex>
 #include <thread>
 
 using namespace hsmu;
@@ -277,6 +280,66 @@ private slots:
         const auto r = p.receive(256);
         QVERIFY2(r, p.error.c_str());
         QCOMPARE((*r)[0], 0.002); // the first frame back is the daq reply, not a matrix
+    }
+
+    // OpenFresco has no hold message: the emergency hold (another thread) shuts the connection
+    // down while measure() is blocked on a site that read [6] and stays silent; the site sees
+    // the connection closed before measure() has returned, and measure() returns the hold
+    // (not its 30 s deadline).
+    void emergencyHoldClosesABlockedSimAppRead() {
+        constexpr int N = 16;
+        std::mutex mu;
+        std::condition_variable cv;
+        bool askedForDaq = false;
+        std::atomic<bool> measureReturned{false};
+        ScriptedServer server([&](OfSocket& sock, std::vector<std::string>& notes) {
+            std::vector<std::uint8_t> b;
+            if (!readBytes(sock, b, 44, notes, "header") || !readBytes(sock, b, N * 8, notes, "probe"))
+                return;
+            std::string e;
+            auto f = frame({0.0, 0.0}, N);
+            sock.write(f.data(), f.size(), kWait, e);
+            if (!readBytes(sock, b, N * 8, notes, "trial") || !readBytes(sock, b, N * 8, notes, "get"))
+                return;
+            {
+                std::lock_guard lock(mu);
+                askedForDaq = true;
+            }
+            cv.notify_all();
+            std::uint8_t extra;
+            const bool more = sock.read(&extra, 1, kWait, e); // silent: wait for the client
+            notes.push_back(more ? "extra bytes"
+                                 : measureReturned ? "closed after measure() returned"
+                                                   : "closed while measure() was blocked");
+        });
+        QVERIFY(server.ok());
+        SimAppControl c("127.0.0.1", server.port(), "Element 1", ofOptions(N));
+        const ControlResult p = c.prepare(0.02);
+        QVERIFY2(p.ok, p.reason.c_str());
+        QVERIFY(c.setTarget(0.002).ok);
+        ControlResult r;
+        std::thread measuring([&] {
+            ControlMeasurement m;
+            r = c.measure(m);
+            measureReturned = true;
+        });
+        {
+            std::unique_lock lock(mu);
+            QVERIFY(cv.wait_for(lock, std::chrono::duration<double>(kWait),
+                                [&] { return askedForDaq; }));
+        }
+        c.emergencyHold("test");
+        measuring.join();
+        server.join();
+        QVERIFY(!r.ok);
+        QVERIFY2(r.reason.find("emergency hold: test") != std::string::npos, r.reason.c_str());
+        QCOMPARE(server.notes, std::vector<std::string>{"closed while measure() was blocked"});
+        QVERIFY(!c.setTarget(0.003).ok); // held until resumed; then the link is down
+        c.hold("test");
+        c.resume();
+        const ControlResult again = c.setTarget(0.003);
+        QVERIFY(!again.ok);
+        QVERIFY2(again.reason.find("restart the test") != std::string::npos, again.reason.c_str());
     }
 
     void simAppClientFramesByteByByte() {

@@ -100,10 +100,14 @@ private slots:
         QCOMPARE(panel.forceHistory().graph(1)->dataCount(), n);
         QCOMPARE(panel.displacementHistory().graphCount(), int(m_run.layout.dofNames.size()));
         QCOMPARE(panel.displacementHistory().graph(0)->dataCount(), n);
-        QCOMPARE(panel.tracking().graphCount(), 2);
+        // Tracking: commanded, measured, the actuator's command, held ticks (right axis).
+        QCOMPARE(panel.tracking().graphCount(), 4);
         QCOMPARE(panel.tracking().graph(0)->dataCount(), n);
         QCOMPARE(panel.tracking().graph(0)->data()->at(150)->value,
                  mid.elements[std::size_t(specimen)].commanded);
+        QCOMPARE(panel.tracking().graph(2)->data()->at(150)->value,
+                 mid.elements[std::size_t(specimen)].actuator.commanded);
+        QCOMPARE(panel.tracking().graph(3)->valueAxis(), panel.tracking().yAxis2);
         QCOMPARE(panel.fitError().graph(0)->dataCount(), n);
 
         // Ground motion: the whole applied record (t <= 3 s at its own 0.02 s interval) with

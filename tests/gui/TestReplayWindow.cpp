@@ -110,6 +110,13 @@ private slots:
         const QCPGraph& fit = *panel.fitError().graph(0);
         for (int i = 0; i < n; ++i)
             QCOMPARE(fit.data()->at(i)->value, d.fitError(i));
+        // The tracking plot's actuator command is /elements/actuator/commanded (NaN at step 0).
+        QCOMPARE(d.actuatorCommanded.rows(), n);
+        const QCPGraph& actuator = *panel.tracking().graph(2);
+        QCOMPARE(actuator.dataCount(), n);
+        for (int i = 1; i < n; ++i)
+            QCOMPARE(actuator.data()->at(i)->value, d.actuatorCommanded(i, specimen));
+        QVERIFY(std::isnan(actuator.data()->at(0)->value));
         // The whole ground motion from the record, the cursor at the last step's time.
         const QCPGraph& ground = *panel.groundMotion().graph(0);
         QCOMPARE(ground.dataCount(), n);

@@ -93,9 +93,24 @@ void TestRecordCsvExport::valuesEqualTheDatasets() {
     const std::string out = dir.filePath("csv").toStdString();
     std::filesystem::create_directory(out);
     const auto files = exportRecordCsv(d, out);
-    QCOMPARE(files.size(), std::size_t(7));
+    QCOMPARE(files.size(), std::size_t(8));
     const int n = d.rows();
     QCOMPARE(n, 201);
+
+    // actuators.csv: one block of four columns per specimen (Element 1 here).
+    const auto actuators = readCsv(out + "/actuators.csv");
+    QCOMPARE(actuators.size(), std::size_t(n + 1));
+    QCOMPARE(actuators[0],
+             (std::vector<std::string>{"step", "time [s]", "Element 1 actuator commanded [rad]",
+                                       "Element 1 actuator measured [rad]",
+                                       "Element 1 held ticks [-]", "Element 1 flags [-]"}));
+    for (int i = 0; i < n; ++i) {
+        const auto& r = actuators[std::size_t(i + 1)];
+        QVERIFY(same(r[2], d.actuatorCommanded(i, 0)));
+        QVERIFY(same(r[3], d.actuatorMeasured(i, 0)));
+        QVERIFY(same(r[4], d.heldTicks(i, 0)));
+        QVERIFY(same(r[5], d.actuatorFlags(i, 0)));
+    }
 
     const auto steps = readCsv(out + "/steps.csv");
     QCOMPARE(steps.size(), std::size_t(n + 1));

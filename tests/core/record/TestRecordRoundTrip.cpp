@@ -113,6 +113,24 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
             QVERIFY(same(d.force(i, c), r.elements[j].force));
             QVERIFY(same(d.commanded(i, c), r.elements[j].commanded));
             nanCommanded += std::isnan(d.commanded(i, c)) ? 1 : 0;
+            // Actuator channels: as recorded, and for the in-process virtual specimen the
+            // commanded position is the target and the measured one the measured deformation.
+            const ActuatorChannels& ac = r.elements[j].actuator;
+            QVERIFY(same(d.actuatorCommanded(i, c), ac.commanded));
+            QVERIFY(same(d.actuatorMeasured(i, c), ac.measured));
+            QCOMPARE(std::isnan(d.heldTicks(i, c)), ac.heldTicks < 0);
+            QCOMPARE(std::isnan(d.actuatorFlags(i, c)), ac.flags < 0);
+            if (ac.flags >= 0)
+                QCOMPARE(d.actuatorFlags(i, c), double(ac.flags));
+            if (layout.elements[j].experimental && i > 0) {
+                QVERIFY(same(d.actuatorCommanded(i, c), r.elements[j].commanded));
+                QVERIFY(same(d.actuatorMeasured(i, c), r.elements[j].deformation));
+                QVERIFY(d.actuatorFlags(i, c) == 0.0 || d.actuatorFlags(i, c) == 1.0);
+                QVERIFY(std::isnan(d.heldTicks(i, c)));
+            } else {
+                QVERIFY(std::isnan(d.actuatorCommanded(i, c)));
+                QVERIFY(std::isnan(d.actuatorFlags(i, c)));
+            }
         }
         QVERIFY(r.hasUpdating);
         for (Eigen::Index k = 0; k < nPar; ++k) {
