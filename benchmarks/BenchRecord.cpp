@@ -12,7 +12,7 @@
 #include "core/identification/OfflineIdentification.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
 #include "core/output/RunLayout.h"
 
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 
 namespace hsmu {

@@ -30,8 +30,8 @@
 // Thread rules: one thread (the test's); HDF5 is not used from any other thread by core.
 
 #include "core/output/RunLayout.h"
-#include "core/test/Alarm.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/Alarm.h"
+#include "core/experiment/StepRecord.h"
 
 #include <memory>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include "comms/link/ControlFactory.h"
 #include "core/config/TestFactory.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/app/RecordBuffer.h"
 #include "gui/app/TestWorker.h"
 

@@ -2,7 +2,7 @@
 
 #include "core/output/RunLayout.h"
 #include "core/output/RunSummary.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 #include "gui/app/RecordBuffer.h"
 

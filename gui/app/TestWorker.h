@@ -29,7 +29,7 @@
 // thread. Destroy after the thread has finished.
 
 #include "core/record/RecordWriter.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 #include "core/updating/Reporter.h"
 #include "gui/app/AlarmMetaType.h"
 #include "gui/app/OperatorEvent.h"

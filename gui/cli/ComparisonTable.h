@@ -6,7 +6,7 @@
 // where known).
 // Thread rules: pure functions, any thread.
 
-#include "core/test/ComparisonProtocol.h"
+#include "core/experiment/ComparisonProtocol.h"
 #include "core/updating/ParameterSet.h"
 
 #include <QCoreApplication>

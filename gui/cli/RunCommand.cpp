@@ -6,7 +6,7 @@
 #include "core/output/RunSummary.h"
 #include "core/output/StepCsvWriter.h"
 #include "core/record/RecordWriter.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/PresetLibrary.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/RecordCollector.h"

@@ -10,7 +10,7 @@
 // Names are made file-safe (PlotExporter::fileSafe).
 // Thread rules: GUI thread only.
 
-#include "core/test/ComparisonProtocol.h"
+#include "core/experiment/ComparisonProtocol.h"
 #include "core/updating/ParameterSet.h"
 
 #include <QCoreApplication>

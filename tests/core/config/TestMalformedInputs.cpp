@@ -9,7 +9,7 @@
 #include "core/config/TestFactory.h"
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/identification/MeasuredDataCsv.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

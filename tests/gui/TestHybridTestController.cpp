@@ -4,7 +4,7 @@
 // at, through the worker (read back with the real RecordReader).
 
 #include "core/record/RecordReader.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/PresetLibrary.h"
 #include "gui/app/TestController.h"
 
@@ -54,7 +54,7 @@ struct Receiver {
 
 } // namespace
 
-class TestTestController : public QObject {
+class HybridTestControllerTest : public QObject {
     Q_OBJECT
 private slots:
     void runsToTheEndWithPauseAndResume() {
@@ -217,5 +217,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestTestController)
-#include "TestTestController.moc"
+QTEST_MAIN(HybridTestControllerTest)
+#include "HybridTestControllerTest.moc"

@@ -14,8 +14,8 @@
 
 #include "core/groundmotion/GroundMotion.h"
 #include "core/integration/StabilityCheck.h"
-#include "core/test/Alarm.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/Alarm.h"
+#include "core/experiment/StepRecord.h"
 
 #include <memory>
 #include <string>

@@ -1,9 +1,9 @@
-#include "core/test/ComparisonProtocol.h"
+#include "core/experiment/ComparisonProtocol.h"
 
 #include "core/config/JsonCursor.h"
 #include "core/config/TestFactory.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 
 #include <algorithm>

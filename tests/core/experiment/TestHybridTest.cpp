@@ -1,4 +1,4 @@
-// Tests of HybridTest (core/test/HybridTest.h), the step loop, on an SDOF frame whose
+// Tests of HybridTest (core/experiment/HybridTest.h), the step loop, on an SDOF frame whose
 // spring is either numerical or a VirtualSpecimen behind a recording ExperimentalControl
 // (a test double for the seam that forwards to the specimen and keeps every target).
 // Units: kN, m, s, t. SDOF: m = 2 t, k = 800 kN/m (omega = 20 rad/s), 5 % damping.
@@ -10,7 +10,7 @@
 #include "core/integration/ExplicitNewmark.h"
 #include "core/structure/SpringElement.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <QtTest>
 

@@ -1,4 +1,4 @@
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/util/InputLimits.h"
 
 #include "core/experimental/ExperimentalElement.h"

@@ -1,4 +1,4 @@
-#include "core/test/Alarm.h"
+#include "core/experiment/Alarm.h"
 
 namespace hsmu {
 
