@@ -218,4 +218,4 @@ private slots:
 };
 
 QTEST_MAIN(HybridTestControllerTest)
-#include "HybridTestControllerTest.moc"
+#include "TestHybridTestController.moc"
