@@ -9,7 +9,7 @@
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
-#include "core/identification/OfflineIdentification.h"
+#include "core/offline/OfflineIdentification.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
 #include "core/experiment/HybridTest.h"

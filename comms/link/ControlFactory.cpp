@@ -37,9 +37,12 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
     return makeControlFactory(address, options, LinkSpec{});
 }
 
-ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& options,
+ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& given,
                                   const LinkSpec& link) {
     const std::string protocol = linkProtocol(address, link);
+    TcpControlOptions options = given; // the configuration's timeouts, when it sets them
+    options.connectTimeout = link.connectTimeout.value_or(options.connectTimeout);
+    options.stepDeadline = link.stepDeadline.value_or(options.stepDeadline);
     if (protocol == "builtin")
         return {};
     if (protocol == "simapp" || protocol == "generictcp" || protocol == "adapter") {

@@ -43,7 +43,46 @@ void HybridTest::setUpdater(std::unique_ptr<ModelUpdater> updater)
 
 bool HybridTest::approveUpdate(int proposalId)
 {
-    return m_updater && m_updater->approve(proposalId, *m_structure, m_step, time(), m_alarms);
+    if (!m_updater || !m_updater->approve(proposalId, *m_structure, m_step, time(), m_alarms))
+        return false;
+    revisitUpdatedModel();
+    return true;
+}
+
+void HybridTest::revisitUpdatedModel()
+{
+    // Only an update that changed an element's initial stiffness changes omega_max.
+    bool changed = false;
+    const auto& elements = m_structure->elements();
+    for (std::size_t i = 0; i < elements.size() && i < m_initialStiffness.size(); ++i) {
+        const double k = elements[i]->initialGeneralizedStiffness();
+        changed = changed || k != m_initialStiffness[i];
+        m_initialStiffness[i] = k;
+    }
+    if (!changed)
+        return;
+    const bool wasStable = m_updatedStability.stable;
+    StabilityReport r = m_stability;
+    try {
+        r.omegaMax = m_structure->updatedMaxFrequency();
+    } catch (const std::exception&) {
+        return; // no frequency for this model (e.g. a zero stiffness): nothing to compare
+    }
+    r.omegaDt = r.omegaMax * m_options.dt;
+    r.maxStableDt = r.omegaMax > 0.0 ? r.limit / r.omegaMax : r.maxStableDt;
+    r.stable = !m_integrator->isExplicit() || r.omegaDt <= r.limit;
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "updated model: omega_max dt = %.4g (omega_max = %.4g rad/s, %.4g at the "
+                  "start), limit %.4g; K0 and damping kept from the start",
+                  r.omegaDt, r.omegaMax, m_stability.omegaMax, r.limit);
+    r.message = buf;
+    m_updatedStability = r;
+    if (wasStable && !r.stable)
+        raise(AlarmSeverity::Warning, AlarmKind::Stability,
+              r.message + ": the explicit integration of the updated model may diverge");
+    else if (!wasStable && r.stable)
+        raise(AlarmSeverity::Info, AlarmKind::Stability, r.message);
 }
 
 bool HybridTest::rejectUpdate(int proposalId) { return m_updater && m_updater->reject(proposalId); }
@@ -111,6 +150,10 @@ bool HybridTest::prepare()
     m_totalSteps = std::min<int>(m_totalSteps, int(m_groundMotion.acceleration.size()) - 1);
 
     m_stability = checkStability(*m_structure, *m_integrator, m_options.dt);
+    m_updatedStability = m_stability;
+    m_initialStiffness.clear();
+    for (const auto& e : m_structure->elements())
+        m_initialStiffness.push_back(e->initialGeneralizedStiffness());
     if (!m_stability.stable) {
         if (!m_options.allowUnstable)
             return fail(m_stability.message);
@@ -216,9 +259,12 @@ HybridTest::StepResult HybridTest::step()
         if (std::string notice = x->control().takeNotice(); !notice.empty())
             raise(AlarmSeverity::Warning, AlarmKind::ControlFault, x->name() + ": " + notice);
     std::optional<std::string> updaterHold;
-    if (m_updater)
+    if (m_updater) {
         updaterHold = m_updater->afterCommit(m_step, time(), *m_structure, m_alarms,
                                              m_record.updating);
+        if (!m_record.updating.applied.empty())
+            revisitUpdatedModel();
+    }
     publish();
     if (updaterHold) {
         enterHold(AlarmKind::EstimatorRejected, *updaterHold);

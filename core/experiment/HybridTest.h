@@ -11,10 +11,20 @@
 // A fault never throws out of step(): the test goes to State::Holding with an Alarm saying
 // why, every committed step has already reached the observers, and resume() retries the
 // same step (after the operator changed what caused the hold).
+//
+// The updated model (docs/method.md, "The updated model"): when online updating changes a
+// numerical element's parameters, K0, the Rayleigh damping matrix C (and its coefficients)
+// and the integrator's matrices are KEPT as computed at prepare(): the damping of the test
+// is a property of the structure chosen before it starts, and the explicit schemes' matrices
+// are factored once. The stability check is REVISITED: omega_max of the updated initial
+// stiffness (Structure::updatedMaxFrequency) is computed after every applied update
+// (updatedStability()); a Warning alarm (kind Stability) is raised when an explicit scheme
+// crosses its limit omega_max dt (once per crossing, and an Info alarm when it is back within).
+// The test is not held for it: the step's own checks hold it if the response diverges.
 
 #include "core/groundmotion/GroundMotion.h"
 #include "core/integration/StabilityCheck.h"
-#include "core/experiment/Alarm.h"
+#include "core/util/Alarm.h"
 #include "core/experiment/StepRecord.h"
 
 #include <memory>
@@ -62,6 +72,8 @@ public:
     double dt() const { return m_options.dt; }
     const std::string& lastError() const { return m_lastError; }
     const StabilityReport& stability() const { return m_stability; }
+    /// The stability check of the updated model (equal to stability() until an update).
+    const StabilityReport& updatedStability() const { return m_updatedStability; }
     const std::vector<Alarm>& alarms() const { return m_alarms; }
     const GroundMotion& groundMotion() const { return m_groundMotion; }
     Structure& structure() { return *m_structure; }
@@ -72,6 +84,9 @@ public:
     void setUpdater(std::unique_ptr<ModelUpdater> updater);
     ModelUpdater* updater() { return m_updater.get(); }
     const ModelUpdater* updater() const { return m_updater.get(); }
+    /// Recheck the stability of the updated model (see above) after a numerical element's
+    /// parameters changed; the updater's applied updates and approveUpdate() call it.
+    void revisitUpdatedModel();
     /// Operator decision on a pending update proposal (between steps).
     bool approveUpdate(int proposalId);
     bool rejectUpdate(int proposalId);
@@ -94,6 +109,8 @@ private:
     int m_totalSteps = 0;
     std::string m_lastError;
     StabilityReport m_stability;
+    StabilityReport m_updatedStability;
+    std::vector<double> m_initialStiffness; ///< per element, at the last revisit
     std::vector<Alarm> m_alarms;
     std::vector<StepObserver*> m_observers;
     std::vector<ExperimentalElement*> m_specimens; // owned by the structure

@@ -70,7 +70,7 @@ struct RecordWriter::Impl {
 
     const std::vector<Alarm>* tracked = nullptr;
     std::size_t alarmsSeen = 0;
-    int received = 0, flushed = 0, alarmsFlushed = 0;
+    int received = 0, flushed = 0, alarmsFlushed = 0, notesFlushed = 0;
     bool failed = false, closed = false;
     std::string error;
     Clock::time_point lastFlush = Clock::now();
@@ -327,6 +327,7 @@ void RecordWriter::Impl::writeLogs() {
         noteTime.append(t.data(), m);
         noteStep.append(s.data(), m);
         noteText.append(text.data(), m);
+        notesFlushed += int(m);
     }
 }
 
@@ -494,6 +495,10 @@ int RecordWriter::rowsReceived() const {
 int RecordWriter::rowsFlushed() const {
     return m_d->flushed;
 }
+int RecordWriter::notesFlushed() const {
+    return m_d->notesFlushed;
+}
+
 int RecordWriter::alarmsFlushed() const {
     return m_d->alarmsFlushed;
 }

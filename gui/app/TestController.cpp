@@ -52,8 +52,7 @@ void TestController::teardown() {
 void TestController::load(const TestConfig& cfg, const comms::LinkAddress& controller) {
     teardown();
     m_delivered = 0;
-    comms::TcpControlOptions link;
-    link.connectTimeout = 3.0; // an absent controller is an error within seconds
+    comms::TcpControlOptions link; // LinkTimeouts (core/config/LinkConfig.h), as hsmu run
     link.token = m_token.toStdString();
     std::unique_ptr<HybridTest> test =
         buildHybridTest(cfg, comms::makeControlFactory(controller, link, cfg.link)); // may throw

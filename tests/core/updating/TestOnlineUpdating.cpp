@@ -6,7 +6,7 @@
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/structure/Structure.h"
-#include "core/experiment/ComparisonProtocol.h"
+#include "core/session/ComparisonProtocol.h"
 #include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/UkfIdentifier.h"

@@ -1,9 +1,10 @@
-#include "core/experiment/ComparisonProtocol.h"
+#include "core/session/ComparisonProtocol.h"
 
 #include "core/config/JsonCursor.h"
 #include "core/config/TestFactory.h"
 #include "core/structure/Structure.h"
 #include "core/experiment/HybridTest.h"
+#include "core/session/TestSession.h"
 #include "core/updating/ModelUpdater.h"
 
 #include <algorithm>
@@ -57,7 +58,7 @@ private:
 
 ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
                      const std::string& element, const std::string& dof,
-                     const std::function<void(double)>& progress, const ComparisonHooks& hooks)
+                     const std::function<void(double)>& progress, const std::string& recordDir)
 {
     ComparisonRun run;
     run.name = name;
@@ -72,23 +73,36 @@ ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
     if (e < 0 || d >= static_cast<int>(dofs.size()))
         throw ConfigError(cfg.sourcePath + ": compare: no element '" + element + "' or DOF '" +
                           dof + "'");
+    SessionOptions options; // as fast as possible, no automatic resume
+    if (!recordDir.empty()) {
+        options.recordPath = recordDir + "/" + name + "/record.h5";
+        options.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt, name};
+    }
+    (void)index;
+    TestSession session(std::move(test), options);
+    const HybridTest& t = session.test();
     Collector collector(run, e, d);
-    test->addObserver(&collector);
-    if (hooks.started)
-        hooks.started(index, cfg, *test);
-    if (!test->prepare())
-        throw ConfigError(cfg.sourcePath + ": compare (" + name + "): " + test->lastError());
-    if (test->updater())
-        run.parameterNames = test->updater()->parameterNames();
-    const int total = std::max(1, test->totalSteps());
-    while (test->step() == HybridTest::StepResult::Advanced)
-        if (progress && test->currentStep() % 500 == 0)
-            progress(double(test->currentStep()) / total);
-    if (hooks.finished)
-        hooks.finished(index, *test);
-    run.steps = test->currentStep();
-    run.finalState = testStateName(test->state());
-    for (const auto& a : test->alarms()) {
+    session.addObserver(&collector);
+    if (!session.openRecord())
+        throw ConfigError(session.lastError());
+    if (!session.prepare())
+        throw ConfigError(cfg.sourcePath + ": compare (" + name + "): " + session.lastError());
+    if (t.updater())
+        run.parameterNames = t.updater()->parameterNames();
+    const int total = std::max(1, t.totalSteps());
+    int reported = 0;
+    session.runToEnd([&](const TestSession::Progress&) {
+        if (progress && t.currentStep() / 500 > reported) {
+            reported = t.currentStep() / 500;
+            progress(double(t.currentStep()) / total);
+        }
+    });
+    session.removeObserver(&collector);
+    if (!session.finish())
+        run.recordError = session.lastError();
+    run.steps = t.currentStep();
+    run.finalState = testStateName(t.state());
+    for (const auto& a : t.alarms()) {
         std::ostringstream s;
         s << "t = " << a.time << " s: " << a.message;
         run.alarms.push_back(s.str());
@@ -165,8 +179,7 @@ TestConfig initialConfig(const TestConfig& cfg)
 }
 
 ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o,
-                               const std::function<void(int, double)>& progress,
-                               const ComparisonHooks& hooks)
+                               const std::function<void(int, double)>& progress)
 {
     if (!cfg.updating.enabled)
         throw ConfigError(cfg.sourcePath + ": compare needs an enabled \"updating\" section");
@@ -186,9 +199,9 @@ ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o
                 progress(i, f);
         };
     };
-    r.reference = runOne(0, "reference", referenceConfig(cfg, o), r.element, r.dof, p(0), hooks);
-    r.initial = runOne(1, "initial", initialConfig(cfg), r.element, r.dof, p(1), hooks);
-    r.updated = runOne(2, "updated", cfg, r.element, r.dof, p(2), hooks);
+    r.reference = runOne(0, "reference", referenceConfig(cfg, o), r.element, r.dof, p(0), o.recordDir);
+    r.initial = runOne(1, "initial", initialConfig(cfg), r.element, r.dof, p(1), o.recordDir);
+    r.updated = runOne(2, "updated", cfg, r.element, r.dof, p(2), o.recordDir);
     r.initialMetric = metric(r.initial, r.reference);
     r.updatedMetric = metric(r.updated, r.reference);
     return r;

@@ -19,7 +19,7 @@
 // and parameter. Parameters are in the law's units (normalized by uRef / fRef for Bouc-Wen).
 // Throws std::runtime_error naming a file that cannot be written.
 
-#include "core/identification/OfflineIdentification.h"
+#include "core/offline/OfflineIdentification.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "core/experiment/Alarm.h"
+#include "core/util/Alarm.h"
 
 namespace hsmu {
 

@@ -1,4 +1,4 @@
-#include "core/identification/OfflineIdentification.h"
+#include "core/offline/OfflineIdentification.h"
 
 #include "core/config/TestFactory.h"
 #include "core/config/UpdatingConfig.h"

@@ -31,9 +31,9 @@
 // Thread rules: none; independent calls may run on different threads.
 
 #include "core/identification/Calibration.h"
-#include "core/identification/IdentificationSettings.h"
-#include "core/identification/SpecimenHistory.h"
-#include "core/updating/ParameterSet.h"
+#include "core/offline/IdentificationSettings.h"
+#include "core/offline/SpecimenHistory.h"
+#include "core/identification/ParameterSet.h"
 
 #include <Eigen/Core>
 

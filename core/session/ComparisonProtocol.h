@@ -22,6 +22,10 @@ namespace hsmu {
 struct ComparisonOptions {
     std::string element; ///< compared element; "" = the first updating target
     std::string dof;     ///< compared DOF; "" = that element's DOF
+    /// One HDF5 record per run (docs/recording.md): DIR/reference/record.h5,
+    /// DIR/initial/record.h5, DIR/updated/record.h5, root attribute "run" naming the run;
+    /// "" records nothing. Each run is a TestSession (core/session/TestSession.h).
+    std::string recordDir;
 };
 
 /// One run's histories (physical units: s, rad or m, kN m or kN, m).
@@ -35,6 +39,7 @@ struct ComparisonRun {
     int steps = 0;
     std::string finalState;
     std::vector<std::string> alarms; ///< "t = ... s: message"
+    std::string recordError;         ///< why its record could not be written ("" = fine)
 };
 
 struct ComparisonMetric {
@@ -49,16 +54,6 @@ struct ComparisonResult {
     ComparisonMetric initialMetric, updatedMetric;
 };
 
-class HybridTest;
-
-/// Optional calls around each run (index 0 reference, 1 initial, 2 updated), e.g. to record
-/// it: `started` after the run's test is built and before prepare() (add observers here),
-/// `finished` after its last step, before the test is destroyed (remove them here).
-struct ComparisonHooks {
-    std::function<void(int run, const TestConfig& cfg, HybridTest& test)> started;
-    std::function<void(int run, HybridTest& test)> finished;
-};
-
 /// The three configurations (exposed for tests). Throws ConfigError if cfg has no updating
 /// section, the compared element is not numerical, or the specimen has no `specimen` spec.
 TestConfig referenceConfig(const TestConfig& cfg, const ComparisonOptions& o = {});
@@ -66,8 +61,7 @@ TestConfig initialConfig(const TestConfig& cfg);
 
 /// Run all three to the end (compute only). progress(run index 0..2, fraction) may be empty.
 ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o = {},
-                               const std::function<void(int, double)>& progress = {},
-                               const ComparisonHooks& hooks = {});
+                               const std::function<void(int, double)>& progress = {});
 
 /// NRMSE and peak error of x against ref over their common length.
 void compareSeries(const std::vector<double>& x, const std::vector<double>& ref, double& nrmse,

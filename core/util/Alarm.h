@@ -1,5 +1,6 @@
 #pragma once
-// Alarm: something the operator must know, with the test time, a severity and a reason.
+// Alarm: something the operator must know, with the test time, a severity and a reason
+// (in core/util: raised by updating, experiment and record alike, so below all of them).
 // core returns enums and text in English; the GUI chooses how to show (and translate) kinds.
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "core/identification/SpecimenHistory.h"
+#include "core/offline/SpecimenHistory.h"
 
 #include "core/record/RecordData.h"
 

@@ -1,4 +1,4 @@
-#include "core/identification/MeasuredDataCsv.h"
+#include "core/offline/MeasuredDataCsv.h"
 
 #include "core/util/InputLimits.h"
 #include "core/util/Units.h"

@@ -1,8 +1,8 @@
-#include "core/identification/IdentificationSettings.h"
+#include "core/offline/IdentificationSettings.h"
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/UpdatingConfig.h"
-#include "core/updating/ParameterSet.h"
+#include "core/identification/ParameterSet.h"
 
 namespace hsmu {
 

@@ -1,4 +1,4 @@
-#include "core/output/ComparisonSummary.h"
+#include "core/session/ComparisonSummary.h"
 
 #include <cmath>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "core/identification/OfflineIdentificationReport.h"
+#include "core/offline/OfflineIdentificationReport.h"
 
 #include "core/record/CsvFile.h"
 #include "core/record/CsvText.h"

@@ -17,7 +17,7 @@
 // Thread rules: pure functions, any thread.
 
 #include "core/config/TestConfig.h"
-#include "core/experiment/ComparisonProtocol.h"
+#include "core/session/ComparisonProtocol.h"
 
 #include <nlohmann/json.hpp>
 

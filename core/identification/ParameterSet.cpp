@@ -1,4 +1,4 @@
-#include "core/updating/ParameterSet.h"
+#include "core/identification/ParameterSet.h"
 
 namespace hsmu {
 

@@ -34,7 +34,7 @@
 //      deg)"
 // Thread rules: none.
 
-#include "core/identification/SpecimenHistory.h"
+#include "core/offline/SpecimenHistory.h"
 
 #include <istream>
 #include <optional>

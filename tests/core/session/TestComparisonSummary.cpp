@@ -4,7 +4,7 @@
 
 #include "OutputFixture.h"
 
-#include "core/output/ComparisonSummary.h"
+#include "core/session/ComparisonSummary.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
