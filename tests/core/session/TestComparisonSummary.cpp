@@ -2,7 +2,7 @@
 // every number is known), null for non-finite numbers, the specimen's true parameters from
 // the configuration, and the file written.
 
-#include "OutputFixture.h"
+#include "tests/core/output/OutputFixture.h"
 
 #include "core/session/ComparisonSummary.h"
 
