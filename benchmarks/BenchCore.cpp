@@ -10,7 +10,7 @@
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
 #include "core/hysteresis/BoucWenPinching.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <benchmark/benchmark.h>
 

@@ -31,7 +31,7 @@
 #include "comms/openfresco/OfSocket.h"
 #include "comms/openfresco/SimAppControl.h"
 #include "core/config/ConfigLoader.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include "../tests/comms/SilentSite.h"
 

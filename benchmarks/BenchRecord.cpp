@@ -9,10 +9,10 @@
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
-#include "core/identification/OfflineIdentification.h"
+#include "core/offline/OfflineIdentification.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <benchmark/benchmark.h>
 

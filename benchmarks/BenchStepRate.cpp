@@ -13,7 +13,7 @@
 // Run: QT_QPA_PLATFORM=offscreen build/bin/hsmu_bench_step_rate --benchmark_repetitions=3
 
 #include "core/config/TestFactory.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/ConfigOverrides.h"
 #include "gui/PresetLibrary.h"
 #include "gui/app/MainWindow.h"

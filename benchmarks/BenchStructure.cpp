@@ -14,7 +14,7 @@
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,6 +1,6 @@
 # Install rules and the Debian package (docs/console.md, "Installing").
 #   cmake --install build --prefix PREFIX   puts
-#     PREFIX/bin/hsmu, PREFIX/bin/hsmu-controller
+#     PREFIX/bin/hsmu, PREFIX/bin/hsmu-console (the console, started by hsmu), PREFIX/bin/hsmu-controller
 #     PREFIX/share/hsmu/presets/*.json            (also embedded in both programs)
 #     PREFIX/share/hsmu/translations/hsmu_*.qm    (also embedded in hsmu)
 #     PREFIX/share/hsmu/opensees/hsmu_twin.tcl    (the OpenSees side of numerical twins)
@@ -15,7 +15,7 @@ include(GNUInstallDirs)
 set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 if(TARGET hsmu)
-  install(TARGETS hsmu RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(TARGETS hsmu hsmu-console RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 install(TARGETS hsmu-controller RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/presets/

@@ -1,14 +1,11 @@
 #include "gui/Launcher.h"
 
 #include "gui/app/ConsoleCommand.h"
-#include "gui/app/ConsoleSettings.h"
-#include "gui/app/Translations.h"
-#include "gui/cli/CompareCommand.h"
-#include "gui/cli/ConsoleStreams.h"
-#include "gui/cli/ExportCommand.h"
-#include "gui/cli/MaterialCommand.h"
-#include "gui/cli/ReplayCommand.h"
-#include "gui/cli/RunCommand.h"
+#include "gui/cli/CliLauncher.h"
+#include "gui/cli/CliPlots.h"
+#include "gui/plots/ComparisonPlotExporter.h"
+#include "gui/plots/PlotExporter.h"
+#include "gui/plots/PlotReferences.h"
 #include "gui/replay/ReplayWindowCommand.h"
 
 #include <QApplication>
@@ -22,14 +19,21 @@ namespace hsmu::gui {
 
 namespace {
 
-void describeApplication() {
-    QCoreApplication::setApplicationName(QStringLiteral("hsmu"));
-    QCoreApplication::setOrganizationName(QStringLiteral("HSMU"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(HSMU_VERSION));
-}
-
-void installTranslator(QCoreApplication& app) {
-    Translations::install(app, ConsoleSettings::language()); // "" = the system locale
+/// --plots of `hsmu run` / `hsmu compare` draw with the console's plots (gui/cli/CliPlots.h).
+void installPlots() {
+    CliPlots& plots = CliPlots::installed();
+    plots.run = [](const QString& dir, const RunLayout& layout,
+                   const std::vector<StepRecord>& records, const TestConfig& cfg) {
+        QStringList errors;
+        PlotExporter::writeRunPlots(dir, layout, records, &errors, PlotReferences::of(cfg));
+        return errors;
+    };
+    plots.compare = [](const QString& dir, const ComparisonResult& result,
+                       const ParameterValues& truth) {
+        QStringList errors;
+        ComparisonPlotExporter::write(dir, result, truth, &errors);
+        return errors;
+    };
 }
 
 bool headless() {
@@ -46,33 +50,16 @@ bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names
     return false;
 }
 
-/// A headless subcommand that draws nothing unless --plots is given.
-int runHeadless(const QString& sub, const QStringList& arguments) {
-    if (sub == QLatin1String("run"))
-        return RunCommand::exec(arguments);
-    if (sub == QLatin1String("compare"))
-        return CompareCommand::exec(arguments);
-    if (sub == QLatin1String("export"))
-        return ExportCommand::exec(arguments);
-    if (sub == QLatin1String("replay"))
-        return ReplayCommand::exec(arguments); // --identify / --import
-    return MaterialCommand::exec(arguments);
-}
-
 int dispatch(int argc, char** argv) {
     const QString sub = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool plotting = sub == QLatin1String("run") || sub == QLatin1String("compare");
-    const bool plots = plotting && hasArgument(argc, argv, {"--plots"});
     // `hsmu replay FILE` opens the replay window; --identify / --import are headless (gui/cli).
     const bool replayWindow =
         sub == QLatin1String("replay") && !hasArgument(argc, argv, {"--identify", "--import"});
-    const bool dataOnly = sub == QLatin1String("material") || sub == QLatin1String("export") ||
-                          (sub == QLatin1String("replay") && !replayWindow);
-    if (dataOnly || (plotting && !plots)) {
+    if (CliLauncher::headlessCommand(argc, argv)) {
         QCoreApplication app(argc, argv); // no windowing system needed
-        describeApplication();
-        installTranslator(app);
-        return runHeadless(sub, app.arguments());
+        CliLauncher::describeApplication();
+        return CliLauncher::runHeadless(app.arguments());
     }
     if (!plotting && !replayWindow && !sub.isEmpty() && !sub.startsWith(QLatin1Char('-'))) {
         QTextStream(stderr) << "hsmu: unknown subcommand '" << sub
@@ -101,10 +88,10 @@ int dispatch(int argc, char** argv) {
         qputenv("QT_QPA_PLATFORM", "offscreen"); // before the QApplication exists
     }
     QApplication app(argc, argv);
-    describeApplication();
-    installTranslator(app);
+    CliLauncher::describeApplication();
+    installPlots();
     if (plotting)
-        return runHeadless(sub, app.arguments());
+        return CliLauncher::runHeadless(app.arguments());
     if (replayWindow)
         return ReplayWindowCommand::exec(app.arguments());
     return ConsoleCommand::exec(app.arguments());

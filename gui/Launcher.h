@@ -1,5 +1,7 @@
 #pragma once
-// Launcher: the `hsmu` executable's entry point. The first argument selects what runs:
+// Launcher: the `hsmu-console` executable's entry point (the console, the replay window and
+// every --plots command; the light `hsmu` runs headless commands itself and hands the rest
+// here, gui/cli/CliLauncher.h). The first argument selects what runs:
 //   hsmu run CONFIG ...       RunCommand (a QCoreApplication; with --plots a QApplication,
 //                             on the "offscreen" platform when no display is set)
 //   hsmu compare CONFIG ...   CompareCommand (like run: --plots needs a QApplication)

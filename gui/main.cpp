@@ -1,4 +1,4 @@
-// hsmu: the console and its headless subcommands (see gui/Launcher.h).
+// hsmu-console: the console, the replay window and --plots (see gui/Launcher.h).
 #include "gui/Launcher.h"
 
 int main(int argc, char** argv) {

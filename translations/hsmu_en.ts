@@ -126,6 +126,10 @@
         <source>  outputs: %1</source>
         <translation>  outputs: %1</translation>
     </message>
+    <message>
+        <source>--plots: this program cannot draw (run it through hsmu)</source>
+        <translation>--plots: this program cannot draw (run it through hsmu)</translation>
+    </message>
 </context>
 <context>
     <name>ComparisonPlotExporter</name>
@@ -746,16 +750,8 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1: the plot could not be written</translation>
     </message>
     <message>
-        <source>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting (attempt %4 of %5)</source>
-        <translation>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting (attempt %4 of %5)</translation>
-    </message>
-    <message>
         <source>hsmu run: --approval ignored: the configuration has no updating</source>
         <translation>hsmu run: --approval ignored: the configuration has no updating</translation>
-    </message>
-    <message>
-        <source>%1: the record could not be written: %2</source>
-        <translation>%1: the record could not be written: %2</translation>
     </message>
     <message>
         <source>hsmu run: connecting to %1 (%2 protocol)</source>
@@ -764,6 +760,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
         <translation>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</translation>
+    </message>
+    <message>
+        <source>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting in %4 s (attempt %5 of %6)</source>
+        <translation>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting in %4 s (attempt %5 of %6)</translation>
+    </message>
+    <message>
+        <source>--plots: this program cannot draw (run it through hsmu)</source>
+        <translation>--plots: this program cannot draw (run it through hsmu)</translation>
     </message>
 </context>
 <context>
@@ -2408,6 +2412,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>the note was not kept: this test is not recorded</source>
         <translation>the note was not kept: this test is not recorded</translation>
+    </message>
+    <message>
+        <source>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</source>
+        <translation>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</translation>
     </message>
 </context>
 </TS>

@@ -126,6 +126,10 @@
         <source>  outputs: %1</source>
         <translation>  salidas: %1</translation>
     </message>
+    <message>
+        <source>--plots: this program cannot draw (run it through hsmu)</source>
+        <translation>--plots: este programa no puede dibujar (ejecútelo a través de hsmu)</translation>
+    </message>
 </context>
 <context>
     <name>ComparisonPlotExporter</name>
@@ -722,10 +726,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 %  t = %2 s  %3 pasos/s</translation>
     </message>
     <message>
-        <source>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting (attempt %4 of %5)</source>
-        <translation>hsmu run: fallo del enlace en t = %1 s (paso %2): %3; reconectando (intento %4 de %5)</translation>
-    </message>
-    <message>
         <source>hsmu run: --approval ignored: the configuration has no updating</source>
         <translation>hsmu run: se ignora --approval: la configuración no tiene actualización del modelo</translation>
     </message>
@@ -746,10 +746,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>hsmu run: el ensayo se detuvo inesperadamente (estado %1)</translation>
     </message>
     <message>
-        <source>%1: the record could not be written: %2</source>
-        <translation>%1: no se pudo escribir el registro: %2</translation>
-    </message>
-    <message>
         <source>%1: write failed</source>
         <translation>%1: error de escritura</translation>
     </message>
@@ -764,6 +760,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
         <translation>hsmu run: steps.csv no se escribe (%1 columnas); record.h5 guarda todas las columnas (hsmu export escribe CSV a partir de él)</translation>
+    </message>
+    <message>
+        <source>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting in %4 s (attempt %5 of %6)</source>
+        <translation>hsmu run: fallo del enlace en t = %1 s (paso %2): %3; reconectando en %4 s (intento %5 de %6)</translation>
+    </message>
+    <message>
+        <source>--plots: this program cannot draw (run it through hsmu)</source>
+        <translation>--plots: este programa no puede dibujar (ejecútelo a través de hsmu)</translation>
     </message>
 </context>
 <context>
@@ -2408,6 +2412,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>the note was not kept: this test is not recorded</source>
         <translation>la nota no se guardó: este ensayo no se registra</translation>
+    </message>
+    <message>
+        <source>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</source>
+        <translation>fallo del enlace (%1): reconectando en %2 s (intento %3 de %4)</translation>
     </message>
 </context>
 </TS>

@@ -126,6 +126,10 @@
         <source>  outputs: %1</source>
         <translation>  输出：%1</translation>
     </message>
+    <message>
+        <source>--plots: this program cannot draw (run it through hsmu)</source>
+        <translation>--plots：此程序无法绘图（请通过 hsmu 运行）</translation>
+    </message>
 </context>
 <context>
     <name>ComparisonPlotExporter</name>
@@ -722,10 +726,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 %  t = %2 s  %3 步/s</translation>
     </message>
     <message>
-        <source>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting (attempt %4 of %5)</source>
-        <translation>hsmu run：t = %1 s（第 %2 步）时链路故障：%3；正在重新连接（第 %4 次，共 %5 次）</translation>
-    </message>
-    <message>
         <source>hsmu run: --approval ignored: the configuration has no updating</source>
         <translation>hsmu run：已忽略 --approval：该配置未启用模型更新</translation>
     </message>
@@ -746,10 +746,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>hsmu run：试验意外停止（状态 %1）</translation>
     </message>
     <message>
-        <source>%1: the record could not be written: %2</source>
-        <translation>%1：无法写出记录：%2</translation>
-    </message>
-    <message>
         <source>%1: write failed</source>
         <translation>%1：写入失败</translation>
     </message>
@@ -764,6 +760,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
         <translation>hsmu run：未写入 steps.csv（%1 列）；record.h5 保存所有列（hsmu export 可由其导出 CSV）</translation>
+    </message>
+    <message>
+        <source>hsmu run: link fault at t = %1 s (step %2): %3; reconnecting in %4 s (attempt %5 of %6)</source>
+        <translation>hsmu run：t = %1 s（第 %2 步）链路故障：%3；%4 s 后重新连接（第 %5 次，共 %6 次）</translation>
+    </message>
+    <message>
+        <source>--plots: this program cannot draw (run it through hsmu)</source>
+        <translation>--plots：此程序无法绘图（请通过 hsmu 运行）</translation>
     </message>
 </context>
 <context>
@@ -2405,6 +2409,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>the note was not kept: this test is not recorded</source>
         <translation>备注未保存：此试验没有记录</translation>
+    </message>
+    <message>
+        <source>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</source>
+        <translation>链路故障（%1）：%2 s 后重新连接（第 %3 次，共 %4 次）</translation>
     </message>
 </context>
 </TS>

@@ -34,7 +34,8 @@ ControllerSettings parseControllerSettings(const TestConfig& cfg) {
     const JsonCursor c = root.child("controller");
     // protocol, dataSize, ctrlSizes, daqSizes, initFile: the link (core/config/LinkConfig.h).
     c.allowOnly({"rate", "stepDuration", "predictFraction", "holdRamp", "idleTimeout", "protocol",
-                 "dataSize", "ctrlSizes", "daqSizes", "initFile", "serverDofs"});
+                 "dataSize", "ctrlSizes", "daqSizes", "initFile", "serverDofs",
+                 "connectTimeout", "stepDeadline"}); // the last two: the console's (LinkSpec)
     s.rate = c.number("rate", s.rate);
     if (!(s.rate > 0.0 && s.rate <= 100000.0))
         c.fail("rate", "expected a loop rate in (0, 100000] Hz");

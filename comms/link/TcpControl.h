@@ -31,6 +31,7 @@
 // bounded by deadlines.
 
 #include "comms/protocol/Messages.h"
+#include "core/config/LinkConfig.h"
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"
 
@@ -48,8 +49,8 @@ class LinkClient;
 
 struct TcpControlOptions {
     std::string token;               ///< shared secret for the hello ("" = none)
-    double connectTimeout = 5.0;     ///< [s] per connection attempt
-    double stepDeadline = 10.0;      ///< [s] for each reply (measurement, acknowledgements)
+    double connectTimeout = LinkTimeouts::kConnect;    ///< [s] per connection attempt
+    double stepDeadline = LinkTimeouts::kStepDeadline; ///< [s] for each reply of a step
     double heartbeatInterval = 0.25; ///< [s]
     double silenceTimeout = 5.0;     ///< [s] without any frame: the link is lost
     int reconnectAttempts = 3;       ///< attempts per reconnect() / resume() (at least 1)

@@ -33,6 +33,7 @@
 // Thread rules: one thread at a time (the test worker), except emergencyHold().
 
 #include "comms/openfresco/OfSizes.h"
+#include "core/config/LinkConfig.h"
 #include "core/experimental/ExperimentalControl.h"
 
 #include <atomic>
@@ -53,8 +54,8 @@ const char* ofProtocolName(OfProtocol p);
 struct OfControlOptions {
     OfSizes sizes;                      ///< must have ctrl disp, daq disp and daq force >= 1
     std::vector<std::string> initLines; ///< GenericTCP: sent after the header
-    double connectTimeout = 5.0;        ///< [s] per connection attempt
-    double stepDeadline = 10.0;         ///< [s] for each read or write
+    double connectTimeout = LinkTimeouts::kConnect;    ///< [s] per connection attempt
+    double stepDeadline = LinkTimeouts::kStepDeadline; ///< [s] for each read or write
     int connectAttempts = 3;            ///< attempts in prepare() while nobody listens
     double retryDelay = 0.5;            ///< [s] between them
     bool logConnect = true;             ///< one line on stderr with the negotiated sizes

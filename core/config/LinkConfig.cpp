@@ -35,6 +35,14 @@ LinkSpec parseLinkFields(const JsonCursor& c, const std::string& baseDir, LinkSp
     s.protocol = c.string("protocol", s.protocol);
     if (s.protocol != "native" && s.protocol != "simapp" && s.protocol != "generictcp")
         c.fail("protocol", std::string("expected ") + kLinkProtocols);
+    for (const char* field : {"connectTimeout", "stepDeadline"}) {
+        if (!c.has(field))
+            continue;
+        const double v = c.number(field, 0.0);
+        if (!(v > 0.0 && v <= 600.0))
+            c.fail(field, "expected a time in (0, 600] s");
+        (std::string(field) == "connectTimeout" ? s.connectTimeout : s.stepDeadline) = v;
+    }
     s.dataSize = c.integer("dataSize", s.dataSize);
     if (s.dataSize < 1 || s.dataSize > (1 << 20))
         c.fail("dataSize", "expected a number of doubles in 1..1048576");

@@ -6,12 +6,21 @@
 // hsmu-controller (comms/controller/ControllerSettings.h) and are ignored here.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace hsmu {
 
 class JsonCursor;
+
+/// The one set of link timeout defaults (seconds), used by every link (comms' TcpControlOptions
+/// and OpenFresco options) and so by the console, `hsmu run` and `hsmu compare` alike
+/// (docs/configuration.md, "Timeouts"). A configuration's controller section may override them.
+struct LinkTimeouts {
+    static constexpr double kConnect = 3.0;       ///< [s] per connection attempt
+    static constexpr double kStepDeadline = 10.0; ///< [s] for each reply of a step
+};
 
 struct LinkSpec {
     std::string protocol = "native"; ///< "native", "simapp" or "generictcp"
@@ -21,6 +30,9 @@ struct LinkSpec {
     std::array<int, 5> daqSizes{1, 0, 0, 1, 0};
     std::string initFile;               ///< generictcp: path (resolved), "" = none
     std::vector<std::string> initLines; ///< its lines, read when the configuration is loaded
+    /// controller.connectTimeout / controller.stepDeadline [s], when the configuration sets
+    /// them (in (0, 600]); otherwise the link's own options (LinkTimeouts defaults) apply.
+    std::optional<double> connectTimeout, stepDeadline;
 };
 
 /// The names of the protocol field's values, for messages.

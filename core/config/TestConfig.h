@@ -8,7 +8,7 @@
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
 #include "core/updating/Inspector.h"
-#include "core/updating/ParameterSet.h"
+#include "core/identification/ParameterSet.h"
 #include "core/updating/Reporter.h"
 
 #include <nlohmann/json.hpp>

@@ -13,7 +13,7 @@
 #include "core/structure/FlexibleColumnSpring.h"
 #include "core/structure/SpringElement.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <cmath>
 #include <filesystem>

@@ -20,7 +20,7 @@ class Integrator;
 class Structure;
 
 /// Makes the control of an experimental element; the default builds a VirtualSpecimen from
-/// spec.specimen. Later links (TCP, OpenFresco) plug in here without touching core/test.
+/// spec.specimen. Later links (TCP, OpenFresco) plug in here without touching core/experiment.
 using ControlFactory =
     std::function<std::unique_ptr<ExperimentalControl>(const ElementSpec& spec)>;
 

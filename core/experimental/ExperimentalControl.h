@@ -2,7 +2,7 @@
 // ExperimentalControl: the seam between a hybrid test and the lab (ARCHITECTURE.md).
 // Implementations: the in-process VirtualSpecimen (core), the TCP link to hsmu-controller and
 // the OpenFresco-compatible links (comms). Swapping one for another changes nothing in
-// core/test.
+// core/experiment.
 //
 // Per integration step the test calls setTarget(d) once, then measure(), then commit() when
 // the step is accepted. Deformation and force are in the specimen's own units (rotation [rad]

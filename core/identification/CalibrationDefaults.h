@@ -21,7 +21,7 @@
 
 #include "core/identification/Calibration.h"
 #include "core/identification/HistoryScales.h"
-#include "core/updating/ParameterSet.h"
+#include "core/identification/ParameterSet.h"
 
 #include <optional>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include "core/experimental/SiteStatus.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 
 namespace hsmu {

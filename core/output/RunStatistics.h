@@ -9,7 +9,7 @@
 // stepping (or on that thread).
 
 #include "core/output/RunLayout.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 
 #include "core/integration/Integrator.h"
 #include "core/output/RunStatistics.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 
 #include <cmath>

@@ -21,7 +21,7 @@
 // thread or after the test has stopped stepping.
 
 #include "core/output/RunLayout.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <fstream>
 #include <string>

@@ -8,7 +8,7 @@
 // Thread rules: RecordWriter's.
 
 #include "core/record/Hdf5Util.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@
 // uRef / fRef for Bouc-Wen).
 
 #include "core/output/RunLayout.h"
-#include "core/test/Alarm.h"
+#include "core/util/Alarm.h"
 
 #include <Eigen/Core>
 

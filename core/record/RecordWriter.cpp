@@ -74,7 +74,7 @@ struct RecordWriter::Impl {
 
     const std::vector<Alarm>* tracked = nullptr;
     std::size_t alarmsSeen = 0;
-    int received = 0, flushed = 0, alarmsFlushed = 0;
+    int received = 0, flushed = 0, alarmsFlushed = 0, notesFlushed = 0;
     bool failed = false, closed = false;
     std::string error;
     Clock::time_point lastFlush = Clock::now();
@@ -360,6 +360,7 @@ void RecordWriter::Impl::writeLogs() {
         noteTime.append(t.data(), m);
         noteStep.append(s.data(), m);
         noteText.append(text.data(), m);
+        notesFlushed += int(m);
     }
 }
 
@@ -536,6 +537,10 @@ int RecordWriter::rowsReceived() const {
 int RecordWriter::rowsFlushed() const {
     return m_d->flushed;
 }
+int RecordWriter::notesFlushed() const {
+    return m_d->notesFlushed;
+}
+
 int RecordWriter::alarmsFlushed() const {
     return m_d->alarmsFlushed;
 }

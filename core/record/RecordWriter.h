@@ -22,8 +22,8 @@
 // seconds of wall time, every kMaxBufferedRows rows (or kMaxBufferedValues values), and by flush() / finish() / the
 // destructor: a process killed mid-run leaves a file holding every step flushed before.
 // onStep() only checks the clock when rows are buffered; a test that holds (no steps) should
-// have its owner call flushIfDue() at least once a second while it holds (RunCommand does
-// before each reconnect) so that held rows, alarms and notes reach the file.
+// have its owner call flushIfDue() at least once a second while it holds (TestSession::tick(),
+// core/session, does for every front end) so that held rows, alarms and notes reach the file.
 // Alarms: trackAlarms(&test.alarms()) makes every onStep()/flush() append the alarms raised
 // since the last call; or call writeAlarms() yourself.
 // Errors: the constructor throws RecordError naming the file; a later write failure stops
@@ -32,8 +32,8 @@
 // Thread rules: one thread (the test's); HDF5 is not used from any other thread by core.
 
 #include "core/output/RunLayout.h"
-#include "core/test/Alarm.h"
-#include "core/test/StepRecord.h"
+#include "core/util/Alarm.h"
+#include "core/experiment/StepRecord.h"
 
 #include <memory>
 #include <string>
@@ -86,6 +86,7 @@ public:
     int rowsReceived() const; ///< onStep() calls so far
     int rowsFlushed() const;  ///< rows on disk (after the last successful flush)
     int alarmsFlushed() const;
+    int notesFlushed() const; ///< notes written to the file (counted when appended)
 
 private:
     struct Impl;

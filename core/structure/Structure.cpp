@@ -118,16 +118,10 @@ void Structure::finalize()
     m_m.makeCompressed();
     m_influence = m_mDiag; // T^T M_full iota
 
-    // K0 = T^T K_full T, assembled directly over the free DOFs (duplicates are summed).
-    triplets.clear();
-    for (const auto& e : m_elements) {
+    for (const auto& e : m_elements)
         for (const auto& t : e->terms())
             checkDof(t.dof, "element '" + e->name() + "'");
-        e->addInitialStiffness(triplets, m_freeOf);
-    }
-    m_k0.resize(nFree, nFree);
-    m_k0.setFromTriplets(triplets.begin(), triplets.end());
-    m_k0.prune(0.0); // terms that cancel (a truss between merged DOFs) leave no entry
+    m_k0 = assembleInitialStiffness();
 
     if (nFree <= kDenseModalLimit) {
         m_omega = denseFrequencies(m_k0, m_mDiag);
@@ -169,6 +163,27 @@ void Structure::buildOrder()
         for (auto& e : m_elements)
             if (e->isExperimental() == (pass == 0))
                 m_order.push_back(e.get());
+}
+
+Structure::SparseMatrix Structure::assembleInitialStiffness() const
+{
+    // K0 = T^T K_full T, assembled directly over the free DOFs (duplicates are summed).
+    std::vector<Eigen::Triplet<double>> triplets;
+    for (const auto& e : m_elements)
+        e->addInitialStiffness(triplets, m_freeOf);
+    const Eigen::Index nFree = m_mDiag.size();
+    SparseMatrix k(nFree, nFree);
+    k.setFromTriplets(triplets.begin(), triplets.end());
+    k.prune(0.0); // terms that cancel (a truss between merged DOFs) leave no entry
+    return k;
+}
+
+double Structure::updatedMaxFrequency() const
+{
+    const SparseMatrix k = assembleInitialStiffness();
+    if (m_mDiag.size() <= kDenseModalLimit)
+        return denseFrequencies(k, m_mDiag).maxCoeff();
+    return largestFrequency(k, m_mDiag);
 }
 
 Eigen::VectorXd Structure::toFull(const Eigen::VectorXd& uFree) const

@@ -84,6 +84,11 @@ public:
     /// Largest undamped circular frequency of (K0, M) [rad/s] (exact up to kDenseModalLimit
     /// free DOFs, else the Lanczos estimate from above of ModalAnalysis.h).
     double maxFrequency() const { return m_omegaMax; }
+    /// Largest undamped circular frequency [rad/s] of (K0', M), K0' assembled from the
+    /// elements' initial stiffness as they are now (after online updates changed a numerical
+    /// element's law). K0, C and maxFrequency() stay those of finalize(): an update never
+    /// changes them (docs/method.md, "The updated model"). Requires finalize().
+    double updatedMaxFrequency() const;
 
     Eigen::VectorXd toFull(const Eigen::VectorXd& uFree) const;
 
@@ -98,6 +103,8 @@ public:
 
 private:
     void buildOrder();
+    /// K0 over the free DOFs from the elements' current initial stiffness.
+    SparseMatrix assembleInitialStiffness() const;
 
     std::vector<std::string> m_dofNames;
     std::vector<double> m_masses;

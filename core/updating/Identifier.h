@@ -4,7 +4,7 @@
 // step) and NelderMeadIdentifier (over the stored history, when the Inspector asks).
 // Values are in the law's own units (normalized for Bouc-Wen with uRef/fRef).
 
-#include "core/updating/ParameterSet.h"
+#include "core/identification/ParameterSet.h"
 
 #include <optional>
 #include <string>

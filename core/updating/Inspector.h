@@ -17,8 +17,8 @@
 //               d_c) / RMS(d_c), J3 = max|d_m - d_c| / max|d_c| (Warning when J2 > its limit).
 // Thresholds can change between steps (effective next step).
 
-#include "core/test/Alarm.h"
-#include "core/updating/ParameterSet.h"
+#include "core/util/Alarm.h"
+#include "core/identification/ParameterSet.h"
 
 #include <deque>
 #include <span>

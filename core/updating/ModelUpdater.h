@@ -12,7 +12,7 @@
 // history so its state matches the fitted parameters.
 // Bounds, thresholds and policies may change between steps (effective next step).
 
-#include "core/test/Alarm.h"
+#include "core/util/Alarm.h"
 #include "core/updating/Identifier.h"
 #include "core/updating/Inspector.h"
 #include "core/updating/Reporter.h"

@@ -18,7 +18,7 @@
 // Nothing non-finite is ever applied; a value the law refuses is reported, not applied.
 // Thread rules: none (called from the test's thread; the GUI calls approve/reject through it).
 
-#include "core/updating/ParameterSet.h"
+#include "core/identification/ParameterSet.h"
 
 #include <deque>
 #include <limits>

@@ -5,7 +5,7 @@
 // many critical alarms are unacknowledged so the window can demand attention.
 // Thread rules: GUI thread only.
 
-#include "core/test/Alarm.h"
+#include "core/util/Alarm.h"
 
 #include <QTreeWidget>
 

@@ -2,7 +2,7 @@
 // AlarmMetaType: lets core's hsmu::Alarm travel through queued signals (worker -> GUI).
 // Include before any header that declares a signal with an Alarm argument.
 
-#include "core/test/Alarm.h"
+#include "core/util/Alarm.h"
 
 #include <QMetaType>
 

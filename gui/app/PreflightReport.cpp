@@ -4,7 +4,7 @@
 #include "core/integration/Integrator.h"
 #include "core/output/ElementUnits.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 namespace hsmu::gui {
 

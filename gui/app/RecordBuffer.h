@@ -4,7 +4,7 @@
 // ~30 times a second, and replots once.
 // Thread rules: push() from the worker thread, takeAll() from the GUI thread; both lock.
 
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <atomic>
 #include <mutex>

@@ -2,7 +2,7 @@
 
 #include "comms/link/ControlFactory.h"
 #include "core/config/TestFactory.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/app/RecordBuffer.h"
 #include "gui/app/TestWorker.h"
 
@@ -54,8 +54,7 @@ void TestController::teardown() {
 void TestController::load(const TestConfig& cfg, const comms::LinkAddress& controller) {
     teardown();
     m_delivered = 0;
-    comms::TcpControlOptions link;
-    link.connectTimeout = 3.0; // an absent controller is an error within seconds
+    comms::TcpControlOptions link; // LinkTimeouts (core/config/LinkConfig.h), as hsmu run
     link.token = m_token.toStdString();
     std::unique_ptr<HybridTest> test =
         buildHybridTest(cfg, comms::makeControlFactory(controller, link, cfg)); // may throw

@@ -20,7 +20,7 @@
 #include "core/config/TestFactory.h"
 #include "core/experimental/SiteStatus.h"
 #include "core/output/RunLayout.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 #include "gui/app/AlarmMetaType.h"
 #include "gui/app/OperatorEvent.h"
 #include "gui/app/PreflightReport.h"

@@ -2,12 +2,11 @@
 
 #include "core/output/RunLayout.h"
 #include "core/output/RunSummary.h"
-#include "core/test/HybridTest.h"
+#include "core/session/TestSession.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 #include "gui/app/RecordBuffer.h"
 
-#include <QDir>
-#include <QFileInfo>
 #include <QTimer>
 
 #include <nlohmann/json.hpp>
@@ -36,107 +35,74 @@ std::string valuesText(const ParameterValues& values) {
     return out;
 }
 
-/// The configuration text and notes with the updating policy in force at the first step.
-void withPolicy(RecordStart& start, const Reporter& reporter) {
-    try {
-        nlohmann::json cfg = nlohmann::json::parse(start.configuration);
-        if (cfg.contains("updating") && cfg["updating"].is_object()) {
-            cfg["updating"]["reporter"]["policy"] = reporterPolicyName(reporter.policy());
-            cfg["updating"]["reporter"]["everyN"] = reporter.everyN();
-            start.configuration = cfg.dump();
-        }
-    } catch (const std::exception&) {
-        // not JSON (a test's hand-made RecordStart): kept as given
-    }
-    const std::string key = ", updating = ";
-    if (const auto at = start.operatorNotes.find(key); at != std::string::npos)
-        start.operatorNotes = start.operatorNotes.substr(0, at) + key +
-                              reporterPolicyName(reporter.policy());
+SessionOptions consoleSession(RecordStart record, const QString& recordPath) {
+    SessionOptions o;
+    o.speed = 1.0; // real time until the operator changes it
+    o.reconnect.attempts = TestWorker::kReconnectAttempts;
+    o.recordPath = recordPath.toStdString();
+    o.recordStart = std::move(record);
+    return o;
 }
 } // namespace
 
 TestWorker::TestWorker(std::unique_ptr<HybridTest> test, std::shared_ptr<RecordBuffer> buffer,
                        bool allowUnstable, RecordStart record, QString recordPath)
-    : m_test(std::move(test)), m_buffer(std::move(buffer)), m_allowUnstable(allowUnstable),
-      m_recordStart(std::move(record)), m_recordPath(std::move(recordPath)) {
-    m_test->addObserver(this);
+    : m_session(std::make_unique<TestSession>(std::move(test),
+                                              consoleSession(std::move(record), recordPath))),
+      m_buffer(std::move(buffer)), m_allowUnstable(allowUnstable),
+      m_recordPath(std::move(recordPath)), m_flushTimer(new QTimer(this)) {
+    m_session->addObserver(this);
+    m_session->onReconnect = [this](const TestSession::Reconnect& r) {
+        publishAlarms();
+        emit stateChanged(RunState::Running,
+                          tr("link fault (%1): reconnecting in %2 s (attempt %3 of %4)")
+                              .arg(QString::fromStdString(r.reason))
+                              .arg(r.delay, 0, 'f', 1)
+                              .arg(r.attempt)
+                              .arg(r.of));
+    };
+    m_flushTimer->setInterval(500); // notes and alarms reach the file while paused or held
+    connect(m_flushTimer, &QTimer::timeout, this, [this] { m_session->tick(); });
 }
 
 TestWorker::~TestWorker() {
-    m_test->removeObserver(this);
-    if (m_record)
-        m_record->finish();
+    m_session->removeObserver(this);
+    m_session->finish();
 }
 
 bool TestWorker::openRecord() {
-    if (m_recordPath.isEmpty() || m_record)
+    if (m_recordPath.isEmpty() || m_session->record())
         return true;
-    try {
-        if (!QDir().mkpath(QFileInfo(m_recordPath).absolutePath()))
-            throw std::runtime_error("cannot create the folder " +
-                                     QFileInfo(m_recordPath).absolutePath().toStdString());
-        if (const ModelUpdater* u = m_test->updater())
-            withPolicy(m_recordStart, u->reporter());
-        m_record = std::make_unique<RecordWriter>(m_recordPath.toStdString(),
-                                                  RunLayout::of(*m_test), m_recordStart);
-    } catch (const std::exception& e) {
+    if (!m_session->openRecord()) {
         m_recordPath.clear();
-        setState(RunState::Failed, tr("the record cannot be written: %1").arg(e.what()));
+        setState(RunState::Failed, tr("the record cannot be written: %1")
+                                       .arg(QString::fromStdString(m_session->lastError())));
         return false;
     }
-    m_record->trackAlarms(&m_test->alarms());
-    for (const StepRecord& row : m_unrecorded)
-        m_record->onStep(row);
-    m_unrecorded.clear();
-    for (const Note& n : m_unrecordedNotes)
-        m_record->addNote(n.time, n.step, n.text);
-    m_unrecordedNotes.clear();
-    m_record->flush();
     emit recordingStarted(m_recordPath);
     return true;
 }
 
 void TestWorker::logEvent(const char* action, std::string oldValue, std::string newValue) {
-    const OperatorEvent e = OperatorEvent::now(m_test->currentStep(), m_test->time(), action,
+    const OperatorEvent e = OperatorEvent::now(test().currentStep(), test().time(), action,
                                                std::move(oldValue), std::move(newValue));
-    if (m_record)
-        m_record->addNote(e.time, e.step, e.recordText());
-    else if (!m_recordPath.isEmpty())
-        m_unrecordedNotes.push_back({e.time, e.step, e.recordText()});
+    m_session->addNote(e.time, e.step, e.recordText());
     emit operatorEvent(e);
 }
 
 void TestWorker::onStep(const StepRecord& record) {
     if (m_buffer->push(record))
         emit recordsAvailable();
-    if (m_recordPath.isEmpty())
-        return;
-    if (!m_record) {
-        m_unrecorded.push_back(record); // step 0 of prepare(), written when the record opens
-        return;
-    }
-    if (m_approved.empty() || !record.hasUpdating) {
-        m_record->onStep(record);
-        return;
-    }
-    // Updates approved or rejected between two steps go to /updating/events with this row.
-    StepRecord row = record;
-    auto firstDecided = std::stable_partition(m_approved.begin(), m_approved.end(),
-                                              [](const UpdateEvent& e) { return e.ok; });
-    row.updating.applied.insert(row.updating.applied.begin(), m_approved.begin(), firstDecided);
-    row.updating.decided.insert(row.updating.decided.begin(), firstDecided, m_approved.end());
-    m_approved.clear();
-    m_record->onStep(row);
 }
 
 bool TestWorker::ensurePrepared() {
-    if (m_prepared)
+    if (m_session->prepared())
         return true;
-    if (!m_test->prepare()) {
-        setState(RunState::Failed, QString::fromStdString(m_test->lastError()));
+    if (!m_session->prepare()) {
+        setState(RunState::Failed, QString::fromStdString(m_session->lastError()));
         return false;
     }
-    m_prepared = true;
+    m_flushTimer->start();
     publishAlarms();
     publishUpdating();
     return true;
@@ -145,7 +111,7 @@ bool TestWorker::ensurePrepared() {
 void TestWorker::prepare() {
     if (m_state != RunState::Ready || !ensurePrepared())
         return;
-    emit preflightReady(preflightOf(*m_test, m_allowUnstable));
+    emit preflightReady(preflightOf(test(), m_allowUnstable));
 }
 
 void TestWorker::confirmPreflight() {
@@ -179,8 +145,8 @@ void TestWorker::singleStep() {
     }
     if (m_state != RunState::Paused)
         return;
-    logEvent(OperatorEvent::kSingleStep, std::to_string(m_test->currentStep()),
-             std::to_string(m_test->currentStep() + 1));
+    logEvent(OperatorEvent::kSingleStep, std::to_string(test().currentStep()),
+             std::to_string(test().currentStep() + 1));
     if (stepOnce()) {
         emitProgress(true);
         publishUpdating();
@@ -190,8 +156,8 @@ void TestWorker::singleStep() {
 void TestWorker::resume() {
     if (!m_armed)
         return; // never drives a test the operator has not confirmed
-    if (m_state == RunState::Holding)
-        m_test->resume();
+    if (m_state == RunState::Holding || test().state() == HybridTest::State::Holding)
+        m_session->resume();
     else if (m_state != RunState::Paused)
         return;
     logEvent(OperatorEvent::kResume, m_state == RunState::Holding ? "holding" : "paused",
@@ -207,7 +173,7 @@ void TestWorker::stop() {
         m_state == RunState::Holding)
         logEvent(OperatorEvent::kStop, "armed", "stopped, data kept");
     if (m_state == RunState::Running || m_state == RunState::Paused) {
-        m_test->hold("stopped by the operator"); // the record's text: language-neutral
+        m_session->hold("stopped by the operator"); // the record's text: language-neutral
         publishAlarms();
     }
     if (m_state != RunState::Finished && m_state != RunState::Failed &&
@@ -228,32 +194,26 @@ void TestWorker::emergencyHold(const QString& reason) {
     const std::string why =
         reason.isEmpty() ? std::string("emergency hold by the operator") : reason.toStdString();
     logEvent(OperatorEvent::kHold, m_state == RunState::Running ? "running" : "paused", "held");
-    m_test->hold(why);
+    m_session->hold(why);
     publishAlarms();
     setState(RunState::Holding,
              reason.isEmpty() ? tr("emergency hold by the operator") : reason);
 }
 
 void TestWorker::setSpeed(double factor) {
-    m_speed = std::isfinite(factor) ? factor : 0.0;
+    m_session->setSpeed(factor);
     restartPacing();
 }
 
 void TestWorker::addNote(const QString& text) {
     if (text.trimmed().isEmpty())
         return;
-    if (m_recordPath.isEmpty() || (m_record && !m_record->ok())) {
+    if (!m_session->addNote(text.toStdString()))
         emit commandRefused(tr("the note was not kept: this test is not recorded"));
-        return;
-    }
-    if (m_record)
-        m_record->addNote(m_test->time(), m_test->currentStep(), text.toStdString());
-    else // written when the record opens, at the first driven step
-        m_unrecordedNotes.push_back({m_test->time(), m_test->currentStep(), text.toStdString()});
 }
 
 void TestWorker::setParameterBounds(const QString& name, double lower, double upper) {
-    ModelUpdater* u = m_test->updater();
+    ModelUpdater* u = test().updater();
     if (!u)
         return emit commandRefused(tr("this test has no model updating"));
     if (!(lower <= upper) || !std::isfinite(lower) || !std::isfinite(upper))
@@ -276,7 +236,7 @@ void TestWorker::setParameterBounds(const QString& name, double lower, double up
 }
 
 void TestWorker::setParameterLocked(const QString& name, bool locked) {
-    ModelUpdater* u = m_test->updater();
+    ModelUpdater* u = test().updater();
     if (!u)
         return emit commandRefused(tr("this test has no model updating"));
     if (!u->identifier().setLocked(name.toStdString(), locked))
@@ -299,11 +259,11 @@ std::string proposalTag(int id) {
 
 void TestWorker::approveUpdate(int proposalId) {
     std::optional<UpdateProposal> proposal;
-    if (const ModelUpdater* u = m_test->updater())
+    if (const ModelUpdater* u = test().updater())
         for (const UpdateProposal& p : u->reporter().pending())
             if (p.id == proposalId)
                 proposal = p;
-    if (!m_test->approveUpdate(proposalId)) {
+    if (!test().approveUpdate(proposalId)) {
         emit commandRefused(tr("update #%1 was not applied (no longer pending, or refused by "
                                "the law; see the alarms)")
                                 .arg(proposalId));
@@ -312,8 +272,9 @@ void TestWorker::approveUpdate(int proposalId) {
                  proposalTag(proposalId) + " " + proposal->element + " " +
                      valuesText(proposal->current),
                  valuesText(proposal->proposed));
-        m_approved.push_back({m_test->currentStep(), m_test->time(), proposal->element,
-                              proposal->proposed, true, {}, UpdateDecision::Applied, proposalId});
+        m_session->noteApproved({test().currentStep(), test().time(), proposal->element,
+                                 proposal->proposed, true, {}, UpdateDecision::Applied,
+                                 proposalId});
     }
     publishAlarms();
     publishUpdating();
@@ -321,25 +282,25 @@ void TestWorker::approveUpdate(int proposalId) {
 
 void TestWorker::rejectUpdate(int proposalId) {
     std::optional<UpdateProposal> proposal;
-    if (const ModelUpdater* u = m_test->updater())
+    if (const ModelUpdater* u = test().updater())
         for (const UpdateProposal& p : u->reporter().pending())
             if (p.id == proposalId)
                 proposal = p;
-    if (!m_test->rejectUpdate(proposalId) || !proposal) {
+    if (!test().rejectUpdate(proposalId) || !proposal) {
         emit commandRefused(tr("update #%1 is no longer pending").arg(proposalId));
     } else {
         logEvent(OperatorEvent::kReject, proposalTag(proposalId),
                  "rejected " + proposal->element + " " + valuesText(proposal->proposed));
         // In /updating/events too (decision "rejected"), with the next committed step.
-        m_approved.push_back({m_test->currentStep(), m_test->time(), proposal->element,
-                              proposal->proposed, false, "rejected by the operator",
-                              UpdateDecision::Rejected, proposalId});
+        m_session->noteApproved({test().currentStep(), test().time(), proposal->element,
+                                 proposal->proposed, false, "rejected by the operator",
+                                 UpdateDecision::Rejected, proposalId});
     }
     publishUpdating();
 }
 
 void TestWorker::setReporterPolicy(ReporterPolicy policy, int everyN) {
-    ModelUpdater* u = m_test->updater();
+    ModelUpdater* u = test().updater();
     if (!u)
         return emit commandRefused(tr("this test has no model updating"));
     const Reporter& r = u->reporter();
@@ -356,7 +317,7 @@ void TestWorker::setReporterPolicy(ReporterPolicy policy, int everyN) {
 }
 
 void TestWorker::setFitThreshold(double threshold) {
-    ModelUpdater* u = m_test->updater();
+    ModelUpdater* u = test().updater();
     if (!u)
         return emit commandRefused(tr("this test has no model updating"));
     if (!(threshold > 0.0) || !std::isfinite(threshold))
@@ -369,10 +330,9 @@ void TestWorker::setFitThreshold(double threshold) {
 }
 
 void TestWorker::restartPacing() {
-    m_pace.start();
-    m_paceStartTime = m_test->time();
+    m_session->restartPacing();
     m_progressTimer.start();
-    m_progressStep = m_test->currentStep();
+    m_progressStep = test().currentStep();
 }
 
 void TestWorker::schedule(int delayMs) {
@@ -383,7 +343,7 @@ void TestWorker::schedule(int delayMs) {
 }
 
 bool TestWorker::stepOnce() {
-    const HybridTest::StepResult r = m_test->step();
+    const HybridTest::StepResult r = m_session->stepOnce();
     publishAlarms();
     if (r == HybridTest::StepResult::Advanced)
         return true;
@@ -391,9 +351,9 @@ bool TestWorker::stepOnce() {
         setState(RunState::Finished);
     else if (r == HybridTest::StepResult::Held)
         setState(RunState::Holding,
-                 QString::fromStdString(holdReason(*m_test).value_or(std::string())));
+                 QString::fromStdString(holdReason(test()).value_or(std::string())));
     else
-        setState(RunState::Failed, QString::fromStdString(m_test->lastError()));
+        setState(RunState::Failed, QString::fromStdString(test().lastError()));
     return false;
 }
 
@@ -401,32 +361,35 @@ void TestWorker::runChunk() {
     m_scheduled = false;
     if (m_state != RunState::Running)
         return;
-    QElapsedTimer chunk;
-    chunk.start();
-    while (chunk.elapsed() < kChunkMs) {
-        if (m_speed > 0.0) {
-            const double allowed = m_paceStartTime + m_pace.nsecsElapsed() * 1e-9 * m_speed;
-            const double ahead = m_test->time() + m_test->dt() - allowed;
-            if (ahead > 0.0) {
-                emitProgress(false);
-                schedule(std::max(1, int(std::ceil(ahead / m_speed * 1000.0))));
-                return;
-            }
-        }
-        if (!stepOnce())
-            return;
+    const TestSession::Progress p = m_session->advance(kChunkMs * 1e-3);
+    publishAlarms();
+    switch (p.status) {
+    case TestSession::Status::Advanced:
+        emitProgress(false);
+        schedule(0);
+        return;
+    case TestSession::Status::Waiting: // the pace, or a reconnect backoff
+        emitProgress(false);
+        schedule(std::max(1, int(std::ceil(std::min(p.wait, 0.25) * 1000.0))));
+        return;
+    case TestSession::Status::Finished: setState(RunState::Finished); return;
+    case TestSession::Status::Held:
+        setState(RunState::Holding,
+                 QString::fromStdString(holdReason(test()).value_or(std::string())));
+        return;
+    case TestSession::Status::Failed:
+        setState(RunState::Failed, QString::fromStdString(m_session->lastError()));
+        return;
     }
-    emitProgress(false);
-    schedule(0);
 }
 
 void TestWorker::setState(RunState state, const QString& message) {
     m_state = state;
-    if (m_record) {
-        if (state == RunState::Finished || state == RunState::Stopped || state == RunState::Failed)
-            m_record->finish();
-        else
-            m_record->flush();
+    if (state == RunState::Finished || state == RunState::Stopped || state == RunState::Failed) {
+        m_session->finish();
+        m_flushTimer->stop();
+    } else {
+        m_session->flush();
     }
     emitProgress(true);
     publishUpdating();
@@ -434,14 +397,14 @@ void TestWorker::setState(RunState state, const QString& message) {
 }
 
 void TestWorker::publishAlarms() {
-    const auto& alarms = m_test->alarms();
+    const auto& alarms = test().alarms();
     for (; m_alarmsSeen < alarms.size(); ++m_alarmsSeen)
         emit alarmRaised(alarms[m_alarmsSeen]);
 }
 
 void TestWorker::publishUpdating() {
-    if (m_test->updater())
-        emit updatingChanged(snapshotOf(*m_test));
+    if (test().updater())
+        emit updatingChanged(snapshotOf(test()));
 }
 
 void TestWorker::emitProgress(bool force) {
@@ -449,12 +412,12 @@ void TestWorker::emitProgress(bool force) {
         return;
     const double seconds = m_progressTimer.isValid() ? m_progressTimer.nsecsElapsed() * 1e-9 : 0.0;
     if (seconds > 0.05) { // a rate over a shorter span is noise
-        m_lastRate = (m_test->currentStep() - m_progressStep) / seconds;
+        m_lastRate = (test().currentStep() - m_progressStep) / seconds;
         m_progressTimer.start();
-        m_progressStep = m_test->currentStep();
+        m_progressStep = test().currentStep();
     }
     const double rate = m_state == RunState::Running ? m_lastRate : 0.0;
-    emit progress(m_test->currentStep(), m_test->totalSteps(), m_test->time(), rate);
+    emit progress(test().currentStep(), test().totalSteps(), test().time(), rate);
     if (!force && m_state == RunState::Running)
         publishUpdating();
 }

@@ -7,12 +7,16 @@
 // Pacing: with a speed factor s > 0 the test time follows s x wall time (1 = real time);
 // s <= 0 runs as fast as possible. Every committed StepRecord goes into the RecordBuffer;
 // recordsAvailable() is emitted only when the buffer turns non-empty (one coalesced signal per
-// GUI drain). With a record path, every step (from step 0) and alarm also goes into an HDF5
-// record (RecordWriter), flushed at every state change and finished with the test; operator
-// notes (addNote) go there too, stamped with the current step and test time. The record (and
-// its run folder) is created only when the test is armed and its first step is driven, so a
-// test that is loaded, prepared or cancelled at the pre-flight leaves no folder behind; notes
-// and events from before are written then with their own step and time.
+// GUI drain). The stepping, the pace, the HDF5 record and the hold / reconnect policy are the
+// TestSession's (core/session/TestSession.h, shared with `hsmu run` and `hsmu compare`): the
+// worker calls TestSession::advance() for one chunk and schedules itself again after the wait
+// it returns (pace, reconnect backoff). With a record path, every step (from step 0), alarm
+// and operator note goes into the record, flushed at every state change and at least once a
+// second while paused or held (TestSession::tick() on a timer). The record (and its run
+// folder) is created only when the test is armed and its first step is driven, so a test that
+// is loaded, prepared or cancelled at the pre-flight leaves no folder behind; notes and events
+// from before are written then with their own step and time. After a lost link the session
+// resumes (reconnects) up to kReconnectAttempts times with a doubling backoff (0.5 s to 8 s).
 // Arming: start() and singleStep() arm the test (the console calls them only after the
 // pre-flight was confirmed, confirmPreflight()); an emergency hold before arming holds
 // nothing and leaves the test Ready and unarmed (the pre-flight must be confirmed again), so
@@ -29,7 +33,8 @@
 // thread. Destroy after the thread has finished.
 
 #include "core/record/RecordWriter.h"
-#include "core/test/StepRecord.h"
+#include "core/session/TestSession.h"
+#include "core/experiment/StepRecord.h"
 #include "core/updating/Reporter.h"
 #include "gui/app/AlarmMetaType.h"
 #include "gui/app/OperatorEvent.h"
@@ -39,12 +44,9 @@
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QTimer>
 
 #include <memory>
-
-namespace hsmu {
-class HybridTest;
-}
 
 namespace hsmu::gui {
 
@@ -53,6 +55,9 @@ class RecordBuffer;
 class TestWorker : public QObject, public StepObserver {
     Q_OBJECT
 public:
+    /// Automatic resumes after a control fault (TestSession's ReconnectPolicy).
+    static constexpr int kReconnectAttempts = 5;
+
     /// allowUnstable: the configuration forces an unstable explicit run (for the pre-flight).
     /// record: where prepare() opens the HDF5 record (docs/recording.md); empty: none.
     TestWorker(std::unique_ptr<HybridTest> test, std::shared_ptr<RecordBuffer> buffer,
@@ -114,6 +119,7 @@ private:
     bool ensurePrepared();
     /// Open the record before the first driven step (idempotent); false: Failed, no step.
     bool openRecord();
+    HybridTest& test() { return m_session->test(); }
     /// Stamp, emit and record an operator event.
     void logEvent(const char* action, std::string oldValue = {}, std::string newValue = {});
     void runChunk();
@@ -125,27 +131,14 @@ private:
     void emitProgress(bool force);
     void restartPacing();
 
-    std::unique_ptr<HybridTest> m_test;
+    std::unique_ptr<TestSession> m_session;
     std::shared_ptr<RecordBuffer> m_buffer;
     bool m_allowUnstable = false;
-    RecordStart m_recordStart;
     QString m_recordPath;
-    std::unique_ptr<RecordWriter> m_record;
-    std::vector<StepRecord> m_unrecorded; ///< rows committed before the record opened (step 0)
-    struct Note {
-        double time;
-        int step;
-        std::string text;
-    };
-    std::vector<Note> m_unrecordedNotes;     ///< notes and events before the record opened
-    std::vector<UpdateEvent> m_approved;     ///< approved / rejected between steps, for the next row
-    bool m_prepared = false;
+    QTimer* m_flushTimer = nullptr; ///< TestSession::tick() while paused or held
     bool m_armed = false;
     RunState m_state = RunState::Ready;
-    double m_speed = 1.0;
     bool m_scheduled = false;
-    QElapsedTimer m_pace;
-    double m_paceStartTime = 0.0;
     QElapsedTimer m_progressTimer;
     int m_progressStep = 0;
     double m_lastRate = 0.0;

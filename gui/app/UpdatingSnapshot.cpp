@@ -3,7 +3,7 @@
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/structure/Element.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 
 namespace hsmu::gui {

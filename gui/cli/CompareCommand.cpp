@@ -1,15 +1,13 @@
 #include "gui/cli/CompareCommand.h"
 
-#include "core/output/ComparisonSummary.h"
-#include "core/output/RunLayout.h"
-#include "core/record/RecordWriter.h"
-#include "core/test/ComparisonProtocol.h"
-#include "core/test/HybridTest.h"
+#include "core/session/ComparisonSummary.h"
+#include "core/session/ComparisonProtocol.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/PresetLibrary.h"
 #include "gui/cli/ComparisonTable.h"
+#include "gui/cli/CliPlots.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/OverrideOptions.h"
-#include "gui/plots/ComparisonPlotExporter.h"
 
 #include <QCommandLineParser>
 #include <QDir>
@@ -17,8 +15,6 @@
 #include <QTextStream>
 
 #include <algorithm>
-#include <array>
-#include <memory>
 #include <optional>
 
 namespace hsmu::gui {
@@ -111,52 +107,6 @@ private:
     int m_next = 10;
 };
 
-/// One HDF5 record per run: DIR/reference/record.h5, DIR/initial/record.h5,
-/// DIR/updated/record.h5 (docs/recording.md; root attribute "run" names the run).
-class CompareRecords {
-public:
-    explicit CompareRecords(const QDir& dir) : m_dir(dir) {}
-
-    ComparisonHooks hooks() {
-        ComparisonHooks h;
-        h.started = [this](int run, const TestConfig& cfg, HybridTest& test) {
-            start(run, cfg, test);
-        };
-        h.finished = [this](int run, HybridTest& test) { finish(run, test); };
-        return h;
-    }
-    /// Why a record failed, one entry per failure.
-    const QStringList& errors() const { return m_errors; }
-
-private:
-    static constexpr const char* kRuns[] = {"reference", "initial", "updated"};
-
-    void start(int run, const TestConfig& cfg, HybridTest& test) {
-        const QString sub = QLatin1String(kRuns[run]);
-        if (!m_dir.mkpath(sub))
-            throw std::runtime_error(m_dir.filePath(sub).toStdString() +
-                                     ": cannot create the output directory");
-        const std::string path = m_dir.filePath(sub + QStringLiteral("/record.h5")).toStdString();
-        RecordStart start{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt, kRuns[run]};
-        m_writers[std::size_t(run)] =
-            std::make_unique<RecordWriter>(path, RunLayout::of(test), start);
-        test.addObserver(m_writers[std::size_t(run)].get());
-    }
-
-    void finish(int run, HybridTest& test) {
-        RecordWriter& w = *m_writers[std::size_t(run)];
-        test.removeObserver(&w);
-        w.writeAlarms(test.alarms());
-        if (!w.finish())
-            m_errors << QString::fromStdString(w.path() +
-                                               ": the record could not be written: " + w.error());
-    }
-
-    QDir m_dir;
-    std::array<std::unique_ptr<RecordWriter>, 3> m_writers;
-    QStringList m_errors;
-};
-
 } // namespace
 
 int CompareCommand::exec(const QStringList& arguments) {
@@ -180,16 +130,15 @@ int CompareCommand::exec(const QStringList& arguments) {
     const QDir dir(options.outDir);
 
     ComparisonResult result;
-    CompareRecords records(dir);
+    options.comparison.recordDir = dir.absolutePath().toStdString(); // one record per run
     Progress progress;
     progress.start();
     err() << tr("hsmu compare: three runs (reference, initial, updated) of %1")
                  .arg(QString::fromStdString(cfg.name))
           << Qt::endl;
     try {
-        result = runComparison(
-            cfg, options.comparison, [&progress](int run, double f) { progress(run, f); },
-            records.hooks());
+        result = runComparison(cfg, options.comparison,
+                               [&progress](int run, double f) { progress(run, f); });
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
@@ -213,8 +162,9 @@ int CompareCommand::exec(const QStringList& arguments) {
                               : QStringLiteral(": ") + QString::fromStdString(run->alarms.back()))
               << Qt::endl;
     }
-    for (const QString& e : records.errors())
-        code = fail(e);
+    for (const ComparisonRun* run : {&result.reference, &result.initial, &result.updated})
+        if (!run->recordError.empty())
+            code = fail(QString::fromStdString(run->recordError));
     const ParameterValues truth = trueParameters(cfg, result.updated.parameterNames);
     try {
         writeComparisonJson(dir.filePath(QStringLiteral("compare.json")).toStdString(), result,
@@ -223,10 +173,11 @@ int CompareCommand::exec(const QStringList& arguments) {
         code = fail(QString::fromStdString(e.what()));
     }
     if (options.plots) {
-        QStringList errors;
-        ComparisonPlotExporter::write(dir.path(), result, truth, &errors);
-        for (const QString& f : errors)
-            code = fail(tr("%1: the plot could not be written").arg(f));
+        if (!CliPlots::installed().compare)
+            code = fail(tr("--plots: this program cannot draw (run it through hsmu)"));
+        else
+            for (const QString& f : CliPlots::installed().compare(dir.path(), result, truth))
+                code = fail(tr("%1: the plot could not be written").arg(f));
     }
     ConsoleStreams::out() << ComparisonTable::format(result, truth)
                           << tr("  outputs: %1").arg(QDir::toNativeSeparators(dir.path()))

@@ -6,8 +6,8 @@
 // where known).
 // Thread rules: pure functions, any thread.
 
-#include "core/test/ComparisonProtocol.h"
-#include "core/updating/ParameterSet.h"
+#include "core/session/ComparisonProtocol.h"
+#include "core/identification/ParameterSet.h"
 
 #include <QCoreApplication>
 #include <QString>

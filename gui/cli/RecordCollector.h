@@ -3,7 +3,7 @@
 // `hsmu run --plots` draws after the run). Memory: one record per step (a few hundred bytes).
 // Thread rules: onStep() on the test's thread; read records() after the test stopped.
 
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <vector>
 

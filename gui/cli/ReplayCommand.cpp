@@ -1,9 +1,9 @@
 #include "gui/cli/ReplayCommand.h"
 
 #include "core/config/ConfigLoader.h"
-#include "core/identification/MeasuredDataCsv.h"
-#include "core/identification/OfflineIdentification.h"
-#include "core/identification/OfflineIdentificationReport.h"
+#include "core/offline/MeasuredDataCsv.h"
+#include "core/offline/OfflineIdentification.h"
+#include "core/offline/OfflineIdentificationReport.h"
 #include "core/record/RecordReader.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/replay/Reidentification.h"

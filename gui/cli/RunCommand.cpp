@@ -6,14 +6,15 @@
 #include "core/output/RunSummary.h"
 #include "core/output/StepCsvWriter.h"
 #include "core/record/RecordWriter.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
+#include "core/session/TestSession.h"
 #include "gui/PresetLibrary.h"
+#include "gui/cli/CliPlots.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/RecordCollector.h"
 #include "gui/cli/RunOptions.h"
 #include "gui/cli/RunReport.h"
 #include "gui/cli/SignalHold.h"
-#include "gui/plots/PlotExporter.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -39,64 +40,37 @@ QString num(double x, int digits = 4) {
     return QString::number(x, 'g', digits);
 }
 
-/// Connection settings for a headless run: a short connect timeout, so that a controller
-/// that is not there is an error within seconds rather than a long wait.
+/// Connection settings for a headless run: the session's timeouts (LinkTimeouts), the token.
 comms::TcpControlOptions linkOptions(const RunOptions& options) {
     comms::TcpControlOptions o;
     o.token = options.token.toStdString();
-    o.connectTimeout = 2.0;
     return o;
 }
 
-bool heldOnControlFault(const HybridTest& test) {
-    return test.state() == HybridTest::State::Holding && !test.alarms().empty() &&
-           test.alarms().back().kind == AlarmKind::ControlFault;
-}
-
-/// Steps to the end, a hold or a failure, printing progress on stderr; resumes after a
-/// control fault as the --reconnect policy allows (never after SIGINT / SIGTERM held it).
-HybridTest::StepResult runLoop(HybridTest& test, const RunOptions& options, RecordWriter& record,
-                               const SignalHold& signalHold) {
-    QElapsedTimer wall;
-    wall.start();
-    const int total = std::max(1, test.totalSteps());
-    int nextPercent = 5;
-    int attempts = 0;
-    int stepAtResume = -1;
-    for (;;) {
-        const HybridTest::StepResult result = test.step();
-        const int percent = int(100.0 * test.currentStep() / total);
-        if (percent >= nextPercent || result == HybridTest::StepResult::Finished) {
-            const double seconds = std::max(1e-9, wall.nsecsElapsed() * 1e-9);
-            err() << RunCommand::tr("%1 %  t = %2 s  %3 steps/s")
-                         .arg(percent, 3)
-                         .arg(QString::number(test.time(), 'f', 2))
-                         .arg(QString::number(test.currentStep() / seconds, 'f', 0))
-                  << Qt::endl;
-            nextPercent = (percent / 5 + 1) * 5;
-        }
-        if (result == HybridTest::StepResult::Advanced)
-            continue;
-        if (result != HybridTest::StepResult::Held)
-            return result;
-        if (test.currentStep() > stepAtResume)
-            attempts = 0; // the test advanced since the last resume: a new fault
-        if (signalHold.signalled() || attempts >= options.reconnect || !heldOnControlFault(test))
-            return result;
-        ++attempts;
-        stepAtResume = test.currentStep();
-        record.flush(); // the hold and its alarm reach the file before a reconnect may block
-        err() << RunCommand::tr("hsmu run: link fault at t = %1 s (step %2): %3; reconnecting "
-                                "(attempt %4 of %5)")
-                     .arg(num(test.time(), 6))
-                     .arg(test.currentStep())
-                     .arg(QString::fromStdString(holdReason(test).value_or("held")))
-                     .arg(attempts)
-                     .arg(options.reconnect)
+/// Progress on stderr about every 5 %: percent, test time, steps/s.
+class Progress final : public StepObserver {
+public:
+    explicit Progress(const HybridTest& test) : m_test(test) { m_wall.start(); }
+    void onStep(const StepRecord& row) override {
+        if (row.step == 0)
+            return;
+        const int percent = int(100.0 * row.step / std::max(1, m_test.totalSteps()));
+        if (percent < m_next && row.step < m_test.totalSteps())
+            return;
+        const double seconds = std::max(1e-9, m_wall.nsecsElapsed() * 1e-9);
+        err() << RunCommand::tr("%1 %  t = %2 s  %3 steps/s")
+                     .arg(percent, 3)
+                     .arg(QString::number(row.time, 'f', 2))
+                     .arg(QString::number(row.step / seconds, 'f', 0))
               << Qt::endl;
-        test.resume();
+        m_next = (percent / 5 + 1) * 5;
     }
-}
+
+private:
+    const HybridTest& m_test;
+    QElapsedTimer m_wall;
+    int m_next = 5;
+};
 
 } // namespace
 
@@ -141,79 +115,92 @@ int RunCommand::exec(const QStringList& arguments) {
             return fail(QString::fromStdString(e.what()));
         }
     }
-    // Every run writes its HDF5 record (docs/recording.md), flushed at least twice a second.
-    std::unique_ptr<RecordWriter> record;
-    try {
-        RecordStart start{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
-        record = std::make_unique<RecordWriter>(
-            dir.filePath(QStringLiteral("record.h5")).toStdString(), layout, start);
-        record->trackAlarms(&test->alarms());
-    } catch (const std::exception& e) {
-        return fail(QString::fromStdString(e.what()));
-    }
+    // Every run writes its HDF5 record (docs/recording.md), flushed at least twice a second;
+    // stepping, record and the --reconnect policy are the session's (core/session).
+    SessionOptions sessionOptions;
+    sessionOptions.reconnect.attempts = options.reconnect;
+    sessionOptions.recordPath = dir.filePath(QStringLiteral("record.h5")).toStdString();
+    sessionOptions.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
+    TestSession session(std::move(test), sessionOptions);
+    HybridTest* const run = &session.test();
+    if (!session.openRecord())
+        return fail(QString::fromStdString(session.lastError()));
     RunStatistics stats(layout);
     RecordCollector records;
-    test->addObserver(record.get());
     if (csv)
-        test->addObserver(csv.get());
-    test->addObserver(&stats);
+        session.addObserver(csv.get());
+    session.addObserver(&stats);
     if (options.plots)
-        test->addObserver(&records);
+        session.addObserver(&records);
+    session.onReconnect = [run](const TestSession::Reconnect& r) {
+        err() << tr("hsmu run: link fault at t = %1 s (step %2): %3; reconnecting in %4 s "
+                    "(attempt %5 of %6)")
+                     .arg(num(run->time(), 6))
+                     .arg(run->currentStep())
+                     .arg(QString::fromStdString(r.reason))
+                     .arg(num(r.delay, 3))
+                     .arg(r.attempt)
+                     .arg(r.of)
+              << Qt::endl;
+    };
 
     if (options.controller.kind != comms::LinkAddress::Kind::Builtin)
         err() << tr("hsmu run: connecting to %1 (%2 protocol)")
                      .arg(QString::fromStdString(options.controller.toString()),
                           QString::fromStdString(comms::linkProtocol(options.controller, cfg.link)))
               << Qt::endl;
-    // SIGINT / SIGTERM from here on hold every site out of band (even mid-step).
-    SignalHold signalHold(*test);
-    if (!test->prepare())
-        return fail(tr("the test cannot start: %1").arg(QString::fromStdString(test->lastError())));
+    // SIGINT / SIGTERM from here on hold every site out of band (even mid-step); the
+    // session never resumes an operator hold.
+    SignalHold signalHold(*run);
+    if (!session.prepare())
+        return fail(
+            tr("the test cannot start: %1").arg(QString::fromStdString(session.lastError())));
 
     QElapsedTimer wall;
     wall.start();
-    const HybridTest::StepResult result = runLoop(*test, options, *record, signalHold);
+    Progress progress(*run);
+    session.addObserver(&progress);
+    const TestSession::Status result = session.runToEnd();
+    session.removeObserver(&progress);
     RunInfo info;
     info.configName = cfg.name;
     info.configFile = cfg.sourcePath;
     info.wallTimeS = wall.nsecsElapsed() * 1e-9;
 
-    int code = result == HybridTest::StepResult::Finished ? 0 : 1;
-    if (result == HybridTest::StepResult::Held) {
+    int code = result == TestSession::Status::Finished ? 0 : 1;
+    if (result == TestSession::Status::Held) {
         code = 2;
         err() << tr("hsmu run: test held at t = %1 s (step %2): %3")
-                     .arg(num(test->time(), 6))
-                     .arg(test->currentStep())
-                     .arg(QString::fromStdString(holdReason(*test).value_or("held")))
+                     .arg(num(run->time(), 6))
+                     .arg(run->currentStep())
+                     .arg(QString::fromStdString(holdReason(*run).value_or("held")))
               << Qt::endl;
     } else if (code != 0) {
         err() << tr("hsmu run: the test stopped unexpectedly (state %1)")
-                     .arg(QString::fromLatin1(testStateName(test->state())))
+                     .arg(QString::fromLatin1(testStateName(run->state())))
               << Qt::endl;
     }
     if (csv)
-        test->removeObserver(csv.get());
-    test->removeObserver(record.get());
-    if (!record->finish())
-        code = fail(tr("%1: the record could not be written: %2")
-                        .arg(QString::fromStdString(record->path()),
-                             QString::fromStdString(record->error())));
+        session.removeObserver(csv.get());
+    if (!session.finish())
+        code = fail(QString::fromStdString(session.lastError()));
     if (csv && !csv->finish())
         code = fail(tr("%1: write failed").arg(QString::fromStdString(csv->path())));
     try {
-        writeSummaryJson(dir.filePath(QStringLiteral("summary.json")).toStdString(), *test, stats,
+        writeSummaryJson(dir.filePath(QStringLiteral("summary.json")).toStdString(), *run, stats,
                          info);
     } catch (const std::exception& e) {
         code = fail(QString::fromStdString(e.what()));
     }
     if (options.plots) {
-        QStringList errors;
-        PlotExporter::writeRunPlots(dir.path(), layout, records.records(), &errors,
-                                    PlotReferences::of(cfg));
-        for (const QString& f : errors)
-            code = fail(tr("%1: the plot could not be written").arg(f));
+        if (!CliPlots::installed().run)
+            code = fail(tr("--plots: this program cannot draw (run it through hsmu)"));
+        else
+            for (const QString& f :
+                 CliPlots::installed().run(dir.path(), layout, records.records(), cfg))
+                code = fail(tr("%1: the plot could not be written").arg(f));
     }
-    RunReport::print(ConsoleStreams::out(), *test, stats, info, dir.path());
+    RunReport::print(ConsoleStreams::out(), *run, stats, info, dir.path());
     return code;
 }
 

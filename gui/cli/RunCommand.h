@@ -5,10 +5,13 @@
 // headless, start to end (options: RunOptions; reference: docs/cli.md).
 //
 // --controller tcp://HOST:PORT runs the specimens on an actuator controller over the link
-// (comms::makeControlFactory; 2 s connect timeout); --reconnect N is the headless retry
-// policy: when the test holds on a control fault (lost link, timeout) it resumes, which
-// reconnects, up to N times in a row (the count restarts once the test advances again), each
-// attempt printed on stderr. --approval overrides the configuration's updating.approval.
+// (comms::makeControlFactory; the timeouts of LinkTimeouts, core/config/LinkConfig.h, or the
+// configuration's controller.connectTimeout / stepDeadline). The stepping, the record and the
+// hold / reconnect policy are a TestSession's (core/session/TestSession.h), as in the console:
+// --reconnect N lets it resume after a control fault (lost link, timeout), which reconnects,
+// up to N times in a row with a doubling backoff (0.5 s, 1 s, 2 s ... 8 s; the count restarts
+// once the test advances again), each attempt printed on stderr. --approval overrides the
+// configuration's updating.approval.
 //
 // Progress on stderr (about every 5 %: percent, test time, steps/s); a short summary on stdout
 // (RunReport). Outputs in DIR: summary.json (RunSummary), steps.csv (StepCsvWriter; with

@@ -2,7 +2,7 @@
 
 #include "core/output/RunStatistics.h"
 #include "core/output/RunSummary.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/plots/PlotSelection.h"
 
 #include <QDir>

@@ -1,6 +1,6 @@
 #include "gui/cli/SignalHold.h"
 
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <fcntl.h>
 #include <poll.h>

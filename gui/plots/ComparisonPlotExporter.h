@@ -10,8 +10,8 @@
 // Names are made file-safe (PlotExporter::fileSafe).
 // Thread rules: GUI thread only.
 
-#include "core/test/ComparisonProtocol.h"
-#include "core/updating/ParameterSet.h"
+#include "core/session/ComparisonProtocol.h"
+#include "core/identification/ParameterSet.h"
 
 #include <QCoreApplication>
 #include <QString>

@@ -9,7 +9,7 @@
 // Thread rules: GUI thread only.
 
 #include "core/output/RunLayout.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <qcustomplot.h>
 

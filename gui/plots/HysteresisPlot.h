@@ -8,7 +8,7 @@
 // Thread rules: GUI thread only, like every widget.
 
 #include "core/output/RunLayout.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <qcustomplot.h>
 

@@ -10,7 +10,7 @@
 // legend; they survive clearData() and go with showParameter().
 // Thread rules: GUI thread only, like every widget.
 
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <qcustomplot.h>
 

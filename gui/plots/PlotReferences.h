@@ -7,7 +7,7 @@
 // Thread rules: plain data, copy freely.
 
 #include "core/config/TestConfig.h"
-#include "core/updating/ParameterSet.h"
+#include "core/identification/ParameterSet.h"
 
 #include <limits>
 #include <string>

@@ -9,7 +9,7 @@
 // Thread rules: one thread (the GUI's).
 
 #include "core/record/RecordData.h"
-#include "core/test/StepRecord.h"
+#include "core/experiment/StepRecord.h"
 
 #include <memory>
 #include <vector>

@@ -8,8 +8,8 @@
 // std::invalid_argument (no such specimen); never a crash.
 // Thread rules: none; reidentifyRecord() is meant to run off the GUI thread.
 
-#include "core/identification/IdentificationSettings.h"
-#include "core/identification/OfflineIdentification.h"
+#include "core/offline/IdentificationSettings.h"
+#include "core/offline/OfflineIdentification.h"
 
 #include <QString>
 

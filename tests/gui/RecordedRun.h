@@ -6,7 +6,7 @@
 #include "core/config/TestFactory.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "gui/PresetLibrary.h"
 #include "gui/cli/RecordCollector.h"
 

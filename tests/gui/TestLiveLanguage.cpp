@@ -22,7 +22,7 @@
 #include <QTest>
 #include <QTreeWidget>
 
-#include "core/test/Alarm.h"
+#include "core/util/Alarm.h"
 #include "gui/app/AlarmList.h"
 #include "gui/app/AlarmText.h"
 #include "gui/app/ConsoleSettings.h"

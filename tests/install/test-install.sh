@@ -13,7 +13,7 @@ export HOME="$work/home" XDG_CONFIG_HOME="$work/home/.config" XDG_DATA_HOME="$wo
 export QT_QPA_PLATFORM=offscreen
 
 check_tree() { # PREFIX
-    for f in bin/hsmu bin/hsmu-controller share/hsmu/presets/paper-condition-3.json \
+    for f in bin/hsmu bin/hsmu-console bin/hsmu-controller share/hsmu/presets/paper-condition-3.json \
              share/hsmu/translations/hsmu_es.qm share/hsmu/translations/hsmu_zh_CN.qm \
              share/applications/hsmu.desktop share/icons/hicolor/scalable/apps/hsmu.svg \
              share/doc/hsmu/console.md; do

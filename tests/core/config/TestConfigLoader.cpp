@@ -7,7 +7,7 @@
 #include "core/groundmotion/GroundMotion.h"
 #include "core/integration/Integrator.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <QtTest>
 

@@ -8,8 +8,8 @@
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
 #include "core/groundmotion/GroundMotionReader.h"
-#include "core/identification/MeasuredDataCsv.h"
-#include "core/test/HybridTest.h"
+#include "core/offline/MeasuredDataCsv.h"
+#include "core/experiment/HybridTest.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

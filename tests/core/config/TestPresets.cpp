@@ -8,7 +8,7 @@
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <QtTest>
 

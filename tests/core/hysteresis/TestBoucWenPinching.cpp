@@ -4,7 +4,7 @@
 
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/hysteresis/BoucWen.h"
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/hysteresis/LawFactory.h"

@@ -8,7 +8,7 @@
 // One CTest test per record: the executable takes a data tag (e.g. `calibrates:gill`).
 
 #include "core/identification/CalibrationDefaults.h"
-#include "core/identification/OfflineIdentification.h"
+#include "core/offline/OfflineIdentification.h"
 
 #include <QtTest>
 

@@ -13,7 +13,7 @@
 #include "core/config/TestFactory.h"
 #include "core/config/UpdatingConfig.h"
 #include "core/integration/StabilityCheck.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 
 #include <QDir>

@@ -7,7 +7,7 @@
 #include "core/config/TestFactory.h"
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 
 #include <fstream>
 #include <memory>

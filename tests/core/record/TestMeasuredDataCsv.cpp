@@ -2,7 +2,7 @@
 // declared units). Conversions are checked against hand-computed values; every malformed
 // file gives the exact message naming the line and what is wrong.
 
-#include "core/identification/MeasuredDataCsv.h"
+#include "core/offline/MeasuredDataCsv.h"
 
 #include <QtTest>
 

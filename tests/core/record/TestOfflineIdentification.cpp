@@ -1,4 +1,4 @@
-// Offline re-identification (core/identification/OfflineIdentification.h):
+// Offline re-identification (core/offline/OfflineIdentification.h):
 // - a recorded run of the paper's condition 3 (UKF updating, 3 s) re-identified from its
 //   record with the recorded settings gives the online parameter history, standard
 //   deviations, auxiliary force and fit error to 1e-9 relative (in fact bit for bit: same
@@ -17,8 +17,8 @@
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
 #include "core/identification/HistoryFit.h"
-#include "core/identification/MeasuredDataCsv.h"
-#include "core/identification/OfflineIdentification.h"
+#include "core/offline/MeasuredDataCsv.h"
+#include "core/offline/OfflineIdentification.h"
 #include "core/record/RecordReader.h"
 
 #include <QTemporaryDir>

@@ -4,7 +4,7 @@
 
 #include "RecordFixture.h"
 
-#include "core/identification/MeasuredDataCsv.h"
+#include "core/offline/MeasuredDataCsv.h"
 #include "core/record/RecordCsvExport.h"
 #include "core/record/RecordReader.h"
 

@@ -6,8 +6,8 @@
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/structure/Structure.h"
-#include "core/test/ComparisonProtocol.h"
-#include "core/test/HybridTest.h"
+#include "core/session/ComparisonProtocol.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/UkfIdentifier.h"
 

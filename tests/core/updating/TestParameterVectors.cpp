@@ -12,7 +12,7 @@
 #include "core/hysteresis/Bilinear.h"
 #include "core/hysteresis/BoucWen.h"
 #include "core/structure/Structure.h"
-#include "core/test/HybridTest.h"
+#include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/Reporter.h"
 #include "core/updating/UkfIdentifier.h"

@@ -1,0 +1,217 @@
+#include "core/offline/OfflineIdentification.h"
+
+#include "core/config/TestFactory.h"
+#include "core/config/UpdatingConfig.h"
+#include "core/experimental/ExperimentalControl.h"
+#include "core/experimental/ExperimentalElement.h"
+#include "core/hysteresis/HysteresisLaw.h"
+#include "core/identification/CalibrationDefaults.h"
+#include "core/identification/HistoryFit.h"
+#include "core/structure/Structure.h"
+#include "core/updating/Identifier.h"
+#include "core/updating/ModelUpdater.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace hsmu {
+
+namespace {
+
+/// Plays back a measured history: the measurement of step k is sample k, whatever the target.
+class PlaybackControl final : public ExperimentalControl {
+public:
+    explicit PlaybackControl(const SpecimenHistory& h) : m_h(h) {}
+    void select(std::size_t k) { m_k = k; }
+    std::string description() const override { return "playback of " + m_h.source; }
+    ControlResult prepare(double) override { return ControlResult::success(); }
+    ControlResult setTarget(double) override { return ControlResult::success(); }
+    ControlResult measure(ControlMeasurement& out) override {
+        out = {m_h.deformation[m_k], m_h.force[m_k]};
+        return ControlResult::success();
+    }
+    ControlResult commit() override { return ControlResult::success(); }
+    void hold(const std::string&) override {}
+    void resume() override {}
+
+private:
+    const SpecimenHistory& m_h;
+    std::size_t m_k = 0;
+};
+
+std::string at(double time, const std::string& message) {
+    std::ostringstream s;
+    s << "t = " << time << " s: " << message;
+    return s.str();
+}
+
+void putRow(Eigen::MatrixXd& m, Eigen::Index row, const std::vector<double>& values) {
+    for (std::size_t j = 0; j < values.size(); ++j)
+        m(row, Eigen::Index(j)) = values[j];
+}
+
+ParameterValues rowValues(const std::vector<std::string>& names, const Eigen::MatrixXd& m,
+                          Eigen::Index row) {
+    ParameterValues v;
+    for (std::size_t j = 0; j < names.size(); ++j)
+        v[names[j]] = m(row, Eigen::Index(j));
+    return v;
+}
+
+/// The final fit over the whole history (Nelder-Mead), from the last estimate.
+void finalFit(const SpecimenHistory& h, const IdentificationSettings& s,
+              std::map<std::string, double>& all, OfflineIdentificationResult& r) {
+    HistoryFitSpec spec;
+    spec.law = s.model.law;
+    spec.initial = all;
+    for (const auto& name : r.parameterNames) {
+        const ParameterBounds& b = s.updating.bounds.at(name);
+        spec.fitted.push_back({name, b.lower, b.upper});
+    }
+    spec.optimizer.maxEvaluations = s.updating.maxEvaluations;
+    const HistoryFitResult fit = HistoryFit(spec).fit(h.deformation, h.force);
+    if (!fit.ok) {
+        r.messages.push_back(at(h.time.back(), "final Nelder-Mead fit failed: " + fit.reason));
+        return;
+    }
+    if (!(fit.rmsAfter < fit.rmsBefore))
+        return;
+    ++r.refits;
+    for (const auto& name : r.parameterNames)
+        all[name] = r.finalEstimate[name] = fit.parameters.at(name);
+    std::ostringstream m;
+    m << "final Nelder-Mead fit over " << h.size() << " samples: RMS force error " << fit.rmsBefore
+      << " -> " << fit.rmsAfter << " (" << fit.evaluations << " evaluations)";
+    r.messages.push_back(at(h.time.back(), m.str()));
+}
+
+} // namespace
+
+/// The calibration over the whole history, and the verdict.
+void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
+                    OfflineIdentificationResult& r) {
+    CalibrationRequest request;
+    request.law = s.model.law;
+    request.uRef = s.updating.modelURef;
+    request.fRef = s.updating.modelFRef;
+    if (s.updating.method == "ukf" && s.updating.ukfFormulation == "robust")
+        request.bounds = s.updating.bounds; // the paper's bounds are for its normalization
+    try {
+        r.calibration = calibrateHistory(h.deformation, h.force, request);
+    } catch (const std::exception& e) {
+        r.messages.push_back(at(h.time.back(), std::string("calibration: ") + e.what()));
+        return;
+    }
+    if (!r.calibration->ok) {
+        r.messages.push_back(at(h.time.back(), "calibration failed: " + r.calibration->reason));
+        return;
+    }
+    if (r.calibration->nrmse > s.verdictNrmse) {
+        std::ostringstream m;
+        m.setf(std::ios::fixed);
+        m.precision(2);
+        m << "the model family cannot represent this specimen (best NRMSE "
+          << r.calibration->nrmse << ")";
+        r.verdict = m.str();
+    }
+}
+
+OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
+                                            const IdentificationSettings& settings) {
+    if (const std::string why = history.problem(); !why.empty())
+        throw std::invalid_argument(history.source + ": " + why);
+    if (!settings.online) {
+        OfflineIdentificationResult r;
+        r.method = "calibration";
+        calibrateWhole(history, settings, r);
+        if (!r.calibration || !r.calibration->ok)
+            throw std::invalid_argument("calibration of " + history.source + " failed: " +
+                                        (r.messages.empty() ? "" : r.messages.back()));
+        r.parameterNames = r.calibration->names;
+        for (std::size_t j = 0; j < r.parameterNames.size(); ++j) {
+            const double sd = r.calibration->standardDeviation[Eigen::Index(j)];
+            r.finalEstimate[r.parameterNames[j]] = r.calibration->estimate[Eigen::Index(j)];
+            r.finalStddev[r.parameterNames[j]] = std::isfinite(sd) ? sd : 0.0;
+            r.initial[r.parameterNames[j]] = r.calibration->estimate[Eigen::Index(j)];
+        }
+        r.finalNrmse = r.calibration->nrmse;
+        r.finalRmsError = r.calibration->rmsError;
+        return r;
+    }
+    const std::string where = "identification of " + history.source;
+    auto model = buildLaw(settings.model, where);
+    std::map<std::string, double> all; // every parameter of the law (for the replays)
+    for (const auto& name : model->parameterNames())
+        all[name] = *model->parameter(name);
+    auto identifier = buildIdentifier(settings.updating, *model, settings.dt, where);
+    const Identifier& id = *identifier;
+    ModelUpdater updater(
+        settings.specimen, std::move(model), std::move(identifier), settings.updating.inspector,
+        std::make_unique<Reporter>(std::vector<ReporterTarget>{}, ReporterPolicy::EveryStep));
+    updater.setMaxConsecutiveRejections(history.size() + 1); // offline: never hold
+
+    Structure structure;
+    structure.addDof("playback", 1.0);
+    auto control = std::make_unique<PlaybackControl>(history);
+    PlaybackControl& playback = *control;
+    structure.addElement(std::make_unique<ExperimentalElement>(
+        settings.specimen, "playback", std::vector<DofTerm>{{0, 1.0}}, std::move(control),
+        SafetyLimits{}, 1.0));
+    auto* specimen = static_cast<ExperimentalElement*>(structure.element(settings.specimen));
+    std::string error;
+    if (!updater.attach(structure, settings.dt, &error))
+        throw std::invalid_argument(where + ": " + error);
+
+    OfflineIdentificationResult r;
+    r.method = id.methodName();
+    r.parameterNames = id.parameterNames();
+    r.initial = id.estimate();
+    const Eigen::Index n = history.size(), p = Eigen::Index(r.parameterNames.size());
+    r.parameters.resize(n, p);
+    r.stddev.resize(n, p);
+    r.auxiliaryForce.resize(n);
+    r.fitError.resize(n);
+    std::vector<Alarm> alarms;
+    UpdatingSample sample;
+    Eigen::VectorXd u(1);
+    for (Eigen::Index k = 0; k < n; ++k) {
+        playback.select(std::size_t(k));
+        u[0] = history.deformation[std::size_t(k)];
+        const double t = history.time[std::size_t(k)];
+        if (ElementStatus st = specimen->setTrial(u); !st.ok || !(st = specimen->commit()).ok)
+            throw std::invalid_argument(where + ": " + st.message); // playback never fails
+        const std::size_t before = alarms.size();
+        updater.afterCommit(int(k) + 1, t, structure, alarms, sample);
+        for (std::size_t a = before; a < alarms.size(); ++a) {
+            if (alarms[a].kind == AlarmKind::EstimatorRejected)
+                ++r.estimatorWarnings;
+            r.messages.push_back(at(t, alarms[a].message));
+        }
+        putRow(r.parameters, k, sample.parameters);
+        putRow(r.stddev, k, sample.stddev);
+        r.auxiliaryForce[k] = sample.auxiliaryForce;
+        r.fitError[k] = sample.fitError;
+        const bool nelderMead = settings.updating.method == "nelderMead";
+        if (nelderMead && k > 0 && r.parameters.row(k) != r.parameters.row(k - 1))
+            ++r.refits; // a Nelder-Mead estimate changes only by an accepted fit
+    }
+    r.finalEstimate = rowValues(r.parameterNames, r.parameters, n - 1);
+    r.finalStddev = rowValues(r.parameterNames, r.stddev, n - 1);
+    for (const auto& [name, v] : r.finalEstimate)
+        all[name] = v;
+    if (settings.finalFit && settings.updating.method == "nelderMead")
+        finalFit(history, settings, all, r);
+    r.finalRmsError =
+        HistoryFit::rmsError(settings.model.law, all, history.deformation, history.force, 0);
+    double sumF2 = 0.0;
+    for (double f : history.force)
+        sumF2 += f * f;
+    const double rmsF = std::sqrt(sumF2 / double(n));
+    r.finalNrmse = rmsF > 0.0 ? r.finalRmsError / rmsF : 0.0;
+    if (settings.calibrate)
+        calibrateWhole(history, settings, r);
+    return r;
+}
+
+} // namespace hsmu

@@ -1,0 +1,71 @@
+#pragma once
+// OfflineIdentification: re-run the identification of a specimen after the test, on its
+// measured history (a run record or an imported CSV; SpecimenHistory.h), with the recorded
+// or overridden settings (IdentificationSettings.h). docs/cli.md, `hsmu replay --identify`.
+//
+// Each sample goes through the same ModelUpdater as the online run (docs/method.md, The four
+// modules: auxiliary model <- measured deformation, identifier <- (deformation, force), inspector
+// <- auxiliary vs measured force), the specimen's measurement being played back instead of
+// measured. So with the recorded settings the parameter history equals the online one (the
+// UKF is deterministic: equal to the last bit on the same machine and build), and the
+// Nelder-Mead identifier refits when the inspector asks (fit error above its threshold,
+// after its cooldown), as online. With settings.finalFit (Nelder-Mead only) one more fit
+// over the whole history follows the last sample.
+//
+// Outputs per sample k (after it was identified): the estimate and its standard deviations
+// (the law's units: normalized by uRef / fRef for Bouc-Wen; 0 where the method has none),
+// the auxiliary model's force (the prediction with the estimate known before sample k), and
+// the inspector's fit error e = RMS(F_aux - F) / RMS(F) over its sliding window [-].
+// Summary: the final estimate and the RMS force error of the final model replayed from the
+// virgin state over the whole history (HistoryFit::rmsError) [force units] and its ratio to
+// RMS(F) [-].
+// Calibration (settings.calibrate): the law fitted over the whole history by the global-then-
+// local least squares of Calibration.h, with the scales and bounds of CalibrationDefaults.h
+// unless the model gives uRef / fRef and the updating section bounds; its NRMSE is the best
+// the law can do, and above settings.verdictNrmse the verdict says so. settings.online false
+// skips the online pass (only the calibration; no per-sample rows).
+// Errors: std::invalid_argument for an unusable history (SpecimenHistory::problem()),
+// ConfigError for settings the method cannot use. A rejected UKF step is reported, not
+// fatal (offline the estimator never holds).
+// Cost: one online identification step per sample (UKF: a few us) plus the refits.
+// Thread rules: none; independent calls may run on different threads.
+
+#include "core/identification/Calibration.h"
+#include "core/offline/IdentificationSettings.h"
+#include "core/offline/SpecimenHistory.h"
+#include "core/identification/ParameterSet.h"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+struct OfflineIdentificationResult {
+    std::string method;                      ///< "UKF" or "Nelder-Mead"
+    std::vector<std::string> parameterNames; ///< column order of parameters / stddev
+    ParameterValues initial;                 ///< the estimate before sample 0
+    Eigen::MatrixXd parameters;              ///< [N x nParam] estimate after sample k
+    Eigen::MatrixXd stddev;                  ///< [N x nParam]
+    Eigen::VectorXd auxiliaryForce;          ///< [N] [force units]
+    Eigen::VectorXd fitError;                ///< [N] [-]
+    ParameterValues finalEstimate;           ///< after the last sample (and the final fit)
+    ParameterValues finalStddev;
+    double finalRmsError = 0.0;        ///< replay of the final model over the history [force units]
+    double finalNrmse = 0.0;           ///< finalRmsError / RMS(F) [-]
+    int estimatorWarnings = 0;         ///< inspector alarms "estimator rejected" (rejected updates)
+    int refits = 0;                    ///< Nelder-Mead fits accepted (the final fit included)
+    std::vector<std::string> messages; ///< "t = T s: ..." identifier and inspector messages
+    /// The calibration over the whole history (settings.calibrate): the law's optimum.
+    std::optional<CalibrationResult> calibration;
+    /// "" or "the model family cannot represent this specimen (best NRMSE x.xx)" when the
+    /// calibration's NRMSE is above settings.verdictNrmse.
+    std::string verdict;
+};
+
+OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
+                                            const IdentificationSettings& settings);
+
+} // namespace hsmu

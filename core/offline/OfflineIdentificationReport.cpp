@@ -1,0 +1,124 @@
+#include "core/offline/OfflineIdentificationReport.h"
+
+#include "core/record/CsvFile.h"
+#include "core/record/CsvText.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace hsmu {
+
+namespace {
+
+void writeCsv(const std::string& path, const SpecimenHistory& h,
+              const OfflineIdentificationResult& r, std::vector<std::string>& written) {
+    using csvtext::number;
+    CsvFile f(path, written);
+    f.column("time", "s");
+    f.column("deformation", h.deformationUnits);
+    f.column("force", h.forceUnits);
+    f.column("auxiliary_force", h.forceUnits);
+    f.column("fit_error", "-");
+    for (const auto& p : r.parameterNames)
+        f.column(p, "-");
+    for (const auto& p : r.parameterNames)
+        f.column("stddev " + p, "-");
+    f.endHeader();
+    for (Eigen::Index k = 0; k < r.parameters.rows(); ++k) {
+        const auto i = std::size_t(k);
+        std::vector<std::string> row{number(h.time[i]), number(h.deformation[i]),
+                                     number(h.force[i]), number(r.auxiliaryForce[k]),
+                                     number(r.fitError[k])};
+        for (const Eigen::MatrixXd* m : {&r.parameters, &r.stddev})
+            for (Eigen::Index j = 0; j < m->cols(); ++j)
+                row.push_back(number((*m)(k, j)));
+        f.line(row);
+    }
+    f.close();
+}
+
+} // namespace
+
+std::vector<std::string> writeIdentificationReport(const std::string& dir,
+                                                   const SpecimenHistory& history,
+                                                   const IdentificationSettings& settings,
+                                                   const OfflineIdentificationResult& result,
+                                                   const ParameterValues& online) {
+    std::vector<std::string> written;
+    const std::filesystem::path d(dir);
+    writeCsv((d / "parameters.csv").string(), history, result, written);
+
+    nlohmann::json j;
+    j["source"] = history.source;
+    j["specimen"] = settings.specimen;
+    j["method"] = result.method;
+    j["samples"] = history.size();
+    j["dt"] = settings.dt;
+    j["units"] = {{"deformation", history.deformationUnits}, {"force", history.forceUnits}};
+    nlohmann::json model = {{"law", settings.model.law}};
+    for (const auto& [name, v] : settings.model.params)
+        model[name] = v;
+    j["model"] = model;
+    j["updating"] = settings.updatingDocument;
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& name : result.parameterNames) {
+        nlohmann::json p = {{"initial", result.initial.at(name)},
+                            {"final", result.finalEstimate.at(name)},
+                            {"stddev", result.finalStddev.at(name)}};
+        if (const auto it = online.find(name); it != online.end())
+            p["online"] = it->second;
+        params[name] = p;
+    }
+    j["parameters"] = params;
+    j["finalRmsError"] = result.finalRmsError;
+    j["finalNrmse"] = result.finalNrmse;
+    j["finalFitError"] = result.fitError.size() ? result.fitError[result.fitError.size() - 1] : 0.0;
+    j["refits"] = result.refits;
+    j["estimatorWarnings"] = result.estimatorWarnings;
+    j["messages"] = result.messages;
+    if (result.calibration && result.calibration->ok) {
+        const CalibrationResult& c = *result.calibration;
+        nlohmann::json cal = {{"nrmse", c.nrmse},
+                              {"rmsError", c.rmsError},
+                              {"starts", c.startsTried},
+                              {"replays", c.residualEvaluations},
+                              {"seconds", c.computeSeconds}};
+        nlohmann::json all = nlohmann::json::object();
+        for (const auto& [name, v] : c.parameters)
+            all[name] = v;
+        cal["model"] = all;
+        nlohmann::json fitted = nlohmann::json::object();
+        for (std::size_t i = 0; i < c.names.size(); ++i) {
+            const auto k = Eigen::Index(i);
+            const double sd = c.standardDeviation[k];
+            nlohmann::json p = {{"value", c.estimate[k]}, {"onBound", bool(c.onBound[i])}};
+            if (std::isfinite(sd)) {
+                p["stddev"] = sd;
+                p["ci95"] = {c.estimate[k] - 1.96 * sd, c.estimate[k] + 1.96 * sd};
+                nlohmann::json corr = nlohmann::json::object();
+                for (std::size_t m = 0; m < c.names.size(); ++m)
+                    if (std::isfinite(c.correlation(k, Eigen::Index(m))))
+                        corr[c.names[m]] = c.correlation(k, Eigen::Index(m));
+                p["correlation"] = corr;
+            }
+            fitted[c.names[i]] = p;
+        }
+        cal["parameters"] = fitted;
+        j["calibration"] = cal;
+    }
+    j["verdict"] = result.verdict;
+    const std::string path = (d / "summary.json").string();
+    std::ofstream out(path);
+    out << j.dump(2) << '\n';
+    out.close();
+    if (!out)
+        throw std::runtime_error(path + ": cannot be written");
+    written.push_back(path);
+    return written;
+}
+
+} // namespace hsmu

@@ -1,0 +1,36 @@
+#pragma once
+// OfflineIdentificationReport: the files of `hsmu replay --identify ... --out DIR`
+// (docs/cli.md) from an OfflineIdentificationResult:
+//
+//   parameters.csv  one row per sample: time [s], deformation [unit], force [unit],
+//                   auxiliary_force [unit], fit_error [-], <parameter> [-] ...,
+//                   stddev <parameter> [-] ...   (CsvText.h formatting: exact round trip)
+//   summary.json    { "source", "specimen", "method", "samples", "dt", "units":
+//                     {"deformation", "force"}, "model": {law, parameters},
+//                     "updating": the settings section used,
+//                     "parameters": { NAME: {"initial", "final", "stddev"[, "online"]} },
+//                     "finalRmsError", "finalNrmse", "finalFitError", "refits",
+//                     "estimatorWarnings", "messages": [...],
+//                     "calibration": { "nrmse", "rmsError", "starts", "replays", "seconds",
+//                        "model": {every parameter}, "parameters": { NAME: {"value",
+//                        "onBound", "stddev", "ci95": [lo, hi], "correlation": {NAME: r}}}},
+//                     "verdict": "" or "the model family cannot represent ..." }
+// "online" is the run's own final estimate when the record holds one for the same method
+// and parameter. Parameters are in the law's units (normalized by uRef / fRef for Bouc-Wen).
+// Throws std::runtime_error naming a file that cannot be written.
+
+#include "core/offline/OfflineIdentification.h"
+
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+/// Returns the paths written (DIR must exist).
+std::vector<std::string> writeIdentificationReport(const std::string& dir,
+                                                   const SpecimenHistory& history,
+                                                   const IdentificationSettings& settings,
+                                                   const OfflineIdentificationResult& result,
+                                                   const ParameterValues& online = {});
+
+} // namespace hsmu

@@ -1,0 +1,91 @@
+#include "core/session/ComparisonSummary.h"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace hsmu {
+
+namespace {
+
+nlohmann::json number(double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
+
+nlohmann::json metricJson(const ComparisonMetric& m, const ComparisonRun& run) {
+    return {{"force_nrmse", number(m.forceNrmse)},
+            {"force_peak_error", number(m.forcePeakError)},
+            {"displacement_nrmse", number(m.displacementNrmse)},
+            {"displacement_peak_error", number(m.displacementPeakError)},
+            {"steps", run.steps},
+            {"final_state", run.finalState}};
+}
+
+nlohmann::json lastOf(const std::vector<std::string>& names,
+                      const std::vector<std::vector<double>>& history) {
+    nlohmann::json out = nlohmann::json::object();
+    if (history.empty())
+        return out;
+    const std::vector<double>& last = history.back();
+    for (std::size_t i = 0; i < names.size(); ++i)
+        out[names[i]] = i < last.size() ? number(last[i]) : nullptr;
+    return out;
+}
+
+} // namespace
+
+ParameterValues trueParameters(const TestConfig& cfg, const std::vector<std::string>& names) {
+    ParameterValues out;
+    for (const ElementSpec& e : cfg.elements) {
+        // Only a specimen whose true law is the identified model's law has comparable values
+        // (a Bouc-Wen specimen identified as bilinear has no "true" bilinear k0).
+        if (e.name != cfg.updating.specimen || !e.experimental ||
+            e.specimen.trueMaterial.law != e.material.law)
+            continue;
+        for (const auto& name : names)
+            if (auto it = e.specimen.trueMaterial.params.find(name);
+                it != e.specimen.trueMaterial.params.end())
+                out[name] = it->second;
+    }
+    return out;
+}
+
+nlohmann::json makeComparisonSummary(const ComparisonResult& r, const TestConfig& cfg) {
+    const ComparisonRun& u = r.updated;
+    nlohmann::json j;
+    j["config"] = {{"name", cfg.name}, {"file", cfg.sourcePath}};
+    j["element"] = r.element;
+    j["dof"] = r.dof;
+    j["force_unit"] = r.forceUnit;
+    j["deformation_unit"] = r.deformationUnit;
+    j["displacement_unit"] = "m";
+    j["runs"] = {{"initial", metricJson(r.initialMetric, r.initial)},
+                 {"updated", metricJson(r.updatedMetric, r.updated)}};
+    j["reference"] = {{"steps", r.reference.steps}, {"final_state", r.reference.finalState}};
+    j["parameters"] = u.parameterNames;
+    j["final_parameters"] = lastOf(u.parameterNames, u.parameters);
+    j["final_standard_deviations"] = lastOf(u.parameterNames, u.stddev);
+    nlohmann::json truth = nlohmann::json::object();
+    for (const auto& [name, value] : trueParameters(cfg, u.parameterNames))
+        truth[name] = number(value);
+    j["true_parameters"] = truth;
+    j["applied_updates"] = u.appliedUpdates;
+    j["steps"] = u.steps;
+    j["alarms"] = {{"reference", r.reference.alarms},
+                   {"initial", r.initial.alarms},
+                   {"updated", r.updated.alarms}};
+    return j;
+}
+
+void writeComparisonJson(const std::string& path, const ComparisonResult& result,
+                         const TestConfig& cfg) {
+    std::ofstream out(path, std::ios::out | std::ios::trunc);
+    if (!out)
+        throw std::runtime_error(path + ": cannot be opened for writing");
+    out << makeComparisonSummary(result, cfg).dump(2) << '\n';
+    out.flush();
+    if (!out)
+        throw std::runtime_error(path + ": write failed");
+}
+
+} // namespace hsmu

@@ -1,0 +1,99 @@
+#include "gui/cli/CliLauncher.h"
+
+#include "gui/app/ConsoleSettings.h"
+#include "gui/app/Translations.h"
+#include "gui/cli/CompareCommand.h"
+#include "gui/cli/ExportCommand.h"
+#include "gui/cli/MaterialCommand.h"
+#include "gui/cli/ReplayCommand.h"
+#include "gui/cli/RunCommand.h"
+
+#include <QCoreApplication>
+#include <QTextStream>
+
+#include <cerrno>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <unistd.h>
+
+namespace hsmu::gui {
+
+namespace {
+
+bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names) {
+    for (int i = 1; i < argc; ++i)
+        for (const char* n : names)
+            if (std::strcmp(argv[i], n) == 0)
+                return true;
+    return false;
+}
+
+/// Replace this process with hsmu-console (next to this executable), same arguments.
+int execConsole(char** argv) {
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const std::string console =
+        ((ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path()) / "hsmu-console")
+            .string();
+    std::string name = "hsmu-console";
+    argv[0] = name.data();
+    ::execv(console.c_str(), argv);
+    const int e = errno;
+    QTextStream(stderr) << "hsmu: cannot start " << QString::fromStdString(console) << ": "
+                        << QString::fromLocal8Bit(std::strerror(e))
+                        << " (the console, the replay window and --plots are drawn by it)"
+                        << Qt::endl;
+    return 1;
+}
+
+} // namespace
+
+void CliLauncher::describeApplication() {
+    QCoreApplication::setApplicationName(QStringLiteral("hsmu"));
+    QCoreApplication::setOrganizationName(QStringLiteral("HSMU"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(HSMU_VERSION));
+    Translations::install(*QCoreApplication::instance(),
+                          ConsoleSettings::language()); // "" = the system locale
+}
+
+bool CliLauncher::headlessCommand(int argc, char** argv) {
+    const std::string sub = argc > 1 ? argv[1] : "";
+    if (sub == "run" || sub == "compare")
+        return !hasArgument(argc, argv, {"--plots"});
+    if (sub == "material" || sub == "export")
+        return true;
+    return sub == "replay" && hasArgument(argc, argv, {"--identify", "--import"});
+}
+
+int CliLauncher::runHeadless(const QStringList& arguments) {
+    const QString sub = arguments.value(1);
+    if (sub == QLatin1String("run"))
+        return RunCommand::exec(arguments);
+    if (sub == QLatin1String("compare"))
+        return CompareCommand::exec(arguments);
+    if (sub == QLatin1String("export"))
+        return ExportCommand::exec(arguments);
+    if (sub == QLatin1String("replay"))
+        return ReplayCommand::exec(arguments); // --identify / --import
+    return MaterialCommand::exec(arguments);
+}
+
+int CliLauncher::main(int argc, char** argv) {
+    try {
+        if (!headlessCommand(argc, argv))
+            return execConsole(argv);
+        QCoreApplication app(argc, argv); // no windowing system needed
+        describeApplication();
+        return runHeadless(app.arguments());
+    } catch (const std::exception& e) { // last line of defence: a message, never an abort
+        QTextStream(stderr) << "hsmu: internal error: " << e.what() << Qt::endl;
+    } catch (...) {
+        QTextStream(stderr) << "hsmu: internal error" << Qt::endl;
+    }
+    return 1;
+}
+
+} // namespace hsmu::gui
