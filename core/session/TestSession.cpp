@@ -151,8 +151,9 @@ void TestSession::emergencyHold(const std::string& reason) {
         m_emergencyReason = reason;
     }
     m_emergency.store(true);
-    // The controls' out-of-band hold (reaching a step blocked on a silent link) is added by
-    // the emergency-hold work of issue 15 (item 3) right here.
+    // Out of band: every control gets its hold now, also while a step is blocked on a silent
+    // link (HybridTest::emergencyHold is callable from any thread).
+    m_test->emergencyHold(reason);
 }
 
 void TestSession::hold(const std::string& reason) {
