@@ -42,12 +42,12 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
 
 ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOptions& given,
                                   const LinkSpec& link) {
-    // Numerical elements on an OpenSees site, for every front end that builds through comms.
-    of::installOpenSeesTwins({options.connectTimeout, options.stepDeadline});
     const std::string protocol = linkProtocol(address, link);
     TcpControlOptions options = given; // the configuration's timeouts, when it sets them
     options.connectTimeout = link.connectTimeout.value_or(options.connectTimeout);
     options.stepDeadline = link.stepDeadline.value_or(options.stepDeadline);
+    // Numerical elements on an OpenSees site, for every front end that builds through comms.
+    of::installOpenSeesTwins({options.connectTimeout, options.stepDeadline});
     if (protocol == "builtin")
         return {};
     if (protocol == "simapp" || protocol == "generictcp" || protocol == "adapter") {
