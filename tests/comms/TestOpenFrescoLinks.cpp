@@ -333,7 +333,13 @@ private slots:
         server.join();
         QVERIFY(!r.ok);
         QVERIFY2(r.reason.find("emergency hold: test") != std::string::npos, r.reason.c_str());
-        QCOMPARE(server.notes, std::vector<std::string>{"closed while measure() was blocked"});
+        // The site sees the connection closed (no further bytes). Since setTarget() sends the
+        // response request with the trial (send-all / acquire-all, sites), the server's "get"
+        // no longer proves that measure() is already blocked in its read, so either order of
+        // the close and measure()'s return is accepted here; the blocked case itself is
+        // asserted over the native link by test_comms_emergency_hold.
+        QCOMPARE(server.notes.size(), std::size_t(1));
+        QVERIFY2(server.notes[0] != "extra bytes", server.notes[0].c_str());
         QVERIFY(!c.setTarget(0.003).ok); // held until resumed; then the link is down
         c.hold("test");
         c.resume();
