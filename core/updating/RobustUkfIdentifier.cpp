@@ -1,12 +1,12 @@
 #include "core/updating/RobustUkfIdentifier.h"
 
-#include "core/identification/CalibrationDefaults.h"
 #include "core/identification/HistoryScales.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace hsmu {
 
@@ -34,16 +34,6 @@ double& field(BoucWenParameters& p, BoucWenUkfIndex i) {
     default:
         return p.deltaEta;
     }
-}
-
-/// The values of p for the spec's fitted parameters, in its order (a calibration start).
-std::vector<double> startOf(const CalibrationSpec& spec, BoucWenParameters p) {
-    std::vector<double> s;
-    for (const auto& q : spec.fitted)
-        for (BoucWenUkfIndex i : kParams)
-            if (q.name == boucWenUkfIndexName(i))
-                s.push_back(field(p, i));
-    return s;
 }
 
 bool isUkfParameter(const std::string& name) {
@@ -130,147 +120,158 @@ bool RobustUkfIdentifier::setBounds(const std::string& name, const ParameterBoun
     return true;
 }
 
-bool RobustUkfIdentifier::replayState(const BoucWenParameters& p, BoucWenState& state,
-                                      double& nrmse) const {
-    if (!BoucWen::admissible(p))
-        return false;
-    BoucWen law(p);
-    double sum = 0.0, sumF = 0.0;
-    for (std::size_t k = 0; k < m_u.size(); ++k) {
-        if (law.setTrialDeformation(m_u[k]) != LawStatus::Ok)
-            return false;
+RobustUkfIdentifier::~RobustUkfIdentifier() {
+    if (m_job && m_job->result.valid())
+        m_job->result.wait(); // the worker reads nothing of ours, but let it finish
+}
+
+double RobustUkfIdentifier::anchorHistoryNrmse() const {
+    return m_sumF2 > 0 ? std::sqrt(m_anchorSse / m_sumF2) : 0.0;
+}
+
+void RobustUkfIdentifier::clearWindows() {
+    std::fill(m_window.begin(), m_window.end(), 0.0);
+    std::fill(m_anchorWindow.begin(), m_anchorWindow.end(), 0.0);
+    m_windowSum = m_anchorWindowSum = 0.0;
+    m_windowNext = 0;
+}
+
+void RobustUkfIdentifier::startAnchor(bool global, bool diverged,
+                                      const std::optional<BoucWenParameters>& estimate) {
+    AnchorJobInput in;
+    in.u = m_u;
+    in.f = m_f;
+    in.uRef = m_uRef;
+    in.fRef = m_fRef;
+    if (m_anchors > 0)
+        in.anchor = m_anchor;
+    in.estimate = estimate;
+    in.initial = m_initial;
+    in.userBounds = m_userBounds;
+    in.global = global;
+    in.rescaleFactor = m_settings.rescaleFactor;
+    in.verdictReversals = m_settings.verdictReversals;
+    in.verdictNrmse = m_settings.verdictNrmse;
+    Job& job = m_job.emplace();
+    job.anchor = true;
+    job.diverged = diverged;
+    job.startSize = m_u.size();
+    job.applyAt = m_u.size() + jobDelay(m_u.size());
+    job.startAmplitude = m_maxAmplitude;
+    job.result = std::async(std::launch::async, [in = std::move(in)] {
+        return JobOutcome{anchorJob(in), {}};
+    });
+    ++m_jobs;
+}
+
+void RobustUkfIdentifier::startVerify(const BoucWenParameters& candidate) {
+    Job& job = m_job.emplace();
+    job.startSize = m_u.size();
+    job.applyAt = m_u.size() + jobDelay(m_u.size());
+    job.anchorNrmseAtStart = anchorHistoryNrmse();
+    job.candidate = candidate;
+    job.result = std::async(std::launch::async, [u = m_u, f = m_f, candidate] {
+        return JobOutcome{{}, verifyJob(u, f, candidate)};
+    });
+    ++m_jobs;
+}
+
+void RobustUkfIdentifier::restartAtAnchor() {
+    m_ukf->restart(m_anchor, m_anchorLaw->committedState(), m_u.back(), m_anchorSd);
+    m_published = m_anchor;
+}
+
+IdentificationStatus RobustUkfIdentifier::applyJob() {
+    Job job = std::move(*m_job);
+    m_job.reset();
+    if (job.result.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+        ++m_waits;
+    JobOutcome out = job.result.get();
+    m_workerCpu += out.anchor.cpuSeconds + out.verify.cpuSeconds;
+    if (job.anchor)
+        return applyAnchor(job, out.anchor);
+    IdentificationStatus st;
+    if (job.discarded || !m_ukf)
+        return st;
+    const VerifyJobResult& v = out.verify;
+    const double na = job.anchorNrmseAtStart;
+    if (!v.ok || v.nrmse > m_settings.driftRatio * na) {
+        restartAtAnchor();
+        ++m_pullBacks;
+        std::ostringstream m;
+        m.precision(3);
+        m << "UKF estimate replays the history with NRMSE " << (v.ok ? v.nrmse : NAN)
+          << " against the anchor's " << na << ": back to the anchor";
+        st.message = m.str();
+    } else {
+        m_published = job.candidate; // verified on the history up to the job's start
+    }
+    st.updated = true;
+    return st;
+}
+
+IdentificationStatus RobustUkfIdentifier::applyAnchor(Job& job, const AnchorJobResult& r) {
+    IdentificationStatus st;
+    if (!r.ok) {
+        st.ok = !job.diverged;
+        st.message = "no anchor: " + r.reason;
+        return st;
+    }
+    // Catch up over the samples measured since the job started.
+    BoucWen law(r.best);
+    law.setCommittedState(r.state, m_u[job.startSize - 1]);
+    double sse = r.squaredErrors;
+    for (std::size_t k = job.startSize; k < m_u.size(); ++k) {
+        if (law.setTrialDeformation(m_u[k]) != LawStatus::Ok) {
+            st.ok = !job.diverged;
+            st.message = "no anchor: its law fails on the samples since the calibration";
+            return st;
+        }
         law.commit();
         const double e = law.committedForce() - m_f[k];
-        sum += e * e;
-        sumF += m_f[k] * m_f[k];
+        sse += e * e;
     }
-    state = law.committedState();
-    nrmse = sumF > 0 ? std::sqrt(sum / sumF) : 0.0;
-    return std::isfinite(nrmse);
-}
-
-BoucWenParameters RobustUkfIdentifier::fromCalibration(const CalibrationResult& r) const {
-    BoucWenParameters p = m_initial;
-    const auto value = [&](const char* name, double fallback) {
-        auto it = r.parameters.find(name);
-        return it != r.parameters.end() ? it->second : fallback;
-    };
-    p.k0 = value("k0", p.k0);
-    p.alpha = value("alpha", p.alpha);
-    p.n = value("n", p.n);
-    p.beta = value("beta", p.beta);
-    p.gamma = value("gamma", p.gamma);
-    p.A0 = value("A0", p.A0);
-    p.deltaA = value("deltaA", p.deltaA);
-    p.deltaNu = value("deltaNu", p.deltaNu);
-    p.deltaEta = value("deltaEta", p.deltaEta);
-    p.uRef = value("uRef", p.uRef);
-    p.fRef = value("fRef", p.fRef);
-    return p;
-}
-
-IdentificationStatus RobustUkfIdentifier::anchor(bool diverged, bool global) {
-    IdentificationStatus st;
-    const HistoryScales scales = deriveHistoryScales(m_u, m_f);
-    CalibrationRequest request;
-    request.bounds = m_userBounds;
-    request.uRef = m_uRef ? m_uRef : (m_anchors > 0 ? std::optional(m_anchor.uRef) : std::nullopt);
-    request.fRef = m_fRef ? m_fRef : (m_anchors > 0 ? std::optional(m_anchor.fRef) : std::nullopt);
-    if (!scales.ok && !(request.uRef && request.fRef)) {
-        st.message = "no anchor yet: " + scales.reason;
-        return st;
-    }
-    CalibrationSpec spec = defaultCalibrationSpec(request, scales);
-    if (m_ukf && !global) // a local refit: from the anchor (and the estimate below) only
-        spec.starts.assign(1, startOf(spec, m_anchor));
-    if (m_ukf) { // the current estimate is one more start
-        std::vector<double> s = startOf(spec, m_ukf->estimate());
-        if (s.size() == spec.fitted.size())
-            spec.starts.push_back(std::move(s));
-    }
-    const CalibrationResult cal = calibrate(m_u, m_f, spec);
-    BoucWenParameters best = m_anchor;
-    BoucWenState state;
-    double bestNrmse = std::numeric_limits<double>::infinity(), nrmse = 0.0;
-    if (m_ukf && !diverged) {
-        BoucWenParameters now = m_ukf->estimate();
-        if (replayState(now, state, nrmse))
-            best = now, bestNrmse = nrmse;
-    }
-    if (cal.ok) {
-        const BoucWenParameters p = fromCalibration(cal);
-        BoucWenState s;
-        if (replayState(p, s, nrmse) && nrmse < bestNrmse)
-            best = p, bestNrmse = nrmse;
-    }
-    if (!std::isfinite(bestNrmse) || !replayState(best, state, nrmse)) {
-        st.ok = !diverged;
-        st.message = "no anchor: the calibration failed (" + cal.reason + ")";
-        return st;
-    }
-    // The UKF restarts at the anchor, in the anchor's box.
-    BoucWenUkf::BoundsArray box = BoucWenUkf::tableIIIBounds();
-    std::array<double, kBoucWenUkfSize> sd{};
-    sd[0] = 1e-3;
-    sd[1] = 1e-3;
-    for (std::size_t q = 0; q < spec.fitted.size(); ++q)
-        for (BoucWenUkfIndex i : kParams)
-            if (spec.fitted[q].name == boucWenUkfIndexName(i)) {
-                const auto at = std::size_t(i);
-                box[at] = {spec.fitted[q].lower, spec.fitted[q].upper};
-                const double fromFit = cal.ok && q < std::size_t(cal.standardDeviation.size())
-                                           ? cal.standardDeviation[Eigen::Index(q)]
-                                           : std::nan("");
-                const double floor = 1e-2 * spec.fitted[q].typical;
-                const double cap = 0.1 * spec.fitted[q].typical;
-                sd[at] = std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
-            }
     BoucWenUkfSettings us;
     us.ukf.a = 1.0;
     us.ukf.b = 2.0;
     us.ukf.kappa = 0.0;
-    const double rmsF = [&] {
-        double s = 0;
-        for (double f : m_f)
-            s += f * f;
-        return std::sqrt(s / double(m_f.size()));
-    }();
-    m_anchorRms = bestNrmse * rmsF / best.fRef;
+    m_anchorRms = r.nrmse * r.rmsForce / r.best.fRef;
     us.forceNoise = std::max(m_anchorRms, 1e-3);
     us.zNoise = us.eNoise = 1e-2 * us.forceNoise;
     us.parameterNoise = m_settings.parameterNoise;
+    BoucWenUkf::BoundsArray box = r.box;
     if (!m_ukf)
-        m_ukf.emplace(best, us, box);
+        m_ukf.emplace(r.best, us, box);
     else
         m_ukf->setSettings(us);
-    for (BoucWenUkfIndex i : kParams) // a user's bound edit stays in force
+    for (BoucWenUkfIndex i : kParams) {
         m_ukf->setBounds(i, box[std::size_t(i)].lower, box[std::size_t(i)].upper);
-    m_ukf->restart(best, state, m_u.back(), sd);
-    for (BoucWenUkfIndex i : kParams)
-        m_bounds[boucWenUkfIndexName(i)] = {box[std::size_t(i)].lower, box[std::size_t(i)].upper};
-    m_anchorLaw.emplace(best);
-    m_anchorLaw->setCommittedState(state, m_u.back());
-    std::fill(m_anchorWindow.begin(), m_anchorWindow.end(), 0.0);
-    m_anchorWindowSum = 0.0;
-    m_anchor = best;
-    m_published = best;
-    m_anchorSd = sd;
-    m_anchorNrmse = bestNrmse;
-    m_anchorSize = m_u.size();
-    m_anchorAmplitude = m_maxAmplitude;
-    m_nextCheck = m_u.size() + std::max<std::size_t>(50, m_u.size() / 20);
-    std::fill(m_window.begin(), m_window.end(), 0.0);
-    m_windowSum = 0.0;
-    m_windowNext = 0;
+        m_bounds[boucWenUkfIndexName(i)] = {box[std::size_t(i)].lower,
+                                            box[std::size_t(i)].upper};
+    }
+    m_ukf->restart(r.best, law.committedState(), m_u.back(), r.sd);
+    m_anchorLaw.emplace(std::move(law));
+    m_anchorSse = sse;
+    clearWindows();
+    m_anchor = r.best;
+    m_published = r.best;
+    m_anchorSd = r.sd;
+    m_anchorNrmse = r.nrmse;
+    m_anchorSize = job.startSize;
+    m_anchorAmplitude = job.startAmplitude;
+    m_nextCheck = m_u.size() + jobDelay(m_u.size());
     ++m_anchors;
     st.updated = true;
     st.refit = true;
-    st.message = std::string(diverged ? "UKF restarted" : "UKF anchored") + " at a fit over " +
-                 std::to_string(m_u.size()) + " samples: NRMSE " + fixed(bestNrmse, 3);
-    if (scales.reversals >= m_settings.verdictReversals && bestNrmse > m_settings.verdictNrmse) {
-        st.modelInadequate = bestNrmse;
+    st.message = std::string(job.diverged ? "UKF restarted" : "UKF anchored") + " at a fit over " +
+                 std::to_string(job.startSize) + " samples: NRMSE " + fixed(r.nrmse, 3);
+    if (r.rescaled)
+        st.message += " (scales moved: uRef " + fixed(r.best.uRef, 6) + ", fRef " +
+                      fixed(r.best.fRef, 6) + ")";
+    if (r.modelInadequate) {
+        st.modelInadequate = r.modelInadequate;
         st.message += "; the model family cannot represent this specimen (best NRMSE " +
-                      fixed(bestNrmse, 2) + ")";
+                      fixed(*r.modelInadequate, 2) + ")";
     }
     return st;
 }
@@ -282,16 +283,31 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         st.message = "the measured deformation or force is not finite: step skipped";
         return st;
     }
+    if (m_u.empty())
+        m_uMin = m_uMax = deformation;
     m_u.push_back(deformation);
     m_f.push_back(force);
+    m_uMin = std::min(m_uMin, deformation);
+    m_uMax = std::max(m_uMax, deformation);
+    m_sumF2 += force * force;
     m_maxAmplitude = std::max(m_maxAmplitude, std::abs(deformation));
+    const std::size_t n = m_u.size();
     if (!m_ukf) {
         m_predicted = std::numeric_limits<double>::quiet_NaN();
-        const auto [lo, hi] = std::minmax_element(m_u.begin(), m_u.end());
-        if (int(turningPoints(m_u, 0.02 * (*hi - *lo)).size()) < m_settings.warmUpReversals)
+        if (m_job) {
+            if (n < m_job->applyAt)
+                return st;
+            st = applyJob();
+            publish();
+            st.reportable = m_ukf.has_value();
+            return st;
+        }
+        if (n < m_nextWarmUpCheck)
+            return st;
+        m_nextWarmUpCheck = n + std::max<std::size_t>(1, n / 50);
+        if (int(turningPoints(m_u, 0.02 * (m_uMax - m_uMin)).size()) < m_settings.warmUpReversals)
             return st; // warm-up: nothing to identify yet
-        st = anchor(false, true);
-        publish();
+        startAnchor(true, false, std::nullopt);
         return st;
     }
     const BoucWenUkfStep s = m_ukf->step(deformation, force);
@@ -302,8 +318,9 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
     double a2 = 0.0;
     if (m_anchorLaw && m_anchorLaw->setTrialDeformation(deformation) == LawStatus::Ok) {
         m_anchorLaw->commit();
-        const double a = (m_anchorLaw->committedForce() - force) / m_anchor.fRef;
-        a2 = a * a;
+        const double a = m_anchorLaw->committedForce() - force;
+        m_anchorSse += a * a;
+        a2 = a * a / (m_anchor.fRef * m_anchor.fRef);
     }
     m_windowSum += e2 - m_window[m_windowNext];
     m_window[m_windowNext] = e2;
@@ -322,59 +339,48 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
                                    std::max({anchorRms, m_anchorRms, m_settings.divergenceFloor});
     if (diverging) {
         ++m_divergences;
-        IdentificationStatus again = anchor(true, false);
+        restartAtAnchor();
+        clearWindows();
         m_recovering = m_settings.divergenceWindow;
+        if (m_job && !m_job->anchor)
+            m_job->discarded = true;
+        if (!m_job)
+            startAnchor(false, true, std::nullopt);
         publish();
-        again.ok = false;
-        again.reportable = false;
-        again.message = "UKF diverging (prediction error " + fixed(windowRms, 3) +
-                        " of fRef over the last " + std::to_string(m_window.size()) +
-                        " steps, the anchor's " + fixed(anchorRms, 3) + "): " + again.message;
-        return again;
-    }
-    const bool doubled = double(m_u.size()) >= m_settings.anchorGrowth * double(m_anchorSize);
-    bool grown = doubled || m_maxAmplitude >= m_settings.amplitudeGrowth * m_anchorAmplitude;
-    std::string drift;
-    bool verified = false;
-    if (!grown && m_u.size() >= m_nextCheck) {
-        // The guard: the whole history decides, not the one-step prediction (the filter can
-        // follow the force through z with parameters that replay the history poorly).
-        m_nextCheck = m_u.size() + std::max<std::size_t>(50, m_u.size() / 20);
-        BoucWenState zs, za;
-        double nu = 0.0, na = 0.0;
-        const bool okU = replayState(s.estimate, zs, nu);
-        const bool okA = replayState(m_anchor, za, na);
-        if (okA && na > m_settings.staleRatio * m_anchorNrmse &&
-            double(m_u.size()) >= 1.25 * double(m_anchorSize)) {
-            grown = true; // the anchor no longer fits what was measured since: refit
-        } else if (okA && (!okU || nu > m_settings.driftRatio * na)) {
-            m_ukf->restart(m_anchor, za, m_u.back(), m_anchorSd);
-            m_published = m_anchor;
-            ++m_pullBacks;
-            std::ostringstream m;
-            m.precision(3);
-            m << "UKF estimate replays the history with NRMSE " << nu << " against the anchor's "
-              << na << ": back to the anchor";
-            drift = m.str();
-            verified = true;
-        } else if (okU) {
-            m_published = s.estimate; // verified on the whole history
-            verified = true;
-        }
-    }
-    if (grown) {
-        st = anchor(false, doubled); // multi-start when the history doubled, else local
-        publish();
-        st.reportable = m_recovering == 0;
+        st.ok = false;
+        st.reportable = false;
+        st.updated = true;
+        st.message = "UKF diverging (prediction error " + fixed(windowRms, 3) +
+                     " of fRef over the last " + std::to_string(m_window.size()) +
+                     " steps, the anchor's " + fixed(anchorRms, 3) +
+                     "): UKF restarted at the anchor (NRMSE " + fixed(m_anchorNrmse, 3) +
+                     "), a refit started";
         return st;
     }
+    if (m_job && n >= m_job->applyAt) {
+        st = applyJob();
+    } else if (!m_job) {
+        const bool doubled = double(n) >= m_settings.anchorGrowth * double(m_anchorSize);
+        const bool wider = m_maxAmplitude >= m_settings.amplitudeGrowth * m_anchorAmplitude;
+        if (doubled || wider) {
+            startAnchor(doubled, false, s.estimate); // multi-start when the history doubled
+        } else if (n >= m_nextCheck) {
+            // The guard: the whole history decides, not the one-step prediction (the filter
+            // can follow the force through z with parameters that replay the history poorly).
+            m_nextCheck = n + jobDelay(n);
+            const bool stale = anchorHistoryNrmse() > m_settings.staleRatio * m_anchorNrmse &&
+                               double(n) >= 1.25 * double(m_anchorSize);
+            if (stale)
+                startAnchor(false, false, s.estimate); // the anchor no longer fits: refit
+            else
+                startVerify(s.estimate);
+        }
+    }
     publish();
-    st.ok = s.status.ok;
-    st.updated = verified; // only estimates checked against the whole history are published
-    if (!s.status.ok)
+    if (st.message.empty() && !s.status.ok) {
+        st.ok = false;
         st.message = s.status.reason;
-    else if (!drift.empty())
-        st.message = drift;
+    }
     if (m_recovering > 0) {
         --m_recovering;
         st.reportable = false;

@@ -4,50 +4,62 @@
 // calibrations (Calibration.h) of the history measured so far.
 //
 //  1. Warm-up. Until the specimen has gone through warmUpReversals turning points (dead band
-//     2 % of its deformation range so far) the estimate stays at the initial model and
-//     nothing is reported: there is nothing yet to identify.
+//     2 % of its deformation range so far, counted every max(1, N / 50) samples) the estimate
+//     stays at the initial model and nothing is reported: there is nothing yet to identify.
 //  2. Anchor. The law is calibrated on the history so far (multi-start Levenberg-Marquardt;
 //     with the current estimate as one more start once tracking) and the better of that fit
-//     and the current estimate, by NRMSE over the history, becomes the anchor. Scales: the
-//     model's uRef / fRef when the configuration gives them, else derived once from the data
-//     at the first anchor (HistoryScales.h) and then published as the estimate's uRef / fRef
+//     and the current estimate, by NRMSE over the history, becomes the anchor
+//     (RobustUkfJobs.h). Scales: the model's uRef / fRef when the configuration gives them,
+//     else derived from the data (HistoryScales.h) at the first anchor and re-derived at each
+//     later one, taken when either moved by more than rescaleFactor (the anchor and estimate
+//     are re-expressed exactly in the new scales); published as the estimate's uRef / fRef
 //     so that the auxiliary model and the twins take them with the other parameters. The UKF
 //     restarts at the anchor: parameters, the law's (z, e) replayed over the history, P0 from
 //     the calibration's standard deviations (1 % to 10 % of each parameter's typical scale),
 //     R from the anchor's RMS error (noise levels scaled from the data: the model error, not
 //     the sensor's noise, bounds what the filter can explain).
 //  3. Track. The UKF runs every step (unscented transform a = 1, kappa = 0, b = 2: positive
-//     weights), sigma points and means kept admissible (BoucWenUkf.h).
+//     weights), sigma points and means kept admissible (BoucWenUkf.h). The anchor's model is
+//     stepped along beside it, with its running squared error over the whole history.
 //  4. Re-anchor when the history has grown by anchorGrowth since the last anchor (with the
 //     calibration's multi-start), or the deformation amplitude by amplitudeGrowth (new
 //     cycles the anchor has not seen; a local refit from the anchor and the estimate).
 //  5. Divergence. The a-priori force error (UKF prediction - measured) / fRef, RMS over the
 //     last divergenceWindow steps, above divergenceRatio times the larger of: the anchor
-//     model's own error over the same steps (stepped along beside the filter: what the model
-//     family can do there, so a specimen the law cannot follow is not a divergence), the
-//     anchor's RMS error over its history, and divergenceFloor; or a non-finite estimate:
-//     the step is rejected
-//     (ok false, a message saying why), the UKF restarts from the last anchor, and for the
-//     next divergenceWindow steps its estimates are not reportable (the Reporter passes
-//     nothing to the twins until it has recovered).
-//  5b. Guard. Every max(50, N / 20) steps the UKF's estimate and the anchor are replayed
-//     over the whole history: an estimate within driftRatio of the anchor's NRMSE becomes
-//     the published estimate; a worse one sends the filter back to the anchor, which is
-//     published (the one-step prediction can stay good while the parameters drift: the
-//     filter follows the force through z); an anchor whose NRMSE grew past staleRatio times
-//     its value at its fit is refitted (step 2). So the estimate the auxiliary model and the
-//     Reporter receive (updated, between the checks it stays) has always been verified on
-//     the history measured so far.
+//     model's own error over the same steps (what the model family can do there, so a
+//     specimen the law cannot follow is not a divergence), the anchor's RMS error over its
+//     history, and divergenceFloor; or a non-finite estimate: the step is rejected (ok false,
+//     a message saying why), the UKF restarts at once from the anchor (its stepped model's
+//     state), a local refit is started, and for the next divergenceWindow steps its estimates
+//     are not reportable (the Reporter passes nothing to the twins until it has recovered).
+//  5b. Guard, every max(50, N / 20) steps: the anchor's NRMSE over the whole history comes
+//     from its running error (no replay); one that grew past staleRatio times its value at
+//     its fit is refitted (step 2). Else the UKF's estimate is replayed over the history
+//     (a job, below): within driftRatio of the anchor's NRMSE it becomes the published
+//     estimate; a worse one sends the filter back to the anchor, which is published (the
+//     one-step prediction can stay good while the parameters drift: the filter follows the
+//     force through z). So the estimate the auxiliary model and the Reporter receive has
+//     always been verified on the history measured so far.
 //  6. Verdict. When an anchor over at least verdictReversals turning points fits no better
 //     than verdictNrmse, the status carries the best NRMSE: the Inspector says that the model
 //     family cannot represent the specimen.
-// Values are in the law's normalized units. Thread rules: none.
+// Jobs. Calibrations (2, 4, 5) and the guard's replay (5b) run on a worker thread
+// (std::async), one at a time, on a copy of the history at the step k they are started; the
+// result is applied at exactly the step where the history reaches N_k + max(50, N_k / 20)
+// (jobDelay()), and observe() waits for the worker there if it has not finished. So the
+// estimates depend on the samples only, not on the machine's speed: a replay of a record gives
+// the same estimates bit for bit, online or offline. A job's result is caught up over the
+// samples since N_k on the stepping thread (the anchor's model stepped over them). The
+// destructor waits for a running job (a calibration of the history so far).
+// Values are in the law's normalized units. Thread rules: observe() and the rest from one
+// thread; the worker only reads its own copy of the inputs.
 
 #include "core/identification/BoucWenUkf.h"
-#include "core/identification/Calibration.h"
 #include "core/updating/Identifier.h"
+#include "core/updating/RobustUkfJobs.h"
 
 #include <array>
+#include <future>
 #include <optional>
 #include <vector>
 
@@ -65,6 +77,7 @@ struct RobustUkfSettings {
     double staleRatio = 1.1;       ///< anchor's history NRMSE / at its fit: refit
     double verdictNrmse = 0.25;    ///< an anchor worse than this: the model family is poor
     int verdictReversals = 4;      ///< ... judged once the history has this many reversals
+    double rescaleFactor = 1.5;    ///< derived scales re-taken when they moved by more
 };
 
 class RobustUkfIdentifier final : public Identifier {
@@ -91,14 +104,40 @@ public:
     /// NRMSE of the last anchor over the history it saw (NaN before the first).
     double anchorNrmse() const { return m_anchorNrmse; }
 
+    /// The step distance, in samples, between starting a job on a history of n samples and
+    /// applying its result.
+    static std::size_t jobDelay(std::size_t n) { return std::max<std::size_t>(50, n / 20); }
+    /// Worker CPU spent in jobs so far [s], and their number (anchors and guard replays).
+    double workerCpuSeconds() const { return m_workerCpu; }
+    int jobs() const { return m_jobs; }
+    /// Applications that had to wait for the worker (informative: depends on the machine).
+    int waits() const { return m_waits; }
+    ~RobustUkfIdentifier() override;
+
 private:
-    /// global: the calibration's multi-start (first anchor, history doubled); else a local
-    /// refit from the anchor and the current estimate.
-    IdentificationStatus anchor(bool diverged, bool global);
-    /// The law's (z, e) after replaying the history with p; false if the law fails.
-    bool replayState(const BoucWenParameters& p, BoucWenState& state, double& nrmse) const;
+    struct JobOutcome {
+        AnchorJobResult anchor;
+        VerifyJobResult verify;
+    };
+    struct Job {
+        bool anchor = false; ///< else a guard replay of `candidate`
+        bool diverged = false;
+        bool discarded = false; ///< a divergence came after a guard replay was started
+        std::size_t startSize = 0, applyAt = 0;
+        double startAmplitude = 0.0;
+        double anchorNrmseAtStart = 0.0;
+        BoucWenParameters candidate;
+        std::future<JobOutcome> result;
+    };
+    void startAnchor(bool global, bool diverged, const std::optional<BoucWenParameters>& estimate);
+    void startVerify(const BoucWenParameters& candidate);
+    /// Applies the job's result (at its step); the status to return.
+    IdentificationStatus applyJob();
+    IdentificationStatus applyAnchor(Job& job, const AnchorJobResult& r);
+    void restartAtAnchor();
+    void clearWindows();
+    double anchorHistoryNrmse() const;
     void publish();
-    BoucWenParameters fromCalibration(const CalibrationResult& r) const;
 
     BoucWenParameters m_initial;
     std::optional<double> m_uRef, m_fRef;
@@ -109,19 +148,25 @@ private:
     BoucWenParameters m_published; ///< the estimate last verified (or the anchor)
     std::array<double, kBoucWenUkfSize> m_anchorSd{};
     std::vector<double> m_u, m_f;
+    double m_uMin = 0.0, m_uMax = 0.0, m_sumF2 = 0.0;
+    std::size_t m_nextWarmUpCheck = 0;
     double m_maxAmplitude = 0.0, m_anchorAmplitude = 0.0;
     std::size_t m_anchorSize = 0;
     double m_anchorNrmse = std::numeric_limits<double>::quiet_NaN();
     double m_anchorRms = 0.0; ///< RMS force error of the anchor / fRef [-]
-    std::optional<BoucWen> m_anchorLaw;  ///< the anchor's model, stepped along the samples
-    std::vector<double> m_window;        ///< squared a-priori errors / fRef^2 (ring)
-    std::vector<double> m_anchorWindow;  ///< the anchor model's squared errors (same ring)
+    std::optional<BoucWen> m_anchorLaw; ///< the anchor's model, stepped along the samples
+    double m_anchorSse = 0.0;           ///< its squared force errors over the whole history
+    std::vector<double> m_window;       ///< squared a-priori errors / fRef^2 (ring)
+    std::vector<double> m_anchorWindow; ///< the anchor model's squared errors (same ring)
     double m_anchorWindowSum = 0.0;
     std::size_t m_windowNext = 0;
     double m_windowSum = 0.0;
     int m_recovering = 0;
     int m_anchors = 0, m_divergences = 0, m_pullBacks = 0;
     std::size_t m_nextCheck = 0; ///< history size of the next guard check
+    std::optional<Job> m_job;    ///< the job running (at most one)
+    double m_workerCpu = 0.0;
+    int m_jobs = 0, m_waits = 0;
     double m_predicted = std::numeric_limits<double>::quiet_NaN();
     ParameterValues m_estimate, m_stddev;
 };

@@ -1,0 +1,238 @@
+#include "core/updating/RobustUkfJobs.h"
+
+#include "core/identification/Calibration.h"
+#include "core/identification/CalibrationDefaults.h"
+#include "core/identification/HistoryScales.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <exception>
+
+namespace hsmu {
+
+namespace {
+
+constexpr BoucWenUkfIndex kParams[] = {BoucWenUkfIndex::K0,    BoucWenUkfIndex::Alpha,
+                                       BoucWenUkfIndex::Beta,  BoucWenUkfIndex::Gamma,
+                                       BoucWenUkfIndex::N,     BoucWenUkfIndex::DeltaNu,
+                                       BoucWenUkfIndex::DeltaEta};
+
+double& field(BoucWenParameters& p, BoucWenUkfIndex i) {
+    switch (i) {
+    case BoucWenUkfIndex::K0:
+        return p.k0;
+    case BoucWenUkfIndex::Alpha:
+        return p.alpha;
+    case BoucWenUkfIndex::Beta:
+        return p.beta;
+    case BoucWenUkfIndex::Gamma:
+        return p.gamma;
+    case BoucWenUkfIndex::N:
+        return p.n;
+    case BoucWenUkfIndex::DeltaNu:
+        return p.deltaNu;
+    default:
+        return p.deltaEta;
+    }
+}
+
+/// The values of p for the spec's fitted parameters, in its order (a calibration start).
+std::vector<double> startOf(const CalibrationSpec& spec, BoucWenParameters p) {
+    std::vector<double> s;
+    for (const auto& q : spec.fitted)
+        for (BoucWenUkfIndex i : kParams)
+            if (q.name == boucWenUkfIndexName(i))
+                s.push_back(field(p, i));
+    return s;
+}
+
+BoucWenParameters fromCalibration(const BoucWenParameters& initial, const CalibrationResult& r) {
+    BoucWenParameters p = initial;
+    const auto value = [&](const char* name, double fallback) {
+        auto it = r.parameters.find(name);
+        return it != r.parameters.end() ? it->second : fallback;
+    };
+    p.k0 = value("k0", p.k0);
+    p.alpha = value("alpha", p.alpha);
+    p.n = value("n", p.n);
+    p.beta = value("beta", p.beta);
+    p.gamma = value("gamma", p.gamma);
+    p.A0 = value("A0", p.A0);
+    p.deltaA = value("deltaA", p.deltaA);
+    p.deltaNu = value("deltaNu", p.deltaNu);
+    p.deltaEta = value("deltaEta", p.deltaEta);
+    p.uRef = value("uRef", p.uRef);
+    p.fRef = value("fRef", p.fRef);
+    return p;
+}
+
+/// p replayed over the history from the virgin state: the final state and the sum of squared
+/// force errors; false if the law fails.
+bool replay(const std::vector<double>& u, const std::vector<double>& f,
+            const BoucWenParameters& p, BoucWenState& state, double& squaredErrors) {
+    if (!BoucWen::admissible(p))
+        return false;
+    BoucWen law(p);
+    double sum = 0.0;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+        if (law.setTrialDeformation(u[k]) != LawStatus::Ok)
+            return false;
+        law.commit();
+        const double e = law.committedForce() - f[k];
+        sum += e * e;
+    }
+    state = law.committedState();
+    squaredErrors = sum;
+    return std::isfinite(sum);
+}
+
+double sumOfSquares(const std::vector<double>& f) {
+    double s = 0.0;
+    for (double v : f)
+        s += v * v;
+    return s;
+}
+
+bool movedBy(double a, double b, double factor) {
+    return a > factor * b || b > factor * a;
+}
+
+} // namespace
+
+BoucWenParameters rescaled(const BoucWenParameters& p, double uRef, double fRef) {
+    const double s = p.uRef / uRef, c = p.fRef / fRef;
+    BoucWenParameters q = p;
+    q.k0 = p.k0 * c / s;
+    const double sn = std::pow(s, -p.n);
+    q.beta = p.beta * sn;
+    q.gamma = p.gamma * sn;
+    q.deltaA = p.deltaA / (c * s);
+    q.deltaNu = p.deltaNu / (c * s);
+    q.deltaEta = p.deltaEta / (c * s);
+    q.uRef = uRef;
+    q.fRef = fRef;
+    return q;
+}
+
+BoucWenState rescaledState(const BoucWenState& st, const BoucWenParameters& from,
+                           const BoucWenParameters& to) {
+    const double s = from.uRef / to.uRef, c = from.fRef / to.fRef;
+    BoucWenState out = st;
+    out.z = st.z * s;
+    out.e = st.e * c * s;
+    return out;
+}
+
+double threadCpuSeconds() {
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+    timespec t{};
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) == 0)
+        return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+#endif
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
+                          const BoucWenParameters& p) {
+    const double t0 = threadCpuSeconds();
+    VerifyJobResult r;
+    BoucWenState state;
+    double sse = 0.0;
+    const double sff = sumOfSquares(f);
+    r.ok = replay(u, f, p, state, sse);
+    r.nrmse = sff > 0 ? std::sqrt(sse / sff) : 0.0;
+    r.ok = r.ok && std::isfinite(r.nrmse);
+    r.cpuSeconds = threadCpuSeconds() - t0;
+    return r;
+}
+
+AnchorJobResult anchorJob(const AnchorJobInput& in) {
+    const double t0 = threadCpuSeconds();
+    AnchorJobResult out;
+    try {
+        const HistoryScales scales = deriveHistoryScales(in.u, in.f);
+        CalibrationRequest request;
+        request.bounds = in.userBounds;
+        request.uRef = in.uRef;
+        request.fRef = in.fRef;
+        if (in.anchor) {
+            // Later anchors keep the anchor's scales unless the data moved them (the first
+            // anchor may have seen little of the specimen: a few cycles, or sensor noise).
+            const bool move = scales.ok && (movedBy(scales.uRef, in.anchor->uRef, in.rescaleFactor) ||
+                                            movedBy(scales.fRef, in.anchor->fRef, in.rescaleFactor));
+            if (!request.uRef)
+                request.uRef = move ? scales.uRef : in.anchor->uRef;
+            if (!request.fRef)
+                request.fRef = move ? scales.fRef : in.anchor->fRef;
+            out.rescaled = move && !(in.uRef && in.fRef);
+        }
+        if (!scales.ok && !(request.uRef && request.fRef)) {
+            out.reason = "no anchor yet: " + scales.reason;
+            out.cpuSeconds = threadCpuSeconds() - t0;
+            return out;
+        }
+        CalibrationSpec spec = defaultCalibrationSpec(request, scales);
+        const double uRef = spec.fixed.at("uRef"), fRef = spec.fixed.at("fRef");
+        std::optional<BoucWenParameters> anchor, estimate;
+        if (in.anchor)
+            anchor = rescaled(*in.anchor, uRef, fRef);
+        if (in.estimate)
+            estimate = rescaled(*in.estimate, uRef, fRef);
+        if (anchor && !in.global) // a local refit: from the anchor (and the estimate) only
+            spec.starts.assign(1, startOf(spec, *anchor));
+        if (estimate) { // the current estimate is one more start
+            std::vector<double> s = startOf(spec, *estimate);
+            if (s.size() == spec.fitted.size())
+                spec.starts.push_back(std::move(s));
+        }
+        const CalibrationResult cal = calibrate(in.u, in.f, spec);
+        const double sff = sumOfSquares(in.f);
+        double bestSse = std::numeric_limits<double>::infinity(), sse = 0.0;
+        BoucWenState state;
+        if (estimate && replay(in.u, in.f, *estimate, state, sse))
+            out.best = *estimate, out.state = state, bestSse = sse;
+        if (cal.ok) {
+            const BoucWenParameters p = fromCalibration(in.initial, cal);
+            if (replay(in.u, in.f, p, state, sse) && sse < bestSse)
+                out.best = p, out.state = state, bestSse = sse;
+        }
+        if (!std::isfinite(bestSse)) {
+            out.reason = "the calibration failed (" + cal.reason + ")";
+            out.cpuSeconds = threadCpuSeconds() - t0;
+            return out;
+        }
+        out.squaredErrors = bestSse;
+        out.nrmse = sff > 0 ? std::sqrt(bestSse / sff) : 0.0;
+        out.rmsForce = std::sqrt(sff / double(in.f.size()));
+        // The UKF's box and P0 from the calibration's box and standard deviations.
+        out.box = BoucWenUkf::tableIIIBounds();
+        out.sd.fill(0.0);
+        out.sd[0] = 1e-3;
+        out.sd[1] = 1e-3;
+        for (std::size_t q = 0; q < spec.fitted.size(); ++q)
+            for (BoucWenUkfIndex i : kParams)
+                if (spec.fitted[q].name == boucWenUkfIndexName(i)) {
+                    const auto at = std::size_t(i);
+                    out.box[at] = {spec.fitted[q].lower, spec.fitted[q].upper};
+                    const double fromFit = cal.ok && q < std::size_t(cal.standardDeviation.size())
+                                               ? cal.standardDeviation[Eigen::Index(q)]
+                                               : std::nan("");
+                    const double floor = 1e-2 * spec.fitted[q].typical;
+                    const double cap = 0.1 * spec.fitted[q].typical;
+                    out.sd[at] = std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
+                }
+        if (scales.reversals >= in.verdictReversals && out.nrmse > in.verdictNrmse)
+            out.modelInadequate = out.nrmse;
+        out.ok = true;
+    } catch (const std::exception& e) {
+        out.ok = false;
+        out.reason = std::string("the calibration failed (") + e.what() + ")";
+    }
+    out.cpuSeconds = threadCpuSeconds() - t0;
+    return out;
+}
+
+} // namespace hsmu

@@ -1,0 +1,78 @@
+#pragma once
+// RobustUkfJobs: the robust UKF's heavy work (docs/method.md, "The robust UKF"), as pure
+// functions of a snapshot of the history so that RobustUkfIdentifier can run them on a worker
+// thread and apply their results at a step fixed in advance (the same estimates whatever the
+// machine's speed):
+//
+//  - anchorJob: the calibration of the history (multi-start, or a local refit from the
+//    anchor and the estimate), the better of it and the estimate by NRMSE over the history,
+//    the law's (z, e) replayed to the snapshot's end, the UKF's box, P0 and R from it.
+//    Scales (uRef, fRef): the configuration's when given; else derived from the history
+//    (HistoryScales.h) at the first anchor and re-derived at every later anchor, taken when
+//    either moved by more than rescaleFactor (the anchor and the estimate are then expressed
+//    exactly in the new scales: rescaled()).
+//  - verifyJob: the replay of one estimate over the snapshot (its NRMSE).
+// Values are in the law's normalized units. Thread rules: none (pure functions of their input).
+
+#include "core/hysteresis/BoucWen.h"
+#include "core/identification/BoucWenUkf.h"
+#include "core/identification/ParameterSet.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hsmu {
+
+/// The same physical Bouc-Wen model in the scales (uRef, fRef) (both > 0): with s = p.uRef /
+/// uRef and c = p.fRef / fRef, k0 c / s, beta and gamma s^-n, deltaA, deltaNu, deltaEta
+/// 1 / (c s); alpha, n, A0 unchanged (the law's equations, docs/method.md). The state maps as
+/// z s, e c s (rescaledState).
+BoucWenParameters rescaled(const BoucWenParameters& p, double uRef, double fRef);
+BoucWenState rescaledState(const BoucWenState& s, const BoucWenParameters& from,
+                           const BoucWenParameters& to);
+
+struct AnchorJobInput {
+    std::vector<double> u, f;              ///< the history so far (physical units)
+    std::optional<double> uRef, fRef;      ///< the configuration's scales, if given
+    std::optional<BoucWenParameters> anchor;   ///< the current anchor (none: the first)
+    std::optional<BoucWenParameters> estimate; ///< the UKF's estimate (none: diverged)
+    BoucWenParameters initial;             ///< the configured model (A0, deltaA ...)
+    ParameterBoundsMap userBounds;
+    bool global = true;         ///< the calibration's multi-start, else a local refit
+    double rescaleFactor = 1.5; ///< derived scales taken when they moved by more than this
+    int verdictReversals = 4;
+    double verdictNrmse = 0.25;
+};
+
+struct AnchorJobResult {
+    bool ok = false;
+    std::string reason;         ///< why not, when !ok
+    BoucWenParameters best;     ///< the anchor (scales included)
+    BoucWenState state;         ///< the law's state at the snapshot's last sample
+    double nrmse = 0.0;         ///< over the snapshot
+    double squaredErrors = 0.0; ///< sum of (F_law - F)^2 over the snapshot [force^2]
+    double rmsForce = 0.0;      ///< RMS(F) over the snapshot
+    std::array<double, kBoucWenUkfSize> sd{}; ///< P0 (normalized)
+    BoucWenUkf::BoundsArray box{};
+    bool rescaled = false;      ///< the scales moved at this anchor
+    std::optional<double> modelInadequate;
+    double cpuSeconds = 0.0;    ///< of the worker thread
+};
+
+AnchorJobResult anchorJob(const AnchorJobInput& in);
+
+struct VerifyJobResult {
+    bool ok = false;     ///< false: the law failed along the history
+    double nrmse = 0.0;  ///< of the estimate replayed over the snapshot
+    double cpuSeconds = 0.0;
+};
+
+VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
+                          const BoucWenParameters& p);
+
+/// CPU time of the calling thread [s] (wall time where the platform has no thread clock).
+double threadCpuSeconds();
+
+} // namespace hsmu
