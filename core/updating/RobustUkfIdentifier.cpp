@@ -89,19 +89,26 @@ std::vector<std::string> RobustUkfIdentifier::parameterNames() const {
 }
 
 void RobustUkfIdentifier::publish() {
-    BoucWenParameters p = m_published;
-    p.uRef = m_anchor.uRef;
-    p.fRef = m_anchor.fRef;
-    Eigen::VectorXd sd = Eigen::VectorXd::Zero(kBoucWenUkfSize);
-    if (m_ukf && m_ukf->filter().initialized())
-        sd = m_ukf->filter().standardDeviations();
-    for (BoucWenUkfIndex i : kParams) {
-        m_estimate[boucWenUkfIndexName(i)] = field(p, i);
-        m_stddev[boucWenUkfIndexName(i)] = sd[static_cast<int>(i)];
+    // Every step: through pointers into the maps (their nodes stay put), no allocation.
+    if (m_estimateSlot[0] == nullptr) {
+        for (std::size_t j = 0; j < std::size(kParams); ++j) {
+            m_estimateSlot[j] = &m_estimate[boucWenUkfIndexName(kParams[j])];
+            m_stddevSlot[j] = &m_stddev[boucWenUkfIndexName(kParams[j])];
+        }
+        m_estimateSlot[7] = &m_estimate["uRef"];
+        m_estimateSlot[8] = &m_estimate["fRef"];
+        m_stddev["uRef"] = m_stddev["fRef"] = 0.0;
     }
-    m_estimate["uRef"] = p.uRef;
-    m_estimate["fRef"] = p.fRef;
-    m_stddev["uRef"] = m_stddev["fRef"] = 0.0;
+    BoucWenParameters p = m_published;
+    const bool filtering = m_ukf && m_ukf->filter().initialized();
+    for (std::size_t j = 0; j < std::size(kParams); ++j) {
+        *m_estimateSlot[j] = field(p, kParams[j]);
+        const auto i = static_cast<Eigen::Index>(kParams[j]);
+        *m_stddevSlot[j] =
+            filtering ? std::sqrt(std::max(m_ukf->filter().covariance()(i, i), 0.0)) : 0.0;
+    }
+    *m_estimateSlot[7] = m_anchor.uRef;
+    *m_estimateSlot[8] = m_anchor.fRef;
 }
 
 ParameterValues RobustUkfIdentifier::estimate() const { return m_estimate; }
@@ -188,6 +195,7 @@ IdentificationStatus RobustUkfIdentifier::applyJob() {
         ++m_waits;
     JobOutcome out = job.result.get();
     m_workerCpu += out.anchor.cpuSeconds + out.verify.cpuSeconds;
+    m_anchorCpu += out.anchor.cpuSeconds;
     if (job.anchor)
         return applyAnchor(job, out.anchor);
     IdentificationStatus st;

@@ -110,6 +110,8 @@ public:
     /// Worker CPU spent in jobs so far [s], and their number (anchors and guard replays).
     double workerCpuSeconds() const { return m_workerCpu; }
     int jobs() const { return m_jobs; }
+    /// ... of which in anchor jobs (calibrations) [s].
+    double anchorCpuSeconds() const { return m_anchorCpu; }
     /// Applications that had to wait for the worker (informative: depends on the machine).
     int waits() const { return m_waits; }
     ~RobustUkfIdentifier() override;
@@ -165,10 +167,12 @@ private:
     int m_anchors = 0, m_divergences = 0, m_pullBacks = 0;
     std::size_t m_nextCheck = 0; ///< history size of the next guard check
     std::optional<Job> m_job;    ///< the job running (at most one)
-    double m_workerCpu = 0.0;
+    double m_workerCpu = 0.0, m_anchorCpu = 0.0;
     int m_jobs = 0, m_waits = 0;
     double m_predicted = std::numeric_limits<double>::quiet_NaN();
     ParameterValues m_estimate, m_stddev;
+    std::array<double*, 9> m_estimateSlot{}; ///< k0 ... deltaEta, uRef, fRef in m_estimate
+    std::array<double*, 7> m_stddevSlot{};
 };
 
 } // namespace hsmu

@@ -3,7 +3,8 @@
 // reach within 5 % of an independent multi-start least-squares fit of the same law (OpenSees'
 // BoucWen, 7 parameters; figures in docs/validation.md), and the default online identifier
 // (the robust UKF, replayed sample by sample as online) must end within 25 % of the
-// calibration's NRMSE, without a divergence and with no parameter on a bound that the calibration does not also put there.
+// calibration's NRMSE, without a divergence and with no parameter on a bound that the
+// calibration does not also put there.
 // One CTest test per record: the executable takes a data tag (e.g. `calibrates:gill`).
 
 #include "core/identification/CalibrationDefaults.h"
