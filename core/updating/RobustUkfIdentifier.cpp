@@ -218,6 +218,83 @@ IdentificationStatus RobustUkfIdentifier::applyJob() {
     return st;
 }
 
+void RobustUkfIdentifier::startFilter(const AnchorJobResult& r, const BoucWenState& state,
+                                      double u) {
+    BoucWenUkfSettings us;
+    us.ukf.a = 1.0;
+    us.ukf.b = 2.0;
+    us.ukf.kappa = 0.0;
+    m_anchorRms = r.nrmse * r.rmsForce / r.best.fRef;
+    us.forceNoise = std::max(m_anchorRms, 1e-3);
+    us.zNoise = us.eNoise = 1e-2 * us.forceNoise;
+    us.parameterNoise = m_settings.parameterNoise;
+    const BoucWenUkf::BoundsArray& box = r.box;
+    if (!m_ukf)
+        m_ukf.emplace(r.best, us, box);
+    else
+        m_ukf->setSettings(us);
+    for (BoucWenUkfIndex i : kParams) {
+        m_ukf->setBounds(i, box[std::size_t(i)].lower, box[std::size_t(i)].upper);
+        m_bounds[boucWenUkfIndexName(i)] = {box[std::size_t(i)].lower,
+                                            box[std::size_t(i)].upper};
+    }
+    m_ukf->restart(r.best, state, u, r.sd);
+}
+
+bool RobustUkfIdentifier::seed(const std::vector<double>& deformation,
+                               const std::vector<double>& force, std::string& message) {
+    if (!m_u.empty() || m_job || m_ukf) {
+        message = "the robust UKF is seeded before the test's first step";
+        return false;
+    }
+    if (deformation.size() != force.size() || deformation.size() < 3) {
+        message = "the seed record needs at least three samples of deformation and force";
+        return false;
+    }
+    AnchorJobInput in;
+    in.u = deformation;
+    in.f = force;
+    in.uRef = m_uRef;
+    in.fRef = m_fRef;
+    in.initial = m_initial;
+    in.userBounds = m_userBounds;
+    in.global = true;
+    in.verdictReversals = m_settings.verdictReversals;
+    in.verdictNrmse = m_settings.verdictNrmse;
+    const AnchorJobResult r = anchorJob(in);
+    m_workerCpu += r.cpuSeconds;
+    m_anchorCpu += r.cpuSeconds;
+    if (!r.ok) {
+        message = "the seed record cannot be calibrated: " + r.reason;
+        return false;
+    }
+    startFilter(r, BoucWenState{}, 0.0); // a new specimen: virgin at zero deformation
+    m_anchorLaw.emplace(r.best);
+    m_anchorSse = 0.0;
+    clearWindows();
+    m_anchor = r.best;
+    m_published = r.best;
+    m_anchorSd = r.sd;
+    m_anchorNrmse = r.nrmse;
+    m_anchorSize = 0;
+    double amplitude = 0.0;
+    for (double v : deformation)
+        amplitude = std::max(amplitude, std::abs(v));
+    m_anchorAmplitude = amplitude;
+    m_uRef = m_uRef.value_or(r.best.uRef);
+    m_fRef = m_fRef.value_or(r.best.fRef);
+    m_nextCheck = jobDelay(0);
+    m_seeded = true;
+    ++m_anchors;
+    publish();
+    message = "UKF seeded at a fit of a previous record over " +
+              std::to_string(deformation.size()) + " samples: NRMSE " + fixed(r.nrmse, 3);
+    if (r.modelInadequate)
+        message += "; the model family cannot represent that specimen (best NRMSE " +
+                   fixed(*r.modelInadequate, 2) + ")";
+    return true;
+}
+
 IdentificationStatus RobustUkfIdentifier::applyAnchor(Job& job, const AnchorJobResult& r) {
     IdentificationStatus st;
     if (!r.ok) {
@@ -239,27 +316,10 @@ IdentificationStatus RobustUkfIdentifier::applyAnchor(Job& job, const AnchorJobR
         const double e = law.committedForce() - m_f[k];
         sse += e * e;
     }
-    BoucWenUkfSettings us;
-    us.ukf.a = 1.0;
-    us.ukf.b = 2.0;
-    us.ukf.kappa = 0.0;
-    m_anchorRms = r.nrmse * r.rmsForce / r.best.fRef;
-    us.forceNoise = std::max(m_anchorRms, 1e-3);
-    us.zNoise = us.eNoise = 1e-2 * us.forceNoise;
-    us.parameterNoise = m_settings.parameterNoise;
-    BoucWenUkf::BoundsArray box = r.box;
-    if (!m_ukf)
-        m_ukf.emplace(r.best, us, box);
-    else
-        m_ukf->setSettings(us);
-    for (BoucWenUkfIndex i : kParams) {
-        m_ukf->setBounds(i, box[std::size_t(i)].lower, box[std::size_t(i)].upper);
-        m_bounds[boucWenUkfIndexName(i)] = {box[std::size_t(i)].lower,
-                                            box[std::size_t(i)].upper};
-    }
-    m_ukf->restart(r.best, law.committedState(), m_u.back(), r.sd);
+    startFilter(r, law.committedState(), m_u.back());
     m_anchorLaw.emplace(std::move(law));
     m_anchorSse = sse;
+    m_ownAnchor = true;
     clearWindows();
     m_anchor = r.best;
     m_published = r.best;
@@ -352,7 +412,8 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         m_recovering = m_settings.divergenceWindow;
         if (m_job && !m_job->anchor)
             m_job->discarded = true;
-        if (!m_job)
+        const bool refit = !m_job && m_ownAnchor; // a seed's anchor is not refitted on a few samples
+        if (refit)
             startAnchor(false, true, std::nullopt);
         publish();
         st.ok = false;
@@ -361,8 +422,8 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         st.message = "UKF diverging (prediction error " + fixed(windowRms, 3) +
                      " of fRef over the last " + std::to_string(m_window.size()) +
                      " steps, the anchor's " + fixed(anchorRms, 3) +
-                     "): UKF restarted at the anchor (NRMSE " + fixed(m_anchorNrmse, 3) +
-                     "), a refit started";
+                     "): UKF restarted at the anchor (NRMSE " + fixed(m_anchorNrmse, 3) + ")" +
+                     (refit ? ", a refit started" : "");
         return st;
     }
     if (m_job && n >= m_job->applyAt) {
@@ -370,7 +431,22 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
     } else if (!m_job) {
         const bool doubled = double(n) >= m_settings.anchorGrowth * double(m_anchorSize);
         const bool wider = m_maxAmplitude >= m_settings.amplitudeGrowth * m_anchorAmplitude;
-        if (doubled || wider) {
+        if (!m_ownAnchor) {
+            // Seeded: the first anchor on this history after the warm-up's reversals (the
+            // seed's anchor is guarded meanwhile, but not refitted on a few samples).
+            bool warm = false;
+            if (n >= m_nextWarmUpCheck) {
+                m_nextWarmUpCheck = n + std::max<std::size_t>(1, n / 50);
+                warm = int(turningPoints(m_u, 0.02 * (m_uMax - m_uMin)).size()) >=
+                       m_settings.warmUpReversals;
+            }
+            if (warm) {
+                startAnchor(true, false, s.estimate);
+            } else if (n >= m_nextCheck) {
+                m_nextCheck = n + jobDelay(n);
+                startVerify(s.estimate);
+            }
+        } else if (doubled || wider) {
             startAnchor(doubled, false, s.estimate); // multi-start when the history doubled
         } else if (n >= m_nextCheck) {
             // The guard: the whole history decides, not the one-step prediction (the filter

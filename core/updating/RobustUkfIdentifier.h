@@ -99,6 +99,18 @@ public:
     const ParameterBoundsMap& bounds() const override { return m_bounds; }
     bool setBounds(const std::string& name, const ParameterBounds& b) override;
 
+    /// Seeding (before the first observe()): the anchor is the calibration of a previous
+    /// test's record of the same kind of specimen (deformation and force in this test's
+    /// units), the filter starts there in the virgin state at zero deformation and tracks from
+    /// the first sample instead of waiting for the warm-up; the record's scales are kept for
+    /// the test (as if configured, unless the configuration gives them), and the first anchor
+    /// on this test's own history comes, as without a seed, after the warm-up's reversals.
+    /// False, with the reason in `message`, if the record cannot be calibrated or the test has
+    /// started; nothing changes then.
+    bool seed(const std::vector<double>& deformation, const std::vector<double>& force,
+              std::string& message);
+    bool seeded() const { return m_seeded; }
+
     int anchors() const { return m_anchors; }
     int divergences() const { return m_divergences; }
     /// NRMSE of the last anchor over the history it saw (NaN before the first).
@@ -136,6 +148,9 @@ private:
     /// Applies the job's result (at its step); the status to return.
     IdentificationStatus applyJob();
     IdentificationStatus applyAnchor(Job& job, const AnchorJobResult& r);
+    /// The filter, its bounds and settings, and the anchor's model at r.best in `state` at
+    /// the last deformation `u`.
+    void startFilter(const AnchorJobResult& r, const BoucWenState& state, double u);
     void restartAtAnchor();
     void clearWindows();
     double anchorHistoryNrmse() const;
@@ -164,6 +179,8 @@ private:
     std::size_t m_windowNext = 0;
     double m_windowSum = 0.0;
     int m_recovering = 0;
+    bool m_seeded = false;      ///< started from a previous record's calibration
+    bool m_ownAnchor = false;   ///< an anchor on this test's history has been applied
     int m_anchors = 0, m_divergences = 0, m_pullBacks = 0;
     std::size_t m_nextCheck = 0; ///< history size of the next guard check
     std::optional<Job> m_job;    ///< the job running (at most one)

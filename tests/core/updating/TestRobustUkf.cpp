@@ -2,9 +2,9 @@
 // specimens: its jobs run on a worker thread but are applied at steps fixed in advance, so the
 // estimates of a record are the same bit for bit whatever the timing (a run alone against two
 // runs interleaved on one thread); a filter fed wrong bounds raises the divergence alarm; a
-// specimen that changes suddenly is refitted and followed (not an alarm, and not a refit on
-// the unchanged specimen); a model
-// re-expressed in other scales (rescaled()) is the same physical model.
+// specimen that changes suddenly is refitted (not an alarm; and no refit on the unchanged
+// specimen); a filter seeded from a previous record reports at once and ends no worse; a
+// model re-expressed in other scales (rescaled()) is the same physical model.
 
 #include "core/hysteresis/BoucWen.h"
 #include "core/updating/RobustUkfIdentifier.h"
@@ -201,6 +201,67 @@ private slots:
         QVERIFY(std::abs(a.k0 - 1.0) < 0.1);
         QVERIFY(b.firstRefit >= 1500 && b.firstRefit < 1500 + 450);
         QVERIFY(b.anchorNrmse > 10.0 * a.anchorNrmse); // the law cannot be both specimens
+    }
+
+    /// Seeding from a previous test's record of the same kind of specimen (another loading
+    /// protocol): the seeded filter reports an identified model from the first step, where the
+    /// unseeded one waits for the warm-up and its first calibration, and ends no worse.
+    void seededFilterReportsEarlierAndNoWorse() {
+        const History previous = history(truth(), 1600, 200, 4.0);
+        const History now = history(truth(), 2000, 250, 3.0);
+        struct Outcome {
+            int firstReport = -1; ///< first step with a reportable model other than the initial
+            double nrmse = 0.0;   ///< final estimate replayed over `now`
+            double earlyNrmse = 0.0; ///< the estimate at step 150, replayed over `now`
+        };
+        const auto estimateOf = [](const RobustUkfIdentifier& id) {
+            const ParameterValues e = id.estimate();
+            BoucWenParameters p = truth();
+            p.k0 = e.at("k0"), p.alpha = e.at("alpha"), p.n = e.at("n"), p.beta = e.at("beta");
+            p.gamma = e.at("gamma"), p.deltaNu = e.at("deltaNu"), p.deltaEta = e.at("deltaEta");
+            p.uRef = e.at("uRef"), p.fRef = e.at("fRef");
+            return p;
+        };
+        const auto run = [&](bool seeded) {
+            RobustUkfIdentifier id(wrongStart(), std::nullopt, std::nullopt,
+                                   ParameterBoundsMap{});
+            const ParameterValues initial = id.estimate();
+            if (seeded) {
+                std::string message;
+                const bool ok = id.seed(previous.u, previous.f, message);
+                qInfo("%s", message.c_str());
+                if (!ok || !id.seeded())
+                    return Outcome{};
+            }
+            Outcome o;
+            for (std::size_t k = 0; k < now.u.size(); ++k) {
+                const IdentificationStatus st = id.observe(now.u[k], now.f[k], false);
+                if (o.firstReport < 0 && st.reportable && id.estimate() != initial)
+                    o.firstReport = int(k);
+                if (k == 150)
+                    o.earlyNrmse = verifyJob(now.u, now.f, estimateOf(id)).nrmse;
+            }
+            o.nrmse = verifyJob(now.u, now.f, estimateOf(id)).nrmse;
+            return o;
+        };
+        const Outcome plain = run(false), seeded = run(true);
+        qInfo("first report: unseeded at step %d, seeded at step %d; NRMSE of the estimate at "
+              "step 150: %.4f / %.4f; final: %.5f / %.5f",
+              plain.firstReport, seeded.firstReport, plain.earlyNrmse, seeded.earlyNrmse,
+              plain.nrmse, seeded.nrmse);
+        QCOMPARE(seeded.firstReport, 0);
+        QVERIFY(plain.firstReport > 100);
+        QVERIFY(seeded.earlyNrmse < 0.02); // the seed already fits the specimen ...
+        QVERIFY(plain.earlyNrmse > 0.1);   // ... the unseeded filter still has the initial model
+        QVERIFY(seeded.nrmse <= std::max(1.05 * plain.nrmse, 0.005));
+        // ... and a record that cannot be calibrated is refused, nothing changed.
+        RobustUkfIdentifier id(wrongStart(), std::nullopt, std::nullopt, ParameterBoundsMap{});
+        std::string message;
+        QVERIFY(!id.seed({0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, message));
+        QVERIFY2(message.find("cannot be calibrated") != std::string::npos, message.c_str());
+        QVERIFY(!id.seeded());
+        id.observe(0.001, 1.0, false);
+        QVERIFY(!id.seed(previous.u, previous.f, message)); // too late: the test has started
     }
 
     /// rescaled(): the same physical force along a history in other scales.
