@@ -95,6 +95,11 @@ struct UpdatingSpec {
     /// The specimen model's uRef / fRef when the configuration gives them (the robust UKF
     /// derives missing ones from the data)
     std::optional<double> modelURef, modelFRef;
+    /// The robust UKF's seed: a previous run's record (HDF5) whose measured response of the
+    /// element named `specimen` is calibrated before the test (docs/configuration.md,
+    /// updating.ukf.seedRecord); a relative path is taken from the configuration's folder.
+    /// "" for none.
+    std::string seedRecord;
     // UKF settings of the paper's formulation (defaults: the paper's a, b, kappa = 3 - L)
     double ukfA = 1e-4, ukfB = 2.0;
     std::optional<double> ukfKappa;

@@ -2,10 +2,13 @@
 
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
+#include "core/record/RecordReader.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/NelderMeadIdentifier.h"
 #include "core/updating/RobustUkfIdentifier.h"
 #include "core/updating/UkfIdentifier.h"
+
+#include <filesystem>
 
 namespace hsmu {
 
@@ -44,6 +47,37 @@ std::vector<std::string> defaultTargetParameters(const std::string& law)
     return {"k"};
 }
 
+/// Seeds the robust UKF with the specimen's measured response in a previous run's record
+/// (rows 1 .. N-1: row 0 is the state at rest). Throws ConfigError naming the file and field.
+void seedFromRecord(RobustUkfIdentifier& id, const std::string& path, const std::string& specimen,
+                    const std::string& where)
+{
+    const std::string field = where + ": ukf.seedRecord '" + path + "': ";
+    std::vector<double> u, f;
+    try {
+        const RecordReader reader(path);
+        const RecordData& r = reader.data();
+        int j = -1;
+        for (std::size_t i = 0; i < r.layout.elements.size(); ++i)
+            if (r.layout.elements[i].name == specimen && r.layout.elements[i].experimental)
+                j = int(i);
+        if (j < 0)
+            throw ConfigError(field + "no specimen (experimental element) named '" + specimen +
+                              "' in the record");
+        for (int row = 1; row < r.rows(); ++row) {
+            u.push_back(r.deformation(row, j));
+            f.push_back(r.force(row, j));
+        }
+    } catch (const ConfigError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw ConfigError(field + e.what());
+    }
+    std::string message;
+    if (!id.seed(u, f, message))
+        throw ConfigError(field + message);
+}
+
 } // namespace
 
 UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
@@ -80,10 +114,18 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     if (c.has("ukf")) {
         const JsonCursor k = c.child("ukf");
         k.allowOnly({"formulation", "a", "b", "kappa", "forceNoise", "parameterNoise",
-                     "initialStdFraction"});
+                     "initialStdFraction", "seedRecord"});
         u.ukfFormulation = k.string("formulation", u.ukfFormulation);
         if (u.ukfFormulation != "robust" && u.ukfFormulation != "paper")
             k.fail("formulation", "expected 'robust' or 'paper'");
+        u.seedRecord = k.string("seedRecord", "");
+        if (!u.seedRecord.empty()) {
+            if (u.ukfFormulation != "robust")
+                k.fail("seedRecord", "only the robust formulation is seeded");
+            std::filesystem::path p(u.seedRecord);
+            if (p.is_relative() && !cfg.sourcePath.empty())
+                u.seedRecord = (std::filesystem::path(cfg.sourcePath).parent_path() / p).string();
+        }
         u.ukfA = k.number("a", u.ukfA);
         u.ukfB = k.number("b", u.ukfB);
         if (k.has("kappa"))
@@ -189,9 +231,13 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
             const auto* bw = dynamic_cast<const BoucWen*>(&model);
             if (!bw)
                 throw ConfigError(where + ": the UKF needs a boucWen specimen model");
-            if (u.ukfFormulation == "robust")
-                return std::make_unique<RobustUkfIdentifier>(bw->parameters(), u.modelURef,
-                                                             u.modelFRef, u.bounds);
+            if (u.ukfFormulation == "robust") {
+                auto id = std::make_unique<RobustUkfIdentifier>(bw->parameters(), u.modelURef,
+                                                                u.modelFRef, u.bounds);
+                if (!u.seedRecord.empty())
+                    seedFromRecord(*id, u.seedRecord, u.specimen, where);
+                return id;
+            }
             BoucWenUkfSettings s;
             s.ukf.a = u.ukfA;
             s.ukf.b = u.ukfB;
