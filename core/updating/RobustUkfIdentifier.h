@@ -45,8 +45,8 @@
 //     family cannot represent the specimen.
 // Jobs. Calibrations (2, 4, 5) and the guard's replay (5b) run on a worker thread
 // (std::async), one at a time, on a copy of the history at the step k they are started; the
-// result is applied at exactly the step where the history reaches N_k + max(50, N_k / 20)
-// (jobDelay()), and observe() waits for the worker there if it has not finished. So the
+// result is applied at the step where the history reaches N_k + max(50, N_k / 20)
+// (jobDelay(); the next step when that one is a divergence's), and observe() waits for the worker there if it has not finished. So the
 // estimates depend on the samples only, not on the machine's speed: a replay of a record gives
 // the same estimates bit for bit, online or offline. A job's result is caught up over the
 // samples since N_k on the stepping thread (the anchor's model stepped over them). The
