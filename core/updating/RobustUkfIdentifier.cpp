@@ -112,6 +112,26 @@ void RobustUkfIdentifier::publish() {
 }
 
 ParameterValues RobustUkfIdentifier::estimate() const { return m_estimate; }
+
+void RobustUkfIdentifier::estimateValues(std::vector<double>& out) const {
+    out.clear();
+    for (const auto& [name, v] : m_estimate)
+        out.push_back(v);
+}
+
+void RobustUkfIdentifier::standardDeviationValues(std::vector<double>& out) const {
+    out.clear(); // m_stddev has m_estimate's names (publish())
+    for (const auto& [name, v] : m_stddev)
+        out.push_back(v);
+}
+
+void RobustUkfIdentifier::boundsValues(std::vector<ParameterBounds>& out) const {
+    out.clear();
+    for (const auto& [name, v] : m_estimate) {
+        const auto b = m_bounds.find(name);
+        out.push_back(b == m_bounds.end() ? ParameterBounds{NAN, NAN} : b->second);
+    }
+}
 ParameterValues RobustUkfIdentifier::standardDeviation() const { return m_stddev; }
 
 bool RobustUkfIdentifier::setBounds(const std::string& name, const ParameterBounds& b) {

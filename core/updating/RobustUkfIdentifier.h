@@ -98,6 +98,10 @@ public:
     double predictedForce() const override { return m_predicted; }
     const ParameterBoundsMap& bounds() const override { return m_bounds; }
     bool setBounds(const std::string& name, const ParameterBounds& b) override;
+    // By position, every step (ModelUpdater): straight from the maps, no copies.
+    void estimateValues(std::vector<double>& out) const override;
+    void standardDeviationValues(std::vector<double>& out) const override;
+    void boundsValues(std::vector<ParameterBounds>& out) const override;
 
     /// Seeding (before the first observe()): the anchor is the calibration of a previous
     /// test's record of the same kind of specimen (deformation and force in this test's

@@ -120,6 +120,25 @@ private slots:
             QCOMPARE(alone.statuses[k].updated, second.statuses[k].updated);
         }
         QCOMPARE(a->divergences(), 0);
+        // The by-position values (ModelUpdater's path) are the maps' in their order.
+        std::vector<double> values, sd;
+        std::vector<ParameterBounds> bounds;
+        a->estimateValues(values);
+        a->standardDeviationValues(sd);
+        a->boundsValues(bounds);
+        const ParameterValues byName = a->estimate(), sdByName = a->standardDeviation();
+        QCOMPARE(values.size(), byName.size());
+        std::size_t j = 0;
+        for (const auto& [name, value] : byName) {
+            QCOMPARE(values[j], value);
+            QCOMPARE(sd[j], sdByName.at(name));
+            const auto b = a->bounds().find(name);
+            if (b == a->bounds().end())
+                QVERIFY(std::isnan(bounds[j].lower) && std::isnan(bounds[j].upper));
+            else
+                QVERIFY(bounds[j].lower == b->second.lower && bounds[j].upper == b->second.upper);
+            ++j;
+        }
         // ... and it identified the specimen: the final estimate replays it within 2 %.
         const ParameterValues e = a->estimate();
         BoucWenParameters p = truth();
