@@ -100,7 +100,11 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     }
     if (c.has("nelderMead")) {
         const JsonCursor n = c.child("nelderMead");
-        n.allowOnly({"maxEvaluations", "cooldown", "window", "parameters"});
+        n.allowOnly({"maxEvaluations", "cooldown", "window", "parameters", "refit"});
+        u.nelderMeadRefit = n.string("refit", u.nelderMeadRefit);
+        if (u.nelderMeadRefit != "auto" && u.nelderMeadRefit != "calibration" &&
+            u.nelderMeadRefit != "simplex")
+            n.fail("refit", "expected 'auto', 'calibration' or 'simplex'");
         u.maxEvaluations = n.integer("maxEvaluations", u.maxEvaluations);
         u.cooldown = n.number("cooldown", u.cooldown);
         u.fitWindow = n.number("window", u.fitWindow);
@@ -207,6 +211,9 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
         s.maxEvaluations = u.maxEvaluations;
         s.cooldownSteps = static_cast<int>(u.cooldown / dt + 0.5);
         s.windowSteps = static_cast<int>(u.fitWindow / dt + 0.5);
+        s.calibrated = u.nelderMeadRefit == "calibration" ||
+                       (u.nelderMeadRefit == "auto" && (model.lawName() == "boucWen" ||
+                                                        model.lawName() == "boucWenPinching"));
         return std::make_unique<NelderMeadIdentifier>(model, s);
     } catch (const std::invalid_argument& e) {
         throw ConfigError(where + ": " + e.what());

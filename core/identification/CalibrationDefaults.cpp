@@ -180,6 +180,7 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
     applyBounds(box, request.bounds);
     spec.fitted = box;
     spec.starts = reorder(defaults, starts, box);
+    spec.window = request.window;
     return spec;
 }
 

@@ -34,6 +34,7 @@ struct CalibrationRequest {
     ParameterBoundsMap bounds;           ///< user bounds, replacing defaults by name
     std::optional<double> uRef, fRef;    ///< user scales (Bouc-Wen laws)
     std::vector<std::string> fitted;     ///< the parameters to fit ("": the law's default set)
+    std::size_t window = 0;              ///< score the last `window` samples (0 = all)
 };
 
 /// The default spec for `law` on a history with these scales. Throws std::invalid_argument
