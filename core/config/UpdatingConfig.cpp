@@ -2,8 +2,10 @@
 
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
+#include "core/hysteresis/BoucWenPinching.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/NelderMeadIdentifier.h"
+#include "core/updating/PinchingUkfIdentifier.h"
 #include "core/updating/RobustUkfIdentifier.h"
 #include "core/updating/UkfIdentifier.h"
 
@@ -59,9 +61,10 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     u.method = c.string("method", "ukf");
     if (u.method != "ukf" && u.method != "nelderMead")
         c.fail("method", "expected 'ukf' or 'nelderMead'");
-    if (u.method == "ukf" && sp->material.law != "boucWen")
-        c.fail("method", "the UKF identifies a boucWen model; the specimen's model is '" +
-                             sp->material.law + "' (use nelderMead)");
+    if (u.method == "ukf" && sp->material.law != "boucWen" &&
+        sp->material.law != "boucWenPinching")
+        c.fail("method", "the UKF identifies a boucWen or boucWenPinching model; the "
+                         "specimen's model is '" + sp->material.law + "' (use nelderMead)");
     if (auto it = sp->material.params.find("uRef"); it != sp->material.params.end())
         u.modelURef = it->second;
     if (auto it = sp->material.params.find("fRef"); it != sp->material.params.end())
@@ -189,6 +192,15 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
                                             double dt, const std::string& where)
 {
     try {
+        if (u.method == "ukf" && model.lawName() == "boucWenPinching") {
+            if (u.ukfFormulation != "robust")
+                throw ConfigError(where + ": the paper's UKF formulation identifies a boucWen "
+                                          "model; boucWenPinching takes the robust one (the "
+                                          "default)");
+            return std::make_unique<PinchingUkfIdentifier>(
+                static_cast<const BoucWenPinching&>(model).parameters(), u.modelURef,
+                u.modelFRef, u.bounds);
+        }
         if (u.method == "ukf") {
             const auto* bw = dynamic_cast<const BoucWen*>(&model);
             if (!bw)
