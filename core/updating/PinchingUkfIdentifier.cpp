@@ -19,6 +19,8 @@ constexpr std::size_t kAnchorReducedSamples = 300;
 /// ... from this many scattered pinching starts (offline: 40) and the plain law's optimum;
 /// the previous anchor and the UKF's estimate compete with its result.
 constexpr int kAnchorPinchingStarts = 12;
+/// UKF steps rejected in a row (a sigma point the law cannot integrate) before a new anchor.
+constexpr int kRejectionsBeforeReanchor = 3;
 
 int indexOf(const std::string& name) {
     const auto& names = pinchingUkfParameterNames();
@@ -178,7 +180,13 @@ IdentificationStatus PinchingUkfIdentifier::anchor(bool global, bool diverged) {
         }
         spec.polished = 2;
         cal = calibrate(m_u, m_f, spec);
+        if (!cal.ok) { // the law cannot replay the history from either: search globally
+            global = true;
+            cal = calibrateHistory(m_u, m_f, request);
+        }
     }
+    if (global)
+        m_globalSize = m_u.size();
     BoucWenPinchingParameters best = m_anchor;
     best.boucWen.uRef = *request.uRef;
     best.boucWen.fRef = *request.fRef;
@@ -273,8 +281,21 @@ IdentificationStatus PinchingUkfIdentifier::observe(double deformation, double f
     m_predicted = s.predictedForce;
     // divergence watch: the filter's a-priori error against the anchor model's own
     const double fRef = m_anchor.boucWen.fRef;
-    m_anchorLaw->setTrialDeformation(deformation);
+    const bool anchorFailed = m_anchorLaw->setTrialDeformation(deformation) != LawStatus::Ok;
     m_anchorLaw->commit();
+    m_rejectedInRow = s.status.ok ? 0 : m_rejectedInRow + 1;
+    if (anchorFailed || m_rejectedInRow >= kRejectionsBeforeReanchor) {
+        // the law cannot integrate the anchor (or the filter's points) along the new path:
+        // a new anchor from the whole history, which the law can replay
+        m_rejectedInRow = 0;
+        IdentificationStatus a2 = anchor(true, true);
+        a2.ok = false;
+        a2.message = std::string(anchorFailed ? "the anchor model failed on the new "
+                                                "deformation"
+                                              : "pinching UKF steps rejected in a row") +
+                     "; " + a2.message;
+        return a2;
+    }
     const double e = (s.predictedForce - force) / fRef;
     const double a = (m_anchorLaw->committedForce() - force) / fRef;
     const std::size_t w = m_window.size();
@@ -316,7 +337,7 @@ IdentificationStatus PinchingUkfIdentifier::observe(double deformation, double f
     if (m_recovering > 0)
         --m_recovering;
     st.reportable = m_recovering == 0;
-    if (double(m_u.size()) >= m_settings.anchorGrowth * double(m_anchorSize)) {
+    if (double(m_u.size()) >= m_settings.anchorGrowth * double(m_globalSize)) {
         IdentificationStatus a2 = anchor(true, false);
         a2.reportable = st.reportable;
         return a2;

@@ -15,13 +15,18 @@
 //     (1 % to 10 % of each parameter's typical scale), R from the anchor's RMS error, the box
 //     the calibration's default box (the user's bounds replacing it by name).
 //  3. Track: a UKF step per sample (PinchingUkf: sigma points and means admissible).
-//  4. Re-anchor when the history has grown anchorGrowth times (the global calibration), or
-//     when the guard finds the anchor stale (a local refit from the anchor and the estimate).
+//  4. Re-anchor when the history has grown anchorGrowth times since the last global
+//     calibration (a global one again), or when the guard finds the anchor stale (a local
+//     refit from the anchor and the estimate; global if the law cannot replay the history
+//     from either).
 //  5. Divergence: the a-priori force error / fRef, RMS over divergenceWindow steps, above
 //     divergenceRatio times the larger of the anchor model's own error over those steps, the
 //     anchor's RMS error and divergenceFloor (or a non-finite estimate): the step is
 //     rejected, the UKF restarts from the anchor and its estimates are not reportable for the
 //     next divergenceWindow steps.
+//  5b. Law failures: three UKF steps rejected in a row (a sigma point the law cannot
+//     integrate), or the anchor's own model failing on the new deformation, bring a new
+//     global anchor (the calibration only accepts laws that replay the whole history).
 //  6. Guard: every max(50, N / 20) steps the UKF's estimate and the anchor are replayed over
 //     the history; the estimate is published if its NRMSE is within driftRatio of the
 //     anchor's, else the filter goes back to the anchor, which is published; an anchor whose
@@ -102,13 +107,14 @@ private:
     std::optional<BoucWenPinching> m_anchorLaw; ///< the anchor's model, stepped along
     std::vector<double> m_u, m_f;
     double m_uMin = 0.0, m_uMax = 0.0;
-    std::size_t m_anchorSize = 0, m_nextCheck = 0;
+    std::size_t m_anchorSize = 0, m_globalSize = 0, m_nextCheck = 0;
     double m_anchorNrmse = std::numeric_limits<double>::quiet_NaN();
     double m_anchorRms = 0.0; ///< the anchor's RMS error / fRef
     std::vector<double> m_window, m_anchorWindow; ///< squared a-priori errors / fRef^2 (ring)
     double m_windowSum = 0.0, m_anchorWindowSum = 0.0;
     std::size_t m_windowNext = 0, m_windowFill = 0;
     int m_recovering = 0;
+    int m_rejectedInRow = 0;
     int m_anchors = 0, m_divergences = 0;
     double m_predicted = std::numeric_limits<double>::quiet_NaN();
     double m_lastSeconds = 0.0;

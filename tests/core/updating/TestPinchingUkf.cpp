@@ -128,14 +128,21 @@ private slots:
         QCOMPARE(id.parameterNames().size(), std::size_t(15));
     }
 
-    /// hsmu replay --import rc_column_force_disp.txt --identify with {"model": {"law":
-    /// "boucWenPinching"}}: the default online method.
-    void gillOnlineWithinAQuarterOfTheCalibration() {
+    void onlineWithinAQuarterOfTheCalibration_data() {
+        QTest::addColumn<QString>("file");
+        const QString data = HSMU_SHARED_DATA_DIR;
+        QTest::newRow("gill") << data + "/rc-column-gill1979/rc_column_force_disp.txt";
+        QTest::newRow("soesianawati")
+            << data + "/hysteresis/rc-column-soesianawati-unit1/soesianawati_unit1.txt";
+    }
+
+    /// hsmu replay --import FILE --identify with {"model": {"law": "boucWenPinching"}}: the
+    /// default online method.
+    void onlineWithinAQuarterOfTheCalibration() {
+        QFETCH(QString, file);
         SpecimenHistory h;
-        const std::string file =
-            std::string(HSMU_SHARED_DATA_DIR) + "/rc-column-gill1979/rc_column_force_disp.txt";
-        if (!readRecord(file, h))
-            QSKIP(qPrintable(QString::fromStdString("shared record absent: " + file)));
+        if (!readRecord(file.toStdString(), h))
+            QSKIP(qPrintable("shared record absent: " + file));
         const nlohmann::json config = {{"model", {{"law", "boucWenPinching"}}}};
         IdentificationSettings s = withOverride(defaultIdentificationSettings(), config, "test");
         QCOMPARE(s.updating.method, std::string("ukf"));
@@ -143,9 +150,9 @@ private slots:
         QVERIFY(r.calibration && r.calibration->ok);
         const double best = r.calibration->nrmse;
         const int divergences = count(r.messages, "diverging");
-        qInfo("Gill, pinching: calibration NRMSE %.4f, online pinching UKF final NRMSE %.4f "
+        qInfo("%s, pinching: calibration NRMSE %.4f, online pinching UKF final NRMSE %.4f "
               "(%.3fx), %d anchors, %d divergences, zetaS %.3f",
-              best, r.finalNrmse, r.finalNrmse / best, count(r.messages, "anchor"), divergences,
+              qPrintable(QFileInfo(file).fileName()), best, r.finalNrmse, r.finalNrmse / best, count(r.messages, "anchor"), divergences,
               r.finalEstimate.at("zetaS"));
         if (qEnvironmentVariableIsSet("HSMU_VERBOSE"))
             for (const std::string& m : r.messages)
