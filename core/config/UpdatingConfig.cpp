@@ -63,8 +63,8 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
         c.fail("method", "expected 'ukf' or 'nelderMead'");
     if (u.method == "ukf" && sp->material.law != "boucWen" &&
         sp->material.law != "boucWenPinching")
-        c.fail("method", "the UKF identifies a boucWen or boucWenPinching model; the "
-                         "specimen's model is '" + sp->material.law + "' (use nelderMead)");
+        c.fail("method", "the UKF identifies a boucWen model or a boucWenPinching model; "
+                         "the specimen's model is '" + sp->material.law + "' (use nelderMead)");
     if (auto it = sp->material.params.find("uRef"); it != sp->material.params.end())
         u.modelURef = it->second;
     if (auto it = sp->material.params.find("fRef"); it != sp->material.params.end())

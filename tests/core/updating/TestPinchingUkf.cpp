@@ -5,6 +5,7 @@
 // online method (the UKF) ends within 1.25 x the pinching calibration's NRMSE
 // (docs/validation.md, pinching table) without a divergence.
 
+#include "core/config/JsonCursor.h"
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/offline/OfflineIdentification.h"
 #include "core/updating/PinchingUkfIdentifier.h"
@@ -119,13 +120,39 @@ private slots:
         QVERIFY(std::abs(p.boucWen.k0 - 1.0) < 0.2);
     }
 
-    void refusesThePaperFormulationAndForeignBounds() {
+    void refusesThePaperFormulationAndForeignBoundsAndIsBuiltForUkf() {
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  PinchingUkfIdentifier(truth(), 1.0, 1.0, {{"A0", {0.5, 2.0}}}));
         PinchingUkfIdentifier id(truth(), std::nullopt, std::nullopt, {});
         QVERIFY(id.setBounds("zetaS", {0.0, 0.9}));
         QVERIFY(!id.setBounds("uRef", {0.0, 1.0}));
         QCOMPARE(id.parameterNames().size(), std::size_t(15));
+        // the factory: "method": "ukf" with a pinching model is this identifier (robust
+        // formulation); the paper's formulation is refused, naming the field
+        SpecimenHistory h;
+        for (int k = 0; k < 20; ++k) {
+            h.time.push_back(0.01 * k);
+            h.deformation.push_back(1e-3 * k);
+            h.force.push_back(0.5 * k);
+        }
+        h.source = "ramp";
+        const nlohmann::json pinching = {{"model", {{"law", "boucWenPinching"}}}};
+        IdentificationSettings s = withOverride(defaultIdentificationSettings(), pinching, "t");
+        s.calibrate = false;
+        const OfflineIdentificationResult r = identifyOffline(h, s);
+        QCOMPARE(r.method, std::string("UKF (pinching)"));
+        QCOMPARE(r.parameterNames.size(), std::size_t(15));
+        nlohmann::json paper = pinching;
+        paper["updating"] = {{"ukf", {{"formulation", "paper"}}}};
+        const IdentificationSettings p = withOverride(defaultIdentificationSettings(), paper, "t");
+        try {
+            identifyOffline(h, p);
+            QFAIL("the paper's formulation took a pinching model");
+        } catch (const ConfigError& e) {
+            QVERIFY2(std::string(e.what()).find("boucWenPinching takes the robust") !=
+                         std::string::npos,
+                     e.what());
+        }
     }
 
     void onlineWithinAQuarterOfTheCalibration_data() {
