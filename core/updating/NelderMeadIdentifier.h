@@ -11,15 +11,18 @@
 //  - calibration (default, for the laws CalibrationDefaults knows: boucWen, boucWenPinching,
 //    bilinear): the bounded Levenberg-Marquardt of Calibration.h inside the user's bounds.
 //    Every trigger runs a local fit warm-started from the current estimate (one start, the
-//    reduced history then the whole); the global multi-start (CalibrationDefaults' starts
-//    inside the user's bounds, plus the current estimate and the local result, two polished)
-//    runs as well when
-//      (a) no global fit has run yet, or
+//    reduced history then the whole); the global search runs as well when
+//      (a) no global fit has run yet (and the deformation has reversed twice), or
 //      (b) the history has grown to kGlobalGrowth (2) times its size at the last global fit,
 //          or
 //      (c) the local fit is poor: its NRMSE over the window above max(kPoorNrmse (0.10),
 //          1.25 x the NRMSE the last global fit reached);
-//    the better of the two is the result. Levenberg-Marquardt's iterations per phase are
+//    the better of the two is the result. The global search is the default calibration
+//    (calibrateHistory: for boucWenPinching the plain law's optimum, then starts scattered
+//    around it) inside the user's bounds when every parameter not fitted is one it fixes
+//    (A0 = 1, deltaA = 0, uRef, fRef); otherwise CalibrationDefaults' starts in the fitted
+//    parameters plus the current estimate and the local result, two polished, the others
+//    held at the current estimate. Levenberg-Marquardt's iterations per phase are
 //    max(5, maxEvaluations / (p + 1)) (p fitted parameters: one Jacobian costs p + 1
 //    replays), so maxEvaluations still bounds the cost of one start.
 //  - simplex: the paper's Nelder-Mead (HistoryFit.h) from the current estimate, at most
