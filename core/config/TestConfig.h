@@ -110,6 +110,10 @@ struct UpdatingSpec {
     int maxEvaluations = 300;
     double cooldown = 1.0;           ///< [s] between triggers
     double fitWindow = 0.0;          ///< [s] of history weighted in the fit; 0 = all
+    /// "auto" (default: the calibration for boucWen / boucWenPinching, the simplex for the
+    /// other laws), "calibration" (Levenberg-Marquardt, warm start plus multi-start, for the
+    /// laws CalibrationDefaults knows) or "simplex" (the paper's Nelder-Mead simplex)
+    std::string nelderMeadRefit = "auto";
     InspectorSettings inspector;
     ReporterPolicy policy = ReporterPolicy::EveryStep;
     int everyN = 10;

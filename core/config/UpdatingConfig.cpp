@@ -2,9 +2,11 @@
 
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
+#include "core/hysteresis/BoucWenPinching.h"
 #include "core/record/RecordReader.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/NelderMeadIdentifier.h"
+#include "core/updating/PinchingUkfIdentifier.h"
 #include "core/updating/RobustUkfIdentifier.h"
 #include "core/updating/UkfIdentifier.h"
 
@@ -93,9 +95,10 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     u.method = c.string("method", "ukf");
     if (u.method != "ukf" && u.method != "nelderMead")
         c.fail("method", "expected 'ukf' or 'nelderMead'");
-    if (u.method == "ukf" && sp->material.law != "boucWen")
-        c.fail("method", "the UKF identifies a boucWen model; the specimen's model is '" +
-                             sp->material.law + "' (use nelderMead)");
+    if (u.method == "ukf" && sp->material.law != "boucWen" &&
+        sp->material.law != "boucWenPinching")
+        c.fail("method", "the UKF identifies a boucWen model or a boucWenPinching model; "
+                         "the specimen's model is '" + sp->material.law + "' (use nelderMead)");
     if (auto it = sp->material.params.find("uRef"); it != sp->material.params.end())
         u.modelURef = it->second;
     if (auto it = sp->material.params.find("fRef"); it != sp->material.params.end())
@@ -142,7 +145,11 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     }
     if (c.has("nelderMead")) {
         const JsonCursor n = c.child("nelderMead");
-        n.allowOnly({"maxEvaluations", "cooldown", "window", "parameters"});
+        n.allowOnly({"maxEvaluations", "cooldown", "window", "parameters", "refit"});
+        u.nelderMeadRefit = n.string("refit", u.nelderMeadRefit);
+        if (u.nelderMeadRefit != "auto" && u.nelderMeadRefit != "calibration" &&
+            u.nelderMeadRefit != "simplex")
+            n.fail("refit", "expected 'auto', 'calibration' or 'simplex'");
         u.maxEvaluations = n.integer("maxEvaluations", u.maxEvaluations);
         u.cooldown = n.number("cooldown", u.cooldown);
         u.fitWindow = n.number("window", u.fitWindow);
@@ -227,6 +234,15 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
                                             double dt, const std::string& where)
 {
     try {
+        if (u.method == "ukf" && model.lawName() == "boucWenPinching") {
+            if (u.ukfFormulation != "robust")
+                throw ConfigError(where + ": the paper's UKF formulation identifies a boucWen "
+                                          "model; boucWenPinching takes the robust one (the "
+                                          "default)");
+            return std::make_unique<PinchingUkfIdentifier>(
+                static_cast<const BoucWenPinching&>(model).parameters(), u.modelURef,
+                u.modelFRef, u.bounds);
+        }
         if (u.method == "ukf") {
             const auto* bw = dynamic_cast<const BoucWen*>(&model);
             if (!bw)
@@ -253,6 +269,9 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
         s.maxEvaluations = u.maxEvaluations;
         s.cooldownSteps = static_cast<int>(u.cooldown / dt + 0.5);
         s.windowSteps = static_cast<int>(u.fitWindow / dt + 0.5);
+        s.calibrated = u.nelderMeadRefit == "calibration" ||
+                       (u.nelderMeadRefit == "auto" && (model.lawName() == "boucWen" ||
+                                                        model.lawName() == "boucWenPinching"));
         return std::make_unique<NelderMeadIdentifier>(model, s);
     } catch (const std::invalid_argument& e) {
         throw ConfigError(where + ": " + e.what());

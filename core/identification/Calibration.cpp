@@ -22,22 +22,28 @@ namespace {
 /// Replays a law along chosen samples and returns the scaled force residuals.
 class Replay {
 public:
+    /// Residuals of the kept samples k >= firstScored (the others are replayed only).
     Replay(HysteresisLaw& law, std::vector<int> indices, const std::vector<double>& u,
-           const std::vector<double>& f, std::vector<std::size_t> keep, double scale)
+           const std::vector<double>& f, std::vector<std::size_t> keep, double scale,
+           std::size_t firstScored = 0)
         : m_law(law), m_indices(std::move(indices)), m_u(u), m_f(f), m_keep(std::move(keep)),
-          m_scale(scale) {}
+          m_scale(scale), m_firstScored(firstScored) {
+        for (std::size_t k : m_keep)
+            m_scored += k >= m_firstScored;
+    }
 
     bool operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
         if (m_law.setParameterValues(m_indices, {x.data(), std::size_t(x.size())}, true) != -1)
             return false;
         m_law.revertToStart();
-        r.resize(Eigen::Index(m_keep.size()));
-        for (std::size_t j = 0; j < m_keep.size(); ++j) {
-            const std::size_t k = m_keep[j];
+        r.resize(Eigen::Index(m_scored));
+        Eigen::Index j = 0;
+        for (const std::size_t k : m_keep) {
             if (m_law.setTrialDeformation(m_u[k]) != LawStatus::Ok)
                 return false;
             m_law.commit();
-            r[Eigen::Index(j)] = (m_law.committedForce() - m_f[k]) / m_scale;
+            if (k >= m_firstScored)
+                r[j++] = (m_law.committedForce() - m_f[k]) / m_scale;
         }
         return r.allFinite();
     }
@@ -49,6 +55,7 @@ private:
     const std::vector<double>& m_f;
     std::vector<std::size_t> m_keep;
     double m_scale;
+    std::size_t m_firstScored = 0, m_scored = 0;
 };
 
 struct Candidate {
@@ -165,16 +172,28 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     const LevenbergMarquardt::Projection project = [&](Eigen::VectorXd& x) {
         projectBetaGamma(x, iBeta, iGamma, fixedBeta, fixedGamma);
     };
+    const std::size_t first =
+        spec.window > 0 && spec.window < u.size() ? u.size() - spec.window : 0;
+    const std::size_t scored = u.size() - first;
     double sumF2 = 0.0;
-    for (double v : f)
-        sumF2 += v * v;
-    const double rmsF = std::sqrt(sumF2 / double(f.size()));
+    for (std::size_t k = first; k < f.size(); ++k)
+        sumF2 += f[k] * f[k];
+    const double rmsF = std::sqrt(sumF2 / double(scored));
     if (!(rmsF > 0))
         return done("the measured force is zero throughout");
 
     // 1. Global phase on the reduced history.
-    const std::vector<std::size_t> reduced = reducedHistory(u, spec.reducedSamples);
-    const Replay coarse(*law, indices, u, f, reduced, rmsF);
+    std::vector<std::size_t> reduced = reducedHistory(u, spec.reducedSamples);
+    if (first > 0) {
+        // with a window every scored sample is kept (the reduced history only thins the
+        // replayed part before it)
+        reduced.erase(std::remove_if(reduced.begin(), reduced.end(),
+                                     [&](std::size_t k) { return k >= first; }),
+                      reduced.end());
+        for (std::size_t k = first; k < u.size(); ++k)
+            reduced.push_back(k);
+    }
+    const Replay coarse(*law, indices, u, f, reduced, rmsF, first);
     std::vector<Eigen::VectorXd> starts;
     for (const std::vector<double>& s : spec.starts) {
         if (s.size() != spec.fitted.size())
@@ -198,7 +217,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     // 2. Local phase on the whole history.
     std::vector<std::size_t> all(u.size());
     std::iota(all.begin(), all.end(), std::size_t(0));
-    const Replay fine(*law, indices, u, f, all, rmsF);
+    const Replay fine(*law, indices, u, f, all, rmsF, first);
     LevenbergMarquardtResult best;
     best.cost = std::numeric_limits<double>::infinity();
     const std::size_t polish = std::min(candidates.size(), std::size_t(std::max(spec.polished, 1)));
@@ -219,7 +238,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     for (const std::string& name : law->parameterNames())
         out.parameters[name] = *law->parameter(name);
     out.estimate = best.x;
-    out.nrmse = std::sqrt(2.0 * best.cost / double(u.size()));
+    out.nrmse = std::sqrt(2.0 * best.cost / double(scored));
     out.rmsError = out.nrmse * rmsF;
     out.onBound.resize(std::size_t(p));
     std::vector<Eigen::Index> freeIdx;
@@ -232,7 +251,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     out.standardDeviation = Eigen::VectorXd::Constant(p, std::nan(""));
     out.correlation = Eigen::MatrixXd::Constant(p, p, std::nan(""));
     const auto m = Eigen::Index(freeIdx.size());
-    const double dof = double(u.size()) - double(m);
+    const double dof = double(scored) - double(m);
     if (m > 0 && dof > 0 && best.jacobian.cols() == p) {
         Eigen::MatrixXd JF(best.jacobian.rows(), m);
         for (Eigen::Index k = 0; k < m; ++k)

@@ -50,6 +50,11 @@ struct CalibrationSpec {
     /// the box and made admissible.
     std::vector<std::vector<double>> starts;
     std::size_t reducedSamples = 800; ///< target size of the reduced history (global phase)
+    /// Score only the last `window` samples (0 = all): the law is still replayed from the
+    /// first sample (its force depends on the whole path), J and the NRMSE sum over the last
+    /// `window` samples and are scaled by their RMS force (the online refits of
+    /// NelderMeadIdentifier that follow a degrading specimen).
+    std::size_t window = 0;
     int polished = 1;                 ///< best starts refined on the whole history
     LevenbergMarquardtSettings global{30, 1e-6, 1e-8, 1e-6, 1e-2};
     LevenbergMarquardtSettings local{20, 1e-6, 1e-10, 1e-6, 1e-3};
@@ -64,8 +69,8 @@ struct CalibrationResult {
     Eigen::VectorXd standardDeviation;        ///< [p] NaN on a bound (not free)
     Eigen::MatrixXd correlation;              ///< [p x p] NaN rows / columns on a bound
     std::vector<bool> onBound;                ///< [p] the value sits on its box
-    double rmsError = 0.0;                    ///< RMS(F_law - F) [force units]
-    double nrmse = 0.0;                       ///< rmsError / RMS(F) [-]
+    double rmsError = 0.0;                    ///< RMS(F_law - F) [force units] (scored samples)
+    double nrmse = 0.0;                       ///< rmsError / RMS(F) [-] (scored samples)
     int startsTried = 0;
     int residualEvaluations = 0;
     double computeSeconds = 0.0; ///< wall time [s]

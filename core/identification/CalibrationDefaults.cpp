@@ -16,7 +16,6 @@ bool isBoucWenFamily(const std::string& law) {
 
 using Box = CalibrationSpec::Parameter;
 
-constexpr int kPinchingStarts = 40; ///< scattered starts of the pinching search ///< scattered starts of the pinching search
 
 std::vector<Box> boucWenBox(const HistoryScales& s) {
     const double e = std::max(s.energy, 1.0);
@@ -180,6 +179,8 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
     applyBounds(box, request.bounds);
     spec.fitted = box;
     spec.starts = reorder(defaults, starts, box);
+    spec.window = request.window;
+    spec.reducedSamples = request.reducedSamples;
     return spec;
 }
 
@@ -225,7 +226,8 @@ CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vect
                                      : it->second);
         }
         spec.starts.push_back(std::move(plainStart));
-        for (auto& s : scatteredPinchingStarts(spec.fitted, base.parameters, kPinchingStarts))
+        for (auto& s : scatteredPinchingStarts(spec.fitted, base.parameters,
+                                               std::max(0, request.pinchingStarts)))
             spec.starts.push_back(std::move(s));
         // The global phase keeps the pinching on (zetaS >= 0.5, and zeta1 near zetaS once a
         // fifth of the history's work is done): from random starts with the whole box, most

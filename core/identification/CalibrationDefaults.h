@@ -34,6 +34,9 @@ struct CalibrationRequest {
     ParameterBoundsMap bounds;           ///< user bounds, replacing defaults by name
     std::optional<double> uRef, fRef;    ///< user scales (Bouc-Wen laws)
     std::vector<std::string> fitted;     ///< the parameters to fit ("": the law's default set)
+    std::size_t window = 0;              ///< score the last `window` samples (0 = all)
+    std::size_t reducedSamples = 800;    ///< the global phase's history (Calibration.h)
+    int pinchingStarts = 40;             ///< scattered starts of the pinching search
 };
 
 /// The default spec for `law` on a history with these scales. Throws std::invalid_argument

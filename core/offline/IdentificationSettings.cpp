@@ -69,7 +69,8 @@ IdentificationSettings identificationSettingsFrom(const TestConfig& cfg,
         return s;
     }
     nlohmann::json section = nlohmann::json::object();
-    section["method"] = s.model.law == "boucWen" ? "ukf" : "nelderMead";
+    section["method"] =
+        s.model.law == "boucWen" || s.model.law == "boucWenPinching" ? "ukf" : "nelderMead";
     return reparse(s, section, cfg.sourcePath);
 }
 

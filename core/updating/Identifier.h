@@ -1,7 +1,8 @@
 #pragma once
 // Identifier: parameter identification of one specimen's law from its measured response
-// (docs/method.md, The four modules and The paper's UKF). Implementations: UkfIdentifier (every
-// step) and NelderMeadIdentifier (over the stored history, when the Inspector asks).
+// (docs/method.md, The four modules and The paper's UKF). Implementations: UkfIdentifier,
+// RobustUkfIdentifier and PinchingUkfIdentifier (every step) and NelderMeadIdentifier (over
+// the stored history, when the Inspector asks).
 // Values are in the law's own units (normalized for Bouc-Wen with uRef/fRef).
 
 #include "core/identification/ParameterSet.h"
