@@ -32,6 +32,7 @@
 // as read (before the dead-channel substitution); no held ticks or flags (-1).
 // Thread rules: one thread at a time (the test worker), except emergencyHold().
 
+#include "comms/openfresco/AdapterCompensation.h"
 #include "comms/openfresco/OfSizes.h"
 #include "core/config/LinkConfig.h"
 #include "core/experimental/ExperimentalControl.h"
@@ -62,6 +63,8 @@ struct OfControlOptions {
     /// GenericTCP: warn on stderr at connect that the server must commit on its own (a SimApp
     /// site server never does: docs/openfresco.md "Pairings that cannot be right").
     bool warnNoCommit = true;
+    /// Adapter: the penalty compensation (AdapterCompensation; both on by default).
+    AdapterCompensation::Options adapter;
 };
 
 class OpenFrescoControl : public ExperimentalControl {
