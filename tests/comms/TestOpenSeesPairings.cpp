@@ -297,21 +297,43 @@ private slots:
     void genericTcpAgainstSimAppSiteServerWarns() {
         // The console's GenericTCP client against OpenFresco's startSimAppSiteServer: the site
         // needs commits that GenericTCP never sends (a Bouc-Wen specimen ended 150 % off).
-        // Nothing on the wire tells the two servers apart, so the client warns at connect.
+        // Nothing on OpenFresco's wire tells the two servers apart (its servers answer any
+        // action of the protocol, and a lab's GenericTCP controller may not survive one it does
+        // not expect), so the client warns at connect: a Warning alarm at step 0 of the record
+        // that names the pairing, the risk and simapp://.
         const quint16 port = freePort();
         QVERIFY(port != 0);
         QProcess site;
         QVERIFY(startOpenFrescoServer(site, "site", port));
+        nlohmann::json j = sdof::controllerConfig();
+        j["groundMotion"] = {{"file", opensees::elCentro().toStdString()},
+                             {"format", "single"},
+                             {"dt", 0.02},
+                             {"units", "g"}};
+        j["analysis"]["duration"] = 0.2;
+        const hsmu::TestConfig cfg = hsmu::loadConfigFile(writeConfig("gtcp-site.json", j));
         const hsmu::comms::of::OfControlOptions o = patientOptions();
-        {
-            hsmu::comms::of::GenericTcpControl c("127.0.0.1", port, "Spring", o);
-            const auto r = c.prepare(0.01);
-            QVERIFY2(r.ok, r.reason.c_str());
-            QVERIFY2(c.pairingWarning().find("never commits") != std::string::npos &&
-                         c.pairingWarning().find("simapp://") != std::string::npos,
-                     c.pairingWarning().c_str());
-        } // sends 99: the site server ends
+        const hsmu::ControlFactory factory =
+            [&](const hsmu::ElementSpec& spec) -> std::unique_ptr<hsmu::ExperimentalControl> {
+            return std::make_unique<hsmu::comms::of::GenericTcpControl>("127.0.0.1", port,
+                                                                        spec.name, o);
+        };
+        const linkfixture::Run run = linkfixture::runTest(cfg, factory); // 99 ends the site
         endProcess(site);
+        QVERIFY2(run.state == hsmu::HybridTest::State::Finished, run.error.c_str());
+        int warnings = 0;
+        for (const hsmu::Alarm& a : run.alarms)
+            if (a.message.find("GenericTCP has no commit") != std::string::npos) {
+                ++warnings;
+                QCOMPARE(a.severity, hsmu::AlarmSeverity::Warning);
+                QCOMPARE(a.step, 0); // at connect, before the first step
+                QVERIFY2(a.message.find("never commits") != std::string::npos &&
+                             a.message.find("simapp://") != std::string::npos &&
+                             a.message.find("generictcp://127.0.0.1:" + std::to_string(port)) !=
+                                 std::string::npos,
+                         a.message.c_str());
+            }
+        QCOMPARE(warnings, 1);
         // SimApp against the same kind of server carries no such warning.
         hsmu::comms::of::SimAppControl s("127.0.0.1", 1, "Spring", o);
         QVERIFY(s.pairingWarning().empty());
