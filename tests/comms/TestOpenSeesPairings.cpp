@@ -454,6 +454,87 @@ private slots:
                      qPrintable(QString::number(r.penalty, 'g', 17)));
     }
 
+    void paperFrameElement2ThroughAdapter() {
+        // The paper frame (preset paper-condition-1) with its Element 2 as a numerical
+        // substructure in OpenSees: a zeroLength BoucWen with the element's normalized law in
+        // its own units (ko = k0 fRef / uRef, gamma and beta / uRef^n, the degradation rates /
+        // (fRef uRef)), reached through an adapter with KB about 1e6 ko, as a site of the
+        // console (sites: adapter://). Element 1 stays the built-in specimen. The run must equal
+        // the all-built-in run (Element 2's force to 1e-9 of its peak).
+        const quint16 port = freePort();
+        QVERIFY(port != 0);
+        std::ifstream in(std::string(HSMU_SOURCE_DIR) + "/resources/presets/paper-condition-1.json");
+        nlohmann::json j = nlohmann::json::parse(in);
+        j["analysis"]["duration"] = 4.0;
+        j.erase("updating"); // no online updating: Element 2 is the site under test
+        auto& e2 = j["structure"]["elements"][1];
+        QCOMPARE(e2["name"].get<std::string>(), std::string("Element 2"));
+        e2["experimental"] = true;
+        e2["specimen"] = {{"material", e2["material"]}};
+        const nlohmann::json m = e2["material"];
+        const hsmu::TestConfig builtInCfg = hsmu::loadConfigFile(writeConfig("frame-b.json", j));
+        j["sites"] = {{{"name", "OpenSees"},
+                       {"address", "adapter://127.0.0.1:" + std::to_string(port)},
+                       {"elements", {"Element 2"}}}};
+        const hsmu::TestConfig cfg = hsmu::loadConfigFile(writeConfig("frame-a.json", j));
+        const double uRef = m["uRef"], fRef = m["fRef"], n = m["n"];
+        const double ko = m["k0"].get<double>() * fRef / uRef;
+        const double kb = 1e6 * ko;
+        const QString material =
+            QString("uniaxialMaterial BoucWen 1 %1 %2 %3 %4 %5 %6 %7 %8 %9 1.0e-16 50\n")
+                .arg(m["alpha"].get<double>(), 0, 'g', 17)
+                .arg(ko, 0, 'g', 17)
+                .arg(n, 0, 'g', 17)
+                .arg(m["gamma"].get<double>() / std::pow(uRef, n), 0, 'g', 17)
+                .arg(m["beta"].get<double>() / std::pow(uRef, n), 0, 'g', 17)
+                .arg(m["A0"].get<double>(), 0, 'g', 17)
+                .arg(m["deltaA"].get<double>() / (fRef * uRef), 0, 'g', 17)
+                .arg(m["deltaNu"].get<double>() / (fRef * uRef), 0, 'g', 17)
+                .arg(m["deltaEta"].get<double>() / (fRef * uRef), 0, 'g', 17);
+        QString script =
+            "wipe\nmodel BasicBuilder -ndm 1 -ndf 1\nnode 1 0.0\nnode 2 0.0\nfix 1 1\n" + material +
+            "element zeroLength 1 1 2 -mat 1 -dir 1\n" +
+            QString("element adapter 2 -node 2 -dof 1 -stif %1 %2\n").arg(kb, 0, 'g', 6).arg(port) +
+            "timeSeries Linear 1\npattern Plain 1 1 {}\nconstraints Plain\nnumberer Plain\n"
+            "system FullGeneral\ntest NormDispIncr 1.0e-14 25 0\nalgorithm Newton\n"
+            "integrator LoadControl 1.0\nanalysis Static\nanalyze 1000\nwipe\n";
+        const QString dir = sub("frame");
+        QFile f(dir + "/frame.tcl");
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(script.toUtf8());
+        f.close();
+        QProcess os;
+        os.setProcessChannelMode(QProcess::MergedChannels);
+        os.start(opensees::interpreter(), {dir + "/frame.tcl"});
+        QVERIFY(os.waitForStarted(30000));
+        hsmu::comms::TcpControlOptions to;
+        to.connectTimeout = 5.0;
+        to.stepDeadline = 20.0;
+        to.reconnectAttempts = 40;
+        to.reconnectDelay = 0.25;
+        const linkfixture::Run linked = linkfixture::runTest(
+            cfg, hsmu::comms::makeControlFactory(hsmu::comms::LinkAddress{}, to, cfg));
+        endProcess(os);
+        const QString log = QString::fromUtf8(os.readAll());
+        QVERIFY2(linked.state == hsmu::HybridTest::State::Finished,
+                 qPrintable(QString::fromStdString(linked.error) + "\n" + log.right(2000)));
+        const linkfixture::Run builtIn = linkfixture::runTest(builtInCfg, {});
+        QCOMPARE(linked.records.size(), builtIn.records.size());
+        double peak = 0.0, worst = 0.0, peakU = 0.0, worstU = 0.0;
+        for (std::size_t i = 0; i < builtIn.records.size(); ++i) {
+            const double fb = builtIn.records[i].elements[1].force;
+            peak = std::max(peak, std::abs(fb));
+            worst = std::max(worst, std::abs(linked.records[i].elements[1].force - fb));
+            peakU = std::max(peakU, std::abs(builtIn.records[i].u[0]));
+            worstU = std::max(worstU, std::abs(linked.records[i].u[0] - builtIn.records[i].u[0]));
+        }
+        qInfo("paper frame, Element 2 through the adapter (KB %.3g): force %.3g of its peak %.4g, "
+              "displacement %.3g of its peak %.4g",
+              kb, worst / peak, peak, worstU / peakU, peakU);
+        QVERIFY2(worst <= 1e-9 * peak, qPrintable(QString::number(worst / peak)));
+        QVERIFY2(worstU <= 1e-9 * peakU, qPrintable(QString::number(worstU / peakU)));
+    }
+
     void twoNodeGenericClientServedThroughServerDofs() {
         // genericClient sends the global DOFs of both nodes (no basic transformation): the
         // spring's deformation is u2 - u1, mapped by controller.serverDofs.
