@@ -82,6 +82,17 @@ class TestOpenSeesPairings : public QObject {
         return p.waitForStarted(30000);
     }
 
+    /// The SDOF's configuration (sdof::controllerConfig) under El Centro for duration [s].
+    static nlohmann::json elCentroConfig(double duration) {
+        nlohmann::json j = sdof::controllerConfig();
+        j["groundMotion"] = {{"file", opensees::elCentro().toStdString()},
+                             {"format", "single"},
+                             {"dt", 0.02},
+                             {"units", "g"}};
+        j["analysis"]["duration"] = duration;
+        return j;
+    }
+
     static hsmu::comms::of::OfControlOptions patientOptions() {
         hsmu::comms::of::OfControlOptions o;
         o.connectTimeout = 5.0;
@@ -162,12 +173,7 @@ class TestOpenSeesPairings : public QObject {
             out.why = "no free port";
             return out;
         }
-        nlohmann::json j = sdof::controllerConfig();
-        j["groundMotion"] = {{"file", opensees::elCentro().toStdString()},
-                             {"format", "single"},
-                             {"dt", 0.02},
-                             {"units", "g"}};
-        j["analysis"]["duration"] = 2.0;
+        nlohmann::json j = elCentroConfig(2.0);
         const hsmu::TestConfig cfg = hsmu::loadConfigFile(writeConfig("adapter.json", j));
         const QString dir = sub("adapter-" + tag);
         QString script =
@@ -305,12 +311,7 @@ private slots:
         QVERIFY(port != 0);
         QProcess site;
         QVERIFY(startOpenFrescoServer(site, "site", port));
-        nlohmann::json j = sdof::controllerConfig();
-        j["groundMotion"] = {{"file", opensees::elCentro().toStdString()},
-                             {"format", "single"},
-                             {"dt", 0.02},
-                             {"units", "g"}};
-        j["analysis"]["duration"] = 0.2;
+        nlohmann::json j = elCentroConfig(0.2);
         const hsmu::TestConfig cfg = hsmu::loadConfigFile(writeConfig("gtcp-site.json", j));
         const hsmu::comms::of::OfControlOptions o = patientOptions();
         const hsmu::ControlFactory factory =
