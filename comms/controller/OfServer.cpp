@@ -190,6 +190,7 @@ void OfServer::serve(OfSocket& socket) {
     std::vector<std::uint8_t> out;
     const bool generic = m_opt.protocol == OfProtocol::GenericTcp;
     bool framesStarted = false;
+    bool trialSeen = false; // until the first trial, a getDaqResponse is the console's probe
     for (;;) {
         // Sessions may idle between steps for as long as the client computes; a vanished
         // peer is a closed socket (or TCP keep-alive), a stop request cancels the read.
@@ -219,6 +220,7 @@ void OfServer::serve(OfSocket& socket) {
         bool answer = false;
         switch (*action) {
         case Action::SetTrialResponse:
+            trialSeen = true;
             if (!trial(frame, why)) {
                 log(why + "; session closed");
                 return;
@@ -233,6 +235,11 @@ void OfServer::serve(OfSocket& socket) {
         case Action::GetDaqResponse:
             reply = daqReply(0, 5);
             answer = true;
+            if (!trialSeen && reply.size() < static_cast<std::size_t>(m_sizes.dataSize)) {
+                // The console's connect probe: say which server answers (OfFrame.h).
+                reply.resize(static_cast<std::size_t>(m_sizes.dataSize), 0.0);
+                reply.back() = generic ? kMarkGenericTcpServer : kMarkSimAppServer;
+            }
             break;
         case Action::GetDisp:
         case Action::GetVel:

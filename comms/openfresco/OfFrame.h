@@ -39,6 +39,14 @@ std::optional<Action> actionOf(double code);
 
 constexpr std::size_t kInitLineBytes = 16385;
 
+/// hsmu-controller's mark (docs/openfresco.md "The server's mark"): its reply to a
+/// getDaqResponse that comes before the session's first trial (only the console's connect probe
+/// does that) carries in its last element, when the frame has room beyond the values, which
+/// kind of server answers. OpenFresco's clients read only their sizes and never see it. The
+/// console's GenericTCP client refuses a SimApp server (it would never commit its specimens).
+constexpr double kMarkSimAppServer = 4.8534e300;     ///< needs commits (SimApp element / site)
+constexpr double kMarkGenericTcpServer = 4.8535e300; ///< commits each trial when the next comes
+
 /// values (at most dataSize of them) padded with zeros to a dataSize-double frame; false with
 /// a sentence in error when they do not fit or dataSize is not positive.
 bool encodeFrame(std::span<const double> values, int dataSize, std::vector<std::uint8_t>& out,

@@ -36,6 +36,12 @@ std::string secondsText(double s) {
 
 enum class Wait { Done, TimedOut, Cancelled };
 
+/// now + timeout [s] (meaningless, and unused, when timeout <= 0).
+Clock::time_point deadlineAfter(double timeout) {
+    return Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>(timeout > 0.0 ? timeout : 0.0));
+}
+
 /// Run io until *done, the deadline (timeout <= 0: none) or cancel; never returns with a
 /// handler of this operation still pending when the caller then aborts and drains.
 Wait runUntil(asio::io_context& io, const bool& done, double timeout,
@@ -94,6 +100,51 @@ struct OfSocket::Impl {
         const int one = 1;
         ::setsockopt(socket->native_handle(), IPPROTO_TCP, TCP_QUICKACK, &one, sizeof one);
 #endif
+    }
+
+    /// The one read of read() and readLine(): exactly n bytes (exact) or at least one of them
+    /// into data, before deadline (timeout <= 0: none, only the cancel predicate). On failure
+    /// the socket is closed (a half-read frame must never be followed by another read) and
+    /// error says why, timeout [s] being the caller's whole allowance.
+    bool readInto(void* data, std::size_t n, bool exact, double timeout,
+                  Clock::time_point deadline, std::size_t& got, std::string& error) {
+        bool done = false;
+        boost::system::error_code result;
+        got = 0;
+        Wait w = Wait::TimedOut;
+        const double left =
+            timeout > 0.0 ? std::chrono::duration<double>(deadline - Clock::now()).count() : 0.0;
+        if (timeout <= 0.0 || left > 0.0) {
+            io->restart();
+            auto handler = [&](const boost::system::error_code& ec, std::size_t k) {
+                result = ec;
+                got = k;
+                done = true;
+            };
+            if (exact)
+                asio::async_read(*socket, asio::buffer(data, n), handler);
+            else
+                socket->async_read_some(asio::buffer(data, n), handler);
+            w = runUntil(*io, done, left, cancel);
+        }
+        if (w != Wait::Done) {
+            abort(); // the pending handler runs here, while its captures live
+            timedOut = w == Wait::TimedOut;
+            error = timedOut ? "no reply within " + secondsText(timeout) : "cancelled";
+            return false;
+        }
+        if (result) {
+            eof = result == asio::error::eof;
+            abort();
+            error = eof ? (got == 0 ? "the peer closed the connection"
+                                    : "the peer closed the connection in the middle of a frame (" +
+                                          std::to_string(got) + " of " + std::to_string(n) +
+                                          " bytes)")
+                        : "connection lost: " + result.message();
+            return false;
+        }
+        quickAck();
+        return true;
     }
 
     void abort() {
@@ -263,35 +314,8 @@ bool OfSocket::read(void* data, std::size_t n, double timeout, std::string& erro
         error = "not connected";
         return false;
     }
-    bool done = false;
-    boost::system::error_code result;
     std::size_t got = 0;
-    d->io->restart();
-    asio::async_read(*d->socket, asio::buffer(data, n),
-                     [&](const boost::system::error_code& ec, std::size_t k) {
-                         result = ec;
-                         got = k;
-                         done = true;
-                     });
-    const Wait w = runUntil(*d->io, done, timeout, d->cancel);
-    if (w != Wait::Done) {
-        d->abort();
-        d->timedOut = w == Wait::TimedOut;
-        error = w == Wait::TimedOut ? "no reply within " + secondsText(timeout) : "cancelled";
-        return false;
-    }
-    if (result) {
-        d->eof = result == asio::error::eof;
-        d->abort();
-        error = d->eof
-                    ? (got == 0 ? "the peer closed the connection"
-                                : "the peer closed the connection in the middle of a frame (" +
-                                      std::to_string(got) + " of " + std::to_string(n) + " bytes)")
-                    : "connection lost: " + result.message();
-        return false;
-    }
-    d->quickAck();
-    return true;
+    return d->readInto(data, n, true, timeout, deadlineAfter(timeout), got, error);
 }
 
 struct OfListener::Impl {
@@ -387,8 +411,7 @@ bool OfSocket::readLine(std::string& line, std::size_t maxBytes, double timeout,
         error = "not connected";
         return false;
     }
-    const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                             std::chrono::duration<double>(timeout));
+    const auto deadline = deadlineAfter(timeout);
     for (;;) {
         if (const auto nl = d->lineBuffer.find('\n'); nl != std::string::npos) {
             line.assign(d->lineBuffer, 0, nl);
@@ -403,36 +426,10 @@ bool OfSocket::readLine(std::string& line, std::size_t maxBytes, double timeout,
             return false;
         }
         char chunk[512];
-        bool done = false;
-        boost::system::error_code result;
         std::size_t got = 0;
-        d->io->restart();
-        d->socket->async_read_some(asio::buffer(chunk),
-                                   [&](const boost::system::error_code& ec, std::size_t k) {
-                                       result = ec;
-                                       got = k;
-                                       done = true;
-                                   });
-        const double left =
-            timeout > 0.0 ? std::chrono::duration<double>(deadline - Clock::now()).count() : 0.0;
-        const Wait w = timeout > 0.0 && left <= 0.0 ? Wait::TimedOut
-                                                     : runUntil(*d->io, done, timeout > 0.0 ? left : 0.0,
-                                                                d->cancel);
-        if (w != Wait::Done) {
-            d->abort();
-            d->timedOut = w == Wait::TimedOut;
-            error = w == Wait::TimedOut ? "no reply within " + secondsText(timeout) : "cancelled";
+        if (!d->readInto(chunk, sizeof chunk, false, timeout, deadline, got, error))
             return false;
-        }
-        if (result) {
-            d->eof = result == asio::error::eof;
-            d->abort();
-            error = d->eof ? "the peer closed the connection"
-                           : "connection lost: " + result.message();
-            return false;
-        }
         d->lineBuffer.append(chunk, got);
-        d->quickAck();
     }
 }
 

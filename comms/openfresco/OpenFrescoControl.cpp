@@ -139,15 +139,31 @@ ControlResult OpenFrescoControl::connectOnce() {
                          "the reason); make controller.dataSize and the sizes match the "
                          "server's");
     if (m_protocol == OfProtocol::GenericTcp) {
-        m_pairingWarning =
-            where() +
-            ": GenericTCP has no commit; the server must take each trial as final when the "
-            "next one arrives (as hsmu-controller --protocol generictcp and lab GenericTCP "
-            "controllers do). An OpenFresco SimApp site or element server "
-            "(startSimAppSiteServer / startSimAppElemServer) never commits its specimen over "
-            "GenericTCP and every force is silently wrong: use simapp:// for it.";
-        if (m_opt.warnNoCommit)
-            std::fprintf(stderr, "hsmu: WARNING %s\n", m_pairingWarning.c_str());
+        // hsmu-controller marks its probe reply (OfFrame.h): a SimApp server of ours is refused
+        // outright, a GenericTCP server of ours commits on its own; anything else is warned.
+        const double mark = m_values.empty() ? 0.0 : m_values.back();
+        if (mark == kMarkSimAppServer) {
+            const std::string simapp = "simapp" + where().substr(where().find("://"));
+            if (sendRequest(static_cast<int>(Action::Terminate), {}).ok)
+                m_socket->closeAfterPeer(2.0);
+            return linkFault(
+                "refused: this server is hsmu-controller serving SimApp (--protocol simapp), "
+                "which needs a commit after every step; GenericTCP sends none, so its "
+                "specimens would never be committed and every force would be wrong. Connect "
+                "with " + simapp + " (or start hsmu-controller with --protocol generictcp)");
+        }
+        if (mark != kMarkGenericTcpServer) {
+            m_pairingWarning =
+                where() +
+                ": GenericTCP has no commit; the server must take each trial as final when the "
+                "next one arrives (as hsmu-controller --protocol generictcp and lab GenericTCP "
+                "controllers do). An OpenFresco SimApp site or element server "
+                "(startSimAppSiteServer / startSimAppElemServer) never commits its specimen over "
+                "GenericTCP and every force is silently wrong: use simapp:// for it.";
+            if (m_opt.warnNoCommit)
+                std::fprintf(stderr, "hsmu: WARNING %s\n", m_pairingWarning.c_str());
+            m_notice = m_notice.empty() ? m_pairingWarning : m_notice + "; " + m_pairingWarning;
+        }
     }
     if (m_opt.logConnect)
         std::fprintf(stderr, "hsmu: %s connected, specimen '%s': %s\n", where().c_str(),

@@ -7,6 +7,9 @@
 // step deadline. A server that does not accept the sizes (ours closes the connection, see
 // OfServer) therefore fails prepare() with a message naming the sizes, instead of a stream
 // that desynchronizes later. The negotiated sizes are logged on stderr at connect.
+// GenericTCP has no commit: against hsmu-controller --protocol simapp (its probe reply carries
+// kMarkSimAppServer, OfFrame.h) prepare() fails naming simapp:// as the fix; against a server
+// without our mark it warns (stderr and takeNotice(): a Warning alarm at connect).
 // Per step:
 //   setTarget(d)  [3, d at ctrl disp, zeros, time at ctrl time when sized]   (no reply), then
 //                 at once [6] (so that several sites work in parallel: measure() only reads)
@@ -32,6 +35,7 @@
 // as read (before the dead-channel substitution); no held ticks or flags (-1).
 // Thread rules: one thread at a time (the test worker), except emergencyHold().
 
+#include "comms/openfresco/AdapterCompensation.h"
 #include "comms/openfresco/OfSizes.h"
 #include "core/config/LinkConfig.h"
 #include "core/experimental/ExperimentalControl.h"
@@ -60,8 +64,12 @@ struct OfControlOptions {
     double retryDelay = 0.5;            ///< [s] between them
     bool logConnect = true;             ///< one line on stderr with the negotiated sizes
     /// GenericTCP: warn on stderr at connect that the server must commit on its own (a SimApp
-    /// site server never does: docs/openfresco.md "Pairings that cannot be right").
+    /// site server never does: docs/openfresco.md "Pairings that cannot be right"). The
+    /// warning is also the control's notice (takeNotice(): a Warning alarm in the record)
+    /// whatever this says.
     bool warnNoCommit = true;
+    /// Adapter: the penalty compensation (AdapterCompensation; both on by default).
+    AdapterCompensation::Options adapter;
 };
 
 class OpenFrescoControl : public ExperimentalControl {
@@ -87,8 +95,10 @@ public:
 
     bool linkUp() const;
     const std::string& linkError() const { return m_linkError; }
-    /// After a GenericTCP connect: the warning that the server must commit on its own (no
-    /// message can tell a GenericTCP controller from a SimApp site server); "" for SimApp.
+    /// After a GenericTCP connect to a server that is not hsmu-controller: the warning that
+    /// the server must commit on its own (nothing on OpenFresco's wire tells a GenericTCP
+    /// controller from a SimApp site server; hsmu-controller marks its probe reply, and a
+    /// SimApp hsmu-controller is refused at connect); "" for SimApp and for our servers.
     const std::string& pairingWarning() const { return m_pairingWarning; }
     std::uint64_t committedSteps() const { return m_committed; }
     OfProtocol protocol() const { return m_protocol; }

@@ -174,6 +174,9 @@ bool HybridTest::prepare()
     for (ExperimentalElement* x : m_specimens)
         if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
             return fail(x->name() + ": " + r.reason);
+    for (ExperimentalElement* x : m_specimens) // e.g. a pairing that may be wrong, at connect
+        if (std::string notice = x->control().takeNotice(); !notice.empty())
+            raise(AlarmSeverity::Warning, AlarmKind::ControlFault, x->name() + ": " + notice);
     // From here on emergencyHold() reaches the controls (connected); one raised while they
     // connected only holds the first step, which sends the hold in band.
     m_prepared.store(true, std::memory_order_release);

@@ -201,6 +201,42 @@ private slots:
         QVERIFY2(ctl.log().contains("init line: loadConfig lab-42"), qPrintable(ctl.log()));
     }
 
+    void genericTcpClientRefusesOurSimAppServer() {
+        // GenericTCP sends no commit: against hsmu-controller --protocol simapp the specimens
+        // would never be committed. The server's mark on the probe reply (OfFrame.h) tells it
+        // apart: the console refuses at connect and names the fix; the server's session ends
+        // with the client's 99.
+        ControllerProcess ctl = controller(m_quiet, "simapp");
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const TestConfig cfg = loadConfigFile(m_quiet);
+        const Run linked = runTest(
+            cfg,
+            makeControlFactory(LinkAddress{LinkAddress::Kind::GenericTcp, "127.0.0.1", ctl.port()},
+                               patientOptions(), cfg.link));
+        QVERIFY(!linked.prepared);
+        QVERIFY2(linked.error.find("refused: this server is hsmu-controller serving SimApp") !=
+                         std::string::npos &&
+                     linked.error.find("simapp://127.0.0.1:" + std::to_string(ctl.port())) !=
+                         std::string::npos &&
+                     linked.error.find("--protocol generictcp") != std::string::npos,
+                 linked.error.c_str());
+        ctl.stop();
+        QVERIFY2(ctl.log().contains("terminated by the client (99)"), qPrintable(ctl.log()));
+    }
+
+    void genericTcpClientTrustsOurGenericTcpServer() {
+        // hsmu-controller --protocol generictcp commits each trial when the next arrives: no
+        // pairing warning, no alarm; the probe reply's mark is the only difference on the wire.
+        ControllerProcess ctl = controller(m_quiet, "generictcp");
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        GenericTcpControl c("127.0.0.1", ctl.port(), "Element 1", ofOptions());
+        const ControlResult r = c.prepare(0.01);
+        QVERIFY2(r.ok, r.reason.c_str());
+        QVERIFY2(c.pairingWarning().empty(), c.pairingWarning().c_str());
+        QVERIFY(c.takeNotice().empty());
+        ctl.stop();
+    }
+
     void realTimePaceGivesTheSameResult() {
         // Wall clock at the 1024 Hz loop, ~10 ms per step, each step's ticks run when its
         // trial arrives: with an ideal actuator the result is still the in-process one.
