@@ -21,7 +21,46 @@ void padRange(QCPAxis* axis) {
     axis->setRange(r.lower - 0.05 * span, r.upper + 0.05 * span);
 }
 
+const char* fullLabelKey(const QCPAxis& axis) {
+    switch (axis.axisType()) {
+    case QCPAxis::atLeft: return "hsmuLabelLeft";
+    case QCPAxis::atRight: return "hsmuLabelRight";
+    case QCPAxis::atTop: return "hsmuLabelTop";
+    case QCPAxis::atBottom: break;
+    }
+    return "hsmuLabelBottom";
+}
+
+// An axis label longer than its axis (a long translation along a short plot) is cut with
+// "..." instead of being clipped at both ends; the full label is kept (PlotStyle::axisLabel)
+// and goes to the plot's tool tip. A label set since the last replot is the new full label.
+void elideAxisLabel(QCustomPlot& plot, QCPAxis& axis, QStringList& cut) {
+    const char* fullKey = fullLabelKey(axis);
+    const QByteArray shownKey = QByteArray(fullKey) + "Shown";
+    const QString current = axis.label();
+    if (current != plot.property(shownKey.constData()).toString())
+        plot.setProperty(fullKey, current);
+    const QString full = plot.property(fullKey).toString();
+    const bool vertical = axis.orientation() == Qt::Vertical;
+    const int length = vertical ? plot.axisRect()->height() : plot.axisRect()->width();
+    const QString shown = QFontMetrics(axis.labelFont())
+                              .elidedText(full, Qt::ElideRight, std::max(30, length - 4));
+    plot.setProperty(shownKey.constData(), shown);
+    if (shown != current)
+        axis.setLabel(shown);
+    if (shown != full)
+        cut << full;
+}
+
 } // namespace
+
+QString PlotStyle::axisLabel(const QCustomPlot& plot, const QCPAxis& axis) {
+    const QByteArray shownKey = QByteArray(fullLabelKey(axis)) + "Shown";
+    // Not yet drawn, or set again since: the label itself.
+    if (axis.label() != plot.property(shownKey.constData()).toString())
+        return axis.label();
+    return plot.property(fullLabelKey(axis)).toString();
+}
 
 void PlotStyle::apply(QCustomPlot& plot) {
     plot.setBackground(Qt::white);
@@ -45,6 +84,14 @@ void PlotStyle::apply(QCustomPlot& plot) {
         axis->grid()->setZeroLinePen(QPen(QColor(150, 150, 150), 0));
     }
     plot.setMinimumSize(240, 180);
+    QObject::connect(&plot, &QCustomPlot::beforeReplot, &plot, [&plot] {
+        QStringList cut;
+        for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
+            if (axis->visible())
+                elideAxisLabel(plot, *axis, cut);
+        plot.setProperty("hsmuCutLabels", cut);
+        plot.setToolTip(cut.join(QLatin1Char('\n'))); // setTitle() adds a cut title
+    });
     PlotTools::attach(plot); // cursor read-out, zoom / pan, autoscale, channels, CSV export
 }
 
@@ -75,7 +122,10 @@ void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
                                   .elidedText(full, Qt::ElideRight, std::max(40, plot.width() - 12));
         if (element->text() != shown)
             element->setText(shown);
-        plot.setToolTip(shown == full ? QString() : full);
+        QStringList tip = plot.property("hsmuCutLabels").toStringList(); // cut axis labels
+        if (shown != full)
+            tip.prepend(full);
+        plot.setToolTip(tip.join(QLatin1Char('\n')));
     });
 }
 

@@ -16,6 +16,9 @@
 #include "gui/app/MainWindow.h"
 #include "gui/app/SetupPanel.h"
 #include "gui/app/Translations.h"
+#include "gui/plots/PlotStyle.h"
+
+#include <qcustomplot.h>
 
 using namespace hsmu;
 using namespace hsmu::gui;
@@ -80,6 +83,28 @@ private slots:
                  qPrintable(QStringLiteral("%1: the setup panel needs %2 px, the dock shows %3")
                                 .arg(language).arg(needed).arg(available)));
         QCOMPARE(setup->width(), available); // laid out to the viewport, not clipped
+        // Plots: a vertical axis label longer than its axis is cut with "..." (the whole
+        // label in the tool tip), never clipped at both ends ("eleración del suelo [m/").
+        for (QCustomPlot* plot : window.findChildren<QCustomPlot*>()) {
+            if (!plot->isVisible())
+                continue;
+            plot->replot(QCustomPlot::rpImmediateRefresh); // laid out at its size
+            plot->replot(QCustomPlot::rpImmediateRefresh); // labels cut to the new layout
+            for (QCPAxis* axis : {plot->yAxis, plot->yAxis2}) {
+                if (!axis->visible() || axis->label().isEmpty())
+                    continue;
+                const int length = QFontMetrics(axis->labelFont()).horizontalAdvance(axis->label());
+                QVERIFY2(length <= plot->axisRect()->height(),
+                         qPrintable(QStringLiteral("%1: '%2' is %3 px along a %4 px axis of %5")
+                                        .arg(language, axis->label())
+                                        .arg(length)
+                                        .arg(plot->axisRect()->height())
+                                        .arg(plot->objectName())));
+                const QString full = PlotStyle::axisLabel(*plot, *axis);
+                if (full != axis->label())
+                    QVERIFY2(plot->toolTip().contains(full), qPrintable(plot->toolTip()));
+            }
+        }
         // Every push button shows its whole text (e.g. "Examinar..." beside the file field).
         for (QPushButton* b : setup->findChildren<QPushButton*>()) {
             if (!b->isVisibleTo(setup))

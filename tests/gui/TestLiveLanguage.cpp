@@ -34,6 +34,7 @@
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 #include "gui/plots/LivePlotsPanel.h"
+#include "gui/plots/PlotStyle.h"
 #include "gui/replay/ReplayPanels.h"
 #include "gui/replay/ReplayWindow.h"
 #include "RecordedRun.h"
@@ -172,15 +173,15 @@ private slots:
             // Plots: titles, axis labels and legends, the data kept.
             HistoryPlot& displacement = plots->displacementHistory();
             expect(title(displacement), "hsmu::gui::HistoryPlot", "Displacement history");
-            expect(displacement.yAxis->label(), "hsmu::gui::HistoryPlot", "Displacement [m]");
-            expect(displacement.xAxis->label(), "hsmu::gui::HistoryPlot", "Time [s]");
+            expect(PlotStyle::axisLabel(displacement, *displacement.yAxis), "hsmu::gui::HistoryPlot", "Displacement [m]");
+            expect(PlotStyle::axisLabel(displacement, *displacement.xAxis), "hsmu::gui::HistoryPlot", "Time [s]");
             expect(title(ground), "hsmu::gui::HistoryPlot", "Ground motion");
             expect(ground.graph(0)->name(), "hsmu::gui::HistoryPlot", "Ground acceleration");
             QCOMPARE(ground.graph(0)->dataCount(), groundPoints);
             HistoryPlot& tracking = plots->tracking();
             QVERIFY(tracking.graphCount() == 4);
             expect(tracking.graph(0)->name(), "hsmu::gui::HistoryPlot", "commanded");
-            expect(tracking.yAxis2->label(), "hsmu::gui::HistoryPlot", "Held ticks [-]");
+            expect(PlotStyle::axisLabel(tracking, *tracking.yAxis2), "hsmu::gui::HistoryPlot", "Held ticks [-]");
             HysteresisPlot& loop = plots->hysteresis();
             const QString loopTitle = title(loop);
             QVERIFY2(loopTitle == catalogue("hsmu::gui::HysteresisPlot",
@@ -193,12 +194,12 @@ private slots:
                 catalogue("hsmu::gui::HysteresisPlot", "Rotation [%1]").section('%', 0, 0);
             const QString deformation =
                 catalogue("hsmu::gui::HysteresisPlot", "Deformation [%1]").section('%', 0, 0);
-            QVERIFY2(loop.xAxis->label().startsWith(rotation) ||
-                         loop.xAxis->label().startsWith(deformation),
-                     qPrintable(code + QStringLiteral(": ") + loop.xAxis->label()));
+            QVERIFY2(PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(rotation) ||
+                         PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(deformation),
+                     qPrintable(code + QStringLiteral(": ") + PlotStyle::axisLabel(loop, *loop.xAxis)));
             if (!english)
-                QVERIFY(!loop.xAxis->label().startsWith(QLatin1String("Rotation")) &&
-                        !loop.xAxis->label().startsWith(QLatin1String("Deformation")));
+                QVERIFY(!PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(QLatin1String("Rotation")) &&
+                        !PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(QLatin1String("Deformation")));
             QVERIFY2(window.windowTitle().startsWith(
                          catalogue("hsmu::gui::MainWindow", "HSMU Console - %1").section('%', 0, 0)),
                      qPrintable(window.windowTitle()));
@@ -285,7 +286,8 @@ private slots:
                         .startsWith(catalogue("OperatorEvent", "paused by the operator")));
             expect(paused->text(ReplayEventList::Kind),
                    catalogue("hsmu::gui::ReplayEventList", "operator"), "operator");
-            expect(w->findChild<HistoryPlot*>(QStringLiteral("displacementPlot"))->yAxis->label(),
+            auto* replayed = w->findChild<HistoryPlot*>(QStringLiteral("displacementPlot"));
+            expect(PlotStyle::axisLabel(*replayed, *replayed->yAxis),
                    catalogue("hsmu::gui::HistoryPlot", "Displacement [m]"), "Displacement [m]");
             QCOMPARE(w->findChild<HistoryPlot*>(QStringLiteral("groundMotionPlot"))
                          ->graph(0)
