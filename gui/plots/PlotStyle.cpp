@@ -41,8 +41,7 @@ void elideAxisLabel(QCustomPlot& plot, QCPAxis& axis, QStringList& cut) {
     if (current != plot.property(shownKey.constData()).toString())
         plot.setProperty(fullKey, current);
     const QString full = plot.property(fullKey).toString();
-    const bool vertical = axis.orientation() == Qt::Vertical;
-    const int length = vertical ? plot.axisRect()->height() : plot.axisRect()->width();
+    const int length = PlotStyle::labelRoom(plot, axis);
     const QString shown = QFontMetrics(axis.labelFont())
                               .elidedText(full, Qt::ElideRight, std::max(30, length - 4));
     plot.setProperty(shownKey.constData(), shown);
@@ -53,6 +52,18 @@ void elideAxisLabel(QCustomPlot& plot, QCPAxis& axis, QStringList& cut) {
 }
 
 } // namespace
+
+int PlotStyle::labelRoom(const QCustomPlot& plot, const QCPAxis& axis) {
+    // A label is centred on its axis and may reach into the margins (title, tick labels)
+    // but not past the plot's edges.
+    const QRect r = plot.axisRect()->rect();
+    if (axis.orientation() == Qt::Vertical) {
+        const int c = r.center().y();
+        return 2 * std::min(c, plot.height() - c);
+    }
+    const int c = r.center().x();
+    return 2 * std::min(c, plot.width() - c);
+}
 
 QString PlotStyle::axisLabel(const QCustomPlot& plot, const QCPAxis& axis) {
     const QByteArray shownKey = QByteArray(fullLabelKey(axis)) + "Shown";
