@@ -51,6 +51,15 @@ void elideAxisLabel(QCustomPlot& plot, QCPAxis& axis, QStringList& cut) {
         cut << full;
 }
 
+// The plot's tool tip: the whole texts of a cut title and of cut axis labels.
+void showCutTexts(QCustomPlot& plot) {
+    QStringList tip = plot.property("hsmuCutLabels").toStringList();
+    const QString title = plot.property("hsmuCutTitle").toString();
+    if (!title.isEmpty())
+        tip.prepend(title);
+    plot.setToolTip(tip.join(QLatin1Char('\n')));
+}
+
 } // namespace
 
 int PlotStyle::labelRoom(const QCustomPlot& plot, const QCPAxis& axis) {
@@ -95,13 +104,15 @@ void PlotStyle::apply(QCustomPlot& plot) {
         axis->grid()->setZeroLinePen(QPen(QColor(150, 150, 150), 0));
     }
     plot.setMinimumSize(240, 180);
-    QObject::connect(&plot, &QCustomPlot::beforeReplot, &plot, [&plot] {
+    // After the layout step of each replot (the axis rect as it will be drawn; a cut label
+    // keeps its thickness, so the layout stays valid).
+    QObject::connect(&plot, &QCustomPlot::afterLayout, &plot, [&plot] {
         QStringList cut;
         for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
             if (axis->visible())
                 elideAxisLabel(plot, *axis, cut);
         plot.setProperty("hsmuCutLabels", cut);
-        plot.setToolTip(cut.join(QLatin1Char('\n'))); // setTitle() adds a cut title
+        showCutTexts(plot);
     });
     PlotTools::attach(plot); // cursor read-out, zoom / pan, autoscale, channels, CSV export
 }
@@ -133,10 +144,8 @@ void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
                                   .elidedText(full, Qt::ElideRight, std::max(40, plot.width() - 12));
         if (element->text() != shown)
             element->setText(shown);
-        QStringList tip = plot.property("hsmuCutLabels").toStringList(); // cut axis labels
-        if (shown != full)
-            tip.prepend(full);
-        plot.setToolTip(tip.join(QLatin1Char('\n')));
+        plot.setProperty("hsmuCutTitle", shown == full ? QString() : full);
+        showCutTexts(plot);
     });
 }
 
