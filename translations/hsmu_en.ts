@@ -123,6 +123,10 @@
         <source>auxiliary model did not converge at deformation %1</source>
         <translation>auxiliary model did not converge at deformation %1</translation>
     </message>
+    <message>
+        <source>stopped by the operator</source>
+        <translation>stopped by the operator</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>

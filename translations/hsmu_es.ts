@@ -123,6 +123,10 @@
         <source>auxiliary model did not converge at deformation %1</source>
         <translation>el modelo auxiliar no convergió en la deformación %1</translation>
     </message>
+    <message>
+        <source>stopped by the operator</source>
+        <translation>detenido por el operador</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>

@@ -123,6 +123,10 @@
         <source>auxiliary model did not converge at deformation %1</source>
         <translation>辅助模型在变形 %1 处未收敛</translation>
     </message>
+    <message>
+        <source>stopped by the operator</source>
+        <translation>由操作员停止</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>

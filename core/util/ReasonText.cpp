@@ -17,6 +17,7 @@ constexpr Template kTemplates[] = {
     {"operator", "operator"},
     {"operator-console", "operator at the console"},
     {"emergency-hold-by-operator", "emergency hold by the operator"},
+    {"stopped-by-operator", "stopped by the operator"},
     {"emergency-hold-fault", "emergency hold: %1 (%2)"},
     {"emergency-hold", "emergency hold: %1"},
     {"prediction-not-finite", "predicted displacement is not finite"},

@@ -49,6 +49,8 @@ QString AlarmText::translate(const std::string& code, const QStringList& a) {
         return tr("operator at the console");
     if (is("emergency-hold-by-operator", 0))
         return tr("emergency hold by the operator");
+    if (is("stopped-by-operator", 0))
+        return tr("stopped by the operator");
     if (is("emergency-hold-fault", 2))
         return tr("emergency hold: %1 (%2)").arg(reason(a[0]), reason(a[1]));
     if (is("emergency-hold", 1))

@@ -11,6 +11,7 @@ namespace hsmu::gui {
 ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     yAxis->ticker()->setTickCount(3); // small cells: few, readable value labels
+    xAxis->ticker()->setTickCount(3); // "12.515 17.5" ran together at 1280x720
     axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
 
     const QPen valuePen = PlotStyle::seriesPen(0);

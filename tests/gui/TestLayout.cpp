@@ -12,6 +12,7 @@
 #include <QStandardPaths>
 #include <QTest>
 
+#include "gui/app/AttentionBanner.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/SetupPanel.h"
@@ -37,6 +38,21 @@ private slots:
     }
     void cleanupTestCase() {
         Translations::install(*QCoreApplication::instance(), QStringLiteral("en"));
+    }
+
+    // The attention banner is red (its white text was drawn on the window's grey: a style
+    // sheet background needs WA_StyledBackground on a plain QWidget).
+    void attentionBannerIsRed() {
+        QWidget window; // a child, as in the main window (a top-level paints differently)
+        auto* banner = new AttentionBanner(&window);
+        window.resize(600, 60);
+        banner->setGeometry(0, 0, 600, 40);
+        banner->setAttention(1, QStringLiteral("test held: operator hold"));
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QColor corner = window.grab().toImage().pixelColor(2, 2);
+        QVERIFY2(corner.red() > 150 && corner.green() < 80 && corner.blue() < 80,
+                 qPrintable(corner.name()));
     }
 
     void setupPanelFitsItsDockAt1280x720_data() {
