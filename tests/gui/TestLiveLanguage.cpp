@@ -106,6 +106,9 @@ private slots:
         QCOMPARE(limit->text(AlarmList::Message),
                  QStringLiteral("test held: Bearing D: measured force |F| = 45.5 exceeds the "
                                 "limit 40"));
+        // An operator event: shown again from its language-neutral record text.
+        alarms->addEvent(OperatorEvent::now(150, 1.5, OperatorEvent::kPause, "running", "paused"));
+        QTreeWidgetItem* paused = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
         auto* plots = window.findChild<LivePlotsPanel*>();
         QVERIFY(plots);
         HistoryPlot& ground = plots->groundMotion();
@@ -164,6 +167,11 @@ private slots:
             expect(window.findChild<QLabel*>(QStringLiteral("statusState"))->text(),
                    "RunState", "ready");
             expect(limit->text(AlarmList::Kind), "hsmu::gui::AlarmList", "limit exceeded");
+            const QString pausedText = catalogue("OperatorEvent", "paused by the operator");
+            QVERIFY2(paused->text(AlarmList::Message).startsWith(pausedText),
+                     qPrintable(code + QStringLiteral(": ") + paused->text(AlarmList::Message)));
+            if (!english)
+                QVERIFY(pausedText != QLatin1String("paused by the operator"));
             const QString refusalShown =
                 catalogue("AlarmText", "test held: %1").arg(forceRefusalShown());
             QCOMPARE(limit->text(AlarmList::Message), refusalShown);
