@@ -127,6 +127,10 @@
         <source>stopped by the operator</source>
         <translation>stopped by the operator</translation>
     </message>
+    <message>
+        <source>synthetic Kanai-Tajimi (seed %1)</source>
+        <translation>synthetic Kanai-Tajimi (seed %1)</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -2360,6 +2364,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
         <translation>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</translation>
+    </message>
+    <message>
+        <source>synthetic</source>
+        <translation>synthetic</translation>
     </message>
 </context>
 <context>

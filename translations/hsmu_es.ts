@@ -127,6 +127,10 @@
         <source>stopped by the operator</source>
         <translation>detenido por el operador</translation>
     </message>
+    <message>
+        <source>synthetic Kanai-Tajimi (seed %1)</source>
+        <translation>sintético Kanai-Tajimi (semilla %1)</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -2360,6 +2364,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
         <translation>OpenSees escucha: inicie primero el modelo con su `element adapter ... PORT` (su analyze debe tener al menos los pasos del ensayo). Un paso es definitivo cuando se envía el siguiente: tras una detención el ensayo no puede repetirlo.</translation>
+    </message>
+    <message>
+        <source>synthetic</source>
+        <translation>sintético</translation>
     </message>
 </context>
 <context>

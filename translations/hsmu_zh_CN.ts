@@ -127,6 +127,10 @@
         <source>stopped by the operator</source>
         <translation>由操作员停止</translation>
     </message>
+    <message>
+        <source>synthetic Kanai-Tajimi (seed %1)</source>
+        <translation>合成 Kanai-Tajimi（种子 %1）</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -2357,6 +2361,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
         <translation>OpenSees 监听：请先用其 `element adapter ... PORT` 启动模型（其 analyze 的步数至少为试验步数）。发送下一步后该步即为最终：暂停后试验无法重复该步。</translation>
+    </message>
+    <message>
+        <source>synthetic</source>
+        <translation>合成</translation>
     </message>
 </context>
 <context>

@@ -44,6 +44,8 @@ constexpr Template kTemplates[] = {
     {"updated-model",
      "updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 "
      "and damping kept from the start"},
+    // Names of built-in records (core/groundmotion).
+    {"synthetic-motion", "synthetic Kanai-Tajimi (seed %1)"},
     // Alarms of the test and its inspector (Alarm::code is the same code).
     {"test-held", "test held: %1"},
     {"test-resumed", "test resumed"},

@@ -94,6 +94,9 @@ QString AlarmText::translate(const std::string& code, const QStringList& a) {
         return tr("updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), "
                   "limit %4; K0 and damping kept from the start")
             .arg(a[0], a[1], a[2], a[3]);
+    // Names of built-in records.
+    if (is("synthetic-motion", 1))
+        return tr("synthetic Kanai-Tajimi (seed %1)").arg(a[0]);
     // Alarms of the test and its inspector.
     if (is("test-held", 1))
         return tr("test held: %1").arg(reason(a[0]));

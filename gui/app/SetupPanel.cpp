@@ -287,7 +287,10 @@ void SetupPanel::showName() {
     m_name->setToolTip(m_name->text());
     m_groundMotion->setPlaceholderText(
         m_base.groundMotion.file.empty()
-            ? tr("built-in %1 record").arg(QString::fromStdString(m_base.groundMotion.builtin))
+            ? tr("built-in %1 record")
+                  .arg(m_base.groundMotion.builtin == "synthetic"
+                           ? tr("synthetic") // the configuration's keyword, translated
+                           : QString::fromStdString(m_base.groundMotion.builtin))
             : QString::fromStdString(m_base.groundMotion.file));
 }
 

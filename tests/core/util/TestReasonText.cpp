@@ -5,6 +5,7 @@
 #include <QTest>
 
 #include "core/experimental/SafetyLimits.h"
+#include "core/groundmotion/SyntheticGroundMotion.h"
 #include "core/util/ReasonText.h"
 
 #include <cmath>
@@ -77,6 +78,11 @@ private slots:
         QCOMPARE(codeOf(l.violationOfMeasuredDeformation(0.06)), std::string("limit-measured"));
         QCOMPARE(codeOf(l.violationOfMeasuredDeformation(NAN)),
                  std::string("limit-measured-not-finite"));
+        // The built-in record's name (shown in the pre-flight check).
+        const auto motion = parseReason(makeSyntheticGroundMotion(1940, 1.0).name);
+        QVERIFY(motion.has_value());
+        QCOMPARE(motion->code, std::string("synthetic-motion"));
+        QCOMPARE(motion->args.at(0), std::string("1940"));
         const auto force = parseReason(*l.violationOfForce(-45.5));
         QCOMPARE(force->args.at(0), std::string("45.5"));
         QCOMPARE(force->args.at(1), std::string("40"));
