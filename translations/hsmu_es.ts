@@ -1982,6 +1982,18 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Value at the cursor</source>
         <translation>Valor en el cursor</translation>
     </message>
+    <message>
+        <source>step</source>
+        <translation>paso</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>ag [m/s²]</source>
+        <translation>ag [m/s²]</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReplayWindow</name>

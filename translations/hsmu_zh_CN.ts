@@ -1979,6 +1979,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Value at the cursor</source>
         <translation>光标处的值</translation>
     </message>
+    <message>
+        <source>step</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>时间 t [s]</translation>
+    </message>
+    <message>
+        <source>ag [m/s²]</source>
+        <translation>地面加速度 ag [m/s²]</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReplayWindow</name>

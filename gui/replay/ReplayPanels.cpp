@@ -183,16 +183,24 @@ ReplayReadout::ReplayReadout(const RecordData& data, QWidget* parent)
     const QStringList names = ReplayExport::columns(data);
     setColumnCount(2);
     setRowCount(int(names.size()));
-    LiveText::bind(this, [this] {
-        setHorizontalHeaderLabels({tr("Quantity"), tr("Value at the cursor")});
-    });
     verticalHeader()->hide();
     horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     for (int i = 0; i < names.size(); ++i) {
-        setItem(i, 0, new QTableWidgetItem(names[i]));
+        auto* name = new QTableWidgetItem(names[i]);
+        name->setData(Qt::UserRole, names[i]); // the CSV column's (language-neutral) name
+        setItem(i, 0, name);
         setItem(i, 1, new QTableWidgetItem);
     }
+    LiveText::bind(this, [this] {
+        setHorizontalHeaderLabels({tr("Quantity"), tr("Value at the cursor")});
+        // The first three columns have words; the rest are symbols with names and units.
+        const QString shown[] = {tr("step"), tr("t [s]"), tr("ag [m/s²]")};
+        for (int i = 0; i < 3 && i < rowCount(); ++i) {
+            item(i, 0)->setText(shown[i]);
+            item(i, 0)->setToolTip(item(i, 0)->data(Qt::UserRole).toString());
+        }
+    });
 }
 
 void ReplayReadout::showRow(int row) {
@@ -204,7 +212,7 @@ void ReplayReadout::showRow(int row) {
 
 QString ReplayReadout::value(const QString& name) const {
     for (int i = 0; i < rowCount(); ++i)
-        if (item(i, 0)->text() == name)
+        if (item(i, 0)->data(Qt::UserRole).toString() == name)
             return item(i, 1)->text();
     return {};
 }

@@ -287,6 +287,9 @@ private slots:
             expect(events.headerItem()->text(ReplayEventList::Text),
                    catalogue("hsmu::gui::ReplayEventList", "Event, alarm or note"),
                    "Event, alarm or note");
+            expect(w->readout().item(0, 0)->text(),
+                   catalogue("hsmu::gui::ReplayReadout", "step"), "step");
+            QCOMPARE(w->readout().value(QStringLiteral("step")).isEmpty(), false);
             expect(held->text(ReplayEventList::Text),
                    catalogue("AlarmText", "test held: %1").arg(forceRefusalShown()),
                    "test held: %1");
