@@ -11,9 +11,6 @@
 #include <QApplication>
 #include <QTextStream>
 
-#include <cstring>
-#include <exception>
-#include <initializer_list>
 
 namespace hsmu::gui {
 
@@ -42,20 +39,12 @@ bool headless() {
            qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
 }
 
-bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names) {
-    for (int i = 1; i < argc; ++i)
-        for (const char* n : names)
-            if (std::strcmp(argv[i], n) == 0)
-                return true;
-    return false;
-}
-
 int dispatch(int argc, char** argv) {
     const QString sub = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
     const bool plotting = sub == QLatin1String("run") || sub == QLatin1String("compare");
     // `hsmu replay FILE` opens the replay window; --identify / --import are headless (gui/cli).
     const bool replayWindow =
-        sub == QLatin1String("replay") && !hasArgument(argc, argv, {"--identify", "--import"});
+        sub == QLatin1String("replay") && !CliLauncher::hasArgument(argc, argv, {"--identify", "--import"});
     if (CliLauncher::headlessCommand(argc, argv)) {
         QCoreApplication app(argc, argv); // no windowing system needed
         CliLauncher::describeApplication();
@@ -72,7 +61,7 @@ int dispatch(int argc, char** argv) {
         // Plots and window grabs render offscreen; an interactive window needs a display.
         const bool offscreenOk =
             plotting ||
-            hasArgument(argc, argv, {"--screenshot", "-h", "--help", "-v", "--version"});
+            CliLauncher::hasArgument(argc, argv, {"--screenshot", "-h", "--help", "-v", "--version"});
         if (!offscreenOk && replayWindow) {
             QTextStream(stderr) << "hsmu replay: no display (DISPLAY / WAYLAND_DISPLAY are not "
                                    "set); the replay window needs one"
@@ -100,14 +89,7 @@ int dispatch(int argc, char** argv) {
 } // namespace
 
 int Launcher::main(int argc, char** argv) {
-    try {
-        return dispatch(argc, argv);
-    } catch (const std::exception& e) { // last line of defence: a message, never an abort
-        QTextStream(stderr) << "hsmu: internal error: " << e.what() << Qt::endl;
-    } catch (...) {
-        QTextStream(stderr) << "hsmu: internal error" << Qt::endl;
-    }
-    return 1;
+    return CliLauncher::guarded([argc, argv] { return dispatch(argc, argv); });
 }
 
 } // namespace hsmu::gui

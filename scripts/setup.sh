@@ -11,6 +11,7 @@ packages=(
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libboost-dev libboost-system-dev libhdf5-dev hdf5-tools nlohmann-json3-dev
   libbenchmark-dev xvfb xauth
+  fonts-wqy-microhei  # Chinese glyphs for the zh_CN console and its screenshots
 )
 # The real OpenSees 3.8 + OpenFresco 2.8 the pairing tests run (../shared/tools/opensees, present
 # in CI, absent on a user's machine): its runtime libraries.

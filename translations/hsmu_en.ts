@@ -55,6 +55,82 @@
         <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
         <translation>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>operator</translation>
+    </message>
+    <message>
+        <source>operator at the console</source>
+        <translation>operator at the console</translation>
+    </message>
+    <message>
+        <source>emergency hold by the operator</source>
+        <translation>emergency hold by the operator</translation>
+    </message>
+    <message>
+        <source>emergency hold: %1 (%2)</source>
+        <translation>emergency hold: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>emergency hold: %1</source>
+        <translation>emergency hold: %1</translation>
+    </message>
+    <message>
+        <source>target deformation is not a finite number</source>
+        <translation>target deformation is not a finite number</translation>
+    </message>
+    <message>
+        <source>target deformation |d| = %1 exceeds the limit %2</source>
+        <translation>target deformation |d| = %1 exceeds the limit %2</translation>
+    </message>
+    <message>
+        <source>target increment |d - d_last| = %1 exceeds the limit %2</source>
+        <translation>target increment |d - d_last| = %1 exceeds the limit %2</translation>
+    </message>
+    <message>
+        <source>measured force is not a finite number</source>
+        <translation>measured force is not a finite number</translation>
+    </message>
+    <message>
+        <source>measured force |F| = %1 exceeds the limit %2</source>
+        <translation>measured force |F| = %1 exceeds the limit %2</translation>
+    </message>
+    <message>
+        <source>measured deformation is not a finite number</source>
+        <translation>measured deformation is not a finite number</translation>
+    </message>
+    <message>
+        <source>measured deformation |d| = %1 exceeds the limit %2 (+%3 % tolerance)</source>
+        <translation>measured deformation |d| = %1 exceeds the limit %2 (+%3 % tolerance)</translation>
+    </message>
+    <message>
+        <source>%1 (forced by the operator)</source>
+        <translation>%1 (forced by the operator)</translation>
+    </message>
+    <message>
+        <source>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start: the explicit integration of the updated model may diverge</source>
+        <translation>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start: the explicit integration of the updated model may diverge</translation>
+    </message>
+    <message>
+        <source>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start</source>
+        <translation>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start</translation>
+    </message>
+    <message>
+        <source>auxiliary model did not converge at deformation %1</source>
+        <translation>auxiliary model did not converge at deformation %1</translation>
+    </message>
+    <message>
+        <source>stopped by the operator</source>
+        <translation>stopped by the operator</translation>
+    </message>
+    <message>
+        <source>synthetic Kanai-Tajimi (seed %1)</source>
+        <translation>synthetic Kanai-Tajimi (seed %1)</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -1891,6 +1967,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Double-click (or Enter) to jump to the step</source>
         <translation>Double-click (or Enter) to jump to the step</translation>
     </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReplayReadout</name>
@@ -1901,6 +1981,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Value at the cursor</source>
         <translation>Value at the cursor</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>step</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>ag [m/s²]</source>
+        <translation>ag [m/s²]</translation>
     </message>
 </context>
 <context>
@@ -2284,6 +2376,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
         <translation>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</translation>
+    </message>
+    <message>
+        <source>synthetic</source>
+        <translation>synthetic</translation>
     </message>
 </context>
 <context>

@@ -55,6 +55,82 @@
         <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
         <translation>%1 es inestable para este modelo: omega_max dt = %2 supera %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s o el integrador alphaOS</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>operador</translation>
+    </message>
+    <message>
+        <source>operator at the console</source>
+        <translation>operador en la consola</translation>
+    </message>
+    <message>
+        <source>emergency hold by the operator</source>
+        <translation>retención de emergencia por el operador</translation>
+    </message>
+    <message>
+        <source>emergency hold: %1 (%2)</source>
+        <translation>retención de emergencia: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>emergency hold: %1</source>
+        <translation>retención de emergencia: %1</translation>
+    </message>
+    <message>
+        <source>target deformation is not a finite number</source>
+        <translation>la deformación objetivo no es un número finito</translation>
+    </message>
+    <message>
+        <source>target deformation |d| = %1 exceeds the limit %2</source>
+        <translation>la deformación objetivo |d| = %1 supera el límite %2</translation>
+    </message>
+    <message>
+        <source>target increment |d - d_last| = %1 exceeds the limit %2</source>
+        <translation>el incremento objetivo |d - d_anterior| = %1 supera el límite %2</translation>
+    </message>
+    <message>
+        <source>measured force is not a finite number</source>
+        <translation>la fuerza medida no es un número finito</translation>
+    </message>
+    <message>
+        <source>measured force |F| = %1 exceeds the limit %2</source>
+        <translation>la fuerza medida |F| = %1 supera el límite %2</translation>
+    </message>
+    <message>
+        <source>measured deformation is not a finite number</source>
+        <translation>la deformación medida no es un número finito</translation>
+    </message>
+    <message>
+        <source>measured deformation |d| = %1 exceeds the limit %2 (+%3 % tolerance)</source>
+        <translation>la deformación medida |d| = %1 supera el límite %2 (tolerancia +%3 %)</translation>
+    </message>
+    <message>
+        <source>%1 (forced by the operator)</source>
+        <translation>%1 (forzado por el operador)</translation>
+    </message>
+    <message>
+        <source>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start: the explicit integration of the updated model may diverge</source>
+        <translation>modelo actualizado: omega_max dt = %1 (omega_max = %2 rad/s, %3 al inicio), límite %4; K0 y amortiguamiento se mantienen del inicio: la integración explícita del modelo actualizado puede divergir</translation>
+    </message>
+    <message>
+        <source>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start</source>
+        <translation>modelo actualizado: omega_max dt = %1 (omega_max = %2 rad/s, %3 al inicio), límite %4; K0 y amortiguamiento se mantienen del inicio</translation>
+    </message>
+    <message>
+        <source>auxiliary model did not converge at deformation %1</source>
+        <translation>el modelo auxiliar no convergió en la deformación %1</translation>
+    </message>
+    <message>
+        <source>stopped by the operator</source>
+        <translation>detenido por el operador</translation>
+    </message>
+    <message>
+        <source>synthetic Kanai-Tajimi (seed %1)</source>
+        <translation>sintético Kanai-Tajimi (semilla %1)</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -1891,6 +1967,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Double-click (or Enter) to jump to the step</source>
         <translation>Doble clic (o Intro) para ir al paso</translation>
     </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReplayReadout</name>
@@ -1901,6 +1981,18 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Value at the cursor</source>
         <translation>Valor en el cursor</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>paso</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>ag [m/s²]</source>
+        <translation>ag [m/s²]</translation>
     </message>
 </context>
 <context>
@@ -2284,6 +2376,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
         <translation>OpenSees escucha: inicie primero el modelo con su `element adapter ... PORT` (su analyze debe tener al menos los pasos del ensayo). Un paso es definitivo cuando se envía el siguiente: tras una detención el ensayo no puede repetirlo.</translation>
+    </message>
+    <message>
+        <source>synthetic</source>
+        <translation>sintético</translation>
     </message>
 </context>
 <context>

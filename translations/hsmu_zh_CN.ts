@@ -55,6 +55,82 @@
         <source>%1 is unstable for this model: omega_max dt = %2 exceeds %3 (omega_max = %4 rad/s, dt = %5 s); use dt &lt;= %6 s or the alphaOS integrator</source>
         <translation>%1 对该模型不稳定：omega_max dt = %2 超过 %3（omega_max = %4 rad/s，dt = %5 s）；请使用 dt &lt;= %6 s 或 alphaOS 积分器</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <source>operator at the console</source>
+        <translation>控制台操作员</translation>
+    </message>
+    <message>
+        <source>emergency hold by the operator</source>
+        <translation>操作员触发紧急保持</translation>
+    </message>
+    <message>
+        <source>emergency hold: %1 (%2)</source>
+        <translation>紧急保持：%1（%2）</translation>
+    </message>
+    <message>
+        <source>emergency hold: %1</source>
+        <translation>紧急保持：%1</translation>
+    </message>
+    <message>
+        <source>target deformation is not a finite number</source>
+        <translation>目标变形不是有限数</translation>
+    </message>
+    <message>
+        <source>target deformation |d| = %1 exceeds the limit %2</source>
+        <translation>目标变形 |d| = %1 超过限值 %2</translation>
+    </message>
+    <message>
+        <source>target increment |d - d_last| = %1 exceeds the limit %2</source>
+        <translation>目标增量 |d - d_上一步| = %1 超过限值 %2</translation>
+    </message>
+    <message>
+        <source>measured force is not a finite number</source>
+        <translation>实测力不是有限数</translation>
+    </message>
+    <message>
+        <source>measured force |F| = %1 exceeds the limit %2</source>
+        <translation>实测力 |F| = %1 超过限值 %2</translation>
+    </message>
+    <message>
+        <source>measured deformation is not a finite number</source>
+        <translation>实测变形不是有限数</translation>
+    </message>
+    <message>
+        <source>measured deformation |d| = %1 exceeds the limit %2 (+%3 % tolerance)</source>
+        <translation>实测变形 |d| = %1 超过限值 %2（容差 +%3 %）</translation>
+    </message>
+    <message>
+        <source>%1 (forced by the operator)</source>
+        <translation>%1（由操作员强制）</translation>
+    </message>
+    <message>
+        <source>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start: the explicit integration of the updated model may diverge</source>
+        <translation>更新后的模型：omega_max dt = %1（omega_max = %2 rad/s，开始时为 %3），限值 %4；K0 和阻尼保持开始时的值：更新后模型的显式积分可能发散</translation>
+    </message>
+    <message>
+        <source>updated model: omega_max dt = %1 (omega_max = %2 rad/s, %3 at the start), limit %4; K0 and damping kept from the start</source>
+        <translation>更新后的模型：omega_max dt = %1（omega_max = %2 rad/s，开始时为 %3），限值 %4；K0 和阻尼保持开始时的值</translation>
+    </message>
+    <message>
+        <source>auxiliary model did not converge at deformation %1</source>
+        <translation>辅助模型在变形 %1 处未收敛</translation>
+    </message>
+    <message>
+        <source>stopped by the operator</source>
+        <translation>由操作员停止</translation>
+    </message>
+    <message>
+        <source>synthetic Kanai-Tajimi (seed %1)</source>
+        <translation>合成 Kanai-Tajimi（种子 %1）</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -1888,6 +1964,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Double-click (or Enter) to jump to the step</source>
         <translation>双击（或回车）跳转到该步</translation>
     </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1，%2</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReplayReadout</name>
@@ -1898,6 +1978,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Value at the cursor</source>
         <translation>光标处的值</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>时间 t [s]</translation>
+    </message>
+    <message>
+        <source>ag [m/s²]</source>
+        <translation>地面加速度 ag [m/s²]</translation>
     </message>
 </context>
 <context>
@@ -2281,6 +2373,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>
         <translation>OpenSees 监听：请先用其 `element adapter ... PORT` 启动模型（其 analyze 的步数至少为试验步数）。发送下一步后该步即为最终：暂停后试验无法重复该步。</translation>
+    </message>
+    <message>
+        <source>synthetic</source>
+        <translation>合成</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 
 #include "gui/app/AlarmText.h"
 #include "gui/app/LiveText.h"
+#include "gui/app/OperatorEvent.h"
 
 #include <QDateTime>
 #include <QHeaderView>
@@ -16,6 +17,7 @@ constexpr int kAckTimeRole = Qt::UserRole + 3;
 constexpr int kCodeRole = Qt::UserRole + 4;
 constexpr int kArgsRole = Qt::UserRole + 5;
 constexpr int kEnglishRole = Qt::UserRole + 6;
+constexpr int kEventRole = Qt::UserRole + 7; // an operator event's record text
 const QColor kCritical(198, 40, 40);
 const QColor kCriticalBackground(255, 205, 210);
 const QColor kWarning(200, 120, 0);
@@ -55,6 +57,14 @@ void AlarmList::retranslate(QTreeWidgetItem* item) {
         item->setText(Acknowledged, tr("yes, %1").arg(ackAt.toString()));
     else if (!item->data(Acknowledged, kAckRole).toBool())
         item->setText(Acknowledged, tr("no"));
+    const QVariant event = item->data(Message, kEventRole);
+    if (event.isValid()) {
+        if (const auto e = OperatorEvent::fromRecordText(event.toString().toStdString())) {
+            const QString text = e->describe();
+            item->setText(Message, text);
+            item->setToolTip(Message, text);
+        }
+    }
     const QVariant code = item->data(Message, kCodeRole);
     if (code.isValid()) {
         const QString text = AlarmText::describe(code.toString().toStdString(),
@@ -131,6 +141,12 @@ void AlarmList::addEvent(double time, int step, const QString& text) {
     add(QString::number(time, 'f', 2), QString::number(step), AlarmSeverity::Info,
         describe(AlarmKind::OperatorHold), text)
         ->setData(Kind, kKindRole, int(AlarmKind::OperatorHold));
+}
+
+void AlarmList::addEvent(const OperatorEvent& event) {
+    addEvent(event.time, event.step, event.describe());
+    topLevelItem(topLevelItemCount() - 1)
+        ->setData(Message, kEventRole, QString::fromStdString(event.recordText()));
 }
 
 QTreeWidgetItem* AlarmList::add(const QString& time, const QString& step,

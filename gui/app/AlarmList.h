@@ -11,6 +11,8 @@
 
 namespace hsmu::gui {
 
+struct OperatorEvent;
+
 class AlarmList : public QTreeWidget {
     Q_OBJECT
 public:
@@ -23,6 +25,9 @@ public:
     void addMessage(const QString& text, AlarmSeverity severity);
     /// An operator action at test time `time` [s] and step `step` (kind "operator").
     void addEvent(double time, int step, const QString& text);
+    /// An operator event, shown with its time and step and retranslated at each language
+    /// change (from its language-neutral record text).
+    void addEvent(const OperatorEvent& event);
     /// Remove every entry (a new test).
     void clearAlarms();
 

@@ -9,6 +9,9 @@ namespace hsmu::gui {
 
 AttentionBanner::AttentionBanner(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("attentionBanner"));
+    // A plain QWidget paints a style sheet's background only with WA_StyledBackground (without
+    // it the banner's white text stood on the window's grey).
+    setAttribute(Qt::WA_StyledBackground, true);
     setAutoFillBackground(true);
     setStyleSheet(QStringLiteral("#attentionBanner { background: #c62828; }"
                                  " QLabel { color: white; font-weight: bold; }"));

@@ -2,6 +2,7 @@
 
 #include "gui/PresetLibrary.h"
 #include "gui/app/AlarmList.h"
+#include "gui/app/AlarmText.h"
 #include "gui/app/AlarmPanel.h"
 #include "gui/app/AttentionBanner.h"
 #include "gui/app/ConsoleSettings.h"
@@ -425,9 +426,12 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
             m_preflight->reject(); // e.g. held from the dialog: nothing may start from it
     }
     if (!message.isEmpty()) {
-        m_status->showMessage(message, 15000);
+        // A hold's or a failure's reason from core (English, language-neutral): translated
+        // when it is one of core's fixed texts (core/util/ReasonText).
+        const QString shown = AlarmText::reason(message);
+        m_status->showMessage(shown, 15000);
         if (state == RunState::Failed)
-            m_alarms->addMessage(tr("the test cannot start: %1").arg(message),
+            m_alarms->addMessage(tr("the test cannot start: %1").arg(shown),
                                  AlarmSeverity::Critical);
     }
 }

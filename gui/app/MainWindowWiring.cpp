@@ -130,7 +130,7 @@ void MainWindow::wireController() {
             &TestController::rejectUpdate);
     connect(m_pending, &PendingUpdatesPanel::policyChosen, this, &MainWindow::onPolicyChosen);
     connect(m_controller, &TestController::operatorEvent, this,
-            [this](const OperatorEvent& e) { m_alarms->addEvent(e.time, e.step, e.describe()); });
+            [this](const OperatorEvent& e) { m_alarms->addEvent(e); });
 
     connect(m_controller, &TestController::testLoaded, this, &MainWindow::onTestLoaded);
     connect(m_controller, &TestController::recordsArrived, m_plots,

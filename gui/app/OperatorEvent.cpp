@@ -30,6 +30,30 @@ std::string OperatorEvent::recordText() const {
            "; wall=" + wallTime.toStdString();
 }
 
+std::optional<OperatorEvent> OperatorEvent::fromRecordText(const std::string& text) {
+    // "operator-event action=<key>; old=<value>; new=<value>; wall=<time>": the values may
+    // hold "; " themselves, so each field ends where the next field's key begins.
+    static const char* const kKeys[] = {"operator-event action=", "; old=", "; new=", "; wall="};
+    std::size_t at[4];
+    std::size_t from = 0;
+    for (int k = 0; k < 4; ++k) {
+        at[k] = text.find(kKeys[k], from);
+        if (at[k] == std::string::npos || (k == 0 && at[k] != 0))
+            return std::nullopt;
+        from = at[k] + std::strlen(kKeys[k]);
+    }
+    const auto field = [&](int k) {
+        const std::size_t begin = at[k] + std::strlen(kKeys[k]);
+        return text.substr(begin, (k < 3 ? at[k + 1] : text.size()) - begin);
+    };
+    OperatorEvent e;
+    e.action = field(0);
+    e.oldValue = field(1);
+    e.newValue = field(2);
+    e.wallTime = QString::fromStdString(field(3));
+    return e;
+}
+
 QString OperatorEvent::describe() const {
     const QString o = QString::fromStdString(oldValue);
     const QString n = QString::fromStdString(newValue);

@@ -13,6 +13,7 @@
 #include <QMetaType>
 #include <QString>
 
+#include <optional>
 #include <string>
 
 namespace hsmu::gui {
@@ -48,6 +49,9 @@ public:
                              std::string newValue);
     /// The record's language-neutral text (format above).
     std::string recordText() const;
+    /// The event a record's note holds (recordText()'s format; step and time are the note's
+    /// own), or nothing for any other note.
+    static std::optional<OperatorEvent> fromRecordText(const std::string& text);
     /// The operator's language, for the event list (e.g. "update #3 approved: ...").
     QString describe() const;
 };

@@ -42,6 +42,12 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     m_policy->setObjectName(QStringLiteral("approvalPolicy"));
     for (ReporterPolicy p : kPolicies)
         m_policy->addItem(describe(p), int(p));
+    // The long policies must not widen the dock at 1280x720: the box shows what fits, the
+    // list the whole texts, the tool tip the chosen one.
+    m_policy->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_policy->setMinimumContentsLength(14);
+    connect(m_policy, &QComboBox::currentIndexChanged, this,
+            [this] { m_policy->setToolTip(m_policy->currentText()); });
     m_everyN = new QSpinBox(this);
     m_everyN->setRange(1, 100000);
     connect(m_policy, &QComboBox::activated, this, [this] { emitPolicy(); });
@@ -55,13 +61,15 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
     m_tree->setAlternatingRowColors(true);
 
+    // The label above its choice: the row fits the dock at 1280x720 in every language.
     auto* policyRow = new QHBoxLayout;
     m_policyLabel = new QLabel(this);
-    policyRow->addWidget(m_policyLabel);
+    m_policyLabel->setWordWrap(true);
     policyRow->addWidget(m_policy, 1);
     policyRow->addWidget(m_everyN);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_policyLabel);
     layout->addLayout(policyRow);
     layout->addWidget(m_summary);
     layout->addWidget(m_tree, 1);
@@ -71,8 +79,12 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
 }
 
 void PendingUpdatesPanel::retranslateUi() {
-    for (int i = 0; i < m_policy->count(); ++i)
-        m_policy->setItemText(i, describe(ReporterPolicy(m_policy->itemData(i).toInt())));
+    for (int i = 0; i < m_policy->count(); ++i) {
+        const QString text = describe(ReporterPolicy(m_policy->itemData(i).toInt()));
+        m_policy->setItemText(i, text);
+        m_policy->setItemData(i, text, Qt::ToolTipRole);
+    }
+    m_policy->setToolTip(m_policy->currentText());
     m_everyN->setPrefix(tr("N = "));
     m_policyLabel->setText(tr("Apply updates:"));
     m_tree->setHeaderLabels({tr("Parameter"), tr("Current"), tr("Proposed"), tr("Change [%]")});

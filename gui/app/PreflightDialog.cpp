@@ -39,7 +39,7 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
     form->addRow(tr("Steps:"), new QLabel(QString::number(report.totalSteps), this));
     form->addRow(tr("Ground motion:"),
                  new QLabel(tr("%1, PGA %2 m/s²")
-                                .arg(QString::fromStdString(report.groundMotion))
+                                .arg(AlarmText::reason(QString::fromStdString(report.groundMotion)))
                                 .arg(QString::number(report.pga, 'f', 3)),
                             this));
     const StabilityReport& st = report.stability;

@@ -40,6 +40,15 @@ QDoubleSpinBox* spin(QWidget* parent, double lo, double hi, int decimals, const 
     return s;
 }
 
+// A form that fits a narrow dock (1280x720, long translations): a field that does not fit
+// beside its label goes below it, labels wrap.
+QFormLayout* narrowForm(QWidget* box) {
+    auto* form = new QFormLayout(box);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    return form;
+}
+
 QString limitText(double v) {
     return std::isfinite(v) && v > 0.0 ? QString::number(v, 'g', 6) : QStringLiteral("0");
 }
@@ -100,7 +109,7 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
 
 QWidget* SetupPanel::buildRunGroup() {
     auto* box = new QGroupBox(this);
-    auto* form = new QFormLayout(box);
+    auto* form = narrowForm(box);
     m_groundMotion = new QLineEdit(box);
     m_groundMotion->setObjectName(QStringLiteral("groundMotionFile"));
     auto* browse = new QPushButton(box);
@@ -163,9 +172,13 @@ QWidget* SetupPanel::buildRunGroup() {
 
 QWidget* SetupPanel::buildControllerGroup() {
     auto* box = new QGroupBox(this);
-    auto* form = new QFormLayout(box);
+    auto* form = narrowForm(box);
     m_controllerKind = new QComboBox(box);
     m_controllerKind->setObjectName(QStringLiteral("controllerKind"));
+    // The long kinds (OpenSees adapter ...) must not widen the dock: the box shows what fits
+    // (elided), the list shows the whole texts, the tool tip the chosen one.
+    m_controllerKind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_controllerKind->setMinimumContentsLength(14);
     // OpenFresco's protocols (docs/openfresco.md); dataSize and sizes come from the
     // configuration's controller section. adapter: OpenSees' adapter element (OpenSees
     // listens on HOST:PORT; a numerical substructure in an OpenSees model).
@@ -200,6 +213,7 @@ QWidget* SetupPanel::buildControllerGroup() {
     form->addRow(QString(), testLink);
     connect(m_token, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
     connect(m_controllerKind, &QComboBox::currentIndexChanged, this, [this] {
+        m_controllerKind->setToolTip(m_controllerKind->currentText());
         enableLinkFields();
         showLinkNote();
         markDirty();
@@ -210,8 +224,11 @@ QWidget* SetupPanel::buildControllerGroup() {
                                  tr("OpenFresco SimApp site"),
                                  tr("OpenFresco GenericTCP controller"),
                                  tr("OpenSees adapter element (numerical substructure)")};
-        for (int i = 0; i < m_controllerKind->count(); ++i)
+        for (int i = 0; i < m_controllerKind->count(); ++i) {
             m_controllerKind->setItemText(i, kinds[i]);
+            m_controllerKind->setItemData(i, kinds[i], Qt::ToolTipRole);
+        }
+        m_controllerKind->setToolTip(m_controllerKind->currentText());
         setLabel(form, m_controllerKind, tr("Specimens driven by:"));
         setLabel(form, m_host, tr("Host:"));
         setLabel(form, m_port, tr("Port:"));
@@ -230,7 +247,7 @@ QWidget* SetupPanel::buildControllerGroup() {
 
 QWidget* SetupPanel::buildUpdatingGroup() {
     auto* box = new QGroupBox(this);
-    auto* form = new QFormLayout(box);
+    auto* form = narrowForm(box);
     m_updating = new QCheckBox(box);
     form->addRow(m_updating);
     // One control decides when updates are applied: the Pending updates panel's.
@@ -270,7 +287,10 @@ void SetupPanel::showName() {
     m_name->setToolTip(m_name->text());
     m_groundMotion->setPlaceholderText(
         m_base.groundMotion.file.empty()
-            ? tr("built-in %1 record").arg(QString::fromStdString(m_base.groundMotion.builtin))
+            ? tr("built-in %1 record")
+                  .arg(m_base.groundMotion.builtin == "synthetic"
+                           ? tr("synthetic") // the configuration's keyword, translated
+                           : QString::fromStdString(m_base.groundMotion.builtin))
             : QString::fromStdString(m_base.groundMotion.file));
 }
 

@@ -1,6 +1,7 @@
 #include "gui/app/SiteHealthLabel.h"
 
-#include <QTimer>
+#include "gui/app/SitePoll.h"
+
 
 #include <cmath>
 
@@ -20,28 +21,23 @@ SiteHealthLabel::SiteHealthLabel(QWidget* parent) : QLabel(parent) {
     setObjectName(QStringLiteral("statusSites"));
     setFrameShape(QFrame::StyledPanel);
     setMaximumWidth(320);
-    m_timer = new QTimer(this);
-    m_timer->setInterval(250);
-    connect(m_timer, &QTimer::timeout, this, &SiteHealthLabel::refresh);
+    m_poll = new SitePoll(250, this);
+    connect(m_poll, &SitePoll::poll, this, &SiteHealthLabel::refresh);
     hide();
 }
 
 void SiteHealthLabel::setMonitor(std::shared_ptr<const SiteMonitor> monitor) {
-    m_monitor = std::move(monitor);
-    if (m_monitor)
-        m_timer->start();
-    else
-        m_timer->stop();
-    refresh();
+    m_poll->setMonitor(std::move(monitor)); // refreshes at once
 }
 
 void SiteHealthLabel::refresh() {
-    const std::vector<SiteStatus> sites = m_monitor ? m_monitor->sites() : std::vector<SiteStatus>{};
+    const SiteMonitor* monitor = m_poll->monitor();
+    const std::vector<SiteStatus> sites = monitor ? monitor->sites() : std::vector<SiteStatus>{};
     setVisible(!sites.empty());
     if (sites.empty())
         return;
     QStringList parts, tips;
-    bool alarm = m_monitor->holding();
+    bool alarm = monitor->holding();
     for (const SiteStatus& s : sites) {
         const QString name = QString::fromStdString(s.name);
         parts << name + QLatin1Char(' ') + siteHealthText(s);

@@ -12,9 +12,10 @@
 
 #include <memory>
 
-class QTimer;
 
 namespace hsmu::gui {
+
+class SitePoll;
 
 /// "0.62 ms", "down", "down (faults: 2)", "0.62 ms (faults: 1)", "-" before the first step.
 QString siteHealthText(const SiteStatus& site);
@@ -29,8 +30,7 @@ public:
     void refresh();
 
 private:
-    std::shared_ptr<const SiteMonitor> m_monitor;
-    QTimer* m_timer = nullptr;
+    SitePoll* m_poll = nullptr;
 };
 
 } // namespace hsmu::gui

@@ -1,29 +1,41 @@
 #include "gui/app/SiteHealthView.h"
 
+#include "gui/app/LiveText.h"
+#include "gui/app/SitePoll.h"
+
 #include "gui/app/SiteHealthLabel.h"
 
 #include <QHeaderView>
 #include <QTableWidget>
-#include <QTimer>
 #include <QVBoxLayout>
 
 namespace hsmu::gui {
 
-SiteHealthView::SiteHealthView(QWidget* parent) : QGroupBox(tr("Sites"), parent) {
+namespace {
+constexpr int kDefaultSiteRole = Qt::UserRole; // on the address of the row without a site
+} // namespace
+
+SiteHealthView::SiteHealthView(QWidget* parent) : QGroupBox(parent) {
     setObjectName(QStringLiteral("sitesBox"));
     auto* layout = new QVBoxLayout(this);
     m_table = new QTableWidget(0, 4, this);
     m_table->setObjectName(QStringLiteral("sitesTable"));
-    m_table->setHorizontalHeaderLabels({tr("Site"), tr("Address"), tr("Specimens"), tr("Health")});
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setMaximumHeight(130);
     layout->addWidget(m_table);
-    m_timer = new QTimer(this);
-    m_timer->setInterval(500);
-    connect(m_timer, &QTimer::timeout, this, &SiteHealthView::refresh);
+    m_poll = new SitePoll(500, this);
+    connect(m_poll, &SitePoll::poll, this, &SiteHealthView::refresh);
     hide();
+    LiveText::bind(this, [this] {
+        setTitle(tr("Sites"));
+        m_table->setHorizontalHeaderLabels(
+            {tr("Site"), tr("Address"), tr("Specimens"), tr("Health")});
+        for (int row = 0; row < m_table->rowCount(); ++row)
+            if (m_table->item(row, 1)->data(kDefaultSiteRole).toBool())
+                m_table->item(row, 1)->setText(tr("the controller above"));
+    });
 }
 
 void SiteHealthView::setConfig(const TestConfig& cfg) {
@@ -50,23 +62,21 @@ void SiteHealthView::setConfig(const TestConfig& cfg) {
     if (!cfg.sites.empty() && !rest.isEmpty())
         addRow(QString::fromLatin1(kDefaultSiteName), tr("the controller above"),
                rest.join(QStringLiteral(", ")));
+    if (!cfg.sites.empty() && !rest.isEmpty())
+        m_table->item(m_table->rowCount() - 1, 1)->setData(kDefaultSiteRole, true);
     setVisible(!cfg.sites.empty());
     refresh();
 }
 
 void SiteHealthView::setMonitor(std::shared_ptr<const SiteMonitor> monitor) {
-    m_monitor = std::move(monitor);
-    if (m_monitor)
-        m_timer->start();
-    else
-        m_timer->stop();
-    refresh();
+    m_poll->setMonitor(std::move(monitor)); // refreshes at once
 }
 
 void SiteHealthView::refresh() {
-    if (!m_monitor)
+    const SiteMonitor* monitor = m_poll->monitor();
+    if (!monitor)
         return;
-    for (const SiteStatus& s : m_monitor->sites()) {
+    for (const SiteStatus& s : monitor->sites()) {
         const QString name = QString::fromStdString(s.name);
         for (int row = 0; row < m_table->rowCount(); ++row) {
             if (m_table->item(row, 0)->text() != name)

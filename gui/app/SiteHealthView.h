@@ -14,9 +14,10 @@
 #include <memory>
 
 class QTableWidget;
-class QTimer;
 
 namespace hsmu::gui {
+
+class SitePoll;
 
 class SiteHealthView : public QGroupBox {
     Q_OBJECT
@@ -28,8 +29,7 @@ public:
 
 private:
     QTableWidget* m_table = nullptr;
-    QTimer* m_timer = nullptr;
-    std::shared_ptr<const SiteMonitor> m_monitor;
+    SitePoll* m_poll = nullptr;
 };
 
 } // namespace hsmu::gui

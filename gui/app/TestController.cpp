@@ -165,7 +165,7 @@ void TestController::emergencyHold(const QString& reason) {
     // Not before arming (Ready): nothing is driven, nothing may be held at the lab.
     if (m_test && (m_state == RunState::Running || m_state == RunState::Paused ||
                    m_state == RunState::Holding))
-        m_test->emergencyHold(reason.isEmpty() ? std::string("operator (console)")
+        m_test->emergencyHold(reason.isEmpty() ? std::string("operator at the console")
                                                : reason.toStdString());
     onWorker([reason](TestWorker* w) { w->emergencyHold(reason); });
 }

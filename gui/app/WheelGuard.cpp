@@ -4,14 +4,17 @@
 #include <QAbstractSpinBox>
 #include <QComboBox>
 #include <QEvent>
+#include <QScrollBar>
 #include <QWidget>
 
 namespace hsmu::gui {
 
 namespace {
 bool guarded(const QWidget* w) {
+    // Not scroll bars: a scroll area hands its wheel events to them, so guarding them would
+    // stop the panel from scrolling under the wheel (the very thing the guard protects).
     return qobject_cast<const QAbstractSpinBox*>(w) || qobject_cast<const QComboBox*>(w) ||
-           qobject_cast<const QAbstractSlider*>(w);
+           (qobject_cast<const QAbstractSlider*>(w) && !qobject_cast<const QScrollBar*>(w));
 }
 } // namespace
 

@@ -23,14 +23,6 @@ namespace hsmu::gui {
 
 namespace {
 
-bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names) {
-    for (int i = 1; i < argc; ++i)
-        for (const char* n : names)
-            if (std::strcmp(argv[i], n) == 0)
-                return true;
-    return false;
-}
-
 /// Replace this process with hsmu-console (next to this executable), same arguments.
 int execConsole(char** argv) {
     std::error_code ec;
@@ -50,6 +42,25 @@ int execConsole(char** argv) {
 }
 
 } // namespace
+
+bool CliLauncher::hasArgument(int argc, char** argv, std::initializer_list<const char*> names) {
+    for (int i = 1; i < argc; ++i)
+        for (const char* n : names)
+            if (std::strcmp(argv[i], n) == 0)
+                return true;
+    return false;
+}
+
+int CliLauncher::guarded(const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const std::exception& e) { // last line of defence: a message, never an abort
+        QTextStream(stderr) << "hsmu: internal error: " << e.what() << Qt::endl;
+    } catch (...) {
+        QTextStream(stderr) << "hsmu: internal error" << Qt::endl;
+    }
+    return 1;
+}
 
 void CliLauncher::describeApplication() {
     QCoreApplication::setApplicationName(QStringLiteral("hsmu"));
@@ -82,18 +93,14 @@ int CliLauncher::runHeadless(const QStringList& arguments) {
 }
 
 int CliLauncher::main(int argc, char** argv) {
-    try {
+    return guarded([argc, argv] {
         if (!headlessCommand(argc, argv))
             return execConsole(argv);
-        QCoreApplication app(argc, argv); // no windowing system needed
+        int count = argc; // QCoreApplication keeps a reference to it
+        QCoreApplication app(count, argv); // no windowing system needed
         describeApplication();
         return runHeadless(app.arguments());
-    } catch (const std::exception& e) { // last line of defence: a message, never an abort
-        QTextStream(stderr) << "hsmu: internal error: " << e.what() << Qt::endl;
-    } catch (...) {
-        QTextStream(stderr) << "hsmu: internal error" << Qt::endl;
-    }
-    return 1;
+    });
 }
 
 } // namespace hsmu::gui

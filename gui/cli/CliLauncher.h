@@ -11,6 +11,9 @@
 
 #include <QStringList>
 
+#include <functional>
+#include <initializer_list>
+
 namespace hsmu::gui {
 
 class CliLauncher {
@@ -22,6 +25,12 @@ public:
     static int runHeadless(const QStringList& arguments);
     /// Application name, organisation, version and the user's language (both executables).
     static void describeApplication();
+    /// Whether any argument after the program is one of names (both executables).
+    static bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names);
+    /// body()'s exit code; an exception escaping it is the last line of defence: a message
+    /// on stderr ("hsmu: internal error: ...") and exit code 1, never an abort (both
+    /// executables' main).
+    static int guarded(const std::function<int()>& body);
 };
 
 } // namespace hsmu::gui

@@ -1,5 +1,6 @@
 #include "gui/plots/HistoryPlot.h"
 
+#include "gui/app/LiveText.h"
 #include "gui/plots/PlotSelection.h"
 #include "gui/plots/PlotStyle.h"
 
@@ -7,17 +8,42 @@ namespace hsmu::gui {
 
 HistoryPlot::HistoryPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
-    xAxis->setLabel(tr("Time [s]"));
+    xAxis->ticker()->setTickCount(4); // small cells at 1280x720: time labels must not touch
     axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     m_thresholdLine =
         PlotStyle::addLine(*this, Qt::Horizontal, QPen(QColor(200, 30, 30), 1.2, Qt::DashLine));
     m_cursor = PlotStyle::addLine(*this, Qt::Vertical, QPen(QColor(30, 30, 30), 1.5));
+    LiveText::bind(this, [this] { retranslate(); });
+}
+
+void HistoryPlot::retranslate() {
+    xAxis->setLabel(tr("Time [s]"));
+    if (m_texts)
+        m_texts();
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+void HistoryPlot::setTexts(std::function<void()> texts) {
+    m_texts = std::move(texts);
+    m_texts();
+    replot();
+}
+
+void HistoryPlot::relabel(const QString& title, const QString& yLabel, const QStringList& names,
+                          const QString& rightLabel) {
+    PlotStyle::setTitle(*this, title);
+    yAxis->setLabel(yLabel);
+    if (yAxis2->visible())
+        yAxis2->setLabel(rightLabel);
+    for (int i = 0; i < names.size() && i < graphCount(); ++i)
+        graph(i)->setName(names[i]);
 }
 
 void HistoryPlot::setChannels(const QString& title, const QString& yLabel,
                               std::vector<Channel> channels, const QString& rightLabel) {
     clearGraphs();
     m_graphs.clear();
+    m_texts = nullptr;
     m_channels = std::move(channels);
     bool right = false;
     for (std::size_t i = 0; i < m_channels.size(); ++i) {
@@ -44,19 +70,27 @@ void HistoryPlot::showDisplacements(const RunLayout& layout) {
             {QString::fromStdString(layout.dofNames[i]),
              [index](const StepRecord& r) { return index < r.u.size() ? r.u[index] : qQNaN(); }});
     }
-    setChannels(tr("Displacement history"), tr("Displacement [m]"), std::move(channels));
+    setChannels(QString(), QString(), std::move(channels));
+    setTexts([this] { relabel(tr("Displacement history"), tr("Displacement [m]"), {}); });
 }
 
 void HistoryPlot::showGroundAcceleration() {
-    setChannels(
-        tr("Ground motion"), tr("Ground acceleration [m/s²]"),
-        {{tr("Ground acceleration"), [](const StepRecord& r) { return r.groundAcceleration; }}});
+    setChannels(QString(), QString(),
+                {{QString(), [](const StepRecord& r) { return r.groundAcceleration; }}});
+    setTexts([this] {
+        relabel(tr("Ground motion"), tr("Ground acceleration [m/s²]"),
+                {tr("Ground acceleration")});
+    });
 }
 
 void HistoryPlot::showGroundMotion(const QVector<double>& time,
                                    const QVector<double>& acceleration) {
-    setChannels(tr("Ground motion"), tr("Ground acceleration [m/s²]"), {});
-    addSeries(tr("Ground acceleration"), time, acceleration);
+    setChannels(QString(), QString(), {});
+    addSeries(QString(), time, acceleration);
+    setTexts([this] {
+        relabel(tr("Ground motion"), tr("Ground acceleration [m/s²]"),
+                {tr("Ground acceleration")});
+    });
 }
 
 void HistoryPlot::showForces(const RunLayout& layout, const std::vector<int>& elements) {
@@ -68,16 +102,18 @@ void HistoryPlot::showForces(const RunLayout& layout, const std::vector<int>& el
                  return i < r.elements.size() ? r.elements[i].force : qQNaN();
              }});
     }
+    setChannels(QString(), QString(), std::move(channels));
     if (elements.empty()) {
-        setChannels(tr("Force history"), tr("Force"), {});
+        setTexts([this] { relabel(tr("Force history"), tr("Force"), {}); });
         return;
     }
     const ElementUnits& units = layout.elements[std::size_t(elements.front())].units;
     const QString unit = QString::fromStdString(units.force);
     const bool rotational = units.deformation == "rad";
-    setChannels(rotational ? tr("Moment history") : tr("Force history"),
-                rotational ? tr("Moment [%1]").arg(unit) : tr("Force [%1]").arg(unit),
-                std::move(channels));
+    setTexts([this, unit, rotational] {
+        relabel(rotational ? tr("Moment history") : tr("Force history"),
+                rotational ? tr("Moment [%1]").arg(unit) : tr("Force [%1]").arg(unit), {});
+    });
 }
 
 void HistoryPlot::showTracking(const RunLayout& layout, int specimen) {
@@ -85,35 +121,41 @@ void HistoryPlot::showTracking(const RunLayout& layout, int specimen) {
     const ElementInfo& e = layout.elements[i];
     const QString unit = QString::fromStdString(e.units.deformation);
     const bool rotational = e.units.deformation == "rad";
-    setChannels(tr("Tracking of %1").arg(QString::fromStdString(e.name)),
-                rotational ? tr("Rotation [%1]").arg(unit) : tr("Deformation [%1]").arg(unit),
-                {{tr("commanded"),
+    setChannels(QString(), QString(),
+                {{QString(),
                   [i](const StepRecord& r) {
                       return i < r.elements.size() ? r.elements[i].commanded : qQNaN();
                   }},
-                 {tr("measured"),
+                 {QString(),
                   [i](const StepRecord& r) {
                       return i < r.elements.size() ? r.elements[i].deformation : qQNaN();
                   }},
-                 {tr("actuator command"),
+                 {QString(),
                   [i](const StepRecord& r) {
                       return i < r.elements.size() ? r.elements[i].actuator.commanded : qQNaN();
                   }},
-                 {tr("held ticks"),
+                 {QString(),
                   [i](const StepRecord& r) {
                       const std::int64_t t =
                           i < r.elements.size() ? r.elements[i].actuator.heldTicks : -1;
                       return t < 0 ? qQNaN() : double(t);
                   },
-                  true}},
+                  true}});
+    const QString name = QString::fromStdString(e.name);
+    setTexts([this, name, unit, rotational] {
+        relabel(tr("Tracking of %1").arg(name),
+                rotational ? tr("Rotation [%1]").arg(unit) : tr("Deformation [%1]").arg(unit),
+                {tr("commanded"), tr("measured"), tr("actuator command"), tr("held ticks")},
                 tr("Held ticks [-]"));
+    });
 }
 
 void HistoryPlot::showFitError(double threshold) {
-    setChannels(tr("Inspector fit error"), tr("Fit error [-]"),
-                {{tr("fit error"), [](const StepRecord& r) {
-                      return r.hasUpdating ? r.updating.fitError : qQNaN();
-                  }}});
+    setChannels(QString(), QString(), {{QString(), [](const StepRecord& r) {
+                                             return r.hasUpdating ? r.updating.fitError : qQNaN();
+                                         }}});
+    setTexts(
+        [this] { relabel(tr("Inspector fit error"), tr("Fit error [-]"), {tr("fit error")}); });
     setThreshold(threshold);
 }
 

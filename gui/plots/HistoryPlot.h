@@ -65,10 +65,20 @@ public:
 
     void appendRecords(const std::vector<StepRecord>& records);
     void clearData();
+    /// The texts of the show*() methods again in the current language (also done on each
+    /// QEvent::LanguageChange; texts given to setChannels() / addSeries() stay as given).
+    void retranslate();
     /// Rescale to the data (with a margin) and replot (queued).
     void refresh();
 
 private:
+    /// Title, y label(s) and the names of the first graphs, without touching their data.
+    void relabel(const QString& title, const QString& yLabel, const QStringList& names,
+                 const QString& rightLabel = QString());
+    /// Keep texts() (tr() calls) for retranslate() and apply it now.
+    void setTexts(std::function<void()> texts);
+
+    std::function<void()> m_texts; ///< the current show*()'s texts, or empty
     std::vector<Channel> m_channels;
     std::vector<QCPGraph*> m_graphs;
     double m_threshold = qQNaN();

@@ -1,5 +1,6 @@
 #include "gui/plots/HysteresisPlot.h"
 
+#include "gui/app/LiveText.h"
 #include "gui/plots/PlotSelection.h"
 #include "gui/plots/PlotStyle.h"
 
@@ -9,9 +10,18 @@ namespace hsmu::gui {
 
 HysteresisPlot::HysteresisPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
-    xAxis->setLabel(tr("Deformation"));
     xAxis->ticker()->setTickCount(5); // rotations print long (-0.015): fewer labels
-    yAxis->setLabel(tr("Force"));
+    LiveText::bind(this, [this] { retranslate(); });
+}
+
+void HysteresisPlot::retranslate() {
+    if (m_texts.empty()) {
+        xAxis->setLabel(tr("Deformation"));
+        yAxis->setLabel(tr("Force"));
+    }
+    for (const auto& texts : m_texts)
+        texts();
+    replot(QCustomPlot::rpQueuedReplot);
 }
 
 std::vector<int> HysteresisPlot::specimenWithTwins(const RunLayout& layout) {
@@ -40,24 +50,33 @@ std::vector<int> HysteresisPlot::specimenWithTwins(const RunLayout& layout) {
 void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int>& elements) {
     clearPlottables();
     m_series.clear();
+    m_texts.clear();
     for (std::size_t k = 0; k < elements.size(); ++k) {
         const ElementInfo& e = layout.elements[std::size_t(elements[k])];
         auto* curve = new QCPCurve(xAxis, yAxis);
         const QString name = QString::fromStdString(e.name);
-        curve->setName(e.experimental ? tr("%1 (specimen, measured)").arg(name)
-                                      : tr("%1 (numerical)").arg(name));
+        const bool experimental = e.experimental;
+        m_texts.push_back([this, curve, name, experimental] {
+            curve->setName(experimental ? tr("%1 (specimen, measured)").arg(name)
+                                        : tr("%1 (numerical)").arg(name));
+        });
         curve->setPen(PlotStyle::seriesPen(int(k)));
         curve->setAntialiased(false); // thousands of segments per live redraw
         m_series.push_back({elements[k], curve, false});
     }
     if (!elements.empty()) {
         const ElementInfo& first = layout.elements[std::size_t(elements.front())];
-        setAxes(elements.size() == 1
-                    ? tr("Hysteresis of %1").arg(QString::fromStdString(first.name))
-                    : tr("Hysteresis: specimen and numerical twins"),
-                QString::fromStdString(first.units.deformation),
-                QString::fromStdString(first.units.force));
+        const QString name = QString::fromStdString(first.name);
+        const QString deformation = QString::fromStdString(first.units.deformation);
+        const QString force = QString::fromStdString(first.units.force);
+        const bool one = elements.size() == 1;
+        m_texts.push_back([this, name, deformation, force, one] {
+            setAxes(one ? tr("Hysteresis of %1").arg(name)
+                        : tr("Hysteresis: specimen and numerical twins"),
+                    deformation, force);
+        });
     }
+    retranslate();
     legend->setVisible(!m_series.empty());
     replot();
 }
@@ -69,8 +88,10 @@ void HysteresisPlot::addAuxiliaryModel(const RunLayout& layout) {
         if (layout.elements[i].name != layout.updating->specimen)
             continue;
         auto* curve = new QCPCurve(xAxis, yAxis);
-        curve->setName(
-            tr("auxiliary model (%1)").arg(QString::fromStdString(layout.updating->method)));
+        const QString method = QString::fromStdString(layout.updating->method);
+        m_texts.push_back(
+            [this, curve, method] { curve->setName(tr("auxiliary model (%1)").arg(method)); });
+        m_texts.back()();
         QPen pen = PlotStyle::seriesPen(int(m_series.size()));
         pen.setStyle(Qt::DashLine);
         curve->setPen(pen);

@@ -12,6 +12,7 @@
 
 #include <qcustomplot.h>
 
+#include <functional>
 #include <vector>
 
 namespace hsmu::gui {
@@ -43,8 +44,12 @@ public:
     void clearData();
     /// Rescale to the data (with a margin) and replot (queued: at most once per frame).
     void refresh();
+    /// The texts of showElements() / addAuxiliaryModel() again in the current language (also
+    /// done on each QEvent::LanguageChange), the curves' data untouched.
+    void retranslate();
 
 private:
+    std::vector<std::function<void()>> m_texts; ///< tr() texts of the shown elements
     struct Series {
         int element = 0;
         QCPCurve* curve = nullptr;

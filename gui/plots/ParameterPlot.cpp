@@ -1,5 +1,6 @@
 #include "gui/plots/ParameterPlot.h"
 
+#include "gui/app/LiveText.h"
 #include "gui/plots/PlotStyle.h"
 
 #include <algorithm>
@@ -9,8 +10,8 @@ namespace hsmu::gui {
 
 ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
-    xAxis->setLabel(tr("Time [s]"));
     yAxis->ticker()->setTickCount(3); // small cells: few, readable value labels
+    xAxis->ticker()->setTickCount(3); // "12.515 17.5" ran together at 1280x720
     axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
 
     const QPen valuePen = PlotStyle::seriesPen(0);
@@ -26,14 +27,11 @@ ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     m_upper->setPen(QPen(edge, 0));
     m_upper->setBrush(band);
     m_upper->setChannelFillGraph(m_lower);
-    m_upper->setName(tr("± %1σ").arg(kBandSigmas));
     m_value = addGraph(xAxis, yAxis);
     m_value->setPen(valuePen);
-    m_value->setName(tr("estimate"));
     m_true = addGraph(xAxis, yAxis);
     QPen truePen(QColor(60, 60, 60), 1.2, Qt::DashLine);
     m_true->setPen(truePen);
-    m_true->setName(tr("true value"));
     m_true->removeFromLegend();
     const QPen boundPen(QColor(200, 30, 30), 1.0, Qt::DotLine);
     m_lowerBound = PlotStyle::addLine(*this, Qt::Horizontal, boundPen);
@@ -42,6 +40,13 @@ ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     QFont small = font();
     small.setPointSizeF(std::max(6.0, small.pointSizeF() - 1.5));
     legend->setFont(small);
+    LiveText::bind(this, [this] {
+        xAxis->setLabel(tr("Time [s]"));
+        m_upper->setName(tr("± %1σ").arg(kBandSigmas));
+        m_value->setName(tr("estimate"));
+        m_true->setName(tr("true value"));
+        replot(QCustomPlot::rpQueuedReplot);
+    });
 }
 
 void ParameterPlot::showParameter(const QString& name, int index) {

@@ -21,7 +21,66 @@ void padRange(QCPAxis* axis) {
     axis->setRange(r.lower - 0.05 * span, r.upper + 0.05 * span);
 }
 
+const char* fullLabelKey(const QCPAxis& axis) {
+    switch (axis.axisType()) {
+    case QCPAxis::atLeft: return "hsmuLabelLeft";
+    case QCPAxis::atRight: return "hsmuLabelRight";
+    case QCPAxis::atTop: return "hsmuLabelTop";
+    case QCPAxis::atBottom: break;
+    }
+    return "hsmuLabelBottom";
+}
+
+// An axis label longer than its axis (a long translation along a short plot) is cut with
+// "..." instead of being clipped at both ends; the full label is kept (PlotStyle::axisLabel)
+// and goes to the plot's tool tip. A label set since the last replot is the new full label.
+void elideAxisLabel(QCustomPlot& plot, QCPAxis& axis, QStringList& cut) {
+    const char* fullKey = fullLabelKey(axis);
+    const QByteArray shownKey = QByteArray(fullKey) + "Shown";
+    const QString current = axis.label();
+    if (current != plot.property(shownKey.constData()).toString())
+        plot.setProperty(fullKey, current);
+    const QString full = plot.property(fullKey).toString();
+    const int length = PlotStyle::labelRoom(plot, axis);
+    const QString shown = QFontMetrics(axis.labelFont())
+                              .elidedText(full, Qt::ElideRight, std::max(30, length - 4));
+    plot.setProperty(shownKey.constData(), shown);
+    if (shown != current)
+        axis.setLabel(shown);
+    if (shown != full)
+        cut << full;
+}
+
+// The plot's tool tip: the whole texts of a cut title and of cut axis labels.
+void showCutTexts(QCustomPlot& plot) {
+    QStringList tip = plot.property("hsmuCutLabels").toStringList();
+    const QString title = plot.property("hsmuCutTitle").toString();
+    if (!title.isEmpty())
+        tip.prepend(title);
+    plot.setToolTip(tip.join(QLatin1Char('\n')));
+}
+
 } // namespace
+
+int PlotStyle::labelRoom(const QCustomPlot& plot, const QCPAxis& axis) {
+    // A label is centred on its axis and may reach into the margins (title, tick labels)
+    // but not past the plot's edges.
+    const QRect r = plot.axisRect()->rect();
+    if (axis.orientation() == Qt::Vertical) {
+        const int c = r.center().y();
+        return 2 * std::min(c, plot.height() - c);
+    }
+    const int c = r.center().x();
+    return 2 * std::min(c, plot.width() - c);
+}
+
+QString PlotStyle::axisLabel(const QCustomPlot& plot, const QCPAxis& axis) {
+    const QByteArray shownKey = QByteArray(fullLabelKey(axis)) + "Shown";
+    // Not yet drawn, or set again since: the label itself.
+    if (axis.label() != plot.property(shownKey.constData()).toString())
+        return axis.label();
+    return plot.property(fullLabelKey(axis)).toString();
+}
 
 void PlotStyle::apply(QCustomPlot& plot) {
     plot.setBackground(Qt::white);
@@ -45,6 +104,16 @@ void PlotStyle::apply(QCustomPlot& plot) {
         axis->grid()->setZeroLinePen(QPen(QColor(150, 150, 150), 0));
     }
     plot.setMinimumSize(240, 180);
+    // After the layout step of each replot (the axis rect as it will be drawn; a cut label
+    // keeps its thickness, so the layout stays valid).
+    QObject::connect(&plot, &QCustomPlot::afterLayout, &plot, [&plot] {
+        QStringList cut;
+        for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
+            if (axis->visible())
+                elideAxisLabel(plot, *axis, cut);
+        plot.setProperty("hsmuCutLabels", cut);
+        showCutTexts(plot);
+    });
     PlotTools::attach(plot); // cursor read-out, zoom / pan, autoscale, channels, CSV export
 }
 
@@ -75,7 +144,8 @@ void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
                                   .elidedText(full, Qt::ElideRight, std::max(40, plot.width() - 12));
         if (element->text() != shown)
             element->setText(shown);
-        plot.setToolTip(shown == full ? QString() : full);
+        plot.setProperty("hsmuCutTitle", shown == full ? QString() : full);
+        showCutTexts(plot);
     });
 }
 

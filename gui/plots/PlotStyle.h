@@ -18,6 +18,11 @@ public:
     static void apply(QCustomPlot& plot);
     /// Pen of series number i (0: the reference series, drawn thicker).
     static QPen seriesPen(int i);
+    /// An axis' whole label: apply()'s plots cut a label longer than its axis with "..." at
+    /// each replot (the full labels in the plot's tool tip); this gives the label as set.
+    static QString axisLabel(const QCustomPlot& plot, const QCPAxis& axis);
+    /// The room [px] a label of axis has along it: centred on the axis, up to the plot's edges.
+    static int labelRoom(const QCustomPlot& plot, const QCPAxis& axis);
     /// Set (or create) the title row above the axis rect.
     static void setTitle(QCustomPlot& plot, const QString& title);
     /// rescaleAxes() with a 5 % margin on each side; a flat range gets a unit span; visible

@@ -2,6 +2,9 @@
 
 #include "core/record/RecordData.h"
 #include "gui/app/AlarmList.h"
+#include "gui/app/AlarmText.h"
+#include "gui/app/LiveText.h"
+#include "gui/app/OperatorEvent.h"
 #include "gui/plots/PlotExporter.h"
 
 #include <QDir>
@@ -33,40 +36,55 @@ ReplayEventList::ReplayEventList(const RecordData& data, QWidget* parent)
     setRootIsDecorated(false);
     setAlternatingRowColors(true);
     setColumnCount(ColumnCount);
-    setHeaderLabels({tr("Time [s]"), tr("Step"), tr("Kind"), tr("Event, alarm or note")});
     header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     header()->setSectionResizeMode(Text, QHeaderView::Stretch);
     header()->setStretchLastSection(false);
-    struct Entry {
-        double time;
-        int step;
-        QString kind, text;
-    };
-    std::vector<Entry> entries;
-    for (const Alarm& a : data.alarms)
-        entries.push_back({a.time, a.step,
-                           AlarmList::describe(a.severity) + QStringLiteral(", ") +
-                               AlarmList::describe(a.kind),
-                           q(a.message)});
-    for (const RecordNote& n : data.notes) {
-        const bool event = n.text.rfind("operator-event ", 0) == 0;
-        entries.push_back({n.time, n.step, event ? tr("operator") : tr("note"), q(n.text)});
-    }
+    // Entries by step: alarms (index >= 0 into data.alarms) and notes (index < 0: ~note).
+    std::vector<std::pair<int, int>> entries; // (step, index)
+    for (std::size_t i = 0; i < data.alarms.size(); ++i)
+        entries.emplace_back(data.alarms[i].step, int(i));
+    for (std::size_t i = 0; i < data.notes.size(); ++i)
+        entries.emplace_back(data.notes[i].step, ~int(i));
     std::stable_sort(entries.begin(), entries.end(),
-                     [](const Entry& a, const Entry& b) { return a.step < b.step; });
-    for (const Entry& e : entries) {
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [step, index] : entries) {
         auto* item = new QTreeWidgetItem(this);
-        item->setText(Time, QString::number(e.time, 'f', 3));
-        item->setText(Step, QString::number(e.step));
-        item->setText(Kind, e.kind);
-        item->setText(Text, e.text);
-        item->setToolTip(Text, e.text);
-        item->setData(Step, Qt::UserRole, e.step);
+        const double time = index >= 0 ? data.alarms[std::size_t(index)].time
+                                       : data.notes[std::size_t(~index)].time;
+        item->setText(Time, QString::number(time, 'f', 3));
+        item->setText(Step, QString::number(step));
+        item->setData(Step, Qt::UserRole, step);
+        item->setData(Text, Qt::UserRole, index);
     }
-    setToolTip(tr("Double-click (or Enter) to jump to the step"));
+    // The record is language-neutral: every text is made in the current language, again at
+    // each language change (core's texts from their codes, operator events from their keys).
+    LiveText::bind(this, [this] {
+        setHeaderLabels({tr("Time [s]"), tr("Step"), tr("Kind"), tr("Event, alarm or note")});
+        setToolTip(tr("Double-click (or Enter) to jump to the step"));
+        for (int i = 0; i < topLevelItemCount(); ++i)
+            retranslate(topLevelItem(i));
+    });
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
         emit jumpTo(rowsThrough(m_data, item->data(Step, Qt::UserRole).toInt()));
     });
+}
+
+void ReplayEventList::retranslate(QTreeWidgetItem* item) {
+    const int index = item->data(Text, Qt::UserRole).toInt();
+    QString kind, text;
+    if (index >= 0) {
+        const Alarm& a = m_data.alarms[std::size_t(index)];
+        kind = tr("%1, %2").arg(AlarmList::describe(a.severity), AlarmList::describe(a.kind));
+        text = AlarmText::describe(a.code, {}, q(a.message));
+    } else {
+        const RecordNote& n = m_data.notes[std::size_t(~index)];
+        const auto event = OperatorEvent::fromRecordText(n.text);
+        kind = event ? tr("operator") : tr("note");
+        text = event ? event->describe() : q(n.text);
+    }
+    item->setText(Kind, kind);
+    item->setText(Text, text);
+    item->setToolTip(Text, text);
 }
 
 int ReplayEventList::rowsThrough(const RecordData& data, int step) {
@@ -165,14 +183,24 @@ ReplayReadout::ReplayReadout(const RecordData& data, QWidget* parent)
     const QStringList names = ReplayExport::columns(data);
     setColumnCount(2);
     setRowCount(int(names.size()));
-    setHorizontalHeaderLabels({tr("Quantity"), tr("Value at the cursor")});
     verticalHeader()->hide();
     horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     for (int i = 0; i < names.size(); ++i) {
-        setItem(i, 0, new QTableWidgetItem(names[i]));
+        auto* name = new QTableWidgetItem(names[i]);
+        name->setData(Qt::UserRole, names[i]); // the CSV column's (language-neutral) name
+        setItem(i, 0, name);
         setItem(i, 1, new QTableWidgetItem);
     }
+    LiveText::bind(this, [this] {
+        setHorizontalHeaderLabels({tr("Quantity"), tr("Value at the cursor")});
+        // The first three columns have words; the rest are symbols with names and units.
+        const QString shown[] = {tr("step"), tr("t [s]"), tr("ag [m/s²]")};
+        for (int i = 0; i < 3 && i < rowCount(); ++i) {
+            item(i, 0)->setText(shown[i]);
+            item(i, 0)->setToolTip(item(i, 0)->data(Qt::UserRole).toString());
+        }
+    });
 }
 
 void ReplayReadout::showRow(int row) {
@@ -184,7 +212,7 @@ void ReplayReadout::showRow(int row) {
 
 QString ReplayReadout::value(const QString& name) const {
     for (int i = 0; i < rowCount(); ++i)
-        if (item(i, 0)->text() == name)
+        if (item(i, 0)->data(Qt::UserRole).toString() == name)
             return item(i, 1)->text();
     return {};
 }

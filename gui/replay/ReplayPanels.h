@@ -35,6 +35,8 @@ signals:
     void jumpTo(int rowsShown);
 
 private:
+    /// Kind and text of an entry in the current language.
+    void retranslate(QTreeWidgetItem* item);
     const RecordData& m_data;
 };
 

@@ -1,6 +1,7 @@
 #include "gui/replay/ReplayWindow.h"
 
 #include "core/record/RecordReader.h"
+#include "gui/app/LiveText.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/replay/RecordPlayback.h"
 #include "gui/replay/Reidentification.h"
@@ -123,8 +124,9 @@ ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString
       m_path(path) {
     setWindowFlag(Qt::Window);
     const RecordData& d = m_playback->data();
-    setWindowTitle(tr("HSMU Replay - %1 (%2)")
-                       .arg(QString::fromStdString(d.meta.configName), QFileInfo(path).fileName()));
+    live([this, name = QString::fromStdString(d.meta.configName), file = QFileInfo(path).fileName()] {
+        setWindowTitle(tr("HSMU Replay - %1 (%2)").arg(name, file));
+    });
 
     m_panel = new LivePlotsPanel(this);
     m_panel->configure(d.layout, PlotReferences::ofConfigurationJson(d.meta.configuration));
@@ -134,24 +136,31 @@ ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString
                         d.groundAcceleration.data() + d.groundAcceleration.size()));
     setCentralWidget(m_panel);
 
-    auto* bar = addToolBar(tr("Replay"));
+    auto* bar = addToolBar(QString());
     bar->setObjectName(QStringLiteral("replayToolBar"));
-    m_playAction = bar->addAction(tr("Play"));
+    live([bar] { bar->setWindowTitle(tr("Replay")); });
+    m_playAction = bar->addAction(QString());
     m_playAction->setShortcut(Qt::Key_Space);
     connect(m_playAction, &QAction::triggered, this, [this] { isPlaying() ? pause() : play(); });
-    bar->addWidget(new QLabel(tr(" Speed "), bar));
+    auto* speedLabel = new QLabel(bar);
+    bar->addWidget(speedLabel);
     m_speed = new QComboBox(bar);
     for (const double s : {0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 50.0})
-        m_speed->addItem(tr("%1 x").arg(s), s);
+        m_speed->addItem(QString(), s);
     m_speed->setCurrentIndex(2);
-    m_speed->setToolTip(tr("Test seconds per wall second"));
+    live([this, speedLabel] {
+        speedLabel->setText(tr(" Speed "));
+        for (int i = 0; i < m_speed->count(); ++i)
+            m_speed->setItemText(i, tr("%1 x").arg(m_speed->itemData(i).toDouble()));
+        m_speed->setToolTip(tr("Test seconds per wall second"));
+    });
     connect(m_speed, &QComboBox::currentIndexChanged, this,
             [this](int i) { setSpeed(m_speed->itemData(i).toDouble()); });
     bar->addWidget(m_speed);
     m_slider = new QSlider(Qt::Horizontal, bar);
     m_slider->setRange(0, m_playback->rows());
     m_slider->setMinimumWidth(300);
-    m_slider->setToolTip(tr("Scrub through the record"));
+    live([this] { m_slider->setToolTip(tr("Scrub through the record")); });
     connect(m_slider, &QSlider::sliderMoved, this, &ReplayWindow::seek);
     connect(m_slider, &QSlider::actionTriggered, this, [this](int action) {
         if (action != QAbstractSlider::SliderMove) // page / step clicks and keys
@@ -162,16 +171,21 @@ ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString
     m_position->setMinimumWidth(260);
     bar->addWidget(m_position);
     bar->addSeparator();
-    m_reidentifyAction = bar->addAction(tr("Re-identify..."));
-    m_reidentifyAction->setToolTip(
-        tr("Identify the specimen again with other settings and overlay the parameter history"));
+    m_reidentifyAction = bar->addAction(QString());
+    live([this] {
+        m_reidentifyAction->setText(tr("Re-identify..."));
+        m_reidentifyAction->setToolTip(tr(
+            "Identify the specimen again with other settings and overlay the parameter history"));
+    });
     m_reidentifyAction->setEnabled(d.layout.updating.has_value()); // else no parameter plot
     connect(m_reidentifyAction, &QAction::triggered, this, &ReplayWindow::reidentifyWithDialog);
     m_busy = new QProgressBar(bar);
     m_busy->setRange(0, 0); // busy indicator
     m_busy->setMaximumWidth(120);
-    m_busy->setFormat(tr("identifying"));
-    m_busy->setToolTip(tr("Re-identifying the specimen"));
+    live([this] {
+        m_busy->setFormat(tr("identifying"));
+        m_busy->setToolTip(tr("Re-identifying the specimen"));
+    });
     m_busyAction = bar->addWidget(m_busy);
     m_busyAction->setVisible(false);
 
@@ -179,6 +193,11 @@ ReplayWindow::ReplayWindow(std::shared_ptr<const RecordData> data, const QString
     m_timer->setInterval(kTickMs);
     connect(m_timer, &QTimer::timeout, this, &ReplayWindow::tick);
     buildPanelsAndMenus();
+    LiveText::bind(this, [this] {
+        for (const auto& texts : m_texts)
+            texts();
+        updateControls();
+    });
     resize(1280, 720);
     seek(1); // the initial state
 }
@@ -315,27 +334,29 @@ void ReplayWindow::buildPanelsAndMenus() {
         pause();
         seek(rows);
     });
-    auto* events = new QDockWidget(tr("Events, alarms and notes"), this);
+    auto* events = new QDockWidget(this);
+    live([events] { events->setWindowTitle(tr("Events, alarms and notes")); });
     events->setObjectName(QStringLiteral("replayEventsDock"));
     events->setWidget(m_events);
     addDockWidget(Qt::BottomDockWidgetArea, events);
     m_readout = new ReplayReadout(d, this);
-    auto* readout = new QDockWidget(tr("Values at the cursor"), this);
+    auto* readout = new QDockWidget(this);
+    live([readout] { readout->setWindowTitle(tr("Values at the cursor")); });
     readout->setObjectName(QStringLiteral("replayReadoutDock"));
     readout->setWidget(m_readout);
     addDockWidget(Qt::RightDockWidgetArea, readout);
     connect(this, &ReplayWindow::positionChanged, m_readout,
             [this](int shown) { m_readout->showRow(shown - 1); });
 
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("Export time window as &CSV..."), this, [this] {
+    QMenu* file = menuBar()->addMenu(QString());
+    QAction* csv = file->addAction(QString(), this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export time window"),
                                                           QString(), tr("CSV files (*.csv)"));
         QString error;
         if (!path.isEmpty() && !exportWindowCsv(path, &error))
             QMessageBox::warning(this, tr("Export time window"), error);
     });
-    file->addAction(tr("Export &plots (PNG, SVG or PDF)..."), this, [this] {
+    QAction* plots = file->addAction(QString(), this, [this] {
         QString filter;
         const QString base = QFileDialog::getSaveFileName(
             this, tr("Export plots"), QString(),
@@ -353,28 +374,45 @@ void ReplayWindow::buildPanelsAndMenus() {
             QMessageBox::warning(this, tr("Export plots"), errors.join(QLatin1Char('\n')));
     });
     file->addSeparator();
-    QAction* close = file->addAction(tr("&Close"), this, &QWidget::close);
+    QAction* close = file->addAction(QString(), this, &QWidget::close);
     close->setObjectName(QStringLiteral("closeReplay"));
     close->setShortcuts({QKeySequence::Close, QKeySequence(Qt::CTRL | Qt::Key_W)});
-    QMenu* playback = menuBar()->addMenu(tr("&Playback"));
+    QMenu* playback = menuBar()->addMenu(QString());
     playback->addAction(m_playAction);
-    QAction* back = playback->addAction(tr("Step &back"), this, [this] {
+    QAction* back = playback->addAction(QString(), this, [this] {
         pause();
         seek(m_playback->shown() - 1);
     });
     back->setShortcut(Qt::Key_Left);
-    QAction* forward = playback->addAction(tr("Step &forward"), this, [this] {
+    QAction* forward = playback->addAction(QString(), this, [this] {
         pause();
         seek(m_playback->shown() + 1);
     });
     forward->setShortcut(Qt::Key_Right);
-    playback->addAction(tr("To the &start"), this, [this] { seek(1); })
-        ->setShortcut(Qt::Key_Home);
-    playback->addAction(tr("To the &end"), this, [this] { seek(m_playback->rows()); })
-        ->setShortcut(Qt::Key_End);
-    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QAction* start = playback->addAction(QString(), this, [this] { seek(1); });
+    start->setShortcut(Qt::Key_Home);
+    QAction* end = playback->addAction(QString(), this, [this] { seek(m_playback->rows()); });
+    end->setShortcut(Qt::Key_End);
+    QMenu* view = menuBar()->addMenu(QString());
     view->addAction(events->toggleViewAction());
     view->addAction(readout->toggleViewAction());
+    live([=] {
+        file->setTitle(tr("&File"));
+        csv->setText(tr("Export time window as &CSV..."));
+        plots->setText(tr("Export &plots (PNG, SVG or PDF)..."));
+        close->setText(tr("&Close"));
+        playback->setTitle(tr("&Playback"));
+        back->setText(tr("Step &back"));
+        forward->setText(tr("Step &forward"));
+        start->setText(tr("To the &start"));
+        end->setText(tr("To the &end"));
+        view->setTitle(tr("&View"));
+    });
+}
+
+void ReplayWindow::live(std::function<void()> texts) {
+    texts();
+    m_texts.push_back(std::move(texts));
 }
 
 bool ReplayWindow::exportWindowCsv(const QString& path, QString* error, int* rows) const {

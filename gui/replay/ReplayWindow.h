@@ -21,6 +21,7 @@
 #include <QElapsedTimer>
 #include <QMainWindow>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -105,6 +106,10 @@ private:
     void buildPanelsAndMenus();
     void showReidentification();
 
+    /// Set a text now and again at each language change (tr() inside `texts`).
+    void live(std::function<void()> texts);
+
+    std::vector<std::function<void()>> m_texts; ///< every live() text, in order
     std::unique_ptr<RecordPlayback> m_playback;
     LivePlotsPanel* m_panel = nullptr;
     ReplayEventList* m_events = nullptr;

@@ -6,7 +6,11 @@
 // alarm list (headers, severities, kinds, and a core alarm's message from its code), status
 // bar. Each expected text is looked up in the catalogue and must differ from the English one
 // (so the check cannot pass by staying English). Core's alarm messages: AlarmText maps
-// their codes to the operator's language, the English text stays the fallback.
+// their codes to the operator's language, the English text stays the fallback; a safety
+// limit's refusal (the real SafetyLimits text inside a hold) is shown translated too.
+// The plots (titles, axis labels, legends) follow without losing their data, and so does the
+// replay window (title, menus, docks, tool bar, and its event list made from a record's
+// language-neutral alarms and operator events).
 #include <QAction>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -22,7 +26,18 @@
 #include <QTest>
 #include <QTreeWidget>
 
+#include "core/experiment/HybridTest.h"
+#include "core/experimental/SafetyLimits.h"
+#include "core/record/RecordWriter.h"
 #include "core/util/Alarm.h"
+#include "gui/app/OperatorEvent.h"
+#include "gui/plots/HistoryPlot.h"
+#include "gui/plots/HysteresisPlot.h"
+#include "gui/plots/LivePlotsPanel.h"
+#include "gui/plots/PlotStyle.h"
+#include "gui/replay/ReplayPanels.h"
+#include "gui/replay/ReplayWindow.h"
+#include "RecordedRun.h"
 #include "gui/app/AlarmList.h"
 #include "gui/app/AlarmText.h"
 #include "gui/app/ConsoleSettings.h"
@@ -42,6 +57,22 @@ QString catalogue(const char* context, const char* source, int n = -1) {
 }
 QDockWidget* dock(QMainWindow& w, const char* name) {
     return w.findChild<QDockWidget*>(QString::fromLatin1(name));
+}
+QString title(const QCustomPlot& plot) {
+    return plot.property("hsmuTitle").toString();
+}
+// core's real refusal of a measured force past its limit, as an element reports it.
+std::string forceRefusal() {
+    hsmu::SafetyLimits limits;
+    limits.maxForce = 40.0;
+    return "Bearing D: " + *limits.violationOfForce(-45.5);
+}
+// Its translation, made from the catalogue (the element's name stays).
+QString forceRefusalShown() {
+    return catalogue("AlarmText", "%1: %2")
+        .arg(QStringLiteral("Bearing D"),
+             catalogue("AlarmText", "measured force |F| = %1 exceeds the limit %2")
+                 .arg(QStringLiteral("45.5"), QStringLiteral("40")));
 }
 } // namespace
 
@@ -67,6 +98,23 @@ private slots:
         alarms->addAlarm(Alarm(1.5, 150, AlarmSeverity::Critical, AlarmKind::OperatorHold,
                                "test held: operator hold", "test-held", {"operator hold"}));
         QTreeWidgetItem* held = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
+        // A limit's refusal: core's English text inside a hold (what HybridTest raises).
+        const std::string refusal = forceRefusal();
+        alarms->addAlarm(Alarm(2.0, 200, AlarmSeverity::Critical, AlarmKind::LimitExceeded,
+                               "test held: " + refusal, "test-held", {refusal}));
+        QTreeWidgetItem* limit = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
+        QCOMPARE(limit->text(AlarmList::Message),
+                 QStringLiteral("test held: Bearing D: measured force |F| = 45.5 exceeds the "
+                                "limit 40"));
+        // An operator event: shown again from its language-neutral record text.
+        alarms->addEvent(OperatorEvent::now(150, 1.5, OperatorEvent::kPause, "running", "paused"));
+        QTreeWidgetItem* paused = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
+        auto* plots = window.findChild<LivePlotsPanel*>();
+        QVERIFY(plots);
+        HistoryPlot& ground = plots->groundMotion();
+        QVERIFY(ground.graphCount() >= 1);
+        const int groundPoints = ground.graph(0)->dataCount();
+        QVERIFY(groundPoints > 100); // the whole record, shown at load
         QCOMPARE(held->text(AlarmList::Message), QStringLiteral("test held: operator hold"));
         auto* controls = window.findChild<ControlBar*>();
         auto* setup = window.findChild<SetupPanel*>();
@@ -118,12 +166,144 @@ private slots:
                 QVERIFY(message != QLatin1String("test held: operator hold"));
             expect(window.findChild<QLabel*>(QStringLiteral("statusState"))->text(),
                    "RunState", "ready");
+            expect(limit->text(AlarmList::Kind), "hsmu::gui::AlarmList", "limit exceeded");
+            const QString pausedText = catalogue("OperatorEvent", "paused by the operator");
+            QVERIFY2(paused->text(AlarmList::Message).startsWith(pausedText),
+                     qPrintable(code + QStringLiteral(": ") + paused->text(AlarmList::Message)));
+            if (!english)
+                QVERIFY(pausedText != QLatin1String("paused by the operator"));
+            const QString refusalShown =
+                catalogue("AlarmText", "test held: %1").arg(forceRefusalShown());
+            QCOMPARE(limit->text(AlarmList::Message), refusalShown);
+            if (!english)
+                QVERIFY2(!refusalShown.contains(QLatin1String("exceeds the limit")),
+                         qPrintable(refusalShown));
+            // Plots: titles, axis labels and legends, the data kept.
+            HistoryPlot& displacement = plots->displacementHistory();
+            expect(title(displacement), "hsmu::gui::HistoryPlot", "Displacement history");
+            expect(PlotStyle::axisLabel(displacement, *displacement.yAxis), "hsmu::gui::HistoryPlot", "Displacement [m]");
+            expect(PlotStyle::axisLabel(displacement, *displacement.xAxis), "hsmu::gui::HistoryPlot", "Time [s]");
+            expect(title(ground), "hsmu::gui::HistoryPlot", "Ground motion");
+            expect(ground.graph(0)->name(), "hsmu::gui::HistoryPlot", "Ground acceleration");
+            QCOMPARE(ground.graph(0)->dataCount(), groundPoints);
+            HistoryPlot& tracking = plots->tracking();
+            QVERIFY(tracking.graphCount() == 4);
+            expect(tracking.graph(0)->name(), "hsmu::gui::HistoryPlot", "commanded");
+            expect(PlotStyle::axisLabel(tracking, *tracking.yAxis2), "hsmu::gui::HistoryPlot", "Held ticks [-]");
+            HysteresisPlot& loop = plots->hysteresis();
+            const QString loopTitle = title(loop);
+            QVERIFY2(loopTitle == catalogue("hsmu::gui::HysteresisPlot",
+                                            "Hysteresis: specimen and numerical twins") ||
+                         loopTitle.startsWith(catalogue("hsmu::gui::HysteresisPlot",
+                                                        "Hysteresis of %1")
+                                                  .section(QLatin1Char('%'), 0, 0)),
+                     qPrintable(code + QStringLiteral(": ") + loopTitle));
+            const QString rotation =
+                catalogue("hsmu::gui::HysteresisPlot", "Rotation [%1]").section('%', 0, 0);
+            const QString deformation =
+                catalogue("hsmu::gui::HysteresisPlot", "Deformation [%1]").section('%', 0, 0);
+            QVERIFY2(PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(rotation) ||
+                         PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(deformation),
+                     qPrintable(code + QStringLiteral(": ") + PlotStyle::axisLabel(loop, *loop.xAxis)));
+            if (!english)
+                QVERIFY(!PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(QLatin1String("Rotation")) &&
+                        !PlotStyle::axisLabel(loop, *loop.xAxis).startsWith(QLatin1String("Deformation")));
             QVERIFY2(window.windowTitle().startsWith(
                          catalogue("hsmu::gui::MainWindow", "HSMU Console - %1").section('%', 0, 0)),
                      qPrintable(window.windowTitle()));
             if (!english)
                 window.grab().save(QDir::temp().filePath(
                     QStringLiteral("hsmu-live-language-%1.png").arg(code))); // for a look
+        }
+    }
+
+    // The replay window follows a language change: its own texts, and its event list made from
+    // the record's language-neutral texts (a hold by a safety limit, an operator event).
+    void replayWindowFollowsALanguageChange() {
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("en")));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("record.h5"));
+        {
+            TestConfig cfg = PresetLibrary::load(QStringLiteral("paper-condition-3"));
+            cfg.analysis.duration = 0.5;
+            std::unique_ptr<HybridTest> test = buildHybridTest(cfg);
+            RecordWriter writer(path.toStdString(), RunLayout::of(*test),
+                                RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt});
+            writer.trackAlarms(&test->alarms());
+            test->addObserver(&writer);
+            QVERIFY(test->prepare());
+            while (test->step() == HybridTest::StepResult::Advanced) {
+                if (test->currentStep() == 20) {
+                    test->hold(forceRefusal()); // the record holds core's English text
+                    writer.addNote(test->time(), 20,
+                                   OperatorEvent::now(20, test->time(), OperatorEvent::kPause,
+                                                      "running", "paused")
+                                       .recordText());
+                    test->resume();
+                }
+            }
+            test->removeObserver(&writer);
+            QVERIFY(writer.finish());
+        }
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(path, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        w->show();
+        ReplayEventList& events = w->events();
+        const auto row = [&](const QString& english) -> QTreeWidgetItem* {
+            for (int i = 0; i < events.topLevelItemCount(); ++i)
+                if (events.topLevelItem(i)->text(ReplayEventList::Text).startsWith(english))
+                    return events.topLevelItem(i);
+            return nullptr;
+        };
+        QTreeWidgetItem* held = row(QStringLiteral("test held: Bearing D: measured force"));
+        QTreeWidgetItem* paused = row(QStringLiteral("paused by the operator"));
+        QVERIFY(held && paused);
+        const int plotsPoints = w->findChild<HistoryPlot*>(QStringLiteral("groundMotionPlot"))
+                                    ->graph(0)
+                                    ->dataCount();
+        for (const QString& code : {QStringLiteral("es"), QStringLiteral("zh_CN"),
+                                    QStringLiteral("en")}) {
+            QVERIFY2(Translations::install(*QCoreApplication::instance(), code), qPrintable(code));
+            QCoreApplication::processEvents();
+            const bool english = code == QLatin1String("en");
+            const auto expect = [&](const QString& shown, const QString& want,
+                                    const char* source) {
+                QVERIFY2(shown == want, qPrintable(QStringLiteral("%1: '%2' shown, '%3' expected")
+                                                       .arg(code, shown, want)));
+                if (!english)
+                    QVERIFY2(!shown.startsWith(QString::fromLatin1(source).section('%', 0, 0)),
+                             qPrintable(code + QStringLiteral(": untranslated ") + source));
+            };
+            const char* ctx = "hsmu::gui::ReplayWindow";
+            QVERIFY2(w->windowTitle().startsWith(
+                         catalogue(ctx, "HSMU Replay - %1 (%2)").section('%', 0, 0)),
+                     qPrintable(w->windowTitle()));
+            expect(w->menuBar()->actions().front()->text(), catalogue(ctx, "&File"), "&File");
+            expect(dock(*w, "replayEventsDock")->windowTitle(),
+                   catalogue(ctx, "Events, alarms and notes"), "Events, alarms and notes");
+            expect(dock(*w, "replayReadoutDock")->windowTitle(),
+                   catalogue(ctx, "Values at the cursor"), "Values at the cursor");
+            expect(events.headerItem()->text(ReplayEventList::Text),
+                   catalogue("hsmu::gui::ReplayEventList", "Event, alarm or note"),
+                   "Event, alarm or note");
+            expect(w->readout().item(0, 0)->text(),
+                   catalogue("hsmu::gui::ReplayReadout", "step"), "step");
+            QCOMPARE(w->readout().value(QStringLiteral("step")).isEmpty(), false);
+            expect(held->text(ReplayEventList::Text),
+                   catalogue("AlarmText", "test held: %1").arg(forceRefusalShown()),
+                   "test held: %1");
+            QVERIFY(paused->text(ReplayEventList::Text)
+                        .startsWith(catalogue("OperatorEvent", "paused by the operator")));
+            expect(paused->text(ReplayEventList::Kind),
+                   catalogue("hsmu::gui::ReplayEventList", "operator"), "operator");
+            auto* replayed = w->findChild<HistoryPlot*>(QStringLiteral("displacementPlot"));
+            expect(PlotStyle::axisLabel(*replayed, *replayed->yAxis),
+                   catalogue("hsmu::gui::HistoryPlot", "Displacement [m]"), "Displacement [m]");
+            QCOMPARE(w->findChild<HistoryPlot*>(QStringLiteral("groundMotionPlot"))
+                         ->graph(0)
+                         ->dataCount(),
+                     plotsPoints);
         }
     }
 

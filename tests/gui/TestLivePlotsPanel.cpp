@@ -8,6 +8,7 @@
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 #include "gui/plots/LivePlotsPanel.h"
+#include "gui/plots/PlotStyle.h"
 #include "gui/plots/ParameterPlot.h"
 #include "gui/plots/PlotExporter.h"
 
@@ -180,19 +181,19 @@ private slots:
     void everyAxisNamesItsUnit() {
         LivePlotsPanel panel;
         panel.configure(m_run.layout, m_run.config);
-        QVERIFY(panel.hysteresis().xAxis->label().contains(QStringLiteral("[rad]")));
-        QVERIFY(panel.hysteresis().yAxis->label().contains(QStringLiteral("[kN m]")));
-        QVERIFY(panel.forceHistory().yAxis->label().contains(QStringLiteral("[kN m]")));
-        QVERIFY(panel.displacementHistory().yAxis->label().contains(QStringLiteral("[m]")));
-        QVERIFY(panel.groundMotion().yAxis->label().contains(QStringLiteral("[m/s²]")));
-        QVERIFY(panel.tracking().yAxis->label().contains(QStringLiteral("[rad]")));
-        QVERIFY(panel.fitError().yAxis->label().contains(QStringLiteral("[-]")));
+        QVERIFY(PlotStyle::axisLabel(panel.hysteresis(), *panel.hysteresis().xAxis).contains(QStringLiteral("[rad]")));
+        QVERIFY(PlotStyle::axisLabel(panel.hysteresis(), *panel.hysteresis().yAxis).contains(QStringLiteral("[kN m]")));
+        QVERIFY(PlotStyle::axisLabel(panel.forceHistory(), *panel.forceHistory().yAxis).contains(QStringLiteral("[kN m]")));
+        QVERIFY(PlotStyle::axisLabel(panel.displacementHistory(), *panel.displacementHistory().yAxis).contains(QStringLiteral("[m]")));
+        QVERIFY(PlotStyle::axisLabel(panel.groundMotion(), *panel.groundMotion().yAxis).contains(QStringLiteral("[m/s²]")));
+        QVERIFY(PlotStyle::axisLabel(panel.tracking(), *panel.tracking().yAxis).contains(QStringLiteral("[rad]")));
+        QVERIFY(PlotStyle::axisLabel(panel.fitError(), *panel.fitError().yAxis).contains(QStringLiteral("[-]")));
         for (const LivePlotsPanel::NamedPlot& p : panel.plots())
             if (p.plot != &panel.hysteresis())
-                QVERIFY2(p.plot->xAxis->label() == QStringLiteral("Time [s]"),
+                QVERIFY2(PlotStyle::axisLabel(*p.plot, *p.plot->xAxis) == QStringLiteral("Time [s]"),
                          qPrintable(p.fileBase));
         for (ParameterPlot* p : panel.parameterPlots())
-            QCOMPARE(p->xAxis->label(), QStringLiteral("Time [s]"));
+            QCOMPARE(PlotStyle::axisLabel(*p, *p->xAxis), QStringLiteral("Time [s]"));
     }
 
     void exportsValidPngSvgAndPdf() {

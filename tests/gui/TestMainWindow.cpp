@@ -25,6 +25,8 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QMessageBox>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QWheelEvent>
 #include <QDoubleSpinBox>
 #include <QPushButton>
@@ -211,9 +213,9 @@ private slots:
         auto* dt = setup->findChild<QDoubleSpinBox*>(QStringLiteral("timeStep"));
         QVERIFY(scale && dt);
         const double before = scale->value();
-        auto wheel = [](QWidget* w) {
+        auto wheel = [](QWidget* w, int delta = 120) {
             const QPointF at(w->width() / 2.0, w->height() / 2.0);
-            QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+            QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, delta), Qt::NoButton,
                           Qt::NoModifier, Qt::NoScrollPhase, false);
             QApplication::sendEvent(w, &e);
         };
@@ -222,6 +224,16 @@ private slots:
         wheel(scale);
         wheel(dt);
         QCOMPARE(scale->value(), before);
+        QCOMPARE(dt->value(), 0.01);
+        // ... and the panel scrolls under the wheel: the scroll area hands the wheel to its
+        // scroll bar, which the guard must leave alone (it swallowed it: nothing scrolled).
+        auto* scroll = qobject_cast<QScrollArea*>(
+            window.findChild<QDockWidget*>(QStringLiteral("setupDock"))->widget());
+        QVERIFY(scroll);
+        QTRY_VERIFY(scroll->verticalScrollBar()->maximum() > 0); // laid out
+        const int top = scroll->verticalScrollBar()->value();
+        wheel(scroll->viewport(), -120);
+        QVERIFY2(scroll->verticalScrollBar()->value() > top, "the wheel did not scroll the panel");
         QCOMPARE(dt->value(), 0.01);
         QVERIFY(!setup->isDirty());
         scale->setFocus();

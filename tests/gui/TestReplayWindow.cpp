@@ -333,7 +333,8 @@ private slots:
         QCOMPARE(crack.front()->text(ReplayEventList::Step), QStringLiteral("50"));
         QCOMPARE(crack.front()->text(ReplayEventList::Kind), QStringLiteral("note"));
         const QList<QTreeWidgetItem*> pause =
-            events.findItems(QStringLiteral("action=pause"), Qt::MatchContains, ReplayEventList::Text);
+            events.findItems(QStringLiteral("paused by the operator (wall time 2026-01-01T00:00:00"),
+                             Qt::MatchContains, ReplayEventList::Text); // shown translated
         QCOMPARE(pause.size(), 1);
         QCOMPARE(pause.front()->text(ReplayEventList::Kind), QStringLiteral("operator"));
         // Jump to the note: steps 0..50 shown, the read-out shows step 50.

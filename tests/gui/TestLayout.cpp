@@ -1,0 +1,146 @@
+// Layout at 1280x720 (issue 16, item 9/10/11): with a test loaded, in English and in Spanish
+// (the longest texts), every dock's content fits its dock: the setup panel's minimum size
+// hint is not wider than the viewport of its scroll area (nothing clipped on the right, no
+// "Examinar" button cut off), and no panel of the right dock area asks for more than the
+// dock's width (the area keeps its designed 440 px, the plots the rest). Fails on the
+// console before the fix: setup panel 514 px for a 441 px dock (en), 566 for 524 (es). Long texts are wrapped or elided with the full text in their tool tip.
+#include <QDockWidget>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+
+#include "gui/app/AttentionBanner.h"
+#include "gui/app/ConsoleSettings.h"
+#include "gui/app/MainWindow.h"
+#include "gui/app/SetupPanel.h"
+#include "gui/app/Translations.h"
+#include "gui/plots/PlotStyle.h"
+
+#include <qcustomplot.h>
+
+using namespace hsmu;
+using namespace hsmu::gui;
+
+namespace {
+constexpr int kRightDockWidth = 460; // [px] the window sizes the right docks to 440 px
+} // namespace
+
+class TestLayout : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+        ConsoleSettings::setRecordDirectory(QString()); // nothing recorded
+    }
+    void cleanupTestCase() {
+        Translations::install(*QCoreApplication::instance(), QStringLiteral("en"));
+    }
+
+    // The attention banner is red (its white text was drawn on the window's grey: a style
+    // sheet background needs WA_StyledBackground on a plain QWidget).
+    void attentionBannerIsRed() {
+        QWidget window; // a child, as in the main window (a top-level paints differently)
+        auto* banner = new AttentionBanner(&window);
+        window.resize(600, 60);
+        banner->setGeometry(0, 0, 600, 40);
+        banner->setAttention(1, QStringLiteral("test held: operator hold"));
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QColor corner = window.grab().toImage().pixelColor(2, 2);
+        QVERIFY2(corner.red() > 150 && corner.green() < 80 && corner.blue() < 80,
+                 qPrintable(corner.name()));
+    }
+
+    void setupPanelFitsItsDockAt1280x720_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("preset");
+        for (const char* language : {"en", "es", "zh_CN"})
+            for (const char* preset : {"paper-condition-3", "paper-bridge-two-labs"})
+                QTest::addRow("%s %s", language, preset)
+                    << QString::fromLatin1(language) << QString::fromLatin1(preset);
+    }
+    void setupPanelFitsItsDockAt1280x720() {
+        QFETCH(QString, language);
+        QFETCH(QString, preset);
+        QVERIFY(Translations::install(*QCoreApplication::instance(), language));
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.loadConfiguration(preset));
+        QCoreApplication::processEvents();
+        QCOMPARE(window.width(), 1280); // nothing widened the window
+        auto* setup = window.findChild<SetupPanel*>();
+        auto* scroll = qobject_cast<QScrollArea*>(
+            window.findChild<QDockWidget*>(QStringLiteral("setupDock"))->widget());
+        QVERIFY(setup && scroll);
+        const int available = scroll->viewport()->width();
+        const int needed = setup->minimumSizeHint().width();
+        // Every dock of the right area (setup, parameters, pending updates) fits the width
+        // the window gives it (440 px by design, the plots keep the rest): no panel's minimum
+        // (a long translation, a long choice) widens the area.
+        for (QDockWidget* d : window.findChildren<QDockWidget*>()) {
+            if (window.dockWidgetArea(d) != Qt::RightDockWidgetArea)
+                continue;
+            const int min = d->widget()->minimumSizeHint().width();
+            QVERIFY2(min <= d->width() && d->width() <= kRightDockWidth,
+                     qPrintable(QStringLiteral("%1: dock %2 is %3 px wide, its content needs %4")
+                                    .arg(language, d->objectName())
+                                    .arg(d->width())
+                                    .arg(min)));
+        }
+        qInfo("%s %s: setup panel needs %d px, its dock shows %d px", qPrintable(language),
+              qPrintable(preset), needed, available);
+        QVERIFY2(needed <= available,
+                 qPrintable(QStringLiteral("%1: the setup panel needs %2 px, the dock shows %3")
+                                .arg(language).arg(needed).arg(available)));
+        QCOMPARE(setup->width(), available); // laid out to the viewport, not clipped
+        // Plots: a vertical axis label longer than its axis is cut with "..." (the whole
+        // label in the tool tip), never clipped at both ends ("eleración del suelo [m/").
+        for (QCustomPlot* plot : window.findChildren<QCustomPlot*>()) {
+            if (!plot->isVisible())
+                continue;
+            plot->replot(QCustomPlot::rpImmediateRefresh); // laid out at its size
+            plot->replot(QCustomPlot::rpImmediateRefresh); // labels cut to the new layout
+            for (QCPAxis* axis : {plot->yAxis, plot->yAxis2}) {
+                if (!axis->visible() || axis->label().isEmpty())
+                    continue;
+                const int length = QFontMetrics(axis->labelFont()).horizontalAdvance(axis->label());
+                // Centred on the axis, the label must end inside the plot at both ends.
+                const int centre = plot->axisRect()->rect().center().y();
+                const int room = 2 * std::min(centre, plot->height() - centre);
+                QVERIFY2(length <= room,
+                         qPrintable(QStringLiteral("%1: '%2' is %3 px, %4 px of %5 show it")
+                                        .arg(language, axis->label())
+                                        .arg(length)
+                                        .arg(room)
+                                        .arg(plot->objectName())));
+                const QString full = PlotStyle::axisLabel(*plot, *axis);
+                if (full != axis->label())
+                    QVERIFY2(plot->toolTip().contains(full), qPrintable(plot->toolTip()));
+            }
+        }
+        // Every push button shows its whole text (e.g. "Examinar..." beside the file field).
+        for (QPushButton* b : setup->findChildren<QPushButton*>()) {
+            if (!b->isVisibleTo(setup))
+                continue;
+            const int textWidth = b->fontMetrics().horizontalAdvance(b->text());
+            QVERIFY2(b->width() >= textWidth,
+                     qPrintable(QStringLiteral("%1: button '%2' is %3 px for %4 px of text")
+                                    .arg(language, b->text())
+                                    .arg(b->width())
+                                    .arg(textWidth)));
+            const QPoint right = b->mapTo(setup, QPoint(b->width(), 0));
+            QVERIFY2(right.x() <= setup->width(),
+                     qPrintable(language + QStringLiteral(": button '") + b->text() +
+                                QStringLiteral("' reaches past the panel")));
+        }
+    }
+};
+
+QTEST_MAIN(TestLayout)
+#include "TestLayout.moc"
