@@ -1885,6 +1885,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
+    <message>
+        <source>explicit Newmark</source>
+        <translation>explicit Newmark</translation>
+    </message>
+    <message>
+        <source>alpha-OS</source>
+        <translation>alpha-OS</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReidentifyDialog</name>

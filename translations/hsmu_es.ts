@@ -1885,6 +1885,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
+    <message>
+        <source>explicit Newmark</source>
+        <translation>Newmark explícito</translation>
+    </message>
+    <message>
+        <source>alpha-OS</source>
+        <translation>alpha-OS</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReidentifyDialog</name>

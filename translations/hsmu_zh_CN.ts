@@ -1882,6 +1882,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
+    <message>
+        <source>explicit Newmark</source>
+        <translation>显式 Newmark</translation>
+    </message>
+    <message>
+        <source>alpha-OS</source>
+        <translation>alpha-OS</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ReidentifyDialog</name>

@@ -1,5 +1,8 @@
 #include "gui/app/OperatorEvent.h"
 
+#include "core/updating/Reporter.h"
+#include "gui/app/PendingUpdatesPanel.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 
@@ -10,6 +13,17 @@ namespace hsmu::gui {
 namespace {
 bool is(const std::string& action, const char* key) {
     return action == key;
+}
+
+// A policy as the record names it ("onApproval", "everyNSteps N=10"), in the operator's words.
+QString policyText(const QString& value) {
+    const QString name = value.section(QLatin1Char(' '), 0, 0);
+    const auto policy = parseReporterPolicy(name.toStdString());
+    if (!policy)
+        return value;
+    const QString rest = value.section(QLatin1Char(' '), 1);
+    const QString text = PendingUpdatesPanel::describe(*policy);
+    return rest.isEmpty() ? text : text + QLatin1Char(' ') + rest;
 }
 } // namespace
 
@@ -87,7 +101,7 @@ QString OperatorEvent::describe() const {
     else if (is(action, kThreshold))
         what = tr("fit-error threshold changed: %1 -> %2").arg(o, n);
     else if (is(action, kPolicy))
-        what = tr("updating policy changed: %1 -> %2").arg(o, n);
+        what = tr("updating policy changed: %1 -> %2").arg(policyText(o), policyText(n));
     else
         what = QString::fromStdString(action);
     return tr("%1 (wall time %2)").arg(what, wallTime);

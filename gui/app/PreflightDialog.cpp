@@ -18,6 +18,17 @@
 namespace hsmu::gui {
 
 namespace {
+// The integrator's configuration name in the operator's words.
+QString integratorText(const std::string& name) {
+    if (name == "explicitNewmark")
+        return PreflightDialog::tr("explicit Newmark");
+    if (name == "alphaOS")
+        return PreflightDialog::tr("alpha-OS");
+    return QString::fromStdString(name);
+}
+} // namespace
+
+namespace {
 QString num(double v) {
     if (!std::isfinite(v) || v <= 0.0)
         return QCoreApplication::translate("PreflightDialog", "none");
@@ -34,7 +45,7 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
 
     auto* analysis = new QGroupBox(tr("Integration and stability"), this);
     auto* form = new QFormLayout(analysis);
-    form->addRow(tr("Integrator:"), new QLabel(QString::fromStdString(report.integrator), this));
+    form->addRow(tr("Integrator:"), new QLabel(integratorText(report.integrator), this));
     form->addRow(tr("Time step dt [s]:"), new QLabel(QString::number(report.dt, 'g', 6), this));
     form->addRow(tr("Steps:"), new QLabel(QString::number(report.totalSteps), this));
     form->addRow(tr("Ground motion:"),
@@ -52,7 +63,7 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
                    this));
     // From the report's numbers, in the operator's language (core's message is English).
     const QString stabilityText = AlarmText::stability(
-        st, QString::fromStdString(report.integrator), report.dt);
+        st, integratorText(report.integrator), report.dt);
     auto* verdict = new QLabel(this);
     verdict->setObjectName(QStringLiteral("stabilityVerdict"));
     verdict->setWordWrap(true);

@@ -10,7 +10,7 @@ namespace hsmu::gui {
 
 HysteresisPlot::HysteresisPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
-    xAxis->ticker()->setTickCount(5); // rotations print long (-0.015): fewer labels
+    xAxis->ticker()->setTickCount(3); // rotations print long (-0.0005, "0,0010,0015" ran together)
     LiveText::bind(this, [this] { retranslate(); });
 }
 

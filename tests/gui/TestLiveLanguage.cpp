@@ -109,6 +109,9 @@ private slots:
         // An operator event: shown again from its language-neutral record text.
         alarms->addEvent(OperatorEvent::now(150, 1.5, OperatorEvent::kPause, "running", "paused"));
         QTreeWidgetItem* paused = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
+        alarms->addEvent(
+            OperatorEvent::now(150, 1.5, OperatorEvent::kPolicy, "everyStep", "onApproval"));
+        QTreeWidgetItem* policy = alarms->topLevelItem(alarms->topLevelItemCount() - 1);
         auto* plots = window.findChild<LivePlotsPanel*>();
         QVERIFY(plots);
         HistoryPlot& ground = plots->groundMotion();
@@ -172,6 +175,11 @@ private slots:
                      qPrintable(code + QStringLiteral(": ") + paused->text(AlarmList::Message)));
             if (!english)
                 QVERIFY(pausedText != QLatin1String("paused by the operator"));
+            // The record's policy names in the operator's words.
+            QVERIFY2(policy->text(AlarmList::Message)
+                         .contains(catalogue("hsmu::gui::PendingUpdatesPanel",
+                                             "on the operator's approval")),
+                     qPrintable(code + QStringLiteral(": ") + policy->text(AlarmList::Message)));
             const QString refusalShown =
                 catalogue("AlarmText", "test held: %1").arg(forceRefusalShown());
             QCOMPARE(limit->text(AlarmList::Message), refusalShown);
