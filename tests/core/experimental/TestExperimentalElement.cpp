@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 using namespace hsmu;
@@ -33,7 +34,7 @@ public:
         return failNext ? ControlResult::fault("actuator fault") : ControlResult::success();
     }
     ControlResult measure(ControlMeasurement& out) override {
-        out = {std::isnan(reportDeformation) ? m_d : reportDeformation, m_k * m_d};
+        out = {reportDeformation.value_or(m_d), m_k * m_d};
         return ControlResult::success();
     }
     ControlResult commit() override {
@@ -43,7 +44,7 @@ public:
     void hold(const std::string&) override { m_log.held = true; }
     void resume() override { m_log.held = false; }
     bool failNext = false;
-    double reportDeformation = NAN; ///< a lying sensor: reported instead of the target
+    std::optional<double> reportDeformation; ///< a lying sensor: reported instead of the target
 
 private:
     double m_k, m_d = 0.0;
@@ -197,11 +198,13 @@ void TestExperimentalElement::impossibleMeasuredDeformationFailsTheTrial() {
              qPrintable(msg));
     control->reportDeformation = 0.1576; // just past 0.15 * 1.05
     QVERIFY(e->setTrial(at(0.03)).limit);
-    control->reportDeformation = NAN;
-    control->reportDeformation = std::numeric_limits<double>::infinity();
-    s = e->setTrial(at(0.03));
-    QVERIFY(s.limit);
-    QVERIFY2(QString::fromStdString(s.message).contains("not a finite"), s.message.c_str());
+    for (const double bad : {std::numeric_limits<double>::quiet_NaN(),
+                             std::numeric_limits<double>::infinity()}) {
+        control->reportDeformation = bad;
+        s = e->setTrial(at(0.03));
+        QVERIFY(s.limit);
+        QVERIFY2(QString::fromStdString(s.message).contains("not a finite"), s.message.c_str());
+    }
     QCOMPARE(log.commits, 1); // nothing past the first step was committed
 }
 
