@@ -12,32 +12,8 @@ namespace hsmu {
 
 namespace {
 
-constexpr BoucWenUkfIndex kParams[] = {BoucWenUkfIndex::K0,    BoucWenUkfIndex::Alpha,
-                                       BoucWenUkfIndex::Beta,  BoucWenUkfIndex::Gamma,
-                                       BoucWenUkfIndex::N,     BoucWenUkfIndex::DeltaNu,
-                                       BoucWenUkfIndex::DeltaEta};
-
-double& field(BoucWenParameters& p, BoucWenUkfIndex i) {
-    switch (i) {
-    case BoucWenUkfIndex::K0:
-        return p.k0;
-    case BoucWenUkfIndex::Alpha:
-        return p.alpha;
-    case BoucWenUkfIndex::Beta:
-        return p.beta;
-    case BoucWenUkfIndex::Gamma:
-        return p.gamma;
-    case BoucWenUkfIndex::N:
-        return p.n;
-    case BoucWenUkfIndex::DeltaNu:
-        return p.deltaNu;
-    default:
-        return p.deltaEta;
-    }
-}
-
 bool isUkfParameter(const std::string& name) {
-    for (BoucWenUkfIndex i : kParams)
+    for (BoucWenUkfIndex i : kRobustUkfParameters)
         if (name == boucWenUkfIndexName(i))
             return true;
     return false;
@@ -81,7 +57,7 @@ RobustUkfIdentifier::RobustUkfIdentifier(const BoucWenParameters& initial,
 
 std::vector<std::string> RobustUkfIdentifier::parameterNames() const {
     std::vector<std::string> names;
-    for (BoucWenUkfIndex i : kParams)
+    for (BoucWenUkfIndex i : kRobustUkfParameters)
         names.emplace_back(boucWenUkfIndexName(i));
     names.emplace_back("uRef");
     names.emplace_back("fRef");
@@ -91,9 +67,9 @@ std::vector<std::string> RobustUkfIdentifier::parameterNames() const {
 void RobustUkfIdentifier::publish() {
     // Every step: through pointers into the maps (their nodes stay put), no allocation.
     if (m_estimateSlot[0] == nullptr) {
-        for (std::size_t j = 0; j < std::size(kParams); ++j) {
-            m_estimateSlot[j] = &m_estimate[boucWenUkfIndexName(kParams[j])];
-            m_stddevSlot[j] = &m_stddev[boucWenUkfIndexName(kParams[j])];
+        for (std::size_t j = 0; j < std::size(kRobustUkfParameters); ++j) {
+            m_estimateSlot[j] = &m_estimate[boucWenUkfIndexName(kRobustUkfParameters[j])];
+            m_stddevSlot[j] = &m_stddev[boucWenUkfIndexName(kRobustUkfParameters[j])];
         }
         m_estimateSlot[7] = &m_estimate["uRef"];
         m_estimateSlot[8] = &m_estimate["fRef"];
@@ -101,9 +77,9 @@ void RobustUkfIdentifier::publish() {
     }
     BoucWenParameters p = m_published;
     const bool filtering = m_ukf && m_ukf->filter().initialized();
-    for (std::size_t j = 0; j < std::size(kParams); ++j) {
-        *m_estimateSlot[j] = field(p, kParams[j]);
-        const auto i = static_cast<Eigen::Index>(kParams[j]);
+    for (std::size_t j = 0; j < std::size(kRobustUkfParameters); ++j) {
+        *m_estimateSlot[j] = robustUkfField(p, kRobustUkfParameters[j]);
+        const auto i = static_cast<Eigen::Index>(kRobustUkfParameters[j]);
         *m_stddevSlot[j] =
             filtering ? std::sqrt(std::max(m_ukf->filter().covariance()(i, i), 0.0)) : 0.0;
     }
@@ -138,7 +114,7 @@ bool RobustUkfIdentifier::setBounds(const std::string& name, const ParameterBoun
     if (!isUkfParameter(name) || !(b.lower <= b.upper))
         return false;
     if (m_ukf) {
-        for (BoucWenUkfIndex i : kParams)
+        for (BoucWenUkfIndex i : kRobustUkfParameters)
             if (name == boucWenUkfIndexName(i) && !m_ukf->setBounds(i, b.lower, b.upper))
                 return false;
     }
@@ -253,7 +229,7 @@ void RobustUkfIdentifier::startFilter(const AnchorJobResult& r, const BoucWenSta
         m_ukf.emplace(r.best, us, box);
     else
         m_ukf->setSettings(us);
-    for (BoucWenUkfIndex i : kParams) {
+    for (BoucWenUkfIndex i : kRobustUkfParameters) {
         m_ukf->setBounds(i, box[std::size_t(i)].lower, box[std::size_t(i)].upper);
         m_bounds[boucWenUkfIndexName(i)] = {box[std::size_t(i)].lower,
                                             box[std::size_t(i)].upper};

@@ -12,14 +12,7 @@
 
 namespace hsmu {
 
-namespace {
-
-constexpr BoucWenUkfIndex kParams[] = {BoucWenUkfIndex::K0,    BoucWenUkfIndex::Alpha,
-                                       BoucWenUkfIndex::Beta,  BoucWenUkfIndex::Gamma,
-                                       BoucWenUkfIndex::N,     BoucWenUkfIndex::DeltaNu,
-                                       BoucWenUkfIndex::DeltaEta};
-
-double& field(BoucWenParameters& p, BoucWenUkfIndex i) {
+double& robustUkfField(BoucWenParameters& p, BoucWenUkfIndex i) {
     switch (i) {
     case BoucWenUkfIndex::K0:
         return p.k0;
@@ -38,13 +31,15 @@ double& field(BoucWenParameters& p, BoucWenUkfIndex i) {
     }
 }
 
+namespace {
+
 /// The values of p for the spec's fitted parameters, in its order (a calibration start).
 std::vector<double> startOf(const CalibrationSpec& spec, BoucWenParameters p) {
     std::vector<double> s;
     for (const auto& q : spec.fitted)
-        for (BoucWenUkfIndex i : kParams)
+        for (BoucWenUkfIndex i : kRobustUkfParameters)
             if (q.name == boucWenUkfIndexName(i))
-                s.push_back(field(p, i));
+                s.push_back(robustUkfField(p, i));
     return s;
 }
 
@@ -213,7 +208,7 @@ AnchorJobResult anchorJob(const AnchorJobInput& in) {
         out.sd[0] = 1e-3;
         out.sd[1] = 1e-3;
         for (std::size_t q = 0; q < spec.fitted.size(); ++q)
-            for (BoucWenUkfIndex i : kParams)
+            for (BoucWenUkfIndex i : kRobustUkfParameters)
                 if (spec.fitted[q].name == boucWenUkfIndexName(i)) {
                     const auto at = std::size_t(i);
                     out.box[at] = {spec.fitted[q].lower, spec.fitted[q].upper};

@@ -25,6 +25,13 @@
 
 namespace hsmu {
 
+/// The seven parameters the robust UKF identifies, in the filter's state order.
+inline constexpr BoucWenUkfIndex kRobustUkfParameters[] = {
+    BoucWenUkfIndex::K0, BoucWenUkfIndex::Alpha,   BoucWenUkfIndex::Beta,    BoucWenUkfIndex::Gamma,
+    BoucWenUkfIndex::N,  BoucWenUkfIndex::DeltaNu, BoucWenUkfIndex::DeltaEta};
+/// The field of p that i names (i one of kRobustUkfParameters).
+double& robustUkfField(BoucWenParameters& p, BoucWenUkfIndex i);
+
 /// The same physical Bouc-Wen model in the scales (uRef, fRef) (both > 0): with s = p.uRef /
 /// uRef and c = p.fRef / fRef, k0 c / s, beta and gamma s^-n, deltaA, deltaNu, deltaEta
 /// 1 / (c s); alpha, n, A0 unchanged (the law's equations, docs/method.md). The state maps as
