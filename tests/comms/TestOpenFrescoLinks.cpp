@@ -1,8 +1,8 @@
 // The OpenFresco links (docs/openfresco.md) end to end: each console client (SimApp,
 // GenericTCP) against each of hsmu-controller's OpenFresco servers (a real process), equal to
 // the in-process run; the client's bytes checked frame by frame by a raw socket peer written
-// here; the server's replies checked by a raw client; and the failure cases: a wrong dataSize,
-// a peer that closes mid-step, code 99, an interlock.
+// here; and the failure cases: a wrong dataSize, a peer that closes mid-step, an interlock.
+// The servers' replies to a raw client: TestOpenFrescoServers.
 #include "comms/link/ControlFactory.h"
 #include "comms/openfresco/GenericTcpControl.h"
 #include "comms/openfresco/OfFrame.h"
@@ -12,6 +12,7 @@
 
 #include "ControllerProcess.h"
 #include "LinkFixture.h"
+#include "OfRawPeer.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -27,115 +28,7 @@ using namespace hsmu::comms;
 using namespace hsmu::comms::of;
 using namespace linkfixture;
 
-namespace {
-
-constexpr double kWait = 20.0; // [s] every socket wait (a loaded 2-core machine)
-
-TcpControlOptions patientOptions() {
-    TcpControlOptions o;
-    o.connectTimeout = 20.0;
-    o.stepDeadline = 30.0;
-    o.reconnectAttempts = 5;
-    o.reconnectDelay = 0.2;
-    return o;
-}
-
-OfControlOptions ofOptions(int dataSize = 256) {
-    OfControlOptions o;
-    o.sizes.dataSize = dataSize;
-    o.connectTimeout = kWait;
-    o.stepDeadline = kWait;
-    o.logConnect = false;
-    return o;
-}
-
-/// The header a client sends, built here from the documented layout (not with encodeSizes).
-std::vector<std::uint8_t> header(std::array<std::int32_t, 11> v) {
-    std::vector<std::uint8_t> b(44);
-    std::memcpy(b.data(), v.data(), 44);
-    return b;
-}
-
-/// A frame of dataSize doubles: values from index 0, zeros after.
-std::vector<std::uint8_t> frame(std::vector<double> values, int dataSize) {
-    values.resize(static_cast<std::size_t>(dataSize), 0.0);
-    std::vector<std::uint8_t> b(values.size() * 8);
-    std::memcpy(b.data(), values.data(), b.size());
-    return b;
-}
-
-std::vector<double> doubles(const std::vector<std::uint8_t>& b) {
-    std::vector<double> v(b.size() / 8);
-    std::memcpy(v.data(), b.data(), v.size() * 8);
-    return v;
-}
-
-/// A raw client of hsmu-controller.
-struct RawPeer {
-    OfSocket socket;
-    std::string error;
-    bool send(const std::vector<std::uint8_t>& b) {
-        return socket.write(b.data(), b.size(), kWait, error);
-    }
-    std::optional<std::vector<double>> receive(int dataSize) {
-        std::vector<std::uint8_t> b(static_cast<std::size_t>(dataSize) * 8);
-        if (!socket.read(b.data(), b.size(), kWait, error))
-            return std::nullopt;
-        return doubles(b);
-    }
-};
-
-/// A scripted server on a thread: accepts one connection and runs script(socket); what it
-/// saw goes into notes (checked by the test on the main thread after join()).
-class ScriptedServer {
-public:
-    explicit ScriptedServer(std::function<void(OfSocket&, std::vector<std::string>&)> script) {
-        std::string e;
-        m_ok = m_listener.listen("127.0.0.1", 0, e);
-        m_thread = std::thread([this, script = std::move(script)] {
-            OfSocket s;
-            std::string error;
-            if (!m_listener.accept(s, kWait, error)) {
-                notes.push_back("no connection");
-                return;
-            }
-            script(s, notes);
-        });
-    }
-    ~ScriptedServer() { join(); }
-    void join() {
-        if (m_thread.joinable())
-            m_thread.join();
-    }
-    bool ok() const { return m_ok; }
-    std::uint16_t port() const { return m_listener.port(); }
-    std::vector<std::string> notes;
-
-private:
-    OfListener m_listener;
-    bool m_ok = false;
-    std::thread m_thread;
-};
-
-/// Read n bytes as the raw server; a note on failure.
-bool readBytes(OfSocket& s, std::vector<std::uint8_t>& b, std::size_t n,
-               std::vector<std::string>& notes, const char* what) {
-    b.assign(n, 0);
-    std::string e;
-    if (s.read(b.data(), n, kWait, e))
-        return true;
-    notes.push_back(std::string(what) + ": " + e);
-    return false;
-}
-
-std::string joined(const std::vector<std::string>& v) {
-    std::string s;
-    for (const auto& x : v)
-        s += x + "; ";
-    return s;
-}
-
-} // namespace
+using namespace ofpeer;
 
 class TestOpenFrescoLinks : public QObject {
     Q_OBJECT
@@ -254,68 +147,6 @@ private slots:
         ctl.stop();
         // 30 steps of round(0.01 s * 1024 Hz) = 10 ticks
         QVERIFY2(ctl.log().contains("stopped; 300 ticks"), qPrintable(ctl.log()));
-    }
-
-    void simAppServerRepliesAtIndexZero() {
-        ControllerProcess ctl = controller(m_quiet, "simapp", {"--data-size", "32"});
-        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
-        const TestConfig cfg = loadConfigFile(m_quiet);
-        auto law = buildLaw(cfg.elements[0].specimen.trueMaterial, "test");
-        RawPeer p;
-        QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
-        QVERIFY(p.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 32})));
-        const double d = 0.004;
-        QVERIFY(p.send(frame({3.0, d}, 32)));
-        QVERIFY(p.send(frame({6.0}, 32)));
-        auto r = p.receive(32);
-        QVERIFY2(r, p.error.c_str());
-        law->setTrialDeformation(d);
-        QCOMPARE((*r)[0], d);                       // daq disp
-        QCOMPARE((*r)[1], law->trialForce());       // daq force
-        QCOMPARE((*r)[2], cfg.analysis.dt);         // daq time: step 1
-        for (std::size_t i = 3; i < r->size(); ++i) // padding
-            QCOMPARE((*r)[i], 0.0);
-        QVERIFY(p.send(frame({10.0}, 32))); // getForce alone, at index 0
-        r = p.receive(32);
-        QVERIFY2(r, p.error.c_str());
-        QCOMPARE((*r)[0], law->trialForce());
-        QCOMPARE((*r)[1], 0.0);
-        QVERIFY(p.send(frame({12.0}, 32))); // 1 x 1 initial stiffness
-        r = p.receive(32);
-        QVERIFY2(r, p.error.c_str());
-        QCOMPARE((*r)[0], law->initialTangent());
-        QVERIFY(p.send(frame({14.0}, 32))); // damping: zero
-        r = p.receive(32);
-        QVERIFY2(r && (*r)[0] == 0.0, p.error.c_str());
-        QVERIFY(p.send(frame({5.0}, 32)));  // commit: no reply
-        QVERIFY(p.send(frame({99.0}, 32))); // terminate: the server closes
-        std::uint8_t byte;
-        QVERIFY(!p.socket.read(&byte, 1, kWait, p.error));
-        QVERIFY2(p.socket.closedByPeer(), p.error.c_str());
-
-        // The next session is admitted and starts from a fresh specimen.
-        RawPeer q;
-        QVERIFY2(q.socket.connect("127.0.0.1", ctl.port(), kWait, q.error), q.error.c_str());
-        QVERIFY(q.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 32})));
-        QVERIFY(q.send(frame({6.0}, 32)));
-        r = q.receive(32);
-        QVERIFY2(r && (*r)[0] == 0.0 && (*r)[1] == 0.0, q.error.c_str());
-        ctl.stop();
-        QVERIFY2(ctl.log().contains("terminated by the client (99)"), qPrintable(ctl.log()));
-    }
-
-    void siteServerDoesNotAnswerMatrices() {
-        ControllerProcess ctl = controller(m_quiet, "simapp", {"--simapp-site"});
-        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
-        RawPeer p;
-        QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
-        QVERIFY(p.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 256})));
-        QVERIFY(p.send(frame({3.0, 0.002}, 256)));
-        QVERIFY(p.send(frame({12.0}, 256))); // no reply from a site server
-        QVERIFY(p.send(frame({6.0}, 256)));
-        const auto r = p.receive(256);
-        QVERIFY2(r, p.error.c_str());
-        QCOMPARE((*r)[0], 0.002); // the first frame back is the daq reply, not a matrix
     }
 
     // OpenFresco has no hold message: the emergency hold (another thread) shuts the connection
@@ -566,67 +397,6 @@ private slots:
         QVERIFY(!c.linkUp()); // closed: a late reply can never be read as a later one
         server.join();
         QCOMPARE(server.notes.back(), std::string("client closed"));
-    }
-
-    // One client at a time: an idle session (no frame for controller.idleTimeout) gives way
-    // to a client that is waiting to connect; with nobody waiting it may idle on.
-    void idleSessionGivesWayToAWaitingClient() {
-        nlohmann::json j = condition3(0.2);
-        j["structure"]["elements"][0]["specimen"]["forceNoiseStd"] = 0.0;
-        j["controller"]["idleTimeout"] = 1.0;
-        const std::string path = writeConfig(m_dir.path(), "idle.json", j);
-        ControllerProcess ctl = controller(path, "simapp", {"--data-size", "32"});
-        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
-        RawPeer a;
-        QVERIFY2(a.socket.connect("127.0.0.1", ctl.port(), kWait, a.error), a.error.c_str());
-        QVERIFY(a.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 32})));
-        QVERIFY(a.send(frame({3.0, 0.002}, 32)));
-        QVERIFY(a.send(frame({6.0}, 32)));
-        auto r = a.receive(32);
-        QVERIFY2(r && (*r)[0] == 0.002, a.error.c_str());
-        // Idle past the timeout with nobody else waiting (the idle time itself, not a
-        // synchronisation): the session is kept and answers.
-        std::this_thread::sleep_for(std::chrono::milliseconds(2500));
-        QVERIFY(a.send(frame({6.0}, 32)));
-        r = a.receive(32);
-        QVERIFY2(r && (*r)[0] == 0.002, a.error.c_str());
-        // Now a second client connects while the first idles: it is served (within the idle
-        // timeout plus the server's 0.2 s poll; kWait bounds it) and the first is closed.
-        RawPeer b;
-        QVERIFY2(b.socket.connect("127.0.0.1", ctl.port(), kWait, b.error), b.error.c_str());
-        QVERIFY(b.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 32})));
-        QVERIFY(b.send(frame({6.0}, 32)));
-        r = b.receive(32);
-        QVERIFY2(r, b.error.c_str());
-        QCOMPARE((*r)[0], 0.0); // a fresh specimen: the new session starts from zero
-        std::uint8_t byte;
-        QVERIFY(!a.socket.read(&byte, 1, kWait, a.error));
-        QVERIFY2(a.socket.closedByPeer(), a.error.c_str());
-        ctl.stop();
-        QVERIFY2(ctl.log().contains("idle for 1 s while another client waits"),
-                 qPrintable(ctl.log()));
-    }
-
-    void clientVanishingMidFrameFreesTheServer() {
-        ControllerProcess ctl = controller(m_quiet, "simapp");
-        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
-        {
-            RawPeer p;
-            QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
-            QVERIFY(p.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 256})));
-            auto half = frame({3.0, 0.001}, 256);
-            half.resize(100);
-            QVERIFY(p.send(half));
-        } // closed mid-frame
-        const TestConfig cfg = loadConfigFile(m_quiet);
-        const Run linked = runTest(
-            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::SimApp, "127.0.0.1", ctl.port()},
-                                    patientOptions(), cfg.link));
-        QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
-        QVERIFY(maxDifference(runTest(cfg, {}), linked) <= 1e-9);
-        ctl.stop();
-        QVERIFY2(ctl.log().contains("in the middle of a frame (100 of 2048 bytes)"),
-                 qPrintable(ctl.log()));
     }
 
     void peerClosingMidStepHoldsTheTest() {
