@@ -6,6 +6,9 @@
 #include "comms/openfresco/OpenFrescoControl.h"
 #include "comms/openfresco/OfSocket.h"
 
+#include "ControllerProcess.h"
+#include "LinkFixture.h"
+
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -124,6 +127,23 @@ inline std::string joined(const std::vector<std::string>& v) {
     for (const auto& x : v)
         s += x + "; ";
     return s;
+}
+
+/// hsmu-controller at fast pace serving `protocol` (simapp, generictcp) with `config`.
+inline ControllerProcess ofController(const std::string& config, const QString& protocol,
+                                      QStringList extra = {}) {
+    return ControllerProcess(QStringList{"--config", QString::fromStdString(config), "--pace",
+                                         "fast", "--protocol", protocol} +
+                             extra);
+}
+
+/// Condition 3 for 0.2 s without force noise or fracture: values computed here match exactly.
+inline nlohmann::json quietCondition3() {
+    nlohmann::json q = linkfixture::condition3(0.2);
+    auto& sp = q["structure"]["elements"][0]["specimen"];
+    sp["forceNoiseStd"] = 0.0;
+    sp.erase("fracture");
+    return q;
 }
 
 } // namespace ofpeer

@@ -36,26 +36,15 @@ class TestOpenFrescoLinks : public QObject {
     std::string m_config; // condition 3, 1 s, noise and a fracture event
     std::string m_quiet;  // noise-free, for values computed here
 
-    ControllerProcess controller(const std::string& config, const QString& protocol,
-                                 QStringList extra = {}) {
-        return ControllerProcess(QStringList{"--config", QString::fromStdString(config), "--pace",
-                                             "fast", "--protocol", protocol} +
-                                 extra);
-    }
-
 private slots:
     void initTestCase() {
         QVERIFY(m_dir.isValid());
         m_config = writeConfig(m_dir.path(), "c3.json", condition3(1.0));
-        nlohmann::json q = condition3(0.2);
-        auto& sp = q["structure"]["elements"][0]["specimen"];
-        sp["forceNoiseStd"] = 0.0;
-        sp.erase("fracture");
-        m_quiet = writeConfig(m_dir.path(), "quiet.json", q);
+        m_quiet = writeConfig(m_dir.path(), "quiet.json", quietCondition3());
     }
 
     void simAppClientEqualsInProcessRun() {
-        ControllerProcess ctl = controller(m_config, "simapp");
+        ControllerProcess ctl = ofController(m_config, "simapp");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         QVERIFY2(ctl.log().contains("simapp element server, dataSize 256"), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(m_config);
@@ -99,7 +88,7 @@ private slots:
         // would never be committed. The server's mark on the probe reply (OfFrame.h) tells it
         // apart: the console refuses at connect and names the fix; the server's session ends
         // with the client's 99.
-        ControllerProcess ctl = controller(m_quiet, "simapp");
+        ControllerProcess ctl = ofController(m_quiet, "simapp");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(m_quiet);
         const Run linked = runTest(
@@ -120,7 +109,7 @@ private slots:
     void genericTcpClientTrustsOurGenericTcpServer() {
         // hsmu-controller --protocol generictcp commits each trial when the next arrives: no
         // pairing warning, no alarm; the probe reply's mark is the only difference on the wire.
-        ControllerProcess ctl = controller(m_quiet, "generictcp");
+        ControllerProcess ctl = ofController(m_quiet, "generictcp");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         GenericTcpControl c("127.0.0.1", ctl.port(), "Element 1", ofOptions());
         const ControlResult r = c.prepare(0.01);
@@ -352,7 +341,7 @@ private slots:
     }
 
     void wrongDataSizeIsReportedAtConnect() {
-        ControllerProcess ctl = controller(m_quiet, "simapp");
+        ControllerProcess ctl = ofController(m_quiet, "simapp");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         SimAppControl c("127.0.0.1", ctl.port(), "Element 1", ofOptions(128));
         const ControlResult r = c.prepare(0.01);
@@ -439,7 +428,7 @@ private slots:
         QVERIFY(peak > 0.0);
         el["specimen"]["interlock"] = {{"deformation", 0.5 * peak}};
         const std::string path = writeConfig(m_dir.path(), "tight.json", j);
-        ControllerProcess ctl = controller(path, "simapp");
+        ControllerProcess ctl = ofController(path, "simapp");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(path);
         const Run run = runTest(

@@ -25,25 +25,14 @@ class TestOpenFrescoServers : public QObject {
     QTemporaryDir m_dir;
     std::string m_quiet; // noise-free condition 3, for values computed here
 
-    ControllerProcess controller(const std::string& config, const QString& protocol,
-                                 QStringList extra = {}) {
-        return ControllerProcess(QStringList{"--config", QString::fromStdString(config), "--pace",
-                                             "fast", "--protocol", protocol} +
-                                 extra);
-    }
-
 private slots:
     void initTestCase() {
         QVERIFY(m_dir.isValid());
-        nlohmann::json q = condition3(0.2);
-        auto& sp = q["structure"]["elements"][0]["specimen"];
-        sp["forceNoiseStd"] = 0.0;
-        sp.erase("fracture");
-        m_quiet = writeConfig(m_dir.path(), "quiet.json", q);
+        m_quiet = writeConfig(m_dir.path(), "quiet.json", quietCondition3());
     }
 
     void simAppServerRepliesAtIndexZero() {
-        ControllerProcess ctl = controller(m_quiet, "simapp", {"--data-size", "32"});
+        ControllerProcess ctl = ofController(m_quiet, "simapp", {"--data-size", "32"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(m_quiet);
         auto law = buildLaw(cfg.elements[0].specimen.trueMaterial, "test");
@@ -92,7 +81,7 @@ private slots:
 
 
     void siteServerDoesNotAnswerMatrices() {
-        ControllerProcess ctl = controller(m_quiet, "simapp", {"--simapp-site"});
+        ControllerProcess ctl = ofController(m_quiet, "simapp", {"--simapp-site"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         RawPeer p;
         QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
@@ -113,7 +102,7 @@ private slots:
         j["structure"]["elements"][0]["specimen"]["forceNoiseStd"] = 0.0;
         j["controller"]["idleTimeout"] = 1.0;
         const std::string path = writeConfig(m_dir.path(), "idle.json", j);
-        ControllerProcess ctl = controller(path, "simapp", {"--data-size", "32"});
+        ControllerProcess ctl = ofController(path, "simapp", {"--data-size", "32"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         RawPeer a;
         QVERIFY2(a.socket.connect("127.0.0.1", ctl.port(), kWait, a.error), a.error.c_str());
@@ -147,7 +136,7 @@ private slots:
 
 
     void clientVanishingMidFrameFreesTheServer() {
-        ControllerProcess ctl = controller(m_quiet, "simapp");
+        ControllerProcess ctl = ofController(m_quiet, "simapp");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         {
             RawPeer p;
