@@ -99,8 +99,8 @@ void bmIdentNelderMeadRefit(benchmark::State& state) {
         evaluations = id->lastEvaluations();
     }
     std::map<std::string, double> fitted = allOf(wrongStart());
-    for (const auto& [name, v] : id->estimate())
-        fitted[name] = v;
+    for (std::size_t k = 0; k < id->layout().size(); ++k)
+        fitted[id->layout().name(k)] = id->estimate()[k];
     const std::vector<double> uu(u.begin(), u.begin() + long(timed) + 1),
         ff(f.begin(), f.begin() + long(timed) + 1);
     state.counters["replays"] = evaluations;

@@ -57,8 +57,14 @@ OpenSeesTwinLaw::OpenSeesTwinLaw(std::string host, std::uint16_t port, std::stri
       m_model(std::move(model)), m_options(options), m_names(m_model->parameterNames()),
       m_sent(m_names.size(), std::numeric_limits<double>::quiet_NaN())
 {
-    m_uRef = m_model->parameter("uRef").value_or(1.0);
-    m_fRef = m_model->parameter("fRef").value_or(1.0);
+    readScales();
+}
+
+void OpenSeesTwinLaw::readScales()
+{
+    const int u = m_model->parameterIndex("uRef"), f = m_model->parameterIndex("fRef");
+    m_uRef = u >= 0 ? m_model->parameterValue(u) : 1.0;
+    m_fRef = f >= 0 ? m_model->parameterValue(f) : 1.0;
 }
 
 OpenSeesTwinLaw::~OpenSeesTwinLaw()
@@ -125,7 +131,7 @@ bool OpenSeesTwinLaw::ensureOpen()
     for (std::size_t i = 0; i < m_names.size(); ++i) {
         if (!isRemote(m_names[i]))
             continue;
-        m_sent[i] = m_model->parameter(m_names[i]).value_or(0.0);
+        m_sent[i] = m_model->parameterValue(static_cast<int>(i));
         twin += " " + m_names[i] + " " + numberText(m_sent[i]);
     }
     if (!request(twin + "\n", answer))
@@ -206,11 +212,6 @@ void OpenSeesTwinLaw::revertToStart()
         m_outbox += "restart\n";
 }
 
-std::optional<double> OpenSeesTwinLaw::parameter(const std::string& name) const
-{
-    return m_model->parameter(name);
-}
-
 void OpenSeesTwinLaw::queueChangedParameters()
 {
     // As the in-process law: the committed state is kept, a pending trial is dropped and the
@@ -219,15 +220,14 @@ void OpenSeesTwinLaw::queueChangedParameters()
     m_fCommitted = m_model->committedForce();
     m_uTrial = m_uCommitted;
     m_fTrial = m_fCommitted;
-    m_uRef = m_model->parameter("uRef").value_or(1.0);
-    m_fRef = m_model->parameter("fRef").value_or(1.0);
+    readScales();
     if (!m_opened)
         return; // the opening sends the current values
     std::string line;
     for (std::size_t i = 0; i < m_names.size(); ++i) {
         if (!isRemote(m_names[i]))
             continue;
-        const double v = m_model->parameter(m_names[i]).value_or(m_sent[i]);
+        const double v = m_model->parameterValue(static_cast<int>(i));
         if (v == m_sent[i])
             continue;
         line += " " + m_names[i] + " " + numberText(v);
@@ -235,14 +235,6 @@ void OpenSeesTwinLaw::queueChangedParameters()
     }
     if (!line.empty())
         m_outbox += "param" + line + "\n";
-}
-
-bool OpenSeesTwinLaw::setParameter(const std::string& name, double value)
-{
-    if (!m_model->setParameter(name, value))
-        return false;
-    queueChangedParameters();
-    return true;
 }
 
 int OpenSeesTwinLaw::setParameterValues(std::span<const int> indices,

@@ -68,8 +68,7 @@ public:
     void revertToStart() override;
     std::unique_ptr<HysteresisLaw> clone() const override { return m_model->clone(); }
     std::vector<std::string> parameterNames() const override { return m_model->parameterNames(); }
-    std::optional<double> parameter(const std::string& name) const override;
-    bool setParameter(const std::string& name, double value) override;
+    double parameterValue(int index) const override { return m_model->parameterValue(index); }
     int setParameterValues(std::span<const int> indices, std::span<const double> values,
                            bool allOrNothing) override;
 
@@ -83,6 +82,8 @@ private:
     bool request(const std::string& text, std::string& answer);
     /// Queue "param" for the named parameters whose value differs from what OpenSees has.
     void queueChangedParameters();
+    /// m_uRef, m_fRef from the model (1 where it has none).
+    void readScales();
     void fail(std::string why);
 
     std::string m_host;

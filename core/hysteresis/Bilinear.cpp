@@ -1,5 +1,7 @@
 #include "core/hysteresis/Bilinear.h"
 
+#include <limits>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -84,31 +86,56 @@ std::vector<std::string> Bilinear::parameterNames() const {
     return {"k0", "fy", "b"};
 }
 
-std::optional<double> Bilinear::parameter(const std::string& name) const {
-    if (name == "k0") {
-        return m_p.k0;
+namespace {
+/// The field of p at position i of parameterNames(); nullptr if there is none.
+double* fieldAt(BilinearParameters& p, int i) {
+    switch (i) {
+    case 0:
+        return &p.k0;
+    case 1:
+        return &p.fy;
+    case 2:
+        return &p.b;
+    default:
+        return nullptr;
     }
-    if (name == "fy") {
-        return m_p.fy;
-    }
-    if (name == "b") {
-        return m_p.b;
-    }
-    return std::nullopt;
+}
+} // namespace
+
+double Bilinear::parameterValue(int index) const {
+    BilinearParameters p = m_p;
+    const double* field = fieldAt(p, index);
+    return field ? *field : std::numeric_limits<double>::quiet_NaN();
 }
 
-bool Bilinear::setParameter(const std::string& name, double value) {
+int Bilinear::setParameterValues(std::span<const int> indices, std::span<const double> values,
+                                 bool allOrNothing) {
     BilinearParameters p = m_p;
-    if (name == "k0") {
-        p.k0 = value;
-    } else if (name == "fy") {
-        p.fy = value;
-    } else if (name == "b") {
-        p.b = value;
-    } else {
-        return false;
+    int firstRefused = -1;
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        double* field = fieldAt(p, indices[k]);
+        if (field != nullptr) {
+            const double previous = *field;
+            *field = values[k];
+            BilinearParameters alone = m_p;
+            *fieldAt(alone, indices[k]) = values[k];
+            // Together: only values refused on their own count (the set is judged below).
+            if (allOrNothing ? admissible(alone) : admissible(p)) {
+                continue;
+            }
+            *field = previous;
+        }
+        if (firstRefused < 0) {
+            firstRefused = static_cast<int>(k);
+        }
     }
-    return setParameters(p);
+    if (allOrNothing && (firstRefused >= 0 || !admissible(p))) {
+        return firstRefused >= 0 ? firstRefused : 0;
+    }
+    if (!indices.empty()) {
+        setParameters(p);
+    }
+    return firstRefused;
 }
 
 } // namespace hsmu

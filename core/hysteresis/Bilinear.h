@@ -55,8 +55,9 @@ public:
     std::unique_ptr<HysteresisLaw> clone() const override;
     /// k0, fy, b.
     std::vector<std::string> parameterNames() const override;
-    std::optional<double> parameter(const std::string& name) const override;
-    bool setParameter(const std::string& name, double value) override;
+    double parameterValue(int index) const override;
+    int setParameterValues(std::span<const int> indices, std::span<const double> values,
+                           bool allOrNothing) override;
 
 private:
     BilinearParameters m_p;

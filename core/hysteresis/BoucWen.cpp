@@ -222,22 +222,11 @@ std::vector<std::string> BoucWen::parameterNames() const {
     return names;
 }
 
-std::optional<double> BoucWen::parameter(const std::string& name) const {
-    const Field field = findField(name);
-    if (field == nullptr) {
-        return std::nullopt;
+double BoucWen::parameterValue(int index) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= kFields.size()) {
+        return std::numeric_limits<double>::quiet_NaN();
     }
-    return m_p.*field;
-}
-
-bool BoucWen::setParameter(const std::string& name, double value) {
-    const Field field = findField(name);
-    if (field == nullptr) {
-        return false;
-    }
-    BoucWenParameters p = m_p;
-    p.*field = value;
-    return setParameters(p);
+    return m_p.*(kFields[static_cast<std::size_t>(index)].second);
 }
 
 int BoucWen::setParameterValues(std::span<const int> indices, std::span<const double> values,
@@ -247,7 +236,7 @@ int BoucWen::setParameterValues(std::span<const int> indices, std::span<const do
         for (std::size_t k = 0; k < indices.size(); ++k) {
             const int i = indices[k];
             if (i < 0 || static_cast<std::size_t>(i) >= kFields.size()) {
-                setParameters(m_p);
+                setParameters(m_p); // as a refused set: force re-evaluated, trial dropped
                 return static_cast<int>(k);
             }
             p.*(kFields[static_cast<std::size_t>(i)].second) = values[k];
@@ -263,7 +252,7 @@ int BoucWen::setParameterValues(std::span<const int> indices, std::span<const do
                     break;
                 }
             }
-            setParameters(m_p); // as a refused by-name set: force re-evaluated, trial dropped
+            setParameters(m_p); // as a refused set: force re-evaluated, trial dropped
             return refused;
         }
         setParameters(p);
@@ -287,8 +276,6 @@ int BoucWen::setParameterValues(std::span<const int> indices, std::span<const do
             firstRefused = static_cast<int>(k);
         }
         if (allOrNothing) {
-            // setParameter-by-name restoring the old values leaves the parameters as they
-            // were, with the force re-evaluated and a pending trial dropped.
             setParameters(m_p);
             return firstRefused;
         }

@@ -158,14 +158,9 @@ public:
     std::unique_ptr<HysteresisLaw> clone() const override;
     /// k0, alpha, n, beta, gamma, A0, deltaA, deltaNu, deltaEta, uRef, fRef.
     std::vector<std::string> parameterNames() const override;
-    std::optional<double> parameter(const std::string& name) const override;
-    bool setParameter(const std::string& name, double value) override;
-    /// As the base class says, deciding each value on a copy of the parameters (the same
-    /// admissible() test setParameter makes) and setting them all with one setParameters().
-    /// With allOrNothing the values are judged together, as one parameter set: a vector that
-    /// is admissible is applied even if setting its values one by one would pass through an
-    /// inadmissible set (beta and gamma changing sign together); a refused set returns the
-    /// position of the first value that is inadmissible on its own, or 0.
+    double parameterValue(int index) const override;
+    /// As the base class says, deciding each value on a copy of the parameters with
+    /// admissible() and setting them all with one setParameters().
     int setParameterValues(std::span<const int> indices, std::span<const double> values,
                            bool allOrNothing) override;
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 
@@ -269,23 +270,10 @@ std::vector<std::string> BoucWenPinching::parameterNames() const {
     return {kNames.begin(), kNames.end()};
 }
 
-std::optional<double> BoucWenPinching::parameter(const std::string& name) const {
+double BoucWenPinching::parameterValue(int index) const {
     BoucWenPinchingParameters p = m_p;
-    const double* field = fieldAt(p, indexOf(name));
-    if (field == nullptr) {
-        return std::nullopt;
-    }
-    return *field;
-}
-
-bool BoucWenPinching::setParameter(const std::string& name, double value) {
-    BoucWenPinchingParameters p = m_p;
-    double* field = fieldAt(p, indexOf(name));
-    if (field == nullptr) {
-        return false;
-    }
-    *field = value;
-    return setParameters(p);
+    const double* field = fieldAt(p, index);
+    return field ? *field : std::numeric_limits<double>::quiet_NaN();
 }
 
 int BoucWenPinching::setParameterValues(std::span<const int> indices,
@@ -311,7 +299,7 @@ int BoucWenPinching::setParameterValues(std::span<const int> indices,
                     break;
                 }
             }
-            setParameters(m_p); // as a refused by-name set: force re-evaluated, trial dropped
+            setParameters(m_p); // as a refused set: force re-evaluated, trial dropped
             return refused;
         }
         setParameters(p);

@@ -88,8 +88,7 @@ public:
     /// k0, alpha, n, beta, gamma, A0, deltaA, deltaNu, deltaEta, uRef, fRef (BoucWen's, at the
     /// same indices), then zetaS, p, q, psi, deltaPsi, lambda.
     std::vector<std::string> parameterNames() const override;
-    std::optional<double> parameter(const std::string& name) const override;
-    bool setParameter(const std::string& name, double value) override;
+    double parameterValue(int index) const override;
     /// As BoucWen's: with allOrNothing the values are judged together as one set.
     int setParameterValues(std::span<const int> indices, std::span<const double> values,
                            bool allOrNothing) override;

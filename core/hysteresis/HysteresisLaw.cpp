@@ -1,7 +1,6 @@
 #include "core/hysteresis/HysteresisLaw.h"
 
 #include <cstddef>
-#include <map>
 
 namespace hsmu {
 
@@ -27,38 +26,9 @@ int HysteresisLaw::parameterIndex(const std::string& name) const {
     return -1;
 }
 
-int HysteresisLaw::setParameterValues(std::span<const int> indices, std::span<const double> values,
-                                      bool allOrNothing) {
-    const std::vector<std::string> names = parameterNames();
-    const auto nameAt = [&](int i) -> const std::string* {
-        return i >= 0 && static_cast<std::size_t>(i) < names.size() ? &names[std::size_t(i)]
-                                                                     : nullptr;
-    };
-    std::map<std::string, double> old;
-    if (allOrNothing) {
-        for (std::size_t k = 0; k < indices.size(); ++k) {
-            if (const std::string* name = nameAt(indices[k])) {
-                old.emplace(*name, parameter(*name).value_or(values[k]));
-            }
-        }
-    }
-    int firstRefused = -1;
-    for (std::size_t k = 0; k < indices.size(); ++k) {
-        const std::string* name = nameAt(indices[k]);
-        if (name && setParameter(*name, values[k])) {
-            continue;
-        }
-        if (firstRefused < 0) {
-            firstRefused = static_cast<int>(k);
-        }
-        if (allOrNothing) {
-            for (const auto& [n, o] : old) {
-                setParameter(n, o);
-            }
-            return firstRefused;
-        }
-    }
-    return firstRefused;
+bool HysteresisLaw::setParameterValue(int index, double value) {
+    return setParameterValues(std::span<const int>(&index, 1), std::span<const double>(&value, 1),
+                              true) == -1;
 }
 
 } // namespace hsmu

@@ -10,7 +10,6 @@
 // Thread rules: none; an instance is used by one thread at a time.
 
 #include <memory>
-#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -64,29 +63,30 @@ public:
     /// Deep copy including the current committed and trial state.
     virtual std::unique_ptr<HysteresisLaw> clone() const = 0;
 
-    /// Parameter access by name (the names used in configurations).
+    // Parameters by position (docs/method.md, "Parameters by position"): the layout is
+    // parameterNames(), fixed for the law's lifetime. Names are resolved to positions once,
+    // at the edges (configuration, console, output), with parameterIndex().
+
+    /// The parameters' names (as in configurations), in their fixed order.
     virtual std::vector<std::string> parameterNames() const = 0;
-    virtual std::optional<double> parameter(const std::string& name) const = 0;
-    /// Set a parameter; false if the name is unknown or the value is not admissible.
-    /// The committed state (e.g. z, e of Bouc-Wen) is kept, so the force stays continuous
-    /// apart from what the new parameters imply.
-    virtual bool setParameter(const std::string& name, double value) = 0;
-
-    // By-index access, for callers that set parameters every step (core/updating): resolve
-    // the names once with parameterIndex(), then pass indices (positions in parameterNames()).
-
     /// Position of `name` in parameterNames(); -1 if the law has no such parameter.
     int parameterIndex(const std::string& name) const;
-    /// Set values[k] to the parameter at indices[k], k = 0, 1, ... in order, with exactly the
-    /// outcome of successive setParameter(parameterNames()[indices[k]], values[k]) calls: a
-    /// value that is refused (unknown index, or a law that would not stay admissible) is
-    /// skipped (allOrNothing false) or, with allOrNothing true, stops the call and restores
-    /// every value set so far. Returns the position k of the first refused value, -1 if all
-    /// were set. The committed state is kept. The default goes through setParameter; laws
-    /// override it to re-evaluate their force once per call instead of once per value.
+    /// The parameter at `index`; NaN if index is not a position in parameterNames().
+    virtual double parameterValue(int index) const = 0;
+    /// Set values[k] to the parameter at indices[k], k = 0, 1, ... in order. With
+    /// allOrNothing the values are judged together, as one parameter set: an admissible set is
+    /// applied even if setting its values one by one would pass through an inadmissible one
+    /// (Bouc-Wen's beta and gamma changing sign together); a refused set changes nothing and
+    /// returns the position k of the first value that is refused on its own (an unknown index
+    /// or an inadmissible value), else 0. Without it each value is judged on the values set
+    /// before it and a refused one is skipped. Returns -1 if all were set. The committed state
+    /// is kept (e.g. z, e of Bouc-Wen), so the force stays continuous apart from what the new
+    /// parameters imply; a pending trial is dropped.
     /// Precondition: indices.size() == values.size().
     virtual int setParameterValues(std::span<const int> indices, std::span<const double> values,
-                                   bool allOrNothing);
+                                   bool allOrNothing) = 0;
+    /// One value: setParameterValues({index}, {value}, true) == -1.
+    bool setParameterValue(int index, double value);
 };
 
 } // namespace hsmu

@@ -1,5 +1,7 @@
 #include "core/hysteresis/LinearElastic.h"
 
+#include <limits>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -28,20 +30,29 @@ std::unique_ptr<HysteresisLaw> LinearElastic::clone() const {
     return std::make_unique<LinearElastic>(*this);
 }
 
-std::optional<double> LinearElastic::parameter(const std::string& name) const {
-    if (name == "k") {
-        return m_k;
-    }
-    return std::nullopt;
+double LinearElastic::parameterValue(int index) const {
+    return index == 0 ? m_k : std::numeric_limits<double>::quiet_NaN();
 }
 
-bool LinearElastic::setParameter(const std::string& name, double value) {
-    if (name != "k" || !admissible(value)) {
-        return false;
+int LinearElastic::setParameterValues(std::span<const int> indices,
+                                      std::span<const double> values, bool allOrNothing) {
+    double k = m_k;
+    int firstRefused = -1;
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+        if (indices[i] == 0 && admissible(values[i])) {
+            k = values[i];
+        } else if (firstRefused < 0) {
+            firstRefused = static_cast<int>(i);
+        }
     }
-    m_k = value;
-    m_uTrial = m_uCommitted;
-    return true;
+    if (allOrNothing && firstRefused >= 0) {
+        return firstRefused;
+    }
+    if (!indices.empty()) {
+        m_k = k;
+        m_uTrial = m_uCommitted;
+    }
+    return firstRefused;
 }
 
 } // namespace hsmu

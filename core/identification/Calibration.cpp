@@ -167,8 +167,9 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
         if (q.name == "gamma")
             iGamma = int(i);
     }
-    const double fixedBeta = law->parameter("beta").value_or(1.0);
-    const double fixedGamma = law->parameter("gamma").value_or(0.0);
+    const int lawBeta = law->parameterIndex("beta"), lawGamma = law->parameterIndex("gamma");
+    const double fixedBeta = lawBeta >= 0 ? law->parameterValue(lawBeta) : 1.0;
+    const double fixedGamma = lawGamma >= 0 ? law->parameterValue(lawGamma) : 0.0;
     const LevenbergMarquardt::Projection project = [&](Eigen::VectorXd& x) {
         projectBetaGamma(x, iBeta, iGamma, fixedBeta, fixedGamma);
     };
@@ -235,8 +236,9 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     // 3. The result and its statistics.
     Eigen::VectorXd r;
     fine(best.x, r); // leaves the law at the optimum's parameters
-    for (const std::string& name : law->parameterNames())
-        out.parameters[name] = *law->parameter(name);
+    const std::vector<std::string> lawNames = law->parameterNames();
+    for (std::size_t i = 0; i < lawNames.size(); ++i)
+        out.parameters[lawNames[i]] = law->parameterValue(static_cast<int>(i));
     out.estimate = best.x;
     out.nrmse = std::sqrt(2.0 * best.cost / double(scored));
     out.rmsError = out.nrmse * rmsF;

@@ -93,12 +93,14 @@ HistoryFitResult HistoryFit::fit(const std::vector<double>& deformation,
     }
     const auto n = static_cast<Eigen::Index>(m_spec.fitted.size());
     Eigen::VectorXd x0(n), lower(n), upper(n);
+    std::vector<int> indices; // the fitted parameters' positions in the law
     for (Eigen::Index i = 0; i < n; ++i) {
         const HistoryFitSpec::Fitted& p = m_spec.fitted[static_cast<std::size_t>(i)];
-        const std::optional<double> value = prototype->parameter(p.name);
-        if (!value) {
+        indices.push_back(prototype->parameterIndex(p.name));
+        if (indices.back() < 0) {
             return fail(m_spec.law + ": unknown parameter '" + p.name + "'");
         }
+        const std::optional<double> value = prototype->parameterValue(indices.back());
         if (std::isnan(p.lower) || std::isnan(p.upper) || p.lower > p.upper) {
             return fail(p.name + ": the bounds need lower <= upper");
         }
@@ -112,10 +114,10 @@ HistoryFitResult HistoryFit::fit(const std::vector<double>& deformation,
 
     std::unique_ptr<HysteresisLaw> law = prototype->clone();
     const auto objective = [&](const Eigen::VectorXd& x) {
-        for (Eigen::Index i = 0; i < n; ++i) {
-            if (!law->setParameter(m_spec.fitted[static_cast<std::size_t>(i)].name, x(i))) {
-                return kInf; // not admissible for the law
-            }
+        // Value by value (each judged on those before it), as the fit always has.
+        if (law->setParameterValues(indices, std::span<const double>(x.data(), std::size_t(n)),
+                                    false) != -1) {
+            return kInf; // not admissible for the law
         }
         law->revertToStart();
         return replayRms(*law, deformation, force, m_spec.window);
@@ -130,8 +132,9 @@ HistoryFitResult HistoryFit::fit(const std::vector<double>& deformation,
     }
     const bool improved = nm.f < result.rmsBefore;
     const Eigen::VectorXd& xBest = improved ? nm.x : x0;
-    for (const std::string& name : prototype->parameterNames()) {
-        result.parameters[name] = *prototype->parameter(name);
+    const std::vector<std::string> names = prototype->parameterNames();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        result.parameters[names[i]] = prototype->parameterValue(static_cast<int>(i));
     }
     for (Eigen::Index i = 0; i < n; ++i) {
         result.parameters[m_spec.fitted[static_cast<std::size_t>(i)].name] = xBest(i);

@@ -1,5 +1,7 @@
 #pragma once
-// ParameterSet: named law parameters with their bounds, as identified and reported.
+// ParameterSet: a parameter's bounds, and named values and bounds where parameters are named
+// rather than positioned: as a configuration gives them and as reports write them (the edges;
+// identifiers, laws, the Inspector and the Reporter take vectors in a ParameterLayout's order).
 // Values are in the law's own units (normalized for a Bouc-Wen law with uRef/fRef).
 
 #include <limits>
@@ -16,7 +18,9 @@ struct ParameterBounds {
     double clamp(double v) const { return v < lower ? lower : (v > upper ? upper : v); }
 };
 
+/// Values by name, for reports and outputs (summaries, tables, plots).
 using ParameterValues = std::map<std::string, double>;
+/// Bounds by name, as configured (resolved to an identifier's layout once, when it is built).
 using ParameterBoundsMap = std::map<std::string, ParameterBounds>;
 
 /// The paper's Table III bounds for normalized Bouc-Wen parameters (A0 = 1 and deltaA = 0 are

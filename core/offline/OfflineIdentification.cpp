@@ -142,8 +142,9 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     const std::string where = "identification of " + history.source;
     auto model = buildLaw(settings.model, where);
     std::map<std::string, double> all; // every parameter of the law (for the replays)
-    for (const auto& name : model->parameterNames())
-        all[name] = *model->parameter(name);
+    const std::vector<std::string> lawNames = model->parameterNames();
+    for (std::size_t i = 0; i < lawNames.size(); ++i)
+        all[lawNames[i]] = model->parameterValue(static_cast<int>(i));
     auto identifier = buildIdentifier(settings.updating, *model, settings.dt, where);
     const Identifier& id = *identifier;
     ModelUpdater updater(
@@ -165,8 +166,9 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
 
     OfflineIdentificationResult r;
     r.method = id.methodName();
-    r.parameterNames = id.parameterNames();
-    r.initial = id.estimate();
+    r.parameterNames = id.layout().names();
+    for (std::size_t j = 0; j < r.parameterNames.size(); ++j)
+        r.initial[r.parameterNames[j]] = id.estimate()[j];
     const Eigen::Index n = history.size(), p = Eigen::Index(r.parameterNames.size());
     r.parameters.resize(n, p);
     r.stddev.resize(n, p);

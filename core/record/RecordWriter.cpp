@@ -477,8 +477,8 @@ void RecordWriter::Impl::bufferEvent(const UpdateEvent& ev) {
     bEventDecision.push_back(int(ev.decision));
     bEventProposal.push_back(ev.proposal);
     for (const std::string& name : layout.updating->parameters) {
-        const auto it = ev.applied.find(name);
-        bEventValues.push_back(it == ev.applied.end() ? kNaN : it->second);
+        const auto k = ev.parameters.find(name);
+        bEventValues.push_back(k && *k < ev.applied.size() ? ev.applied[*k] : kNaN);
     }
 }
 

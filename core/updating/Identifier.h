@@ -5,9 +5,11 @@
 // the stored history, when the Inspector asks).
 // Values are in the law's own units (normalized for Bouc-Wen with uRef/fRef).
 
+#include "core/identification/ParameterLayout.h"
 #include "core/identification/ParameterSet.h"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,45 +32,35 @@ class Identifier {
 public:
     virtual ~Identifier() = default;
     virtual std::string methodName() const = 0;
-    /// Names of the identified parameters, in a fixed order (records use it).
-    virtual std::vector<std::string> parameterNames() const = 0;
+    /// The identified parameters' names in their fixed order, for the identifier's lifetime:
+    /// estimate(), standardDeviation() and bounds() are in this order (records use it too).
+    virtual const ParameterLayout& layout() const = 0;
 
     /// One committed step of the specimen: measured deformation and force (physical units).
     /// updateRequested: the Inspector asks for an update now (Nelder-Mead runs only then).
     virtual IdentificationStatus observe(double deformation, double force,
                                          bool updateRequested) = 0;
 
-    virtual ParameterValues estimate() const = 0;
-    /// Standard deviations (0 where the method has none, e.g. Nelder-Mead).
-    virtual ParameterValues standardDeviation() const = 0;
+    /// The estimate, in layout() order (valid until the next observe() or setBounds()).
+    virtual std::span<const double> estimate() const = 0;
+    /// Standard deviations in layout() order (0 where the method has none, e.g. Nelder-Mead).
+    virtual std::span<const double> standardDeviation() const = 0;
     /// The model's force predicted for the last observed step before that step's update
     /// (physical units); NaN if the method has no running prediction.
     virtual double predictedForce() const = 0;
 
-    virtual const ParameterBoundsMap& bounds() const = 0;
-    /// Change a bound between steps; false if the name is not identified or lower > upper.
-    virtual bool setBounds(const std::string& name, const ParameterBounds& b) = 0;
-    /// Lock a parameter at its current estimate (or unlock it) between steps; false if the
-    /// method cannot lock it (the default: no locking) or the name is not identified.
-    virtual bool setLocked(const std::string& /*name*/, bool /*locked*/) { return false; }
-    virtual bool locked(const std::string& /*name*/) const { return false; }
+    /// Bounds in layout() order; NaN lower and upper where a parameter has none (yet).
+    virtual std::span<const ParameterBounds> bounds() const = 0;
+    /// Change the bound of parameter `index` between steps; false if the method does not
+    /// bound it, lower > upper or index >= layout().size().
+    virtual bool setBounds(std::size_t index, const ParameterBounds& b) = 0;
+    /// Lock parameter `index` at its current estimate (or unlock it) between steps; false if
+    /// the method cannot lock it (the default: no locking).
+    virtual bool setLocked(std::size_t /*index*/, bool /*locked*/) { return false; }
+    virtual bool locked(std::size_t /*index*/) const { return false; }
     virtual bool canLock() const { return false; }
     /// Compute time of the last update [s] (for Nelder-Mead triggers).
     virtual double lastComputeSeconds() const { return 0.0; }
-
-    // The same by position, for callers that run every step (ModelUpdater): no lookups by
-    // name and, once `out` has its size, no allocation. The layout is estimateNames(): the
-    // names estimate() returns, in its (sorted) order, fixed for the identifier's lifetime.
-    // The defaults go through the maps above; UkfIdentifier overrides them.
-
-    /// The names of estimate(), sorted as ParameterValues sorts them.
-    virtual std::vector<std::string> estimateNames() const;
-    /// estimate() in estimateNames() order.
-    virtual void estimateValues(std::vector<double>& out) const;
-    /// standardDeviation() in estimateNames() order (0 where it has no entry).
-    virtual void standardDeviationValues(std::vector<double>& out) const;
-    /// bounds() in estimateNames() order; NaN lower and upper where a name has no bounds.
-    virtual void boundsValues(std::vector<ParameterBounds>& out) const;
 };
 
 } // namespace hsmu

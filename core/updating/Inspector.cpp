@@ -84,26 +84,14 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
               "identification step rejected: " + in.estimatorMessage, "estimator-rejected",
               {in.estimatorMessage});
 
-    if (in.parameterNames) {
-        const std::vector<std::string>& names = *in.parameterNames;
-        if (m_pinLayout != in.parameterNames || m_pinIndex.size() != names.size()) {
-            m_pinIndex.clear();
-            for (const auto& name : names)
-                m_pinIndex.push_back(static_cast<std::size_t>(&pinState(name) - m_pins.data()));
-            m_pinLayout = in.parameterNames;
-        }
-        const std::size_t n = std::min({names.size(), in.parameterValues.size(),
-                                        in.parameterBounds.size()});
-        for (std::size_t k = 0; k < n; ++k)
-            if (!std::isnan(in.parameterBounds[k].lower))
+    if (in.parameters) {
+        resolvePins(*in.parameters);
+        const std::size_t n = std::min(
+            {in.parameters->size(), in.parameterValues.size(), in.parameterBounds.size()});
+        for (std::size_t k : m_pinOrder)
+            if (k < n && !std::isnan(in.parameterBounds[k].lower))
                 checkPinned(m_pins[m_pinIndex[k]], in.parameterValues[k], in.parameterBounds[k],
                             in, alarms);
-    } else if (in.parameters && in.bounds) {
-        for (const auto& [name, v] : *in.parameters) {
-            auto b = in.bounds->find(name);
-            if (b != in.bounds->end())
-                checkPinned(pinState(name), v, b->second, in, alarms);
-        }
     }
 
     m_cmd.push_back(in.commandedDeformation);
@@ -125,6 +113,22 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
                   "tracking", {text("%.1f", 100 * m_tracking.j2), text("%.4f", m_tracking.j1)});
         m_trackingRaised = bad;
     }
+}
+
+void Inspector::resolvePins(const ParameterLayout& layout)
+{
+    const std::vector<std::string>& names = layout.names();
+    if (m_pinLayout == &names && m_pinIndex.size() == names.size())
+        return;
+    m_pinIndex.clear();
+    for (const auto& name : names)
+        m_pinIndex.push_back(static_cast<std::size_t>(&pinState(name) - m_pins.data()));
+    m_pinOrder.resize(names.size());
+    for (std::size_t k = 0; k < names.size(); ++k)
+        m_pinOrder[k] = k;
+    std::stable_sort(m_pinOrder.begin(), m_pinOrder.end(),
+                     [&](std::size_t a, std::size_t b) { return names[a] < names[b]; });
+    m_pinLayout = &names;
 }
 
 Inspector::PinState& Inspector::pinState(const std::string& name)

@@ -11,13 +11,15 @@
 //               force reached minimumForce and while the model fitted (error below the
 //               threshold at the previous step) (Critical, latched).
 //   estimator   the identifier rejected an update or diverged (Warning, reason passed on).
-//   pinned      an identified parameter sat on a bound for pinnedTime seconds (Warning).
+//   pinned      an identified parameter sat on a bound for pinnedTime seconds (Warning; the
+//               parameters are checked in name order, the order of alarms raised together).
 //   tracking    the RTHS benchmark's indices over a sliding window of measured vs commanded
 //               deformation: J1 = delay [s] maximizing their cross-correlation, J2 = RMS(d_m -
 //               d_c) / RMS(d_c), J3 = max|d_m - d_c| / max|d_c| (Warning when J2 > its limit).
 // Thresholds can change between steps (effective next step).
 
 #include "core/util/Alarm.h"
+#include "core/identification/ParameterLayout.h"
 #include "core/identification/ParameterSet.h"
 
 #include <deque>
@@ -54,13 +56,9 @@ struct InspectorInput {
     double commandedDeformation = 0.0;
     bool estimatorOk = true;
     std::string estimatorMessage;
-    const ParameterValues* parameters = nullptr;   ///< identified values
-    const ParameterBoundsMap* bounds = nullptr;
-    /// The identified values and their bounds by position instead (used when parameterNames
-    /// is set; the maps above are then ignored): names sorted as in a ParameterValues, the
-    /// same layout every step (ModelUpdater passes the identifier's estimateNames()); NaN
-    /// bounds: not bounded (skipped, as a name missing from the bounds map).
-    const std::vector<std::string>* parameterNames = nullptr;
+    /// The identified values and their bounds in the identifier's layout (the same layout
+    /// every step; none: no pinned check). NaN bounds: not bounded (skipped).
+    const ParameterLayout* parameters = nullptr;
     std::span<const double> parameterValues;
     std::span<const ParameterBounds> parameterBounds;
 };
@@ -92,6 +90,8 @@ private:
     void checkPinned(PinState& pin, double v, const ParameterBounds& b, const InspectorInput& in,
                      std::vector<Alarm>& alarms);
     PinState& pinState(const std::string& name);
+    /// Resolve m_pinIndex / m_pinOrder for `layout` (when it is not the one resolved).
+    void resolvePins(const ParameterLayout& layout);
     InspectorSettings m_s;
     double m_dt;
     std::deque<double> m_residual, m_measured;    // fit window
@@ -107,7 +107,8 @@ private:
     double m_fractureTime = 0.0;
     std::vector<PinState> m_pins;
     const std::vector<std::string>* m_pinLayout = nullptr; // names m_pinIndex was resolved for
-    std::vector<std::size_t> m_pinIndex; // m_pins position of each parameterNames entry
+    std::vector<std::size_t> m_pinIndex; // m_pins position of each layout entry
+    std::vector<std::size_t> m_pinOrder; // layout positions in name order (the check order)
     TrackingIndices m_tracking;
     double m_nextTracking = 0.0;
     bool m_trackingRaised = false;

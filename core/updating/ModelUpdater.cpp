@@ -30,23 +30,17 @@ bool ModelUpdater::attach(Structure& structure, double dt, std::string* error)
             *error = "updating: '" + m_specimen + "' is not an experimental element";
         return false;
     }
-    m_names = m_identifier->estimateNames();
-    if (!m_reporter->bind(structure, m_names, error))
+    const ParameterLayout& layout = m_identifier->layout();
+    if (!m_reporter->bind(structure, layout, error))
         return false;
     m_auxIndex.clear();
-    for (const auto& name : m_names)
+    for (const auto& name : layout.names())
         m_auxIndex.push_back(m_aux->parameterIndex(name));
-    m_recordIndex.clear();
-    for (const auto& name : m_identifier->parameterNames()) {
-        const auto at = std::find(m_names.begin(), m_names.end(), name);
-        m_recordIndex.push_back(at == m_names.end() ? -1 : static_cast<int>(at - m_names.begin()));
-    }
-    m_attached = true;
     m_inspector = Inspector(m_inspector.settings(), dt);
     return true;
 }
 
-void ModelUpdater::applyToAuxiliary(const std::vector<double>& values)
+void ModelUpdater::applyToAuxiliary(std::span<const double> values)
 {
     m_auxApply.clear();
     m_auxValues.clear();
@@ -114,17 +108,17 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     m_history.push_back(dm);
 
     const IdentificationStatus st = m_identifier->observe(dm, fm, m_inspector.updateRequested());
-    m_identifier->estimateValues(m_values);
+    const std::span<const double> values = m_identifier->estimate();
     if (st.updated) {
         if (st.refit) {
             // A batch fit: replay the auxiliary model over the history with the new values.
             m_aux = m_auxInitial->clone();
-            applyToAuxiliary(m_values);
+            applyToAuxiliary(values);
             for (double d : m_history)
                 if (m_aux->setTrialDeformation(d) == LawStatus::Ok)
                     m_aux->commit();
         } else {
-            applyToAuxiliary(m_values);
+            applyToAuxiliary(values);
         }
         if (!st.message.empty() && !st.modelInadequate)
             alarms.push_back({time, step, AlarmSeverity::Info, AlarmKind::ModelUpdate, st.message});
@@ -141,16 +135,15 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     in.commandedDeformation = m_element->commandedDeformation();
     in.estimatorOk = st.ok;
     in.estimatorMessage = st.message;
-    m_identifier->boundsValues(m_boundValues);
-    in.parameterNames = &m_names;
-    in.parameterValues = m_values;
-    in.parameterBounds = m_boundValues;
+    in.parameters = &m_identifier->layout();
+    in.parameterValues = values;
+    in.parameterBounds = m_identifier->bounds();
     m_inspector.observe(in, alarms);
 
     if (st.updated && st.reportable) {
         m_events.clear();
         m_reporter->setProposalFitError(m_inspector.fitError());
-        m_reporter->offerValues(step, time, m_values, structure, m_events);
+        m_reporter->offer(step, time, values, structure, m_events);
         report(m_events, alarms, step, time, out); // counts the applied ones
     }
     if (m_autoResolve && !m_reporter->pending().empty()) {
@@ -161,8 +154,7 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     out.fitError = m_inspector.fitError();
     out.tracking = m_inspector.tracking();
     out.updateRequested = m_inspector.updateRequested();
-    m_identifier->standardDeviationValues(m_sd);
-    fillEstimate(m_values, m_sd, out);
+    fillEstimate(out);
     out.appliedUpdates = m_reporter->appliedCount();
     out.pendingProposals = static_cast<int>(m_reporter->pending().size());
 
@@ -176,37 +168,12 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     return std::nullopt;
 }
 
-void ModelUpdater::fillEstimate(const std::vector<double>& values, const std::vector<double>& sd,
-                                UpdatingSample& out) const
-{
-    out.parameters.clear();
-    out.stddev.clear();
-    for (int k : m_recordIndex) {
-        const auto at = static_cast<std::size_t>(k);
-        out.parameters.push_back(k >= 0 && at < values.size() ? values[at] : NAN);
-        out.stddev.push_back(k >= 0 && at < sd.size() ? sd[at] : 0.0);
-    }
-}
-
 void ModelUpdater::fillEstimate(UpdatingSample& out) const
 {
-    if (m_attached) {
-        std::vector<double> values, sd;
-        m_identifier->estimateValues(values);
-        m_identifier->standardDeviationValues(sd);
-        fillEstimate(values, sd, out);
-        return;
-    }
-    const ParameterValues estimate = m_identifier->estimate();
-    const ParameterValues sd = m_identifier->standardDeviation();
-    out.parameters.clear();
-    out.stddev.clear();
-    for (const auto& name : m_identifier->parameterNames()) {
-        auto e = estimate.find(name);
-        auto s = sd.find(name);
-        out.parameters.push_back(e == estimate.end() ? NAN : e->second);
-        out.stddev.push_back(s == sd.end() ? 0.0 : s->second);
-    }
+    const std::span<const double> values = m_identifier->estimate();
+    const std::span<const double> sd = m_identifier->standardDeviation();
+    out.parameters.assign(values.begin(), values.end());
+    out.stddev.assign(sd.begin(), sd.end());
 }
 
 bool ModelUpdater::approve(int proposalId, Structure& structure, int step, double time,

@@ -19,6 +19,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,7 @@ class Structure;
 struct UpdatingSample {
     double auxiliaryForce = 0.0;     ///< F_aux at the step [force units]
     double fitError = 0.0;           ///< inspector's normalized RMS error [-]
-    std::vector<double> parameters;  ///< estimate, in ModelUpdater::parameterNames() order
+    std::vector<double> parameters;  ///< estimate, in the identifier's layout() order
     std::vector<double> stddev;      ///< standard deviations, same order
     int appliedUpdates = 0;          ///< cumulative updates applied to targets
     int updatesThisStep = 0;
@@ -60,7 +61,9 @@ public:
                      UpdatingSample& out);
 
     const std::string& specimenElement() const { return m_specimen; }
-    std::vector<std::string> parameterNames() const { return m_identifier->parameterNames(); }
+    /// The identifier's layout: the order of UpdatingSample's parameters and stddev.
+    const ParameterLayout& layout() const { return m_identifier->layout(); }
+    const std::vector<std::string>& parameterNames() const { return layout().names(); }
     Identifier& identifier() { return *m_identifier; }
     const Identifier& identifier() const { return *m_identifier; }
     Inspector& inspector() { return m_inspector; }
@@ -68,7 +71,7 @@ public:
     Reporter& reporter() { return *m_reporter; }
     const Reporter& reporter() const { return *m_reporter; }
     const HysteresisLaw& auxiliaryModel() const { return *m_aux; }
-    /// The current estimate and standard deviations, in parameterNames() order.
+    /// The current estimate and standard deviations, in layout() order.
     void fillEstimate(UpdatingSample& out) const;
 
     /// Operator decisions (between steps).
@@ -80,11 +83,9 @@ public:
     void setAutoResolve(std::optional<bool> approveAll) { m_autoResolve = approveAll; }
 
 private:
-    /// The identified values (m_names layout) to the auxiliary model, as by-name setParameter
-    /// calls would (non-finite and refused values skipped).
-    void applyToAuxiliary(const std::vector<double>& values);
-    void fillEstimate(const std::vector<double>& values, const std::vector<double>& sd,
-                      UpdatingSample& out) const;
+    /// The identified values (layout order) to the auxiliary model: as one set, else value by
+    /// value (non-finite and refused values skipped).
+    void applyToAuxiliary(std::span<const double> values);
     /// Moves the applied events into out.applied, rejected and not-queued ones into
     /// out.decided; refusals become alarms (a full approval queue one alarm until it drains).
     void report(std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms, int step,
@@ -99,15 +100,11 @@ private:
     ExperimentalElement* m_element = nullptr;
     std::vector<double> m_history; // measured deformations, for replays of the auxiliary model
     std::optional<bool> m_autoResolve;
-    // Resolved by attach(): the identifier's estimateNames(), their positions in the
-    // auxiliary law, and the position of each parameterNames() entry among them (-1: none).
-    bool m_attached = false;
-    std::vector<std::string> m_names;
-    std::vector<int> m_auxIndex, m_recordIndex;
+    // Resolved by attach(): the position in the auxiliary law of each layout entry (-1: none).
+    std::vector<int> m_auxIndex;
     // Per-step buffers (kept: no allocation per step).
-    std::vector<double> m_values, m_sd, m_auxValues;
+    std::vector<double> m_auxValues;
     std::vector<int> m_auxApply;
-    std::vector<ParameterBounds> m_boundValues;
     std::vector<UpdateEvent> m_events; ///< this step's update decisions (reused)
     int m_rejections = 0;
     int m_maxRejections = 20;

@@ -21,10 +21,12 @@ double range(const std::vector<double>& u) {
 
 NelderMeadIdentifier::NelderMeadIdentifier(const HysteresisLaw& model,
                                            const NelderMeadIdentifierSettings& s)
-    : m_law(model.lawName()), m_s(s), m_sinceTrigger(s.cooldownSteps)
+    : m_law(model.lawName()), m_s(s), m_layout(s.parameters),
+      m_stddev(s.parameters.size(), 0.0), m_sinceTrigger(s.cooldownSteps)
 {
-    for (const auto& name : model.parameterNames())
-        m_all[name] = *model.parameter(name);
+    const std::vector<std::string> lawNames = model.parameterNames();
+    for (std::size_t i = 0; i < lawNames.size(); ++i)
+        m_all[lawNames[i]] = model.parameterValue(static_cast<int>(i));
     for (const auto& name : m_s.parameters) {
         if (!m_all.count(name))
             throw std::invalid_argument("nelderMead: '" + name + "' is not a parameter of the " +
@@ -36,23 +38,16 @@ NelderMeadIdentifier::NelderMeadIdentifier(const HysteresisLaw& model,
                                         "' needs finite bounds [lower, upper] in "
                                         "updating.bounds");
         m_all[name] = b->second.clamp(m_all[name]);
+        m_bounds.push_back(b->second);
     }
+    publish();
 }
 
-ParameterValues NelderMeadIdentifier::estimate() const
+void NelderMeadIdentifier::publish()
 {
-    ParameterValues out;
-    for (const auto& name : m_s.parameters)
-        out[name] = m_all.at(name);
-    return out;
-}
-
-ParameterValues NelderMeadIdentifier::standardDeviation() const
-{
-    ParameterValues out;
-    for (const auto& name : m_s.parameters)
-        out[name] = 0.0;
-    return out;
+    m_estimate.resize(m_layout.size());
+    for (std::size_t k = 0; k < m_layout.size(); ++k)
+        m_estimate[k] = m_all.at(m_layout.name(k));
 }
 
 double NelderMeadIdentifier::predictedForce() const
@@ -60,14 +55,16 @@ double NelderMeadIdentifier::predictedForce() const
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-bool NelderMeadIdentifier::setBounds(const std::string& name, const ParameterBounds& b)
+bool NelderMeadIdentifier::setBounds(std::size_t index, const ParameterBounds& b)
 {
-    auto it = m_s.bounds.find(name);
-    if (it == m_s.bounds.end() || !(b.lower <= b.upper) || !std::isfinite(b.lower) ||
+    if (index >= m_layout.size() || !(b.lower <= b.upper) || !std::isfinite(b.lower) ||
         !std::isfinite(b.upper))
         return false;
-    it->second = b;
+    const std::string& name = m_layout.name(index);
+    m_s.bounds[name] = b;
+    m_bounds[index] = b;
     m_all[name] = b.clamp(m_all[name]);
+    publish();
     return true;
 }
 
@@ -81,7 +78,9 @@ IdentificationStatus NelderMeadIdentifier::observe(double deformation, double fo
         return {};
     m_sinceTrigger = 0;
     ++m_triggers;
-    return m_s.calibrated ? calibratedRefit() : simplexRefit();
+    const IdentificationStatus st = m_s.calibrated ? calibratedRefit() : simplexRefit();
+    publish();
+    return st;
 }
 
 IdentificationStatus NelderMeadIdentifier::simplexRefit()

@@ -59,13 +59,15 @@ public:
     NelderMeadIdentifier(const HysteresisLaw& model, const NelderMeadIdentifierSettings& s);
 
     std::string methodName() const override { return "Nelder-Mead"; }
-    std::vector<std::string> parameterNames() const override { return m_s.parameters; }
+    /// The fitted parameters, in the settings' order.
+    const ParameterLayout& layout() const override { return m_layout; }
     IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
-    ParameterValues estimate() const override;
-    ParameterValues standardDeviation() const override;
+    std::span<const double> estimate() const override { return m_estimate; }
+    /// Zeros (the fits give no standard deviation).
+    std::span<const double> standardDeviation() const override { return m_stddev; }
     double predictedForce() const override;
-    const ParameterBoundsMap& bounds() const override { return m_s.bounds; }
-    bool setBounds(const std::string& name, const ParameterBounds& b) override;
+    std::span<const ParameterBounds> bounds() const override { return m_bounds; }
+    bool setBounds(std::size_t index, const ParameterBounds& b) override;
     double lastComputeSeconds() const override { return m_lastSeconds; }
 
     int triggers() const { return m_triggers; }
@@ -82,10 +84,15 @@ private:
     bool wholeDefaultSet() const;
     /// The calibration spec of a refit (no starts); false if the law has no defaults.
     bool refitSpec(CalibrationSpec& spec, std::vector<std::vector<double>>& globalStarts) const;
+    /// The fitted parameters of m_all into m_estimate (layout order).
+    void publish();
 
     std::string m_law;
     ParameterValues m_all; ///< every parameter of the law (current estimate)
-    NelderMeadIdentifierSettings m_s;
+    NelderMeadIdentifierSettings m_s; ///< bounds by name, as the calibrations take them
+    ParameterLayout m_layout;
+    std::vector<double> m_estimate, m_stddev;
+    std::vector<ParameterBounds> m_bounds;
     std::vector<double> m_u, m_f;
     int m_sinceTrigger;
     int m_triggers = 0;

@@ -30,6 +30,14 @@ int indexOf(const std::string& name) {
     return -1;
 }
 
+std::vector<std::string> layoutNames() {
+    std::vector<std::string> names(pinchingUkfParameterNames().begin(),
+                                   pinchingUkfParameterNames().end());
+    names.emplace_back("uRef");
+    names.emplace_back("fRef");
+    return names;
+}
+
 double rmsOf(const std::vector<double>& v) {
     double s = 0.0;
     for (double x : v)
@@ -45,7 +53,7 @@ PinchingUkfIdentifier::PinchingUkfIdentifier(const BoucWenPinchingParameters& in
                                              const ParameterBoundsMap& bounds,
                                              const PinchingUkfIdentifierSettings& settings)
     : m_initial(initial), m_uRef(uRef), m_fRef(fRef), m_userBounds(bounds),
-      m_settings(settings) {
+      m_layout(layoutNames()), m_settings(settings) {
     for (const auto& [name, b] : bounds)
         if (indexOf(name) < 0)
             throw std::invalid_argument("updating.bounds: '" + name +
@@ -60,20 +68,14 @@ PinchingUkfIdentifier::PinchingUkfIdentifier(const BoucWenPinchingParameters& in
     CalibrationRequest request;
     request.law = "boucWenPinching";
     request.bounds = bounds;
+    m_bounds.fill({NAN, NAN});
     for (const auto& b : defaultCalibrationSpec(request, HistoryScales{true, "", 1, 1, 1, 1}).fitted)
-        m_bounds[b.name] = {b.lower, b.upper};
+        if (const int j = indexOf(b.name); j >= 0)
+            m_bounds[std::size_t(j)] = {b.lower, b.upper};
     m_anchor = m_published = m_initial;
     m_window.assign(std::size_t(std::max(1, m_settings.divergenceWindow)), 0.0);
     m_anchorWindow = m_window;
     publish(m_initial);
-}
-
-std::vector<std::string> PinchingUkfIdentifier::parameterNames() const {
-    std::vector<std::string> names(pinchingUkfParameterNames().begin(),
-                                   pinchingUkfParameterNames().end());
-    names.emplace_back("uRef");
-    names.emplace_back("fRef");
-    return names;
 }
 
 void PinchingUkfIdentifier::publish(const BoucWenPinchingParameters& p) {
@@ -82,20 +84,19 @@ void PinchingUkfIdentifier::publish(const BoucWenPinchingParameters& p) {
     if (m_ukf)
         sd = m_ukf->standardDeviation();
     for (int j = 0; j < kPinchingUkfParameters; ++j) {
-        m_estimate[pinchingUkfParameterNames()[std::size_t(j)]] = PinchingUkf::field(p, j);
-        m_stddev[pinchingUkfParameterNames()[std::size_t(j)]] = sd[std::size_t(j)];
+        m_estimate[std::size_t(j)] = PinchingUkf::field(p, j);
+        m_stddev[std::size_t(j)] = sd[std::size_t(j)];
     }
-    m_estimate["uRef"] = p.boucWen.uRef;
-    m_estimate["fRef"] = p.boucWen.fRef;
-    m_stddev["uRef"] = m_stddev["fRef"] = 0.0;
+    m_estimate[kPinchingUkfParameters] = p.boucWen.uRef;
+    m_estimate[kPinchingUkfParameters + 1] = p.boucWen.fRef;
 }
 
-bool PinchingUkfIdentifier::setBounds(const std::string& name, const ParameterBounds& b) {
-    if (indexOf(name) < 0 || !std::isfinite(b.lower) || !std::isfinite(b.upper) ||
-        !(b.lower <= b.upper))
+bool PinchingUkfIdentifier::setBounds(std::size_t index, const ParameterBounds& b) {
+    if (index >= std::size_t(kPinchingUkfParameters) || !std::isfinite(b.lower) ||
+        !std::isfinite(b.upper) || !(b.lower <= b.upper))
         return false;
-    m_userBounds[name] = b;
-    m_bounds[name] = b;
+    m_userBounds[m_layout.name(index)] = b;
+    m_bounds[index] = b;
     return true; // effective at the next anchor
 }
 
@@ -226,7 +227,7 @@ IdentificationStatus PinchingUkfIdentifier::anchor(bool global, bool diverged) {
                                       : std::nan("");
         const double floor = 1e-2 * b.typical, cap = 0.1 * b.typical;
         m_anchorSd[std::size_t(j)] = std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
-        m_bounds[b.name] = {b.lower, b.upper};
+        m_bounds[std::size_t(j)] = {b.lower, b.upper};
     }
     const double rmsF = rmsOf(m_f);
     m_anchorRms = bestNrmse * rmsF / best.boucWen.fRef;

@@ -72,15 +72,16 @@ public:
                           const PinchingUkfIdentifierSettings& settings = {});
 
     std::string methodName() const override { return "UKF (pinching)"; }
-    std::vector<std::string> parameterNames() const override;
+    /// pinchingUkfParameterNames() (its 13), then uRef and fRef (not filtered, no bounds).
+    const ParameterLayout& layout() const override { return m_layout; }
     IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
-    ParameterValues estimate() const override { return m_estimate; }
-    ParameterValues standardDeviation() const override { return m_stddev; }
+    std::span<const double> estimate() const override { return m_estimate; }
+    std::span<const double> standardDeviation() const override { return m_stddev; }
     double predictedForce() const override { return m_predicted; }
     /// Compute time of the last anchor [s].
     double lastComputeSeconds() const override { return m_lastSeconds; }
-    const ParameterBoundsMap& bounds() const override { return m_bounds; }
-    bool setBounds(const std::string& name, const ParameterBounds& b) override;
+    std::span<const ParameterBounds> bounds() const override { return m_bounds; }
+    bool setBounds(std::size_t index, const ParameterBounds& b) override;
 
     int anchors() const { return m_anchors; }
     int divergences() const { return m_divergences; }
@@ -99,7 +100,11 @@ private:
 
     BoucWenPinchingParameters m_initial;
     std::optional<double> m_uRef, m_fRef;
-    ParameterBoundsMap m_userBounds, m_bounds;
+    ParameterBoundsMap m_userBounds; ///< as configured, by name (for the calibrations)
+    ParameterLayout m_layout;
+    /// Published in layout order; NaN bounds: none.
+    std::array<double, kPinchingUkfParameters + 2> m_estimate{}, m_stddev{};
+    std::array<ParameterBounds, kPinchingUkfParameters + 2> m_bounds{};
     PinchingUkfIdentifierSettings m_settings;
     std::optional<PinchingUkf> m_ukf;
     BoucWenPinchingParameters m_anchor, m_published;
@@ -118,7 +123,6 @@ private:
     int m_anchors = 0, m_divergences = 0;
     double m_predicted = std::numeric_limits<double>::quiet_NaN();
     double m_lastSeconds = 0.0;
-    ParameterValues m_estimate, m_stddev;
 };
 
 } // namespace hsmu

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace hsmu {
 
@@ -51,53 +52,79 @@ void Reporter::setPolicy(ReporterPolicy p, int everyN)
     m_everyN = everyN < 1 ? 1 : everyN;
 }
 
-ParameterValues Reporter::proposalFor(const ReporterTarget& t,
-                                      const ParameterValues& identified) const
+bool Reporter::bind(Structure& structure, const ParameterLayout& identified, std::string* error)
 {
-    ParameterValues out;
-    for (const auto& name : t.parameters) {
-        auto it = identified.find(name);
-        if (it == identified.end())
-            continue;
-        auto s = t.scale.find(name);
-        out[name] = it->second * (s == t.scale.end() ? 1.0 : s->second);
+    m_bound.clear();
+    bool ok = true;
+    for (const ReporterTarget& t : m_targets) {
+        Element* e = structure.element(t.element);
+        BoundTarget& b = m_bound.emplace_back();
+        b.law = e ? e->law() : nullptr;
+        if (!b.law && ok) {
+            ok = false;
+            if (error)
+                *error = "updating: target '" + t.element + "' is not a numerical element with a law";
+        }
+        if (b.law && ok) { // a name the target's law does not have: refused with the name
+            const ParameterLayout lawNames(b.law->parameterNames());
+            std::vector<std::string> named = t.parameters;
+            for (const auto& [name, factor] : t.scale)
+                named.push_back(name);
+            for (const auto& name : named) {
+                try {
+                    lawNames.indexOf(name, "updating: target '" + t.element + "'");
+                } catch (const std::invalid_argument& e) {
+                    ok = false;
+                    if (error)
+                        *error = e.what();
+                    break;
+                }
+            }
+        }
+        std::vector<std::string> names;
+        for (const auto& name : t.parameters)
+            if (identified.find(name))
+                names.push_back(name);
+        std::sort(names.begin(), names.end());
+        names.erase(std::unique(names.begin(), names.end()), names.end());
+        for (const auto& name : names) {
+            auto s = t.scale.find(name);
+            b.identifiedIndex.push_back(static_cast<int>(*identified.find(name)));
+            b.lawIndex.push_back(b.law ? b.law->parameterIndex(name) : -1);
+            b.scale.push_back(s == t.scale.end() ? 1.0 : s->second);
+        }
+        b.values.resize(b.identifiedIndex.size());
+        b.names = ParameterLayout(std::move(names));
     }
-    return out;
+    m_identified = identified;
+    m_boundStructure = &structure;
+    return ok;
 }
 
-UpdateEvent Reporter::apply(const std::string& element, const ParameterValues& values,
-                            Structure& structure, int step, double time)
+UpdateEvent Reporter::apply(HysteresisLaw* law, const std::string& element,
+                            const ParameterLayout& names, std::span<const int> lawIndex,
+                            std::span<const double> values, int step, double time)
 {
-    UpdateEvent ev{step, time, element, values, true, {}};
-    Element* e = structure.element(element);
-    HysteresisLaw* law = e ? e->law() : nullptr;
-    if (!law) {
+    UpdateEvent ev{step,  time, element, names, std::vector<double>(values.begin(), values.end()),
+                   true, {}};
+    const auto refuse = [&](std::string message) {
         ev.ok = false;
         ev.decision = UpdateDecision::Refused;
-        ev.message = "no numerical element '" + element + "' with a law to update";
+        ev.message = std::move(message);
         return ev;
-    }
-    for (const auto& [name, v] : values) {
-        if (!std::isfinite(v)) {
-            ev.ok = false;
-            ev.decision = UpdateDecision::Refused;
-            ev.message = element + ": identified " + name + " is not finite; nothing applied";
-            return ev;
-        }
-    }
-    // All or nothing: keep the old values to restore if the law refuses one.
-    ParameterValues old;
-    for (const auto& [name, v] : values)
-        old[name] = law->parameter(name).value_or(v);
-    for (const auto& [name, v] : values) {
-        if (!law->setParameter(name, v)) {
-            for (const auto& [n, o] : old)
-                law->setParameter(n, o);
-            ev.ok = false;
-            ev.decision = UpdateDecision::Refused;
-            ev.message = element + ": the law refused " + name + " = " + std::to_string(v);
-            return ev;
-        }
+    };
+    if (!law)
+        return refuse("no numerical element '" + element + "' with a law to update");
+    for (std::size_t k = 0; k < values.size(); ++k)
+        if (!std::isfinite(values[k]))
+            return refuse(element + ": identified " + names.name(k) +
+                          " is not finite; nothing applied");
+    // All or nothing, judged as one parameter set (the law restores itself if it refuses).
+    const int refused = law->setParameterValues(lawIndex, values, true);
+    if (refused >= 0) {
+        const auto k = static_cast<std::size_t>(refused);
+        return refuse(element + ": the law refused " + names.name(k) + " = " +
+                      std::to_string(values[k]));
     }
     ++m_applied;
     return ev;
@@ -117,141 +144,57 @@ bool Reporter::dueNow(std::size_t i, int step, double force)
     return false;
 }
 
-void Reporter::queueProposal(const ReporterTarget& t, int step, double time,
-                             const ParameterValues& identified, const HysteresisLaw* law,
-                             std::vector<UpdateEvent>& events)
+void Reporter::queueProposal(std::size_t i, int step, double time, std::vector<UpdateEvent>& events)
 {
+    const BoundTarget& b = m_bound[i];
     if (static_cast<int>(m_pending.size()) >= m_maxPending) {
         ++m_notQueued;
         UpdateEvent& ev = events.emplace_back();
         ev.step = step;
         ev.time = time;
-        ev.element = t.element;
-        ev.applied = proposalFor(t, identified);
+        ev.element = m_targets[i].element;
+        ev.parameters = b.names;
+        ev.applied = b.values;
         ev.ok = false;
         ev.decision = UpdateDecision::NotQueued;
         ev.message = "approval queue full (" + std::to_string(m_maxPending) +
                      " proposals pending): not queued";
         return;
     }
-    UpdateProposal p{m_nextId++, step, time, t.element, proposalFor(t, identified), {}, m_fitError};
-    if (law)
-        for (const auto& [name, v] : p.proposed)
-            p.current[name] = law->parameter(name).value_or(v);
+    UpdateProposal p{m_nextId++, step, time, m_targets[i].element, b.names, b.values, {},
+                     m_fitError};
+    if (b.law)
+        for (std::size_t k = 0; k < b.values.size(); ++k)
+            p.current.push_back(b.lawIndex[k] >= 0 ? b.law->parameterValue(b.lawIndex[k])
+                                                   : b.values[k]);
     m_pending.push_back(std::move(p));
 }
 
-std::vector<UpdateEvent> Reporter::offer(int step, double time, const ParameterValues& identified,
-                                         Structure& structure)
+int Reporter::offer(int step, double time, std::span<const double> identified,
+                    Structure& structure, std::vector<UpdateEvent>& events)
 {
-    std::vector<UpdateEvent> events;
-    for (std::size_t i = 0; i < m_targets.size(); ++i) {
-        const ReporterTarget& t = m_targets[i];
-        Element* e = structure.element(t.element);
-        const double force = e && e->law() ? e->law()->committedForce() : 0.0;
-        if (m_policy == ReporterPolicy::OnApproval) {
-            m_lastForce[i] = force;
-            queueProposal(t, step, time, identified, e ? e->law() : nullptr, events);
-        } else if (dueNow(i, step, force)) {
-            events.push_back(apply(t.element, proposalFor(t, identified), structure, step, time));
-        }
-    }
-    return events;
-}
-
-bool Reporter::bind(Structure& structure, const std::vector<std::string>& identifiedNames,
-                    std::string* error)
-{
-    m_boundStructure = nullptr;
-    m_bound.clear();
-    for (const ReporterTarget& t : m_targets) {
-        Element* e = structure.element(t.element);
-        BoundTarget b;
-        b.law = e ? e->law() : nullptr;
-        if (!b.law) {
-            m_bound.clear();
-            if (error)
-                *error = "updating: target '" + t.element + "' is not a numerical element with a law";
-            return false;
-        }
-        // The names proposalFor() keeps, in its map's order (the order apply() sets them in).
-        std::vector<std::string> names;
-        for (const auto& name : t.parameters)
-            if (std::find(identifiedNames.begin(), identifiedNames.end(), name) !=
-                identifiedNames.end())
-                names.push_back(name);
-        std::sort(names.begin(), names.end());
-        names.erase(std::unique(names.begin(), names.end()), names.end());
-        for (const auto& name : names) {
-            const auto at = std::find(identifiedNames.begin(), identifiedNames.end(), name);
-            auto s = t.scale.find(name);
-            b.identifiedIndex.push_back(static_cast<int>(at - identifiedNames.begin()));
-            b.lawIndex.push_back(b.law->parameterIndex(name));
-            b.scale.push_back(s == t.scale.end() ? 1.0 : s->second);
-        }
-        b.values.resize(b.identifiedIndex.size());
-        b.names = std::move(names);
-        m_bound.push_back(std::move(b));
-    }
-    m_boundNames = identifiedNames;
-    m_boundStructure = &structure;
-    return true;
-}
-
-ParameterValues Reporter::identifiedMap(std::span<const double> identified) const
-{
-    ParameterValues out;
-    for (std::size_t k = 0; k < m_boundNames.size() && k < identified.size(); ++k)
-        out[m_boundNames[k]] = identified[k];
-    return out;
-}
-
-int Reporter::offerValues(int step, double time, std::span<const double> identified,
-                          Structure& structure, std::vector<UpdateEvent>& events)
-{
-    if (m_boundStructure != &structure || m_bound.size() != m_targets.size() ||
-        identified.size() != m_boundNames.size()) {
-        int applied = 0;
-        for (UpdateEvent& ev : offer(step, time, identifiedMap(identified), structure)) {
-            applied += ev.ok;
-            events.push_back(std::move(ev));
-        }
-        return applied;
-    }
+    if (m_boundStructure != &structure)
+        bind(structure, m_identified, nullptr);
     int applied = 0;
     for (std::size_t i = 0; i < m_targets.size(); ++i) {
         BoundTarget& b = m_bound[i];
-        const double force = b.law->committedForce();
-        if (m_policy == ReporterPolicy::OnApproval) {
+        const double force = b.law ? b.law->committedForce() : 0.0;
+        const bool approval = m_policy == ReporterPolicy::OnApproval;
+        if (approval)
             m_lastForce[i] = force;
-            queueProposal(m_targets[i], step, time, identifiedMap(identified), b.law, events);
+        else if (!dueNow(i, step, force))
             continue;
-        }
-        if (!dueNow(i, step, force))
-            continue;
-        bool finite = true;
         for (std::size_t k = 0; k < b.values.size(); ++k) {
-            b.values[k] = identified[static_cast<std::size_t>(b.identifiedIndex[k])] * b.scale[k];
-            finite = finite && std::isfinite(b.values[k]);
+            const auto at = static_cast<std::size_t>(b.identifiedIndex[k]);
+            b.values[k] = (at < identified.size() ? identified[at] : NAN) * b.scale[k];
         }
-        const int refusedAt = finite ? b.law->setParameterValues(b.lawIndex, b.values, true) : 0;
-        if (finite && refusedAt < 0) {
-            ++m_applied;
-            ++applied;
-            // The record's event row, equal to what offer() returns (proposalFor's values).
-            UpdateEvent& ev = events.emplace_back();
-            ev.step = step;
-            ev.time = time;
-            ev.element = m_targets[i].element;
-            for (std::size_t k = 0; k < b.values.size(); ++k)
-                ev.applied.emplace_hint(ev.applied.end(), b.names[k], b.values[k]);
+        if (approval) {
+            queueProposal(i, step, time, events);
             continue;
         }
-        // The rare path: let apply() say why (it repeats the checks and leaves the law as is).
-        UpdateEvent ev = apply(m_targets[i].element, proposalFor(m_targets[i], identifiedMap(identified)),
-                               structure, step, time);
-        applied += ev.ok;
-        events.push_back(std::move(ev));
+        events.push_back(apply(b.law, m_targets[i].element, b.names, b.lawIndex, b.values, step,
+                               time));
+        applied += events.back().ok;
     }
     return applied;
 }
@@ -260,9 +203,17 @@ std::optional<UpdateEvent> Reporter::approve(int id, Structure& structure, int s
 {
     for (auto it = m_pending.begin(); it != m_pending.end(); ++it) {
         if (it->id == id) {
-            UpdateProposal p = *it;
+            UpdateProposal p = std::move(*it);
             m_pending.erase(it);
-            UpdateEvent ev = apply(p.element, p.proposed, structure, step, time);
+            // The target as it is now, its parameters resolved by name (an operator's
+            // decision, not a step: no need for the bound positions).
+            Element* e = structure.element(p.element);
+            HysteresisLaw* law = e ? e->law() : nullptr;
+            std::vector<int> lawIndex;
+            for (const std::string& name : p.parameters.names())
+                lawIndex.push_back(law ? law->parameterIndex(name) : -1);
+            UpdateEvent ev =
+                apply(law, p.element, p.parameters, lawIndex, p.proposed, step, time);
             ev.proposal = p.id;
             return ev;
         }
@@ -279,8 +230,8 @@ std::optional<UpdateEvent> Reporter::rejectProposal(int id, int step, double tim
 {
     for (auto it = m_pending.begin(); it != m_pending.end(); ++it) {
         if (it->id == id) {
-            UpdateEvent ev{step, time, it->element, it->proposed, false, "rejected by the operator",
-                           UpdateDecision::Rejected, id};
+            UpdateEvent ev{step,  time, it->element, it->parameters, it->proposed,
+                           false, "rejected by the operator", UpdateDecision::Rejected, id};
             m_pending.erase(it);
             return ev;
         }

@@ -18,10 +18,11 @@
 // Nothing non-finite is ever applied; a value the law refuses is reported, not applied.
 // Thread rules: none (called from the test's thread; the GUI calls approve/reject through it).
 
-#include "core/identification/ParameterSet.h"
+#include "core/identification/ParameterLayout.h"
 
 #include <deque>
 #include <limits>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -38,8 +39,9 @@ std::optional<ReporterPolicy> parseReporterPolicy(const std::string& text);
 
 struct ReporterTarget {
     std::string element;                 ///< a numerical element with a law
-    std::vector<std::string> parameters; ///< names sent to it
-    ParameterValues scale;               ///< per-parameter factor (category-2 conversion)
+    std::vector<std::string> parameters; ///< names sent to it (as configured)
+    /// Per-parameter factor by name, as configured (category-2 conversion; default 1).
+    std::map<std::string, double> scale;
 };
 
 struct UpdateProposal {
@@ -47,8 +49,9 @@ struct UpdateProposal {
     int step = 0;
     double time = 0.0; ///< [s]
     std::string element;
-    ParameterValues proposed; ///< after scaling
-    ParameterValues current;  ///< the target's values when proposed
+    ParameterLayout parameters;   ///< the target's parameters (name order)
+    std::vector<double> proposed; ///< after scaling, in `parameters` order
+    std::vector<double> current;  ///< the target's values when proposed (same order)
     double fitError = std::numeric_limits<double>::quiet_NaN(); ///< [-] when proposed (NaN: unknown)
 };
 
@@ -62,8 +65,9 @@ struct UpdateEvent {
     int step = 0;
     double time = 0.0;
     std::string element;
-    ParameterValues applied; ///< the values applied (Applied) or offered (otherwise)
-    bool ok = true;          ///< decision == Applied
+    ParameterLayout parameters;  ///< the target's parameters (name order), for display / record
+    std::vector<double> applied; ///< the values applied (Applied) or offered, in that order
+    bool ok = true;              ///< decision == Applied
     std::string message; ///< why, when !ok
     UpdateDecision decision = UpdateDecision::Applied;
     int proposal = 0; ///< the proposal's id under OnApproval (0: none)
@@ -78,10 +82,22 @@ public:
     int everyN() const { return m_everyN; }
     const std::vector<ReporterTarget>& targets() const { return m_targets; }
 
-    /// Offer the identified values after step `step` was committed. Applies or queues
-    /// according to the policy; returns the updates applied now.
-    std::vector<UpdateEvent> offer(int step, double time, const ParameterValues& identified,
-                                   Structure& structure);
+    /// Resolve once (ModelUpdater::attach) what offer() needs every step: each target's law
+    /// in `structure` and, for each of its parameters that `identified` (the identifier's
+    /// layout) has, its position there and in the law. A target's parameters are taken in
+    /// name order (the order of its events and proposals). False with a reason if a target
+    /// is not a numerical element with a law, or names (in its parameters or scale) a
+    /// parameter its law does not have.
+    bool bind(Structure& structure, const ParameterLayout& identified, std::string* error);
+    /// Offer the identified values (the bound layout) after step `step` was committed.
+    /// Applies or queues according to the policy, without lookups by name or allocation
+    /// (apart from OnApproval proposals, refusals and the event of an update applied).
+    /// Returns how many updates were applied now; every update decided now, applied or
+    /// refused, is appended to `events`. On a structure other than the bound one the targets
+    /// are bound to it first (a target that cannot be is refused with the reason).
+    /// Precondition: bind() was called; identified.size() == the bound layout's size.
+    int offer(int step, double time, std::span<const double> identified, Structure& structure,
+              std::vector<UpdateEvent>& events);
 
     const std::deque<UpdateProposal>& pending() const { return m_pending; }
     /// Apply a pending proposal (by id) now; nullopt if there is no such proposal.
@@ -106,47 +122,32 @@ public:
 
     int appliedCount() const { return m_applied; }
 
-    /// Resolve once (ModelUpdater::attach) what offerValues() needs every step: each target's
-    /// law in `structure` and, for each of its parameters, its position in `identifiedNames`
-    /// (the identifier's estimateNames()) and in the law. False with a reason if a target is
-    /// not a numerical element with a law.
-    bool bind(Structure& structure, const std::vector<std::string>& identifiedNames,
-              std::string* error);
-    /// offer() for values in the bound layout, on the structure bound (else as offer()):
-    /// the same decisions and updates without lookups by name or allocation (apart from
-    /// OnApproval proposals, refusals and the event of an update applied). Returns how many
-    /// updates were applied now; every update decided now, applied or refused, is appended to
-    /// `events` as offer() returns it.
-    int offerValues(int step, double time, std::span<const double> identified,
-                    Structure& structure, std::vector<UpdateEvent>& events);
-
 private:
-    // A target resolved by bind(): its parameters in name order (the order offer() applies
-    // them in), their positions in the identified layout and in the law, their scale.
+    // A target resolved by bind(): its parameters in name order, their positions in the
+    // identified layout and in the law (-1: the law has none), their scale.
     struct BoundTarget {
         HysteresisLaw* law = nullptr;
-        std::vector<std::string> names; // sorted: proposalFor()'s map order
+        ParameterLayout names;
         std::vector<int> identifiedIndex, lawIndex;
         std::vector<double> scale, values; // values: this step's, scaled (kept: no allocation)
     };
     /// Whether target i takes an offer now (ZeroCrossing: its force changed sign since the
     /// last offer); remembers the force.
     bool dueNow(std::size_t i, int step, double force);
-    /// Queue a proposal, or (queue full) append its NotQueued event to `events`.
-    void queueProposal(const ReporterTarget& t, int step, double time,
-                       const ParameterValues& identified, const HysteresisLaw* law,
-                       std::vector<UpdateEvent>& events);
-    ParameterValues identifiedMap(std::span<const double> identified) const;
-    ParameterValues proposalFor(const ReporterTarget& t, const ParameterValues& identified) const;
-    UpdateEvent apply(const std::string& element, const ParameterValues& values,
-                      Structure& structure, int step, double time);
+    /// Queue target i's proposal of b.values, or (queue full) append its NotQueued event.
+    void queueProposal(std::size_t i, int step, double time, std::vector<UpdateEvent>& events);
+    /// Set `values` (in `names` order) to `law` at the positions `lawIndex`, all or nothing:
+    /// the event, refused with the reason when a value is not finite or the law refuses it.
+    UpdateEvent apply(HysteresisLaw* law, const std::string& element, const ParameterLayout& names,
+                      std::span<const int> lawIndex, std::span<const double> values, int step,
+                      double time);
 
     std::vector<ReporterTarget> m_targets;
     ReporterPolicy m_policy;
     int m_everyN;
     std::vector<double> m_lastForce; // per target, committed force at the previous offer
     const Structure* m_boundStructure = nullptr;
-    std::vector<std::string> m_boundNames;
+    ParameterLayout m_identified;
     std::vector<BoundTarget> m_bound; // per target, after bind()
     std::deque<UpdateProposal> m_pending;
     int m_nextId = 1;

@@ -19,6 +19,15 @@ bool isUkfParameter(const std::string& name) {
     return false;
 }
 
+std::vector<std::string> layoutNames() {
+    std::vector<std::string> names;
+    for (BoucWenUkfIndex i : kRobustUkfParameters)
+        names.emplace_back(boucWenUkfIndexName(i));
+    names.emplace_back("uRef");
+    names.emplace_back("fRef");
+    return names;
+}
+
 std::string fixed(double v, int digits) {
     std::ostringstream s;
     s.setf(std::ios::fixed);
@@ -33,7 +42,8 @@ RobustUkfIdentifier::RobustUkfIdentifier(const BoucWenParameters& initial,
                                          std::optional<double> uRef, std::optional<double> fRef,
                                          const ParameterBoundsMap& bounds,
                                          const RobustUkfSettings& settings)
-    : m_initial(initial), m_uRef(uRef), m_fRef(fRef), m_userBounds(bounds), m_settings(settings) {
+    : m_initial(initial), m_uRef(uRef), m_fRef(fRef), m_userBounds(bounds), m_settings(settings),
+      m_layout(layoutNames()) {
     for (const auto& [name, b] : bounds) {
         if (!isUkfParameter(name))
             throw std::invalid_argument("updating.bounds: '" + name +
@@ -49,77 +59,34 @@ RobustUkfIdentifier::RobustUkfIdentifier(const BoucWenParameters& initial,
         m_initial.fRef = *fRef;
     m_anchor = m_initial;
     m_published = m_initial;
-    m_bounds = bounds;
+    m_bounds.fill({NAN, NAN});
+    for (const auto& [name, b] : bounds)
+        m_bounds[m_layout.indexOf(name, "updating.bounds")] = b;
     m_window.assign(std::size_t(std::max(settings.divergenceWindow, 1)), 0.0);
     m_anchorWindow = m_window;
     publish();
 }
 
-std::vector<std::string> RobustUkfIdentifier::parameterNames() const {
-    std::vector<std::string> names;
-    for (BoucWenUkfIndex i : kRobustUkfParameters)
-        names.emplace_back(boucWenUkfIndexName(i));
-    names.emplace_back("uRef");
-    names.emplace_back("fRef");
-    return names;
-}
-
 void RobustUkfIdentifier::publish() {
-    // Every step: through pointers into the maps (their nodes stay put), no allocation.
-    if (m_estimateSlot[0] == nullptr) {
-        for (std::size_t j = 0; j < std::size(kRobustUkfParameters); ++j) {
-            m_estimateSlot[j] = &m_estimate[boucWenUkfIndexName(kRobustUkfParameters[j])];
-            m_stddevSlot[j] = &m_stddev[boucWenUkfIndexName(kRobustUkfParameters[j])];
-        }
-        m_estimateSlot[7] = &m_estimate["uRef"];
-        m_estimateSlot[8] = &m_estimate["fRef"];
-        m_stddev["uRef"] = m_stddev["fRef"] = 0.0;
-    }
     BoucWenParameters p = m_published;
     const bool filtering = m_ukf && m_ukf->filter().initialized();
     for (std::size_t j = 0; j < std::size(kRobustUkfParameters); ++j) {
-        *m_estimateSlot[j] = robustUkfField(p, kRobustUkfParameters[j]);
+        m_estimate[j] = robustUkfField(p, kRobustUkfParameters[j]);
         const auto i = static_cast<Eigen::Index>(kRobustUkfParameters[j]);
-        *m_stddevSlot[j] =
+        m_stddev[j] =
             filtering ? std::sqrt(std::max(m_ukf->filter().covariance()(i, i), 0.0)) : 0.0;
     }
-    *m_estimateSlot[7] = m_anchor.uRef;
-    *m_estimateSlot[8] = m_anchor.fRef;
+    m_estimate[7] = m_anchor.uRef;
+    m_estimate[8] = m_anchor.fRef;
 }
 
-ParameterValues RobustUkfIdentifier::estimate() const { return m_estimate; }
-
-void RobustUkfIdentifier::estimateValues(std::vector<double>& out) const {
-    out.clear();
-    for (const auto& [name, v] : m_estimate)
-        out.push_back(v);
-}
-
-void RobustUkfIdentifier::standardDeviationValues(std::vector<double>& out) const {
-    out.clear(); // m_stddev has m_estimate's names (publish())
-    for (const auto& [name, v] : m_stddev)
-        out.push_back(v);
-}
-
-void RobustUkfIdentifier::boundsValues(std::vector<ParameterBounds>& out) const {
-    out.clear();
-    for (const auto& [name, v] : m_estimate) {
-        const auto b = m_bounds.find(name);
-        out.push_back(b == m_bounds.end() ? ParameterBounds{NAN, NAN} : b->second);
-    }
-}
-ParameterValues RobustUkfIdentifier::standardDeviation() const { return m_stddev; }
-
-bool RobustUkfIdentifier::setBounds(const std::string& name, const ParameterBounds& b) {
-    if (!isUkfParameter(name) || !(b.lower <= b.upper))
+bool RobustUkfIdentifier::setBounds(std::size_t index, const ParameterBounds& b) {
+    if (index >= std::size(kRobustUkfParameters) || !(b.lower <= b.upper))
         return false;
-    if (m_ukf) {
-        for (BoucWenUkfIndex i : kRobustUkfParameters)
-            if (name == boucWenUkfIndexName(i) && !m_ukf->setBounds(i, b.lower, b.upper))
-                return false;
-    }
-    m_userBounds[name] = b;
-    m_bounds[name] = b;
+    if (m_ukf && !m_ukf->setBounds(kRobustUkfParameters[index], b.lower, b.upper))
+        return false;
+    m_userBounds[m_layout.name(index)] = b;
+    m_bounds[index] = b;
     return true;
 }
 
@@ -229,10 +196,10 @@ void RobustUkfIdentifier::startFilter(const AnchorJobResult& r, const BoucWenSta
         m_ukf.emplace(r.best, us, box);
     else
         m_ukf->setSettings(us);
-    for (BoucWenUkfIndex i : kRobustUkfParameters) {
-        m_ukf->setBounds(i, box[std::size_t(i)].lower, box[std::size_t(i)].upper);
-        m_bounds[boucWenUkfIndexName(i)] = {box[std::size_t(i)].lower,
-                                            box[std::size_t(i)].upper};
+    for (std::size_t j = 0; j < std::size(kRobustUkfParameters); ++j) {
+        const auto i = std::size_t(kRobustUkfParameters[j]);
+        m_ukf->setBounds(kRobustUkfParameters[j], box[i].lower, box[i].upper);
+        m_bounds[j] = {box[i].lower, box[i].upper};
     }
     m_ukf->restart(r.best, state, u, r.sd);
 }

@@ -91,17 +91,15 @@ public:
                         const RobustUkfSettings& settings = {});
 
     std::string methodName() const override { return "UKF (robust)"; }
-    std::vector<std::string> parameterNames() const override;
+    /// k0, alpha, beta, gamma, n, deltaNu, deltaEta, uRef, fRef (the scales are not
+    /// identified by the filter and have no bounds; their standard deviation is 0).
+    const ParameterLayout& layout() const override { return m_layout; }
     IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
-    ParameterValues estimate() const override;
-    ParameterValues standardDeviation() const override;
+    std::span<const double> estimate() const override { return m_estimate; }
+    std::span<const double> standardDeviation() const override { return m_stddev; }
     double predictedForce() const override { return m_predicted; }
-    const ParameterBoundsMap& bounds() const override { return m_bounds; }
-    bool setBounds(const std::string& name, const ParameterBounds& b) override;
-    // By position, every step (ModelUpdater): straight from the maps, no copies.
-    void estimateValues(std::vector<double>& out) const override;
-    void standardDeviationValues(std::vector<double>& out) const override;
-    void boundsValues(std::vector<ParameterBounds>& out) const override;
+    std::span<const ParameterBounds> bounds() const override { return m_bounds; }
+    bool setBounds(std::size_t index, const ParameterBounds& b) override;
 
     /// Seeding (before the first observe()): the anchor is the calibration of a previous
     /// test's record of the same kind of specimen (deformation and force in this test's
@@ -162,7 +160,7 @@ private:
 
     BoucWenParameters m_initial;
     std::optional<double> m_uRef, m_fRef;
-    ParameterBoundsMap m_userBounds, m_bounds;
+    ParameterBoundsMap m_userBounds; ///< as configured, by name (for the calibrations)
     RobustUkfSettings m_settings;
     std::optional<BoucWenUkf> m_ukf;
     BoucWenParameters m_anchor; ///< the last anchor (scales included)
@@ -191,9 +189,10 @@ private:
     double m_workerCpu = 0.0, m_anchorCpu = 0.0;
     int m_jobs = 0, m_waits = 0;
     double m_predicted = std::numeric_limits<double>::quiet_NaN();
-    ParameterValues m_estimate, m_stddev;
-    std::array<double*, 9> m_estimateSlot{}; ///< k0 ... deltaEta, uRef, fRef in m_estimate
-    std::array<double*, 7> m_stddevSlot{};
+    ParameterLayout m_layout;
+    // Published in layout order (kRobustUkfParameters, uRef, fRef); NaN bounds: none yet.
+    std::array<double, 9> m_estimate{}, m_stddev{};
+    std::array<ParameterBounds, 9> m_bounds{};
 };
 
 } // namespace hsmu

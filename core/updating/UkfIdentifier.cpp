@@ -12,17 +12,15 @@ constexpr BoucWenUkfIndex kParams[] = {BoucWenUkfIndex::K0,    BoucWenUkfIndex::
                                        BoucWenUkfIndex::N,     BoucWenUkfIndex::DeltaNu,
                                        BoucWenUkfIndex::DeltaEta};
 
-// kParams sorted by name: the order of estimate()'s map, i.e. estimateNames().
-const std::array<BoucWenUkfIndex, std::size(kParams)> kSorted = [] {
-    std::array<BoucWenUkfIndex, std::size(kParams)> a{};
-    std::copy(std::begin(kParams), std::end(kParams), a.begin());
-    std::sort(a.begin(), a.end(), [](BoucWenUkfIndex x, BoucWenUkfIndex y) {
-        return std::string(boucWenUkfIndexName(x)) < std::string(boucWenUkfIndexName(y));
-    });
-    return a;
-}();
-
 constexpr int at(BoucWenUkfIndex i) { return static_cast<int>(i); }
+
+std::vector<std::string> layoutNames()
+{
+    std::vector<std::string> names;
+    for (BoucWenUkfIndex i : kParams)
+        names.emplace_back(boucWenUkfIndexName(i));
+    return names;
+}
 
 std::optional<BoucWenUkfIndex> indexOf(const std::string& name)
 {
@@ -54,89 +52,29 @@ BoucWenUkf::BoundsArray toArray(const ParameterBoundsMap& bounds)
 
 UkfIdentifier::UkfIdentifier(const BoucWenParameters& initial,
                              const BoucWenUkfSettings& settings, const ParameterBoundsMap& bounds)
-    : m_ukf(initial, settings, toArray(bounds))
+    : m_ukf(initial, settings, toArray(bounds)), m_layout(layoutNames())
 {
-    for (BoucWenUkfIndex i : kParams) {
-        const auto& b = m_ukf.bounds()[static_cast<int>(i)];
-        m_bounds[boucWenUkfIndexName(i)] = {b.lower, b.upper};
+    for (std::size_t k = 0; k < std::size(kParams); ++k) {
+        const auto& b = m_ukf.bounds()[at(kParams[k])];
+        m_bounds[k] = {b.lower, b.upper};
     }
     publish(nullptr);
-}
-
-std::vector<std::string> UkfIdentifier::parameterNames() const
-{
-    std::vector<std::string> names;
-    for (BoucWenUkfIndex i : kParams)
-        names.emplace_back(boucWenUkfIndexName(i));
-    return names;
 }
 
 void UkfIdentifier::publish(const BoucWenUkfStep* step)
 {
     const BoucWenParameters p = step ? step->estimate : m_ukf.estimate();
-    m_estimate[at(BoucWenUkfIndex::K0)] = p.k0;
-    m_estimate[at(BoucWenUkfIndex::Alpha)] = p.alpha;
-    m_estimate[at(BoucWenUkfIndex::Beta)] = p.beta;
-    m_estimate[at(BoucWenUkfIndex::Gamma)] = p.gamma;
-    m_estimate[at(BoucWenUkfIndex::N)] = p.n;
-    m_estimate[at(BoucWenUkfIndex::DeltaNu)] = p.deltaNu;
-    m_estimate[at(BoucWenUkfIndex::DeltaEta)] = p.deltaEta;
+    m_estimate = {p.k0, p.alpha, p.beta, p.gamma, p.n, p.deltaNu, p.deltaEta}; // kParams order
     if (step) {
-        m_stddev = step->standardDeviation;
+        for (std::size_t k = 0; k < std::size(kParams); ++k)
+            m_stddev[k] = step->standardDeviation[std::size_t(at(kParams[k]))];
         return;
     }
     const Eigen::VectorXd sd = m_ukf.filter().initialized()
                                    ? m_ukf.filter().standardDeviations()
                                    : Eigen::VectorXd::Zero(kBoucWenUkfSize);
-    for (int i = 0; i < kBoucWenUkfSize; ++i)
-        m_stddev[i] = sd[i];
-}
-
-ParameterValues UkfIdentifier::estimate() const
-{
-    ParameterValues out;
-    for (BoucWenUkfIndex i : kParams)
-        out[boucWenUkfIndexName(i)] = m_estimate[at(i)];
-    return out;
-}
-
-ParameterValues UkfIdentifier::standardDeviation() const
-{
-    ParameterValues out;
-    for (BoucWenUkfIndex i : kParams)
-        out[boucWenUkfIndexName(i)] = m_stddev[at(i)];
-    return out;
-}
-
-std::vector<std::string> UkfIdentifier::estimateNames() const
-{
-    std::vector<std::string> names;
-    for (BoucWenUkfIndex i : kSorted)
-        names.emplace_back(boucWenUkfIndexName(i));
-    return names;
-}
-
-void UkfIdentifier::estimateValues(std::vector<double>& out) const
-{
-    out.resize(kSorted.size());
-    for (std::size_t k = 0; k < kSorted.size(); ++k)
-        out[k] = m_estimate[at(kSorted[k])];
-}
-
-void UkfIdentifier::standardDeviationValues(std::vector<double>& out) const
-{
-    out.resize(kSorted.size());
-    for (std::size_t k = 0; k < kSorted.size(); ++k)
-        out[k] = m_stddev[at(kSorted[k])];
-}
-
-void UkfIdentifier::boundsValues(std::vector<ParameterBounds>& out) const
-{
-    out.resize(kSorted.size());
-    for (std::size_t k = 0; k < kSorted.size(); ++k) {
-        const BoucWenUkf::Bounds& b = m_ukf.bounds()[at(kSorted[k])];
-        out[k] = {b.lower, b.upper};
-    }
+    for (std::size_t k = 0; k < std::size(kParams); ++k)
+        m_stddev[k] = sd[at(kParams[k])];
 }
 
 IdentificationStatus UkfIdentifier::observe(double deformation, double force, bool)
@@ -152,25 +90,22 @@ IdentificationStatus UkfIdentifier::observe(double deformation, double force, bo
     return st;
 }
 
-bool UkfIdentifier::setBounds(const std::string& name, const ParameterBounds& b)
+bool UkfIdentifier::setBounds(std::size_t index, const ParameterBounds& b)
 {
-    auto i = indexOf(name);
-    if (!i || !m_ukf.setBounds(*i, b.lower, b.upper))
+    if (index >= std::size(kParams) || !m_ukf.setBounds(kParams[index], b.lower, b.upper))
         return false;
-    m_bounds[name] = b;
+    m_bounds[index] = b;
     return true;
 }
 
-bool UkfIdentifier::setLocked(const std::string& name, bool locked)
+bool UkfIdentifier::setLocked(std::size_t index, bool locked)
 {
-    auto i = indexOf(name);
-    return i && m_ukf.setLocked(*i, locked);
+    return index < std::size(kParams) && m_ukf.setLocked(kParams[index], locked);
 }
 
-bool UkfIdentifier::locked(const std::string& name) const
+bool UkfIdentifier::locked(std::size_t index) const
 {
-    auto i = indexOf(name);
-    return i && m_ukf.locked(*i);
+    return index < std::size(kParams) && m_ukf.locked(kParams[index]);
 }
 
 } // namespace hsmu

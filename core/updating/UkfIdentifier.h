@@ -19,30 +19,28 @@ public:
                   const ParameterBoundsMap& bounds);
 
     std::string methodName() const override { return "UKF"; }
-    std::vector<std::string> parameterNames() const override;
+    /// k0, alpha, beta, gamma, n, deltaNu, deltaEta.
+    const ParameterLayout& layout() const override { return m_layout; }
     IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
-    ParameterValues estimate() const override;
-    ParameterValues standardDeviation() const override;
+    std::span<const double> estimate() const override { return m_estimate; }
+    std::span<const double> standardDeviation() const override { return m_stddev; }
     double predictedForce() const override { return m_predicted; }
-    const ParameterBoundsMap& bounds() const override { return m_bounds; }
-    bool setBounds(const std::string& name, const ParameterBounds& b) override;
-    std::vector<std::string> estimateNames() const override;
-    void estimateValues(std::vector<double>& out) const override;
-    void standardDeviationValues(std::vector<double>& out) const override;
-    void boundsValues(std::vector<ParameterBounds>& out) const override;
+    std::span<const ParameterBounds> bounds() const override { return m_bounds; }
+    bool setBounds(std::size_t index, const ParameterBounds& b) override;
 
     BoucWenUkf& filter() { return m_ukf; }
     /// Lock a parameter at its current estimate (or unlock it).
-    bool setLocked(const std::string& name, bool locked) override;
-    bool locked(const std::string& name) const override;
+    bool setLocked(std::size_t index, bool locked) override;
+    bool locked(std::size_t index) const override;
     bool canLock() const override { return true; }
 
 private:
     void publish(const BoucWenUkfStep* step);
     BoucWenUkf m_ukf;
-    ParameterBoundsMap m_bounds;
-    // The published estimate and standard deviations, indexed by BoucWenUkfIndex.
-    std::array<double, kBoucWenUkfSize> m_estimate{}, m_stddev{};
+    ParameterLayout m_layout;
+    // The published estimate, standard deviations and bounds, in layout order.
+    std::array<double, 7> m_estimate{}, m_stddev{};
+    std::array<ParameterBounds, 7> m_bounds{};
     double m_predicted = 0.0;
 };
 

@@ -154,11 +154,11 @@ void PendingUpdatesPanel::fillProposal(QTreeWidgetItem* top, const UpdateProposa
     top->setText(Parameter, title);
     top->setToolTip(Parameter, title);
     int k = 0;
-    for (const auto& [name, proposed] : p.proposed) {
+    for (std::size_t j = 0; j < p.proposed.size(); ++j) {
         QTreeWidgetItem* row = top->child(k++);
-        const auto it = p.current.find(name);
-        const double current = it == p.current.end() ? std::nan("") : it->second;
-        row->setText(Parameter, QString::fromStdString(name));
+        const double proposed = p.proposed[j];
+        const double current = j < p.current.size() ? p.current[j] : std::nan("");
+        row->setText(Parameter, QString::fromStdString(p.parameters.name(j)));
         row->setText(Current, QString::number(current, 'g', 5));
         row->setText(Proposed, QString::number(proposed, 'g', 5));
         row->setText(Change, current != 0.0 && std::isfinite(current)

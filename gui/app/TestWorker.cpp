@@ -28,10 +28,10 @@ std::string number(double v) {
     return o.str();
 }
 
-std::string valuesText(const ParameterValues& values) {
+std::string valuesText(const ParameterLayout& names, const std::vector<double>& values) {
     std::string out;
-    for (const auto& [name, v] : values)
-        out += (out.empty() ? "" : ", ") + name + "=" + number(v);
+    for (std::size_t k = 0; k < names.size() && k < values.size(); ++k)
+        out += (out.empty() ? "" : ", ") + names.name(k) + "=" + number(values[k]);
     return out;
 }
 
@@ -219,11 +219,11 @@ void TestWorker::setParameterBounds(const QString& name, double lower, double up
     if (!(lower <= upper) || !std::isfinite(lower) || !std::isfinite(upper))
         return emit commandRefused(
             tr("%1: the lower bound must be a number not above the upper bound").arg(name));
-    ParameterBounds before{std::nan(""), std::nan("")};
-    if (const auto it = u->identifier().bounds().find(name.toStdString());
-        it != u->identifier().bounds().end())
-        before = it->second;
-    if (!u->identifier().setBounds(name.toStdString(), {lower, upper}))
+    // The name from the console's table, resolved once; an unknown one is refused below.
+    const std::optional<std::size_t> index = u->identifier().layout().find(name.toStdString());
+    const ParameterBounds before =
+        index ? u->identifier().bounds()[*index] : ParameterBounds{std::nan(""), std::nan("")};
+    if (!index || !u->identifier().setBounds(*index, {lower, upper}))
         return emit commandRefused(tr("%1: bounds [%2, %3] refused (they would not keep the "
                                       "law admissible)")
                                        .arg(name)
@@ -239,7 +239,8 @@ void TestWorker::setParameterLocked(const QString& name, bool locked) {
     ModelUpdater* u = test().updater();
     if (!u)
         return emit commandRefused(tr("this test has no model updating"));
-    if (!u->identifier().setLocked(name.toStdString(), locked))
+    const std::optional<std::size_t> index = u->identifier().layout().find(name.toStdString());
+    if (!index || !u->identifier().setLocked(*index, locked))
         return emit commandRefused(
             tr("%1: the %2 cannot lock this parameter")
                 .arg(name, QString::fromStdString(u->identifier().methodName())));
@@ -270,11 +271,11 @@ void TestWorker::approveUpdate(int proposalId) {
     } else if (proposal) {
         logEvent(OperatorEvent::kApprove,
                  proposalTag(proposalId) + " " + proposal->element + " " +
-                     valuesText(proposal->current),
-                 valuesText(proposal->proposed));
+                     valuesText(proposal->parameters, proposal->current),
+                 valuesText(proposal->parameters, proposal->proposed));
         m_session->noteApproved({test().currentStep(), test().time(), proposal->element,
-                                 proposal->proposed, true, {}, UpdateDecision::Applied,
-                                 proposalId});
+                                 proposal->parameters, proposal->proposed, true, {},
+                                 UpdateDecision::Applied, proposalId});
     }
     publishAlarms();
     publishUpdating();
@@ -290,11 +291,13 @@ void TestWorker::rejectUpdate(int proposalId) {
         emit commandRefused(tr("update #%1 is no longer pending").arg(proposalId));
     } else {
         logEvent(OperatorEvent::kReject, proposalTag(proposalId),
-                 "rejected " + proposal->element + " " + valuesText(proposal->proposed));
+                 "rejected " + proposal->element + " " +
+                     valuesText(proposal->parameters, proposal->proposed));
         // In /updating/events too (decision "rejected"), with the next committed step.
         m_session->noteApproved({test().currentStep(), test().time(), proposal->element,
-                                 proposal->proposed, false, "rejected by the operator",
-                                 UpdateDecision::Rejected, proposalId});
+                                 proposal->parameters, proposal->proposed, false,
+                                 "rejected by the operator", UpdateDecision::Rejected,
+                                 proposalId});
     }
     publishUpdating();
 }

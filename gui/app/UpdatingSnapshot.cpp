@@ -6,6 +6,8 @@
 #include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
 
+#include <cmath>
+
 namespace hsmu::gui {
 
 const ParameterState* UpdatingSnapshot::parameter(const std::string& name) const {
@@ -25,19 +27,14 @@ UpdatingSnapshot snapshotOf(const HybridTest& test) {
     const Identifier& id = u->identifier();
     s.specimen = u->specimenElement();
     s.method = id.methodName();
-    const ParameterValues estimate = id.estimate();
-    const ParameterValues sigma = id.standardDeviation();
-    const ParameterBoundsMap& bounds = id.bounds();
-    for (const std::string& name : id.parameterNames()) {
+    for (std::size_t k = 0; k < id.layout().size(); ++k) {
         ParameterState p;
-        p.name = name;
-        if (auto it = estimate.find(name); it != estimate.end())
-            p.value = it->second;
-        if (auto it = sigma.find(name); it != sigma.end())
-            p.sigma = it->second;
-        if (auto it = bounds.find(name); it != bounds.end())
-            p.bounds = it->second;
-        p.locked = id.locked(name);
+        p.name = id.layout().name(k);
+        p.value = id.estimate()[k];
+        p.sigma = id.standardDeviation()[k];
+        if (!std::isnan(id.bounds()[k].lower))
+            p.bounds = id.bounds()[k];
+        p.locked = id.locked(k);
         s.parameters.push_back(p);
     }
     s.canLock = id.canLock();
@@ -49,8 +46,8 @@ UpdatingSnapshot snapshotOf(const HybridTest& test) {
         ParameterValues& values = s.targets[t.element];
         if (law)
             for (const std::string& name : t.parameters)
-                if (auto v = law->parameter(name))
-                    values[name] = *v;
+                if (const int i = law->parameterIndex(name); i >= 0)
+                    values[name] = law->parameterValue(i);
     }
     s.policy = r.policy();
     s.everyN = r.everyN();

@@ -6,6 +6,7 @@
 // a Bouc-Wen law, docs/method.md, Normalized units); times in s.
 // Thread rules: plain data; snapshotOf() on the thread that runs the test.
 
+#include "core/identification/ParameterSet.h"
 #include "core/updating/Reporter.h"
 
 #include <QMetaType>

@@ -9,6 +9,7 @@
 //  - the preset run as the docs say (the helper on its default port, `hsmu run`);
 //  - no helper listening: the test holds with a message naming the site.
 #include "comms/link/ControlFactory.h"
+#include "tests/support/LawByName.h"
 #include "comms/openfresco/OfSocket.h"
 #include "comms/openfresco/OpenSeesTwinLaw.h"
 #include "core/config/ConfigLoader.h"
@@ -162,7 +163,7 @@ private slots:
                     QCOMPARE(local.setParameterValues(idx, vals, true), -1);
                 }
             }
-            QCOMPARE(twin.parameter("n").value(), local.parameter("n").value());
+            QCOMPARE(test::parameterNamed(twin, "n").value(), test::parameterNamed(local, "n").value());
             QVERIFY(twin.roundTrips() >= 400);
         }
         endHelper(helper);

@@ -193,8 +193,9 @@ private slots:
             p.step = id * 10;
             p.time = id * 0.1;
             p.element = "Element 2";
-            p.proposed = {{"k0", k0}};
-            p.current = {{"k0", 1.0}};
+            p.parameters = ParameterLayout({"k0"});
+            p.proposed = {k0};
+            p.current = {1.0};
             p.fitError = 0.0125;
             return p;
         };

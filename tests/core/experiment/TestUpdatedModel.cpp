@@ -7,6 +7,7 @@
 // Raising k five-fold gives omega = 20 sqrt(5) = 44.72 rad/s, omega dt = 2.236 > 2.
 
 #include "core/experiment/HybridTest.h"
+#include "tests/support/LawByName.h"
 #include "core/hysteresis/LinearElastic.h"
 #include "core/integration/ExplicitNewmark.h"
 #include "core/structure/SpringElement.h"
@@ -64,7 +65,7 @@ private slots:
 
         // k x 5 (as an applied update would set it).
         HysteresisLaw* law = t->structure().elements()[0]->law();
-        QVERIFY(law->setParameter("k", 4000.0));
+        QVERIFY(test::setParameterNamed(*law, "k", 4000.0));
         t->revisitUpdatedModel();
         QVERIFY(std::abs(t->updatedStability().omegaMax - 20.0 * std::sqrt(5.0)) <
                 1e-9 * 44.72);
@@ -82,7 +83,7 @@ private slots:
         QCOMPARE(t->state(), HybridTest::State::Running);
 
         // Back within the limit: an Info alarm.
-        QVERIFY(law->setParameter("k", 1000.0));
+        QVERIFY(test::setParameterNamed(*law, "k", 1000.0));
         t->revisitUpdatedModel();
         QVERIFY(t->updatedStability().stable);
         QCOMPARE(stabilityAlarms(*t, AlarmSeverity::Info), std::size_t(1));

@@ -3,6 +3,7 @@
 // LawStatus is compared with QVERIFY(a == b): QCOMPARE would pick hsmu::toString by ADL.
 
 #include "core/hysteresis/Bilinear.h"
+#include "tests/support/LawByName.h"
 
 #include "LawTestSupport.h"
 
@@ -159,14 +160,14 @@ void TestBilinear::stateAndParameters() {
         QVERIFY(law.trialForce() == f && law.committedForce() == f);
     }
     QVERIFY(law.parameterNames() == (std::vector<std::string>{"k0", "fy", "b"}));
-    QCOMPARE(*law.parameter("fy"), kPaper.fy);
-    QVERIFY(!law.parameter("E").has_value());
-    QVERIFY(!law.setParameter("b", 1.0));
-    QVERIFY(!law.setParameter("fy", 0.0));
-    QVERIFY(!law.setParameter("k0", std::numeric_limits<double>::quiet_NaN()));
-    QVERIFY(!law.setParameter("E", 1.0));
+    QCOMPARE(*test::parameterNamed(law, "fy"), kPaper.fy);
+    QVERIFY(!test::parameterNamed(law, "E").has_value());
+    QVERIFY(!test::setParameterNamed(law, "b", 1.0));
+    QVERIFY(!test::setParameterNamed(law, "fy", 0.0));
+    QVERIFY(!test::setParameterNamed(law, "k0", std::numeric_limits<double>::quiet_NaN()));
+    QVERIFY(!test::setParameterNamed(law, "E", 1.0));
     // A new k0 keeps (up, q): the committed force is re-evaluated as k0 (u - up).
-    QVERIFY(law.setParameter("k0", 2.0 * kPaper.k0));
+    QVERIFY(test::setParameterNamed(law, "k0", 2.0 * kPaper.k0));
     QVERIFY(law.committedState().plasticDeformation == s.plasticDeformation);
     QVERIFY(near(law.committedForce(), 2.0 * kPaper.k0 * (10.0 - s.plasticDeformation), f));
     law.revertToStart();

@@ -2,6 +2,7 @@
 // refinement and against an independent RK4 integration of the ODE (BoucWenReference.h).
 
 #include "core/hysteresis/BoucWen.h"
+#include "tests/support/LawByName.h"
 
 #include "BoucWenReference.h"
 #include "LawTestSupport.h"
@@ -384,24 +385,24 @@ void TestBoucWen::parametersByName() {
                                             "deltaA", "deltaNu", "deltaEta", "uRef", "fRef"};
     QVERIFY(law.parameterNames() == expected);
     QCOMPARE(law.lawName(), std::string("boucWen"));
-    QCOMPARE(*law.parameter("beta"), 3.0);
-    QVERIFY(!law.parameter("delta").has_value());
+    QCOMPARE(*test::parameterNamed(law, "beta"), 3.0);
+    QVERIFY(!test::parameterNamed(law, "delta").has_value());
     QVERIFY(drive(law, sineHistory(3.0 * p.uRef, 1, 100)).ok);
     const BoucWenState s = law.committedState();
     const double f = law.committedForce();
     // k0 scales the force at fixed (x, z): the committed force doubles, z and e are kept.
-    QVERIFY(law.setParameter("k0", 2.0 * p.k0));
+    QVERIFY(test::setParameterNamed(law, "k0", 2.0 * p.k0));
     QVERIFY(law.committedState().z == s.z && law.committedState().e == s.e);
     QVERIFY(std::abs(law.committedForce() - 2.0 * f) <= 1e-14 * std::abs(f));
     QVERIFY(law.trialForce() == law.committedForce());
     // Rejected values leave the parameters unchanged.
-    QVERIFY(!law.setParameter("alpha", 1.5));
-    QVERIFY(!law.setParameter("gamma", -3.5)); // beta + gamma <= 0
-    QVERIFY(!law.setParameter("uRef", 0.0));
-    QVERIFY(!law.setParameter("n", std::numeric_limits<double>::quiet_NaN()));
-    QVERIFY(!law.setParameter("nope", 1.0));
-    QCOMPARE(*law.parameter("alpha"), p.alpha);
-    QCOMPARE(*law.parameter("gamma"), p.gamma);
+    QVERIFY(!test::setParameterNamed(law, "alpha", 1.5));
+    QVERIFY(!test::setParameterNamed(law, "gamma", -3.5)); // beta + gamma <= 0
+    QVERIFY(!test::setParameterNamed(law, "uRef", 0.0));
+    QVERIFY(!test::setParameterNamed(law, "n", std::numeric_limits<double>::quiet_NaN()));
+    QVERIFY(!test::setParameterNamed(law, "nope", 1.0));
+    QCOMPARE(*test::parameterNamed(law, "alpha"), p.alpha);
+    QCOMPARE(*test::parameterNamed(law, "gamma"), p.gamma);
     QVERIFY(!BoucWen::admissible(BoucWenParameters{.k0 = -1.0}));
     QVERIFY(BoucWen::admissible(BoucWenParameters{}));
 }

@@ -3,6 +3,7 @@
 // pinched loop shape, the HysteresisLaw contract.
 
 #include "core/config/ConfigLoader.h"
+#include "tests/support/LawByName.h"
 #include "core/config/TestFactory.h"
 #include "core/experiment/HybridTest.h"
 #include "core/hysteresis/BoucWen.h"
@@ -295,35 +296,35 @@ void TestBoucWenPinching::parametersByNameAndIndex() {
     for (std::size_t i = 0; i < bwNames.size(); ++i) {
         QCOMPARE(names[i], bwNames[i]);
     }
-    QCOMPARE(*law.parameter("zetaS"), 0.8);
-    QCOMPARE(*law.parameter("lambda"), 0.5);
-    QVERIFY(!law.parameter("zeta").has_value());
-    QVERIFY(law.setParameter("psi", 0.3));
+    QCOMPARE(*test::parameterNamed(law, "zetaS"), 0.8);
+    QCOMPARE(*test::parameterNamed(law, "lambda"), 0.5);
+    QVERIFY(!test::parameterNamed(law, "zeta").has_value());
+    QVERIFY(test::setParameterNamed(law, "psi", 0.3));
     QCOMPARE(law.parameters().pinching.psi, 0.3);
-    QVERIFY(!law.setParameter("zetaS", 1.0)); // h could reach 0
-    QVERIFY(!law.setParameter("psi", 0.0));
-    QVERIFY(!law.setParameter("q", -0.1));
-    QVERIFY(!law.setParameter("nope", 1.0));
-    QCOMPARE(*law.parameter("zetaS"), 0.8);
+    QVERIFY(!test::setParameterNamed(law, "zetaS", 1.0)); // h could reach 0
+    QVERIFY(!test::setParameterNamed(law, "psi", 0.0));
+    QVERIFY(!test::setParameterNamed(law, "q", -0.1));
+    QVERIFY(!test::setParameterNamed(law, "nope", 1.0));
+    QCOMPARE(*test::parameterNamed(law, "zetaS"), 0.8);
     const int zetaS = law.parameterIndex("zetaS"), k0 = law.parameterIndex("k0");
     const int lambda = law.parameterIndex("lambda");
     const int idx[] = {k0, zetaS, lambda};
     const double bad[] = {2.0, 0.5, -1.0};
     QCOMPARE(law.setParameterValues(idx, bad, true), 2);
-    QCOMPARE(*law.parameter("k0"), 1.0);
+    QCOMPARE(*test::parameterNamed(law, "k0"), 1.0);
     QCOMPARE(law.setParameterValues(idx, bad, false), 2);
-    QCOMPARE(*law.parameter("k0"), 2.0);
-    QCOMPARE(*law.parameter("zetaS"), 0.5);
-    QCOMPARE(*law.parameter("lambda"), 0.5);
+    QCOMPARE(*test::parameterNamed(law, "k0"), 2.0);
+    QCOMPARE(*test::parameterNamed(law, "zetaS"), 0.5);
+    QCOMPARE(*test::parameterNamed(law, "lambda"), 0.5);
 }
 
 void TestBoucWenPinching::factoryBuildsTheLaw() {
     const auto law = makeLaw("boucWenPinching", {{"k0", 2.0}, {"zetaS", 0.6}, {"lambda", 0.3}});
     QCOMPARE(law->lawName(), std::string("boucWenPinching"));
-    QCOMPARE(*law->parameter("k0"), 2.0);
-    QCOMPARE(*law->parameter("zetaS"), 0.6);
-    QCOMPARE(*law->parameter("lambda"), 0.3);
-    QCOMPARE(*law->parameter("psi"), 0.2); // default
+    QCOMPARE(*test::parameterNamed(*law, "k0"), 2.0);
+    QCOMPARE(*test::parameterNamed(*law, "zetaS"), 0.6);
+    QCOMPARE(*test::parameterNamed(*law, "lambda"), 0.3);
+    QCOMPARE(*test::parameterNamed(*law, "psi"), 0.2); // default
     QCOMPARE(makeLaw("bouc-wen-pinching", {})->lawName(), std::string("boucWenPinching"));
     try {
         makeLaw("boucWenPinching", {{"zeta", 0.5}});

@@ -3,6 +3,7 @@
 // the law, the parameter and what was expected.
 
 #include "core/hysteresis/LawFactory.h"
+#include "tests/support/LawByName.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
 
@@ -55,23 +56,23 @@ void TestLawFactory::makesEachLawWithDefaults() {
     QCOMPARE(makeLaw("bouc-wen", {})->lawName(), std::string("boucWen"));
     QCOMPARE(makeLaw("BoucWen", {})->lawName(), std::string("boucWen"));
     const auto bw = makeLaw("boucWen", {});
-    QCOMPARE(*bw->parameter("beta"), 3.0);
-    QCOMPARE(*bw->parameter("uRef"), 1.0);
+    QCOMPARE(*test::parameterNamed(*bw, "beta"), 3.0);
+    QCOMPARE(*test::parameterNamed(*bw, "uRef"), 1.0);
     const auto bl = makeLaw("bilinear", {});
-    QCOMPARE(*bl->parameter("k0"), 1.0);
-    QCOMPARE(*bl->parameter("fy"), 1.0);
-    QCOMPARE(*bl->parameter("b"), 0.1);
+    QCOMPARE(*test::parameterNamed(*bl, "k0"), 1.0);
+    QCOMPARE(*test::parameterNamed(*bl, "fy"), 1.0);
+    QCOMPARE(*test::parameterNamed(*bl, "b"), 0.1);
 }
 
 void TestLawFactory::appliesGivenParameters() {
     const auto bw = makeLaw("boucWen", {{"k0", 1.2}, {"n", 1.5}, {"deltaNu", 0.05}});
-    QCOMPARE(*bw->parameter("k0"), 1.2);
-    QCOMPARE(*bw->parameter("n"), 1.5);
-    QCOMPARE(*bw->parameter("deltaNu"), 0.05);
-    QCOMPARE(*bw->parameter("alpha"), 0.02); // default kept
+    QCOMPARE(*test::parameterNamed(*bw, "k0"), 1.2);
+    QCOMPARE(*test::parameterNamed(*bw, "n"), 1.5);
+    QCOMPARE(*test::parameterNamed(*bw, "deltaNu"), 0.05);
+    QCOMPARE(*test::parameterNamed(*bw, "alpha"), 0.02); // default kept
     // beta + gamma > 0 is checked on the final set, whatever the order of the names.
     const auto sum = makeLaw("boucWen", {{"beta", -1.0}, {"gamma", 1.5}});
-    QCOMPARE(*sum->parameter("beta"), -1.0);
+    QCOMPARE(*test::parameterNamed(*sum, "beta"), -1.0);
 
     const auto bl = makeLaw("bilinear", {{"k0", 1.015}, {"fy", 2.8}, {"b", 0.1}});
     QVERIFY(bl->setTrialDeformation(1.0) == LawStatus::Ok);
@@ -90,11 +91,11 @@ void TestLawFactory::acceptsEveryParameterNameOfTheLaw() {
         const auto law = makeLaw(name, {});
         std::map<std::string, double> params;
         for (const std::string& p : law->parameterNames()) {
-            params[p] = *law->parameter(p);
+            params[p] = *test::parameterNamed(*law, p);
         }
         const auto again = makeLaw(name, params);
         for (const std::string& p : law->parameterNames()) {
-            QCOMPARE(*again->parameter(p), params[p]);
+            QCOMPARE(*test::parameterNamed(*again, p), params[p]);
         }
     }
 }

@@ -6,6 +6,7 @@
 
 #include "core/hysteresis/LinearElastic.h"
 
+#include <cmath>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -38,8 +39,11 @@ public:
         return std::make_unique<FailingLaw>(*this);
     }
     std::vector<std::string> parameterNames() const override { return {}; }
-    std::optional<double> parameter(const std::string&) const override { return std::nullopt; }
-    bool setParameter(const std::string&, double) override { return false; }
+    double parameterValue(int) const override { return std::nan(""); }
+    int setParameterValues(std::span<const int> indices, std::span<const double>,
+                           bool) override {
+        return indices.empty() ? -1 : 0;
+    }
 
 private:
     double m_u = 0.0;

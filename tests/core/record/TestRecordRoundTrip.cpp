@@ -167,9 +167,9 @@ void TestRecordRoundTrip::fullRunRoundTrips() {
         QCOMPARE(d.updateEvents[k].element, events[k].element);
         QCOMPARE(d.updateEvents[k].decision, std::string("applied"));
         for (Eigen::Index j = 0; j < nPar; ++j) {
-            const auto it = events[k].applied.find(layout.updating->parameters[std::size_t(j)]);
+            const auto at = events[k].parameters.find(layout.updating->parameters[std::size_t(j)]);
             const double v = d.updateEvents[k].values[std::size_t(j)];
-            QVERIFY(it == events[k].applied.end() ? std::isnan(v) : same(v, it->second));
+            QVERIFY(!at ? std::isnan(v) : same(v, events[k].applied[*at]));
         }
     }
 

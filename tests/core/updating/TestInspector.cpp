@@ -122,19 +122,50 @@ private slots:
         s.pinnedTime = 1.0;
         Inspector insp(s, 0.01);
         std::vector<Alarm> alarms;
-        ParameterBoundsMap bounds{{"alpha", {0.001, 0.05}}, {"k0", {0.7, 1.4}}};
+        const ParameterLayout layout({"alpha", "k0"});
+        const std::vector<ParameterBounds> bounds{{0.001, 0.05}, {0.7, 1.4}};
         int firstAlarmStep = -1;
         for (int i = 1; i <= 300; ++i) {
-            ParameterValues v{{"alpha", i > 50 ? 0.05 : 0.03}, {"k0", 1.0}};
+            const std::vector<double> v{i > 50 ? 0.05 : 0.03, 1.0};
             InspectorInput in = input(i, 0.01, 1.0, 1.0);
-            in.parameters = &v;
-            in.bounds = &bounds;
+            in.parameters = &layout;
+            in.parameterValues = v;
+            in.parameterBounds = bounds;
             insp.observe(in, alarms);
             if (firstAlarmStep < 0 && count(alarms, AlarmKind::ParameterPinned) > 0)
                 firstAlarmStep = i;
         }
         QCOMPARE(count(alarms, AlarmKind::ParameterPinned), 1);
         QCOMPARE(firstAlarmStep, 151); // pinned from step 51 (t = 0.51 s) for 1.0 s
+    }
+
+    // Parameters by position: each value is checked against the bound at its own position
+    // (not its neighbour's), NaN bounds are skipped, and alarms raised together come in name
+    // order whatever the layout's order.
+    void pinnedChecksEachPositionAgainstItsOwnBound()
+    {
+        InspectorSettings s;
+        s.pinnedTime = 0.5;
+        Inspector insp(s, 0.01);
+        std::vector<Alarm> alarms;
+        const ParameterLayout layout({"n", "k0", "beta", "alpha"});
+        const double nan = std::nan("");
+        // n on its upper bound, k0 inside its own bounds (on n's lower one), beta unbounded at
+        // a value equal to alpha's upper bound, alpha on its lower bound.
+        const std::vector<ParameterBounds> bounds{{1.0, 3.0}, {0.7, 1.4}, {nan, nan}, {0.001, 0.05}};
+        const std::vector<double> v{3.0, 1.0, 0.05, 0.001};
+        for (int i = 1; i <= 100; ++i) {
+            InspectorInput in = input(i, 0.01, 1.0, 1.0);
+            in.parameters = &layout;
+            in.parameterValues = v;
+            in.parameterBounds = bounds;
+            insp.observe(in, alarms);
+        }
+        std::vector<std::string> pinned;
+        for (const Alarm& a : alarms)
+            if (a.kind == AlarmKind::ParameterPinned)
+                pinned.push_back(a.message.substr(0, a.message.find(' ')));
+        QCOMPARE(pinned, (std::vector<std::string>{"alpha", "n"}));
     }
 
     void trackingIndicesOfADelayedScaledSignal()

@@ -6,6 +6,7 @@
 // calibration's NRMSE (docs/validation.md), the Bouc-Wen and the pinching law.
 
 #include "core/hysteresis/BoucWen.h"
+#include "tests/support/IdentifierByName.h"
 #include "core/identification/CalibrationDefaults.h"
 #include "core/identification/HistoryFit.h"
 #include "core/offline/OfflineIdentification.h"
@@ -56,7 +57,7 @@ Run runOnline(const std::vector<double>& u, const std::vector<double>& f, bool c
     }
     std::map<std::string, double> all = {{"uRef", start.uRef}, {"fRef", start.fRef},
                                          {"A0", 1.0},          {"deltaA", 0.0}};
-    for (const auto& [name, v] : id.estimate())
+    for (const auto& [name, v] : test::estimateByName(id))
         all[name] = v;
     r.nrmse = HistoryFit::rmsError("boucWen", all, u, f, 0) / rms(f);
     r.triggers = id.triggers();

@@ -3,6 +3,8 @@
 // the auxiliary model's fit, bounds on every step, no NaN into a numerical element, fracture
 // detection time, a bound changed mid-run, and the diverging-estimator hold.
 #include "core/config/ConfigLoader.h"
+#include "tests/support/IdentifierByName.h"
+#include "tests/support/LawByName.h"
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/structure/Structure.h"
@@ -40,13 +42,13 @@ struct Watch final : StepObserver {
         for (std::size_t i = 0; i < names.size(); ++i) {
             const double v = r.updating.parameters[i];
             nonFinite += !std::isfinite(v) || !std::isfinite(r.updating.stddev[i]);
-            const auto& b = bounds.at(names[i]);
+            const auto& b = bounds[i];
             outside += v < b.lower || v > b.upper;
         }
         for (const auto& e : test->structure().elements())
             if (const HysteresisLaw* law = e->law())
-                for (const auto& n : law->parameterNames())
-                    nonFinite += !std::isfinite(*law->parameter(n));
+                for (std::size_t n = 0; n < law->parameterNames().size(); ++n)
+                    nonFinite += !std::isfinite(law->parameterValue(int(n)));
         fm.push_back(r.elements[0].force);
         faux.push_back(r.updating.auxiliaryForce);
     }
@@ -143,7 +145,7 @@ private slots:
         for (int i = 0; i < 300; ++i)
             test->step();
         // Pin k0 into [1.3, 1.35]: every later estimate obeys it, from the next step on.
-        QVERIFY(test->updater()->identifier().setBounds("k0", {1.3, 1.35}));
+        QVERIFY(test::setBoundsOf(test->updater()->identifier(), "k0", {1.3, 1.35}));
         std::vector<double> k0;
         struct K0 final : StepObserver {
             std::vector<double>* out;
@@ -158,7 +160,7 @@ private slots:
         for (double v : k0)
             QVERIFY2(v >= 1.3 && v <= 1.35, qPrintable(QString::number(v)));
         // ... and it reached the numerical twin (policy everyStep).
-        const double twin = *test->structure().element("Element 2")->law()->parameter("k0");
+        const double twin = *test::parameterNamed(*test->structure().element("Element 2")->law(), "k0");
         QVERIFY(twin >= 1.3 && twin <= 1.35);
         QCOMPARE(w.nonFinite, 0);
     }
@@ -173,7 +175,7 @@ private slots:
         for (int i = 0; i < 200; ++i)
             test->step();
         HysteresisLaw* twin = test->structure().element("Element 2")->law();
-        const double before = *twin->parameter("k0");
+        const double before = *test::parameterNamed(*twin, "k0");
         auto& pending = test->updater()->reporter().pending();
         // 200 steps of proposals, none replaced: the queue is full (its capacity), the offers
         // beyond it counted and reported once as an alarm.
@@ -186,14 +188,14 @@ private slots:
         QCOMPARE(full, 1);
         const UpdateProposal p = pending.front();
         QVERIFY(test->rejectUpdate(p.id));
-        QCOMPARE(*twin->parameter("k0"), before);
+        QCOMPARE(*test::parameterNamed(*twin, "k0"), before);
         QCOMPARE(int(pending.size()), capacity - 1);
         test->step(); // room for one more, at the end of the queue
         QCOMPARE(int(pending.size()), capacity);
         const UpdateProposal q = test->updater()->reporter().pending().back();
         QVERIFY(q.step > p.step);
         QVERIFY(test->approveUpdate(q.id));
-        QCOMPARE(*twin->parameter("k0"), q.proposed.at("k0"));
+        QCOMPARE(*test::parameterNamed(*twin, "k0"), q.proposed.at(q.parameters.indexOf("k0", "test")));
     }
 
     void bridgeBearingBFollowsTheReference()
@@ -229,9 +231,9 @@ private slots:
         // far fewer than the 30 s record's steps.
         QVERIFY(triggers <= 30);
         QVERIFY(test->updater()->reporter().appliedCount() >= 1);
-        const double fy = *test->structure().element("Twin")->law()->parameter("fy");
+        const double fy = *test::parameterNamed(*test->structure().element("Twin")->law(), "fy");
         QVERIFY(fy != 2.8); // the twin took fitted values
-        const auto& b = test->updater()->identifier().bounds().at("fy");
+        const auto& b = test::boundsOf(test->updater()->identifier(), "fy");
         QVERIFY(fy >= b.lower && fy <= b.upper);
     }
 };

@@ -6,6 +6,7 @@
 // (docs/validation.md, pinching table) without a divergence.
 
 #include "core/config/JsonCursor.h"
+#include "tests/support/IdentifierByName.h"
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/offline/OfflineIdentification.h"
 #include "core/updating/PinchingUkfIdentifier.h"
@@ -95,13 +96,13 @@ private slots:
                 qInfo("  %zu: %s", k, st.message.c_str());
             rejected += !st.ok;
             unreportable += !st.reportable;
-            for (const auto& [name, v] : id.estimate())
+            for (const auto& [name, v] : test::estimateByName(id))
                 QVERIFY2(std::isfinite(v), name.c_str());
         }
         // the final estimate replayed from the virgin state against the noise-free force
         BoucWenPinchingParameters p = start;
         for (int j = 0; j < kPinchingUkfParameters; ++j)
-            PinchingUkf::field(p, j) = id.estimate().at(pinchingUkfParameterNames()[std::size_t(j)]);
+            PinchingUkf::field(p, j) = test::estimateOf(id, pinchingUkfParameterNames()[std::size_t(j)]);
         BoucWenPinching fitted(p);
         const std::vector<double> g = testing::forcesOf(fitted, u);
         std::vector<double> diff(u.size());
@@ -124,9 +125,9 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  PinchingUkfIdentifier(truth(), 1.0, 1.0, {{"A0", {0.5, 2.0}}}));
         PinchingUkfIdentifier id(truth(), std::nullopt, std::nullopt, {});
-        QVERIFY(id.setBounds("zetaS", {0.0, 0.9}));
-        QVERIFY(!id.setBounds("uRef", {0.0, 1.0}));
-        QCOMPARE(id.parameterNames().size(), std::size_t(15));
+        QVERIFY(test::setBoundsOf(id, "zetaS", {0.0, 0.9}));
+        QVERIFY(!test::setBoundsOf(id, "uRef", {0.0, 1.0}));
+        QCOMPARE(id.layout().size(), std::size_t(15));
         // the factory: "method": "ukf" with a pinching model is this identifier (robust
         // formulation); the paper's formulation is refused, naming the field
         SpecimenHistory h;

@@ -6,6 +6,7 @@
 #include "core/structure/SpringElement.h"
 #include "core/structure/Structure.h"
 #include "core/updating/Reporter.h"
+#include "tests/support/LawByName.h"
 
 #include <QtTest>
 
@@ -41,7 +42,26 @@ struct Rig {
     HysteresisLaw& law() { return *s.element("Target")->law(); }
 };
 
-ParameterValues estimate(double k0) { return {{"k0", k0}, {"alpha", 0.04}, {"A0", 2.0}}; }
+/// The identifier's layout these tests offer in, and an estimate in it.
+const ParameterLayout kIdentified({"k0", "alpha", "A0"});
+std::vector<double> estimate(double k0) { return {k0, 0.04, 2.0}; }
+
+/// Offer `values` (kIdentified order) once bound to `s`; the events decided.
+std::vector<UpdateEvent> offer(Reporter& r, int step, double time,
+                               const std::vector<double>& values, Structure& s)
+{
+    std::vector<UpdateEvent> events;
+    if (r.bind(s, kIdentified, nullptr))
+        r.offer(step, time, values, s, events);
+    return events;
+}
+
+/// The value of parameter `name` among `values` in `names` order.
+double valueOf(const ParameterLayout& names, const std::vector<double>& values,
+               const std::string& name)
+{
+    return values.at(names.indexOf(name, "test"));
+}
 
 std::vector<ReporterTarget> oneTarget()
 {
@@ -53,80 +73,57 @@ std::vector<ReporterTarget> oneTarget()
 class TestReporter : public QObject {
     Q_OBJECT
 private slots:
-    void offerValuesEqualsOffer_data()
+    // Values by position in the identifier's layout (any order) reach the target's parameters
+    // of those names, scaled, bit for bit as setting them on the law directly; events carry
+    // the target's names in name order; a NaN and a value the law refuses are refused by name.
+    void offerRoutesValuesByPosition()
     {
-        QTest::addColumn<int>("policy");
-        for (ReporterPolicy p : {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
-                                 ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval})
-            QTest::newRow(reporterPolicyName(p)) << int(p);
-    }
-
-    // The by-position offer (names resolved once by bind()) against the by-name one on a twin
-    // rig: the same decisions, the same parameters and forces bit for bit, the same refusals.
-    void offerValuesEqualsOffer()
-    {
-        QFETCH(int, policy);
-        const std::vector<std::string> names{"A0", "alpha", "k0"}; // sorted, as in a map
+        const ParameterLayout identified({"k0", "A0", "alpha"}); // not in name order
         const std::vector<ReporterTarget> targets{{"Target", {"k0", "alpha", "gamma"}, {{"k0", 0.9}}}};
-        Rig a, b;
-        Reporter byName(targets, static_cast<ReporterPolicy>(policy), 3);
-        Reporter byPosition(targets, static_cast<ReporterPolicy>(policy), 3);
-        QVERIFY(byPosition.bind(b.s, names, nullptr));
-        int appliedA = 0, appliedB = 0, refusedA = 0;
+        Rig rig, reference;
+        Reporter r(targets, ReporterPolicy::EveryStep);
+        QVERIFY(r.bind(rig.s, identified, nullptr));
+        const int k0At = reference.law().parameterIndex("k0");
+        const int alphaAt = reference.law().parameterIndex("alpha");
+        int applied = 0, refused = 0;
         std::string lastRefusal;
-        std::vector<UpdateEvent> eventsB;
+        std::vector<UpdateEvent> events;
         for (int step = 1; step <= 40; ++step) {
             const double u = 0.05 * std::sin(0.4 * step);
-            a.moveTo(u);
-            b.moveTo(u);
+            rig.moveTo(u);
+            reference.moveTo(u);
             // Step 17: a NaN; step 23: alpha > 1, which the law refuses.
             const double alpha = step == 23 ? 1.5 : 0.04 + 0.001 * step;
             const double k0 = step == 17 ? NAN : 1.0 + 0.01 * step;
-            const std::vector<UpdateEvent> eventsA =
-                byName.offer(step, 0.01 * step, {{"A0", 2.0}, {"alpha", alpha}, {"k0", k0}}, a.s);
-            for (const UpdateEvent& ev : eventsA) {
-                appliedA += ev.ok;
-                refusedA += !ev.ok;
+            const std::vector<double> values{k0, 2.0, alpha};
+            events.clear();
+            applied += r.offer(step, 0.01 * step, values, rig.s, events);
+            QCOMPARE(events.size(), std::size_t(1));
+            const UpdateEvent& ev = events.front();
+            QCOMPARE(ev.parameters.names(), (std::vector<std::string>{"alpha", "k0"}));
+            QCOMPARE(ev.applied.size(), std::size_t(2));
+            QCOMPARE(ev.applied[0], alpha);
+            if (step != 17)
+                QCOMPARE(ev.applied[1], 0.9 * k0);
+            if (ev.ok) {
+                const int idx[] = {alphaAt, k0At};
+                const double set[] = {alpha, 0.9 * k0};
+                QCOMPARE(reference.law().setParameterValues(idx, set, true), -1);
+            } else {
+                ++refused;
+                lastRefusal = ev.message;
             }
-            const std::vector<double> values{2.0, alpha, k0};
-            eventsB.clear();
-            appliedB += byPosition.offerValues(step, 0.01 * step, values, b.s, eventsB);
-            QCOMPARE(appliedB, appliedA);
-            QCOMPARE(eventsB.size(), eventsA.size()); // the same events, applied or refused
-            for (std::size_t e = 0; e < eventsA.size(); ++e) {
-                QCOMPARE(eventsB[e].ok, eventsA[e].ok);
-                QCOMPARE(eventsB[e].element, eventsA[e].element);
-                QCOMPARE(eventsB[e].step, eventsA[e].step);
-                QCOMPARE(eventsB[e].applied.size(), eventsA[e].applied.size());
-                for (auto i = eventsA[e].applied.cbegin(), j = eventsB[e].applied.cbegin();
-                     i != eventsA[e].applied.end(); ++i, ++j)
-                    QVERIFY(i->first == j->first &&
-                            (std::memcmp(&i->second, &j->second, sizeof(double)) == 0));
-                if (!eventsA[e].ok)
-                    lastRefusal = eventsB[e].message;
-            }
-            for (const auto& n : a.law().parameterNames()) {
-                const double x = *a.law().parameter(n), y = *b.law().parameter(n);
+            for (int i = 0; i < int(rig.law().parameterNames().size()); ++i) {
+                const double x = rig.law().parameterValue(i), y = reference.law().parameterValue(i);
                 QVERIFY(std::memcmp(&x, &y, sizeof x) == 0);
             }
-            const double fa = a.law().committedForce(), fb = b.law().committedForce();
+            const double fa = rig.law().committedForce(), fb = reference.law().committedForce();
             QVERIFY(std::memcmp(&fa, &fb, sizeof fa) == 0);
-            QCOMPARE(byPosition.pending().size(), byName.pending().size());
-            if (!byName.pending().empty()) { // bit for bit (step 17 proposes a NaN)
-                const ParameterValues &x = byPosition.pending().back().proposed,
-                                      &y = byName.pending().back().proposed;
-                QCOMPARE(x.size(), y.size());
-                for (auto i = x.begin(), j = y.begin(); i != x.end(); ++i, ++j)
-                    QVERIFY(i->first == j->first &&
-                            std::memcmp(&i->second, &j->second, sizeof(double)) == 0);
-            }
         }
-        QCOMPARE(byPosition.appliedCount(), byName.appliedCount());
-        if (static_cast<ReporterPolicy>(policy) == ReporterPolicy::EveryStep) {
-            QCOMPARE(appliedA, 38); // all but the NaN and the refused alpha
-            QCOMPARE(refusedA, 2);
-            QVERIFY(lastRefusal.find("refused alpha") != std::string::npos);
-        }
+        QCOMPARE(applied, 38); // all but the NaN and the refused alpha
+        QCOMPARE(r.appliedCount(), 38);
+        QCOMPARE(refused, 2);
+        QVERIFY(lastRefusal.find("refused alpha") != std::string::npos);
     }
 
     void everyStepAppliesEveryOffer()
@@ -135,15 +132,15 @@ private slots:
         Reporter r(oneTarget(), ReporterPolicy::EveryStep);
         for (int step = 1; step <= 5; ++step) {
             rig.moveTo(0.01 * step);
-            const auto ev = r.offer(step, 0.01 * step, estimate(1.0 + 0.01 * step), rig.s);
+            const auto ev = offer(r, step, 0.01 * step, estimate(1.0 + 0.01 * step), rig.s);
             QCOMPARE(int(ev.size()), 1);
             QVERIFY(ev[0].ok);
-            QCOMPARE(*rig.law().parameter("k0"), 1.0 + 0.01 * step);
+            QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.0 + 0.01 * step);
         }
         QCOMPARE(r.appliedCount(), 5);
         // Only the named parameters go: A0 was offered but is not in the target's list.
-        QCOMPARE(*rig.law().parameter("A0"), 1.0);
-        QCOMPARE(*rig.law().parameter("alpha"), 0.04);
+        QCOMPARE(*test::parameterNamed(rig.law(), "A0"), 1.0);
+        QCOMPARE(*test::parameterNamed(rig.law(), "alpha"), 0.04);
     }
 
     void everyNStepsFiresOnMultiplesOfN()
@@ -152,7 +149,7 @@ private slots:
         Reporter r(oneTarget(), ReporterPolicy::EveryNSteps, 4);
         std::vector<int> fired;
         for (int step = 1; step <= 12; ++step)
-            if (!r.offer(step, 0.0, estimate(1.1), rig.s).empty())
+            if (!offer(r, step, 0.0, estimate(1.1), rig.s).empty())
                 fired.push_back(step);
         QCOMPARE(fired, (std::vector<int>{4, 8, 12}));
     }
@@ -172,7 +169,7 @@ private slots:
             if ((previous < 0 && f >= 0) || (previous > 0 && f <= 0))
                 expected.push_back(step);
             previous = f;
-            if (!r.offer(step, 0.0, estimate(1.1), rig.s).empty())
+            if (!offer(r, step, 0.0, estimate(1.1), rig.s).empty())
                 fired.push_back(step);
         }
         QVERIFY(!expected.empty());
@@ -184,26 +181,26 @@ private slots:
         Rig rig;
         Reporter r(oneTarget(), ReporterPolicy::OnApproval);
         rig.moveTo(0.02);
-        QVERIFY(r.offer(1, 0.01, estimate(1.2), rig.s).empty());
+        QVERIFY(offer(r, 1, 0.01, estimate(1.2), rig.s).empty());
         QCOMPARE(int(r.pending().size()), 1);
         const UpdateProposal p = r.pending().front();
-        QCOMPARE(p.proposed.at("k0"), 1.2);
-        QCOMPARE(p.current.at("k0"), 1.0);
+        QCOMPARE(valueOf(p.parameters, p.proposed, "k0"), 1.2);
+        QCOMPARE(valueOf(p.parameters, p.current, "k0"), 1.0);
         QVERIFY(r.reject(p.id));
-        QCOMPARE(*rig.law().parameter("k0"), 1.0); // rejected: unchanged
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.0); // rejected: unchanged
         QVERIFY(!r.reject(p.id));                   // gone
 
         r.setProposalFitError(0.25);
-        r.offer(2, 0.02, estimate(1.3), rig.s);
-        r.offer(3, 0.03, estimate(1.35), rig.s); // queued after the older one, not replacing it
+        offer(r, 2, 0.02, estimate(1.3), rig.s);
+        offer(r, 3, 0.03, estimate(1.35), rig.s); // queued after the older one, not replacing it
         QCOMPARE(int(r.pending().size()), 2);
-        QCOMPARE(r.pending().front().proposed.at("k0"), 1.3);
-        QCOMPARE(r.pending().back().proposed.at("k0"), 1.35);
+        QCOMPARE(valueOf(r.pending().front().parameters, r.pending().front().proposed, "k0"), 1.3);
+        QCOMPARE(valueOf(r.pending().back().parameters, r.pending().back().proposed, "k0"), 1.35);
         QCOMPARE(r.pending().back().fitError, 0.25);
         const auto ev = r.approve(r.pending().back().id, rig.s, 3, 0.03);
         QVERIFY(ev && ev->ok);
         QCOMPARE(ev->decision, UpdateDecision::Applied);
-        QCOMPARE(*rig.law().parameter("k0"), 1.35);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.35);
         QCOMPARE(r.appliedCount(), 1);
         // The older one is still pending; rejecting it is an event with its values.
         const int older = r.pending().front().id;
@@ -211,9 +208,9 @@ private slots:
         QVERIFY(no && !no->ok);
         QCOMPARE(no->decision, UpdateDecision::Rejected);
         QCOMPARE(no->proposal, older);
-        QCOMPARE(no->applied.at("k0"), 1.3);
+        QCOMPARE(valueOf(no->parameters, no->applied, "k0"), 1.3);
         QCOMPARE(no->step, 4);
-        QCOMPARE(*rig.law().parameter("k0"), 1.35);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.35);
         QVERIFY(r.pending().empty());
     }
 
@@ -224,11 +221,11 @@ private slots:
         r.setMaxPending(3);
         int notQueued = 0;
         for (int step = 1; step <= 5; ++step) {
-            const auto events = r.offer(step, 0.01 * step, estimate(1.0 + 0.01 * step), rig.s);
+            const auto events = offer(r, step, 0.01 * step, estimate(1.0 + 0.01 * step), rig.s);
             for (const UpdateEvent& e : events) {
                 QCOMPARE(e.decision, UpdateDecision::NotQueued);
                 QCOMPARE(e.step, step);
-                QCOMPARE(e.applied.at("k0"), 1.0 + 0.01 * step); // what was offered
+                QCOMPARE(valueOf(e.parameters, e.applied, "k0"), 1.0 + 0.01 * step); // what was offered
                 ++notQueued;
             }
         }
@@ -238,14 +235,14 @@ private slots:
         QCOMPARE(r.pending().front().step, 1); // the oldest kept: nothing moves under the operator
         // A decision makes room for the next offer.
         QVERIFY(r.reject(r.pending().front().id));
-        QVERIFY(r.offer(6, 0.06, estimate(1.06), rig.s).empty());
+        QVERIFY(offer(r, 6, 0.06, estimate(1.06), rig.s).empty());
         QCOMPARE(r.pending().back().step, 6);
         // The headless flag decides every one, rejections included.
         const auto all = r.resolveAll(false, rig.s, 7, 0.07);
         QCOMPARE(int(all.size()), 3);
         for (const UpdateEvent& e : all)
             QCOMPARE(e.decision, UpdateDecision::Rejected);
-        QCOMPARE(*rig.law().parameter("k0"), 1.0);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.0);
     }
 
     void applyingKeepsTheTargetStateContinuous()
@@ -255,7 +252,7 @@ private slots:
         auto* bw = dynamic_cast<BoucWen*>(&rig.law());
         const BoucWenState before = bw->committedState();
         Reporter r(oneTarget(), ReporterPolicy::EveryStep);
-        r.offer(1, 0.0, estimate(1.3), rig.s);
+        offer(r, 1, 0.0, estimate(1.3), rig.s);
         const BoucWenState after = bw->committedState();
         QCOMPARE(after.z, before.z);
         QCOMPARE(after.e, before.e);
@@ -268,37 +265,62 @@ private slots:
     {
         Rig rig;
         Reporter r({{"Target", {"k0"}, {{"k0", 0.5}}}}, ReporterPolicy::EveryStep);
-        r.offer(1, 0.0, estimate(1.2), rig.s);
-        QCOMPARE(*rig.law().parameter("k0"), 0.6);
+        offer(r, 1, 0.0, estimate(1.2), rig.s);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 0.6);
     }
 
     void nothingNonFiniteOrRefusedIsApplied()
     {
         Rig rig;
         Reporter r(oneTarget(), ReporterPolicy::EveryStep);
-        auto ev = r.offer(1, 0.0, {{"k0", NAN}, {"alpha", 0.04}}, rig.s);
+        auto ev = offer(r, 1, 0.0, {NAN, 0.04, 2.0}, rig.s);
         QVERIFY(!ev[0].ok);
         QVERIFY(ev[0].message.find("not finite") != std::string::npos);
-        QCOMPARE(*rig.law().parameter("k0"), 1.0);
-        QCOMPARE(*rig.law().parameter("alpha"), 0.05);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.0);
+        QCOMPARE(*test::parameterNamed(rig.law(), "alpha"), 0.05);
         // n = -1 is refused by the law after k0 was set: all or nothing, k0 is restored.
         Reporter r2({{"Target", {"k0", "n"}, {}}}, ReporterPolicy::EveryStep);
-        ev = r2.offer(2, 0.0, {{"k0", 1.2}, {"n", -1.0}}, rig.s);
+        std::vector<UpdateEvent> events;
+        QVERIFY(r2.bind(rig.s, ParameterLayout({"k0", "n"}), nullptr));
+        r2.offer(2, 0.0, std::vector<double>{1.2, -1.0}, rig.s, events);
+        ev = events;
         QVERIFY(!ev[0].ok);
         QVERIFY(ev[0].message.find("refused n") != std::string::npos);
-        QCOMPARE(*rig.law().parameter("k0"), 1.0);
-        QCOMPARE(*rig.law().parameter("n"), 2.0);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.0);
+        QCOMPARE(*test::parameterNamed(rig.law(), "n"), 2.0);
         QCOMPARE(r.appliedCount() + r2.appliedCount(), 0);
+    }
+
+    // A target naming a parameter its law does not have is refused when bound, with the
+    // target and the name; a target that is not a numerical element too.
+    void bindRefusesUnknownNamesWithTheName()
+    {
+        Rig rig;
+        std::string error;
+        Reporter bad({{"Target", {"k0", "kappa"}, {}}}, ReporterPolicy::EveryStep);
+        QVERIFY(!bad.bind(rig.s, kIdentified, &error));
+        QVERIFY2(error.find("target 'Target'") != std::string::npos &&
+                     error.find("unknown parameter 'kappa'") != std::string::npos,
+                 error.c_str());
+        Reporter badScale({{"Target", {"k0"}, {{"k00", 2.0}}}}, ReporterPolicy::EveryStep);
+        QVERIFY(!badScale.bind(rig.s, kIdentified, &error));
+        QVERIFY2(error.find("unknown parameter 'k00'") != std::string::npos, error.c_str());
+        Reporter missing({{"Nowhere", {"k0"}, {}}}, ReporterPolicy::EveryStep);
+        QVERIFY(!missing.bind(rig.s, kIdentified, &error));
+        QVERIFY2(error.find("'Nowhere' is not a numerical element") != std::string::npos,
+                 error.c_str());
+        Reporter good(oneTarget(), ReporterPolicy::EveryStep);
+        QVERIFY(good.bind(rig.s, kIdentified, &error));
     }
 
     void policyChangeTakesEffectOnTheNextOffer()
     {
         Rig rig;
         Reporter r(oneTarget(), ReporterPolicy::OnApproval);
-        QVERIFY(r.offer(1, 0.0, estimate(1.1), rig.s).empty());
+        QVERIFY(offer(r, 1, 0.0, estimate(1.1), rig.s).empty());
         r.setPolicy(ReporterPolicy::EveryStep, 1);
-        QCOMPARE(int(r.offer(2, 0.0, estimate(1.2), rig.s).size()), 1);
-        QCOMPARE(*rig.law().parameter("k0"), 1.2);
+        QCOMPARE(int(offer(r, 2, 0.0, estimate(1.2), rig.s).size()), 1);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.2);
     }
 };
 

@@ -7,6 +7,7 @@
 // model re-expressed in other scales (rescaled()) is the same physical model.
 
 #include "core/hysteresis/BoucWen.h"
+#include "tests/support/IdentifierByName.h"
 #include "core/updating/RobustUkfIdentifier.h"
 #include "core/updating/RobustUkfJobs.h"
 
@@ -120,27 +121,8 @@ private slots:
             QCOMPARE(alone.statuses[k].updated, second.statuses[k].updated);
         }
         QCOMPARE(a->divergences(), 0);
-        // The by-position values (ModelUpdater's path) are the maps' in their order.
-        std::vector<double> values, sd;
-        std::vector<ParameterBounds> bounds;
-        a->estimateValues(values);
-        a->standardDeviationValues(sd);
-        a->boundsValues(bounds);
-        const ParameterValues byName = a->estimate(), sdByName = a->standardDeviation();
-        QCOMPARE(values.size(), byName.size());
-        std::size_t j = 0;
-        for (const auto& [name, value] : byName) {
-            QCOMPARE(values[j], value);
-            QCOMPARE(sd[j], sdByName.at(name));
-            const auto b = a->bounds().find(name);
-            if (b == a->bounds().end())
-                QVERIFY(std::isnan(bounds[j].lower) && std::isnan(bounds[j].upper));
-            else
-                QVERIFY(bounds[j].lower == b->second.lower && bounds[j].upper == b->second.upper);
-            ++j;
-        }
         // ... and it identified the specimen: the final estimate replays it within 2 %.
-        const ParameterValues e = a->estimate();
+        const auto e = test::estimateByName(*a);
         BoucWenParameters p = truth();
         p.k0 = e.at("k0"), p.alpha = e.at("alpha"), p.n = e.at("n"), p.beta = e.at("beta");
         p.gamma = e.at("gamma"), p.deltaNu = e.at("deltaNu"), p.deltaEta = e.at("deltaEta");
@@ -159,8 +141,8 @@ private slots:
         int rejectedBefore = 0, rejectedAfter = 0, firstAlarm = -1;
         for (std::size_t k = 0; k < h.u.size(); ++k) {
             if (k == 1500) {
-                const double k0 = id.estimate().at("k0");
-                QVERIFY(id.setBounds("k0", {4.0 * k0, 5.0 * k0}));
+                const double k0 = test::estimateOf(id, "k0");
+                QVERIFY(test::setBoundsOf(id, "k0", {4.0 * k0, 5.0 * k0}));
             }
             const IdentificationStatus st = id.observe(h.u[k], h.f[k], false);
             if (!st.ok && st.message.find("UKF diverging") != std::string::npos) {
@@ -205,7 +187,7 @@ private slots:
                 if (k >= 1500 && st.refit && o.firstRefit < 0)
                     o.firstRefit = int(k);
             }
-            const ParameterValues e = id.estimate();
+            const auto e = test::estimateByName(id);
             o.k0 = e.at("k0") * e.at("fRef") / e.at("uRef") / (20.0 / 0.02); // physical / 1000
             o.anchorNrmse = id.anchorNrmse();
             return o;
@@ -234,7 +216,7 @@ private slots:
             double earlyNrmse = 0.0; ///< the estimate at step 150, replayed over `now`
         };
         const auto estimateOf = [](const RobustUkfIdentifier& id) {
-            const ParameterValues e = id.estimate();
+            const auto e = test::estimateByName(id);
             BoucWenParameters p = truth();
             p.k0 = e.at("k0"), p.alpha = e.at("alpha"), p.n = e.at("n"), p.beta = e.at("beta");
             p.gamma = e.at("gamma"), p.deltaNu = e.at("deltaNu"), p.deltaEta = e.at("deltaEta");
@@ -244,7 +226,7 @@ private slots:
         const auto run = [&](bool seeded) {
             RobustUkfIdentifier id(wrongStart(), std::nullopt, std::nullopt,
                                    ParameterBoundsMap{});
-            const ParameterValues initial = id.estimate();
+            const auto initial = test::estimateByName(id);
             if (seeded) {
                 std::string message;
                 const bool ok = id.seed(previous.u, previous.f, message);
@@ -255,7 +237,7 @@ private slots:
             Outcome o;
             for (std::size_t k = 0; k < now.u.size(); ++k) {
                 const IdentificationStatus st = id.observe(now.u[k], now.f[k], false);
-                if (o.firstReport < 0 && st.reportable && id.estimate() != initial)
+                if (o.firstReport < 0 && st.reportable && test::estimateByName(id) != initial)
                     o.firstReport = int(k);
                 if (k == 150)
                     o.earlyNrmse = verifyJob(now.u, now.f, estimateOf(id)).nrmse;
