@@ -2,6 +2,10 @@
 // into a copy of each catalogue leaves no unfinished, vanished or empty entry, every
 // placeholder (%1, %2, ...) of a source string survives in its translation, and the compiled
 // catalogue embedded in the program answers with the catalogue's text.
+// core's fixed texts (core/util/ReasonText) are user-visible too: every template code has a
+// Spanish and a Chinese text that is not the English one, and the texts core's producers
+// really write (a reader's error, a control's description, a link fault, an identifier's
+// message) come out translated, so a new core text without a catalogue entry fails here.
 #include <QDir>
 #include <QFile>
 #include <QProcess>
@@ -12,7 +16,16 @@
 #include <QTranslator>
 #include <QXmlStreamReader>
 
+#include "core/experimental/VirtualSpecimen.h"
+#include "core/groundmotion/GroundMotionError.h"
+#include "core/groundmotion/GroundMotionReader.h"
+#include "core/hysteresis/LawFactory.h"
+#include "core/util/ReasonText.h"
+#include "gui/app/AlarmText.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/Translations.h"
+
+#include <fstream>
 
 namespace {
 
@@ -153,6 +166,77 @@ private slots:
             ++checked;
         }
         QVERIFY(checked > 100);
+    }
+
+    void everyCoreTextIsTranslated_data() {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("es") << QStringLiteral("es");
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN");
+    }
+    void everyCoreTextIsTranslated() {
+        QFETCH(QString, language);
+        QVERIFY(hsmu::gui::Translations::install(*QCoreApplication::instance(), language));
+        QStringList untranslated;
+        for (const std::string& code : hsmu::reasonCodes()) {
+            const int n = hsmu::reasonArgumentCount(code.c_str());
+            QVERIFY2(n >= 0, code.c_str());
+            std::vector<std::string> args;
+            QStringList qargs;
+            for (int i = 0; i < n; ++i) {
+                qargs << QStringLiteral("Q%1x").arg(i + 1); // unlike any template's text
+                args.push_back(qargs.back().toStdString());
+            }
+            const QString english = QString::fromStdString(hsmu::reasonText(code.c_str(), args));
+            const QString shown = hsmu::gui::AlarmText::translate(code, qargs);
+            if (shown.isNull() || shown == english)
+                untranslated << QString::fromStdString(code) + QStringLiteral(": ") + english;
+            for (const QString& a : qargs) // every argument is shown
+                QVERIFY2(shown.contains(a), qPrintable(QString::fromStdString(code) + shown));
+        }
+        hsmu::gui::Translations::install(*QCoreApplication::instance(), QStringLiteral("en"));
+        QVERIFY2(untranslated.isEmpty(),
+                 qPrintable(language + QStringLiteral(": no translation of ") +
+                            untranslated.join(QStringLiteral("\n"))));
+    }
+
+    // The texts core's producers write, as the console shows them in Spanish: translated
+    // (the English template's words are gone), and the English again in English.
+    void producersTextsAreTranslated() {
+        QTemporaryDir dir;
+        QStringList texts;
+        const auto readerError = [&](const QString& name, const char* content) {
+            const QString path = dir.filePath(name);
+            if (content) {
+                std::ofstream(path.toStdString()) << content;
+            }
+            try {
+                hsmu::readGroundMotion(path.toStdString());
+            } catch (const std::exception& e) {
+                texts << QString::fromStdString(e.what());
+                return;
+            }
+            QFAIL("the reader accepted a bad file");
+        };
+        readerError(QStringLiteral("missing.txt"), nullptr);
+        readerError(QStringLiteral("single.txt"), "0.1\n0.2\n0.3\n");
+        readerError(QStringLiteral("letters.txt"), "0 0.1\n0.01 abc\n");
+        hsmu::VirtualSpecimenOptions options;
+        options.forceNoiseStd = 0.01;
+        options.actuator.type = hsmu::ActuatorModel::Type::Lag;
+        texts << QString::fromStdString(
+            hsmu::VirtualSpecimen(hsmu::makeLaw("boucWen", {}), options).description());
+        QVERIFY(hsmu::gui::Translations::install(*QCoreApplication::instance(), QStringLiteral("es")));
+        for (const QString& english : texts) {
+            const QString shown = hsmu::gui::AlarmText::reason(english);
+            QVERIFY2(shown != english, qPrintable(QStringLiteral("untranslated: ") + english));
+            for (const char* word : {"cannot open", "does not exist", "single column", "expected a number",
+                                     "virtual specimen", "actuator"})
+                QVERIFY2(!shown.contains(QLatin1String(word)),
+                         qPrintable(english + QStringLiteral(" -> ") + shown));
+        }
+        QVERIFY(hsmu::gui::Translations::install(*QCoreApplication::instance(), QStringLiteral("en")));
+        for (const QString& english : texts)
+            QCOMPARE(hsmu::gui::AlarmText::reason(english), english);
     }
 
     // tr() in a QObject looks up the class's full name (hsmu::gui::MainWindow): lupdate must
