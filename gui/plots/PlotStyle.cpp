@@ -60,6 +60,29 @@ void showCutTexts(QCustomPlot& plot) {
     plot.setToolTip(tip.join(QLatin1Char('\n')));
 }
 
+// A visible legend in the plot layout's last row, under the axis rect (the row takes only the
+// legend's height); a hidden one back in the axis rect's inset layout, which reserves no room
+// (a grid row would keep the hidden legend's height). The legend always has a layout, so the
+// plot still owns and deletes it.
+void placeLegend(QCustomPlot& plot) {
+    QCPLegend* legend = plot.legend;
+    QCPLayoutGrid* grid = plot.plotLayout();
+    QCPLayoutInset* inset = plot.axisRect()->insetLayout();
+    if (legend->visible() && legend->layout() != grid) {
+        if (legend->layout() == inset) {
+            inset->take(legend);
+            inset->simplify();
+        }
+        const int row = grid->rowCount();
+        grid->addElement(row, 0, legend);
+        grid->setRowStretchFactor(row, 0.001);
+    } else if (!legend->visible() && legend->layout() == grid) {
+        grid->take(legend);
+        grid->simplify();
+        inset->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    }
+}
+
 } // namespace
 
 int PlotStyle::labelRoom(const QCustomPlot& plot, const QCPAxis& axis) {
@@ -89,15 +112,20 @@ void PlotStyle::apply(QCustomPlot& plot) {
     plot.setPlottingHint(QCP::phFastPolylines, true); // thousands of points per live curve
     plot.setNotAntialiasedElements(QCP::aeFills);
     plot.legend->setVisible(false);
-    // Small and see-through: at 1280x720 a legend must not hide the traces.
-    plot.legend->setBrush(QColor(255, 255, 255, 150));
+    // A visible legend is a row of its own under the axis rect, never over the traces (at
+    // 1280x720 a see-through legend inside the axis rect still hid part of them).
+    plot.legend->setBrush(Qt::NoBrush);
+    plot.legend->setBorderPen(Qt::NoPen);
     QFont legendFont = plot.font();
     legendFont.setPointSizeF(std::max(6.0, legendFont.pointSizeF() - 2.0));
     plot.legend->setFont(legendFont);
     plot.legend->setIconSize(16, 8);
+    plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    plot.legend->setWrap(3);
     plot.legend->setRowSpacing(-3);
-    plot.legend->setBorderPen(QPen(QColor(180, 180, 180)));
-    plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    plot.legend->setColumnSpacing(8);
+    plot.legend->setMargins(QMargins(4, 0, 4, 2));
+    QObject::connect(&plot, &QCustomPlot::beforeReplot, &plot, [&plot] { placeLegend(plot); });
     for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
         axis->grid()->setSubGridVisible(false);
         axis->grid()->setPen(QPen(QColor(220, 220, 220), 0, Qt::DotLine));

@@ -4,6 +4,8 @@
 // "Examinar" button cut off), and no panel of the right dock area asks for more than the
 // dock's width (the area keeps its designed 440 px, the plots the rest). Fails on the
 // console before the fix: setup panel 514 px for a 441 px dock (en), 566 for 524 (es). Long texts are wrapped or elided with the full text in their tool tip.
+// No plot's legend overlaps its data area (item 10: the see-through legends inside the axis
+// rect covered part of the small history and tracking traces).
 #include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
@@ -101,11 +103,28 @@ private slots:
         QCOMPARE(setup->width(), available); // laid out to the viewport, not clipped
         // Plots: a vertical axis label longer than its axis is cut with "..." (the whole
         // label in the tool tip), never clipped at both ends ("eleración del suelo [m/").
+        int legends = 0;
         for (QCustomPlot* plot : window.findChildren<QCustomPlot*>()) {
             if (!plot->isVisible())
                 continue;
             plot->replot(QCustomPlot::rpImmediateRefresh); // laid out at its size
             plot->replot(QCustomPlot::rpImmediateRefresh); // labels cut to the new layout
+            // Item 10: a legend never covers the traces: it lies outside the axis rect (the
+            // data area), in the small history, tracking and parameter plots too.
+            if (plot->legend->visible() && plot->legend->itemCount() > 0) {
+                ++legends;
+                const QRect data = plot->axisRect()->rect();
+                const QRect box = plot->legend->outerRect();
+                QVERIFY2(!box.intersects(data),
+                         qPrintable(QStringLiteral("%1: %2's legend (%3,%4 %5x%6) covers its "
+                                                   "data area (%7,%8 %9x%10)")
+                                        .arg(language, plot->objectName())
+                                        .arg(box.x()).arg(box.y()).arg(box.width())
+                                        .arg(box.height())
+                                        .arg(data.x()).arg(data.y()).arg(data.width())
+                                        .arg(data.height())));
+                QVERIFY(plot->rect().contains(box)); // and is itself inside the plot
+            }
             for (QCPAxis* axis : {plot->yAxis, plot->yAxis2}) {
                 if (!axis->visible() || axis->label().isEmpty())
                     continue;
@@ -124,6 +143,7 @@ private slots:
                     QVERIFY2(plot->toolTip().contains(full), qPrintable(plot->toolTip()));
             }
         }
+        QVERIFY(legends >= 2); // the history and hysteresis plots of a loaded test
         // Every push button shows its whole text (e.g. "Examinar..." beside the file field).
         for (QPushButton* b : setup->findChildren<QPushButton*>()) {
             if (!b->isVisibleTo(setup))
