@@ -1538,12 +1538,12 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>fixed wall time per step</translation>
     </message>
     <message>
-        <source> s of wall time per step</source>
-        <translation> s of wall time per step</translation>
-    </message>
-    <message>
         <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
         <translation>Each step takes this long in wall time (pseudo-dynamic pace)</translation>
+    </message>
+    <message>
+        <source> s/step</source>
+        <translation> s/step</translation>
     </message>
 </context>
 <context>

@@ -1538,12 +1538,12 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>tiempo real fijo por paso</translation>
     </message>
     <message>
-        <source> s of wall time per step</source>
-        <translation> s de tiempo real por paso</translation>
-    </message>
-    <message>
         <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
         <translation>Cada paso dura este tiempo real (ritmo pseudodinámico)</translation>
+    </message>
+    <message>
+        <source> s/step</source>
+        <translation> s/paso</translation>
     </message>
 </context>
 <context>

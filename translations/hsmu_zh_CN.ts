@@ -1537,12 +1537,12 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>每步固定实际时间</translation>
     </message>
     <message>
-        <source> s of wall time per step</source>
-        <translation> 秒实际时间/步</translation>
-    </message>
-    <message>
         <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
         <translation>每一步占用这么长的实际时间（拟动力速度）</translation>
+    </message>
+    <message>
+        <source> s/step</source>
+        <translation> 秒/步</translation>
     </message>
 </context>
 <context>

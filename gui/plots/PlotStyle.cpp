@@ -60,26 +60,74 @@ void showCutTexts(QCustomPlot& plot) {
     plot.setToolTip(tip.join(QLatin1Char('\n')));
 }
 
-// A visible legend in the plot layout's last row, under the axis rect (the row takes only the
-// legend's height); a hidden one back in the axis rect's inset layout, which reserves no room
-// (a grid row would keep the hidden legend's height). The legend always has a layout, so the
-// plot still owns and deletes it.
+QCPTextElement* titleOf(const QCustomPlot& plot) {
+    return qobject_cast<QCPTextElement*>(plot.property("hsmuTitleElement").value<QObject*>());
+}
+
+// As many legend columns as fit `width` (one row when they all fit): a legend wider than its
+// plot would widen the layout past the widget and cut the traces' right edge.
+void fitLegendColumns(QCPLegend& legend, int width) {
+    const int items = legend.itemCount();
+    for (int columns = items; columns >= 1; --columns) {
+        legend.setWrap(columns);
+        legend.setFillOrder(QCPLayoutGrid::foColumnsFirst, true); // rearranged
+        if (legend.minimumOuterSizeHint().width() <= width)
+            return;
+    }
+}
+
+void takeLegend(QCPLegend& legend) {
+    if (QCPLayout* from = legend.layout()) {
+        from->take(&legend);
+        from->simplify();
+    }
+}
+
+// Where a legend goes: never over the traces. Shown: beside the title when both fit on its
+// row (no height taken from the data), else in the plot layout's last row under the axis rect
+// (its columns fitted to the width; it never asks for more width than the plot has). Hidden:
+// back in the axis rect's inset layout, which reserves no room (a grid row would keep the
+// hidden legend's height), so the plot still owns it. A legend of one entry under a title
+// says what the title says: it is not shown.
 void placeLegend(QCustomPlot& plot) {
     QCPLegend* legend = plot.legend;
     QCPLayoutGrid* grid = plot.plotLayout();
     QCPLayoutInset* inset = plot.axisRect()->insetLayout();
-    if (legend->visible() && legend->layout() != grid) {
-        if (legend->layout() == inset) {
-            inset->take(legend);
-            inset->simplify();
+    QCPTextElement* title = titleOf(plot);
+    const bool shown = legend->visible() && legend->itemCount() > 0 &&
+                       (legend->itemCount() > 1 || !title);
+    if (!shown) {
+        if (legend->layout() != inset) {
+            takeLegend(*legend);
+            inset->addElement(legend, Qt::AlignTop | Qt::AlignRight);
         }
+        legend->setVisible(false); // never drawn over the traces
+        return;
+    }
+    auto* head = title ? qobject_cast<QCPLayoutGrid*>(title->layout()) : nullptr;
+    bool beside = false;
+    if (head) {
+        legend->setMinimumSize(0, 0); // its own width, beside the title
+        fitLegendColumns(*legend, QWIDGETSIZE_MAX); // one row
+        const int titleWidth = QFontMetrics(title->font())
+                                   .horizontalAdvance(plot.property("hsmuTitle").toString());
+        beside = legend->minimumOuterSizeHint().width() + titleWidth + 24 <= plot.width();
+    }
+    if (beside) {
+        if (legend->layout() != head) {
+            takeLegend(*legend);
+            head->addElement(0, 1, legend);
+            head->setColumnStretchFactor(1, 0.001);
+        }
+        return;
+    }
+    legend->setMinimumSize(1, 0); // the plot's minimum width stays the axis rect's
+    fitLegendColumns(*legend, plot.width() - 8);
+    if (legend->layout() != grid) {
+        takeLegend(*legend);
         const int row = grid->rowCount();
         grid->addElement(row, 0, legend);
         grid->setRowStretchFactor(row, 0.001);
-    } else if (!legend->visible() && legend->layout() == grid) {
-        grid->take(legend);
-        grid->simplify();
-        inset->addElement(legend, Qt::AlignTop | Qt::AlignRight);
     }
 }
 
@@ -121,10 +169,9 @@ void PlotStyle::apply(QCustomPlot& plot) {
     plot.legend->setFont(legendFont);
     plot.legend->setIconSize(16, 8);
     plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    plot.legend->setWrap(3);
-    plot.legend->setRowSpacing(-3);
+    plot.legend->setRowSpacing(0);
     plot.legend->setColumnSpacing(8);
-    plot.legend->setMargins(QMargins(4, 0, 4, 2));
+    plot.legend->setMargins(QMargins(4, 0, 4, 0));
     QObject::connect(&plot, &QCustomPlot::beforeReplot, &plot, [&plot] { placeLegend(plot); });
     for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
         axis->grid()->setSubGridVisible(false);
@@ -156,14 +203,19 @@ QPen PlotStyle::seriesPen(int i) {
 
 void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
     plot.setProperty("hsmuTitle", title);
-    if (auto* existing = qobject_cast<QCPTextElement*>(plot.plotLayout()->element(0, 0))) {
+    if (auto* existing = titleOf(plot)) {
         existing->setText(title);
         return;
     }
     plot.plotLayout()->insertRow(0);
+    // The title row: the title, and the legend beside it when both fit (placeLegend).
+    auto* head = new QCPLayoutGrid;
+    plot.plotLayout()->addElement(0, 0, head);
+    head->setColumnSpacing(8);
     // 10 pt: the longest title fits a plot cell at 1280x720.
     auto* element = new QCPTextElement(&plot, title, QFont(plot.font().family(), 10, QFont::Bold));
-    plot.plotLayout()->addElement(0, 0, element);
+    head->addElement(0, 0, element);
+    plot.setProperty("hsmuTitleElement", QVariant::fromValue<QObject*>(element));
     // A title wider than its plot (a narrow cell, a long translation) is cut with "...", the
     // full title in the plot's tool tip.
     QObject::connect(&plot, &QCustomPlot::beforeReplot, element, [&plot, element] {
