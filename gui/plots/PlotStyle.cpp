@@ -60,6 +60,54 @@ void showCutTexts(QCustomPlot& plot) {
     plot.setToolTip(tip.join(QLatin1Char('\n')));
 }
 
+// As many ticks as the axis rect has room for without their labels running together (a
+// small plot at 1280x720 over a short time: "0 0.0250.050.075 0.1"); never more than the plot
+// asked for. Horizontal labels need their width, vertical ones their height, plus a gap.
+void fitTickCount(QCPAxis& axis) {
+    if (!axis.visible() || !axis.tickLabels() || !axis.axisRect())
+        return;
+    if (!axis.property("hsmuMaxTicks").isValid())
+        axis.setProperty("hsmuMaxTicks", axis.ticker()->tickCount());
+    const int most = axis.property("hsmuMaxTicks").toInt();
+    const bool horizontal = axis.orientation() == Qt::Horizontal;
+    const QRect r = axis.axisRect()->rect();
+    const double room = horizontal ? r.width() : r.height();
+    const double span = axis.range().size();
+    if (!(room > 0.0) || !(span > 0.0))
+        return;
+    const QFontMetrics fm(axis.tickLabelFont());
+    const QString format = axis.numberFormat();
+    // The most ticks that fit, preferring two or more labels inside the range (one label
+    // says nothing about the scale); at worst one tick.
+    int chosen = 1, chosenInside = 0;
+    for (int n = most; n >= 1; --n) {
+        axis.ticker()->setTickCount(n);
+        QVector<double> ticks;
+        QVector<QString> labels;
+        axis.ticker()->generate(axis.range(), axis.parentPlot()->locale(),
+                                format.isEmpty() ? QLatin1Char('g') : format.at(0),
+                                axis.numberPrecision(), ticks, nullptr, &labels);
+        int needed = 0, inside = 0;
+        for (qsizetype i = 0; i < ticks.size(); ++i) {
+            if (!axis.range().contains(ticks[i]))
+                continue;
+            ++inside;
+            needed = std::max(needed, horizontal ? fm.horizontalAdvance(labels[i]) : fm.ascent());
+        }
+        double gap = room;
+        for (qsizetype i = 1; i < ticks.size(); ++i)
+            gap = std::min(gap, room * std::abs(ticks[i] - ticks[i - 1]) / span);
+        const bool fits = gap >= needed + (horizontal ? 8 : 2);
+        if (fits && (inside >= 2 || chosenInside == 0) && inside > chosenInside) {
+            chosen = n;
+            chosenInside = inside;
+            if (inside >= 2)
+                break;
+        }
+    }
+    axis.ticker()->setTickCount(chosen);
+}
+
 QCPTextElement* titleOf(const QCustomPlot& plot) {
     return qobject_cast<QCPTextElement*>(plot.property("hsmuTitleElement").value<QObject*>());
 }
@@ -179,9 +227,14 @@ void PlotStyle::apply(QCustomPlot& plot) {
         axis->grid()->setZeroLinePen(QPen(QColor(150, 150, 150), 0));
     }
     plot.setMinimumSize(240, 180);
+    // A short cell (the replay's tracking plot, 110 px) still fits its title, axes and a
+    // two-row legend: the data area may shrink to 30 px rather than push the legend out.
+    plot.axisRect()->setMinimumSize(50, 30);
     // After the layout step of each replot (the axis rect as it will be drawn; a cut label
     // keeps its thickness, so the layout stays valid).
     QObject::connect(&plot, &QCustomPlot::afterLayout, &plot, [&plot] {
+        for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
+            fitTickCount(*axis);
         QStringList cut;
         for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
             if (axis->visible())

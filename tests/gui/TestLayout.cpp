@@ -21,9 +21,12 @@
 #include "gui/app/MainWindow.h"
 #include "gui/app/SetupPanel.h"
 #include "gui/app/Translations.h"
+#include "gui/plots/HistoryPlot.h"
 #include "gui/plots/PlotStyle.h"
 
 #include <qcustomplot.h>
+
+#include <cmath>
 
 using namespace hsmu;
 using namespace hsmu::gui;
@@ -57,6 +60,49 @@ private slots:
         const QColor corner = window.grab().toImage().pixelColor(2, 2);
         QVERIFY2(corner.red() > 150 && corner.green() < 80 && corner.blue() < 80,
                  qPrintable(corner.name()));
+    }
+
+    // Tick labels never run together in a small plot at 1280x720 (seen by hand: "0
+    // 0.0250.050.075 0.1" under a 0.1 s history, "0.2 0 -0.2 -0.4" piled up on a 40 px axis).
+    void tickLabelsDoNotRunTogether() {
+        HistoryPlot plot;
+        plot.setChannels(QStringLiteral("Moment history"), QStringLiteral("Moment [kN m]"),
+                         {{QStringLiteral("Element 1"), {}, false}});
+        plot.setMinimumSize(100, 80); // as LivePlotsPanel's small cells
+        plot.resize(208, 110);        // the fit-error cell at 1280x720
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        QVector<double> t, v;
+        for (int i = 0; i <= 10; ++i) {
+            t << 0.01 * i;
+            v << 0.3 * std::sin(i);
+        }
+        plot.graph(0)->setData(t, v);
+        plot.xAxis->setRange(-0.005, 0.105); // 0.1 s with the 5 % margins
+        plot.yAxis->setRange(-0.45, 0.3);
+        plot.replot(QCustomPlot::rpImmediateRefresh);
+        plot.replot(QCustomPlot::rpImmediateRefresh);
+        for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
+            const QVector<double> ticks = axis->tickVector();
+            const QVector<QString> labels = axis->tickVectorLabels();
+            // Time keeps at least two labels; a 35 px tall value axis may keep only one.
+            QVERIFY(ticks.size() >= (axis->orientation() == Qt::Horizontal ? 2 : 1));
+            const QFontMetrics fm(axis->tickLabelFont());
+            for (qsizetype i = 1; i < ticks.size(); ++i) {
+                const double gap = std::abs(axis->coordToPixel(ticks[i]) -
+                                            axis->coordToPixel(ticks[i - 1]));
+                const bool horizontal = axis->orientation() == Qt::Horizontal;
+                const double need = horizontal ? 0.5 * (fm.horizontalAdvance(labels[i]) +
+                                                        fm.horizontalAdvance(labels[i - 1])) +
+                                                     4
+                                               : fm.ascent() + 2; // digits: no descent
+                QVERIFY2(gap >= need,
+                         qPrintable(QStringLiteral("'%1' and '%2' are %3 px apart, need %4")
+                                        .arg(labels[i - 1], labels[i])
+                                        .arg(gap)
+                                        .arg(need)));
+            }
+        }
     }
 
     void setupPanelFitsItsDockAt1280x720_data() {
