@@ -459,6 +459,10 @@
         <source>real-time</source>
         <translation>real-time</translation>
     </message>
+    <message>
+        <source>the record holds no step</source>
+        <translation>the record holds no step</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>

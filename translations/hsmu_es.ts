@@ -459,6 +459,10 @@
         <source>real-time</source>
         <translation>tiempo real</translation>
     </message>
+    <message>
+        <source>the record holds no step</source>
+        <translation>el registro no contiene ningún paso</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>

@@ -459,6 +459,10 @@
         <source>real-time</source>
         <translation>实时</translation>
     </message>
+    <message>
+        <source>the record holds no step</source>
+        <translation>记录中没有任何步</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>

@@ -160,6 +160,7 @@ constexpr Template kTemplates[] = {
     {"record-not-hdf5", "not an HSMU record (not an HDF5 file)"},
     {"record-no-schema", "not an HSMU record (no schema_version attribute)"},
     {"record-damaged", "damaged record (%1)"},
+    {"record-no-step", "the record holds no step"},
 };
 
 const Template* find(const char* code)

@@ -72,9 +72,9 @@ void AlarmList::retranslate(QTreeWidgetItem* item) {
     }
     const QVariant english = item->data(Message, kEnglishRole);
     if (english.isValid()) {
-        const QString text = AlarmText::describe(item->data(Message, kCodeRole).toString().toStdString(),
-                                                 item->data(Message, kArgsRole).toStringList(),
-                                                 item->data(Message, kEnglishRole).toString());
+        const std::string code = item->data(Message, kCodeRole).toString().toStdString();
+        const QString text = AlarmText::describe(
+            code, item->data(Message, kArgsRole).toStringList(), english.toString());
         item->setText(Message, text);
         item->setToolTip(Message, text);
     }

@@ -142,6 +142,7 @@ constexpr Entry kEntries[] = {
     {"record-no-schema",
      QT_TRANSLATE_NOOP("AlarmText", "not an HSMU record (no schema_version attribute)")},
     {"record-damaged", QT_TRANSLATE_NOOP("AlarmText", "damaged record (%1)")},
+    {"record-no-step", QT_TRANSLATE_NOOP("AlarmText", "the record holds no step")},
 };
 
 // %1..%9 of `text` replaced by args in one pass (an argument's own "%1" stays as it is).

@@ -183,8 +183,9 @@ bool MainWindow::applySetup() {
     const auto cfg = m_setup->edited(&error);
     const auto address = cfg ? m_setup->controller(&error) : std::nullopt;
     if (!cfg || !address) {
-        m_alarms->addMessage([error] { return tr("setup not applied: %1").arg(AlarmText::reason(error)); },
-                             AlarmSeverity::Warning);
+        m_alarms->addMessage(
+            [error] { return tr("setup not applied: %1").arg(AlarmText::reason(error)); },
+            AlarmSeverity::Warning);
         m_status->showMessage(error, 10000);
         return false;
     }

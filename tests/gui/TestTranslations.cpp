@@ -20,6 +20,7 @@
 #include "core/groundmotion/GroundMotionError.h"
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/hysteresis/LawFactory.h"
+#include "core/record/RecordReader.h"
 #include "core/util/ReasonText.h"
 #include "gui/app/AlarmText.h"
 #include "gui/app/MainWindow.h"
@@ -225,11 +226,26 @@ private slots:
         options.actuator.type = hsmu::ActuatorModel::Type::Lag;
         texts << QString::fromStdString(
             hsmu::VirtualSpecimen(hsmu::makeLaw("boucWen", {}), options).description());
+        const auto recordError = [&](const QString& name, const char* content) {
+            const QString path = dir.filePath(name);
+            if (content)
+                std::ofstream(path.toStdString()) << content;
+            try {
+                hsmu::RecordReader reader(path.toStdString());
+            } catch (const std::exception& e) {
+                texts << QString::fromStdString(e.what());
+                return;
+            }
+            QFAIL("the record reader accepted a bad file");
+        };
+        recordError(QStringLiteral("missing.h5"), nullptr);
+        recordError(QStringLiteral("text.h5"), "not HDF5\n");
         QVERIFY(hsmu::gui::Translations::install(*QCoreApplication::instance(), QStringLiteral("es")));
         for (const QString& english : texts) {
             const QString shown = hsmu::gui::AlarmText::reason(english);
             QVERIFY2(shown != english, qPrintable(QStringLiteral("untranslated: ") + english));
-            for (const char* word : {"cannot open", "does not exist", "single column", "expected a number",
+            for (const char* word : {"cannot open", "cannot be opened", "does not exist",
+                                     "single column", "expected a number", "not an HSMU record",
                                      "virtual specimen", "actuator"})
                 QVERIFY2(!shown.contains(QLatin1String(word)),
                          qPrintable(english + QStringLiteral(" -> ") + shown));
