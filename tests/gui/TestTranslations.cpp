@@ -7,6 +7,7 @@
 // really write (a reader's error, a control's description, a link fault, an identifier's
 // message) come out translated, so a new core text without a catalogue entry fails here.
 #include <QDir>
+#include <QDirIterator>
 #include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
@@ -95,6 +96,37 @@ QStringList catalogues() {
     for (const QString& name : dir.entryList({QStringLiteral("hsmu_*.ts")}, QDir::Files))
         paths << dir.filePath(name);
     return paths;
+}
+
+// User-visible texts given as a literal instead of through tr(): a call that shows text
+// (setText, setToolTip, a message box, ...) whose argument starts with a string literal of
+// letters. Each hit as "file:line: code".
+QStringList literalUiTexts(const QString& source, const QString& name) {
+    // The literal as the text argument: the first one of a setter, any one of a message box.
+    static const char* const kSetter =
+        R"re(\b(setText|setToolTip|setStatusTip|setWhatsThis|setWindowTitle|setPlaceholderText|)re"
+        R"re(setSuffix|setPrefix|showMessage|addMessage|addItem|setItemText|setHeaderLabels?|)re"
+        R"re(setTabText|setLabel|setName|setTitle)\s*\(\s*)re";
+    static const char* const kMessageBox =
+        R"re(QMessageBox(::|\s*\(\s*QMessageBox::)\w+\s*[(,][^;]*,\s*)re";
+    static const char* const kLiteral =
+        R"re((QStringLiteral\(|QLatin1String\(|QString::fromLatin1\(|QString::fromUtf8\(|)re"
+        R"re(\{\s*)?"[A-Za-z][A-Za-z ]{2,})re";
+    static const QRegularExpression call(QStringLiteral("(%1|%2)%3")
+                                             .arg(QString::fromLatin1(kSetter),
+                                                  QString::fromLatin1(kMessageBox),
+                                                  QString::fromLatin1(kLiteral)));
+    QStringList hits;
+    const QStringList lines = source.split(QLatin1Char('\n'));
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        const QString line = lines[i];
+        if (line.trimmed().startsWith(QLatin1String("//")) ||
+            line.contains(QLatin1String("hsmu-ui-literal-ok")))
+            continue;
+        if (call.match(line).hasMatch())
+            hits << QStringLiteral("%1:%2: %3").arg(name).arg(i + 1).arg(line.trimmed());
+    }
+    return hits;
 }
 
 } // namespace
@@ -253,6 +285,36 @@ private slots:
         QVERIFY(hsmu::gui::Translations::install(*QCoreApplication::instance(), QStringLiteral("en")));
         for (const QString& english : texts)
             QCOMPARE(hsmu::gui::AlarmText::reason(english), english);
+    }
+
+    // No user-visible text of the console bypasses the catalogues: every call that shows a
+    // text takes it from tr() (or data), never from an English literal (the scanner is first
+    // shown to catch one).
+    void noUserVisibleLiteralOutsideTr() {
+        QCOMPARE(literalUiTexts(QStringLiteral("label->setText(QStringLiteral(\"Hello world\"));"),
+                                QStringLiteral("x.cpp"))
+                     .size(),
+                 1);
+        QCOMPARE(literalUiTexts(QStringLiteral("QMessageBox::critical(this, tr(\"a\"), "
+                                               "QStringLiteral(\"Cannot open\"));"),
+                                QStringLiteral("x.cpp"))
+                     .size(),
+                 1);
+        QVERIFY(literalUiTexts(QStringLiteral("label->setText(tr(\"Hello world\"));"),
+                               QStringLiteral("x.cpp"))
+                    .isEmpty());
+        QStringList hits;
+        int files = 0;
+        QDirIterator it(QStringLiteral(HSMU_SOURCE_DIR "/gui"), {QStringLiteral("*.cpp")},
+                        QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            QFile f(it.next());
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            hits << literalUiTexts(QString::fromUtf8(f.readAll()), it.fileName());
+            ++files;
+        }
+        QVERIFY(files > 50);
+        QVERIFY2(hits.isEmpty(), qPrintable(hits.join(QLatin1Char('\n'))));
     }
 
     // tr() in a QObject looks up the class's full name (hsmu::gui::MainWindow): lupdate must
