@@ -51,7 +51,7 @@ for lang in $langs; do
 done
 
 # 2. The console over TCP to a real hsmu-controller on a free port (a fresh controller for
-#    each language: the previous window's quit holds the specimen of its controller).
+#    each language, so each window starts from a virgin specimen).
 log="$(mktemp)"
 controller_pid=""
 trap 'kill "$controller_pid" 2>/dev/null || true; rm -rf "$log" "$home"' EXIT

@@ -131,6 +131,338 @@
         <source>synthetic Kanai-Tajimi (seed %1)</source>
         <translation>synthetic Kanai-Tajimi (seed %1)</translation>
     </message>
+    <message>
+        <source>link to %1 is down (%2); resume to reconnect</source>
+        <translation>link to %1 is down (%2); resume to reconnect</translation>
+    </message>
+    <message>
+        <source>link to %1: %2</source>
+        <translation>link to %1: %2</translation>
+    </message>
+    <message>
+        <source>controller at %1: %2</source>
+        <translation>controller at %1: %2</translation>
+    </message>
+    <message>
+        <source>TCP link is holding: %1</source>
+        <translation>TCP link is holding: %1</translation>
+    </message>
+    <message>
+        <source>no connection to %1 within %2 s</source>
+        <translation>no connection to %1 within %2 s</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>cannot connect to %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot resolve %1: %2</source>
+        <translation>cannot resolve %1: %2</translation>
+    </message>
+    <message>
+        <source>the controller closed the connection</source>
+        <translation>the controller closed the connection</translation>
+    </message>
+    <message>
+        <source>the peer closed the connection</source>
+        <translation>the peer closed the connection</translation>
+    </message>
+    <message>
+        <source>connection lost while sending: %1</source>
+        <translation>connection lost while sending: %1</translation>
+    </message>
+    <message>
+        <source>connection lost: %1</source>
+        <translation>connection lost: %1</translation>
+    </message>
+    <message>
+        <source>malformed frame from the controller: %1</source>
+        <translation>malformed frame from the controller: %1</translation>
+    </message>
+    <message>
+        <source>the controller was silent for %1 s</source>
+        <translation>the controller was silent for %1 s</translation>
+    </message>
+    <message>
+        <source>not connected: %1</source>
+        <translation>not connected: %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>not connected</translation>
+    </message>
+    <message>
+        <source>no reply within %1 s</source>
+        <translation>no reply within %1 s</translation>
+    </message>
+    <message>
+        <source>closed by the console</source>
+        <translation>closed by the console</translation>
+    </message>
+    <message>
+        <source>closed by an emergency hold</source>
+        <translation>closed by an emergency hold</translation>
+    </message>
+    <message>
+        <source>no answer to the hello</source>
+        <translation>no answer to the hello</translation>
+    </message>
+    <message>
+        <source>no measurement for step %1</source>
+        <translation>no measurement for step %1</translation>
+    </message>
+    <message>
+        <source>the controller's specimen is at step %1 but the test committed %2 (was it restarted without its --state file?); cannot resume without a jump</source>
+        <translation>the controller's specimen is at step %1 but the test committed %2 (was it restarted without its --state file?); cannot resume without a jump</translation>
+    </message>
+    <message>
+        <source>specimen '%1' holds: %2</source>
+        <translation>specimen '%1' holds: %2</translation>
+    </message>
+    <message>
+        <source>interlock: %1</source>
+        <translation>interlock: %1</translation>
+    </message>
+    <message>
+        <source>specimen fault: %1</source>
+        <translation>specimen fault: %1</translation>
+    </message>
+    <message>
+        <source>controller fault: %1</source>
+        <translation>controller fault: %1</translation>
+    </message>
+    <message>
+        <source>actuator position |d| = %1 exceeds the limit %2</source>
+        <translation>actuator position |d| = %1 exceeds the limit %2</translation>
+    </message>
+    <message>
+        <source>console hold</source>
+        <translation>console hold</translation>
+    </message>
+    <message>
+        <source>wrong token</source>
+        <translation>wrong token</translation>
+    </message>
+    <message>
+        <source>another console session is running a test on this controller (one session at a time)</source>
+        <translation>another console session is running a test on this controller (one session at a time)</translation>
+    </message>
+    <message>
+        <source>this controller has no specimen named '%1'</source>
+        <translation>this controller has no specimen named '%1'</translation>
+    </message>
+    <message>
+        <source>held from the previous console session: %1</source>
+        <translation>held from the previous console session: %1</translation>
+    </message>
+    <message>
+        <source>virtual specimen (%1 law, force noise std %2, %3 actuator, fracture event)</source>
+        <translation>virtual specimen (%1 law, force noise std %2, %3 actuator, fracture event)</translation>
+    </message>
+    <message>
+        <source>virtual specimen (%1 law, force noise std %2, %3 actuator)</source>
+        <translation>virtual specimen (%1 law, force noise std %2, %3 actuator)</translation>
+    </message>
+    <message>
+        <source>specimen '%1' on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector, fracture event), %7 committed steps</source>
+        <translation>specimen '%1' on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector, fracture event), %7 committed steps</translation>
+    </message>
+    <message>
+        <source>specimen '%1' on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector), %7 committed steps</source>
+        <translation>specimen '%1' on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector), %7 committed steps</translation>
+    </message>
+    <message>
+        <source>TCP link %1 to %2</source>
+        <translation>TCP link %1 to %2</translation>
+    </message>
+    <message>
+        <source>specimen '%1'</source>
+        <translation>specimen '%1'</translation>
+    </message>
+    <message>
+        <source>%1 link %2 for specimen '%3' (%4)</source>
+        <translation>%1 link %2 for specimen '%3' (%4)</translation>
+    </message>
+    <message>
+        <source>prediction rejected: %1</source>
+        <translation>prediction rejected: %1</translation>
+    </message>
+    <message>
+        <source>update rejected: %1</source>
+        <translation>update rejected: %1</translation>
+    </message>
+    <message>
+        <source>Bouc-Wen integration failed (%1): %2</source>
+        <translation>Bouc-Wen integration failed (%1): %2</translation>
+    </message>
+    <message>
+        <source>%1; z and e could not be advanced either: step skipped</source>
+        <translation>%1; z and e could not be advanced either: step skipped</translation>
+    </message>
+    <message>
+        <source>the state is not finite</source>
+        <translation>the state is not finite</translation>
+    </message>
+    <message>
+        <source>the measurement is not finite</source>
+        <translation>the measurement is not finite</translation>
+    </message>
+    <message>
+        <source>the predicted measurement is not finite</source>
+        <translation>the predicted measurement is not finite</translation>
+    </message>
+    <message>
+        <source>the innovation covariance is not positive definite (check R)</source>
+        <translation>the innovation covariance is not positive definite (check R)</translation>
+    </message>
+    <message>
+        <source>the filter has not been initialized</source>
+        <translation>the filter has not been initialized</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead fit failed: %1</source>
+        <translation>Nelder-Mead fit failed: %1</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead trigger %1 kept the parameters (RMS %2 not improved, %3 evaluations, %4 ms)</source>
+        <translation>Nelder-Mead trigger %1 kept the parameters (RMS %2 not improved, %3 evaluations, %4 ms)</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead trigger %1: RMS force error %2 -&gt; %3 (%4 evaluations, %5 ms)</source>
+        <translation>Nelder-Mead trigger %1: RMS force error %2 -&gt; %3 (%4 evaluations, %5 ms)</translation>
+    </message>
+    <message>
+        <source>the measured deformation or force is not finite: step skipped</source>
+        <translation>the measured deformation or force is not finite: step skipped</translation>
+    </message>
+    <message>
+        <source>%1 line %2: %3</source>
+        <translation>%1 line %2: %3</translation>
+    </message>
+    <message>
+        <source>cannot open '%1': the file does not exist</source>
+        <translation>cannot open '%1': the file does not exist</translation>
+    </message>
+    <message>
+        <source>cannot open '%1': it is a folder, not a file</source>
+        <translation>cannot open '%1': it is a folder, not a file</translation>
+    </message>
+    <message>
+        <source>cannot read '%1': not a regular file (a device, pipe or socket)</source>
+        <translation>cannot read '%1': not a regular file (a device, pipe or socket)</translation>
+    </message>
+    <message>
+        <source>cannot open '%1' for reading (permissions?)</source>
+        <translation>cannot open '%1' for reading (permissions?)</translation>
+    </message>
+    <message>
+        <source>'%1' is not a text file (binary data at byte %2)</source>
+        <translation>'%1' is not a text file (binary data at byte %2)</translation>
+    </message>
+    <message>
+        <source>the file is empty (expected a PEER AT2 record)</source>
+        <translation>the file is empty (expected a PEER AT2 record)</translation>
+    </message>
+    <message>
+        <source>the file is empty (no acceleration values)</source>
+        <translation>the file is empty (no acceleration values)</translation>
+    </message>
+    <message>
+        <source>no data lines (only comments or blank lines)</source>
+        <translation>no data lines (only comments or blank lines)</translation>
+    </message>
+    <message>
+        <source>the file is empty: expected an AT2 header ('NPTS=..., DT=...' on line 4), two columns (time, acceleration) or one column of values</source>
+        <translation>the file is empty: expected an AT2 header ('NPTS=..., DT=...' on line 4), two columns (time, acceleration) or one column of values</translation>
+    </message>
+    <message>
+        <source>no data lines: expected an AT2 header ('NPTS=..., DT=...' on line 4), two columns (time, acceleration) or one column of values</source>
+        <translation>no data lines: expected an AT2 header ('NPTS=..., DT=...' on line 4), two columns (time, acceleration) or one column of values</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>expected a number, found %1</translation>
+    </message>
+    <message>
+        <source>non-finite value %1</source>
+        <translation>non-finite value %1</translation>
+    </message>
+    <message>
+        <source>the time step dt must be &gt; 0 s, got %1</source>
+        <translation>the time step dt must be &gt; 0 s, got %1</translation>
+    </message>
+    <message>
+        <source>expected two columns (time, acceleration), found %1 value(s)</source>
+        <translation>expected two columns (time, acceleration), found %1 value(s)</translation>
+    </message>
+    <message>
+        <source>only one sample: the time step cannot be determined</source>
+        <translation>only one sample: the time step cannot be determined</translation>
+    </message>
+    <message>
+        <source>time must increase: %1 s follows %2 s</source>
+        <translation>time must increase: %1 s follows %2 s</translation>
+    </message>
+    <message>
+        <source>non-uniform time step: %1 s follows %2 s (step %3 s, mean step %4 s); a uniform step is required (tolerance 1e-6 relative)</source>
+        <translation>non-uniform time step: %1 s follows %2 s (step %3 s, mean step %4 s); a uniform step is required (tolerance 1e-6 relative)</translation>
+    </message>
+    <message>
+        <source>a single column of acceleration values needs the time step dt, and none was given</source>
+        <translation>a single column of acceleration values needs the time step dt, and none was given</translation>
+    </message>
+    <message>
+        <source>cannot open the configuration file</source>
+        <translation>cannot open the configuration file</translation>
+    </message>
+    <message>
+        <source>not a regular file (a folder, device, pipe or socket)</source>
+        <translation>not a regular file (a folder, device, pipe or socket)</translation>
+    </message>
+    <message>
+        <source>not valid JSON (%1)</source>
+        <translation>not valid JSON (%1)</translation>
+    </message>
+    <message>
+        <source>cannot be opened (no such file)</source>
+        <translation>cannot be opened (no such file)</translation>
+    </message>
+    <message>
+        <source>not an HSMU record (not an HDF5 file)</source>
+        <translation>not an HSMU record (not an HDF5 file)</translation>
+    </message>
+    <message>
+        <source>not an HSMU record (no schema_version attribute)</source>
+        <translation>not an HSMU record (no schema_version attribute)</translation>
+    </message>
+    <message>
+        <source>damaged record (%1)</source>
+        <translation>damaged record (%1)</translation>
+    </message>
+    <message>
+        <source>ideal</source>
+        <translation>ideal</translation>
+    </message>
+    <message>
+        <source>lag</source>
+        <translation>lag</translation>
+    </message>
+    <message>
+        <source>delay</source>
+        <translation>delay</translation>
+    </message>
+    <message>
+        <source>fast</source>
+        <translation>fast</translation>
+    </message>
+    <message>
+        <source>real-time</source>
+        <translation>real-time</translation>
+    </message>
+    <message>
+        <source>the record holds no step</source>
+        <translation>the record holds no step</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -1210,12 +1542,12 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>fixed wall time per step</translation>
     </message>
     <message>
-        <source> s of wall time per step</source>
-        <translation> s of wall time per step</translation>
-    </message>
-    <message>
         <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
         <translation>Each step takes this long in wall time (pseudo-dynamic pace)</translation>
+    </message>
+    <message>
+        <source> s/step</source>
+        <translation> s/step</translation>
     </message>
 </context>
 <context>

@@ -131,6 +131,338 @@
         <source>synthetic Kanai-Tajimi (seed %1)</source>
         <translation>sintético Kanai-Tajimi (semilla %1)</translation>
     </message>
+    <message>
+        <source>link to %1 is down (%2); resume to reconnect</source>
+        <translation>el enlace con %1 está caído (%2); reanude para reconectar</translation>
+    </message>
+    <message>
+        <source>link to %1: %2</source>
+        <translation>enlace con %1: %2</translation>
+    </message>
+    <message>
+        <source>controller at %1: %2</source>
+        <translation>controlador en %1: %2</translation>
+    </message>
+    <message>
+        <source>TCP link is holding: %1</source>
+        <translation>el enlace TCP está detenido: %1</translation>
+    </message>
+    <message>
+        <source>no connection to %1 within %2 s</source>
+        <translation>sin conexión con %1 en %2 s</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>no se puede conectar con %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot resolve %1: %2</source>
+        <translation>no se puede resolver %1: %2</translation>
+    </message>
+    <message>
+        <source>the controller closed the connection</source>
+        <translation>el controlador cerró la conexión</translation>
+    </message>
+    <message>
+        <source>the peer closed the connection</source>
+        <translation>el otro extremo cerró la conexión</translation>
+    </message>
+    <message>
+        <source>connection lost while sending: %1</source>
+        <translation>conexión perdida al enviar: %1</translation>
+    </message>
+    <message>
+        <source>connection lost: %1</source>
+        <translation>conexión perdida: %1</translation>
+    </message>
+    <message>
+        <source>malformed frame from the controller: %1</source>
+        <translation>trama mal formada del controlador: %1</translation>
+    </message>
+    <message>
+        <source>the controller was silent for %1 s</source>
+        <translation>el controlador no respondió durante %1 s</translation>
+    </message>
+    <message>
+        <source>not connected: %1</source>
+        <translation>sin conexión: %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>sin conexión</translation>
+    </message>
+    <message>
+        <source>no reply within %1 s</source>
+        <translation>sin respuesta en %1 s</translation>
+    </message>
+    <message>
+        <source>closed by the console</source>
+        <translation>cerrado por la consola</translation>
+    </message>
+    <message>
+        <source>closed by an emergency hold</source>
+        <translation>cerrado por una retención de emergencia</translation>
+    </message>
+    <message>
+        <source>no answer to the hello</source>
+        <translation>sin respuesta al saludo (hello)</translation>
+    </message>
+    <message>
+        <source>no measurement for step %1</source>
+        <translation>sin medición del paso %1</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s specimen is at step %1 but the test committed %2 (was it restarted without its --state file?); cannot resume without a jump</source>
+        <translation>la probeta del controlador está en el paso %1 pero el ensayo confirmó %2 (¿se reinició sin su archivo --state?); no se puede reanudar sin un salto</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos; holds: %2</source>
+        <translation>la probeta &apos;%1&apos; está detenida: %2</translation>
+    </message>
+    <message>
+        <source>interlock: %1</source>
+        <translation>enclavamiento: %1</translation>
+    </message>
+    <message>
+        <source>specimen fault: %1</source>
+        <translation>fallo de la probeta: %1</translation>
+    </message>
+    <message>
+        <source>controller fault: %1</source>
+        <translation>fallo del controlador: %1</translation>
+    </message>
+    <message>
+        <source>actuator position |d| = %1 exceeds the limit %2</source>
+        <translation>la posición del actuador |d| = %1 supera el límite %2</translation>
+    </message>
+    <message>
+        <source>console hold</source>
+        <translation>detención desde la consola</translation>
+    </message>
+    <message>
+        <source>wrong token</source>
+        <translation>token incorrecto</translation>
+    </message>
+    <message>
+        <source>another console session is running a test on this controller (one session at a time)</source>
+        <translation>otra sesión de consola está ejecutando un ensayo en este controlador (una sesión a la vez)</translation>
+    </message>
+    <message>
+        <source>this controller has no specimen named &apos;%1&apos;</source>
+        <translation>este controlador no tiene ninguna probeta llamada &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>held from the previous console session: %1</source>
+        <translation>detenido desde la sesión de consola anterior: %1</translation>
+    </message>
+    <message>
+        <source>virtual specimen (%1 law, force noise std %2, %3 actuator, fracture event)</source>
+        <translation>probeta virtual (ley %1, ruido de fuerza σ %2, actuador %3, evento de fractura)</translation>
+    </message>
+    <message>
+        <source>virtual specimen (%1 law, force noise std %2, %3 actuator)</source>
+        <translation>probeta virtual (ley %1, ruido de fuerza σ %2, actuador %3)</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos; on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector, fracture event), %7 committed steps</source>
+        <translation>probeta &apos;%1&apos; en hsmu-controller (ley %2, ruido de fuerza σ %3, actuador %4, ritmo %5, predictor-corrector a %6 Hz, evento de fractura), %7 pasos confirmados</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos; on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector), %7 committed steps</source>
+        <translation>probeta &apos;%1&apos; en hsmu-controller (ley %2, ruido de fuerza σ %3, actuador %4, ritmo %5, predictor-corrector a %6 Hz), %7 pasos confirmados</translation>
+    </message>
+    <message>
+        <source>TCP link %1 to %2</source>
+        <translation>enlace TCP %1 con %2</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos;</source>
+        <translation>probeta &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1 link %2 for specimen &apos;%3&apos; (%4)</source>
+        <translation>enlace %1 %2 para la probeta &apos;%3&apos; (%4)</translation>
+    </message>
+    <message>
+        <source>prediction rejected: %1</source>
+        <translation>predicción rechazada: %1</translation>
+    </message>
+    <message>
+        <source>update rejected: %1</source>
+        <translation>actualización rechazada: %1</translation>
+    </message>
+    <message>
+        <source>Bouc-Wen integration failed (%1): %2</source>
+        <translation>falló la integración de Bouc-Wen (%1): %2</translation>
+    </message>
+    <message>
+        <source>%1; z and e could not be advanced either: step skipped</source>
+        <translation>%1; tampoco se pudieron avanzar z y e: paso omitido</translation>
+    </message>
+    <message>
+        <source>the state is not finite</source>
+        <translation>el estado no es finito</translation>
+    </message>
+    <message>
+        <source>the measurement is not finite</source>
+        <translation>la medición no es finita</translation>
+    </message>
+    <message>
+        <source>the predicted measurement is not finite</source>
+        <translation>la medición predicha no es finita</translation>
+    </message>
+    <message>
+        <source>the innovation covariance is not positive definite (check R)</source>
+        <translation>la covarianza de la innovación no es definida positiva (revise R)</translation>
+    </message>
+    <message>
+        <source>the filter has not been initialized</source>
+        <translation>el filtro no se ha inicializado</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead fit failed: %1</source>
+        <translation>falló el ajuste de Nelder-Mead: %1</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead trigger %1 kept the parameters (RMS %2 not improved, %3 evaluations, %4 ms)</source>
+        <translation>el disparo %1 de Nelder-Mead conservó los parámetros (RMS %2 sin mejora, %3 evaluaciones, %4 ms)</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead trigger %1: RMS force error %2 -&gt; %3 (%4 evaluations, %5 ms)</source>
+        <translation>disparo %1 de Nelder-Mead: error RMS de fuerza %2 -&gt; %3 (%4 evaluaciones, %5 ms)</translation>
+    </message>
+    <message>
+        <source>the measured deformation or force is not finite: step skipped</source>
+        <translation>la deformación o la fuerza medidas no son finitas: paso omitido</translation>
+    </message>
+    <message>
+        <source>%1 line %2: %3</source>
+        <translation>%1, línea %2: %3</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos;: the file does not exist</source>
+        <translation>no se puede abrir &apos;%1&apos;: el archivo no existe</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos;: it is a folder, not a file</source>
+        <translation>no se puede abrir &apos;%1&apos;: es una carpeta, no un archivo</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: not a regular file (a device, pipe or socket)</source>
+        <translation>no se puede leer &apos;%1&apos;: no es un archivo normal (un dispositivo, tubería o socket)</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos; for reading (permissions?)</source>
+        <translation>no se puede abrir &apos;%1&apos; para lectura (¿permisos?)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a text file (binary data at byte %2)</source>
+        <translation>&apos;%1&apos; no es un archivo de texto (datos binarios en el byte %2)</translation>
+    </message>
+    <message>
+        <source>the file is empty (expected a PEER AT2 record)</source>
+        <translation>el archivo está vacío (se esperaba un registro PEER AT2)</translation>
+    </message>
+    <message>
+        <source>the file is empty (no acceleration values)</source>
+        <translation>el archivo está vacío (sin valores de aceleración)</translation>
+    </message>
+    <message>
+        <source>no data lines (only comments or blank lines)</source>
+        <translation>no hay líneas de datos (solo comentarios o líneas en blanco)</translation>
+    </message>
+    <message>
+        <source>the file is empty: expected an AT2 header (&apos;NPTS=..., DT=...&apos; on line 4), two columns (time, acceleration) or one column of values</source>
+        <translation>el archivo está vacío: se esperaba una cabecera AT2 (&apos;NPTS=..., DT=...&apos; en la línea 4), dos columnas (tiempo, aceleración) o una columna de valores</translation>
+    </message>
+    <message>
+        <source>no data lines: expected an AT2 header (&apos;NPTS=..., DT=...&apos; on line 4), two columns (time, acceleration) or one column of values</source>
+        <translation>no hay líneas de datos: se esperaba una cabecera AT2 (&apos;NPTS=..., DT=...&apos; en la línea 4), dos columnas (tiempo, aceleración) o una columna de valores</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>se esperaba un número, se encontró %1</translation>
+    </message>
+    <message>
+        <source>non-finite value %1</source>
+        <translation>valor no finito %1</translation>
+    </message>
+    <message>
+        <source>the time step dt must be &gt; 0 s, got %1</source>
+        <translation>el paso de tiempo dt debe ser &gt; 0 s, se recibió %1</translation>
+    </message>
+    <message>
+        <source>expected two columns (time, acceleration), found %1 value(s)</source>
+        <translation>se esperaban dos columnas (tiempo, aceleración), se encontraron %1 valor(es)</translation>
+    </message>
+    <message>
+        <source>only one sample: the time step cannot be determined</source>
+        <translation>solo una muestra: no se puede determinar el paso de tiempo</translation>
+    </message>
+    <message>
+        <source>time must increase: %1 s follows %2 s</source>
+        <translation>el tiempo debe crecer: %1 s sigue a %2 s</translation>
+    </message>
+    <message>
+        <source>non-uniform time step: %1 s follows %2 s (step %3 s, mean step %4 s); a uniform step is required (tolerance 1e-6 relative)</source>
+        <translation>paso de tiempo no uniforme: %1 s sigue a %2 s (paso %3 s, paso medio %4 s); se requiere un paso uniforme (tolerancia relativa 1e-6)</translation>
+    </message>
+    <message>
+        <source>a single column of acceleration values needs the time step dt, and none was given</source>
+        <translation>una sola columna de valores de aceleración necesita el paso de tiempo dt, y no se indicó ninguno</translation>
+    </message>
+    <message>
+        <source>cannot open the configuration file</source>
+        <translation>no se puede abrir el archivo de configuración</translation>
+    </message>
+    <message>
+        <source>not a regular file (a folder, device, pipe or socket)</source>
+        <translation>no es un archivo normal (una carpeta, dispositivo, tubería o socket)</translation>
+    </message>
+    <message>
+        <source>not valid JSON (%1)</source>
+        <translation>JSON no válido (%1)</translation>
+    </message>
+    <message>
+        <source>cannot be opened (no such file)</source>
+        <translation>no se puede abrir (no existe el archivo)</translation>
+    </message>
+    <message>
+        <source>not an HSMU record (not an HDF5 file)</source>
+        <translation>no es un registro HSMU (no es un archivo HDF5)</translation>
+    </message>
+    <message>
+        <source>not an HSMU record (no schema_version attribute)</source>
+        <translation>no es un registro HSMU (sin atributo schema_version)</translation>
+    </message>
+    <message>
+        <source>damaged record (%1)</source>
+        <translation>registro dañado (%1)</translation>
+    </message>
+    <message>
+        <source>ideal</source>
+        <translation>ideal</translation>
+    </message>
+    <message>
+        <source>lag</source>
+        <translation>con retardo de primer orden</translation>
+    </message>
+    <message>
+        <source>delay</source>
+        <translation>con retardo puro</translation>
+    </message>
+    <message>
+        <source>fast</source>
+        <translation>rápido</translation>
+    </message>
+    <message>
+        <source>real-time</source>
+        <translation>tiempo real</translation>
+    </message>
+    <message>
+        <source>the record holds no step</source>
+        <translation>el registro no contiene ningún paso</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -1210,12 +1542,12 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>tiempo real fijo por paso</translation>
     </message>
     <message>
-        <source> s of wall time per step</source>
-        <translation> s de tiempo real por paso</translation>
-    </message>
-    <message>
         <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
         <translation>Cada paso dura este tiempo real (ritmo pseudodinámico)</translation>
+    </message>
+    <message>
+        <source> s/step</source>
+        <translation> s/paso</translation>
     </message>
 </context>
 <context>

@@ -131,6 +131,338 @@
         <source>synthetic Kanai-Tajimi (seed %1)</source>
         <translation>合成 Kanai-Tajimi（种子 %1）</translation>
     </message>
+    <message>
+        <source>link to %1 is down (%2); resume to reconnect</source>
+        <translation>到 %1 的链路已断开（%2）；继续以重新连接</translation>
+    </message>
+    <message>
+        <source>link to %1: %2</source>
+        <translation>到 %1 的链路：%2</translation>
+    </message>
+    <message>
+        <source>controller at %1: %2</source>
+        <translation>位于 %1 的控制器：%2</translation>
+    </message>
+    <message>
+        <source>TCP link is holding: %1</source>
+        <translation>TCP 链路已暂停：%1</translation>
+    </message>
+    <message>
+        <source>no connection to %1 within %2 s</source>
+        <translation>%2 秒内未能连接到 %1</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>无法连接到 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot resolve %1: %2</source>
+        <translation>无法解析 %1：%2</translation>
+    </message>
+    <message>
+        <source>the controller closed the connection</source>
+        <translation>控制器关闭了连接</translation>
+    </message>
+    <message>
+        <source>the peer closed the connection</source>
+        <translation>对端关闭了连接</translation>
+    </message>
+    <message>
+        <source>connection lost while sending: %1</source>
+        <translation>发送时连接丢失：%1</translation>
+    </message>
+    <message>
+        <source>connection lost: %1</source>
+        <translation>连接丢失：%1</translation>
+    </message>
+    <message>
+        <source>malformed frame from the controller: %1</source>
+        <translation>来自控制器的帧格式错误：%1</translation>
+    </message>
+    <message>
+        <source>the controller was silent for %1 s</source>
+        <translation>控制器 %1 秒无响应</translation>
+    </message>
+    <message>
+        <source>not connected: %1</source>
+        <translation>未连接：%1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>no reply within %1 s</source>
+        <translation>%1 秒内无应答</translation>
+    </message>
+    <message>
+        <source>closed by the console</source>
+        <translation>已由控制台关闭</translation>
+    </message>
+    <message>
+        <source>closed by an emergency hold</source>
+        <translation>因紧急暂停而关闭</translation>
+    </message>
+    <message>
+        <source>no answer to the hello</source>
+        <translation>握手（hello）无应答</translation>
+    </message>
+    <message>
+        <source>no measurement for step %1</source>
+        <translation>第 %1 步无测量值</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s specimen is at step %1 but the test committed %2 (was it restarted without its --state file?); cannot resume without a jump</source>
+        <translation>控制器的试件处于第 %1 步，而试验已提交 %2 步（是否在没有 --state 文件的情况下重启了？）；无法在不跳步的情况下继续</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos; holds: %2</source>
+        <translation>试件“%1”已暂停：%2</translation>
+    </message>
+    <message>
+        <source>interlock: %1</source>
+        <translation>联锁：%1</translation>
+    </message>
+    <message>
+        <source>specimen fault: %1</source>
+        <translation>试件故障：%1</translation>
+    </message>
+    <message>
+        <source>controller fault: %1</source>
+        <translation>控制器故障：%1</translation>
+    </message>
+    <message>
+        <source>actuator position |d| = %1 exceeds the limit %2</source>
+        <translation>作动器位置 |d| = %1 超过限值 %2</translation>
+    </message>
+    <message>
+        <source>console hold</source>
+        <translation>控制台暂停</translation>
+    </message>
+    <message>
+        <source>wrong token</source>
+        <translation>令牌错误</translation>
+    </message>
+    <message>
+        <source>another console session is running a test on this controller (one session at a time)</source>
+        <translation>另一个控制台会话正在此控制器上运行试验（一次只允许一个会话）</translation>
+    </message>
+    <message>
+        <source>this controller has no specimen named &apos;%1&apos;</source>
+        <translation>此控制器没有名为“%1”的试件</translation>
+    </message>
+    <message>
+        <source>held from the previous console session: %1</source>
+        <translation>自上一个控制台会话起处于暂停：%1</translation>
+    </message>
+    <message>
+        <source>virtual specimen (%1 law, force noise std %2, %3 actuator, fracture event)</source>
+        <translation>虚拟试件（%1 本构，力噪声标准差 %2，%3 作动器，断裂事件）</translation>
+    </message>
+    <message>
+        <source>virtual specimen (%1 law, force noise std %2, %3 actuator)</source>
+        <translation>虚拟试件（%1 本构，力噪声标准差 %2，%3 作动器）</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos; on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector, fracture event), %7 committed steps</source>
+        <translation>hsmu-controller 上的试件“%1”（%2 本构，力噪声标准差 %3，%4 作动器，%5 节奏，%6 Hz 预测-校正，断裂事件），已提交 %7 步</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos; on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz predictor-corrector), %7 committed steps</source>
+        <translation>hsmu-controller 上的试件“%1”（%2 本构，力噪声标准差 %3，%4 作动器，%5 节奏，%6 Hz 预测-校正），已提交 %7 步</translation>
+    </message>
+    <message>
+        <source>TCP link %1 to %2</source>
+        <translation>TCP 链路 %1，连接 %2</translation>
+    </message>
+    <message>
+        <source>specimen &apos;%1&apos;</source>
+        <translation>试件“%1”</translation>
+    </message>
+    <message>
+        <source>%1 link %2 for specimen &apos;%3&apos; (%4)</source>
+        <translation>%1 链路 %2，用于试件“%3”（%4）</translation>
+    </message>
+    <message>
+        <source>prediction rejected: %1</source>
+        <translation>预测被拒绝：%1</translation>
+    </message>
+    <message>
+        <source>update rejected: %1</source>
+        <translation>更新被拒绝：%1</translation>
+    </message>
+    <message>
+        <source>Bouc-Wen integration failed (%1): %2</source>
+        <translation>Bouc-Wen 积分失败（%1）：%2</translation>
+    </message>
+    <message>
+        <source>%1; z and e could not be advanced either: step skipped</source>
+        <translation>%1；z 和 e 也无法推进：跳过此步</translation>
+    </message>
+    <message>
+        <source>the state is not finite</source>
+        <translation>状态不是有限值</translation>
+    </message>
+    <message>
+        <source>the measurement is not finite</source>
+        <translation>测量值不是有限值</translation>
+    </message>
+    <message>
+        <source>the predicted measurement is not finite</source>
+        <translation>预测的测量值不是有限值</translation>
+    </message>
+    <message>
+        <source>the innovation covariance is not positive definite (check R)</source>
+        <translation>新息协方差不是正定的（请检查 R）</translation>
+    </message>
+    <message>
+        <source>the filter has not been initialized</source>
+        <translation>滤波器尚未初始化</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead fit failed: %1</source>
+        <translation>Nelder-Mead 拟合失败：%1</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead trigger %1 kept the parameters (RMS %2 not improved, %3 evaluations, %4 ms)</source>
+        <translation>Nelder-Mead 第 %1 次触发保留了参数（RMS %2 未改善，%3 次评估，%4 毫秒）</translation>
+    </message>
+    <message>
+        <source>Nelder-Mead trigger %1: RMS force error %2 -&gt; %3 (%4 evaluations, %5 ms)</source>
+        <translation>Nelder-Mead 第 %1 次触发：力的 RMS 误差 %2 -&gt; %3（%4 次评估，%5 毫秒）</translation>
+    </message>
+    <message>
+        <source>the measured deformation or force is not finite: step skipped</source>
+        <translation>测得的变形或力不是有限值：跳过此步</translation>
+    </message>
+    <message>
+        <source>%1 line %2: %3</source>
+        <translation>%1 第 %2 行：%3</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos;: the file does not exist</source>
+        <translation>无法打开“%1”：文件不存在</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos;: it is a folder, not a file</source>
+        <translation>无法打开“%1”：这是文件夹，不是文件</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: not a regular file (a device, pipe or socket)</source>
+        <translation>无法读取“%1”：不是普通文件（设备、管道或套接字）</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos; for reading (permissions?)</source>
+        <translation>无法打开“%1”进行读取（权限？）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a text file (binary data at byte %2)</source>
+        <translation>“%1”不是文本文件（第 %2 字节处为二进制数据）</translation>
+    </message>
+    <message>
+        <source>the file is empty (expected a PEER AT2 record)</source>
+        <translation>文件为空（应为 PEER AT2 记录）</translation>
+    </message>
+    <message>
+        <source>the file is empty (no acceleration values)</source>
+        <translation>文件为空（没有加速度值）</translation>
+    </message>
+    <message>
+        <source>no data lines (only comments or blank lines)</source>
+        <translation>没有数据行（只有注释或空行）</translation>
+    </message>
+    <message>
+        <source>the file is empty: expected an AT2 header (&apos;NPTS=..., DT=...&apos; on line 4), two columns (time, acceleration) or one column of values</source>
+        <translation>文件为空：应为 AT2 文件头（第 4 行为“NPTS=..., DT=...”）、两列（时间、加速度）或一列数值</translation>
+    </message>
+    <message>
+        <source>no data lines: expected an AT2 header (&apos;NPTS=..., DT=...&apos; on line 4), two columns (time, acceleration) or one column of values</source>
+        <translation>没有数据行：应为 AT2 文件头（第 4 行为“NPTS=..., DT=...”）、两列（时间、加速度）或一列数值</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>应为数字，实际为 %1</translation>
+    </message>
+    <message>
+        <source>non-finite value %1</source>
+        <translation>非有限值 %1</translation>
+    </message>
+    <message>
+        <source>the time step dt must be &gt; 0 s, got %1</source>
+        <translation>时间步长 dt 必须 &gt; 0 秒，实际为 %1</translation>
+    </message>
+    <message>
+        <source>expected two columns (time, acceleration), found %1 value(s)</source>
+        <translation>应为两列（时间、加速度），实际有 %1 个值</translation>
+    </message>
+    <message>
+        <source>only one sample: the time step cannot be determined</source>
+        <translation>只有一个样本：无法确定时间步长</translation>
+    </message>
+    <message>
+        <source>time must increase: %1 s follows %2 s</source>
+        <translation>时间必须递增：%1 秒在 %2 秒之后</translation>
+    </message>
+    <message>
+        <source>non-uniform time step: %1 s follows %2 s (step %3 s, mean step %4 s); a uniform step is required (tolerance 1e-6 relative)</source>
+        <translation>时间步长不均匀：%1 秒在 %2 秒之后（步长 %3 秒，平均步长 %4 秒）；需要均匀步长（相对容差 1e-6）</translation>
+    </message>
+    <message>
+        <source>a single column of acceleration values needs the time step dt, and none was given</source>
+        <translation>单列加速度值需要时间步长 dt，但未给出</translation>
+    </message>
+    <message>
+        <source>cannot open the configuration file</source>
+        <translation>无法打开配置文件</translation>
+    </message>
+    <message>
+        <source>not a regular file (a folder, device, pipe or socket)</source>
+        <translation>不是普通文件（文件夹、设备、管道或套接字）</translation>
+    </message>
+    <message>
+        <source>not valid JSON (%1)</source>
+        <translation>不是有效的 JSON（%1）</translation>
+    </message>
+    <message>
+        <source>cannot be opened (no such file)</source>
+        <translation>无法打开（文件不存在）</translation>
+    </message>
+    <message>
+        <source>not an HSMU record (not an HDF5 file)</source>
+        <translation>不是 HSMU 记录（不是 HDF5 文件）</translation>
+    </message>
+    <message>
+        <source>not an HSMU record (no schema_version attribute)</source>
+        <translation>不是 HSMU 记录（没有 schema_version 属性）</translation>
+    </message>
+    <message>
+        <source>damaged record (%1)</source>
+        <translation>记录已损坏（%1）</translation>
+    </message>
+    <message>
+        <source>ideal</source>
+        <translation>理想</translation>
+    </message>
+    <message>
+        <source>lag</source>
+        <translation>一阶滞后</translation>
+    </message>
+    <message>
+        <source>delay</source>
+        <translation>纯延迟</translation>
+    </message>
+    <message>
+        <source>fast</source>
+        <translation>快速</translation>
+    </message>
+    <message>
+        <source>real-time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <source>the record holds no step</source>
+        <translation>记录中没有任何步</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -1209,12 +1541,12 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>每步固定实际时间</translation>
     </message>
     <message>
-        <source> s of wall time per step</source>
-        <translation> 秒实际时间/步</translation>
-    </message>
-    <message>
         <source>Each step takes this long in wall time (pseudo-dynamic pace)</source>
         <translation>每一步占用这么长的实际时间（拟动力速度）</translation>
+    </message>
+    <message>
+        <source> s/step</source>
+        <translation> 秒/步</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include <deque>
+#include <optional>
 #include <map>
 
 #include <pthread.h>
@@ -47,6 +48,7 @@ struct ControllerServer::Impl final : SessionHost {
     std::vector<ControllerSession*> stationSession; // the admitted connection per station
     bool hasOwner = false;
     std::uint64_t owner = 0;
+    std::optional<std::uint64_t> lastSession; ///< the last admitted session (kept after it left)
     bool ticking = false;
     Clock::time_point nextTick;
     Clock::duration period;
@@ -161,8 +163,17 @@ struct ControllerServer::Impl final : SessionHost {
             old->send(ByeMsg{"replaced by a new connection of the same session"});
             old->close();
         }
+        if (lastSession && *lastSession != hello.sessionId) {
+            // A hold is per console session (docs/protocol.md, "Holds and sessions"): the
+            // previous session's console hold ends with it; a trip stays and is reported.
+            for (auto& station : stations)
+                if (station->releaseConsoleHold())
+                    log("specimen '" + station->name() + "': the previous session's hold ends "
+                        "with it (a new session arms through its own pre-flight)");
+        }
         hasOwner = true;
         owner = hello.sessionId;
+        lastSession = hello.sessionId;
         s.setStation(index);
         stationSession[static_cast<std::size_t>(index)] = &s;
         ++stats.sessionsAdmitted;

@@ -189,6 +189,7 @@ std::optional<Message> SpecimenStation::advance() {
 
 Message SpecimenStation::trip(ErrorCode code, const std::string& reason) {
     m_holding = true;
+    m_consoleHold = false;
     m_holdReason = (code == ErrorCode::Interlock       ? "interlock: "
                     : code == ErrorCode::SpecimenFault ? "specimen fault: "
                                                        : "controller fault: ") +
@@ -328,8 +329,11 @@ Message SpecimenStation::journal(const JournalRecord& r) {
 }
 
 Message SpecimenStation::hold(const std::string& reason) {
+    if (!m_holding || m_consoleHold) { // a trip's reason is kept: it is the reason to look
+        m_consoleHold = true;
+        m_holdReason = reason.empty() ? "console hold" : reason;
+    }
     m_holding = true;
-    m_holdReason = reason.empty() ? "console hold" : reason;
     m_pc.stop();
     m_pending = false;
     return AckMsg{MessageType::Hold, m_committed};
@@ -337,9 +341,17 @@ Message SpecimenStation::hold(const std::string& reason) {
 
 Message SpecimenStation::resume() {
     m_holding = false;
+    m_consoleHold = false;
     m_holdReason.clear();
     m_specimen->resume();
     return AckMsg{MessageType::Resume, m_committed};
+}
+
+bool SpecimenStation::releaseConsoleHold() {
+    if (!m_holding || !m_consoleHold)
+        return false;
+    resume();
+    return true;
 }
 
 Message SpecimenStation::reset() {
@@ -349,6 +361,7 @@ Message SpecimenStation::reset() {
     m_last = m_trial = Trial{};
     m_pending = false;
     m_holding = false;
+    m_consoleHold = false;
     m_holdReason.clear();
     m_actuator.reset(0.0);
     m_pc.beginStep(0.0, 0.0, 0.0, 0.0);

@@ -69,6 +69,10 @@ public:
     Message commit(const CommitMsg& m);
     Message hold(const std::string& reason);
     Message resume();
+    /// A new console session is admitted: a hold that a console asked for (Hold) belonged to
+    /// the previous session and ends here (the new session arms through its own pre-flight);
+    /// an interlock or fault trip stays (the hello-ack reports it). True if one was released.
+    bool releaseConsoleHold();
     /// A fresh specimen (virgin law, step count 0), recorded in the journal.
     Message reset();
 
@@ -122,6 +126,7 @@ private:
     bool m_pending = false;
     std::uint64_t m_pendingStep = 0;
     bool m_holding = false;
+    bool m_consoleHold = false; ///< the hold came from a console's Hold, not from a trip
     std::string m_holdReason;
     long m_totalHeld = 0;
     int m_trips = 0;

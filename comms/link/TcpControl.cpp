@@ -1,6 +1,7 @@
 #include "comms/link/TcpControl.h"
 
 #include "comms/link/LinkClient.h"
+#include "core/util/ReasonText.h"
 
 #include <algorithm>
 #include <chrono>
@@ -131,12 +132,22 @@ ControlResult TcpControl::handshake(bool initial) {
     m_controllerCommitted = ack->committedSteps;
     if (initial) {
         m_committed = ack->committedSteps;
+        bool held = ack->holding;
         if (m_committed > 0 && m_opt.freshSpecimen) {
             if (!m_link->send(ResetMsg{}, error))
                 return linkFault(error);
             if (ControlResult r = await(MessageType::Reset, m_opt.stepDeadline); !r.ok)
                 return r;
             m_committed = 0;
+            held = false; // a new specimen
+        }
+        if (held) {
+            // A trip left by an earlier session (the controller ends a console's own hold with
+            // its session): nothing is armed until someone clears it at the controller.
+            m_link->close();
+            m_linkError = reasonText("held-from-previous-session", {ack->holdReason});
+            return ControlResult::fault(
+                reasonText("controller-refused", {where(), m_linkError}));
         }
     } else if (ack->committedSteps != m_committed && ack->committedSteps != m_committed + 1) {
         // +1: the controller committed the step whose acknowledgement was lost; the retried

@@ -1,5 +1,6 @@
 #include "core/util/ReasonText.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace hsmu {
@@ -58,6 +59,108 @@ constexpr Template kTemplates[] = {
      "update not applied: approval queue full (%1 proposals pending): not queued (this and "
      "later offers are in the record until the operator decides)"},
     {"auxiliary-not-converged", "auxiliary model did not converge at deformation %1"},
+    // The link to a controller and the controller's own faults (comms: TcpControl, LinkClient,
+    // OpenFrescoControl, OfSocket; hsmu-controller's SpecimenStation and ControllerServer).
+    {"link-down", "link to %1 is down (%2); resume to reconnect"},
+    {"link-fault", "link to %1: %2"},
+    {"controller-refused", "controller at %1: %2"},
+    {"link-holding", "TCP link is holding: %1"},
+    {"no-connection-within", "no connection to %1 within %2 s"},
+    {"cannot-connect", "cannot connect to %1: %2"},
+    {"cannot-resolve", "cannot resolve %1: %2"},
+    {"controller-closed", "the controller closed the connection"},
+    {"peer-closed", "the peer closed the connection"},
+    {"connection-lost-sending", "connection lost while sending: %1"},
+    {"connection-lost", "connection lost: %1"},
+    {"malformed-frame", "malformed frame from the controller: %1"},
+    {"controller-silent", "the controller was silent for %1 s"},
+    {"not-connected-because", "not connected: %1"},
+    {"not-connected", "not connected"},
+    {"no-reply-within", "no reply within %1 s"},
+    {"closed-by-console", "closed by the console"},
+    {"closed-by-emergency-hold", "closed by an emergency hold"},
+    {"no-hello-answer", "no answer to the hello"},
+    {"no-measurement-for-step", "no measurement for step %1"},
+    {"controller-step-mismatch",
+     "the controller's specimen is at step %1 but the test committed %2 (was it restarted "
+     "without its --state file?); cannot resume without a jump"},
+    {"specimen-holds", "specimen '%1' holds: %2"},
+    {"interlock", "interlock: %1"},
+    {"specimen-fault", "specimen fault: %1"},
+    {"controller-fault", "controller fault: %1"},
+    {"actuator-limit", "actuator position |d| = %1 exceeds the limit %2"},
+    {"console-hold", "console hold"},
+    {"wrong-token", "wrong token"},
+    {"controller-busy",
+     "another console session is running a test on this controller (one session at a time)"},
+    {"no-specimen-named", "this controller has no specimen named '%1'"},
+    {"held-from-previous-session", "held from the previous console session: %1"},
+    // What drives a specimen (a control's description, shown in pre-flight).
+    {"virtual-specimen-fracture",
+     "virtual specimen (%1 law, force noise std %2, %3 actuator, fracture event)"},
+    {"virtual-specimen", "virtual specimen (%1 law, force noise std %2, %3 actuator)"},
+    {"controller-specimen-fracture",
+     "specimen '%1' on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz "
+     "predictor-corrector, fracture event), %7 committed steps"},
+    {"controller-specimen",
+     "specimen '%1' on hsmu-controller (%2 law, force noise std %3, %4 actuator, %5 pace, %6 Hz "
+     "predictor-corrector), %7 committed steps"},
+    {"tcp-link-to", "TCP link %1 to %2"},
+    {"specimen-named", "specimen '%1'"},
+    {"openfresco-link", "%1 link %2 for specimen '%3' (%4)"},
+    // The identifiers' messages (core/updating, core/identification).
+    {"prediction-rejected", "prediction rejected: %1"},
+    {"update-rejected", "update rejected: %1"},
+    {"bouc-wen-integration-failed", "Bouc-Wen integration failed (%1): %2"},
+    {"state-not-advanced", "%1; z and e could not be advanced either: step skipped"},
+    {"ukf-state-not-finite", "the state is not finite"},
+    {"ukf-measurement-not-finite", "the measurement is not finite"},
+    {"ukf-prediction-not-finite", "the predicted measurement is not finite"},
+    {"ukf-innovation-not-pd", "the innovation covariance is not positive definite (check R)"},
+    {"ukf-not-initialized", "the filter has not been initialized"},
+    {"nelder-mead-failed", "Nelder-Mead fit failed: %1"},
+    {"nelder-mead-kept",
+     "Nelder-Mead trigger %1 kept the parameters (RMS %2 not improved, %3 evaluations, %4 ms)"},
+    {"nelder-mead-refit",
+     "Nelder-Mead trigger %1: RMS force error %2 -> %3 (%4 evaluations, %5 ms)"},
+    {"measured-not-finite-skipped",
+     "the measured deformation or force is not finite: step skipped"},
+    // File readers (ground motion, configuration, record); "<file>: " or "<file> line <n>: "
+    // before the problem.
+    {"file-line", "%1 line %2: %3"},
+    {"file-missing", "cannot open '%1': the file does not exist"},
+    {"file-is-folder", "cannot open '%1': it is a folder, not a file"},
+    {"file-not-regular", "cannot read '%1': not a regular file (a device, pipe or socket)"},
+    {"file-unreadable", "cannot open '%1' for reading (permissions?)"},
+    {"file-not-text", "'%1' is not a text file (binary data at byte %2)"},
+    {"motion-empty-at2", "the file is empty (expected a PEER AT2 record)"},
+    {"motion-empty", "the file is empty (no acceleration values)"},
+    {"motion-no-data", "no data lines (only comments or blank lines)"},
+    {"motion-unknown-empty",
+     "the file is empty: expected an AT2 header ('NPTS=..., DT=...' on line 4), two columns "
+     "(time, acceleration) or one column of values"},
+    {"motion-unknown-no-data",
+     "no data lines: expected an AT2 header ('NPTS=..., DT=...' on line 4), two columns (time, "
+     "acceleration) or one column of values"},
+    {"expected-number", "expected a number, found %1"},
+    {"non-finite-value", "non-finite value %1"},
+    {"dt-not-positive", "the time step dt must be > 0 s, got %1"},
+    {"two-columns", "expected two columns (time, acceleration), found %1 value(s)"},
+    {"one-sample", "only one sample: the time step cannot be determined"},
+    {"time-not-increasing", "time must increase: %1 s follows %2 s"},
+    {"non-uniform-step",
+     "non-uniform time step: %1 s follows %2 s (step %3 s, mean step %4 s); a uniform step is "
+     "required (tolerance 1e-6 relative)"},
+    {"single-column-needs-dt",
+     "a single column of acceleration values needs the time step dt, and none was given"},
+    {"config-cannot-open", "cannot open the configuration file"},
+    {"config-not-regular", "not a regular file (a folder, device, pipe or socket)"},
+    {"config-not-json", "not valid JSON (%1)"},
+    {"record-missing", "cannot be opened (no such file)"},
+    {"record-not-hdf5", "not an HSMU record (not an HDF5 file)"},
+    {"record-no-schema", "not an HSMU record (no schema_version attribute)"},
+    {"record-damaged", "damaged record (%1)"},
+    {"record-no-step", "the record holds no step"},
 };
 
 const Template* find(const char* code)
@@ -123,6 +226,18 @@ std::optional<CodedText> parseReason(const std::string& english)
             return CodedText{t.code, std::move(args)};
     }
     return std::nullopt;
+}
+
+int reasonArgumentCount(const char* code)
+{
+    const Template* t = find(code);
+    if (!t)
+        return -1;
+    int n = 0;
+    for (const char* p = t->english; *p; ++p)
+        if (placeholder(p))
+            n = std::max(n, p[1] - '0');
+    return n;
 }
 
 std::vector<std::string> reasonCodes()

@@ -25,6 +25,9 @@ std::string reasonText(const char* code, const std::vector<std::string>& args = 
 /// template; an argument is the shortest non-empty text that lets the rest match), or nothing.
 std::optional<CodedText> parseReason(const std::string& english);
 
+/// The number of arguments (the highest %n) of `code`'s template; -1 for an unknown code.
+int reasonArgumentCount(const char* code);
+
 /// Every code of the table, in its order (for tests: each must have a translation).
 std::vector<std::string> reasonCodes();
 

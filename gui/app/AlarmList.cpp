@@ -36,8 +36,8 @@ AlarmList::AlarmList(QWidget* parent) : QTreeWidget(parent) {
         acknowledge(item);
         notify();
     });
-    // Headers, severities, kinds and acknowledgements again in the new language (a message is
-    // kept in the language it was shown in, unless it has a code: AlarmText).
+    // Headers, severities, kinds, acknowledgements and every message again in the new
+    // language (an alarm from its code or English text, a console message from its data).
     LiveText::bind(this, [this] {
         setHeaderLabels({tr("Time [s]"), tr("Step"), tr("Severity"), tr("Kind"), tr("Message"),
                          tr("Acknowledged")});
@@ -65,11 +65,16 @@ void AlarmList::retranslate(QTreeWidgetItem* item) {
             item->setToolTip(Message, text);
         }
     }
-    const QVariant code = item->data(Message, kCodeRole);
-    if (code.isValid()) {
-        const QString text = AlarmText::describe(code.toString().toStdString(),
-                                                 item->data(Message, kArgsRole).toStringList(),
-                                                 item->data(Message, kEnglishRole).toString());
+    if (const auto render = m_renders.find(item); render != m_renders.end()) {
+        const QString text = render->second();
+        item->setText(Message, text);
+        item->setToolTip(Message, text);
+    }
+    const QVariant english = item->data(Message, kEnglishRole);
+    if (english.isValid()) {
+        const std::string code = item->data(Message, kCodeRole).toString().toStdString();
+        const QString text = AlarmText::describe(
+            code, item->data(Message, kArgsRole).toStringList(), english.toString());
         item->setText(Message, text);
         item->setToolTip(Message, text);
     }
@@ -126,15 +131,18 @@ void AlarmList::addAlarm(const Alarm& alarm) {
         add(QString::number(alarm.time, 'f', 2), QString::number(alarm.step), alarm.severity,
             describe(alarm.kind), AlarmText::describe(alarm.code, args, english));
     item->setData(Kind, kKindRole, int(alarm.kind));
-    if (!alarm.code.empty()) {
-        item->setData(Message, kCodeRole, QString::fromStdString(alarm.code));
-        item->setData(Message, kArgsRole, args);
-        item->setData(Message, kEnglishRole, english);
-    }
+    item->setData(Message, kCodeRole, QString::fromStdString(alarm.code));
+    item->setData(Message, kArgsRole, args);
+    item->setData(Message, kEnglishRole, english); // retranslated from it (AlarmText)
 }
 
 void AlarmList::addMessage(const QString& text, AlarmSeverity severity) {
     add(QString(), QString(), severity, tr("console"), text);
+}
+
+void AlarmList::addMessage(std::function<QString()> render, AlarmSeverity severity) {
+    QTreeWidgetItem* item = add(QString(), QString(), severity, tr("console"), render());
+    m_renders[item] = std::move(render);
 }
 
 void AlarmList::addEvent(double time, int step, const QString& text) {
@@ -204,6 +212,7 @@ void AlarmList::acknowledgeAll() {
 }
 
 void AlarmList::clearAlarms() {
+    m_renders.clear();
     clear();
     m_unacknowledged = 0;
     notify();

@@ -1,6 +1,8 @@
 #pragma once
 // AlarmList: the alarms and operator events of the current test, newest last: test time [s],
 // step, severity, a translated kind and the message, and whether the operator acknowledged it.
+// Every message follows a language change: an alarm is shown from its code or its English
+// (language-neutral) text, a console message from the data it was made of.
 // A critical alarm stays highlighted (red) until acknowledged; attentionChanged() reports how
 // many critical alarms are unacknowledged so the window can demand attention.
 // Thread rules: GUI thread only.
@@ -8,6 +10,9 @@
 #include "core/util/Alarm.h"
 
 #include <QTreeWidget>
+
+#include <functional>
+#include <unordered_map>
 
 namespace hsmu::gui {
 
@@ -21,8 +26,11 @@ public:
     explicit AlarmList(QWidget* parent = nullptr);
 
     void addAlarm(const Alarm& alarm);
-    /// A console message that is not a test alarm (e.g. a configuration error).
+    /// A console message that is not a test alarm (e.g. a configuration error), fixed text.
     void addMessage(const QString& text, AlarmSeverity severity);
+    /// A console message made by render() now and again at each language change (render
+    /// keeps the language-neutral data and calls tr() / AlarmText each time).
+    void addMessage(std::function<QString()> render, AlarmSeverity severity);
     /// An operator action at test time `time` [s] and step `step` (kind "operator").
     void addEvent(double time, int step, const QString& text);
     /// An operator event, shown with its time and step and retranslated at each language
@@ -50,6 +58,7 @@ private:
     void notify();
 
     int m_unacknowledged = 0;
+    std::unordered_map<const QTreeWidgetItem*, std::function<QString()>> m_renders;
 };
 
 } // namespace hsmu::gui

@@ -33,6 +33,9 @@ public:
     /// The translation of core's template `code` with `args`; a null QString if unknown (or
     /// a wrong argument count).
     static QString translate(const std::string& code, const QStringList& args);
+    /// The translation of one of the fixed words core writes into a description ("lag",
+    /// "real-time", ...); other texts unchanged.
+    static QString word(const QString& english);
     /// The stability check's sentence for the integrator `integrator` at time step dt [s].
     static QString stability(const StabilityReport& report, const QString& integrator,
                              double dt);

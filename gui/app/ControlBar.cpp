@@ -33,7 +33,7 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(parent) {
     });
     // Narrow enough for 1280 px in every language; the list opens as wide as it needs.
     m_presets->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_presets->setMinimumContentsLength(14);
+    m_presets->setMinimumContentsLength(12);
     addWidget(m_presets);
 
     m_open = addAction(QString(), this, &ControlBar::openRequested);
@@ -58,7 +58,7 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(parent) {
     addSeparator();
 
     auto* speedLabel = new QLabel(this);
-    addWidget(speedLabel);
+    m_speedLabelAction = addWidget(speedLabel);
     m_speed = new QComboBox(this);
     // Pseudo-dynamic tests run at 1/10 to 1/100 of real time, or at a fixed wall time per step.
     for (double f : {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 0.0, kWallPerStep})
@@ -72,7 +72,7 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(parent) {
     connect(m_speed, &QComboBox::currentIndexChanged, this, [this] { emitPace(); });
     connect(m_wallPerStep, &QDoubleSpinBox::valueChanged, this, [this] { emitPace(); });
     m_speed->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_speed->setMinimumContentsLength(12);
+    m_speed->setMinimumContentsLength(10); // the list opens as wide as it needs
     addWidget(m_speed);
     m_wallPerStepAction = addWidget(m_wallPerStep);
     m_wallPerStepAction->setVisible(false);
@@ -96,7 +96,7 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(parent) {
         m_speed->setToolTip(tr("Test time per wall-clock time"));
         for (int i = 0; i < m_speed->count(); ++i)
             m_speed->setItemText(i, speedText(m_speed->itemData(i).toDouble()));
-        m_wallPerStep->setSuffix(tr(" s of wall time per step"));
+        m_wallPerStep->setSuffix(tr(" s/step")); // short: the bar fits 1280 px with it
         m_wallPerStep->setToolTip(
             tr("Each step takes this long in wall time (pseudo-dynamic pace)"));
     });
@@ -160,7 +160,10 @@ void ControlBar::setWallTimePerStep(double seconds) {
 }
 
 void ControlBar::emitPace() {
+    // The field for the wall time per step takes the label's place (the bar fits 1280 px in
+    // every language; the combo still says "fixed wall time per step").
     m_wallPerStepAction->setVisible(wallTimePerStep() > 0.0);
+    m_speedLabelAction->setVisible(wallTimePerStep() <= 0.0);
     emit paceChanged(speed(), wallTimePerStep());
     emit speedChanged(speed());
 }

@@ -60,6 +60,7 @@ private:
     QComboBox* m_presets = nullptr;
     QDoubleSpinBox* m_wallPerStep = nullptr;
     QAction* m_wallPerStepAction = nullptr;
+    QAction* m_speedLabelAction = nullptr; ///< the "Speed:" label
     QComboBox* m_speed = nullptr;
     QAction* m_open = nullptr;
     QAction* m_start = nullptr;

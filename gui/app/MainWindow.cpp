@@ -156,9 +156,12 @@ bool MainWindow::loadConfiguration(const QString& nameOrPath, QString* error) {
         m_controller->load(cfg, *address);
     } catch (const std::exception& e) {
         const QString message = QString::fromStdString(e.what());
-        m_alarms->addMessage(tr("cannot load %1: %2").arg(nameOrPath, message),
-                             AlarmSeverity::Critical);
-        m_status->showMessage(message, 10000);
+        m_alarms->addMessage(
+            [nameOrPath, message] {
+                return tr("cannot load %1: %2").arg(nameOrPath, AlarmText::reason(message));
+            },
+            AlarmSeverity::Critical);
+        m_status->showMessage(AlarmText::reason(message), 10000);
         m_controls->setRunState(m_controller->state());
         m_status->setRunState(m_controller->state());
         if (error)
@@ -180,7 +183,9 @@ bool MainWindow::applySetup() {
     const auto cfg = m_setup->edited(&error);
     const auto address = cfg ? m_setup->controller(&error) : std::nullopt;
     if (!cfg || !address) {
-        m_alarms->addMessage(tr("setup not applied: %1").arg(error), AlarmSeverity::Warning);
+        m_alarms->addMessage(
+            [error] { return tr("setup not applied: %1").arg(AlarmText::reason(error)); },
+            AlarmSeverity::Warning);
         m_status->showMessage(error, 10000);
         return false;
     }
@@ -191,8 +196,10 @@ bool MainWindow::applySetup() {
         m_controller->load(withPolicy, *address);
     } catch (const std::exception& e) {
         const QString message = QString::fromStdString(e.what());
-        m_alarms->addMessage(tr("setup not applied: %1").arg(message), AlarmSeverity::Critical);
-        m_status->showMessage(message, 10000);
+        m_alarms->addMessage(
+            [message] { return tr("setup not applied: %1").arg(AlarmText::reason(message)); },
+            AlarmSeverity::Critical);
+        m_status->showMessage(AlarmText::reason(message), 10000);
         return false;
     }
     ConsoleSettings::setControllerAddress(m_setup->controllerText());
@@ -223,8 +230,11 @@ void MainWindow::previewGroundMotion() {
         m_setup->setGroundMotionStatus(QString());
         return;
     }
-    m_setup->setGroundMotionStatus(tr("This ground motion cannot be used: %1").arg(error));
-    m_alarms->addMessage(tr("ground motion not usable: %1").arg(error), AlarmSeverity::Warning);
+    m_setup->setGroundMotionStatus(
+        tr("This ground motion cannot be used: %1").arg(AlarmText::reason(error)));
+    m_alarms->addMessage(
+        [error] { return tr("ground motion not usable: %1").arg(AlarmText::reason(error)); },
+        AlarmSeverity::Warning);
 }
 
 void MainWindow::onPolicyChosen(ReporterPolicy policy, int everyN) {
@@ -310,9 +320,13 @@ void MainWindow::requestRun(RunRequest request) {
 void MainWindow::showPreflight(const PreflightReport& report) {
     showLinkState(true, false);
     if (m_pendingRun == RunRequest::None && !m_preflight) { // Test link
+        const QString where = QString::fromStdString(m_controller->controllerAddress().toString());
         m_alarms->addMessage(
-            tr("link tested: %1 answered; the test is prepared, Start shows the pre-flight check")
-                .arg(QString::fromStdString(m_controller->controllerAddress().toString())),
+            [where] {
+                return tr("link tested: %1 answered; the test is prepared, Start shows the "
+                          "pre-flight check")
+                    .arg(where);
+            },
             AlarmSeverity::Info);
         return;
     }
@@ -331,7 +345,7 @@ void MainWindow::showPreflight(const PreflightReport& report) {
         m_pendingRun = RunRequest::None;
         m_preflight = nullptr;
         if (result != QDialog::Accepted || request == RunRequest::None) {
-            m_alarms->addMessage(tr("start cancelled at the pre-flight check"),
+            m_alarms->addMessage([] { return tr("start cancelled at the pre-flight check"); },
                                  AlarmSeverity::Info);
             return;
         }
@@ -365,10 +379,11 @@ void MainWindow::openSettings() {
 void MainWindow::onTestLoaded() {
     m_plots->configure(m_controller->layout(), m_controller->config());
     m_alarms->clearAlarms();
-    m_alarms->addMessage(tr("loaded %1 (%2)")
-                             .arg(QString::fromStdString(m_controller->config().name),
-                                  QString::fromStdString(m_controller->config().sourcePath)),
-                         AlarmSeverity::Info);
+    const QString name = QString::fromStdString(m_controller->config().name);
+    const QString source = QString::fromStdString(m_controller->config().sourcePath);
+    m_alarms->addMessage(
+        [name, source] { return tr("loaded %1 (%2)").arg(AlarmText::reason(name), source); },
+        AlarmSeverity::Info);
     showTitle();
     m_status->setProgress(0, 0, 0.0, 0.0);
     m_status->setRecordingFile(QString());
@@ -431,8 +446,11 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
         const QString shown = AlarmText::reason(message);
         m_status->showMessage(shown, 15000);
         if (state == RunState::Failed)
-            m_alarms->addMessage(tr("the test cannot start: %1").arg(shown),
-                                 AlarmSeverity::Critical);
+            m_alarms->addMessage(
+                [message] {
+                    return tr("the test cannot start: %1").arg(AlarmText::reason(message));
+                },
+                AlarmSeverity::Critical);
     }
 }
 

@@ -83,8 +83,10 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
     auto* sv = new QVBoxLayout(specimens);
     for (const SpecimenPreflight& s : report.specimens) {
         auto* control = new QLabel(
-            tr("%1: %2").arg(QString::fromStdString(s.element), QString::fromStdString(s.control)),
+            tr("%1: %2").arg(QString::fromStdString(s.element),
+                             AlarmText::reason(QString::fromStdString(s.control))),
             specimens);
+        control->setObjectName(QStringLiteral("preflightControl"));
         control->setWordWrap(true);
         sv->addWidget(control);
     }

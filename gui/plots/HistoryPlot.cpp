@@ -9,7 +9,6 @@ namespace hsmu::gui {
 HistoryPlot::HistoryPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     xAxis->ticker()->setTickCount(4); // small cells at 1280x720: time labels must not touch
-    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     m_thresholdLine =
         PlotStyle::addLine(*this, Qt::Horizontal, QPen(QColor(200, 30, 30), 1.2, Qt::DashLine));
     m_cursor = PlotStyle::addLine(*this, Qt::Vertical, QPen(QColor(30, 30, 30), 1.5));

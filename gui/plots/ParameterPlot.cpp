@@ -12,7 +12,6 @@ ParameterPlot::ParameterPlot(QWidget* parent) : QCustomPlot(parent) {
     PlotStyle::apply(*this);
     yAxis->ticker()->setTickCount(3); // small cells: few, readable value labels
     xAxis->ticker()->setTickCount(3); // "12.515 17.5" ran together at 1280x720
-    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
 
     const QPen valuePen = PlotStyle::seriesPen(0);
     QColor band = valuePen.color();

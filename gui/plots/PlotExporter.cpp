@@ -40,7 +40,7 @@ bool PlotExporter::saveSvg(QCustomPlot& plot, const QString& path, int width, in
     svg.setFileName(path);
     svg.setSize(QSize(width, height));
     svg.setViewBox(QRect(0, 0, width, height));
-    svg.setTitle(QStringLiteral("HSMU Console plot"));
+    svg.setTitle(QStringLiteral("HSMU Console plot")); // file metadata: hsmu-ui-literal-ok
     QCPPainter painter;
     if (!painter.begin(&svg))
         return false;

@@ -60,6 +60,125 @@ void showCutTexts(QCustomPlot& plot) {
     plot.setToolTip(tip.join(QLatin1Char('\n')));
 }
 
+// As many ticks as the axis rect has room for without their labels running together (a
+// small plot at 1280x720 over a short time: "0 0.0250.050.075 0.1"); never more than the plot
+// asked for. Horizontal labels need their width, vertical ones their height, plus a gap.
+void fitTickCount(QCPAxis& axis) {
+    if (!axis.visible() || !axis.tickLabels() || !axis.axisRect())
+        return;
+    if (!axis.property("hsmuMaxTicks").isValid())
+        axis.setProperty("hsmuMaxTicks", axis.ticker()->tickCount());
+    const int most = axis.property("hsmuMaxTicks").toInt();
+    const bool horizontal = axis.orientation() == Qt::Horizontal;
+    const QRect r = axis.axisRect()->rect();
+    const double room = horizontal ? r.width() : r.height();
+    const double span = axis.range().size();
+    if (!(room > 0.0) || !(span > 0.0))
+        return;
+    const QFontMetrics fm(axis.tickLabelFont());
+    const QString format = axis.numberFormat();
+    // The most ticks that fit, preferring two or more labels inside the range (one label
+    // says nothing about the scale); at worst one tick.
+    int chosen = 1, chosenInside = 0;
+    for (int n = most; n >= 1; --n) {
+        axis.ticker()->setTickCount(n);
+        QVector<double> ticks;
+        QVector<QString> labels;
+        axis.ticker()->generate(axis.range(), axis.parentPlot()->locale(),
+                                format.isEmpty() ? QLatin1Char('g') : format.at(0),
+                                axis.numberPrecision(), ticks, nullptr, &labels);
+        int needed = 0, inside = 0;
+        for (qsizetype i = 0; i < ticks.size(); ++i) {
+            if (!axis.range().contains(ticks[i]))
+                continue;
+            ++inside;
+            needed = std::max(needed, horizontal ? fm.horizontalAdvance(labels[i]) : fm.ascent());
+        }
+        double gap = room;
+        for (qsizetype i = 1; i < ticks.size(); ++i)
+            gap = std::min(gap, room * std::abs(ticks[i] - ticks[i - 1]) / span);
+        const bool fits = gap >= needed + (horizontal ? 8 : 2);
+        if (fits && (inside >= 2 || chosenInside == 0) && inside > chosenInside) {
+            chosen = n;
+            chosenInside = inside;
+            if (inside >= 2)
+                break;
+        }
+    }
+    axis.ticker()->setTickCount(chosen);
+}
+
+QCPTextElement* titleOf(const QCustomPlot& plot) {
+    return qobject_cast<QCPTextElement*>(plot.property("hsmuTitleElement").value<QObject*>());
+}
+
+// As many legend columns as fit `width` (one row when they all fit): a legend wider than its
+// plot would widen the layout past the widget and cut the traces' right edge.
+void fitLegendColumns(QCPLegend& legend, int width) {
+    const int items = legend.itemCount();
+    for (int columns = items; columns >= 1; --columns) {
+        legend.setWrap(columns);
+        legend.setFillOrder(QCPLayoutGrid::foColumnsFirst, true); // rearranged
+        if (legend.minimumOuterSizeHint().width() <= width)
+            return;
+    }
+}
+
+void takeLegend(QCPLegend& legend) {
+    if (QCPLayout* from = legend.layout()) {
+        from->take(&legend);
+        from->simplify();
+    }
+}
+
+// Where a legend goes: never over the traces. Shown: beside the title when both fit on its
+// row (no height taken from the data), else in the plot layout's last row under the axis rect
+// (its columns fitted to the width; it never asks for more width than the plot has). Hidden:
+// back in the axis rect's inset layout, which reserves no room (a grid row would keep the
+// hidden legend's height), so the plot still owns it. A legend of one entry under a title
+// says what the title says: it is not shown.
+void placeLegend(QCustomPlot& plot) {
+    QCPLegend* legend = plot.legend;
+    QCPLayoutGrid* grid = plot.plotLayout();
+    QCPLayoutInset* inset = plot.axisRect()->insetLayout();
+    QCPTextElement* title = titleOf(plot);
+    const bool shown = legend->visible() && legend->itemCount() > 0 &&
+                       (legend->itemCount() > 1 || !title);
+    if (!shown) {
+        if (legend->layout() != inset) {
+            takeLegend(*legend);
+            inset->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+        }
+        legend->setVisible(false); // never drawn over the traces
+        return;
+    }
+    auto* head = title ? qobject_cast<QCPLayoutGrid*>(title->layout()) : nullptr;
+    bool beside = false;
+    if (head) {
+        legend->setMinimumSize(0, 0); // its own width, beside the title
+        fitLegendColumns(*legend, QWIDGETSIZE_MAX); // one row
+        const int titleWidth = QFontMetrics(title->font())
+                                   .horizontalAdvance(plot.property("hsmuTitle").toString());
+        beside = legend->minimumOuterSizeHint().width() + titleWidth + 24 <= plot.width();
+    }
+    if (beside) {
+        if (legend->layout() != head) {
+            takeLegend(*legend);
+            head->addElement(0, 1, legend);
+            head->setColumnStretchFactor(1, 0.001);
+        }
+        return;
+    }
+    legend->setMinimumSize(1, 0); // the plot's minimum width stays the axis rect's
+    fitLegendColumns(*legend, plot.width() - 8);
+    if (legend->layout() != grid) {
+        takeLegend(*legend);
+        const int row = grid->rowCount();
+        grid->addElement(row, 0, legend);
+        grid->setRowStretchFactor(row, 0.001);
+    }
+}
+
 } // namespace
 
 int PlotStyle::labelRoom(const QCustomPlot& plot, const QCPAxis& axis) {
@@ -89,24 +208,33 @@ void PlotStyle::apply(QCustomPlot& plot) {
     plot.setPlottingHint(QCP::phFastPolylines, true); // thousands of points per live curve
     plot.setNotAntialiasedElements(QCP::aeFills);
     plot.legend->setVisible(false);
-    // Small and see-through: at 1280x720 a legend must not hide the traces.
-    plot.legend->setBrush(QColor(255, 255, 255, 150));
+    // A visible legend is a row of its own under the axis rect, never over the traces (at
+    // 1280x720 a see-through legend inside the axis rect still hid part of them).
+    plot.legend->setBrush(Qt::NoBrush);
+    plot.legend->setBorderPen(Qt::NoPen);
     QFont legendFont = plot.font();
     legendFont.setPointSizeF(std::max(6.0, legendFont.pointSizeF() - 2.0));
     plot.legend->setFont(legendFont);
     plot.legend->setIconSize(16, 8);
-    plot.legend->setRowSpacing(-3);
-    plot.legend->setBorderPen(QPen(QColor(180, 180, 180)));
-    plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    plot.legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    plot.legend->setRowSpacing(0);
+    plot.legend->setColumnSpacing(8);
+    plot.legend->setMargins(QMargins(4, 0, 4, 0));
+    QObject::connect(&plot, &QCustomPlot::beforeReplot, &plot, [&plot] { placeLegend(plot); });
     for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
         axis->grid()->setSubGridVisible(false);
         axis->grid()->setPen(QPen(QColor(220, 220, 220), 0, Qt::DotLine));
         axis->grid()->setZeroLinePen(QPen(QColor(150, 150, 150), 0));
     }
     plot.setMinimumSize(240, 180);
+    // A short cell (the replay's tracking plot, 110 px) still fits its title, axes and a
+    // two-row legend: the data area may shrink to 30 px rather than push the legend out.
+    plot.axisRect()->setMinimumSize(50, 30);
     // After the layout step of each replot (the axis rect as it will be drawn; a cut label
     // keeps its thickness, so the layout stays valid).
     QObject::connect(&plot, &QCustomPlot::afterLayout, &plot, [&plot] {
+        for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
+            fitTickCount(*axis);
         QStringList cut;
         for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
             if (axis->visible())
@@ -128,14 +256,19 @@ QPen PlotStyle::seriesPen(int i) {
 
 void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
     plot.setProperty("hsmuTitle", title);
-    if (auto* existing = qobject_cast<QCPTextElement*>(plot.plotLayout()->element(0, 0))) {
+    if (auto* existing = titleOf(plot)) {
         existing->setText(title);
         return;
     }
     plot.plotLayout()->insertRow(0);
+    // The title row: the title, and the legend beside it when both fit (placeLegend).
+    auto* head = new QCPLayoutGrid;
+    plot.plotLayout()->addElement(0, 0, head);
+    head->setColumnSpacing(8);
     // 10 pt: the longest title fits a plot cell at 1280x720.
     auto* element = new QCPTextElement(&plot, title, QFont(plot.font().family(), 10, QFont::Bold));
-    plot.plotLayout()->addElement(0, 0, element);
+    head->addElement(0, 0, element);
+    plot.setProperty("hsmuTitleElement", QVariant::fromValue<QObject*>(element));
     // A title wider than its plot (a narrow cell, a long translation) is cut with "...", the
     // full title in the plot's tool tip.
     QObject::connect(&plot, &QCustomPlot::beforeReplot, element, [&plot, element] {

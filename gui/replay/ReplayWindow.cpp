@@ -1,6 +1,7 @@
 #include "gui/replay/ReplayWindow.h"
 
 #include "core/record/RecordReader.h"
+#include "gui/app/AlarmText.h"
 #include "gui/app/LiveText.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/replay/RecordPlayback.h"
@@ -109,7 +110,8 @@ ReplayWindow* ReplayWindow::openWithDialog(QWidget* parent) {
     ReplayWindow* window = openInBackground(path, parent, &error);
     if (!window) {
         if (!error.isEmpty())
-            QMessageBox::critical(parent, tr("Cannot open the record"), error);
+            QMessageBox::critical(parent, tr("Cannot open the record"),
+                                  AlarmText::reason(error)); // the reader's text, translated
         return nullptr;
     }
     window->setAttribute(Qt::WA_DeleteOnClose);
@@ -249,7 +251,7 @@ void ReplayWindow::showReidentification() {
     m_busyAction->setVisible(false);
     if (!outcome->value) {
         auto* box = new QMessageBox(QMessageBox::Critical, tr("Re-identification failed"),
-                                    outcome->error, QMessageBox::Ok, this);
+                                    AlarmText::reason(outcome->error), QMessageBox::Ok, this);
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open(); // not exec(): the window stays live
         emit reidentificationFailed(outcome->error);

@@ -4,6 +4,9 @@
 // "Examinar" button cut off), and no panel of the right dock area asks for more than the
 // dock's width (the area keeps its designed 440 px, the plots the rest). Fails on the
 // console before the fix: setup panel 514 px for a 441 px dock (en), 566 for 524 (es). Long texts are wrapped or elided with the full text in their tool tip.
+// No plot's legend overlaps its data area (item 10: the see-through legends inside the axis
+// rect covered part of the small history and tracking traces).
+#include <QAction>
 #include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
@@ -14,12 +17,16 @@
 
 #include "gui/app/AttentionBanner.h"
 #include "gui/app/ConsoleSettings.h"
+#include "gui/app/ControlBar.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/SetupPanel.h"
 #include "gui/app/Translations.h"
+#include "gui/plots/HistoryPlot.h"
 #include "gui/plots/PlotStyle.h"
 
 #include <qcustomplot.h>
+
+#include <cmath>
 
 using namespace hsmu;
 using namespace hsmu::gui;
@@ -53,6 +60,49 @@ private slots:
         const QColor corner = window.grab().toImage().pixelColor(2, 2);
         QVERIFY2(corner.red() > 150 && corner.green() < 80 && corner.blue() < 80,
                  qPrintable(corner.name()));
+    }
+
+    // Tick labels never run together in a small plot at 1280x720 (seen by hand: "0
+    // 0.0250.050.075 0.1" under a 0.1 s history, "0.2 0 -0.2 -0.4" piled up on a 40 px axis).
+    void tickLabelsDoNotRunTogether() {
+        HistoryPlot plot;
+        plot.setChannels(QStringLiteral("Moment history"), QStringLiteral("Moment [kN m]"),
+                         {{QStringLiteral("Element 1"), {}, false}});
+        plot.setMinimumSize(100, 80); // as LivePlotsPanel's small cells
+        plot.resize(208, 110);        // the fit-error cell at 1280x720
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        QVector<double> t, v;
+        for (int i = 0; i <= 10; ++i) {
+            t << 0.01 * i;
+            v << 0.3 * std::sin(i);
+        }
+        plot.graph(0)->setData(t, v);
+        plot.xAxis->setRange(-0.005, 0.105); // 0.1 s with the 5 % margins
+        plot.yAxis->setRange(-0.45, 0.3);
+        plot.replot(QCustomPlot::rpImmediateRefresh);
+        plot.replot(QCustomPlot::rpImmediateRefresh);
+        for (QCPAxis* axis : {plot.xAxis, plot.yAxis}) {
+            const QVector<double> ticks = axis->tickVector();
+            const QVector<QString> labels = axis->tickVectorLabels();
+            // Time keeps at least two labels; a 35 px tall value axis may keep only one.
+            QVERIFY(ticks.size() >= (axis->orientation() == Qt::Horizontal ? 2 : 1));
+            const QFontMetrics fm(axis->tickLabelFont());
+            for (qsizetype i = 1; i < ticks.size(); ++i) {
+                const double gap = std::abs(axis->coordToPixel(ticks[i]) -
+                                            axis->coordToPixel(ticks[i - 1]));
+                const bool horizontal = axis->orientation() == Qt::Horizontal;
+                const double need = horizontal ? 0.5 * (fm.horizontalAdvance(labels[i]) +
+                                                        fm.horizontalAdvance(labels[i - 1])) +
+                                                     4
+                                               : fm.ascent() + 2; // digits: no descent
+                QVERIFY2(gap >= need,
+                         qPrintable(QStringLiteral("'%1' and '%2' are %3 px apart, need %4")
+                                        .arg(labels[i - 1], labels[i])
+                                        .arg(gap)
+                                        .arg(need)));
+            }
+        }
     }
 
     void setupPanelFitsItsDockAt1280x720_data() {
@@ -101,11 +151,36 @@ private slots:
         QCOMPARE(setup->width(), available); // laid out to the viewport, not clipped
         // Plots: a vertical axis label longer than its axis is cut with "..." (the whole
         // label in the tool tip), never clipped at both ends ("eleración del suelo [m/").
+        int legends = 0;
         for (QCustomPlot* plot : window.findChildren<QCustomPlot*>()) {
             if (!plot->isVisible())
                 continue;
             plot->replot(QCustomPlot::rpImmediateRefresh); // laid out at its size
             plot->replot(QCustomPlot::rpImmediateRefresh); // labels cut to the new layout
+            // Item 10: a legend never covers the traces: it lies outside the axis rect (the
+            // data area), in the small history, tracking and parameter plots too.
+            if (plot->legend->visible() && plot->legend->itemCount() > 0) {
+                ++legends;
+                const QRect data = plot->axisRect()->rect();
+                const QRect box = plot->legend->outerRect();
+                QVERIFY2(!box.intersects(data),
+                         qPrintable(QStringLiteral("%1: %2's legend (%3,%4 %5x%6) covers its "
+                                                   "data area (%7,%8 %9x%10)")
+                                        .arg(language, plot->objectName())
+                                        .arg(box.x()).arg(box.y()).arg(box.width())
+                                        .arg(box.height())
+                                        .arg(data.x()).arg(data.y()).arg(data.width())
+                                        .arg(data.height())));
+                // And it is itself inside the plot (its outer rect may reach 2 px past the
+                // bottom edge of a cramped plot: its empty margin, no text).
+                QVERIFY2(plot->rect().adjusted(0, 0, 0, 2).contains(box),
+                         qPrintable(QStringLiteral("%1: %2's legend (%3,%4 %5x%6) is not inside "
+                                                   "the plot (%7x%8)")
+                                        .arg(language, plot->objectName())
+                                        .arg(box.x()).arg(box.y()).arg(box.width())
+                                        .arg(box.height())
+                                        .arg(plot->width()).arg(plot->height())));
+            }
             for (QCPAxis* axis : {plot->yAxis, plot->yAxis2}) {
                 if (!axis->visible() || axis->label().isEmpty())
                     continue;
@@ -124,6 +199,25 @@ private slots:
                     QVERIFY2(plot->toolTip().contains(full), qPrintable(plot->toolTip()));
             }
         }
+        QVERIFY(legends >= 2); // the history and hysteresis plots of a loaded test
+        // The control bar fits the window (item 13): with the pseudo-dynamic pace chosen, the
+        // field for the seconds of wall time per step and the emergency hold are on the bar,
+        // not behind its overflow button (before: the field was hidden at 1280 px).
+        auto* bar = window.findChild<ControlBar*>();
+        bar->setWallTimePerStep(2.0);
+        QCoreApplication::processEvents();
+        for (const char* name : {"wallTimePerStep", "emergencyHold"}) {
+            QWidget* w = bar->findChild<QWidget*>(QString::fromLatin1(name));
+            if (!w) // an action: its button
+                w = bar->widgetForAction(bar->findChild<QAction*>(QString::fromLatin1(name)));
+            QVERIFY2(w, name);
+            const QRect r(w->mapTo(bar, QPoint(0, 0)), w->size());
+            QVERIFY2(w->isVisible() && bar->rect().contains(r),
+                     qPrintable(QStringLiteral("%1: %2 is not on the control bar (%3 px wide)")
+                                    .arg(language, QString::fromLatin1(name))
+                                    .arg(bar->width())));
+        }
+        bar->setSpeed(1.0);
         // Every push button shows its whole text (e.g. "Examinar..." beside the file field).
         for (QPushButton* b : setup->findChildren<QPushButton*>()) {
             if (!b->isVisibleTo(setup))

@@ -30,6 +30,8 @@
 #include "core/experimental/SafetyLimits.h"
 #include "core/record/RecordWriter.h"
 #include "core/util/Alarm.h"
+#include "core/util/ReasonText.h"
+#include "gui/app/PreflightDialog.h"
 #include "gui/app/OperatorEvent.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
@@ -313,6 +315,97 @@ private slots:
                          ->dataCount(),
                      plotsPoints);
         }
+    }
+
+    // core's other fixed texts in the list follow a language change too (issue 16): a link
+    // fault without a code (comms' English text, nested), an identifier's message inside an
+    // estimator alarm, and a console message made from a configuration reader's error. Each
+    // is stored language-neutral and shown again in the new language (before: the link fault
+    // and the reader's error stayed English, the console message kept the language it was
+    // shown in).
+    void coreTextsInTheListFollowALanguageChange() {
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("en")));
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        auto* alarms = window.findChild<AlarmList*>();
+        const auto last = [alarms] { return alarms->topLevelItem(alarms->topLevelItemCount() - 1); };
+        QTemporaryDir dir;
+        const QString missing = dir.filePath(QStringLiteral("no-such-test.json"));
+        QString error;
+        QVERIFY(!window.loadConfiguration(missing, &error));
+        QTreeWidgetItem* cannotLoad = last();
+        const std::string where = "tcp://127.0.0.1:9";
+        const std::string within = reasonText("no-connection-within", {"127.0.0.1:9", "2"});
+        const std::string linkFault = reasonText("link-fault", {where, within});
+        alarms->addAlarm(
+            Alarm(0.5, 50, AlarmSeverity::Critical, AlarmKind::ControlFault, linkFault));
+        QTreeWidgetItem* link = last();
+        const std::string rejected =
+            reasonText("prediction-rejected", {reasonText("ukf-state-not-finite")});
+        alarms->addAlarm(Alarm(0.6, 60, AlarmSeverity::Warning, AlarmKind::EstimatorRejected,
+                               reasonText("estimator-rejected", {rejected}), "estimator-rejected",
+                               {rejected}));
+        QTreeWidgetItem* estimator = last();
+        QCOMPARE(link->text(AlarmList::Message), QString::fromStdString(linkFault));
+
+        for (const QString& code : {QStringLiteral("es"), QStringLiteral("zh_CN"),
+                                    QStringLiteral("en")}) {
+            QVERIFY(Translations::install(*QCoreApplication::instance(), code));
+            QCoreApplication::processEvents();
+            const bool english = code == QLatin1String("en");
+            const QString linkShown =
+                catalogue("AlarmText", "link to %1: %2")
+                    .arg(QString::fromStdString(where),
+                         catalogue("AlarmText", "no connection to %1 within %2 s")
+                             .arg(QStringLiteral("127.0.0.1:9"), QStringLiteral("2")));
+            QCOMPARE(link->text(AlarmList::Message), linkShown);
+            QCOMPARE(link->toolTip(AlarmList::Message), linkShown);
+            const QString estimatorShown =
+                catalogue("AlarmText", "identification step rejected: %1")
+                    .arg(catalogue("AlarmText", "prediction rejected: %1")
+                             .arg(catalogue("AlarmText", "the state is not finite")));
+            QCOMPARE(estimator->text(AlarmList::Message), estimatorShown);
+            const QString cannotOpen = catalogue("AlarmText", "cannot open the configuration file");
+            const QString loadShown =
+                catalogue("hsmu::gui::MainWindow", "cannot load %1: %2")
+                    .arg(missing, catalogue("AlarmText", "%1: %2").arg(missing, cannotOpen));
+            QCOMPARE(cannotLoad->text(AlarmList::Message), loadShown);
+            if (!english) {
+                QVERIFY2(!linkShown.contains(QLatin1String("no connection")), qPrintable(linkShown));
+                QVERIFY2(!estimatorShown.contains(QLatin1String("rejected")),
+                         qPrintable(estimatorShown));
+                QVERIFY2(!loadShown.contains(QLatin1String("cannot")), qPrintable(loadShown));
+            } else {
+                QCOMPARE(linkShown, QString::fromStdString(linkFault));
+            }
+        }
+    }
+
+    // Pre-flight names what drives each specimen in the operator's language (before: "virtual
+    // specimen (boucWen law, force noise std 0, ideal actuator)" in every language).
+    void preflightDescribesTheControlInTheOperatorsLanguage() {
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("es")));
+        MainWindow window;
+        window.setSpeed(0.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() != nullptr, 10000);
+        auto* control = window.preflightDialog()->findChild<QLabel*>(
+            QStringLiteral("preflightControl"));
+        QVERIFY(control);
+        const QString text = control->text();
+        const QString start =
+            catalogue("AlarmText", "virtual specimen (%1 law, force noise std %2, %3 actuator)")
+                .section(QLatin1Char('%'), 0, 0);
+        QVERIFY2(text.contains(start) && !text.contains(QLatin1String("virtual specimen")) &&
+                     !text.contains(QLatin1String("actuator")),
+                 qPrintable(text));
+        window.preflightDialog()->reject();
+        QTRY_VERIFY_WITH_TIMEOUT(window.preflightDialog() == nullptr, 5000);
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("en")));
     }
 
     // The settings dialog switches at once (no restart) and stores the choice.

@@ -33,7 +33,7 @@ private slots:
         QCOMPARE(std::set<std::string>(codes.begin(), codes.end()).size(), codes.size());
         for (const std::string& code : codes) {
             // Arguments unlike any literal of the tables (so a match cannot be accidental).
-            const std::vector<std::string> args = {"A1x", "B2y", "C3z", "D4w", "E5v", "F6u"};
+            const std::vector<std::string> args = {"A1x", "B2y", "C3z", "D4w", "E5v", "F6u", "G7t", "H8s", "I9r"};
             const std::string text = reasonText(code.c_str(), args);
             QVERIFY2(!text.empty(), code.c_str());
             const auto back = parseReason(text);
