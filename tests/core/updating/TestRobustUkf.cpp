@@ -96,20 +96,16 @@ private slots:
         };
         Run alone, first, second;
         auto a = make();
-        std::vector<double> v;
         for (std::size_t k = 0; k < h.u.size(); ++k) {
             alone.statuses.push_back(a->observe(h.u[k], h.f[k], false));
-            a->estimateValues(v);
-            alone.estimates.push_back(v);
+            alone.estimates.push_back(test::estimateVector(*a));
         }
         auto b = make(), c = make();
         for (std::size_t k = 0; k < h.u.size(); ++k) {
             first.statuses.push_back(b->observe(h.u[k], h.f[k], false));
             second.statuses.push_back(c->observe(h.u[k], h.f[k], false));
-            b->estimateValues(v);
-            first.estimates.push_back(v);
-            c->estimateValues(v);
-            second.estimates.push_back(v);
+            first.estimates.push_back(test::estimateVector(*b));
+            second.estimates.push_back(test::estimateVector(*c));
         }
         QVERIFY(a->anchors() >= 2); // the jobs did run
         QVERIFY(a->jobs() > a->anchors()); // ... and guard replays too
