@@ -116,8 +116,17 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
     const Pinch pinch = pinchAt(p, state.e);
     bool withinPinchStep = true;
     if (pinch.zeta1 > 0.0) {
+        // z moves at most |dx| max|Phi| / eta: A, or |Phi| at the start when it is larger (on
+        // unloading, gamma + beta sgn(dx z) can exceed beta + gamma or be negative, and Phi
+        // then reaches several A). With A alone the pinching term dx h'(z) Phi / eta of the
+        // Newton derivative could exceed 1 near the pinched zone (|h'| up to 0.86 zeta1 /
+        // zeta2): the step's equation then has several roots and Newton fails or lands on a
+        // far one (tests/core/hysteresis, TestBoucWenPinching).
         const Degradation d = degradationAt(p.boucWen, state.e);
-        withinPinchStep = std::abs(dx) * std::abs(d.a) <= pinch.zeta2 * d.eta;
+        const double psi = p.boucWen.gamma + p.boucWen.beta * signOf(dx * state.z);
+        const double phi0 = d.a - std::pow(std::abs(state.z), p.boucWen.n) * psi * d.nu;
+        withinPinchStep =
+            std::abs(dx) * std::max(std::abs(d.a), std::abs(phi0)) <= pinch.zeta2 * d.eta;
     }
     if (levelsLeft <= 0 || (limits.withinMaxStep(std::abs(dx)) && withinPinchStep)) {
         bool converged = false;
@@ -232,6 +241,13 @@ LawStatus BoucWenPinching::setTrialDeformation(double u) {
     m_dirTrial = dx > 0.0 ? 1.0 : (dx < 0.0 ? -1.0 : m_dirCommitted);
     m_fTrial = forceOf(u / m_p.boucWen.uRef, m_trial);
     return LawStatus::Ok;
+}
+
+void BoucWenPinching::setCommittedState(const BoucWenState& s, double committedDeformation) {
+    m_committed = s;
+    m_uCommitted = committedDeformation;
+    m_fCommitted = forceOf(m_uCommitted / m_p.boucWen.uRef, m_committed);
+    revert();
 }
 
 double BoucWenPinching::initialTangent() const {

@@ -167,6 +167,20 @@ private slots:
     /// default online method.
     void onlineWithinAQuarterOfTheCalibration() {
         QFETCH(QString, file);
+        onlineWithinAQuarterOf(file);
+    }
+
+    /// The same on the HDRB bearing (26,379 samples; its own CTest test,
+    /// test_updating_pinchingukf_hdrb): the anchors run on the worker within their budget.
+    void onlineOnTheHdrbBearing() {
+        if (!qEnvironmentVariableIsSet("HSMU_PINCHING_HDRB"))
+            QSKIP("run by test_updating_pinchingukf_hdrb (HSMU_PINCHING_HDRB=1)");
+        onlineWithinAQuarterOf(QString(HSMU_SHARED_DATA_DIR) +
+                               "/hysteresis/isolator-hdrb-gallardo2023/hdrb_test.txt");
+    }
+
+private:
+    void onlineWithinAQuarterOf(const QString& file) {
         SpecimenHistory h;
         if (!readRecord(file.toStdString(), h))
             QSKIP(qPrintable("shared record absent: " + file));
@@ -181,9 +195,14 @@ private slots:
               "(%.3fx), %d anchors, %d divergences, zetaS %.3f",
               qPrintable(QFileInfo(file).fileName()), best, r.finalNrmse, r.finalNrmse / best, count(r.messages, "anchor"), divergences,
               r.finalEstimate.at("zetaS"));
-        if (qEnvironmentVariableIsSet("HSMU_VERBOSE"))
+        if (qEnvironmentVariableIsSet("HSMU_VERBOSE")) {
             for (const std::string& m : r.messages)
                 qInfo("  %s", m.c_str());
+            for (const auto& [name, v] : r.finalEstimate)
+                qInfo("  online %s = %.5g (calibration %.5g)", name.c_str(), v,
+                      r.calibration->parameters.count(name) ? r.calibration->parameters.at(name)
+                                                            : NAN);
+        }
         QCOMPARE(r.method, std::string("UKF (pinching)"));
         QVERIFY2(r.finalNrmse <= 1.25 * best,
                  qPrintable(QString("online NRMSE %1 > 1.25 x %2").arg(r.finalNrmse).arg(best)));
