@@ -116,17 +116,28 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
     const Pinch pinch = pinchAt(p, state.e);
     bool withinPinchStep = true;
     if (pinch.zeta1 > 0.0) {
-        // z moves at most |dx| max|Phi| / eta: A, or |Phi| at the start when it is larger (on
-        // unloading, gamma + beta sgn(dx z) can exceed beta + gamma or be negative, and Phi
-        // then reaches several A). With A alone the pinching term dx h'(z) Phi / eta of the
-        // Newton derivative could exceed 1 near the pinched zone (|h'| up to 0.86 zeta1 /
-        // zeta2): the step's equation then has several roots and Newton fails or lands on a
-        // far one (tests/core/hysteresis, TestBoucWenPinching).
+        // The backward-Euler equation r(z) = 0 has one root near z0 only while its derivative
+        // dr/dz = 1 - dx (h Phi' + h' Phi) / eta stays positive there. Two limits keep it so:
+        //  - the law's own stiffness: on unloading with gamma > beta (Psi = gamma - beta > 0),
+        //    dx Phi' / eta = |dx| n |z0|^(n-1) Psi nu / eta, which at a reversal near the
+        //    ultimate z is about n (gamma - beta) / (gamma + beta) / 2 for the 0.5 yield
+        //    deformations of withinMaxStep: above 1 for n > 2, and Newton from z0 then goes
+        //    the wrong way to a second root beyond -zu (z moving against dx), from which the
+        //    law runs away and fails a few increments later (the anchored sets that failed on
+        //    new larger cycles; TestBoucWenPinching::reversalNearTheUltimateZWithLargeN). So
+        //    |dx| n |z0|^(n-1) max(Psi, 0) nu / eta <= 0.5;
+        //  - the pinching term: z moves at most |dx| max(|A|, |Phi(z0)|) / eta <= zeta2, one
+        //    width of the pinched zone (|h'| <= 0.86 zeta1 / zeta2).
         const Degradation d = degradationAt(p.boucWen, state.e);
         const double psi = p.boucWen.gamma + p.boucWen.beta * signOf(dx * state.z);
-        const double phi0 = d.a - std::pow(std::abs(state.z), p.boucWen.n) * psi * d.nu;
+        const double absZ = std::abs(state.z);
+        const double absZn = std::pow(absZ, p.boucWen.n);
+        const double phi0 = d.a - absZn * psi * d.nu;
+        const double stiffness =
+            absZ > 0.0 ? p.boucWen.n * absZn / absZ * std::max(psi, 0.0) * d.nu : 0.0;
         withinPinchStep =
-            std::abs(dx) * std::max(std::abs(d.a), std::abs(phi0)) <= pinch.zeta2 * d.eta;
+            std::abs(dx) * std::max(std::abs(d.a), std::abs(phi0)) <= pinch.zeta2 * d.eta &&
+            std::abs(dx) * stiffness <= 0.5 * d.eta;
     }
     if (levelsLeft <= 0 || (limits.withinMaxStep(std::abs(dx)) && withinPinchStep)) {
         bool converged = false;

@@ -9,12 +9,14 @@
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/offline/OfflineIdentification.h"
 #include "core/updating/PinchingUkfIdentifier.h"
+#include "core/updating/RobustUkfIdentifier.h"
 #include "../identification/SyntheticHistory.h"
 
 #include <QtTest>
 
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 using namespace hsmu;
@@ -118,6 +120,60 @@ private slots:
         QVERIFY(id.anchors() >= 2);
         QVERIFY(p.pinching.zetaS > 0.35); // the pinching is found
         QVERIFY(std::abs(p.boucWen.k0 - 1.0) < 0.2);
+    }
+
+    /// The anchors and guard replays run on the worker, applied at the step fixed when they
+    /// start: the same record gives the same estimates and predictions at every step, bit for
+    /// bit, whether the identifier runs alone or interleaved with a robust UKF on the same
+    /// thread (the worker's timing differs: that one's calibrations compete for the CPU).
+    void sameEstimatesWhateverTheTiming() {
+        BoucWenPinching law(truth());
+        const std::vector<double> u = testing::cyclic(3.0, 4, 100);
+        const std::vector<double> f = testing::forcesOf(law, u);
+        BoucWenPinchingParameters start;
+        start.pinching.zetaS = 0.0;
+        PinchingUkfIdentifierSettings settings; // a small search: this test is about timing
+        settings.budget.pinchingStarts = 3;
+        settings.budget.reducedSamples = 150;
+        const auto make = [&] {
+            return std::make_unique<PinchingUkfIdentifier>(start, std::nullopt, std::nullopt,
+                                                           ParameterBoundsMap{}, settings);
+        };
+        struct Run {
+            std::vector<ParameterValues> estimates;
+            std::vector<double> predictions;
+            std::vector<std::string> messages;
+        };
+        const auto record = [](Run& r, PinchingUkfIdentifier& id, const IdentificationStatus& st) {
+            r.estimates.push_back(id.estimate());
+            r.predictions.push_back(id.predictedForce());
+            r.messages.push_back(st.message);
+        };
+        Run alone, interleaved;
+        auto a = make();
+        for (std::size_t k = 0; k < u.size(); ++k)
+            record(alone, *a, a->observe(u[k], f[k], false));
+        auto b = make();
+        RobustUkfIdentifier other(BoucWenParameters{}, std::nullopt, std::nullopt, {});
+        for (std::size_t k = 0; k < u.size(); ++k) {
+            other.observe(u[k], f[k], false);
+            record(interleaved, *b, b->observe(u[k], f[k], false));
+        }
+        QVERIFY(a->anchors() >= 2);        // the jobs did run
+        QVERIFY(a->jobs() > a->anchors()); // ... and guard replays too
+        for (std::size_t k = 0; k < u.size(); ++k) {
+            QVERIFY2(alone.estimates[k] == interleaved.estimates[k],
+                     qPrintable(QString("estimates differ at step %1").arg(k)));
+            const double p = alone.predictions[k], q = interleaved.predictions[k];
+            QVERIFY2((std::isnan(p) && std::isnan(q)) || p == q,
+                     qPrintable(QString("predictions differ at step %1").arg(k)));
+            QCOMPARE(alone.messages[k], interleaved.messages[k]);
+        }
+        QCOMPARE(a->divergences(), 0);
+        qInfo("%zu samples: %d anchors (%d global), %d jobs, worker CPU %.2f s; waits alone %d, "
+              "interleaved %d",
+              u.size(), a->anchors(), a->globalAnchors(), a->jobs(), a->workerCpuSeconds(),
+              a->waits(), b->waits());
     }
 
     void refusesThePaperFormulationAndForeignBoundsAndIsBuiltForUkf() {
