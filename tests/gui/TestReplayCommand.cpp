@@ -215,7 +215,7 @@ void TestReplayCommand::pinchingModelIsCalibratedByDefault() {
     const QString settings = path(m_dir, "pinching.json");
     writeText(settings, R"({"model": {"law": "boucWenPinching"}})");
     const auto method = [&](const QStringList& extra) {
-        const QString out = path(m_dir, QStringLiteral("pinching%1").arg(extra.size()));
+        const QString out = path(m_dir, extra.isEmpty() ? "pinchingDefault" : "pinchingUkf");
         const Result r = clitest::hsmu(QStringList{QStringLiteral("replay"),
                                                    QStringLiteral("--import"), data,
                                                    QStringLiteral("--config"), settings,

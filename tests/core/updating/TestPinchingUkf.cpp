@@ -176,6 +176,29 @@ private slots:
               a->waits(), b->waits());
     }
 
+    /// An anchor whose scales move is re-expressed in the new ones (PinchingUkfJobs.h,
+    /// rescaled()): the same physical model, so the same forces along a history.
+    void rescaledModelIsTheSamePhysicalModel() {
+        BoucWenPinchingParameters p = truth();
+        p.boucWen.deltaNu = 0.05;
+        p.boucWen.deltaEta = 0.03;
+        p.pinching.deltaPsi = 0.02;
+        p.boucWen.uRef = 0.02;
+        p.boucWen.fRef = 20.0;
+        const BoucWenPinchingParameters q = rescaled(p, 0.07, 3.0);
+        QCOMPARE(q.boucWen.uRef, 0.07);
+        QCOMPARE(q.boucWen.fRef, 3.0);
+        BoucWenPinching a(p), b(q);
+        const std::vector<double> u = testing::cyclic(0.1, 6, 200); // +-5 uRef
+        const std::vector<double> fa = testing::forcesOf(a, u), fb = testing::forcesOf(b, u);
+        double worst = 0.0;
+        for (std::size_t k = 0; k < u.size(); ++k)
+            worst = std::max(worst, std::abs(fa[k] - fb[k]));
+        // the sub-step limits are scale-free, so only roundings differ
+        QVERIFY2(worst <= 1e-9 * rms(fa), qPrintable(QString::number(worst / rms(fa))));
+        QVERIFY(a.committedState().e > 1.0); // degraded and pinched
+    }
+
     void refusesThePaperFormulationAndForeignBoundsAndIsBuiltForUkf() {
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  PinchingUkfIdentifier(truth(), 1.0, 1.0, {{"A0", {0.5, 2.0}}}));
@@ -183,6 +206,15 @@ private slots:
         QVERIFY(id.setBounds("zetaS", {0.0, 0.9}));
         QVERIFY(!id.setBounds("uRef", {0.0, 1.0}));
         QCOMPARE(id.parameterNames().size(), std::size_t(15));
+        // hsmu replay's default for a pinching model without a method: the calibration only
+        QVERIFY(calibrationOnlyByDefault(
+            withOverride(defaultIdentificationSettings(),
+                         nlohmann::json{{"model", {{"law", "boucWenPinching"}}}}, "t")));
+        QVERIFY(!calibrationOnlyByDefault(withOverride(
+            defaultIdentificationSettings(),
+            nlohmann::json{{"model", {{"law", "boucWenPinching"}}}, {"updating", {{"method", "ukf"}}}},
+            "t")));
+        QVERIFY(!calibrationOnlyByDefault(defaultIdentificationSettings())); // boucWen: the UKF
         // the factory: "method": "ukf" with a pinching model is this identifier (robust
         // formulation); the paper's formulation is refused, naming the field
         SpecimenHistory h;
