@@ -70,8 +70,9 @@ PinchValue pinchValue(const Pinch& pinch, double z, double s) {
 // One backward-Euler step of P1 with Eqs 3-6 from (z0, e0), the pinching frozen at e0:
 //   r(z) = z - z0 - dx h(z) Phi(z, e(z)) / eta(e(z)),  e(z) = e0 + (1 - alpha) k0 z dx,
 // Newton from z0 with BoucWen's tolerances and divergence test (BoucWenNewton.h).
+// absZ0n: |z0|^n, computed by the caller (the first iterate is z0).
 bool pinchedStep(const BoucWenParameters& p, const Pinch& pinch, BoucWenState& state, double dx,
-                 StepLimits& limits) {
+                 StepLimits& limits, double absZ0n) {
     const double c = (1.0 - p.alpha) * p.k0;
     const double z0 = state.z, e0 = state.e;
     const double s = dx < 0.0 ? -1.0 : 1.0;
@@ -82,7 +83,7 @@ bool pinchedStep(const BoucWenParameters& p, const Pinch& pinch, BoucWenState& s
         const Degradation d = degradationAt(p, e);
         const double absZ = std::abs(z);
         const double psi = p.gamma + p.beta * signOf(dx * z);
-        const double absZn = std::pow(absZ, p.n);
+        const double absZn = iteration == 0 ? absZ0n : std::pow(absZ, p.n);
         const double phi = d.a - absZn * psi * d.nu;
         const double dAbsZn = absZ > 0.0 ? p.n * absZn / absZ * signOf(z) : 0.0;
         const double dPhi = -p.deltaA * dedz - dAbsZn * psi * d.nu - absZn * psi * p.deltaNu * dedz;
@@ -115,6 +116,7 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
                     int levelsLeft, StepLimits& limits, int& subSteps) {
     const Pinch pinch = pinchAt(p, state.e);
     bool withinPinchStep = true;
+    double absZn = 0.0; // |z0|^n, when pinched (the Newton's first iterate needs it too)
     if (pinch.zeta1 > 0.0) {
         // The backward-Euler equation r(z) = 0 has one root near z0 only while its derivative
         // dr/dz = 1 - dx (h Phi' + h' Phi) / eta stays positive there. Two limits keep it so:
@@ -131,7 +133,7 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
         const Degradation d = degradationAt(p.boucWen, state.e);
         const double psi = p.boucWen.gamma + p.boucWen.beta * signOf(dx * state.z);
         const double absZ = std::abs(state.z);
-        const double absZn = std::pow(absZ, p.boucWen.n);
+        absZn = std::pow(absZ, p.boucWen.n);
         const double phi0 = d.a - absZn * psi * d.nu;
         const double stiffness =
             absZ > 0.0 ? p.boucWen.n * absZn / absZ * std::max(psi, 0.0) * d.nu : 0.0;
@@ -142,7 +144,7 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
     if (levelsLeft <= 0 || (limits.withinMaxStep(std::abs(dx)) && withinPinchStep)) {
         bool converged = false;
         if (pinch.zeta1 > 0.0) {
-            converged = pinchedStep(p.boucWen, pinch, state, dx, limits);
+            converged = pinchedStep(p.boucWen, pinch, state, dx, limits, absZn);
         } else {
             BackwardEuler newton(p.boucWen, state, dx);
             auto progress = BackwardEuler::Progress::Iterating;
