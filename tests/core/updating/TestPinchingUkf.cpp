@@ -17,6 +17,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 using namespace hsmu;
@@ -260,24 +261,29 @@ private slots:
 
     /// The same on the HDRB bearing (26,379 samples; its own CTest test,
     /// test_updating_pinchingukf_hdrb): the anchors run on the worker within their budget.
+    /// Against the pinching calibration's NRMSE on this record, 0.1071 (asserted by
+    /// test_identification_real_pinching_hdrb; not recomputed here: about 30 s of CPU).
     void onlineOnTheHdrbBearing() {
         if (!qEnvironmentVariableIsSet("HSMU_PINCHING_HDRB"))
             QSKIP("run by test_updating_pinchingukf_hdrb (HSMU_PINCHING_HDRB=1)");
         onlineWithinAQuarterOf(QString(HSMU_SHARED_DATA_DIR) +
-                               "/hysteresis/isolator-hdrb-gallardo2023/hdrb_test.txt");
+                                   "/hysteresis/isolator-hdrb-gallardo2023/hdrb_test.txt",
+                               0.1071);
     }
 
 private:
-    void onlineWithinAQuarterOf(const QString& file) {
+    /// calibration: the pinching calibration's NRMSE on the record when known (else computed).
+    void onlineWithinAQuarterOf(const QString& file, std::optional<double> calibration = {}) {
         SpecimenHistory h;
         if (!readRecord(file.toStdString(), h))
             QSKIP(qPrintable("shared record absent: " + file));
         const nlohmann::json config = {{"model", {{"law", "boucWenPinching"}}}};
         IdentificationSettings s = withOverride(defaultIdentificationSettings(), config, "test");
         QCOMPARE(s.updating.method, std::string("ukf"));
+        s.calibrate = !calibration.has_value();
         const OfflineIdentificationResult r = identifyOffline(h, s);
-        QVERIFY(r.calibration && r.calibration->ok);
-        const double best = r.calibration->nrmse;
+        QVERIFY(calibration || (r.calibration && r.calibration->ok));
+        const double best = calibration ? *calibration : r.calibration->nrmse;
         const int divergences = count(r.messages, "diverging");
         qInfo("%s, pinching: calibration NRMSE %.4f, online pinching UKF final NRMSE %.4f "
               "(%.3fx), %d anchors, %d divergences, zetaS %.3f",
@@ -288,8 +294,9 @@ private:
                 qInfo("  %s", m.c_str());
             for (const auto& [name, v] : r.finalEstimate)
                 qInfo("  online %s = %.5g (calibration %.5g)", name.c_str(), v,
-                      r.calibration->parameters.count(name) ? r.calibration->parameters.at(name)
-                                                            : NAN);
+                      r.calibration && r.calibration->parameters.count(name)
+                          ? r.calibration->parameters.at(name)
+                          : NAN);
         }
         QCOMPARE(r.method, std::string("UKF (pinching)"));
         QVERIFY2(r.finalNrmse <= 1.25 * best,
