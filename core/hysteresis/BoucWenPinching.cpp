@@ -71,8 +71,9 @@ PinchValue pinchValue(const Pinch& pinch, double z, double s) {
 // One backward-Euler step of P1 with Eqs 3-6 from (z0, e0), the pinching frozen at e0:
 //   r(z) = z - z0 - dx h(z) Phi(z, e(z)) / eta(e(z)),  e(z) = e0 + (1 - alpha) k0 z dx,
 // Newton from z0 with BoucWen's tolerances and divergence test (BoucWenNewton.h).
+// absZ0n: |z0|^n, computed by the caller (the first iterate is z0).
 bool pinchedStep(const BoucWenParameters& p, const Pinch& pinch, BoucWenState& state, double dx,
-                 StepLimits& limits) {
+                 StepLimits& limits, double absZ0n) {
     const double c = (1.0 - p.alpha) * p.k0;
     const double z0 = state.z, e0 = state.e;
     const double s = dx < 0.0 ? -1.0 : 1.0;
@@ -83,7 +84,7 @@ bool pinchedStep(const BoucWenParameters& p, const Pinch& pinch, BoucWenState& s
         const Degradation d = degradationAt(p, e);
         const double absZ = std::abs(z);
         const double psi = p.gamma + p.beta * signOf(dx * z);
-        const double absZn = std::pow(absZ, p.n);
+        const double absZn = iteration == 0 ? absZ0n : std::pow(absZ, p.n);
         const double phi = d.a - absZn * psi * d.nu;
         const double dAbsZn = absZ > 0.0 ? p.n * absZn / absZ * signOf(z) : 0.0;
         const double dPhi = -p.deltaA * dedz - dAbsZn * psi * d.nu - absZn * psi * p.deltaNu * dedz;
@@ -116,14 +117,35 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
                     int levelsLeft, StepLimits& limits, int& subSteps) {
     const Pinch pinch = pinchAt(p, state.e);
     bool withinPinchStep = true;
+    double absZn = 0.0; // |z0|^n, when pinched (the Newton's first iterate needs it too)
     if (pinch.zeta1 > 0.0) {
+        // The backward-Euler equation r(z) = 0 has one root near z0 only while its derivative
+        // dr/dz = 1 - dx (h Phi' + h' Phi) / eta stays positive there. Two limits keep it so:
+        //  - the law's own stiffness: on unloading with gamma > beta (Psi = gamma - beta > 0),
+        //    dx Phi' / eta = |dx| n |z0|^(n-1) Psi nu / eta, which at a reversal near the
+        //    ultimate z is about n (gamma - beta) / (gamma + beta) / 2 for the 0.5 yield
+        //    deformations of withinMaxStep: above 1 for n > 2, and Newton from z0 then goes
+        //    the wrong way to a second root beyond -zu (z moving against dx), from which the
+        //    law runs away and fails a few increments later (the anchored sets that failed on
+        //    new larger cycles; TestBoucWenPinching::reversalNearTheUltimateZWithLargeN). So
+        //    |dx| n |z0|^(n-1) max(Psi, 0) nu / eta <= 0.5;
+        //  - the pinching term: z moves at most |dx| max(|A|, |Phi(z0)|) / eta <= zeta2, one
+        //    width of the pinched zone (|h'| <= 0.86 zeta1 / zeta2).
         const Degradation d = degradationAt(p.boucWen, state.e);
-        withinPinchStep = std::abs(dx) * std::abs(d.a) <= pinch.zeta2 * d.eta;
+        const double psi = p.boucWen.gamma + p.boucWen.beta * signOf(dx * state.z);
+        const double absZ = std::abs(state.z);
+        absZn = std::pow(absZ, p.boucWen.n);
+        const double phi0 = d.a - absZn * psi * d.nu;
+        const double stiffness =
+            absZ > 0.0 ? p.boucWen.n * absZn / absZ * std::max(psi, 0.0) * d.nu : 0.0;
+        withinPinchStep =
+            std::abs(dx) * std::max(std::abs(d.a), std::abs(phi0)) <= pinch.zeta2 * d.eta &&
+            std::abs(dx) * stiffness <= 0.5 * d.eta;
     }
     if (levelsLeft <= 0 || (limits.withinMaxStep(std::abs(dx)) && withinPinchStep)) {
         bool converged = false;
         if (pinch.zeta1 > 0.0) {
-            converged = pinchedStep(p.boucWen, pinch, state, dx, limits);
+            converged = pinchedStep(p.boucWen, pinch, state, dx, limits, absZn);
         } else {
             BackwardEuler newton(p.boucWen, state, dx);
             auto progress = BackwardEuler::Progress::Iterating;
@@ -233,6 +255,13 @@ LawStatus BoucWenPinching::setTrialDeformation(double u) {
     m_dirTrial = dx > 0.0 ? 1.0 : (dx < 0.0 ? -1.0 : m_dirCommitted);
     m_fTrial = forceOf(u / m_p.boucWen.uRef, m_trial);
     return LawStatus::Ok;
+}
+
+void BoucWenPinching::setCommittedState(const BoucWenState& s, double committedDeformation) {
+    m_committed = s;
+    m_uCommitted = committedDeformation;
+    m_fCommitted = forceOf(m_uCommitted / m_p.boucWen.uRef, m_committed);
+    revert();
 }
 
 double BoucWenPinching::initialTangent() const {

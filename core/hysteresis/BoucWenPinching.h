@@ -71,6 +71,9 @@ public:
     bool setParameters(const BoucWenPinchingParameters& p);
 
     BoucWenState committedState() const { return m_committed; }
+    /// Sets the committed state (z, e) at the committed deformation (physical units), e.g. a
+    /// state replayed elsewhere; the trial is reset to it.
+    void setCommittedState(const BoucWenState& s, double committedDeformation);
     BoucWenState trialState() const { return m_trial; }
 
     std::string lawName() const override { return "boucWenPinching"; }

@@ -201,10 +201,19 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
             return done("a start has the wrong number of values");
         starts.push_back(Eigen::Map<const Eigen::VectorXd>(s.data(), p));
     }
+    const auto cancelled = [&] {
+        return spec.cancel && spec.cancel->load(std::memory_order_relaxed);
+    };
+    LevenbergMarquardtSettings globalSettings = spec.global, localSettings = spec.local;
+    globalSettings.cancel = localSettings.cancel = spec.cancel;
     std::vector<Candidate> candidates;
     for (const Eigen::VectorXd& x0 : starts) {
+        if (cancelled()) {
+            out.cancelled = true;
+            return done("cancelled");
+        }
         const LevenbergMarquardtResult r =
-            LevenbergMarquardt(spec.global).minimize(coarse, x0, searchLower, searchUpper, typical, project);
+            LevenbergMarquardt(globalSettings).minimize(coarse, x0, searchLower, searchUpper, typical, project);
         ++out.startsTried;
         out.residualEvaluations += r.residualEvaluations;
         if (std::isfinite(r.cost))
@@ -216,19 +225,33 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
               [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
 
     // 2. Local phase on the whole history.
-    std::vector<std::size_t> all(u.size());
-    std::iota(all.begin(), all.end(), std::size_t(0));
+    std::vector<std::size_t> all;
+    if (spec.polishSamples > 0 && first == 0 && u.size() > spec.polishSamples) {
+        all = reducedHistory(u, spec.polishSamples); // a budget (online anchors)
+    } else {
+        all.resize(u.size());
+        std::iota(all.begin(), all.end(), std::size_t(0));
+    }
+    const std::size_t polishScored = first == 0 ? all.size() : scored;
     const Replay fine(*law, indices, u, f, all, rmsF, first);
     LevenbergMarquardtResult best;
     best.cost = std::numeric_limits<double>::infinity();
     const std::size_t polish = std::min(candidates.size(), std::size_t(std::max(spec.polished, 1)));
     for (std::size_t c = 0; c < polish; ++c) {
-        LevenbergMarquardtResult r = LevenbergMarquardt(spec.local)
+        if (cancelled()) {
+            out.cancelled = true;
+            return done("cancelled");
+        }
+        LevenbergMarquardtResult r = LevenbergMarquardt(localSettings)
                                          .minimize(fine, candidates[c].x, lower, upper, typical,
                                                    project);
         out.residualEvaluations += r.residualEvaluations;
         if (r.cost < best.cost)
             best = std::move(r);
+    }
+    if (cancelled()) {
+        out.cancelled = true;
+        return done("cancelled");
     }
     if (!std::isfinite(best.cost))
         return done("the law could not replay the whole history from the best starts");
@@ -240,7 +263,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     for (std::size_t i = 0; i < lawNames.size(); ++i)
         out.parameters[lawNames[i]] = law->parameterValue(static_cast<int>(i));
     out.estimate = best.x;
-    out.nrmse = std::sqrt(2.0 * best.cost / double(scored));
+    out.nrmse = std::sqrt(2.0 * best.cost / double(polishScored));
     out.rmsError = out.nrmse * rmsF;
     out.onBound.resize(std::size_t(p));
     std::vector<Eigen::Index> freeIdx;
@@ -253,7 +276,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     out.standardDeviation = Eigen::VectorXd::Constant(p, std::nan(""));
     out.correlation = Eigen::MatrixXd::Constant(p, p, std::nan(""));
     const auto m = Eigen::Index(freeIdx.size());
-    const double dof = double(scored) - double(m);
+    const double dof = double(polishScored) - double(m);
     if (m > 0 && dof > 0 && best.jacobian.cols() == p) {
         Eigen::MatrixXd JF(best.jacobian.rows(), m);
         for (Eigen::Index k = 0; k < m; ++k)

@@ -25,6 +25,8 @@
 
 #include <Eigen/Core>
 
+#include <atomic>
+
 #include <limits>
 #include <map>
 #include <string>
@@ -56,12 +58,20 @@ struct CalibrationSpec {
     /// NelderMeadIdentifier that follow a degrading specimen).
     std::size_t window = 0;
     int polished = 1;                 ///< best starts refined on the whole history
+    /// A budget for the local phase (0 = none): on a history longer than this it runs on the
+    /// reduced history of this many samples (reducedHistory) instead of the whole one (its
+    /// NRMSE and statistics are then over those samples). Not with a window.
+    std::size_t polishSamples = 0;
     LevenbergMarquardtSettings global{30, 1e-6, 1e-8, 1e-6, 1e-2};
     LevenbergMarquardtSettings local{20, 1e-6, 1e-10, 1e-6, 1e-3};
+    /// Set by another thread: the calibration stops before its next Levenberg-Marquardt
+    /// iteration or start and returns not ok, `cancelled`. May be null.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct CalibrationResult {
     bool ok = false;
+    bool cancelled = false;                   ///< stopped by spec.cancel (then not ok)
     std::string reason;                       ///< why not, when !ok
     std::map<std::string, double> parameters; ///< every parameter of the law at the optimum
     std::vector<std::string> names;           ///< the fitted parameters, in spec order

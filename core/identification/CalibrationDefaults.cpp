@@ -181,6 +181,10 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
     spec.starts = reorder(defaults, starts, box);
     spec.window = request.window;
     spec.reducedSamples = request.reducedSamples;
+    spec.cancel = request.cancel;
+    spec.polishSamples = request.polishSamples;
+    if (request.localIterations > 0)
+        spec.local.maxIterations = request.localIterations;
     return spec;
 }
 
@@ -215,6 +219,8 @@ CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vect
     plain.law = "boucWen";
     plain.fitted.clear();
     const CalibrationResult base = calibrate(u, f, defaultCalibrationSpec(plain, scales));
+    if (base.cancelled)
+        return base;
     CalibrationSpec spec = defaultCalibrationSpec(request, scales);
     if (base.ok) {
         spec.starts.clear();

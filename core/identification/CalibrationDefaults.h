@@ -37,6 +37,9 @@ struct CalibrationRequest {
     std::size_t window = 0;              ///< score the last `window` samples (0 = all)
     std::size_t reducedSamples = 800;    ///< the global phase's history (Calibration.h)
     int pinchingStarts = 40;             ///< scattered starts of the pinching search
+    std::size_t polishSamples = 0;       ///< CalibrationSpec::polishSamples (0: whole history)
+    int localIterations = 0;             ///< the local phase's iteration budget (0: default)
+    const std::atomic<bool>* cancel = nullptr; ///< CalibrationSpec::cancel
 };
 
 /// The default spec for `law` on a history with these scales. Throws std::invalid_argument

@@ -69,6 +69,10 @@ LevenbergMarquardtResult LevenbergMarquardt::minimize(const Residual& residual,
     Eigen::VectorXd g;
     std::vector<Eigen::Index> freeIdx;
     for (out.iterations = 0; out.iterations < s.maxIterations; ++out.iterations) {
+        if (s.cancel && s.cancel->load(std::memory_order_relaxed)) {
+            out.cancelled = true;
+            return out; // no final Jacobian: nobody waits for this result
+        }
         if (needJacobian) {
             if (!jacobian(residual, out.x, r, upper, typical, s.relativeStep, out.jacobian,
                           out.residualEvaluations))

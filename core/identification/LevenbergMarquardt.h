@@ -12,11 +12,13 @@
 // that returns false (the model failed, e.g. a law that does not converge) is an infinite
 // cost: the step is rejected.
 // Stops: cost reduction below costTolerance (relative) on an accepted step twice in a row,
-// a step below stepTolerance (relative to typical), lambda above 1e12, or maxIterations.
+// a step below stepTolerance (relative to typical), lambda above 1e12, maxIterations, or the
+// caller's cancel flag (checked before each iteration).
 // Thread rules: none; minimize() is const.
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <functional>
 #include <string>
 
@@ -28,6 +30,9 @@ struct LevenbergMarquardtSettings {
     double stepTolerance = 1e-9; ///< relative step that counts as converged
     double relativeStep = 1e-6;  ///< forward-difference step, fraction of max(|x|, typical)
     double initialLambda = 1e-3;
+    /// Checked before each iteration: set (by another thread) stops the minimization with
+    /// `cancelled` (the best point so far is returned). May be null.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct LevenbergMarquardtResult {
@@ -37,6 +42,7 @@ struct LevenbergMarquardtResult {
     int iterations = 0;          ///< accepted and rejected steps
     int residualEvaluations = 0; ///< calls of the residual function (Jacobians included)
     bool converged = false;      ///< a tolerance was met (not the iteration budget)
+    bool cancelled = false;      ///< stopped by settings.cancel
 };
 
 class LevenbergMarquardt {

@@ -69,8 +69,8 @@ IdentificationSettings identificationSettingsFrom(const TestConfig& cfg,
         return s;
     }
     nlohmann::json section = nlohmann::json::object();
-    section["method"] =
-        s.model.law == "boucWen" || s.model.law == "boucWenPinching" ? "ukf" : "nelderMead";
+    if (s.model.law != "boucWenPinching") // its default (the pinching UKF) left implicit:
+        section["method"] = s.model.law == "boucWen" ? "ukf" : "nelderMead"; // replay calibrates
     return reparse(s, section, cfg.sourcePath);
 }
 
@@ -107,6 +107,10 @@ IdentificationSettings withOverride(const IdentificationSettings& base,
         section["method"] = m;
     }
     return reparse(s, section, sourceName);
+}
+
+bool calibrationOnlyByDefault(const IdentificationSettings& s) {
+    return s.model.law == "boucWenPinching" && !s.updatingDocument.contains("method");
 }
 
 IdentificationSettings withMethod(const IdentificationSettings& base, const std::string& method) {

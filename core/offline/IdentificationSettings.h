@@ -61,6 +61,13 @@ IdentificationSettings withOverride(const IdentificationSettings& base,
                                     const nlohmann::json& override, const std::string& sourceName,
                                     const std::string& method = {});
 
+/// hsmu replay's default when no --method is given: true (only the calibration over the whole
+/// history, the documented offline way) for a boucWenPinching model whose updating section does
+/// not name a method (its online method, the pinching UKF, anchors a pinching calibration every
+/// time the history grows: much more work for about the same fit); false otherwise (the
+/// section's method, e.g. a record's own online settings, or the UKF for boucWen).
+bool calibrationOnlyByDefault(const IdentificationSettings& s);
+
 /// base with method "ukf" or "nelderMead" (also accepted: "nelder-mead"). Throws ConfigError.
 IdentificationSettings withMethod(const IdentificationSettings& base, const std::string& method);
 

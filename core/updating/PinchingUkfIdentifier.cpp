@@ -4,7 +4,6 @@
 #include "core/identification/HistoryScales.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -13,13 +12,7 @@ namespace hsmu {
 
 namespace {
 
-/// The global phase of an anchor's calibration runs on this many samples (the offline
-/// calibration: 800): an anchor's polish still sees the whole history.
-constexpr std::size_t kAnchorReducedSamples = 300;
-/// ... from this many scattered pinching starts (offline: 40) and the plain law's optimum;
-/// the previous anchor and the UKF's estimate compete with its result.
-constexpr int kAnchorPinchingStarts = 12;
-/// UKF steps rejected in a row (a sigma point the law cannot integrate) before a new anchor.
+/// UKF steps rejected in a row (a sigma point the law cannot integrate) before a refit.
 constexpr int kRejectionsBeforeReanchor = 3;
 
 int indexOf(const std::string& name) {
@@ -36,13 +29,6 @@ std::vector<std::string> layoutNames() {
     names.emplace_back("uRef");
     names.emplace_back("fRef");
     return names;
-}
-
-double rmsOf(const std::vector<double>& v) {
-    double s = 0.0;
-    for (double x : v)
-        s += x * x;
-    return v.empty() ? 0.0 : std::sqrt(s / double(v.size()));
 }
 
 } // namespace
@@ -100,182 +86,192 @@ bool PinchingUkfIdentifier::setBounds(std::size_t index, const ParameterBounds& 
     return true; // effective at the next anchor
 }
 
-int PinchingUkfIdentifier::reversals() const {
-    return int(turningPoints(m_u, 0.02 * (m_uMax - m_uMin)).size());
-}
-
-bool PinchingUkfIdentifier::replay(const BoucWenPinchingParameters& p, BoucWenState& end,
-                                   double& nrmse) const {
-    if (!BoucWenPinching::admissible(p))
+bool PinchingUkfIdentifier::warmedUp() {
+    const std::size_t n = m_u.size();
+    if (n < m_nextWarmUpCheck)
         return false;
-    BoucWenPinching law(p);
-    double s = 0.0;
-    for (std::size_t k = 0; k < m_u.size(); ++k) {
-        if (law.setTrialDeformation(m_u[k]) != LawStatus::Ok)
-            return false;
-        law.commit();
-        const double e = law.committedForce() - m_f[k];
-        s += e * e;
-    }
-    const double rmsF = rmsOf(m_f);
-    nrmse = rmsF > 0 ? std::sqrt(s / double(m_u.size())) / rmsF : 0.0;
-    end = law.committedState();
-    return std::isfinite(nrmse);
+    m_nextWarmUpCheck = n + std::max<std::size_t>(1, n / 50);
+    return int(turningPoints(m_u, 0.02 * (m_uMax - m_uMin)).size()) >= m_settings.warmUpReversals;
 }
 
-BoucWenPinchingParameters PinchingUkfIdentifier::fromCalibration(const CalibrationResult& r) const {
-    BoucWenPinchingParameters p = m_anchor;
-    for (int j = 0; j < kPinchingUkfParameters; ++j) {
-        const auto it = r.parameters.find(pinchingUkfParameterNames()[std::size_t(j)]);
-        if (it != r.parameters.end())
-            PinchingUkf::field(p, j) = it->second;
-    }
-    for (const char* name : {"A0", "deltaA", "uRef", "fRef"}) {
-        const auto it = r.parameters.find(name);
-        if (it == r.parameters.end())
-            continue;
-        double& v = std::string(name) == "A0"       ? p.boucWen.A0
-                    : std::string(name) == "deltaA" ? p.boucWen.deltaA
-                    : std::string(name) == "uRef"   ? p.boucWen.uRef
-                                                    : p.boucWen.fRef;
-        v = it->second;
-    }
-    return p;
+double PinchingUkfIdentifier::anchorHistoryNrmse() const {
+    return m_sumF2 > 0 ? std::sqrt(m_anchorSse / m_sumF2) : 0.0;
 }
 
-void PinchingUkfIdentifier::restartAtAnchor() {
-    BoucWenState state = m_anchorLaw->committedState();
-    m_ukf->restart(m_anchor, state, m_u.back(), m_anchorSd);
-}
-
-IdentificationStatus PinchingUkfIdentifier::anchor(bool global, bool diverged) {
-    const auto t0 = std::chrono::steady_clock::now();
-    IdentificationStatus st;
-    const HistoryScales scales = deriveHistoryScales(m_u, m_f);
-    CalibrationRequest request;
-    request.law = "boucWenPinching";
-    request.bounds = m_userBounds;
-    request.reducedSamples = kAnchorReducedSamples;
-    request.pinchingStarts = kAnchorPinchingStarts;
-    request.uRef = m_uRef ? m_uRef : (m_anchors > 0 ? std::optional(m_anchor.boucWen.uRef) : std::nullopt);
-    request.fRef = m_fRef ? m_fRef : (m_anchors > 0 ? std::optional(m_anchor.boucWen.fRef) : std::nullopt);
-    if (!scales.ok && !(request.uRef && request.fRef)) {
-        st.message = "no anchor yet: " + scales.reason;
-        return st;
-    }
-    if (!request.uRef) // the scales are fixed at the first anchor
-        request.uRef = scales.uRef;
-    if (!request.fRef)
-        request.fRef = scales.fRef;
-    CalibrationSpec spec = defaultCalibrationSpec(request, scales);
-    CalibrationResult cal;
-    if (global || !m_ukf) {
-        cal = calibrateHistory(m_u, m_f, request);
-    } else { // local: from the anchor and the current estimate
-        spec.starts.clear();
-        for (const BoucWenPinchingParameters& p : {m_anchor, m_ukf->estimate()}) {
-            std::vector<double> s;
-            for (const auto& b : spec.fitted)
-                s.push_back(PinchingUkf::field(p, indexOf(b.name)));
-            spec.starts.push_back(std::move(s));
-        }
-        spec.polished = 2;
-        cal = calibrate(m_u, m_f, spec);
-        if (!cal.ok) { // the law cannot replay the history from either: search globally
-            global = true;
-            cal = calibrateHistory(m_u, m_f, request);
-        }
-    }
-    if (global)
-        m_globalSize = m_u.size();
-    BoucWenPinchingParameters best = m_anchor;
-    best.boucWen.uRef = *request.uRef;
-    best.boucWen.fRef = *request.fRef;
-    BoucWenState state;
-    double bestNrmse = std::numeric_limits<double>::infinity(), nrmse = 0.0;
-    if (m_ukf) {
-        if (replay(best, state, nrmse)) // the previous anchor (scales as now)
-            bestNrmse = nrmse;
-        const BoucWenPinchingParameters now = m_ukf->estimate();
-        if (!diverged && replay(now, state, nrmse) && nrmse < bestNrmse)
-            best = now, bestNrmse = nrmse;
-    }
-    if (cal.ok) {
-        m_anchor.boucWen.uRef = *request.uRef; // fromCalibration starts from the anchor
-        m_anchor.boucWen.fRef = *request.fRef;
-        const BoucWenPinchingParameters p = fromCalibration(cal);
-        if (replay(p, state, nrmse) && nrmse < bestNrmse)
-            best = p, bestNrmse = nrmse;
-    }
-    if (!std::isfinite(bestNrmse) || !replay(best, state, nrmse)) {
-        st.ok = !diverged;
-        st.message = "pinching UKF: no anchor, the calibration failed (" + cal.reason + ")";
-        return st;
-    }
-    PinchingUkf::Box box;
-    for (const auto& b : spec.fitted) {
-        const int j = indexOf(b.name);
-        if (j < 0)
-            continue;
-        box[std::size_t(j)] = {b.lower, b.upper};
-        const double fromFit = cal.ok ? [&] {
-            for (std::size_t q = 0; q < cal.names.size(); ++q)
-                if (cal.names[q] == b.name)
-                    return cal.standardDeviation[Eigen::Index(q)];
-            return std::nan("");
-        }()
-                                      : std::nan("");
-        const double floor = 1e-2 * b.typical, cap = 0.1 * b.typical;
-        m_anchorSd[std::size_t(j)] = std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
-        m_bounds[std::size_t(j)] = {b.lower, b.upper};
-    }
-    const double rmsF = rmsOf(m_f);
-    m_anchorRms = bestNrmse * rmsF / best.boucWen.fRef;
-    PinchingUkfSettings us;
-    us.forceNoise = std::max(m_anchorRms, 1e-3);
-    us.zNoise = us.eNoise = 1e-2 * us.forceNoise;
-    us.parameterNoise = m_settings.parameterNoise;
-    m_anchor = best;
-    m_anchorNrmse = bestNrmse;
-    m_anchorSize = m_u.size();
-    m_anchorLaw.emplace(best);
-    for (double u : m_u) {
-        m_anchorLaw->setTrialDeformation(u);
-        m_anchorLaw->commit();
-    }
-    m_ukf.emplace(best, box, us);
-    restartAtAnchor();
+void PinchingUkfIdentifier::clearWindows() {
     std::fill(m_window.begin(), m_window.end(), 0.0);
     std::fill(m_anchorWindow.begin(), m_anchorWindow.end(), 0.0);
     m_windowSum = m_anchorWindowSum = 0.0;
-    m_windowFill = 0;
+    m_windowNext = m_windowFill = 0;
+}
+
+void PinchingUkfIdentifier::restartAtAnchor() {
+    m_ukf->restart(m_anchor, m_anchorLaw->committedState(), m_u.back(), m_anchorSd);
+}
+
+void PinchingUkfIdentifier::startAnchor(bool global, bool diverged) {
+    PinchingAnchorJobInput in;
+    in.u = m_u;
+    in.f = m_f;
+    in.uRef = m_uRef;
+    in.fRef = m_fRef;
+    if (m_anchors > 0) {
+        in.anchor = m_anchor;
+        in.anchorNrmse = m_anchorNrmse;
+    }
+    if (m_ukf && !diverged)
+        in.estimate = m_ukf->estimate();
+    in.initial = m_initial;
+    in.userBounds = m_userBounds;
+    in.global = global;
+    in.budget = m_settings.budget;
+    in.rescaleFactor = m_settings.rescaleFactor;
+    in.verdictReversals = m_settings.verdictReversals;
+    in.verdictNrmse = m_settings.verdictNrmse;
+    JobMeta meta;
+    meta.anchor = true;
+    meta.diverged = diverged;
+    m_job.start(m_u.size(), meta, [in = std::move(in)](const std::atomic<bool>& cancel) {
+        return JobOutcome{pinchingAnchorJob(in, &cancel), {}};
+    });
+}
+
+void PinchingUkfIdentifier::startVerify(const BoucWenPinchingParameters& candidate) {
+    JobMeta meta;
+    meta.anchorNrmseAtStart = anchorHistoryNrmse();
+    meta.candidate = candidate;
+    m_job.start(m_u.size(), meta, [u = m_u, f = m_f, candidate](const std::atomic<bool>&) {
+        return JobOutcome{{}, verifyJob(u, f, candidate)};
+    });
+}
+
+IdentificationStatus PinchingUkfIdentifier::applyJob() {
+    Job::Taken taken = m_job.take();
+    const JobMeta& job = taken.meta;
+    const JobOutcome& out = taken.outcome;
+    m_workerCpu += out.anchor.cpuSeconds + out.verify.cpuSeconds;
+    m_anchorCpu += out.anchor.cpuSeconds;
+    if (job.anchor)
+        return applyAnchor(job, taken.startSize, out.anchor);
+    IdentificationStatus st;
+    if (job.discarded || !m_ukf)
+        return st;
+    const VerifyJobResult& v = out.verify;
+    const double na = job.anchorNrmseAtStart;
+    if (!v.ok || v.nrmse > m_settings.driftRatio * na) {
+        restartAtAnchor();
+        publish(m_anchor);
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "pinching UKF estimate replays the history with NRMSE %.3g against the "
+                      "anchor's %.3g: back to the anchor",
+                      v.ok ? v.nrmse : NAN, na);
+        st.message = buf;
+    } else {
+        publish(job.candidate); // verified on the history up to the job's start
+    }
+    st.updated = true;
+    return st;
+}
+
+IdentificationStatus PinchingUkfIdentifier::applyAnchor(const JobMeta& job, std::size_t startSize,
+                                                        const PinchingAnchorJobResult& r) {
+    IdentificationStatus st;
+    m_lastSeconds = r.cpuSeconds;
+    if (!r.ok) {
+        st.ok = !job.diverged;
+        st.message = "pinching UKF: no anchor: " + r.reason;
+        return st;
+    }
+    // Catch up over the samples measured since the job started.
+    BoucWenPinching law(r.best);
+    law.setCommittedState(r.state, m_u[startSize - 1]);
+    double sse = r.squaredErrors;
+    for (std::size_t k = startSize; k < m_u.size(); ++k) {
+        if (law.setTrialDeformation(m_u[k]) != LawStatus::Ok) {
+            st.ok = !job.diverged;
+            st.message = "pinching UKF: no anchor: its law fails on the samples since the "
+                         "calibration";
+            return st;
+        }
+        law.commit();
+        const double e = law.committedForce() - m_f[k];
+        sse += e * e;
+    }
+    PinchingUkfSettings us;
+    m_anchorRms = r.nrmse * r.rmsForce / r.best.boucWen.fRef;
+    us.forceNoise = std::max(m_anchorRms, 1e-3);
+    us.zNoise = us.eNoise = 1e-2 * us.forceNoise;
+    us.parameterNoise = m_settings.parameterNoise;
+    try {
+        m_ukf.emplace(r.best, r.box, us);
+    } catch (const std::exception& e) {
+        st.ok = false;
+        st.message = std::string("pinching UKF: no anchor: ") + e.what();
+        return st;
+    }
+    for (int j = 0; j < kPinchingUkfParameters; ++j)
+        m_bounds[std::size_t(j)] = r.box[std::size_t(j)];
+    m_anchorLaw.emplace(std::move(law));
+    m_anchorSse = sse;
+    m_anchor = r.best;
+    m_anchorSd = r.sd;
+    m_anchorNrmse = r.nrmse;
+    m_anchorSize = startSize;
+    if (r.global) {
+        m_globalSize = startSize;
+        ++m_globalAnchors;
+    }
+    restartAtAnchor();
+    clearWindows();
+    m_rejectedInRow = 0;
     ++m_anchors;
-    publish(best);
-    m_nextCheck = m_u.size() + std::max<std::size_t>(50, m_u.size() / 20);
-    m_lastSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    char buf[200];
+    publish(r.best);
+    m_nextCheck = m_u.size() + scheduledJobDelay(m_u.size());
+    char buf[240];
     std::snprintf(buf, sizeof buf,
-                  "pinching UKF anchor %d (%s) over %zu samples: NRMSE %.4f, zetaS %.3f (%.0f ms)",
-                  m_anchors, global ? "calibration" : "local refit", m_u.size(), bestNrmse,
-                  best.pinching.zetaS, 1e3 * m_lastSeconds);
+                  "pinching UKF %s %d (%s) at a fit over %zu samples: NRMSE %.4f, zetaS %.3f",
+                  job.diverged ? "restarted, anchor" : "anchor", m_anchors,
+                  r.global ? "calibration" : "local refit", startSize, r.nrmse,
+                  r.best.pinching.zetaS);
     st.message = buf;
+    if (r.rescaled) {
+        std::snprintf(buf, sizeof buf, " (scales moved: uRef %.6g, fRef %.6g)",
+                      r.best.boucWen.uRef, r.best.boucWen.fRef);
+        st.message += buf;
+    }
     st.updated = true;
     st.refit = true;
-    if (reversals() >= m_settings.verdictReversals && bestNrmse > m_settings.verdictNrmse)
-        st.modelInadequate = bestNrmse;
+    if (r.modelInadequate)
+        st.modelInadequate = r.modelInadequate;
     return st;
 }
 
 IdentificationStatus PinchingUkfIdentifier::observe(double deformation, double force, bool) {
+    IdentificationStatus st;
+    if (!std::isfinite(deformation) || !std::isfinite(force)) {
+        st.ok = false;
+        st.message = "the measured deformation or force is not finite: step skipped";
+        return st;
+    }
     m_u.push_back(deformation);
     m_f.push_back(force);
     m_uMin = m_u.size() == 1 ? deformation : std::min(m_uMin, deformation);
     m_uMax = m_u.size() == 1 ? deformation : std::max(m_uMax, deformation);
-    IdentificationStatus st;
+    m_sumF2 += force * force;
+    const std::size_t n = m_u.size();
     if (!m_ukf) {
         st.reportable = false;
-        if (m_u.size() % 10 == 0 && reversals() >= m_settings.warmUpReversals)
-            st = anchor(true, false);
+        m_predicted = std::numeric_limits<double>::quiet_NaN();
+        if (m_job.running()) {
+            if (m_job.due(n)) {
+                st = applyJob();
+                st.reportable = m_ukf.has_value();
+            }
+            return st;
+        }
+        if (warmedUp())
+            startAnchor(true, false);
         return st;
     }
     const PinchingUkfStep s = m_ukf->step(deformation, force);
@@ -283,26 +279,20 @@ IdentificationStatus PinchingUkfIdentifier::observe(double deformation, double f
     // divergence watch: the filter's a-priori error against the anchor model's own
     const double fRef = m_anchor.boucWen.fRef;
     const bool anchorFailed = m_anchorLaw->setTrialDeformation(deformation) != LawStatus::Ok;
-    m_anchorLaw->commit();
-    m_rejectedInRow = s.status.ok ? 0 : m_rejectedInRow + 1;
-    if (anchorFailed || m_rejectedInRow >= kRejectionsBeforeReanchor) {
-        // the law cannot integrate the anchor (or the filter's points) along the new path:
-        // a new anchor from the whole history, which the law can replay
-        m_rejectedInRow = 0;
-        IdentificationStatus a2 = anchor(true, true);
-        a2.ok = false;
-        a2.message = std::string(anchorFailed ? "the anchor model failed on the new "
-                                                "deformation"
-                                              : "pinching UKF steps rejected in a row") +
-                     "; " + a2.message;
-        return a2;
+    double a = 0.0;
+    if (!anchorFailed) {
+        m_anchorLaw->commit();
+        const double err = m_anchorLaw->committedForce() - force;
+        m_anchorSse += err * err;
+        a = err / fRef;
     }
+    m_rejectedInRow = s.status.ok ? 0 : m_rejectedInRow + 1;
     const double e = (s.predictedForce - force) / fRef;
-    const double a = (m_anchorLaw->committedForce() - force) / fRef;
     const std::size_t w = m_window.size();
-    m_windowSum += e * e - m_window[m_windowNext];
+    const double e2 = std::isfinite(e) ? e * e : 1e300;
+    m_windowSum += e2 - m_window[m_windowNext];
     m_anchorWindowSum += a * a - m_anchorWindow[m_windowNext];
-    m_window[m_windowNext] = e * e;
+    m_window[m_windowNext] = e2;
     m_anchorWindow[m_windowNext] = a * a;
     m_windowNext = (m_windowNext + 1) % w;
     m_windowFill = std::min(m_windowFill + 1, w);
@@ -313,22 +303,38 @@ IdentificationStatus PinchingUkfIdentifier::observe(double deformation, double f
     const double rms = std::sqrt(std::max(m_windowSum, 0.0) / double(w));
     const double reference = std::max({std::sqrt(std::max(m_anchorWindowSum, 0.0) / double(w)),
                                        m_anchorRms, m_settings.divergenceFloor});
-    if (!finite || (m_windowFill == w && rms > m_settings.divergenceRatio * reference)) {
-        ++m_divergences;
-        char buf[200];
-        std::snprintf(buf, sizeof buf,
-                      "pinching UKF diverging (a-priori force error %.3g of fRef over the last "
-                      "%zu steps, the anchor's %.3g): restarted from the anchor",
-                      rms, w, reference);
+    const bool lawFailed = anchorFailed || m_rejectedInRow >= kRejectionsBeforeReanchor;
+    if (!finite || lawFailed || (m_windowFill == w && rms > m_settings.divergenceRatio * reference)) {
+        char buf[240];
+        if (lawFailed) {
+            // the law cannot integrate the anchor (or the filter's points) along the new path:
+            // a refit (global if the law cannot replay the history from the anchor)
+            std::snprintf(buf, sizeof buf, "%s: restarted from the anchor",
+                          anchorFailed ? "the pinching UKF's anchor model failed on the new "
+                                         "deformation"
+                                       : "pinching UKF steps rejected in a row");
+            m_rejectedInRow = 0;
+        } else {
+            ++m_divergences;
+            std::snprintf(buf, sizeof buf,
+                          "pinching UKF diverging (a-priori force error %.3g of fRef over the "
+                          "last %zu steps, the anchor's %.3g): restarted from the anchor",
+                          rms, w, reference);
+        }
         st.ok = false;
         st.message = buf;
         restartAtAnchor();
         publish(m_anchor);
-        std::fill(m_window.begin(), m_window.end(), 0.0);
-        m_windowSum = 0.0;
-        m_windowFill = 0;
+        clearWindows();
         m_recovering = int(w);
+        if (m_job.running() && !m_job.meta().anchor)
+            m_job.meta().discarded = true;
+        if (!m_job.running()) {
+            startAnchor(false, true);
+            st.message += ", a refit started";
+        }
         st.reportable = false;
+        st.updated = true;
         return st;
     }
     if (!s.status.ok) {
@@ -337,32 +343,30 @@ IdentificationStatus PinchingUkfIdentifier::observe(double deformation, double f
     }
     if (m_recovering > 0)
         --m_recovering;
-    st.reportable = m_recovering == 0;
-    if (double(m_u.size()) >= m_settings.anchorGrowth * double(m_globalSize)) {
-        IdentificationStatus a2 = anchor(true, false);
-        a2.reportable = st.reportable;
-        return a2;
-    }
-    if (m_u.size() >= m_nextCheck) { // the guard
-        m_nextCheck = m_u.size() + std::max<std::size_t>(50, m_u.size() / 20);
-        BoucWenState endNow, endAnchor;
-        double nrmseNow = 0.0, nrmseAnchor = 0.0;
-        const bool nowOk = replay(now, endNow, nrmseNow);
-        replay(m_anchor, endAnchor, nrmseAnchor);
-        if (nowOk && nrmseNow <= m_settings.driftRatio * nrmseAnchor) {
-            publish(now);
-            st.updated = true;
-        } else {
-            restartAtAnchor();
-            publish(m_anchor);
-            st.updated = true;
-        }
-        if (nrmseAnchor > m_settings.staleRatio * m_anchorNrmse) {
-            IdentificationStatus a2 = anchor(false, false);
-            a2.reportable = st.reportable;
-            return a2;
+    const bool reportable = m_recovering == 0;
+    if (m_job.due(n)) {
+        IdentificationStatus j = applyJob();
+        if (!j.message.empty() || !j.ok)
+            st = j;
+        st.updated = st.updated || j.updated;
+        st.refit = j.refit;
+    } else if (!m_job.running()) {
+        if (double(n) >= m_settings.globalGrowth * double(m_globalSize)) {
+            startAnchor(true, false); // the history grew a lot since the last global search
+        } else if (double(n) >= m_settings.anchorGrowth * double(m_anchorSize)) {
+            startAnchor(false, false); // the history doubled: a local refit
+        } else if (n >= m_nextCheck) {
+            // The guard: the whole history decides, not the one-step prediction.
+            m_nextCheck = n + scheduledJobDelay(n);
+            const bool stale = anchorHistoryNrmse() > m_settings.staleRatio * m_anchorNrmse &&
+                               double(n) >= 1.25 * double(m_anchorSize);
+            if (stale)
+                startAnchor(false, false);
+            else
+                startVerify(now);
         }
     }
+    st.reportable = reportable;
     return st;
 }
 

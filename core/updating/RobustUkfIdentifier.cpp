@@ -90,11 +90,6 @@ bool RobustUkfIdentifier::setBounds(std::size_t index, const ParameterBounds& b)
     return true;
 }
 
-RobustUkfIdentifier::~RobustUkfIdentifier() {
-    if (m_job && m_job->result.valid())
-        m_job->result.wait(); // the worker reads nothing of ours, but let it finish
-}
-
 double RobustUkfIdentifier::anchorHistoryNrmse() const {
     return m_sumF2 > 0 ? std::sqrt(m_anchorSse / m_sumF2) : 0.0;
 }
@@ -122,28 +117,22 @@ void RobustUkfIdentifier::startAnchor(bool global, bool diverged,
     in.rescaleFactor = m_settings.rescaleFactor;
     in.verdictReversals = m_settings.verdictReversals;
     in.verdictNrmse = m_settings.verdictNrmse;
-    Job& job = m_job.emplace();
-    job.anchor = true;
-    job.diverged = diverged;
-    job.startSize = m_u.size();
-    job.applyAt = m_u.size() + jobDelay(m_u.size());
-    job.startAmplitude = m_maxAmplitude;
-    job.result = std::async(std::launch::async, [in = std::move(in)] {
-        return JobOutcome{anchorJob(in), {}};
+    JobMeta meta;
+    meta.anchor = true;
+    meta.diverged = diverged;
+    meta.startAmplitude = m_maxAmplitude;
+    m_job.start(m_u.size(), meta, [in = std::move(in)](const std::atomic<bool>& cancel) {
+        return JobOutcome{anchorJob(in, &cancel), {}};
     });
-    ++m_jobs;
 }
 
 void RobustUkfIdentifier::startVerify(const BoucWenParameters& candidate) {
-    Job& job = m_job.emplace();
-    job.startSize = m_u.size();
-    job.applyAt = m_u.size() + jobDelay(m_u.size());
-    job.anchorNrmseAtStart = anchorHistoryNrmse();
-    job.candidate = candidate;
-    job.result = std::async(std::launch::async, [u = m_u, f = m_f, candidate] {
+    JobMeta meta;
+    meta.anchorNrmseAtStart = anchorHistoryNrmse();
+    meta.candidate = candidate;
+    m_job.start(m_u.size(), meta, [u = m_u, f = m_f, candidate](const std::atomic<bool>&) {
         return JobOutcome{{}, verifyJob(u, f, candidate)};
     });
-    ++m_jobs;
 }
 
 void RobustUkfIdentifier::restartAtAnchor() {
@@ -152,15 +141,13 @@ void RobustUkfIdentifier::restartAtAnchor() {
 }
 
 IdentificationStatus RobustUkfIdentifier::applyJob() {
-    Job job = std::move(*m_job);
-    m_job.reset();
-    if (job.result.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-        ++m_waits;
-    JobOutcome out = job.result.get();
+    Job::Taken taken = m_job.take();
+    const JobMeta& job = taken.meta;
+    const JobOutcome& out = taken.outcome;
     m_workerCpu += out.anchor.cpuSeconds + out.verify.cpuSeconds;
     m_anchorCpu += out.anchor.cpuSeconds;
     if (job.anchor)
-        return applyAnchor(job, out.anchor);
+        return applyAnchor(job, taken.startSize, out.anchor);
     IdentificationStatus st;
     if (job.discarded || !m_ukf)
         return st;
@@ -206,7 +193,7 @@ void RobustUkfIdentifier::startFilter(const AnchorJobResult& r, const BoucWenSta
 
 bool RobustUkfIdentifier::seed(const std::vector<double>& deformation,
                                const std::vector<double>& force, std::string& message) {
-    if (!m_u.empty() || m_job || m_ukf) {
+    if (!m_u.empty() || m_job.running() || m_ukf) {
         message = "the robust UKF is seeded before the test's first step";
         return false;
     }
@@ -258,7 +245,8 @@ bool RobustUkfIdentifier::seed(const std::vector<double>& deformation,
     return true;
 }
 
-IdentificationStatus RobustUkfIdentifier::applyAnchor(Job& job, const AnchorJobResult& r) {
+IdentificationStatus RobustUkfIdentifier::applyAnchor(const JobMeta& job, std::size_t startSize,
+                                                      const AnchorJobResult& r) {
     IdentificationStatus st;
     if (!r.ok) {
         st.ok = !job.diverged;
@@ -267,9 +255,9 @@ IdentificationStatus RobustUkfIdentifier::applyAnchor(Job& job, const AnchorJobR
     }
     // Catch up over the samples measured since the job started.
     BoucWen law(r.best);
-    law.setCommittedState(r.state, m_u[job.startSize - 1]);
+    law.setCommittedState(r.state, m_u[startSize - 1]);
     double sse = r.squaredErrors;
-    for (std::size_t k = job.startSize; k < m_u.size(); ++k) {
+    for (std::size_t k = startSize; k < m_u.size(); ++k) {
         if (law.setTrialDeformation(m_u[k]) != LawStatus::Ok) {
             st.ok = !job.diverged;
             st.message = "no anchor: its law fails on the samples since the calibration";
@@ -288,14 +276,14 @@ IdentificationStatus RobustUkfIdentifier::applyAnchor(Job& job, const AnchorJobR
     m_published = r.best;
     m_anchorSd = r.sd;
     m_anchorNrmse = r.nrmse;
-    m_anchorSize = job.startSize;
+    m_anchorSize = startSize;
     m_anchorAmplitude = job.startAmplitude;
     m_nextCheck = m_u.size() + jobDelay(m_u.size());
     ++m_anchors;
     st.updated = true;
     st.refit = true;
     st.message = std::string(job.diverged ? "UKF restarted" : "UKF anchored") + " at a fit over " +
-                 std::to_string(job.startSize) + " samples: NRMSE " + fixed(r.nrmse, 3);
+                 std::to_string(startSize) + " samples: NRMSE " + fixed(r.nrmse, 3);
     if (r.rescaled)
         st.message += " (scales moved: uRef " + fixed(r.best.uRef, 6) + ", fRef " +
                       fixed(r.best.fRef, 6) + ")";
@@ -325,8 +313,8 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
     const std::size_t n = m_u.size();
     if (!m_ukf) {
         m_predicted = std::numeric_limits<double>::quiet_NaN();
-        if (m_job) {
-            if (n < m_job->applyAt)
+        if (m_job.running()) {
+            if (!m_job.due(n))
                 return st;
             st = applyJob();
             publish();
@@ -373,9 +361,9 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
         restartAtAnchor();
         clearWindows();
         m_recovering = m_settings.divergenceWindow;
-        if (m_job && !m_job->anchor)
-            m_job->discarded = true;
-        const bool refit = !m_job && m_ownAnchor; // a seed's anchor is not refitted on a few samples
+        if (m_job.running() && !m_job.meta().anchor)
+            m_job.meta().discarded = true;
+        const bool refit = !m_job.running() && m_ownAnchor; // a seed's anchor is not refitted on a few samples
         if (refit)
             startAnchor(false, true, std::nullopt);
         publish();
@@ -389,9 +377,9 @@ IdentificationStatus RobustUkfIdentifier::observe(double deformation, double for
                      (refit ? ", a refit started" : "");
         return st;
     }
-    if (m_job && n >= m_job->applyAt) {
+    if (m_job.due(n)) {
         st = applyJob();
-    } else if (!m_job) {
+    } else if (!m_job.running()) {
         const bool doubled = double(n) >= m_settings.anchorGrowth * double(m_anchorSize);
         const bool wider = m_maxAmplitude >= m_settings.amplitudeGrowth * m_anchorAmplitude;
         if (!m_ownAnchor) {

@@ -43,23 +43,24 @@
 //  6. Verdict. When an anchor over at least verdictReversals turning points fits no better
 //     than verdictNrmse, the status carries the best NRMSE: the Inspector says that the model
 //     family cannot represent the specimen.
-// Jobs. Calibrations (2, 4, 5) and the guard's replay (5b) run on a worker thread
-// (std::async), one at a time, on a copy of the history at the step k they are started; the
-// result is applied at the step where the history reaches N_k + max(50, N_k / 20)
-// (jobDelay(); the next step when that one is a divergence's), and observe() waits for the worker there if it has not finished. So the
-// estimates depend on the samples only, not on the machine's speed: a replay of a record gives
-// the same estimates bit for bit, online or offline. A job's result is caught up over the
-// samples since N_k on the stepping thread (the anchor's model stepped over them). The
-// destructor waits for a running job (a calibration of the history so far).
+// Jobs (ScheduledJob.h). Calibrations (2, 4, 5) and the guard's replay (5b) run on a worker
+// thread (std::async), one at a time, on a copy of the history at the step k they are started;
+// the result is applied at the step where the history reaches N_k + max(50, N_k / 20)
+// (jobDelay(); the next step when that one is a divergence's), and observe() waits for the
+// worker there if it has not finished. So the estimates depend on the samples only, not on the
+// machine's speed: a replay of a record gives the same estimates bit for bit, online or
+// offline. A job's result is caught up over the samples since N_k on the stepping thread (the
+// anchor's model stepped over them). The destructor cancels a running job (the calibration
+// stops at its next iteration) and waits only for that.
 // Values are in the law's normalized units. Thread rules: observe() and the rest from one
 // thread; the worker only reads its own copy of the inputs.
 
 #include "core/identification/BoucWenUkf.h"
 #include "core/updating/Identifier.h"
 #include "core/updating/RobustUkfJobs.h"
+#include "core/updating/ScheduledJob.h"
 
 #include <array>
-#include <future>
 #include <optional>
 #include <vector>
 
@@ -120,36 +121,36 @@ public:
 
     /// The step distance, in samples, between starting a job on a history of n samples and
     /// applying its result.
-    static std::size_t jobDelay(std::size_t n) { return std::max<std::size_t>(50, n / 20); }
+    static std::size_t jobDelay(std::size_t n) { return scheduledJobDelay(n); }
     /// Worker CPU spent in jobs so far [s], and their number (anchors and guard replays).
     double workerCpuSeconds() const { return m_workerCpu; }
-    int jobs() const { return m_jobs; }
+    int jobs() const { return m_job.started(); }
     /// ... of which in anchor jobs (calibrations) [s].
     double anchorCpuSeconds() const { return m_anchorCpu; }
     /// Applications that had to wait for the worker (informative: depends on the machine).
-    int waits() const { return m_waits; }
-    ~RobustUkfIdentifier() override;
+    int waits() const { return m_job.waits(); }
+    ~RobustUkfIdentifier() override = default; // cancels a running job (ScheduledJob)
 
 private:
     struct JobOutcome {
         AnchorJobResult anchor;
         VerifyJobResult verify;
     };
-    struct Job {
+    struct JobMeta {
         bool anchor = false; ///< else a guard replay of `candidate`
         bool diverged = false;
         bool discarded = false; ///< a divergence came after a guard replay was started
-        std::size_t startSize = 0, applyAt = 0;
         double startAmplitude = 0.0;
         double anchorNrmseAtStart = 0.0;
         BoucWenParameters candidate;
-        std::future<JobOutcome> result;
     };
+    using Job = ScheduledJob<JobMeta, JobOutcome>;
     void startAnchor(bool global, bool diverged, const std::optional<BoucWenParameters>& estimate);
     void startVerify(const BoucWenParameters& candidate);
     /// Applies the job's result (at its step); the status to return.
     IdentificationStatus applyJob();
-    IdentificationStatus applyAnchor(Job& job, const AnchorJobResult& r);
+    IdentificationStatus applyAnchor(const JobMeta& job, std::size_t startSize,
+                                     const AnchorJobResult& r);
     /// The filter, its bounds and settings, and the anchor's model at r.best in `state` at
     /// the last deformation `u`.
     void startFilter(const AnchorJobResult& r, const BoucWenState& state, double u);
@@ -185,14 +186,13 @@ private:
     bool m_ownAnchor = false;   ///< an anchor on this test's history has been applied
     int m_anchors = 0, m_divergences = 0, m_pullBacks = 0;
     std::size_t m_nextCheck = 0; ///< history size of the next guard check
-    std::optional<Job> m_job;    ///< the job running (at most one)
     double m_workerCpu = 0.0, m_anchorCpu = 0.0;
-    int m_jobs = 0, m_waits = 0;
     double m_predicted = std::numeric_limits<double>::quiet_NaN();
     ParameterLayout m_layout;
     // Published in layout order (kRobustUkfParameters, uRef, fRef); NaN bounds: none yet.
     std::array<double, 9> m_estimate{}, m_stddev{};
     std::array<ParameterBounds, 9> m_bounds{};
+    Job m_job; ///< the job running (at most one); last, so destroyed (cancelled) first
 };
 
 } // namespace hsmu

@@ -63,13 +63,12 @@ BoucWenParameters fromCalibration(const BoucWenParameters& initial, const Calibr
     return p;
 }
 
-/// p replayed over the history from the virgin state: the final state and the sum of squared
-/// force errors; false if the law fails.
-bool replay(const std::vector<double>& u, const std::vector<double>& f,
-            const BoucWenParameters& p, BoucWenState& state, double& squaredErrors) {
-    if (!BoucWen::admissible(p))
+template <class Law, class Parameters>
+bool replayLaw(const std::vector<double>& u, const std::vector<double>& f, const Parameters& p,
+               BoucWenState& state, double& squaredErrors) {
+    if (!Law::admissible(p))
         return false;
-    BoucWen law(p);
+    Law law(p);
     double sum = 0.0;
     for (std::size_t k = 0; k < u.size(); ++k) {
         if (law.setTrialDeformation(u[k]) != LawStatus::Ok)
@@ -81,6 +80,22 @@ bool replay(const std::vector<double>& u, const std::vector<double>& f,
     state = law.committedState();
     squaredErrors = sum;
     return std::isfinite(sum);
+}
+
+template <class Parameters>
+VerifyJobResult verifyLaw(const std::vector<double>& u, const std::vector<double>& f,
+                          const Parameters& p) {
+    const double t0 = threadCpuSeconds();
+    VerifyJobResult r;
+    BoucWenState state;
+    double sse = 0.0, sff = 0.0;
+    for (double v : f)
+        sff += v * v;
+    r.ok = replayHistory(u, f, p, state, sse);
+    r.nrmse = sff > 0 ? std::sqrt(sse / sff) : 0.0;
+    r.ok = r.ok && std::isfinite(r.nrmse);
+    r.cpuSeconds = threadCpuSeconds() - t0;
+    return r;
 }
 
 double sumOfSquares(const std::vector<double>& f) {
@@ -130,21 +145,39 @@ double threadCpuSeconds() {
         .count();
 }
 
-VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
-                          const BoucWenParameters& p) {
-    const double t0 = threadCpuSeconds();
-    VerifyJobResult r;
-    BoucWenState state;
-    double sse = 0.0;
-    const double sff = sumOfSquares(f);
-    r.ok = replay(u, f, p, state, sse);
-    r.nrmse = sff > 0 ? std::sqrt(sse / sff) : 0.0;
-    r.ok = r.ok && std::isfinite(r.nrmse);
-    r.cpuSeconds = threadCpuSeconds() - t0;
-    return r;
+bool replayHistory(const std::vector<double>& u, const std::vector<double>& f,
+                   const BoucWenParameters& p, BoucWenState& state, double& squaredErrors) {
+    return replayLaw<BoucWen>(u, f, p, state, squaredErrors);
 }
 
-AnchorJobResult anchorJob(const AnchorJobInput& in) {
+bool replayHistory(const std::vector<double>& u, const std::vector<double>& f,
+                   const BoucWenPinchingParameters& p, BoucWenState& state,
+                   double& squaredErrors) {
+    return replayLaw<BoucWenPinching>(u, f, p, state, squaredErrors);
+}
+
+VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
+                          const BoucWenParameters& p) {
+    return verifyLaw(u, f, p);
+}
+
+VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
+                          const BoucWenPinchingParameters& p) {
+    return verifyLaw(u, f, p);
+}
+
+BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uRef,
+                                   double fRef) {
+    const double s = p.boucWen.uRef / uRef, c = p.boucWen.fRef / fRef;
+    BoucWenPinchingParameters q = p;
+    q.boucWen = rescaled(p.boucWen, uRef, fRef);
+    q.pinching.p = p.pinching.p / (c * s);
+    q.pinching.psi = p.pinching.psi * s;
+    q.pinching.deltaPsi = p.pinching.deltaPsi / c;
+    return q;
+}
+
+AnchorJobResult anchorJob(const AnchorJobInput& in, const std::atomic<bool>* cancel) {
     const double t0 = threadCpuSeconds();
     AnchorJobResult out;
     try {
@@ -183,15 +216,22 @@ AnchorJobResult anchorJob(const AnchorJobInput& in) {
             if (s.size() == spec.fitted.size())
                 spec.starts.push_back(std::move(s));
         }
+        spec.cancel = cancel;
         const CalibrationResult cal = calibrate(in.u, in.f, spec);
+        if (cal.cancelled) {
+            out.cancelled = true;
+            out.reason = "cancelled";
+            out.cpuSeconds = threadCpuSeconds() - t0;
+            return out;
+        }
         const double sff = sumOfSquares(in.f);
         double bestSse = std::numeric_limits<double>::infinity(), sse = 0.0;
         BoucWenState state;
-        if (estimate && replay(in.u, in.f, *estimate, state, sse))
+        if (estimate && replayHistory(in.u, in.f, *estimate, state, sse))
             out.best = *estimate, out.state = state, bestSse = sse;
         if (cal.ok) {
             const BoucWenParameters p = fromCalibration(in.initial, cal);
-            if (replay(in.u, in.f, p, state, sse) && sse < bestSse)
+            if (replayHistory(in.u, in.f, p, state, sse) && sse < bestSse)
                 out.best = p, out.state = state, bestSse = sse;
         }
         if (!std::isfinite(bestSse)) {

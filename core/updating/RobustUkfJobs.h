@@ -11,14 +11,17 @@
 //    (HistoryScales.h) at the first anchor and re-derived at every later anchor, taken when
 //    either moved by more than rescaleFactor (the anchor and the estimate are then expressed
 //    exactly in the new scales: rescaled()).
-//  - verifyJob: the replay of one estimate over the snapshot (its NRMSE).
+//  - verifyJob: the replay of one estimate over the snapshot (its NRMSE), for either law (the
+//    pinching UKF's jobs are in PinchingUkfJobs.h).
 // Values are in the law's normalized units. Thread rules: none (pure functions of their input).
 
 #include "core/hysteresis/BoucWen.h"
+#include "core/hysteresis/BoucWenPinching.h"
 #include "core/identification/BoucWenUkf.h"
 #include "core/identification/ParameterSet.h"
 
 #include <array>
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,6 +58,7 @@ struct AnchorJobInput {
 
 struct AnchorJobResult {
     bool ok = false;
+    bool cancelled = false;     ///< stopped by the cancel flag (then not ok)
     std::string reason;         ///< why not, when !ok
     BoucWenParameters best;     ///< the anchor (scales included)
     BoucWenState state;         ///< the law's state at the snapshot's last sample
@@ -68,7 +72,8 @@ struct AnchorJobResult {
     double cpuSeconds = 0.0;    ///< of the worker thread
 };
 
-AnchorJobResult anchorJob(const AnchorJobInput& in);
+/// cancel: checked between the calibration's iterations (may be null).
+AnchorJobResult anchorJob(const AnchorJobInput& in, const std::atomic<bool>* cancel = nullptr);
 
 struct VerifyJobResult {
     bool ok = false;     ///< false: the law failed along the history
@@ -78,6 +83,23 @@ struct VerifyJobResult {
 
 VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
                           const BoucWenParameters& p);
+/// ... of the pinching law (PinchingUkfIdentifier's guard).
+VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
+                          const BoucWenPinchingParameters& p);
+
+/// p replayed over the history (u, f) from the virgin state: the law's final state and the sum
+/// of squared force errors [force^2]; false if the law fails or p is not admissible.
+bool replayHistory(const std::vector<double>& u, const std::vector<double>& f,
+                   const BoucWenParameters& p, BoucWenState& state, double& squaredErrors);
+bool replayHistory(const std::vector<double>& u, const std::vector<double>& f,
+                   const BoucWenPinchingParameters& p, BoucWenState& state,
+                   double& squaredErrors);
+
+/// The same physical pinching model in the scales (uRef, fRef): the Bouc-Wen part as
+/// rescaled(); with s = p.uRef / uRef and c = p.fRef / fRef, z scales by s and e by c s, so
+/// the pinched zone's width psi s, deltaPsi / c, the energy rate p / (c s); zetaS, q, lambda
+/// unchanged (Eqs P2-P4, docs/hysteresis-laws.md).
+BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uRef, double fRef);
 
 /// CPU time of the calling thread [s] (wall time where the platform has no thread clock).
 double threadCpuSeconds();

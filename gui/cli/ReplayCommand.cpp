@@ -207,9 +207,9 @@ int ReplayCommand::exec(const QStringList& arguments) {
             settings = identificationSettingsFrom(cfg, o.specimen.toStdString());
             history = historyFromRecord(d, settings.specimen, o.record.toStdString());
         }
-        const bool calibrationOnly = o.method == QLatin1String("calibration");
         settings = withOverrides(settings, o.config, o.method);
-        settings.online = !calibrationOnly;
+        settings.online = !(o.method == QLatin1String("calibration") ||
+                            (o.method.isEmpty() && calibrationOnlyByDefault(settings)));
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }

@@ -11,6 +11,7 @@
 
 #include "CliTestSupport.h"
 
+#include "core/hysteresis/BoucWenPinching.h"
 #include "core/record/RecordReader.h"
 
 #include <QJsonArray>
@@ -47,6 +48,7 @@ private slots:
     void exportWritesTheDatasets();
     void compareWritesThreeRecords();
     void importIdentifies();
+    void pinchingModelIsCalibratedByDefault();
     void errorsAreClear();
     void labUnitsOutAndBackIn();
 
@@ -190,6 +192,44 @@ void TestReplayCommand::importIdentifies() {
     QVERIFY2(relative(final("k0"), k0) < 0.01, qPrintable(r.out));
     QVERIFY2(relative(final("fy"), fy) < 0.01, qPrintable(r.out));
     QVERIFY2(std::abs(final("b") - b) < 0.01, qPrintable(r.out));
+}
+
+// A boucWenPinching model without --method: only the calibration runs (docs/cli.md); with
+// --method ukf the pinching UKF does.
+void TestReplayCommand::pinchingModelIsCalibratedByDefault() {
+    hsmu::BoucWenPinchingParameters p;
+    p.boucWen.uRef = 0.01;
+    p.boucWen.fRef = 10.0;
+    hsmu::BoucWenPinching law(p);
+    QByteArray csv = "time [s], deformation [m], force [kN]\n";
+    for (int k = 1; k <= 300; ++k) {
+        const double t = 0.01 * k;
+        const double u = 0.04 * (t / 3.0) * std::sin(2.0 * M_PI * t);
+        law.setTrialDeformation(u);
+        law.commit();
+        csv += QByteArray::number(t, 'g', 17) + ", " + QByteArray::number(u, 'g', 17) + ", " +
+               QByteArray::number(law.committedForce(), 'g', 17) + "\n";
+    }
+    const QString data = path(m_dir, "pinching.csv");
+    writeText(data, csv);
+    const QString settings = path(m_dir, "pinching.json");
+    writeText(settings, R"({"model": {"law": "boucWenPinching"}})");
+    const auto method = [&](const QStringList& extra) {
+        const QString out = path(m_dir, extra.isEmpty() ? "pinchingDefault" : "pinchingUkf");
+        const Result r = clitest::hsmu(QStringList{QStringLiteral("replay"),
+                                                   QStringLiteral("--import"), data,
+                                                   QStringLiteral("--config"), settings,
+                                                   QStringLiteral("--out"), out} +
+                                       extra);
+        return r.exitCode == 0
+                   ? readJson(out + QStringLiteral("/summary.json"))
+                         .value(QStringLiteral("method"))
+                         .toString()
+                   : report(r);
+    };
+    QCOMPARE(method({}), QStringLiteral("calibration"));
+    QCOMPARE(method({QStringLiteral("--method"), QStringLiteral("ukf")}),
+             QStringLiteral("UKF (pinching)"));
 }
 
 void TestReplayCommand::errorsAreClear() {

@@ -117,6 +117,7 @@ private slots:
     void tangentMatchesFiniteDifference();
     void commitRevertAndCloneAreExact();
     void hugeIncrementIsSubStepped();
+    void reversalNearTheUltimateZWithLargeN();
     void parametersByNameAndIndex();
     void factoryBuildsTheLaw();
     void runsAsSpecimenAndNumericalModel();
@@ -285,6 +286,54 @@ void TestBoucWenPinching::hugeIncrementIsSubStepped() {
     // A non-finite deformation keeps the committed state.
     QVERIFY(big.setTrialDeformation(std::nan("")) == LawStatus::InvalidInput);
     QVERIFY(big.trialForce() == big.committedForce());
+}
+
+// A set of the kind the pinching UKF anchored and that then failed on new larger cycles
+// (zetaS 0.92, n 3.2, gamma well above beta; found by a random search over the calibration's
+// box, increments of 0.63 yield-scale units). At the reversal from z near -zu the unloading
+// Newton derivative 1 - dx Phi' / eta was negative at the 0.5 yield deformations the step
+// allowed: backward Euler went to a second root beyond -zu (z moving against dx), from which
+// the law ran away and failed an increment later. Now the step is split until dx Phi' / eta
+// <= 0.5 (BoucWenPinching.cpp, integrateSplit): z moves with dx, stays within the ultimate z,
+// and the increment agrees with a fine-step reference; the whole history runs.
+void TestBoucWenPinching::reversalNearTheUltimateZWithLargeN() {
+    BoucWenPinchingParameters p;
+    p.boucWen.k0 = 1.4259593957802281;
+    p.boucWen.alpha = 0.29915544243995101;
+    p.boucWen.n = 3.1936068676738429;
+    p.boucWen.beta = 0.05718141211996533;
+    p.boucWen.gamma = 2.7539791992413001;
+    p.boucWen.deltaNu = 0.0077472386572971395;
+    p.boucWen.deltaEta = 0.029323016506192009;
+    p.pinching = {0.91652622833847996, 0.27701578661799431, 0.35692265352699909,
+                  0.031820772838529569, 0.067023358327857316, 1.0214994122863394};
+    // the reversal: from z = -0.719091 (the ultimate z is 0.719 there) with dx = +0.6253
+    const BoucWenState atReversal{-0.719091, 2.5960};
+    const double dx = 0.6253;
+    const BoucWenIncrement inc = BoucWenPinching::integrate(p, atReversal, dx);
+    QCOMPARE(inc.status, LawStatus::Ok);
+    QVERIFY2(inc.state.z > atReversal.z, qPrintable(QString::number(inc.state.z))); // was -1.154
+    BoucWenState fine = atReversal; // reference: 2000 increments of dx / 2000
+    for (int k = 0; k < 2000; ++k)
+        fine = BoucWenPinching::integrate(p, fine, dx / 2000).state;
+    // first order over a few sub-steps: 0.06 here; the wrong root was 0.53 away
+    QVERIFY2(std::abs(inc.state.z - fine.z) < 0.1,
+             qPrintable(QString("%1 against %2").arg(inc.state.z).arg(fine.z)));
+    // ... and the cycles growing to 16 yield-scale units in increments of 0.6253 (the law
+    // failed at the 20th increment)
+    BoucWenPinching law(p);
+    double u = 0.0;
+    int increments = 0;
+    for (const double amplitude : {1.0, 2.0, 4.0, 8.0, 16.0})
+        for (const double dir : {1.0, -1.0})
+            while ((dir * amplitude - u) * dir > 0.0) {
+                u = dir > 0 ? std::min(u + 0.6253, amplitude) : std::max(u - 0.6253, -amplitude);
+                QCOMPARE(law.setTrialDeformation(u), LawStatus::Ok);
+                law.commit();
+                QVERIFY(std::abs(law.committedState().z) < 0.75);
+                ++increments;
+            }
+    QVERIFY(increments > 100);
 }
 
 void TestBoucWenPinching::parametersByNameAndIndex() {
