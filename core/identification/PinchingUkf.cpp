@@ -19,6 +19,14 @@ const std::array<const char*, kPinchingUkfParameters>& pinchingUkfParameterNames
     return names;
 }
 
+int pinchingUkfParameterIndex(const std::string& name) {
+    const auto& names = pinchingUkfParameterNames();
+    for (int j = 0; j < kPinchingUkfParameters; ++j)
+        if (name == names[std::size_t(j)])
+            return j;
+    return -1;
+}
+
 double& PinchingUkf::field(BoucWenPinchingParameters& p, int j) {
     switch (j) {
     case 0: return p.boucWen.k0;

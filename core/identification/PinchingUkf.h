@@ -40,6 +40,8 @@ inline constexpr int kPinchingUkfSize = 2 + kPinchingUkfParameters;
 
 /// The identified parameters, in state order (state index = 2 + position).
 const std::array<const char*, kPinchingUkfParameters>& pinchingUkfParameterNames();
+/// The position of `name` in pinchingUkfParameterNames(); -1 if it is not identified.
+int pinchingUkfParameterIndex(const std::string& name);
 
 struct PinchingUkfSettings {
     UkfSettings ukf{1.0, 2.0, 0.0};

@@ -15,14 +15,6 @@ namespace {
 /// UKF steps rejected in a row (a sigma point the law cannot integrate) before a refit.
 constexpr int kRejectionsBeforeReanchor = 3;
 
-int indexOf(const std::string& name) {
-    const auto& names = pinchingUkfParameterNames();
-    for (int j = 0; j < kPinchingUkfParameters; ++j)
-        if (name == names[std::size_t(j)])
-            return j;
-    return -1;
-}
-
 std::vector<std::string> layoutNames() {
     std::vector<std::string> names(pinchingUkfParameterNames().begin(),
                                    pinchingUkfParameterNames().end());
@@ -41,7 +33,7 @@ PinchingUkfIdentifier::PinchingUkfIdentifier(const BoucWenPinchingParameters& in
     : m_initial(initial), m_uRef(uRef), m_fRef(fRef), m_userBounds(bounds),
       m_layout(layoutNames()), m_settings(settings) {
     for (const auto& [name, b] : bounds)
-        if (indexOf(name) < 0)
+        if (pinchingUkfParameterIndex(name) < 0)
             throw std::invalid_argument("updating.bounds: '" + name +
                                         "' is not identified by the pinching UKF (expected k0, "
                                         "alpha, n, beta, gamma, deltaNu, deltaEta, zetaS, p, q, "
@@ -56,7 +48,7 @@ PinchingUkfIdentifier::PinchingUkfIdentifier(const BoucWenPinchingParameters& in
     request.bounds = bounds;
     m_bounds.fill({NAN, NAN});
     for (const auto& b : defaultCalibrationSpec(request, HistoryScales{true, "", 1, 1, 1, 1}).fitted)
-        if (const int j = indexOf(b.name); j >= 0)
+        if (const int j = pinchingUkfParameterIndex(b.name); j >= 0)
             m_bounds[std::size_t(j)] = {b.lower, b.upper};
     m_anchor = m_published = m_initial;
     m_window.assign(std::size_t(std::max(1, m_settings.divergenceWindow)), 0.0);

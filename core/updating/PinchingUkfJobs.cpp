@@ -14,19 +14,11 @@ namespace hsmu {
 
 namespace {
 
-int indexOf(const std::string& name) {
-    const auto& names = pinchingUkfParameterNames();
-    for (int j = 0; j < kPinchingUkfParameters; ++j)
-        if (name == names[std::size_t(j)])
-            return j;
-    return -1;
-}
-
 /// The values of p for the spec's fitted parameters, in its order (a calibration start).
 std::vector<double> startOf(const CalibrationSpec& spec, const BoucWenPinchingParameters& p) {
     std::vector<double> s;
     for (const auto& b : spec.fitted)
-        if (const int j = indexOf(b.name); j >= 0)
+        if (const int j = pinchingUkfParameterIndex(b.name); j >= 0)
             s.push_back(PinchingUkf::field(p, j));
     return s;
 }
@@ -159,7 +151,7 @@ PinchingAnchorJobResult pinchingAnchorJob(const PinchingAnchorJobInput& in,
         out.rmsForce = std::sqrt(sff / double(in.f.size()));
         // The UKF's box and P0 from the calibration's box and standard deviations.
         for (const auto& b : spec.fitted) {
-            const int j = indexOf(b.name);
+            const int j = pinchingUkfParameterIndex(b.name);
             if (j < 0)
                 continue;
             out.box[std::size_t(j)] = {b.lower, b.upper};
