@@ -40,11 +40,14 @@ Field findField(const std::string& name) {
     return nullptr;
 }
 
-// Integrates dx from state (updated in place). Increments longer than the maximum step, and
-// those where Newton fails, are halved while levelsLeft > 0; the halves run sequentially.
+// Integrates dx from state (updated in place). Increments longer than the maximum step, or
+// unloading ones too stiff for a single root (withinUnloadingStep(), judged from the sub-step's
+// own start), and those where Newton fails, are halved while levelsLeft > 0; the halves run
+// sequentially.
 bool integrateSplit(const BoucWenParameters& p, BoucWenState& state, double dx, int levelsLeft,
                     StepLimits& limits, int& subSteps) {
-    if (levelsLeft <= 0 || limits.withinMaxStep(std::abs(dx))) {
+    if (levelsLeft <= 0 ||
+        (limits.withinMaxStep(std::abs(dx)) && withinUnloadingStep(p, state, dx))) {
         BackwardEuler newton(p, state, dx);
         auto progress = BackwardEuler::Progress::Iterating;
         while (progress == BackwardEuler::Progress::Iterating) {

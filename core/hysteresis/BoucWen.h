@@ -19,7 +19,10 @@
 // below 1e-12 max(|z|, |z0|), at most 30 iterations. An iterate that is not finite or leaves
 // |z| <= 10 max(|z0|, ultimateZ) counts as a failure. An increment longer than half the
 // current yield deformation (zu(e) eta / A, with zu(e) the ultimate z at energy e) is halved
-// before Newton is tried, and a failed one is halved too, recursively up to maxSubdivisions
+// before Newton is tried, and so is an unloading one (dx z0 < 0) with gamma > beta while
+// |dx| n |z0|^(n-1) (gamma - beta) nu / eta > 0.5 at its start (else dr/dz can be negative at
+// z0 and Newton finds a second root beyond -zu; BoucWenNewton.h, withinUnloadingStep), and a
+// failed one is halved too, recursively up to maxSubdivisions
 // halvings (2^12 sub-steps by default); the sub-steps run sequentially. Failure is reported
 // as LawStatus::NoConvergence and leaves the committed state untouched.
 // Accuracy: first order in the step (about 4e-4 of the peak force with 20000 points per

@@ -239,7 +239,7 @@ void BoucWen::integrateStates(std::span<const BoucWenParameters> p,
                               std::span<BoucWenIncrement> out, BatchMath math) {
     const bool vector = math == BatchMath::Fast && vectorPowAvailable();
     // A problem that is not a plain single step from the start (inadmissible, non-finite, an
-    // increment to halve) is left to integrateState(), which takes the same decisions.
+    // increment to halve, as too long or too stiff an unloading) is left to integrateState(), which takes the same decisions.
     const std::size_t count = std::min({p.size(), from.size(), out.size()});
     for (std::size_t first = 0; first < count; first += kBlock) {
         std::array<Lanes, kVectorsPerBlock> vectors;
@@ -249,7 +249,8 @@ void BoucWen::integrateStates(std::span<const BoucWenParameters> p,
         for (std::size_t k = 0; k < size; ++k) {
             const std::size_t i = first + k;
             if (admissibleParameters(p[i]) && std::isfinite(dx) && std::isfinite(from[i].z) &&
-                std::isfinite(from[i].e) && StepLimits(p[i], from[i]).withinMaxStep(std::abs(dx))) {
+                std::isfinite(from[i].e) && StepLimits(p[i], from[i]).withinMaxStep(std::abs(dx)) &&
+                withinUnloadingStep(p[i], from[i], dx)) {
                 if (lane == 0) {
                     vectors[static_cast<std::size_t>(used)].idle();
                 }

@@ -112,7 +112,8 @@ bool pinchedStep(const BoucWenParameters& p, const Pinch& pinch, BoucWenState& s
 }
 
 // BoucWen.cpp's integrateSplit with the pinched step: a sub-step with zeta1 = 0 is BoucWen's
-// step; with zeta1 > 0 it is also halved while |dx| A / eta > zeta2.
+// step (halved by the same rules, withinUnloadingStep included); with zeta1 > 0 it is also
+// halved while |dx| A / eta > zeta2.
 bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, double dx,
                     int levelsLeft, StepLimits& limits, int& subSteps) {
     const Pinch pinch = pinchAt(p, state.e);
@@ -141,6 +142,8 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
         withinPinchStep =
             std::abs(dx) * std::max(std::abs(d.a), std::abs(phi0)) <= pinch.zeta2 * d.eta &&
             std::abs(dx) * stiffness <= 0.5 * d.eta;
+    } else {
+        withinPinchStep = withinUnloadingStep(p.boucWen, state, dx); // as BoucWen.cpp's step
     }
     if (levelsLeft <= 0 || (limits.withinMaxStep(std::abs(dx)) && withinPinchStep)) {
         bool converged = false;

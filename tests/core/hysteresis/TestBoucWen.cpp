@@ -9,6 +9,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -55,6 +56,7 @@ private slots:
     void matchesIndependentRk4();
     void commitRevertAndCloneAreExact();
     void hugeIncrementIsSubStepped();
+    void reversalNearTheUltimateZWithLargeN();
     void normalizationEqualsScaledParameters();
     void invalidInputKeepsCommittedState();
     void tangentMatchesFiniteDifference();
@@ -270,6 +272,64 @@ void TestBoucWen::hugeIncrementIsSubStepped() {
     const BoucWenIncrement failed = BoucWen::integrate(paperParameters(), from, 1000.0, 0);
     QVERIFY(failed.status == LawStatus::NoConvergence);
     QVERIFY(failed.state.z == from.z && failed.state.e == from.e);
+}
+
+// The Bouc-Wen part of a set the pinching UKF anchored and that then failed on new larger
+// cycles (TestBoucWenPinching::reversalNearTheUltimateZWithLargeN: n 3.2, gamma well above
+// beta; increments of 0.63 yield-scale units). At the reversal from z near -zu the unloading
+// Newton derivative 1 - dx Phi' / eta was negative at the 0.5 yield deformations the step
+// allowed: backward Euler went to a second root beyond -zu (z from -0.719 to -1.154 with
+// dx = +0.63, against dx). Now the step is split until dx Phi' / eta <= 0.5
+// (BoucWenNewton.h, withinUnloadingStep): z moves with dx, stays within the ultimate z, and
+// the increment agrees with a fine-step reference; cycles growing to 16 run.
+void TestBoucWen::reversalNearTheUltimateZWithLargeN() {
+    BoucWenParameters p;
+    p.k0 = 1.4259593957802281;
+    p.alpha = 0.29915544243995101;
+    p.n = 3.1936068676738429;
+    p.beta = 0.05718141211996533;
+    p.gamma = 2.7539791992413001;
+    p.deltaNu = 0.0077472386572971395;
+    p.deltaEta = 0.029323016506192009;
+    // the reversal: from z = -0.719091 (the ultimate z is 0.719 there) with dx = +0.6253
+    const BoucWenState atReversal{-0.719091, 2.5960};
+    const double dx = 0.6253;
+    const BoucWenIncrement inc = BoucWen::integrate(p, atReversal, dx);
+    QCOMPARE(inc.status, LawStatus::Ok);
+    QVERIFY2(inc.state.z > atReversal.z, qPrintable(QString::number(inc.state.z))); // was -1.154
+    QVERIFY(inc.subSteps > 1);
+    BoucWenState fine = atReversal; // reference: 2000 increments of dx / 2000
+    for (int k = 0; k < 2000; ++k) {
+        const BoucWenIncrement step = BoucWen::integrate(p, fine, dx / 2000);
+        QCOMPARE(step.status, LawStatus::Ok);
+        QCOMPARE(step.subSteps, 1); // the fine steps are single steps
+        fine = step.state;
+    }
+    // first order over a few sub-steps: 0.058 here; the wrong root was 0.53 away
+    qInfo("one increment: z %.6f in %d sub-steps; 2000 increments: z %.6f", inc.state.z,
+          inc.subSteps, fine.z);
+    QVERIFY2(std::abs(inc.state.z - fine.z) < 0.1,
+             qPrintable(QString("%1 against %2").arg(inc.state.z).arg(fine.z)));
+    QVERIFY2(std::abs(inc.state.e - fine.e) < 0.1,
+             qPrintable(QString("e %1 against %2").arg(inc.state.e).arg(fine.e)));
+    // ... and cycles growing to 16 yield-scale units in increments of 0.6253, z within the
+    // ultimate z (0.72 at most: nu >= 1) all along
+    BoucWen law(p);
+    double u = 0.0;
+    int increments = 0;
+    for (const double amplitude : {1.0, 2.0, 4.0, 8.0, 16.0}) {
+        for (const double dir : {1.0, -1.0}) {
+            while ((dir * amplitude - u) * dir > 0.0) {
+                u = dir > 0 ? std::min(u + 0.6253, amplitude) : std::max(u - 0.6253, -amplitude);
+                QCOMPARE(law.setTrialDeformation(u), LawStatus::Ok);
+                law.commit();
+                QVERIFY2(std::abs(law.committedState().z) < 0.75,
+                         qPrintable(QString("z %1 at u %2").arg(law.committedState().z).arg(u)));
+                ++increments;
+            }
+        }
+    }
+    QVERIFY(increments > 100);
 }
 
 void TestBoucWen::normalizationEqualsScaledParameters() {

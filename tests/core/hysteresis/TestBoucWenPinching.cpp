@@ -142,6 +142,34 @@ void TestBoucWenPinching::withoutPinchingEqualsBoucWen() {
         QVERIFY(pinched.force == reference.force);
         QVERIFY(pinched.tangent == reference.tangent);
     }
+    // ... also where BoucWen halves unloading steps by its stiffness limit (gamma well above
+    // beta, n 3.2: reversalNearTheUltimateZWithLargeN's set), in increments of 0.63 yields
+    BoucWenPinchingParameters p;
+    p.boucWen.k0 = 1.4259593957802281;
+    p.boucWen.alpha = 0.29915544243995101;
+    p.boucWen.n = 3.1936068676738429;
+    p.boucWen.beta = 0.05718141211996533;
+    p.boucWen.gamma = 2.7539791992413001;
+    p.boucWen.deltaNu = 0.0077472386572971395;
+    p.boucWen.deltaEta = 0.029323016506192009;
+    p.pinching.zetaS = 0.0;
+    std::vector<double> u;
+    for (const double amplitude : {1.0, 2.0, 4.0, 8.0}) {
+        for (double x = 0.0; x < amplitude; x += 0.6253) {
+            u.push_back(x);
+        }
+        for (double x = amplitude; x > -amplitude; x -= 0.6253) {
+            u.push_back(x);
+        }
+        for (double x = -amplitude; x < 0.0; x += 0.6253) {
+            u.push_back(x);
+        }
+    }
+    const Run pinched = drive(p, u);
+    BoucWen plain(p.boucWen);
+    const Run reference = testsupport::drive(plain, u);
+    QVERIFY(pinched.ok && reference.ok);
+    QVERIFY(pinched.force == reference.force);
 }
 
 void TestBoucWenPinching::matchesIndependentRk4() {
