@@ -31,15 +31,6 @@ constexpr std::array<std::pair<const char*, Field>, 11> kFields{{
     {"fRef", &BoucWenParameters::fRef},
 }};
 
-Field findField(const std::string& name) {
-    for (const auto& [fieldName, field] : kFields) {
-        if (name == fieldName) {
-            return field;
-        }
-    }
-    return nullptr;
-}
-
 // Integrates dx from state (updated in place). Increments longer than the maximum step, or
 // unloading ones too stiff for a single root (withinUnloadingStep(), judged from the sub-step's
 // own start), and those where Newton fails, are halved while levelsLeft > 0; the halves run

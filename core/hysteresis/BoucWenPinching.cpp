@@ -29,15 +29,6 @@ double* fieldAt(BoucWenPinchingParameters& p, int i) {
     return i >= 0 && i < static_cast<int>(kNames.size()) ? fields[i] : nullptr;
 }
 
-int indexOf(const std::string& name) {
-    for (std::size_t i = 0; i < kNames.size(); ++i) {
-        if (name == kNames[i]) {
-            return static_cast<int>(i);
-        }
-    }
-    return -1;
-}
-
 // zeta1, zeta2 and q zu of P2-P4 at energy e (negative e counts as 0).
 struct Pinch {
     double zeta1 = 0.0, zeta2 = 1.0, qzu = 0.0;
