@@ -96,7 +96,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     resize(1500, 920);
     resizeDocks({m_alarmDock}, {200}, Qt::Vertical); // 5+ rows at 1280x720
     resizeDocks({m_setupDock}, {440}, Qt::Horizontal);
-    resizeDocks({m_setupDock, pending}, {520, 260}, Qt::Vertical);
+    resizeDocks({m_setupDock, pending}, {440, 340}, Qt::Vertical); // the list ~110 px at 720
     m_setup->setControllerAddress(ConsoleSettings::controllerAddress());
     if (const QByteArray g = ConsoleSettings::windowGeometry(); !g.isEmpty())
         restoreGeometry(g);
@@ -239,7 +239,10 @@ void MainWindow::previewGroundMotion() {
 
 void MainWindow::onPolicyChosen(ReporterPolicy policy, int everyN) {
     m_policyChoice = std::make_pair(policy, everyN);
-    m_controller->setReporterPolicy(policy, everyN); // recorded by the worker as an event
+    const RunState s = m_controller->state();
+    if (s == RunState::Ready || active(s)) // the loaded or running test takes it at once
+        m_controller->setReporterPolicy(policy, everyN); // recorded by the worker as an event
+    // Between runs it is the next run's: applyPolicyChoice() when Start reloads the test.
 }
 
 void MainWindow::applyPolicyChoice(TestConfig& cfg) const {
@@ -431,6 +434,10 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
     const bool live = state == RunState::Ready || active(state);
     m_parameters->setEditable(live);
     m_pending->setEditable(live);
+    // Between runs the policy is chosen for the next run (applied when Start reloads).
+    m_pending->setNextRunPolicyEditable(state == RunState::Stopped ||
+                                        state == RunState::Finished ||
+                                        state == RunState::Failed);
     if (state == RunState::Running || state == RunState::Paused)
         showLinkState(true, false);
     if (state == RunState::Running && !m_setupDock->isFloating())

@@ -13,6 +13,7 @@
 #include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
 #include "gui/app/TestStatusBar.h"
+#include "gui/app/TestWorker.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/replay/ReplayWindow.h"
 
@@ -145,10 +146,14 @@ void MainWindow::wireController() {
             &ParametersPanel::setSnapshot);
     connect(m_controller, &TestController::updatingChanged, m_pending,
             &PendingUpdatesPanel::setSnapshot);
-    connect(m_controller, &TestController::commandRefused, this, [this](const QString& why) {
-        m_alarms->addMessage(why, AlarmSeverity::Warning);
-        m_status->showMessage(why, 10000);
-    });
+    connect(m_controller, &TestController::commandRefused, this,
+            [this](const QString&, const QString& source, const QStringList& args) {
+                // Redrawn from the template in a new language, as the other entries.
+                m_alarms->addMessage(
+                    [source, args] { return TestWorker::refusalText(source, args); },
+                    AlarmSeverity::Warning);
+                m_status->showMessage(TestWorker::refusalText(source, args), 10000);
+            });
     connect(m_controller, &TestController::preflightReady, this, &MainWindow::showPreflight);
     connect(m_controller, &TestController::recordingStarted, m_status,
             &TestStatusBar::setRecordingFile);

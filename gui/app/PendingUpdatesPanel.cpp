@@ -60,6 +60,11 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     m_tree->setColumnCount(ColumnCount);
     m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
     m_tree->setAlternatingRowColors(true);
+    // Room for the header, the oldest proposal's title, its decision buttons and a parameter:
+    // the dock cannot be squeezed below that (it was ~60 px at 1280x720, buttons hidden).
+    const int row = fontMetrics().height() + 4;
+    m_tree->setMinimumHeight(2 * m_tree->frameWidth() + m_tree->header()->sizeHint().height() +
+                             2 * row + QPushButton(QStringLiteral("Approve")).sizeHint().height());
 
     // The label above its choice: the row fits the dock at 1280x720 in every language.
     auto* policyRow = new QHBoxLayout;
@@ -103,16 +108,27 @@ void PendingUpdatesPanel::changeEvent(QEvent* event) {
 
 void PendingUpdatesPanel::emitPolicy() {
     const auto p = ReporterPolicy(m_policy->currentData().toInt());
-    m_everyN->setEnabled(m_editable && p == ReporterPolicy::EveryNSteps);
+    if (!m_editable && m_nextRunPolicy) { // no test to tell: the panel shows the choice itself
+        m_snapshot.policy = p;
+        m_snapshot.everyN = m_everyN->value();
+        showSummary();
+    }
+    setEditable(m_editable);
     emit policyChosen(p, m_everyN->value());
 }
 
 void PendingUpdatesPanel::setEditable(bool editable) {
     m_editable = editable;
-    m_policy->setEnabled(editable);
-    m_everyN->setEnabled(editable && ReporterPolicy(m_policy->currentData().toInt()) ==
-                                         ReporterPolicy::EveryNSteps);
+    const bool policy = editable || (m_nextRunPolicy && m_snapshot.enabled);
+    m_policy->setEnabled(policy);
+    m_everyN->setEnabled(policy && ReporterPolicy(m_policy->currentData().toInt()) ==
+                                       ReporterPolicy::EveryNSteps);
     m_tree->setEnabled(editable || m_tree->topLevelItemCount() == 0);
+}
+
+void PendingUpdatesPanel::setNextRunPolicyEditable(bool editable) {
+    m_nextRunPolicy = editable;
+    setEditable(m_editable);
 }
 
 QList<int> PendingUpdatesPanel::shownProposals() const {
@@ -153,7 +169,12 @@ void PendingUpdatesPanel::fillProposal(QTreeWidgetItem* top, const UpdateProposa
         title += tr(", fit error %1").arg(QString::number(p.fitError, 'g', 3));
     top->setText(Parameter, title);
     top->setToolTip(Parameter, title);
-    int k = 0;
+    if (QTreeWidgetItem* decision = top->child(0))
+        if (QWidget* buttons = m_tree->itemWidget(decision, Parameter))
+            for (QPushButton* b : buttons->findChildren<QPushButton*>())
+                b->setText(b->objectName().startsWith(QLatin1String("approve")) ? tr("Approve")
+                                                                                : tr("Reject"));
+    int k = 1; // the decision row first, right under the title; the parameters below it
     for (std::size_t j = 0; j < p.proposed.size(); ++j) {
         QTreeWidgetItem* row = top->child(k++);
         const double proposed = p.proposed[j];
@@ -166,18 +187,16 @@ void PendingUpdatesPanel::fillProposal(QTreeWidgetItem* top, const UpdateProposa
                                        100.0 * (proposed - current) / std::abs(current), 'f', 1)
                                  : QString());
     }
-    if (QTreeWidgetItem* decision = top->child(k))
-        if (QWidget* buttons = m_tree->itemWidget(decision, Parameter))
-            for (QPushButton* b : buttons->findChildren<QPushButton*>())
-                b->setText(b->objectName().startsWith(QLatin1String("approve")) ? tr("Approve")
-                                                                                : tr("Reject"));
 }
 
 QTreeWidgetItem* PendingUpdatesPanel::addProposal(const UpdateProposal& p) {
-    // The proposal's title and its decision buttons span the row; its parameters below.
+    // The proposal's title and, right under it, its decision buttons span the row; its
+    // parameters below (at 1280x720 the oldest proposal's buttons show without scrolling).
     auto* top = new QTreeWidgetItem(m_tree);
     top->setFirstColumnSpanned(true);
     top->setData(Parameter, kIdRole, p.id);
+    auto* decision = new QTreeWidgetItem(top);
+    decision->setFirstColumnSpanned(true);
     for (std::size_t k = 0; k < p.proposed.size(); ++k)
         new QTreeWidgetItem(top);
     auto* buttons = new QWidget(m_tree);
@@ -193,8 +212,6 @@ QTreeWidgetItem* PendingUpdatesPanel::addProposal(const UpdateProposal& p) {
     const int id = p.id;
     connect(approve, &QPushButton::clicked, this, [this, id] { emit approveRequested(id); });
     connect(reject, &QPushButton::clicked, this, [this, id] { emit rejectRequested(id); });
-    auto* decision = new QTreeWidgetItem(top);
-    decision->setFirstColumnSpanned(true);
     m_tree->setItemWidget(decision, Parameter, buttons);
     top->setExpanded(true);
     fillProposal(top, p);

@@ -32,7 +32,12 @@ public:
     explicit PendingUpdatesPanel(QWidget* parent = nullptr);
 
     void setSnapshot(const UpdatingSnapshot& snapshot);
+    /// true while a test is loaded or runs: decisions and the policy go to the test at once.
     void setEditable(bool editable);
+    /// true between runs (stopped, finished, failed; nothing armed): the policy box stays
+    /// enabled (when the test has updating) and the choice is for the next run only; the
+    /// panel shows it at once, the window applies it when the next Start reloads the test.
+    void setNextRunPolicyEditable(bool editable);
     QTreeWidget* tree() const { return m_tree; }
     /// Ids of the proposals shown, oldest first (the reporter's queue order).
     QList<int> shownProposals() const;
@@ -63,6 +68,7 @@ private:
     UpdatingSnapshot m_snapshot;                   ///< the last one shown
     std::map<int, QTreeWidgetItem*> m_items;       ///< proposal id -> its top-level row
     bool m_editable = false;
+    bool m_nextRunPolicy = false; ///< between runs: the policy is chosen for the next run
 };
 
 } // namespace hsmu::gui

@@ -117,7 +117,9 @@ signals:
     void alarmRaised(const hsmu::Alarm& alarm);
     void preflightReady(const hsmu::gui::PreflightReport& report);
     void updatingChanged(const hsmu::gui::UpdatingSnapshot& snapshot);
-    void commandRefused(const QString& reason);
+    /// An operator command that could not be carried out: `reason` in English, and
+    /// TestWorker::refusalText(source, args) in the current language.
+    void commandRefused(const QString& reason, const QString& source, const QStringList& args);
     /// The current test's HDF5 record was opened (at the first driven step).
     void recordingStarted(const QString& path);
     /// An operator action as the worker stamped and recorded it.

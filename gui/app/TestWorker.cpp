@@ -205,30 +205,43 @@ void TestWorker::setSpeed(double factor) {
     restartPacing();
 }
 
+void TestWorker::refuse(const char* source, const QStringList& args) {
+    QString english = QString::fromUtf8(source);
+    for (const QString& a : args)
+        english = english.arg(a);
+    emit commandRefused(english, QString::fromUtf8(source), args);
+}
+
+QString TestWorker::refusalText(const QString& source, const QStringList& args) {
+    QString text = tr(source.toUtf8().constData());
+    for (const QString& a : args)
+        text = text.arg(a);
+    return text;
+}
+
 void TestWorker::addNote(const QString& text) {
     if (text.trimmed().isEmpty())
         return;
     if (!m_session->addNote(text.toStdString()))
-        emit commandRefused(tr("the note was not kept: this test is not recorded"));
+        refuse(QT_TR_NOOP("the note was not kept: this test is not recorded"));
 }
 
 void TestWorker::setParameterBounds(const QString& name, double lower, double upper) {
     ModelUpdater* u = test().updater();
     if (!u)
-        return emit commandRefused(tr("this test has no model updating"));
+        return refuse(QT_TR_NOOP("this test has no model updating"));
     if (!(lower <= upper) || !std::isfinite(lower) || !std::isfinite(upper))
-        return emit commandRefused(
-            tr("%1: the lower bound must be a number not above the upper bound").arg(name));
+        return refuse(QT_TR_NOOP("%1: the lower bound must be a number not above the upper "
+                                 "bound"),
+                      {name});
     // The name from the console's table, resolved once; an unknown one is refused below.
     const std::optional<std::size_t> index = u->identifier().layout().find(name.toStdString());
     const ParameterBounds before =
         index ? u->identifier().bounds()[*index] : ParameterBounds{std::nan(""), std::nan("")};
     if (!index || !u->identifier().setBounds(*index, {lower, upper}))
-        return emit commandRefused(tr("%1: bounds [%2, %3] refused (they would not keep the "
-                                      "law admissible)")
-                                       .arg(name)
-                                       .arg(lower)
-                                       .arg(upper));
+        return refuse(QT_TR_NOOP("%1: bounds [%2, %3] refused (they would not keep the "
+                                 "law admissible)"),
+                      {name, QString::number(lower), QString::number(upper)});
     logEvent(OperatorEvent::kBounds,
              name.toStdString() + " [" + number(before.lower) + ", " + number(before.upper) + "]",
              name.toStdString() + " [" + number(lower) + ", " + number(upper) + "]");
@@ -238,12 +251,11 @@ void TestWorker::setParameterBounds(const QString& name, double lower, double up
 void TestWorker::setParameterLocked(const QString& name, bool locked) {
     ModelUpdater* u = test().updater();
     if (!u)
-        return emit commandRefused(tr("this test has no model updating"));
+        return refuse(QT_TR_NOOP("this test has no model updating"));
     const std::optional<std::size_t> index = u->identifier().layout().find(name.toStdString());
     if (!index || !u->identifier().setLocked(*index, locked))
-        return emit commandRefused(
-            tr("%1: the %2 cannot lock this parameter")
-                .arg(name, QString::fromStdString(u->identifier().methodName())));
+        return refuse(QT_TR_NOOP("%1: the %2 cannot lock this parameter"),
+                      {name, QString::fromStdString(u->identifier().methodName())});
     logEvent(OperatorEvent::kLock, name.toStdString() + (locked ? " unlocked" : " locked"),
              name.toStdString() + (locked ? " locked" : " unlocked"));
     publishUpdating();
@@ -265,9 +277,9 @@ void TestWorker::approveUpdate(int proposalId) {
             if (p.id == proposalId)
                 proposal = p;
     if (!test().approveUpdate(proposalId)) {
-        emit commandRefused(tr("update #%1 was not applied (no longer pending, or refused by "
-                               "the law; see the alarms)")
-                                .arg(proposalId));
+        refuse(QT_TR_NOOP("update #%1 was not applied (no longer pending, or refused by "
+                          "the law; see the alarms)"),
+               {QString::number(proposalId)});
     } else if (proposal) {
         logEvent(OperatorEvent::kApprove,
                  proposalTag(proposalId) + " " + proposal->element + " " +
@@ -288,7 +300,7 @@ void TestWorker::rejectUpdate(int proposalId) {
             if (p.id == proposalId)
                 proposal = p;
     if (!test().rejectUpdate(proposalId) || !proposal) {
-        emit commandRefused(tr("update #%1 is no longer pending").arg(proposalId));
+        refuse(QT_TR_NOOP("update #%1 is no longer pending"), {QString::number(proposalId)});
     } else {
         logEvent(OperatorEvent::kReject, proposalTag(proposalId),
                  "rejected " + proposal->element + " " +
@@ -305,7 +317,7 @@ void TestWorker::rejectUpdate(int proposalId) {
 void TestWorker::setReporterPolicy(ReporterPolicy policy, int everyN) {
     ModelUpdater* u = test().updater();
     if (!u)
-        return emit commandRefused(tr("this test has no model updating"));
+        return refuse(QT_TR_NOOP("this test has no model updating"));
     const Reporter& r = u->reporter();
     const std::string before = std::string(reporterPolicyName(r.policy())) +
                                (r.policy() == ReporterPolicy::EveryNSteps
@@ -322,9 +334,9 @@ void TestWorker::setReporterPolicy(ReporterPolicy policy, int everyN) {
 void TestWorker::setFitThreshold(double threshold) {
     ModelUpdater* u = test().updater();
     if (!u)
-        return emit commandRefused(tr("this test has no model updating"));
+        return refuse(QT_TR_NOOP("this test has no model updating"));
     if (!(threshold > 0.0) || !std::isfinite(threshold))
-        return emit commandRefused(tr("the fit-error threshold must be a positive number"));
+        return refuse(QT_TR_NOOP("the fit-error threshold must be a positive number"));
     InspectorSettings s = u->inspector().settings();
     logEvent(OperatorEvent::kThreshold, number(s.threshold), number(threshold));
     s.threshold = threshold;

@@ -57,6 +57,8 @@ class TestWorker : public QObject, public StepObserver {
 public:
     /// Automatic resumes after a control fault (TestSession's ReconnectPolicy).
     static constexpr int kReconnectAttempts = 5;
+    /// A refusal (commandRefused's `source` and `args`) in the current language (GUI thread).
+    static QString refusalText(const QString& source, const QStringList& args);
 
     /// allowUnstable: the configuration forces an unstable explicit run (for the pre-flight).
     /// record: where prepare() opens the HDF5 record (docs/recording.md); empty: none.
@@ -109,7 +111,10 @@ signals:
     void preflightReady(const hsmu::gui::PreflightReport& report);
     void updatingChanged(const hsmu::gui::UpdatingSnapshot& snapshot);
     /// An operator command that could not be carried out, and why.
-    void commandRefused(const QString& reason);
+    /// `reason` in English (language-neutral, also for logs); `source` the untranslated
+    /// template (TestWorker's tr() context) and `args` its arguments, so the console shows
+    /// it in the current language and again in a new one (refusalText).
+    void commandRefused(const QString& reason, const QString& source, const QStringList& args);
     /// The HDF5 record was opened at `path` (before the first driven step).
     void recordingStarted(const QString& path);
     /// An operator action, stamped with step, test time and wall time.
@@ -120,6 +125,8 @@ private:
     /// Open the record before the first driven step (idempotent); false: Failed, no step.
     bool openRecord();
     HybridTest& test() { return m_session->test(); }
+    /// Refuse an operator command: `source` is a QT_TR_NOOP template with %1.. for `args`.
+    void refuse(const char* source, const QStringList& args = {});
     /// Stamp, emit and record an operator event.
     void logEvent(const char* action, std::string oldValue = {}, std::string newValue = {});
     void runChunk();

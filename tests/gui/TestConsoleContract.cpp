@@ -213,8 +213,9 @@ private slots:
         QVERIFY2(top->text(0).startsWith(QStringLiteral("#7 Element 2 at t = 0.70 s (step 70)")),
                  qPrintable(top->text(0)));
         QVERIFY2(top->text(0).contains(QStringLiteral("fit error 0.0125")), qPrintable(top->text(0)));
-        QCOMPARE(top->child(0)->text(2), QStringLiteral("1.15")); // its own proposed value
-        QCOMPARE(panel.tree()->topLevelItem(0)->child(0)->text(2), QStringLiteral("1.1"));
+        // The decision row right under the title (child 0), the parameters below it.
+        QCOMPARE(top->child(1)->text(2), QStringLiteral("1.15")); // its own proposed value
+        QCOMPARE(panel.tree()->topLevelItem(0)->child(1)->text(2), QStringLiteral("1.1"));
         QVERIFY2(panel.summary()->text().contains(QStringLiteral("3 update")) &&
                      panel.summary()->text().contains(QStringLiteral("2 newer proposal")),
                  qPrintable(panel.summary()->text()));
@@ -232,6 +233,48 @@ private slots:
         QCOMPARE(panel.shownProposals(), (QList<int>{7, 8}));
         QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the old buttons
         QVERIFY(!panel.findChild<QPushButton*>(QStringLiteral("approve5")));
+    }
+
+    // Item 4 (follow-up): after Stop the one policy control stays usable for the next run
+    // (it was greyed out, so the policy could only be changed by reloading the test); the
+    // choice goes to no test (nothing is armed) and is the configuration of the next Start.
+    void policyIsChosenBetweenRunsForTheNextRun() {
+        ConsoleSettings::setControllerAddress(QString()); // the built-in lab (not a test's link)
+        MainWindow window;
+        window.setConfirmBeforeStart(false);
+        window.setSpeed(5.0);
+        window.show();
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        auto* pending = window.findChild<PendingUpdatesPanel*>();
+        auto* policy = pending->findChild<QComboBox*>(QStringLiteral("approvalPolicy"));
+        QVERIFY(policy);
+        TestController& c = window.controller();
+        QTRY_VERIFY_WITH_TIMEOUT(c.updating().enabled && policy->isEnabled(), 5000);
+        QCOMPARE(c.updating().policy, ReporterPolicy::EveryStep);
+        QSignalSpy states(&c, &TestController::stateChanged);
+        window.startTest();
+        QTRY_VERIFY_WITH_TIMEOUT(c.state() == RunState::Running || c.state() == RunState::Failed,
+                                 10000);
+        QVERIFY2(c.state() == RunState::Running,
+                 qPrintable(states.isEmpty() ? QString() : states.last().at(1).toString()));
+        QVERIFY(policy->isEnabled()); // while running: the existing contract (applies at once)
+        QTRY_VERIFY_WITH_TIMEOUT(c.recordsDelivered() >= 5, 20000);
+        c.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
+        QVERIFY(policy->isEnabled()); // between runs: the next run's policy
+        policy->setCurrentIndex(policy->findData(int(ReporterPolicy::OnApproval)));
+        emit policy->activated(policy->currentIndex()); // as the operator's choice
+        QVERIFY2(pending->summary()->text().contains(QStringLiteral("waiting for a decision")),
+                 qPrintable(pending->summary()->text())); // the panel shows the choice
+        QCOMPARE(c.state(), RunState::Stopped); // nothing armed by the choice
+        QCOMPARE(c.updating().policy, ReporterPolicy::EveryStep); // the ended run is unchanged
+        window.startTest(); // reloads the same test with the chosen policy
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Running, 10000);
+        QCOMPARE(c.config().updating.policy, ReporterPolicy::OnApproval);
+        QTRY_COMPARE_WITH_TIMEOUT(c.updating().policy, ReporterPolicy::OnApproval, 5000);
+        QCOMPARE(policy->currentData().toInt(), int(ReporterPolicy::OnApproval));
+        c.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Stopped, 5000);
     }
 
     // Issue 13: OpenSees' adapter element is offered in the setup panel with what it needs

@@ -14,11 +14,15 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
+#include <QScrollBar>
+#include <QTreeWidget>
 
 #include "gui/app/AttentionBanner.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/PendingUpdatesPanel.h"
+#include "gui/app/TestController.h"
 #include "gui/app/SetupPanel.h"
 #include "gui/app/Translations.h"
 #include "gui/plots/HistoryPlot.h"
@@ -233,6 +237,63 @@ private slots:
                      qPrintable(language + QStringLiteral(": button '") + b->text() +
                                 QStringLiteral("' reaches past the panel")));
         }
+    }
+
+    // Item 10 (follow-up): at 1280x720 the pending-updates list was about 60 px tall and the
+    // oldest proposal's Approve / Reject had to be scrolled to. They lie inside the visible
+    // viewport of the list, unscrolled, in every language, for a proposal of the UKF preset
+    // (five parameters) with a newer one queued below it.
+    void approveAndRejectVisibleAt1280x720_data() {
+        QTest::addColumn<QString>("language");
+        for (const char* language : {"en", "es", "zh_CN"})
+            QTest::addRow("%s", language) << QString::fromLatin1(language);
+    }
+    void approveAndRejectVisibleAt1280x720() {
+        QFETCH(QString, language);
+        QVERIFY(Translations::install(*QCoreApplication::instance(), language));
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller().updating().enabled, 5000);
+        auto* pending = window.findChild<PendingUpdatesPanel*>();
+        UpdatingSnapshot s = window.controller().updating();
+        s.policy = ReporterPolicy::OnApproval;
+        const std::vector<std::string> names = {"k0", "fy", "alpha", "beta", "n"};
+        for (int id : {12, 13}) {
+            UpdateProposal p;
+            p.id = id;
+            p.step = 10 * id;
+            p.time = 0.1 * id;
+            p.element = "Element 2";
+            p.parameters = ParameterLayout(names);
+            p.proposed.assign(names.size(), 1.05);
+            p.current.assign(names.size(), 1.0);
+            p.fitError = 0.02;
+            s.pending.push_back(p);
+        }
+        pending->setSnapshot(s);
+        pending->setEditable(true);
+        QCoreApplication::processEvents();
+        QTest::qWait(20); // the item widgets are placed by the view's delayed layout
+        QCoreApplication::processEvents();
+        QTreeWidget* tree = pending->tree();
+        QVERIFY(tree->isVisible());
+        QCOMPARE(tree->verticalScrollBar()->value(), 0); // nothing scrolled
+        const QRect view = tree->viewport()->rect();
+        for (const QString& name : {QStringLiteral("approve12"), QStringLiteral("reject12")}) {
+            auto* b = pending->findChild<QPushButton*>(name);
+            QVERIFY2(b, qPrintable(name));
+            const QRect r(b->mapTo(tree->viewport(), QPoint(0, 0)), b->size());
+            QVERIFY2(b->isVisible() && view.contains(r),
+                     qPrintable(QStringLiteral("%1: %2 at (%3,%4 %5x%6) is outside the list's "
+                                               "visible %7x%8 px")
+                                    .arg(language, name)
+                                    .arg(r.x()).arg(r.y()).arg(r.width()).arg(r.height())
+                                    .arg(view.width()).arg(view.height())));
+        }
+        qInfo("%s: pending list viewport %d px tall", qPrintable(language), view.height());
     }
 };
 

@@ -48,6 +48,7 @@
 #include "gui/app/PendingUpdatesPanel.h"
 #include "gui/app/SettingsDialog.h"
 #include "gui/app/SetupPanel.h"
+#include "gui/app/TestController.h"
 #include "gui/app/Translations.h"
 
 using namespace hsmu;
@@ -381,6 +382,55 @@ private slots:
                 QCOMPARE(linkShown, QString::fromStdString(linkFault));
             }
         }
+    }
+
+    // A refused operator command follows a language change like the other entries (before:
+    // "this test has no model updating" kept the language it was shown in): the worker sends
+    // the refusal's template and arguments, the list redraws it from them.
+    void refusedCommandsFollowALanguageChange() {
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("es")));
+        MainWindow window;
+        window.show();
+        auto* alarms = window.findChild<AlarmList*>();
+        const auto find = [alarms](const QString& text) -> QTreeWidgetItem* {
+            for (int i = 0; i < alarms->topLevelItemCount(); ++i)
+                if (alarms->topLevelItem(i)->text(AlarmList::Message) == text)
+                    return alarms->topLevelItem(i);
+            return nullptr;
+        };
+        const char* ctx = "hsmu::gui::TestWorker";
+        const char* noUpdating = "this test has no model updating";
+        const char* badBounds = "%1: the lower bound must be a number not above the upper bound";
+        // A refusal without arguments (a test without updating) ...
+        QVERIFY(window.loadConfiguration(QStringLiteral("sdof-bouc-wen")));
+        window.controller().setFitThreshold(0.2);
+        QTRY_VERIFY_WITH_TIMEOUT(find(catalogue(ctx, noUpdating)), 5000);
+        QTreeWidgetItem* refused = find(catalogue(ctx, noUpdating));
+        for (const QString& code : {QStringLiteral("zh_CN"), QStringLiteral("en")}) {
+            QVERIFY(Translations::install(*QCoreApplication::instance(), code));
+            QCoreApplication::processEvents();
+            QCOMPARE(refused->text(AlarmList::Message), catalogue(ctx, noUpdating));
+            if (code != QLatin1String("en"))
+                QVERIFY(catalogue(ctx, noUpdating) != QLatin1String(noUpdating));
+        }
+        QCOMPARE(refused->text(AlarmList::Message), QString::fromLatin1(noUpdating));
+        // One with an argument (bounds the wrong way round), on a test with updating.
+        QVERIFY(Translations::install(*QCoreApplication::instance(), QStringLiteral("es")));
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-condition-3")));
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller().updating().enabled, 5000);
+        window.controller().setParameterBounds(QStringLiteral("k0"), 2.0, 1.0);
+        const auto bounds = [&] { return catalogue(ctx, badBounds).arg(QStringLiteral("k0")); };
+        QTRY_VERIFY_WITH_TIMEOUT(find(bounds()), 5000);
+        refused = find(bounds());
+        for (const QString& code : {QStringLiteral("zh_CN"), QStringLiteral("en")}) {
+            QVERIFY(Translations::install(*QCoreApplication::instance(), code));
+            QCoreApplication::processEvents();
+            QCOMPARE(refused->text(AlarmList::Message), bounds());
+            if (code != QLatin1String("en"))
+                QVERIFY(!bounds().contains(QLatin1String("lower bound")));
+        }
+        QCOMPARE(refused->text(AlarmList::Message),
+                 QStringLiteral("k0: the lower bound must be a number not above the upper bound"));
     }
 
     // Pre-flight names what drives each specimen in the operator's language (before: "virtual
