@@ -70,8 +70,9 @@ std::vector<std::vector<double>> csvNumbers(const QString& path) {
     return rows;
 }
 
-double csvDifference(const std::vector<std::vector<double>>& a,
-                     const std::vector<std::vector<double>>& b) {
+// Used only where hsmu (the console) is built.
+[[maybe_unused]] double csvDifference(const std::vector<std::vector<double>>& a,
+                                      const std::vector<std::vector<double>>& b) {
     if (a.empty() || a.size() != b.size())
         return INFINITY;
     double worst = 0.0;
