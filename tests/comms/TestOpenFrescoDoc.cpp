@@ -55,7 +55,7 @@ std::vector<Block> markedBlocks(const QString& path, int* unmarked) {
     return blocks;
 }
 
-std::vector<std::vector<double>> csvNumbers(const QString& path) {
+[[maybe_unused]] std::vector<std::vector<double>> csvNumbers(const QString& path) {
     std::ifstream in(path.toStdString());
     std::vector<std::vector<double>> rows;
     std::string line;
