@@ -16,6 +16,8 @@
 #include "core/updating/RobustUkfIdentifier.h"
 #include "core/identification/UnscentedKalmanFilter.h"
 
+#include "WorkerIdentifierSteps.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -227,54 +229,13 @@ BENCHMARK(bmIdentCalibration30k)->Unit(benchmark::kMillisecond)->Iterations(3);
 // identifier's worker thread. CPU: the stepping thread's own (the target); real time also
 // counts its waits for the worker at the steps where a job's result is due (this benchmark
 // steps far faster than a test: a job gets max(50, N/20) steps, here about 0.3 ms).
-// Counters: the worker's CPU per timed step, per job, per anchor (calibration) and per guard
-// replay [us]; jobs, anchors and waits per 1000 timed steps.
+// Counters: WorkerIdentifierSteps.h.
 void bmIdentRobustUkfStep(benchmark::State& state) {
     const History h = history(2400, 400);
-    const auto fresh = [&] {
-        auto id = std::make_unique<RobustUkfIdentifier>(wrongStart(), std::nullopt, std::nullopt,
-                                                        ParameterBoundsMap{});
-        for (std::size_t k = 0; k < 1600; ++k)
-            id->observe(h.u[k], h.f[k], false);
-        return id;
-    };
-    auto id = fresh();
-    std::size_t k = 1600;
-    double workerCpu = 0.0, cpu0 = id->workerCpuSeconds(), anchorCpu = 0.0,
-           anchorCpu0 = id->anchorCpuSeconds();
-    int jobs = 0, jobs0 = id->jobs(), waits = 0, waits0 = id->waits(), anchors = 0,
-        anchors0 = id->anchors();
-    const auto account = [&] {
-        workerCpu += id->workerCpuSeconds() - cpu0;
-        anchorCpu += id->anchorCpuSeconds() - anchorCpu0;
-        jobs += id->jobs() - jobs0;
-        waits += id->waits() - waits0;
-        anchors += id->anchors() - anchors0;
-    };
-    for (auto _ : state) {
-        if (k == 2300) {
-            state.PauseTiming();
-            account();
-            id = fresh();
-            cpu0 = id->workerCpuSeconds();
-            anchorCpu0 = id->anchorCpuSeconds();
-            jobs0 = id->jobs(), waits0 = id->waits(), anchors0 = id->anchors();
-            k = 1600;
-            state.ResumeTiming();
-        }
-        benchmark::DoNotOptimize(id->observe(h.u[k], h.f[k], false));
-        ++k;
-    }
-    account();
-    const double steps = double(state.iterations());
-    state.counters["workerUsPerStep"] = 1e6 * workerCpu / steps;
-    state.counters["workerUsPerJob"] = jobs > 0 ? 1e6 * workerCpu / jobs : 0.0;
-    state.counters["workerUsPerAnchor"] = anchors > 0 ? 1e6 * anchorCpu / anchors : 0.0;
-    state.counters["workerUsPerGuard"] =
-        jobs > anchors ? 1e6 * (workerCpu - anchorCpu) / (jobs - anchors) : 0.0;
-    state.counters["jobsPer1000"] = 1000.0 * jobs / steps;
-    state.counters["anchorsPer1000"] = 1000.0 * anchors / steps;
-    state.counters["waitsPer1000"] = 1000.0 * waits / steps;
+    bench::workerIdentifierSteps(state, h.u, h.f, [] {
+        return std::make_unique<RobustUkfIdentifier>(wrongStart(), std::nullopt, std::nullopt,
+                                                     ParameterBoundsMap{});
+    });
 }
 BENCHMARK(bmIdentRobustUkfStep);
 

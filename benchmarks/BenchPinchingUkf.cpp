@@ -14,6 +14,7 @@
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/updating/PinchingUkfIdentifier.h"
 #include "core/updating/RobustUkfJobs.h"
+#include "WorkerIdentifierSteps.h"
 
 #include <benchmark/benchmark.h>
 
@@ -64,48 +65,10 @@ BoucWenPinchingParameters wrongPinchedStart() {
 void bmIdentPinchingUkfIdentifierStep(benchmark::State& state) {
     std::vector<double> u, f;
     pinchedHistory(2400, 400, u, f);
-    const auto fresh = [&] {
-        auto id = std::make_unique<PinchingUkfIdentifier>(wrongPinchedStart(), std::nullopt,
-                                                          std::nullopt, ParameterBoundsMap{});
-        for (std::size_t k = 0; k < 1600; ++k)
-            id->observe(u[k], f[k], false);
-        return id;
-    };
-    auto id = fresh();
-    std::size_t k = 1600;
-    double workerCpu = 0.0, cpu0 = id->workerCpuSeconds(), anchorCpu = 0.0,
-           anchorCpu0 = id->anchorCpuSeconds();
-    int jobs = 0, jobs0 = id->jobs(), waits = 0, waits0 = id->waits(), anchors = 0,
-        anchors0 = id->anchors();
-    const auto account = [&] {
-        workerCpu += id->workerCpuSeconds() - cpu0;
-        anchorCpu += id->anchorCpuSeconds() - anchorCpu0;
-        jobs += id->jobs() - jobs0;
-        waits += id->waits() - waits0;
-        anchors += id->anchors() - anchors0;
-    };
-    for (auto _ : state) {
-        if (k == 2300) {
-            state.PauseTiming();
-            account();
-            id = fresh();
-            cpu0 = id->workerCpuSeconds();
-            anchorCpu0 = id->anchorCpuSeconds();
-            jobs0 = id->jobs(), waits0 = id->waits(), anchors0 = id->anchors();
-            k = 1600;
-            state.ResumeTiming();
-        }
-        benchmark::DoNotOptimize(id->observe(u[k], f[k], false));
-        ++k;
-    }
-    account();
-    const double steps = double(state.iterations());
-    state.counters["workerUsPerStep"] = 1e6 * workerCpu / steps;
-    state.counters["workerUsPerAnchor"] = anchors > 0 ? 1e6 * anchorCpu / anchors : 0.0;
-    state.counters["workerUsPerGuard"] =
-        jobs > anchors ? 1e6 * (workerCpu - anchorCpu) / (jobs - anchors) : 0.0;
-    state.counters["anchorsPer1000"] = 1000.0 * anchors / steps;
-    state.counters["waitsPer1000"] = 1000.0 * waits / steps;
+    bench::workerIdentifierSteps(state, u, f, [] {
+        return std::make_unique<PinchingUkfIdentifier>(wrongPinchedStart(), std::nullopt,
+                                                       std::nullopt, ParameterBoundsMap{});
+    });
 }
 BENCHMARK(bmIdentPinchingUkfIdentifierStep)->Iterations(2100);
 
