@@ -10,6 +10,7 @@
 // Run: build/bin/hsmu_bench --benchmark_filter=Ident
 
 #include "core/hysteresis/BoucWen.h"
+#include "tests/support/BoucWenFixture.h"
 #include "core/identification/BoucWenUkf.h"
 #include "core/identification/CalibrationDefaults.h"
 #include "core/identification/HistoryFit.h"
@@ -28,31 +29,8 @@ namespace {
 
 using namespace hsmu;
 
-BoucWenParameters truth() {
-    BoucWenParameters p;
-    p.k0 = 1.0;
-    p.alpha = 0.03;
-    p.n = 2.0;
-    p.beta = 2.5;
-    p.gamma = 0.5;
-    p.deltaNu = 0.03;
-    p.deltaEta = 0.03;
-    p.uRef = 0.02;
-    p.fRef = 20.0;
-    return p;
-}
-
-BoucWenParameters wrongStart() {
-    BoucWenParameters p = truth();
-    p.k0 = 1.3;
-    p.alpha = 0.01;
-    p.n = 1.3;
-    p.beta = 4.0;
-    p.gamma = 2.0;
-    p.deltaNu = 0.08;
-    p.deltaEta = 0.08;
-    return p;
-}
+using test::truth;
+using test::wrongStart;
 
 struct History {
     std::vector<double> u, f;

@@ -4,6 +4,7 @@
 // Figures (printed with qInfo) go into docs/validation.md.
 
 #include "core/identification/BoucWenUkf.h"
+#include "tests/support/BoucWenFixture.h"
 #include "core/util/PortableRandom.h"
 
 #include <QtTest>
@@ -16,36 +17,11 @@ using namespace hsmu;
 
 namespace {
 
+using test::truth;
+using test::wrongStart;
+
 constexpr int kPointsPerCycle = 400;
 constexpr int kCycles = 6;
-
-// The "true" specimen (docs/method.md, Normalized units: uRef 0.02 rad, fRef 20 kN m).
-BoucWenParameters truth() {
-    BoucWenParameters p;
-    p.k0 = 1.0;
-    p.alpha = 0.03;
-    p.n = 2.0;
-    p.beta = 2.5;
-    p.gamma = 0.5;
-    p.deltaNu = 0.03;
-    p.deltaEta = 0.03;
-    p.uRef = 0.02;
-    p.fRef = 20.0;
-    return p;
-}
-
-// Deliberately wrong start, inside Table III.
-BoucWenParameters wrongStart() {
-    BoucWenParameters p = truth();
-    p.k0 = 1.3;
-    p.alpha = 0.01;
-    p.n = 1.3;
-    p.beta = 4.0;
-    p.gamma = 2.0;
-    p.deltaNu = 0.08;
-    p.deltaEta = 0.08;
-    return p;
-}
 
 struct History {
     std::vector<double> u, f;
