@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Install every Debian package the build, the tests and the screenshots need (idempotent; as
-# root or through sudo), then configure and build into ./build (or $HSMU_BUILD_DIR).
+# root or through sudo), then configure and build into ./build (or $HSMU_BUILD_DIR): every
+# target, or only the targets given as arguments (scripts/run.sh: the programs it runs and
+# their libraries, no test or benchmark).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${HSMU_BUILD_DIR:-$here/build}"
@@ -38,5 +40,9 @@ fi
 
 jobs="$(nproc 2>/dev/null || echo 2)"
 cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build_dir" -j"$jobs"
+targets=()
+for t in "$@"; do
+  targets+=(--target "$t")
+done
+cmake --build "$build_dir" -j"$jobs" "${targets[@]}"
 echo "setup: built into $build_dir" >&2
