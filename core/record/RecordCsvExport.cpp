@@ -168,6 +168,29 @@ void writeActuators(const RecordData& r, const std::filesystem::path& dir,
     f.close();
 }
 
+void writeSites(const RecordData& r, const std::filesystem::path& dir,
+                std::vector<std::string>& written, const UnitMap& u) {
+    const auto n = r.siteRoundTrip.cols();
+    if (n == 0 || r.siteRoundTrip.rows() != r.rows())
+        return;
+    CsvFile f((dir / "sites.csv").string(), written);
+    f.column("step", "");
+    f.column("time", u.symbol("s"));
+    for (Eigen::Index j = 0; j < n; ++j)
+        f.column((std::size_t(j) < r.layout.sites.size() ? r.layout.sites[std::size_t(j)]
+                                                         : "site " + std::to_string(j + 1)) +
+                     " round trip",
+                 u.symbol("s"));
+    f.endHeader();
+    for (Eigen::Index i = 0; i < r.rows(); ++i) {
+        auto row = stepAndTime(r, i, u);
+        for (Eigen::Index j = 0; j < n; ++j)
+            row.push_back(u.number(r.siteRoundTrip(i, j), "s"));
+        f.line(row);
+    }
+    f.close();
+}
+
 void writeUpdating(const RecordData& r, const std::filesystem::path& dir,
                    std::vector<std::string>& written, const UnitMap& u) {
     const UpdatingInfo& info = *r.layout.updating;
@@ -215,12 +238,16 @@ void writeUpdating(const RecordData& r, const std::filesystem::path& dir,
     e.column("element", "");
     for (const auto& p : info.parameters)
         e.column(p, "-");
+    e.column("decision", "");
+    e.column("proposal", "");
     e.endHeader();
     for (const RecordedUpdate& ev : r.updateEvents) {
         std::vector<std::string> row{std::to_string(ev.step), u.number(ev.time, "s"),
                                      quoted(ev.element)};
         for (double v : ev.values)
             row.push_back(number(v));
+        row.push_back(quoted(ev.decision));
+        row.push_back(std::to_string(ev.proposal));
         e.line(row);
     }
     e.close();
@@ -230,12 +257,12 @@ void writeLogs(const RecordData& r, const std::filesystem::path& dir,
                std::vector<std::string>& written, const UnitMap& u) {
     CsvFile a((dir / "alarms.csv").string(), written);
     a.column("time", u.symbol("s"));
-    for (const char* name : {"step", "severity", "kind", "message"})
+    for (const char* name : {"step", "severity", "kind", "message", "code"})
         a.column(name, "");
     a.endHeader();
     for (const Alarm& al : r.alarms)
         a.line({u.number(al.time, "s"), std::to_string(al.step), alarmSeverityName(al.severity),
-                quoted(alarmKindName(al.kind)), quoted(al.message)});
+                quoted(alarmKindName(al.kind)), quoted(al.message), quoted(al.code)});
     a.close();
 
     CsvFile n((dir / "notes.csv").string(), written);
@@ -295,6 +322,7 @@ std::vector<std::string> exportRecordCsv(const RecordData& record, const std::st
     writeDofs(record, d, written, u);
     writeElements(record, d, written, u);
     writeActuators(record, d, written, u);
+    writeSites(record, d, written, u);
     if (record.layout.updating)
         writeUpdating(record, d, written, u);
     writeLogs(record, d, written, u);

@@ -9,9 +9,12 @@
 #include "core/record/RecordReader.h"
 
 #include <QTemporaryDir>
+#include <hdf5.h>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <cstring>
 #include <fstream>
 
@@ -83,6 +86,7 @@ class TestRecordCsvExport : public QObject {
 private slots:
     void valuesEqualTheDatasets();
     void labUnits();
+    void everyDatasetReachesTheCsv();
 };
 
 void TestRecordCsvExport::valuesEqualTheDatasets() {
@@ -93,7 +97,7 @@ void TestRecordCsvExport::valuesEqualTheDatasets() {
     const std::string out = dir.filePath("csv").toStdString();
     std::filesystem::create_directory(out);
     const auto files = exportRecordCsv(d, out);
-    QCOMPARE(files.size(), std::size_t(8));
+    QCOMPARE(files.size(), std::size_t(9));
     const int n = d.rows();
     QCOMPARE(n, 201);
 
@@ -179,11 +183,24 @@ void TestRecordCsvExport::valuesEqualTheDatasets() {
         QCOMPARE(events[k + 1][2], d.updateEvents[k].element);
         for (std::size_t j = 0; j < d.updateEvents[k].values.size(); ++j)
             QVERIFY(same(events[k + 1][3 + j], d.updateEvents[k].values[j]));
+        // What became of each offer, and its proposal (issue 25 item 10: it was dropped).
+        QCOMPARE(events[k + 1][3 + d.updateEvents[k].values.size()], d.updateEvents[k].decision);
+        QCOMPARE(std::stoi(events[k + 1][4 + d.updateEvents[k].values.size()]),
+                 d.updateEvents[k].proposal);
     }
+    QCOMPARE(events[0][events[0].size() - 2], std::string("decision"));
+    QCOMPARE(events[0].back(), std::string("proposal"));
+    const auto sites = readCsv(out + "/sites.csv");
+    QCOMPARE(sites.size(), std::size_t(n + 1));
+    QCOMPARE(sites[0], (std::vector<std::string>{"step", "time [s]", "controller round trip [s]"}));
+    for (int i = 0; i < n; ++i)
+        QVERIFY(same(sites[std::size_t(i + 1)][2], d.siteRoundTrip(i, 0)));
     const auto alarms = readCsv(out + "/alarms.csv");
     QCOMPARE(alarms.size(), d.alarms.size() + 1);
-    for (std::size_t k = 0; k < d.alarms.size(); ++k)
+    for (std::size_t k = 0; k < d.alarms.size(); ++k) {
         QCOMPARE(alarms[k + 1][4], d.alarms[k].message);
+        QCOMPARE(alarms[k + 1][5], d.alarms[k].code);
+    }
     const auto notes = readCsv(out + "/notes.csv");
     QCOMPARE(notes.size(), std::size_t(2));
     QCOMPARE(notes[1][2], std::string("valve \"B\" checked, ok"));
@@ -245,6 +262,89 @@ void TestRecordCsvExport::labUnits() {
         } catch (const std::invalid_argument& e) {
             QVERIFY2(std::string(e.what()).find("--units:") == 0, e.what());
         }
+    }
+}
+
+
+namespace {
+herr_t collectDataset(hid_t, const char* name, const H5O_info_t* info, void* out) {
+    if (info->type == H5O_TYPE_DATASET)
+        static_cast<std::vector<std::string>*>(out)->push_back(std::string("/") + name);
+    return 0;
+}
+} // namespace
+
+// Issue 25 item 10: `hsmu export --csv` dropped /updating/events/decision (2,900 offers,
+// applied, rejected and not queued, indistinguishable). Every dataset of a record reaches a
+// CSV column: a dataset this table does not place fails the test.
+void TestRecordCsvExport::everyDatasetReachesTheCsv() {
+    QTemporaryDir dir;
+    const std::string h5 = dir.filePath("record.h5").toStdString();
+    QVERIFY(recordRun(h5));
+    std::vector<std::string> datasets;
+    {
+        const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        QVERIFY(file >= 0);
+        H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, collectDataset, &datasets, H5O_INFO_BASIC);
+        H5Fclose(file);
+    }
+    QVERIFY(datasets.size() > 30);
+    const RecordData d = RecordReader(h5).data();
+    const std::string out = dir.filePath("csv").toStdString();
+    std::filesystem::create_directory(out);
+    exportRecordCsv(d, out);
+    const std::string param = d.layout.updating->parameters.front();
+    // dataset -> the CSV file and a text its column's header holds
+    const std::map<std::string, std::pair<std::string, std::string>> where{
+        {"/steps/step", {"steps.csv", "step"}},
+        {"/steps/time", {"steps.csv", "time"}},
+        {"/steps/ground_acceleration", {"steps.csv", "ground_acceleration"}},
+        {"/dofs/u", {"dofs.csv", "u DOF 1"}},
+        {"/dofs/v", {"dofs.csv", "v DOF 1"}},
+        {"/dofs/a", {"dofs.csv", "a DOF 1"}},
+        {"/elements/deformation", {"elements.csv", " deformation"}},
+        {"/elements/force", {"elements.csv", " force"}},
+        {"/elements/commanded", {"elements.csv", " commanded"}},
+        {"/elements/actuator/commanded", {"actuators.csv", " actuator commanded"}},
+        {"/elements/actuator/measured", {"actuators.csv", " actuator measured"}},
+        {"/elements/actuator/held_ticks", {"actuators.csv", " held ticks"}},
+        {"/elements/actuator/flags", {"actuators.csv", " flags"}},
+        {"/updating/parameters", {"updating.csv", param + " ["}},
+        {"/updating/stddev", {"updating.csv", "stddev " + param}},
+        {"/updating/auxiliary_force", {"updating.csv", "auxiliary_force"}},
+        {"/updating/fit_error", {"updating.csv", "fit_error"}},
+        {"/updating/applied_updates", {"updating.csv", "applied_updates"}},
+        {"/updating/updates_this_step", {"updating.csv", "updates_this_step"}},
+        {"/updating/pending_proposals", {"updating.csv", "pending_proposals"}},
+        {"/updating/tracking", {"updating.csv", "tracking_j1"}},
+        {"/updating/update_requested", {"updating.csv", "update_requested"}},
+        {"/updating/events/step", {"update_events.csv", "step"}},
+        {"/updating/events/time", {"update_events.csv", "time"}},
+        {"/updating/events/element", {"update_events.csv", "element"}},
+        {"/updating/events/values", {"update_events.csv", param + " ["}},
+        {"/updating/events/decision", {"update_events.csv", "decision"}},
+        {"/updating/events/proposal", {"update_events.csv", "proposal"}},
+        {"/sites/round_trip", {"sites.csv", "round trip"}},
+        {"/alarms/time", {"alarms.csv", "time"}},
+        {"/alarms/step", {"alarms.csv", "step"}},
+        {"/alarms/severity", {"alarms.csv", "severity"}},
+        {"/alarms/kind", {"alarms.csv", "kind"}},
+        {"/alarms/message", {"alarms.csv", "message"}},
+        {"/alarms/code", {"alarms.csv", "code"}},
+        {"/notes/time", {"notes.csv", "time"}},
+        {"/notes/step", {"notes.csv", "step"}},
+        {"/notes/text", {"notes.csv", "text"}},
+    };
+    for (const std::string& dataset : datasets) {
+        const auto it = where.find(dataset);
+        QVERIFY2(it != where.end(), qPrintable(QString::fromStdString(dataset + ": no CSV column")));
+        const auto header = readCsv(out + "/" + it->second.first);
+        QVERIFY2(!header.empty(), qPrintable(QString::fromStdString(it->second.first + ": missing")));
+        const bool found = std::any_of(header[0].begin(), header[0].end(), [&](const std::string& h) {
+            return h.find(it->second.second) != std::string::npos;
+        });
+        QVERIFY2(found, qPrintable(QString::fromStdString(dataset + ": no '" + it->second.second +
+                                                          "' column in " + it->second.first)));
     }
 }
 
