@@ -33,6 +33,17 @@ void installPlots() {
     };
 }
 
+/// Headless commands print only their own messages (through ConsoleStreams): Qt's notes about
+/// the environment (QStandardPaths' "XDG_RUNTIME_DIR not set", the offscreen platform's
+/// "does not support propagateSizeHints()") are not the command's, and the console's code
+/// uses no qDebug / qWarning. Critical and fatal messages still reach stderr.
+void onlyCriticalQtMessages(QtMsgType type, const QMessageLogContext& context,
+                            const QString& text) {
+    if (type == QtDebugMsg || type == QtInfoMsg || type == QtWarningMsg)
+        return;
+    QTextStream(stderr) << qFormatLogMessage(type, context, text) << Qt::endl;
+}
+
 bool headless() {
     return qEnvironmentVariableIsEmpty("DISPLAY") &&
            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
@@ -76,6 +87,8 @@ int dispatch(int argc, char** argv) {
         }
         qputenv("QT_QPA_PLATFORM", "offscreen"); // before the QApplication exists
     }
+    if (plotting)
+        qInstallMessageHandler(onlyCriticalQtMessages); // before Qt looks at the environment
     QApplication app(argc, argv);
     CliLauncher::describeApplication();
     installPlots();

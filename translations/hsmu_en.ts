@@ -845,6 +845,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 (wall time %2)</source>
         <translation>%1 (wall time %2)</translation>
     </message>
+    <message>
+        <source>pre-flight check skipped: the test was started from the command line (--start)</source>
+        <translation>pre-flight check skipped: the test was started from the command line (--start)</translation>
+    </message>
+    <message>
+        <source>note recorded: %1</source>
+        <translation>note recorded: %1</translation>
+    </message>
 </context>
 <context>
     <name>OverrideOptions</name>
@@ -1417,6 +1425,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>yes, %1</source>
         <translation>yes, %1</translation>
     </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: cannot be written (%2)</translation>
+    </message>
+    <message>
+        <source>Copy the list</source>
+        <translation>Copy the list</translation>
+    </message>
+    <message>
+        <source>Copy selected rows</source>
+        <translation>Copy selected rows</translation>
+    </message>
+    <message>
+        <source>Export the list as CSV...</source>
+        <translation>Export the list as CSV...</translation>
+    </message>
+    <message>
+        <source>Export alarms and events</source>
+        <translation>Export alarms and events</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::AlarmPanel</name>
@@ -1514,10 +1546,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Single step</translation>
     </message>
     <message>
-        <source>Run exactly one integration step, then stay paused</source>
-        <translation>Run exactly one integration step, then stay paused</translation>
-    </message>
-    <message>
         <source>Emergency hold (%1)</source>
         <translation>Emergency hold (%1)</translation>
     </message>
@@ -1528,10 +1556,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Stop...</source>
         <translation>Stop...</translation>
-    </message>
-    <message>
-        <source>End the test, keeping the data (asks for confirmation)</source>
-        <translation>End the test, keeping the data (asks for confirmation)</translation>
     </message>
     <message>
         <source>1/%1 x real time</source>
@@ -1548,6 +1572,26 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source> s/step</source>
         <translation> s/step</translation>
+    </message>
+    <message>
+        <source>Start the test after the pre-flight check (%1)</source>
+        <translation>Start the test after the pre-flight check (%1)</translation>
+    </message>
+    <message>
+        <source>Pause between two steps (%1)</source>
+        <translation>Pause between two steps (%1)</translation>
+    </message>
+    <message>
+        <source>Run exactly one integration step, then stay paused (%1)</source>
+        <translation>Run exactly one integration step, then stay paused (%1)</translation>
+    </message>
+    <message>
+        <source>Continue the test (%1)</source>
+        <translation>Continue the test (%1)</translation>
+    </message>
+    <message>
+        <source>End the test, keeping the data (asks for confirmation; %1)</source>
+        <translation>End the test, keeping the data (asks for confirmation; %1)</translation>
     </message>
 </context>
 <context>
@@ -1818,26 +1862,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>start cancelled at the pre-flight check</translation>
     </message>
     <message>
-        <source>built-in virtual lab</source>
-        <translation>built-in virtual lab</translation>
-    </message>
-    <message>
-        <source>%1 fault</source>
-        <translation>%1 fault</translation>
-    </message>
-    <message>
-        <source>%1 connected</source>
-        <translation>%1 connected</translation>
-    </message>
-    <message>
-        <source>%1 (connects at start)</source>
-        <translation>%1 (connects at start)</translation>
-    </message>
-    <message>
-        <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
-        <translation> (dataSize %1; ctrl sizes %2; daq sizes %3)</translation>
-    </message>
-    <message>
         <source>Add &amp;note...</source>
         <translation>Add &amp;note...</translation>
     </message>
@@ -1900,6 +1924,100 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>End the test, keep the data and quit</source>
         <translation>End the test, keep the data and quit</translation>
+    </message>
+    <message>
+        <source>(dataSize %1; ctrl sizes %2; daq sizes %3)</source>
+        <translation>(dataSize %1; ctrl sizes %2; daq sizes %3)</translation>
+    </message>
+    <message>
+        <source>test finished: %1 steps, t = %2 s</source>
+        <translation>test finished: %1 steps, t = %2 s</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Help</translation>
+    </message>
+    <message>
+        <source>Console &amp;guide</source>
+        <translation>Console &amp;guide</translation>
+    </message>
+    <message>
+        <source>The console's documentation (docs/console.md)</source>
+        <translation>The console's documentation (docs/console.md)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>&amp;Keyboard shortcuts</translation>
+    </message>
+    <message>
+        <source>&amp;About HSMU Console</source>
+        <translation>&amp;About HSMU Console</translation>
+    </message>
+    <message>
+        <source>%1: Start (after the pre-flight check)</source>
+        <translation>%1: Start (after the pre-flight check)</translation>
+    </message>
+    <message>
+        <source>%1: Pause</source>
+        <translation>%1: Pause</translation>
+    </message>
+    <message>
+        <source>%1: Resume</source>
+        <translation>%1: Resume</translation>
+    </message>
+    <message>
+        <source>%1: Single step</source>
+        <translation>%1: Single step</translation>
+    </message>
+    <message>
+        <source>%1: Stop (asks first)</source>
+        <translation>%1: Stop (asks first)</translation>
+    </message>
+    <message>
+        <source>%1: Emergency hold (every window, always)</source>
+        <translation>%1: Emergency hold (every window, always)</translation>
+    </message>
+    <message>
+        <source>%1: Add a note to the record</source>
+        <translation>%1: Add a note to the record</translation>
+    </message>
+    <message>
+        <source>%1: Open a configuration</source>
+        <translation>%1: Open a configuration</translation>
+    </message>
+    <message>
+        <source>%1: Copy the selected alarms and events</source>
+        <translation>%1: Copy the selected alarms and events</translation>
+    </message>
+    <message>
+        <source>%1: Console guide</source>
+        <translation>%1: Console guide</translation>
+    </message>
+    <message>
+        <source>%1: Quit (asks first while a test runs)</source>
+        <translation>%1: Quit (asks first while a test runs)</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Keyboard shortcuts</translation>
+    </message>
+    <message>
+        <source>About HSMU Console</source>
+        <translation>About HSMU Console</translation>
+    </message>
+    <message>
+        <source>HSMU Console %1
+Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, EESD 2014).</source>
+        <translation>HSMU Console %1
+Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, EESD 2014).</translation>
+    </message>
+    <message>
+        <source>Console guide</source>
+        <translation>Console guide</translation>
+    </message>
+    <message>
+        <source>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</source>
+        <translation>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</translation>
     </message>
 </context>
 <context>
@@ -2018,10 +2136,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Change [%]</translation>
     </message>
     <message>
-        <source>Current and proposed values in the law's normalized units</source>
-        <translation>Current and proposed values in the law's normalized units</translation>
-    </message>
-    <message>
         <source>Apply updates:</source>
         <translation>Apply updates:</translation>
     </message>
@@ -2046,13 +2160,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Reject</translation>
     </message>
     <message numerus="yes">
-        <source>%n update(s) waiting for a decision, oldest first.</source>
-        <translation>
-            <numerusform>%n update(s) waiting for a decision, oldest first.</numerusform>
-            <numerusform>%n update(s) waiting for a decision, oldest first.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
         <translation>
             <numerusform>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</numerusform>
@@ -2062,6 +2169,29 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>, fit error %1</source>
         <translation>, fit error %1</translation>
+    </message>
+    <message>
+        <source>Estimate now</source>
+        <translation>Estimate now</translation>
+    </message>
+    <message>
+        <source>The target's current value, the proposed one, the estimator's value now and the change the proposal makes, in the law's normalized units</source>
+        <translation>The target's current value, the proposed one, the estimator's value now and the change the proposal makes, in the law's normalized units</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n update(s) waiting for a decision.</source>
+        <translation>
+            <numerusform>%n update(s) waiting for a decision.</numerusform>
+            <numerusform>%n update(s) waiting for a decision.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>One proposal per target, renewed every %1 s of test time with the estimator's latest values (it replaces the one shown); Approve applies the values shown while they are current.</source>
+        <translation>One proposal per target, renewed every %1 s of test time with the estimator's latest values (it replaces the one shown); Approve applies the values shown while they are current.</translation>
+    </message>
+    <message>
+        <source>: stale (older than %1 s), wait for the next proposal</source>
+        <translation>: stale (older than %1 s), wait for the next proposal</translation>
     </message>
 </context>
 <context>
@@ -2733,20 +2863,44 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 ms</translation>
     </message>
     <message>
-        <source>%1: %2 (%3) - %4</source>
-        <translation>%1: %2 (%3) - %4</translation>
-    </message>
-    <message>
         <source>last fault: %1</source>
         <translation>last fault: %1</translation>
     </message>
     <message>
-        <source>sites: %1</source>
-        <translation>sites: %1</translation>
-    </message>
-    <message>
         <source> (faults: %1)</source>
         <translation> (faults: %1)</translation>
+    </message>
+    <message>
+        <source>connected, %1 ms</source>
+        <translation>connected, %1 ms</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>connected</translation>
+    </message>
+    <message>
+        <source>link: %1</source>
+        <translation>link: %1</translation>
+    </message>
+    <message>
+        <source>no link</source>
+        <translation>no link</translation>
+    </message>
+    <message>
+        <source>(connects at start)</source>
+        <translation>(connects at start)</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab</source>
+        <translation>built-in virtual lab</translation>
+    </message>
+    <message>
+        <source>%1: built-in virtual lab</source>
+        <translation>%1: built-in virtual lab</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2791,20 +2945,16 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 steps/s</translation>
     </message>
     <message>
-        <source>no link</source>
-        <translation>no link</translation>
-    </message>
-    <message>
-        <source>link: %1</source>
-        <translation>link: %1</translation>
-    </message>
-    <message>
         <source>not recording</source>
         <translation>not recording</translation>
     </message>
     <message>
         <source>recording: %1/%2</source>
         <translation>recording: %1/%2</translation>
+    </message>
+    <message>
+        <source>%1, %2 left</source>
+        <translation>%1, %2 left</translation>
     </message>
 </context>
 <context>
@@ -2852,6 +3002,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</source>
         <translation>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</translation>
+    </message>
+    <message>
+        <source>the note was not kept: %1</source>
+        <translation>the note was not kept: %1</translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied: the estimate has moved on and #%2 replaced it; check #%2 and approve it if it is right</source>
+        <translation>update #%1 was not applied: the estimate has moved on and #%2 replaced it; check #%2 and approve it if it is right</translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied: it is older than one proposal interval (%2 s) and no longer what the estimator believes; wait for the next proposal</source>
+        <translation>update #%1 was not applied: it is older than one proposal interval (%2 s) and no longer what the estimator believes; wait for the next proposal</translation>
+    </message>
+    <message>
+        <source>update #%1 is no longer pending: #%2 replaced it</source>
+        <translation>update #%1 is no longer pending: #%2 replaced it</translation>
     </message>
 </context>
 </TS>

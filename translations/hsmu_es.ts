@@ -845,6 +845,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 (wall time %2)</source>
         <translation>%1 (hora real %2)</translation>
     </message>
+    <message>
+        <source>pre-flight check skipped: the test was started from the command line (--start)</source>
+        <translation>verificación previa omitida: el ensayo se inició desde la línea de órdenes (--start)</translation>
+    </message>
+    <message>
+        <source>note recorded: %1</source>
+        <translation>nota registrada: %1</translation>
+    </message>
 </context>
 <context>
     <name>OverrideOptions</name>
@@ -1417,6 +1425,30 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>yes, %1</source>
         <translation>sí, %1</translation>
     </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: no se puede escribir (%2)</translation>
+    </message>
+    <message>
+        <source>Copy the list</source>
+        <translation>Copiar la lista</translation>
+    </message>
+    <message>
+        <source>Copy selected rows</source>
+        <translation>Copiar las filas seleccionadas</translation>
+    </message>
+    <message>
+        <source>Export the list as CSV...</source>
+        <translation>Exportar la lista como CSV...</translation>
+    </message>
+    <message>
+        <source>Export alarms and events</source>
+        <translation>Exportar alarmas y eventos</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::AlarmPanel</name>
@@ -1514,10 +1546,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Un solo paso</translation>
     </message>
     <message>
-        <source>Run exactly one integration step, then stay paused</source>
-        <translation>Ejecuta exactamente un paso de integración y permanece en pausa</translation>
-    </message>
-    <message>
         <source>Emergency hold (%1)</source>
         <translation>Retención de emergencia (%1)</translation>
     </message>
@@ -1528,10 +1556,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Stop...</source>
         <translation>Detener...</translation>
-    </message>
-    <message>
-        <source>End the test, keeping the data (asks for confirmation)</source>
-        <translation>Terminar el ensayo conservando los datos (pide confirmación)</translation>
     </message>
     <message>
         <source>1/%1 x real time</source>
@@ -1548,6 +1572,26 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source> s/step</source>
         <translation> s/paso</translation>
+    </message>
+    <message>
+        <source>Start the test after the pre-flight check (%1)</source>
+        <translation>Iniciar el ensayo tras la verificación previa (%1)</translation>
+    </message>
+    <message>
+        <source>Pause between two steps (%1)</source>
+        <translation>Pausar entre dos pasos (%1)</translation>
+    </message>
+    <message>
+        <source>Run exactly one integration step, then stay paused (%1)</source>
+        <translation>Ejecutar exactamente un paso de integración y quedar en pausa (%1)</translation>
+    </message>
+    <message>
+        <source>Continue the test (%1)</source>
+        <translation>Continuar el ensayo (%1)</translation>
+    </message>
+    <message>
+        <source>End the test, keeping the data (asks for confirmation; %1)</source>
+        <translation>Terminar el ensayo conservando los datos (pide confirmación; %1)</translation>
     </message>
 </context>
 <context>
@@ -1818,26 +1862,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>inicio cancelado en la comprobación previa</translation>
     </message>
     <message>
-        <source>built-in virtual lab</source>
-        <translation>laboratorio virtual integrado</translation>
-    </message>
-    <message>
-        <source>%1 fault</source>
-        <translation>fallo de %1</translation>
-    </message>
-    <message>
-        <source>%1 connected</source>
-        <translation>%1 conectado</translation>
-    </message>
-    <message>
-        <source>%1 (connects at start)</source>
-        <translation>%1 (se conecta al iniciar)</translation>
-    </message>
-    <message>
-        <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
-        <translation> (dataSize %1; tamaños ctrl %2; tamaños daq %3)</translation>
-    </message>
-    <message>
         <source>Add &amp;note...</source>
         <translation>Añadir &amp;nota...</translation>
     </message>
@@ -1900,6 +1924,100 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>End the test, keep the data and quit</source>
         <translation>Terminar el ensayo, conservar los datos y salir</translation>
+    </message>
+    <message>
+        <source>(dataSize %1; ctrl sizes %2; daq sizes %3)</source>
+        <translation>(dataSize %1; tamaños ctrl %2; tamaños daq %3)</translation>
+    </message>
+    <message>
+        <source>test finished: %1 steps, t = %2 s</source>
+        <translation>ensayo terminado: %1 pasos, t = %2 s</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>Console &amp;guide</source>
+        <translation>&amp;Guía de la consola</translation>
+    </message>
+    <message>
+        <source>The console&apos;s documentation (docs/console.md)</source>
+        <translation>La documentación de la consola (docs/console.md)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>Atajos de &amp;teclado</translation>
+    </message>
+    <message>
+        <source>&amp;About HSMU Console</source>
+        <translation>&amp;Acerca de HSMU Console</translation>
+    </message>
+    <message>
+        <source>%1: Start (after the pre-flight check)</source>
+        <translation>%1: Iniciar (tras la verificación previa)</translation>
+    </message>
+    <message>
+        <source>%1: Pause</source>
+        <translation>%1: Pausar</translation>
+    </message>
+    <message>
+        <source>%1: Resume</source>
+        <translation>%1: Reanudar</translation>
+    </message>
+    <message>
+        <source>%1: Single step</source>
+        <translation>%1: Un paso</translation>
+    </message>
+    <message>
+        <source>%1: Stop (asks first)</source>
+        <translation>%1: Detener (pregunta antes)</translation>
+    </message>
+    <message>
+        <source>%1: Emergency hold (every window, always)</source>
+        <translation>%1: Retención de emergencia (en toda ventana, siempre)</translation>
+    </message>
+    <message>
+        <source>%1: Add a note to the record</source>
+        <translation>%1: Añadir una nota al registro</translation>
+    </message>
+    <message>
+        <source>%1: Open a configuration</source>
+        <translation>%1: Abrir una configuración</translation>
+    </message>
+    <message>
+        <source>%1: Copy the selected alarms and events</source>
+        <translation>%1: Copiar las alarmas y eventos seleccionados</translation>
+    </message>
+    <message>
+        <source>%1: Console guide</source>
+        <translation>%1: Guía de la consola</translation>
+    </message>
+    <message>
+        <source>%1: Quit (asks first while a test runs)</source>
+        <translation>%1: Salir (pregunta antes si hay un ensayo en curso)</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Atajos de teclado</translation>
+    </message>
+    <message>
+        <source>About HSMU Console</source>
+        <translation>Acerca de HSMU Console</translation>
+    </message>
+    <message>
+        <source>HSMU Console %1
+Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, EESD 2014).</source>
+        <translation>HSMU Console %1
+Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y Mosqueda, EESD 2014).</translation>
+    </message>
+    <message>
+        <source>Console guide</source>
+        <translation>Guía de la consola</translation>
+    </message>
+    <message>
+        <source>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</source>
+        <translation>La guía es docs/console.md del árbol de fuentes, instalada como share/doc/hsmu/console.md.</translation>
     </message>
 </context>
 <context>
@@ -2018,10 +2136,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Cambio [%]</translation>
     </message>
     <message>
-        <source>Current and proposed values in the law&apos;s normalized units</source>
-        <translation>Valores actual y propuesto en las unidades normalizadas de la ley</translation>
-    </message>
-    <message>
         <source>Apply updates:</source>
         <translation>Aplicar actualizaciones:</translation>
     </message>
@@ -2046,13 +2160,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Rechazar</translation>
     </message>
     <message numerus="yes">
-        <source>%n update(s) waiting for a decision, oldest first.</source>
-        <translation>
-            <numerusform>%n actualización esperando una decisión, la más antigua primero.</numerusform>
-            <numerusform>%n actualizaciones esperando una decisión, la más antigua primero.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
         <translation>
             <numerusform>%n propuesta más reciente no se encoló (la cola admite %1); cada una está en el registro.</numerusform>
@@ -2062,6 +2169,29 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>, fit error %1</source>
         <translation>, error de ajuste %1</translation>
+    </message>
+    <message>
+        <source>Estimate now</source>
+        <translation>Estimación actual</translation>
+    </message>
+    <message>
+        <source>The target&apos;s current value, the proposed one, the estimator&apos;s value now and the change the proposal makes, in the law&apos;s normalized units</source>
+        <translation>El valor actual del objetivo, el propuesto, el valor actual del estimador y el cambio que hace la propuesta, en las unidades normalizadas de la ley</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n update(s) waiting for a decision.</source>
+        <translation>
+            <numerusform>%n actualización espera una decisión.</numerusform>
+            <numerusform>%n actualizaciones esperan una decisión.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>One proposal per target, renewed every %1 s of test time with the estimator&apos;s latest values (it replaces the one shown); Approve applies the values shown while they are current.</source>
+        <translation>Una propuesta por objetivo, renovada cada %1 s de tiempo de ensayo con los últimos valores del estimador (sustituye a la mostrada); Aprobar aplica los valores mostrados mientras estén vigentes.</translation>
+    </message>
+    <message>
+        <source>: stale (older than %1 s), wait for the next proposal</source>
+        <translation>: caducada (más de %1 s), espere la siguiente propuesta</translation>
     </message>
 </context>
 <context>
@@ -2733,20 +2863,44 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 ms</translation>
     </message>
     <message>
-        <source>%1: %2 (%3) - %4</source>
-        <translation>%1: %2 (%3) - %4</translation>
-    </message>
-    <message>
         <source>last fault: %1</source>
         <translation>último fallo: %1</translation>
     </message>
     <message>
-        <source>sites: %1</source>
-        <translation>sitios: %1</translation>
-    </message>
-    <message>
         <source> (faults: %1)</source>
         <translation> (fallos: %1)</translation>
+    </message>
+    <message>
+        <source>connected, %1 ms</source>
+        <translation>conectado, %1 ms</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>conectado</translation>
+    </message>
+    <message>
+        <source>link: %1</source>
+        <translation>enlace: %1</translation>
+    </message>
+    <message>
+        <source>no link</source>
+        <translation>sin enlace</translation>
+    </message>
+    <message>
+        <source>(connects at start)</source>
+        <translation>(se conecta al iniciar)</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab</source>
+        <translation>laboratorio virtual integrado</translation>
+    </message>
+    <message>
+        <source>%1: built-in virtual lab</source>
+        <translation>%1: laboratorio virtual integrado</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2791,20 +2945,16 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 pasos/s</translation>
     </message>
     <message>
-        <source>no link</source>
-        <translation>sin enlace</translation>
-    </message>
-    <message>
-        <source>link: %1</source>
-        <translation>enlace: %1</translation>
-    </message>
-    <message>
         <source>not recording</source>
         <translation>sin registrar</translation>
     </message>
     <message>
         <source>recording: %1/%2</source>
         <translation>registrando: %1/%2</translation>
+    </message>
+    <message>
+        <source>%1, %2 left</source>
+        <translation>%1, quedan %2</translation>
     </message>
 </context>
 <context>
@@ -2852,6 +3002,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</source>
         <translation>fallo del enlace (%1): reconectando en %2 s (intento %3 de %4)</translation>
+    </message>
+    <message>
+        <source>the note was not kept: %1</source>
+        <translation>la nota no se guardó: %1</translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied: the estimate has moved on and #%2 replaced it; check #%2 and approve it if it is right</source>
+        <translation>la actualización n.º %1 no se aplicó: la estimación ha cambiado y la n.º %2 la sustituyó; revise la n.º %2 y apruébela si es correcta</translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied: it is older than one proposal interval (%2 s) and no longer what the estimator believes; wait for the next proposal</source>
+        <translation>la actualización n.º %1 no se aplicó: es más antigua que un intervalo de propuesta (%2 s) y ya no es lo que cree el estimador; espere la siguiente propuesta</translation>
+    </message>
+    <message>
+        <source>update #%1 is no longer pending: #%2 replaced it</source>
+        <translation>la actualización n.º %1 ya no está pendiente: la n.º %2 la sustituyó</translation>
     </message>
 </context>
 </TS>

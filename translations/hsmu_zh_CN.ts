@@ -845,6 +845,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>%1 (wall time %2)</source>
         <translation>%1（实际时间 %2）</translation>
     </message>
+    <message>
+        <source>pre-flight check skipped: the test was started from the command line (--start)</source>
+        <translation>已跳过起飞前检查：试验由命令行启动（--start）</translation>
+    </message>
+    <message>
+        <source>note recorded: %1</source>
+        <translation>已记录备注：%1</translation>
+    </message>
 </context>
 <context>
     <name>OverrideOptions</name>
@@ -1417,6 +1425,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>yes, %1</source>
         <translation>是，%1</translation>
     </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1：无法写入（%2）</translation>
+    </message>
+    <message>
+        <source>Copy the list</source>
+        <translation>复制列表</translation>
+    </message>
+    <message>
+        <source>Copy selected rows</source>
+        <translation>复制所选行</translation>
+    </message>
+    <message>
+        <source>Export the list as CSV...</source>
+        <translation>将列表导出为 CSV...</translation>
+    </message>
+    <message>
+        <source>Export alarms and events</source>
+        <translation>导出报警和事件</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::AlarmPanel</name>
@@ -1513,10 +1545,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>单步</translation>
     </message>
     <message>
-        <source>Run exactly one integration step, then stay paused</source>
-        <translation>只运行一个积分步，然后保持暂停</translation>
-    </message>
-    <message>
         <source>Emergency hold (%1)</source>
         <translation>紧急保持（%1）</translation>
     </message>
@@ -1527,10 +1555,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>Stop...</source>
         <translation>停止...</translation>
-    </message>
-    <message>
-        <source>End the test, keeping the data (asks for confirmation)</source>
-        <translation>结束试验并保留数据（需确认）</translation>
     </message>
     <message>
         <source>1/%1 x real time</source>
@@ -1547,6 +1571,26 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source> s/step</source>
         <translation> 秒/步</translation>
+    </message>
+    <message>
+        <source>Start the test after the pre-flight check (%1)</source>
+        <translation>起飞前检查后开始试验（%1）</translation>
+    </message>
+    <message>
+        <source>Pause between two steps (%1)</source>
+        <translation>在两步之间暂停（%1）</translation>
+    </message>
+    <message>
+        <source>Run exactly one integration step, then stay paused (%1)</source>
+        <translation>只执行一个积分步，然后保持暂停（%1）</translation>
+    </message>
+    <message>
+        <source>Continue the test (%1)</source>
+        <translation>继续试验（%1）</translation>
+    </message>
+    <message>
+        <source>End the test, keeping the data (asks for confirmation; %1)</source>
+        <translation>结束试验并保留数据（需确认；%1）</translation>
     </message>
 </context>
 <context>
@@ -1817,26 +1861,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>启动已在预检时取消</translation>
     </message>
     <message>
-        <source>built-in virtual lab</source>
-        <translation>内置虚拟实验室</translation>
-    </message>
-    <message>
-        <source>%1 fault</source>
-        <translation>%1 故障</translation>
-    </message>
-    <message>
-        <source>%1 connected</source>
-        <translation>%1 已连接</translation>
-    </message>
-    <message>
-        <source>%1 (connects at start)</source>
-        <translation>%1（启动时连接）</translation>
-    </message>
-    <message>
-        <source> (dataSize %1; ctrl sizes %2; daq sizes %3)</source>
-        <translation>（dataSize %1；控制尺寸 %2；采集尺寸 %3）</translation>
-    </message>
-    <message>
         <source>Add &amp;note...</source>
         <translation>添加备注(&amp;N)...</translation>
     </message>
@@ -1899,6 +1923,100 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>End the test, keep the data and quit</source>
         <translation>结束试验、保留数据并退出</translation>
+    </message>
+    <message>
+        <source>(dataSize %1; ctrl sizes %2; daq sizes %3)</source>
+        <translation>（dataSize %1；ctrl 尺寸 %2；daq 尺寸 %3）</translation>
+    </message>
+    <message>
+        <source>test finished: %1 steps, t = %2 s</source>
+        <translation>试验结束：%1 步，t = %2 s</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Console &amp;guide</source>
+        <translation>控制台指南(&amp;G)</translation>
+    </message>
+    <message>
+        <source>The console&apos;s documentation (docs/console.md)</source>
+        <translation>控制台文档（docs/console.md）</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>&amp;About HSMU Console</source>
+        <translation>关于 HSMU Console(&amp;A)</translation>
+    </message>
+    <message>
+        <source>%1: Start (after the pre-flight check)</source>
+        <translation>%1：开始（起飞前检查之后）</translation>
+    </message>
+    <message>
+        <source>%1: Pause</source>
+        <translation>%1：暂停</translation>
+    </message>
+    <message>
+        <source>%1: Resume</source>
+        <translation>%1：继续</translation>
+    </message>
+    <message>
+        <source>%1: Single step</source>
+        <translation>%1：单步</translation>
+    </message>
+    <message>
+        <source>%1: Stop (asks first)</source>
+        <translation>%1：停止（先确认）</translation>
+    </message>
+    <message>
+        <source>%1: Emergency hold (every window, always)</source>
+        <translation>%1：紧急保持（任何窗口，始终可用）</translation>
+    </message>
+    <message>
+        <source>%1: Add a note to the record</source>
+        <translation>%1：向记录添加备注</translation>
+    </message>
+    <message>
+        <source>%1: Open a configuration</source>
+        <translation>%1：打开配置</translation>
+    </message>
+    <message>
+        <source>%1: Copy the selected alarms and events</source>
+        <translation>%1：复制所选报警和事件</translation>
+    </message>
+    <message>
+        <source>%1: Console guide</source>
+        <translation>%1：控制台指南</translation>
+    </message>
+    <message>
+        <source>%1: Quit (asks first while a test runs)</source>
+        <translation>%1：退出（试验运行时先确认）</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>About HSMU Console</source>
+        <translation>关于 HSMU Console</translation>
+    </message>
+    <message>
+        <source>HSMU Console %1
+Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, EESD 2014).</source>
+        <translation>HSMU Console %1
+带在线模型更新的混合试验（Hashemi、Masroor 与 Mosqueda，EESD 2014）。</translation>
+    </message>
+    <message>
+        <source>Console guide</source>
+        <translation>控制台指南</translation>
+    </message>
+    <message>
+        <source>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</source>
+        <translation>指南为源码树中的 docs/console.md，安装后为 share/doc/hsmu/console.md。</translation>
     </message>
 </context>
 <context>
@@ -2017,10 +2135,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>变化 [%]</translation>
     </message>
     <message>
-        <source>Current and proposed values in the law&apos;s normalized units</source>
-        <translation>当前值和建议值均采用滞回模型的归一化单位</translation>
-    </message>
-    <message>
         <source>Apply updates:</source>
         <translation>应用更新：</translation>
     </message>
@@ -2045,12 +2159,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>拒绝</translation>
     </message>
     <message numerus="yes">
-        <source>%n update(s) waiting for a decision, oldest first.</source>
-        <translation>
-            <numerusform>%n 个更新等待决定，最早的在前。</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>%n newer proposal(s) were not queued (the queue holds %1); each is in the record.</source>
         <translation>
             <numerusform>%n 个较新的提议未入队（队列容量 %1）；每一个都已记录。</numerusform>
@@ -2059,6 +2167,28 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>, fit error %1</source>
         <translation>，拟合误差 %1</translation>
+    </message>
+    <message>
+        <source>Estimate now</source>
+        <translation>当前估计</translation>
+    </message>
+    <message>
+        <source>The target&apos;s current value, the proposed one, the estimator&apos;s value now and the change the proposal makes, in the law&apos;s normalized units</source>
+        <translation>目标的当前值、建议值、估计器的当前值以及该建议带来的变化，均为本构律的归一化单位</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n update(s) waiting for a decision.</source>
+        <translation>
+            <numerusform>%n 个更新等待决定。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>One proposal per target, renewed every %1 s of test time with the estimator&apos;s latest values (it replaces the one shown); Approve applies the values shown while they are current.</source>
+        <translation>每个目标一个建议，每隔 %1 s 试验时间用估计器的最新值更新（替换所显示的建议）；“批准”在其仍有效时应用所显示的值。</translation>
+    </message>
+    <message>
+        <source>: stale (older than %1 s), wait for the next proposal</source>
+        <translation>：已过期（超过 %1 s），请等待下一个建议</translation>
     </message>
 </context>
 <context>
@@ -2730,20 +2860,44 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 ms</translation>
     </message>
     <message>
-        <source>%1: %2 (%3) - %4</source>
-        <translation>%1: %2 (%3) - %4</translation>
-    </message>
-    <message>
         <source>last fault: %1</source>
         <translation>最近故障：%1</translation>
     </message>
     <message>
-        <source>sites: %1</source>
-        <translation>站点：%1</translation>
-    </message>
-    <message>
         <source> (faults: %1)</source>
         <translation> (故障：%1)</translation>
+    </message>
+    <message>
+        <source>connected, %1 ms</source>
+        <translation>已连接，%1 ms</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>link: %1</source>
+        <translation>链路：%1</translation>
+    </message>
+    <message>
+        <source>no link</source>
+        <translation>无链路</translation>
+    </message>
+    <message>
+        <source>(connects at start)</source>
+        <translation>（开始时连接）</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab</source>
+        <translation>内置虚拟实验室</translation>
+    </message>
+    <message>
+        <source>%1: built-in virtual lab</source>
+        <translation>%1：内置虚拟实验室</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
@@ -2788,20 +2942,16 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 步/s</translation>
     </message>
     <message>
-        <source>no link</source>
-        <translation>无链路</translation>
-    </message>
-    <message>
-        <source>link: %1</source>
-        <translation>链路：%1</translation>
-    </message>
-    <message>
         <source>not recording</source>
         <translation>未记录</translation>
     </message>
     <message>
         <source>recording: %1/%2</source>
         <translation>记录中：%1/%2</translation>
+    </message>
+    <message>
+        <source>%1, %2 left</source>
+        <translation>%1，剩余 %2</translation>
     </message>
 </context>
 <context>
@@ -2849,6 +2999,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>link fault (%1): reconnecting in %2 s (attempt %3 of %4)</source>
         <translation>链路故障（%1）：%2 s 后重新连接（第 %3 次，共 %4 次）</translation>
+    </message>
+    <message>
+        <source>the note was not kept: %1</source>
+        <translation>备注未保存：%1</translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied: the estimate has moved on and #%2 replaced it; check #%2 and approve it if it is right</source>
+        <translation>更新 #%1 未应用：估计已变化，#%2 已替换它；请检查 #%2，若正确则批准</translation>
+    </message>
+    <message>
+        <source>update #%1 was not applied: it is older than one proposal interval (%2 s) and no longer what the estimator believes; wait for the next proposal</source>
+        <translation>更新 #%1 未应用：它早于一个建议间隔（%2 s），已不是估计器的当前结果；请等待下一个建议</translation>
+    </message>
+    <message>
+        <source>update #%1 is no longer pending: #%2 replaced it</source>
+        <translation>更新 #%1 已不再待定：#%2 已替换它</translation>
     </message>
 </context>
 </TS>

@@ -117,6 +117,9 @@ struct UpdatingSpec {
     InspectorSettings inspector;
     ReporterPolicy policy = ReporterPolicy::EveryStep;
     int everyN = 10;
+    /// onApproval: test time [s] between two proposals for a target (each supersedes the one
+    /// still pending)
+    double proposalInterval = Reporter::kDefaultProposalInterval;
     std::vector<ReporterTarget> targets;
     /// Headless decision for the onApproval policy: "manual" (queue), "approveAll", "rejectAll".
     std::string approval = "manual";

@@ -188,7 +188,7 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     }
     if (c.has("reporter")) {
         const JsonCursor r = c.child("reporter");
-        r.allowOnly({"policy", "everyN", "targets"});
+        r.allowOnly({"policy", "everyN", "proposalInterval", "targets"});
         const std::string policy = r.string("policy", "everyStep");
         auto p = parseReporterPolicy(policy);
         if (!p)
@@ -197,6 +197,9 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
         u.everyN = r.integer("everyN", u.everyN);
         if (u.everyN < 1)
             r.fail("everyN", "expected at least 1");
+        u.proposalInterval = r.number("proposalInterval", u.proposalInterval);
+        if (!(u.proposalInterval >= 0.0))
+            r.fail("proposalInterval", "expected a time [s] of at least 0");
         if (r.has("targets")) {
             const JsonCursor ts = r.child("targets");
             for (std::size_t k = 0; k < ts.size(); ++k) {
@@ -290,6 +293,7 @@ std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
     auto aux = buildLaw(sp->material, where);
     std::unique_ptr<Identifier> identifier = buildIdentifier(u, *aux, cfg.analysis.dt, where);
     auto reporter = std::make_unique<Reporter>(u.targets, u.policy, u.everyN);
+    reporter->setProposalInterval(u.proposalInterval);
     auto updater = std::make_unique<ModelUpdater>(u.specimen, std::move(aux), std::move(identifier),
                                                   u.inspector, std::move(reporter));
     if (u.approval == "approveAll")

@@ -6,6 +6,7 @@
 #include "core/record/Hdf5Util.h"
 #include "core/record/RecordChecksum.h"
 #include "core/record/RecordData.h"
+#include "core/record/RecordError.h"
 #include "core/record/RecordSchema.h"
 
 #include <chrono>
@@ -235,7 +236,8 @@ void RecordWriter::Impl::createUpdating(hid_t root) {
     eventDecision = h5::Extendible(e.get(), "decision", i32, -1, w, chunk);
     std::vector<std::string> codes;
     for (UpdateDecision d : {UpdateDecision::Applied, UpdateDecision::Refused,
-                             UpdateDecision::Rejected, UpdateDecision::NotQueued})
+                             UpdateDecision::Rejected, UpdateDecision::NotQueued,
+                             UpdateDecision::Superseded})
         codes.emplace_back(updateDecisionName(d));
     h5::writeAttr(eventDecision.id(), "codes", codes, w);
     eventProposal = h5::Extendible(e.get(), "proposal", i32, -1, w, chunk);
@@ -520,6 +522,48 @@ bool RecordWriter::finish() {
         d.error = d.path + ": cannot be closed (HDF5: " + h5::errorText() + ")";
     }
     return !d.failed;
+}
+
+bool RecordWriter::appendNote(const std::string& path, double time, int step,
+                              const std::string& text, std::string* error) {
+    const h5::QuietErrors quiet;
+    try {
+        const h5::Id file = h5::check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), path,
+                                      "cannot be opened to add a note");
+        const auto appendRow = [&](const char* name, hid_t memType, const void* value) {
+            const h5::Id dset = h5::check(H5Dopen2(file.get(), name, H5P_DEFAULT), path,
+                                          std::string("has no ") + name);
+            const h5::Id space = h5::check(H5Dget_space(dset.get()), path, "no dataspace");
+            hsize_t rows = 0;
+            H5Sget_simple_extent_dims(space.get(), &rows, nullptr);
+            const hsize_t grown = rows + 1;
+            h5::check(H5Dset_extent(dset.get(), &grown), path, "cannot extend the notes");
+            const h5::Id fileSpace = h5::check(H5Dget_space(dset.get()), path, "no dataspace");
+            const hsize_t one = 1;
+            h5::check(H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, &rows, nullptr, &one,
+                                          nullptr),
+                      path, "cannot select the new note");
+            const h5::Id memSpace = h5::check(H5Screate_simple(1, &one, nullptr), path,
+                                              "no dataspace");
+            h5::check(H5Dwrite(dset.get(), memType, memSpace.get(), fileSpace.get(), H5P_DEFAULT,
+                               value),
+                      path, "cannot write the note");
+        };
+        std::vector<char> fixed;
+        putFixed(fixed, text, recordschema::kNoteChars);
+        const h5::Id noteType = h5::fixedStringType(recordschema::kNoteChars);
+        appendRow("/notes/time", H5T_NATIVE_DOUBLE, &time);
+        appendRow("/notes/step", H5T_NATIVE_INT, &step);
+        appendRow("/notes/text", noteType.get(), fixed.data());
+        if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
+            throw RecordError(path + ": the note could not be written (HDF5: " +
+                              h5::errorText() + ")");
+        return true;
+    } catch (const std::exception& e) {
+        if (error)
+            *error = e.what();
+        return false;
+    }
 }
 
 bool RecordWriter::ok() const {

@@ -79,6 +79,11 @@ public:
     bool flush();
     /// Flush and close the file. False if any write failed. Idempotent.
     bool finish();
+    /// Append one operator note to the /notes of the finished (closed) record at `path`: the
+    /// run has ended, the console still shows it and the operator adds a remark. False with
+    /// *error (naming the file) when it cannot be written.
+    static bool appendNote(const std::string& path, double time, int step,
+                           const std::string& text, std::string* error);
 
     bool ok() const;
     const std::string& error() const;

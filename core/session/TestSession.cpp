@@ -276,6 +276,11 @@ bool TestSession::addNote(const std::string& text) {
 bool TestSession::addNote(double time, int step, const std::string& text) {
     if (m_options.recordPath.empty() || (m_record && !m_record->ok()))
         return false;
+    if (m_record && m_finished) { // the run ended: the note is appended to the closed record
+        if (RecordWriter::appendNote(m_record->path(), time, step, text, &m_lastError))
+            return true;
+        return false;
+    }
     if (m_record)
         m_record->addNote(time, step, text);
     else // written when the record opens, at the first driven step

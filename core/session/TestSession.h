@@ -103,8 +103,9 @@ public:
     /// Attempts made for the current control fault (0 when none).
     int reconnectAttempts() const { return m_attempts; }
 
-    /// An operator note at the current step and test time (kept until the record opens).
-    /// False when this session records nothing or the record failed.
+    /// An operator note at the current step and test time (kept until the record opens;
+    /// after finish() appended to the closed record). False when this session records
+    /// nothing or the record failed (lastError() says why when a write failed).
     bool addNote(const std::string& text);
     bool addNote(double time, int step, const std::string& text);
     /// An update the operator approved (ok) or rejected between steps: written to

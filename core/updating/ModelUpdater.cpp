@@ -62,7 +62,8 @@ void ModelUpdater::report(std::vector<UpdateEvent>& events, std::vector<Alarm>& 
         if (ev.ok) {
             ++out.updatesThisStep;
             out.applied.push_back(std::move(ev));
-        } else if (ev.decision == UpdateDecision::Rejected) {
+        } else if (ev.decision == UpdateDecision::Rejected ||
+                   ev.decision == UpdateDecision::Superseded) {
             out.decided.push_back(std::move(ev));
         } else if (ev.decision == UpdateDecision::NotQueued) {
             if (!m_queueFullReported)

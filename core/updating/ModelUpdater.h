@@ -41,8 +41,9 @@ struct UpdatingSample {
     TrackingIndices tracking;        ///< inspector's last J1 [s], J2, J3 [-]
     bool updateRequested = false;    ///< inspector: fit error above its threshold
     std::vector<UpdateEvent> applied; ///< updates applied to targets at this step (ok ones)
-    /// Offers decided at this step without being applied: rejected (headless flag) or not
-    /// queued (approval queue full). Written to /updating/events with their decision.
+    /// Offers decided at this step without being applied: rejected (headless flag), not
+    /// queued (approval queue full) or superseded by a newer proposal. Written to
+    /// /updating/events with their decision.
     std::vector<UpdateEvent> decided;
 };
 

@@ -36,13 +36,15 @@ const char* updateDecisionName(UpdateDecision d)
     case UpdateDecision::Refused: return "refused";
     case UpdateDecision::Rejected: return "rejected";
     case UpdateDecision::NotQueued: return "notQueued";
+    case UpdateDecision::Superseded: return "superseded";
     }
     return "?";
 }
 
 Reporter::Reporter(std::vector<ReporterTarget> targets, ReporterPolicy policy, int everyN)
     : m_targets(std::move(targets)), m_policy(policy), m_everyN(everyN < 1 ? 1 : everyN),
-      m_lastForce(m_targets.size(), 0.0)
+      m_lastForce(m_targets.size(), 0.0),
+      m_lastProposal(m_targets.size(), std::numeric_limits<double>::quiet_NaN())
 {
 }
 
@@ -144,15 +146,27 @@ bool Reporter::dueNow(std::size_t i, int step, double force)
     return false;
 }
 
+namespace {
+constexpr double kTimeTolerance = 1e-6; // [s] test times are step x dt, within rounding
+} // namespace
+
 void Reporter::queueProposal(std::size_t i, int step, double time, std::vector<UpdateEvent>& events)
 {
-    const BoundTarget& b = m_bound[i];
-    if (static_cast<int>(m_pending.size()) >= m_maxPending) {
+    BoundTarget& b = m_bound[i];
+    b.offered = true;
+    // One proposal per interval: the pending one stays until the interval has passed.
+    if (!std::isnan(m_lastProposal[i]) &&
+        time - m_lastProposal[i] < m_proposalInterval - kTimeTolerance)
+        return;
+    const std::string& element = m_targets[i].element;
+    const auto old = std::find_if(m_pending.begin(), m_pending.end(),
+                                  [&](const UpdateProposal& p) { return p.element == element; });
+    if (old == m_pending.end() && static_cast<int>(m_pending.size()) >= m_maxPending) {
         ++m_notQueued;
         UpdateEvent& ev = events.emplace_back();
         ev.step = step;
         ev.time = time;
-        ev.element = m_targets[i].element;
+        ev.element = element;
         ev.parameters = b.names;
         ev.applied = b.values;
         ev.ok = false;
@@ -161,13 +175,55 @@ void Reporter::queueProposal(std::size_t i, int step, double time, std::vector<U
                      " proposals pending): not queued";
         return;
     }
-    UpdateProposal p{m_nextId++, step, time, m_targets[i].element, b.names, b.values, {},
-                     m_fitError};
+    UpdateProposal p{m_nextId++, step, time, element, b.names, b.values, {}, m_fitError};
     if (b.law)
         for (std::size_t k = 0; k < b.values.size(); ++k)
             p.current.push_back(b.lawIndex[k] >= 0 ? b.law->parameterValue(b.lawIndex[k])
                                                    : b.values[k]);
-    m_pending.push_back(std::move(p));
+    m_lastProposal[i] = time;
+    if (old == m_pending.end()) {
+        m_pending.push_back(std::move(p));
+        return;
+    }
+    // The newer estimate replaces the pending proposal in its place; the old one's fate is
+    // in the record.
+    UpdateEvent& ev = events.emplace_back();
+    ev.step = step;
+    ev.time = time;
+    ev.element = element;
+    ev.parameters = old->parameters;
+    ev.applied = old->proposed;
+    ev.ok = false;
+    ev.decision = UpdateDecision::Superseded;
+    ev.proposal = old->id;
+    ev.message = "superseded by proposal #";
+    ev.message += std::to_string(p.id); // appended: GCC 12 warns (-Wrestrict) on "..." + s
+    m_superseded.emplace_back(old->id, p.id);
+    if (m_superseded.size() > 256)
+        m_superseded.pop_front();
+    *old = std::move(p);
+}
+
+bool Reporter::stale(const UpdateProposal& p, double time, double interval)
+{
+    const double age = time - p.time;
+    return interval > 0.0 ? age >= interval - kTimeTolerance : age > kTimeTolerance;
+}
+
+std::optional<int> Reporter::supersededBy(int id) const
+{
+    for (const auto& [older, newer] : m_superseded)
+        if (older == id)
+            return newer;
+    return std::nullopt;
+}
+
+std::span<const double> Reporter::latestOffer(const std::string& element) const
+{
+    for (std::size_t i = 0; i < m_targets.size() && i < m_bound.size(); ++i)
+        if (m_targets[i].element == element && m_bound[i].offered)
+            return m_bound[i].values;
+    return {};
 }
 
 int Reporter::offer(int step, double time, std::span<const double> identified,
@@ -203,6 +259,8 @@ std::optional<UpdateEvent> Reporter::approve(int id, Structure& structure, int s
 {
     for (auto it = m_pending.begin(); it != m_pending.end(); ++it) {
         if (it->id == id) {
+            if (stale(*it, time))
+                return std::nullopt; // an old estimate: the next offer renews it
             UpdateProposal p = std::move(*it);
             m_pending.erase(it);
             // The target as it is now, its parameters resolved by name (an operator's

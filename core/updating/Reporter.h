@@ -7,11 +7,17 @@
 //   ZeroCrossing  apply at the first step where the target element's force changed sign
 //                 since the last committed step (no jump in force: the paper's choice);
 //   EveryNSteps   apply every N-th step;
-//   OnApproval    queue a proposal per target and offer, oldest first (a FIFO: nothing is
-//                 replaced); the operator approves or rejects each one. The queue holds at
-//                 most maxPending() proposals: an offer made while it is full is not queued and
-//                 comes back as an UpdateEvent with decision NotQueued (for the record), never
-//                 dropped silently.
+//   OnApproval    at most one proposal per target, renewed every proposalInterval() [s] of
+//                 test time: the first offer at least one interval after the target's last
+//                 proposal becomes a new proposal with the estimator's values of that step,
+//                 and it supersedes the one still pending for that target (which comes back
+//                 as an UpdateEvent with decision Superseded, for the record). The operator
+//                 approves or rejects the pending one; approve() refuses a proposal that is
+//                 no longer pending (superseded: supersededBy() names its successor) or stale
+//                 (made one interval or more before the approval: no offer renewed it), so
+//                 an approval always applies the estimate of less than one interval before.
+//                 The queue holds at most maxPending() proposals: an offer made while it is
+//                 full is not queued and comes back with decision NotQueued, never dropped.
 // Which: each target names its parameters (the paper sends all but A0 and deltaA); a value is
 // multiplied by the target's scale factor for that parameter (default 1) before it is set.
 // Applying keeps the target law's state (z, e for Bouc-Wen): only the parameters change.
@@ -58,7 +64,9 @@ struct UpdateProposal {
 /// What became of an offer: applied to the target, refused by its law (or not finite), rejected
 /// by the operator, or not queued (the approval queue was full). The record keeps the code
 /// (updateDecisionName(), language-neutral).
-enum class UpdateDecision { Applied, Refused, Rejected, NotQueued };
+/// Superseded: a newer proposal for the same target replaced it (OnApproval). New codes are
+/// appended: the record stores the index into the list of names.
+enum class UpdateDecision { Applied, Refused, Rejected, NotQueued, Superseded };
 const char* updateDecisionName(UpdateDecision d);
 
 struct UpdateEvent {
@@ -100,8 +108,28 @@ public:
               std::vector<UpdateEvent>& events);
 
     const std::deque<UpdateProposal>& pending() const { return m_pending; }
-    /// Apply a pending proposal (by id) now; nullopt if there is no such proposal.
+    /// Apply a pending proposal (by id) now; nullopt if there is no such proposal, or if it
+    /// is stale at `time` (it stays pending until an offer supersedes it).
     std::optional<UpdateEvent> approve(int id, Structure& structure, int step, double time);
+    /// OnApproval: test time [s] between two proposals for a target (> 0; default
+    /// kDefaultProposalInterval). 0 or less: every offer supersedes the pending proposal.
+    void setProposalInterval(double seconds) { m_proposalInterval = seconds > 0.0 ? seconds : 0.0; }
+    double proposalInterval() const { return m_proposalInterval; }
+    static constexpr double kDefaultProposalInterval = 2.0;
+    /// Whether `p` is one interval or more older than `time` [s] (approve() refuses it).
+    bool stale(const UpdateProposal& p, double time) const
+    {
+        return stale(p, time, m_proposalInterval);
+    }
+    /// The same for a proposal interval `interval` [s] (0: any step later is stale).
+    static bool stale(const UpdateProposal& p, double time, double interval);
+    /// The id of the proposal that superseded proposal `id` (the most recent ones are
+    /// remembered), or nullopt.
+    std::optional<int> supersededBy(int id) const;
+    /// The values of the latest offer to target element `element` (after scaling, in the
+    /// order of its proposals' parameters): what the estimator believes now, as the target
+    /// would take it. Empty before the first offer or for an unknown element.
+    std::span<const double> latestOffer(const std::string& element) const;
     bool reject(int id);
     /// Reject a pending proposal: its event (decision Rejected, the values it proposed) at
     /// `step`, `time`; nullopt if there is no such proposal.
@@ -130,6 +158,7 @@ private:
         ParameterLayout names;
         std::vector<int> identifiedIndex, lawIndex;
         std::vector<double> scale, values; // values: this step's, scaled (kept: no allocation)
+        bool offered = false;              // values hold an offer
     };
     /// Whether target i takes an offer now (ZeroCrossing: its force changed sign since the
     /// last offer); remembers the force.
@@ -146,6 +175,7 @@ private:
     ReporterPolicy m_policy;
     int m_everyN;
     std::vector<double> m_lastForce; // per target, committed force at the previous offer
+    std::vector<double> m_lastProposal; // per target, test time [s] of its last proposal (NaN: none)
     const Structure* m_boundStructure = nullptr;
     ParameterLayout m_identified;
     std::vector<BoundTarget> m_bound; // per target, after bind()
@@ -154,6 +184,8 @@ private:
     int m_applied = 0;
     int m_maxPending = kDefaultMaxPending;
     int m_notQueued = 0;
+    double m_proposalInterval = kDefaultProposalInterval;
+    std::deque<std::pair<int, int>> m_superseded; // (old id, new id), the most recent
     double m_fitError = std::numeric_limits<double>::quiet_NaN();
 };
 

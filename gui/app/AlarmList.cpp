@@ -4,8 +4,15 @@
 #include "gui/app/LiveText.h"
 #include "gui/app/OperatorEvent.h"
 
+#include <QAction>
+#include <QClipboard>
 #include <QDateTime>
+#include <QFile>
+#include <QFileDialog>
+#include <QGuiApplication>
 #include <QHeaderView>
+#include <QMenu>
+#include <QMessageBox>
 
 namespace hsmu::gui {
 
@@ -36,6 +43,14 @@ AlarmList::AlarmList(QWidget* parent) : QTreeWidget(parent) {
         acknowledge(item);
         notify();
     });
+    auto* copy = new QAction(this);
+    copy->setObjectName(QStringLiteral("copyAlarms"));
+    copy->setShortcut(QKeySequence::Copy);
+    copy->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    connect(copy, &QAction::triggered, this, &AlarmList::copyRows);
+    addAction(copy);
+    setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(this, &QWidget::customContextMenuRequested, this, &AlarmList::showMenu);
     // Headers, severities, kinds, acknowledgements and every message again in the new
     // language (an alarm from its code or English text, a console message from its data).
     LiveText::bind(this, [this] {
@@ -46,6 +61,66 @@ AlarmList::AlarmList(QWidget* parent) : QTreeWidget(parent) {
         if (m_unacknowledged > 0)
             notify(); // the banner's latest message, retranslated
     });
+}
+
+QString AlarmList::rowsText(QChar separator, bool selectedOnly) const {
+    const auto field = [separator](QString text) {
+        text.replace(QLatin1Char('\n'), QLatin1Char(' '));
+        if (separator == QLatin1Char(',') &&
+            (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"'))))
+            text = QLatin1Char('"') + text.replace(QLatin1String("\""), QLatin1String("\"\"")) +
+                   QLatin1Char('"');
+        return text;
+    };
+    QStringList lines, cells;
+    for (int c = 0; c < ColumnCount; ++c)
+        cells << field(headerItem()->text(c));
+    lines << cells.join(separator);
+    const bool some = selectedOnly && !selectedItems().isEmpty();
+    for (int i = 0; i < topLevelItemCount(); ++i) {
+        const QTreeWidgetItem* item = topLevelItem(i);
+        if (some && !item->isSelected())
+            continue;
+        cells.clear();
+        for (int c = 0; c < ColumnCount; ++c)
+            cells << field(item->text(c));
+        lines << cells.join(separator);
+    }
+    return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+void AlarmList::copyRows() {
+    QGuiApplication::clipboard()->setText(rowsText());
+}
+
+bool AlarmList::exportCsv(const QString& path, QString* error) const {
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text) ||
+        file.write(rowsText(QLatin1Char(','), false).toUtf8()) < 0) {
+        if (error)
+            *error = tr("%1: cannot be written (%2)").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+void AlarmList::showMenu(const QPoint& at) {
+    auto* menu = new QMenu(this);
+    menu->setAttribute(Qt::WA_DeleteOnClose);
+    menu->addAction(selectedItems().isEmpty() ? tr("Copy the list") : tr("Copy selected rows"),
+                    this, &AlarmList::copyRows);
+    menu->addAction(tr("Export the list as CSV..."), this, &AlarmList::exportWithDialog);
+    menu->popup(viewport()->mapToGlobal(at));
+}
+
+void AlarmList::exportWithDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export alarms and events"),
+                                                      QString(), tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!exportCsv(path, &error))
+        QMessageBox::warning(this, tr("Export alarms and events"), error);
 }
 
 void AlarmList::retranslate(QTreeWidgetItem* item) {
@@ -122,14 +197,14 @@ QString AlarmList::describe(AlarmSeverity severity) {
     return {};
 }
 
-void AlarmList::addAlarm(const Alarm& alarm) {
+void AlarmList::addAlarm(const Alarm& alarm, bool acknowledged) {
     QStringList args;
     for (const std::string& a : alarm.args)
         args << QString::fromStdString(a);
     const QString english = QString::fromStdString(alarm.message);
     QTreeWidgetItem* item =
         add(QString::number(alarm.time, 'f', 2), QString::number(alarm.step), alarm.severity,
-            describe(alarm.kind), AlarmText::describe(alarm.code, args, english));
+            describe(alarm.kind), AlarmText::describe(alarm.code, args, english), acknowledged);
     item->setData(Kind, kKindRole, int(alarm.kind));
     item->setData(Message, kCodeRole, QString::fromStdString(alarm.code));
     item->setData(Message, kArgsRole, args);
@@ -142,6 +217,13 @@ void AlarmList::addMessage(const QString& text, AlarmSeverity severity) {
 
 void AlarmList::addMessage(std::function<QString()> render, AlarmSeverity severity) {
     QTreeWidgetItem* item = add(QString(), QString(), severity, tr("console"), render());
+    m_renders[item] = std::move(render);
+}
+
+void AlarmList::addMessage(double time, int step, std::function<QString()> render,
+                           AlarmSeverity severity) {
+    QTreeWidgetItem* item = add(QString::number(time, 'f', 2), QString::number(step), severity,
+                                tr("console"), render());
     m_renders[item] = std::move(render);
 }
 
@@ -159,7 +241,7 @@ void AlarmList::addEvent(const OperatorEvent& event) {
 
 QTreeWidgetItem* AlarmList::add(const QString& time, const QString& step,
                                 AlarmSeverity severity, const QString& kind,
-                                const QString& text) {
+                                const QString& text, bool acknowledged) {
     auto* item = new QTreeWidgetItem(this);
     item->setText(Time, time);
     item->setText(Step, step);
@@ -182,7 +264,10 @@ QTreeWidgetItem* AlarmList::add(const QString& time, const QString& step,
     scrollToItem(item);
     if (critical) {
         ++m_unacknowledged;
-        notify();
+        if (acknowledged)
+            acknowledge(item); // the operator's own doing: no banner
+        else
+            notify();
     }
     return item;
 }

@@ -5,6 +5,8 @@
 // (language-neutral) text, a console message from the data it was made of.
 // A critical alarm stays highlighted (red) until acknowledged; attentionChanged() reports how
 // many critical alarms are unacknowledged so the window can demand attention.
+// The list can be copied (Ctrl+C: the selected rows, or all, as tab-separated text with the
+// header) and exported as CSV (its context menu), as shown, in the current language.
 // Thread rules: GUI thread only.
 
 #include "core/util/Alarm.h"
@@ -25,12 +27,17 @@ public:
 
     explicit AlarmList(QWidget* parent = nullptr);
 
-    void addAlarm(const Alarm& alarm);
+    /// acknowledged: the operator caused it (a Stop's hold): listed as acknowledged at once,
+    /// no attention demanded.
+    void addAlarm(const Alarm& alarm, bool acknowledged = false);
     /// A console message that is not a test alarm (e.g. a configuration error), fixed text.
     void addMessage(const QString& text, AlarmSeverity severity);
     /// A console message made by render() now and again at each language change (render
     /// keeps the language-neutral data and calls tr() / AlarmText each time).
     void addMessage(std::function<QString()> render, AlarmSeverity severity);
+    /// The same at test time `time` [s] and step `step` (e.g. "test finished").
+    void addMessage(double time, int step, std::function<QString()> render,
+                    AlarmSeverity severity);
     /// An operator action at test time `time` [s] and step `step` (kind "operator").
     void addEvent(double time, int step, const QString& text);
     /// An operator event, shown with its time and step and retranslated at each language
@@ -46,16 +53,26 @@ public:
     static QString describe(AlarmKind kind);
     static QString describe(AlarmSeverity severity);
 
+    /// The rows (the selected ones, or every one if none is selected) with the header line,
+    /// columns separated by `separator`; a CSV field is quoted when it must be.
+    QString rowsText(QChar separator = QLatin1Char('\t'), bool selectedOnly = true) const;
+    /// Copy rowsText() to the clipboard.
+    void copyRows();
+    /// Write every row as CSV (UTF-8) to path; false and *error naming the file on failure.
+    bool exportCsv(const QString& path, QString* error = nullptr) const;
+
 signals:
     /// count: unacknowledged critical alarms; latest: the newest one's text (empty if none).
     void attentionChanged(int count, const QString& latest);
 
 private:
     QTreeWidgetItem* add(const QString& time, const QString& step, AlarmSeverity severity,
-                         const QString& kind, const QString& text);
+                         const QString& kind, const QString& text, bool acknowledged = false);
     void retranslate(QTreeWidgetItem* item);
     void acknowledge(QTreeWidgetItem* item);
     void notify();
+    void showMenu(const QPoint& at);
+    void exportWithDialog();
 
     int m_unacknowledged = 0;
     std::unordered_map<const QTreeWidgetItem*, std::function<QString()>> m_renders;

@@ -46,6 +46,17 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(parent) {
     addSeparator(); // Stop ends the test: apart from Resume (and it asks first)
     m_stop = addAction(QString(), this, &ControlBar::stopRequested);
     m_stop->setObjectName(QStringLiteral("stopTest"));
+    // Keys for the run (docs/console.md, "Keyboard shortcuts"): the same requests as the
+    // buttons, so Start still shows the pre-flight check and Stop still asks.
+    m_start->setObjectName(QStringLiteral("startTest"));
+    m_pause->setObjectName(QStringLiteral("pauseTest"));
+    m_step->setObjectName(QStringLiteral("singleStep"));
+    m_resume->setObjectName(QStringLiteral("resumeTest"));
+    m_start->setShortcut(QKeySequence(Qt::Key_F5));
+    m_pause->setShortcut(QKeySequence(Qt::Key_F6));
+    m_resume->setShortcut(QKeySequence(Qt::Key_F7));
+    m_step->setShortcut(QKeySequence(Qt::Key_F10));
+    m_stop->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
     addSeparator();
     const QKeySequence holdKey = emergencyHoldShortcut();
     m_hold = addAction(QString(), this, &ControlBar::emergencyHoldRequested);
@@ -82,13 +93,21 @@ ControlBar::ControlBar(QWidget* parent) : QToolBar(parent) {
         m_presets->setToolTip(tr("Test configurations shipped with the console"));
         m_presets->setItemText(0, tr("(choose a preset)"));
         m_open->setText(tr("Open configuration..."));
+        const auto keyOf = [](const QAction* a) {
+            return a->shortcut().toString(QKeySequence::NativeText);
+        };
         m_start->setText(tr("Start"));
+        m_start->setToolTip(tr("Start the test after the pre-flight check (%1)").arg(keyOf(m_start)));
         m_pause->setText(tr("Pause"));
+        m_pause->setToolTip(tr("Pause between two steps (%1)").arg(keyOf(m_pause)));
         m_step->setText(tr("Single step"));
-        m_step->setToolTip(tr("Run exactly one integration step, then stay paused"));
+        m_step->setToolTip(
+            tr("Run exactly one integration step, then stay paused (%1)").arg(keyOf(m_step)));
         m_resume->setText(tr("Resume"));
+        m_resume->setToolTip(tr("Continue the test (%1)").arg(keyOf(m_resume)));
         m_stop->setText(tr("Stop..."));
-        m_stop->setToolTip(tr("End the test, keeping the data (asks for confirmation)"));
+        m_stop->setToolTip(
+            tr("End the test, keeping the data (asks for confirmation; %1)").arg(keyOf(m_stop)));
         const QString key = holdKey.toString(QKeySequence::NativeText);
         m_hold->setText(tr("Emergency hold (%1)").arg(key));
         m_hold->setToolTip(tr("Hold the test at once, between two steps (%1)").arg(key));

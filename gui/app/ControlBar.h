@@ -1,6 +1,7 @@
 #pragma once
 // ControlBar: the operator's tool bar: preset selector, "Open configuration...", Start,
-// Pause, Single step, Resume, Stop, Emergency hold (Ctrl+H, shown on the button; application-
+// Pause, Single step, Resume, Stop (keys F5, F6, F10, F7, Shift+F5, in the tool tips), Emergency
+// hold (Ctrl+H, shown on the button; application-
 // wide and never disabled; a chord, so it cannot be typed by accident into a table or a field,
 // unlike Esc) and the pacing: test speed relative to real time from 1/100 x up to as fast
 // as possible, or a fixed wall time per step [s] (pseudo-dynamic tests). It only emits requests; MainWindow
@@ -10,6 +11,7 @@
 #include "gui/app/RunState.h"
 
 #include <QKeySequence>
+#include <QList>
 #include <QToolBar>
 
 class QAction;
@@ -35,6 +37,9 @@ public:
     double wallTimePerStep() const;
     void setWallTimePerStep(double seconds);
     QAction* emergencyHoldAction() const { return m_hold; }
+    /// Start (F5), Pause (F6), Resume (F7), Single step (F10), Stop... (Shift+F5): the
+    /// window adds them so that their keys work while the bar is hidden.
+    QList<QAction*> runActions() const { return {m_start, m_pause, m_resume, m_step, m_stop}; }
     /// The shortcut of the emergency hold.
     static QKeySequence emergencyHoldShortcut();
 

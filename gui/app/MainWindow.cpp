@@ -18,6 +18,7 @@
 #include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
 #include "gui/app/TestStatusBar.h"
+#include "gui/app/TestWorker.h"
 #include "gui/app/WheelGuard.h"
 #include "gui/plots/LivePlotsPanel.h"
 
@@ -25,13 +26,18 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QGuiApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QDir>
 #include <QMessageBox>
+#include <QScreen>
 #include <QScrollArea>
+#include <QShowEvent>
+#include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace hsmu::gui {
@@ -49,6 +55,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     m_controls = new ControlBar(this);
     addToolBar(Qt::TopToolBarArea, m_controls);
     addAction(m_controls->emergencyHoldAction()); // shortcut alive even if the bar is hidden
+    addActions(m_controls->runActions());         // F5, F6, F7, F10, Shift+F5 too
 
     // Centre: the attention banner over the plot area.
     auto* centre = new QWidget(this);
@@ -102,7 +109,8 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
         restoreGeometry(g);
     if (const QByteArray s = ConsoleSettings::windowState(); !s.isEmpty())
         restoreState(s);
-    WheelGuard::install(this); // no value changes by scrolling over a field
+    fitToScreen(); // the designed or remembered size, never beyond the screen
+    WheelGuard::install(); // no value changes by scrolling over a field (every window)
     // Live language switching (Translations::install): every piece retranslates itself on
     // QEvent::LanguageChange (LiveText, changeEvent); here the window's own texts.
     LiveText::bind(this, [this, pending] {
@@ -112,7 +120,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
         m_alarmDock->setWindowTitle(tr("Alarms and events"));
         showTitle();
         if (m_controller->hasTest())
-            showLinkState(m_linkConnected, m_linkFault);
+            showLink();
         // Plot titles are set when a test is configured: again now if no data would be lost.
         if (m_controller->hasTest() && !active(m_controller->state()) &&
             m_controller->state() != RunState::Finished &&
@@ -130,6 +138,45 @@ void MainWindow::showTitle() {
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::fitToScreen() {
+    const QScreen* s = screen() ? screen() : QGuiApplication::primaryScreen();
+    if (!s)
+        return;
+    const QRect available = s->availableGeometry();
+    // The window system's frame (title bar, borders) once shown; before, a usual one.
+    QMargins frame(frameGeometry().left() - geometry().left(),
+                   geometry().top() - frameGeometry().top(),
+                   frameGeometry().right() - geometry().right(),
+                   frameGeometry().bottom() - geometry().bottom());
+    if (!isVisible() || frame.isNull())
+        frame = QMargins(4, 32, 4, 4);
+    const QSize room = available.size().shrunkBy(frame).expandedTo(QSize(320, 240));
+    if (isMaximized() || isFullScreen())
+        return; // the window system keeps it on the screen
+    const QSize size = this->size().boundedTo(room);
+    if (size != this->size())
+        resize(size);
+    m_fittedSize = size;
+    const QSize outer = size.grownBy(frame);
+    const QPoint at = frameGeometry().topLeft();
+    const QPoint inside(
+        std::clamp(at.x(), available.left(), std::max(available.left(), available.right() + 1 - outer.width())),
+        std::clamp(at.y(), available.top(), std::max(available.top(), available.bottom() + 1 - outer.height())));
+    if (inside != at)
+        move(inside);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (!m_fittedOnShow) { // again with the real frame, once the window system placed it
+        m_fittedOnShow = true;
+        QTimer::singleShot(0, this, [this] {
+            if (size() == m_fittedSize) // not a size someone chose since (resize, -geometry)
+                fitToScreen();
+        });
+    }
+}
 
 QDockWidget* MainWindow::addDock(QWidget* panel, const QString& title, const QString& name,
                                  Qt::DockWidgetArea area) {
@@ -309,6 +356,7 @@ void MainWindow::requestRun(RunRequest request) {
     if (m_controller->state() != RunState::Ready)
         return;
     if (!m_confirmBeforeStart) {
+        m_controller->skipPreflight(); // recorded: no pre-flight dialog was shown
         request == RunRequest::Start ? m_controller->start() : m_controller->singleStep();
         return;
     }
@@ -321,7 +369,8 @@ void MainWindow::requestRun(RunRequest request) {
 }
 
 void MainWindow::showPreflight(const PreflightReport& report) {
-    showLinkState(true, false);
+    m_status->link()->refresh(); // prepared: the monitor has every site's state
+    m_status->clearMessage();     // "testing the link..." / "preparing..." is answered
     if (m_pendingRun == RunRequest::None && !m_preflight) { // Test link
         const QString where = QString::fromStdString(m_controller->controllerAddress().toString());
         m_alarms->addMessage(
@@ -392,39 +441,43 @@ void MainWindow::onTestLoaded() {
     m_status->setRecordingFile(QString());
     m_parameters->setSnapshot({});
     m_pending->setSnapshot({});
-    showLinkState(false, false);
+    showLink();
     m_pendingRun = RunRequest::None;
     m_setupDock->raise();
 }
 
-void MainWindow::showLinkState(bool connected, bool fault) {
-    m_status->setSites(m_controller->siteMonitor()); // per-site health (sites)
-    m_setup->setSiteMonitor(m_controller->siteMonitor());
-    m_linkConnected = connected;
-    m_linkFault = fault;
-    const comms::LinkAddress& a = m_controller->controllerAddress();
-    if (a.kind == comms::LinkAddress::Kind::Builtin) {
-        m_status->setLink(tr("built-in virtual lab"), true);
-        return;
+void MainWindow::showLink() {
+    const std::shared_ptr<const SiteMonitor> monitor = m_controller->siteMonitor();
+    m_setup->setSiteMonitor(monitor);
+    const TestConfig& cfg = m_controller->config();
+    QList<SiteHealthLabel::Site> sites;
+    for (const SiteSpec& s : cfg.sites)
+        sites.push_back({QString::fromStdString(s.name), QString::fromStdString(s.address),
+                         false, QString()});
+    const bool unsited = std::any_of(cfg.elements.begin(), cfg.elements.end(),
+                                     [](const ElementSpec& e) {
+                                         return e.experimental && e.site.empty();
+                                     });
+    if (unsited || sites.isEmpty()) { // the site "controller": the controller of the setup
+        const comms::LinkAddress& a = m_controller->controllerAddress();
+        SiteHealthLabel::Site site{QString::fromLatin1(kDefaultSiteName),
+                                   QString::fromStdString(a.toString()),
+                                   a.kind == comms::LinkAddress::Kind::Builtin, QString()};
+        if (a.kind == comms::LinkAddress::Kind::SimApp ||
+            a.kind == comms::LinkAddress::Kind::GenericTcp) {
+            // What the client sends in OpenFresco's sizes header (checked at connect).
+            const LinkSpec& spec = cfg.link;
+            const auto list = [](const std::array<int, 5>& v) {
+                return QStringLiteral("%1 %2 %3 %4 %5")
+                    .arg(v[0]).arg(v[1]).arg(v[2]).arg(v[3]).arg(v[4]);
+            };
+            site.detail = tr("(dataSize %1; ctrl sizes %2; daq sizes %3)")
+                              .arg(spec.dataSize)
+                              .arg(list(spec.ctrlSizes), list(spec.daqSizes));
+        }
+        sites.push_back(site);
     }
-    QString where = QString::fromStdString(a.toString());
-    if (a.kind == comms::LinkAddress::Kind::SimApp ||
-        a.kind == comms::LinkAddress::Kind::GenericTcp) {
-        // What the client sends in OpenFresco's sizes header (the server checks it at connect).
-        const LinkSpec& spec = m_controller->config().link;
-        const auto list = [](const std::array<int, 5>& v) {
-            return QStringLiteral("%1 %2 %3 %4 %5").arg(v[0]).arg(v[1]).arg(v[2]).arg(v[3]).arg(v[4]);
-        };
-        where += tr(" (dataSize %1; ctrl sizes %2; daq sizes %3)")
-                     .arg(spec.dataSize)
-                     .arg(list(spec.ctrlSizes), list(spec.daqSizes));
-    }
-    if (fault)
-        m_status->setLink(tr("%1 fault").arg(where), false);
-    else
-        m_status->setLink(connected ? tr("%1 connected").arg(where)
-                                    : tr("%1 (connects at start)").arg(where),
-                          true);
+    m_status->setLink(sites, monitor);
 }
 
 void MainWindow::onStateChanged(RunState state, const QString& message) {
@@ -438,8 +491,6 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
     m_pending->setNextRunPolicyEditable(state == RunState::Stopped ||
                                         state == RunState::Finished ||
                                         state == RunState::Failed);
-    if (state == RunState::Running || state == RunState::Paused)
-        showLinkState(true, false);
     if (state == RunState::Running && !m_setupDock->isFloating())
         m_parametersDock->raise(); // the setup is read-only now
     if (state != RunState::Ready) {
@@ -447,6 +498,17 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
         if (m_preflight)
             m_preflight->reject(); // e.g. held from the dialog: nothing may start from it
     }
+    if (state == RunState::Finished) {
+        const auto [step, time] = m_lastProgress;
+        m_alarms->addMessage(
+            time, step,
+            [step, time] {
+                return tr("test finished: %1 steps, t = %2 s").arg(step).arg(time, 0, 'f', 2);
+            },
+            AlarmSeverity::Info);
+    }
+    if (message.isEmpty() && (state == RunState::Running || state == RunState::Paused))
+        m_status->clearMessage(); // a hold's reason is over once the test moves again
     if (!message.isEmpty()) {
         // A hold's or a failure's reason from core (English, language-neutral): translated
         // when it is one of core's fixed texts (core/util/ReasonText).
@@ -462,9 +524,12 @@ void MainWindow::onStateChanged(RunState state, const QString& message) {
 }
 
 void MainWindow::onAlarm(const Alarm& alarm) {
-    m_alarms->addAlarm(alarm);
+    // The hold of the operator's own Stop needs no attention (no red banner).
+    const bool ownStop = alarm.kind == AlarmKind::OperatorHold && !alarm.args.empty() &&
+                         alarm.args.front() == TestWorker::kStopReason;
+    m_alarms->addAlarm(alarm, ownStop);
     if (alarm.kind == AlarmKind::ControlFault)
-        showLinkState(false, true);
+        m_status->link()->refresh(); // the monitor has the fault already
 }
 
 void MainWindow::onAttention(int count, const QString& latest) {

@@ -79,6 +79,8 @@ public:
     PreflightDialog* preflightDialog() const { return m_preflight; }
     /// The Stop / Quit confirmation while it is open, else nullptr.
     QMessageBox* confirmation() const { return m_confirmation; }
+    /// Every keyboard shortcut of the console, one per line (Help > Keyboard shortcuts).
+    static QString shortcutsText();
 
 public slots:
     /// Start the loaded test (unapplied setup edits are applied first; a finished or stopped
@@ -93,15 +95,22 @@ public slots:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     enum class RunRequest { None, Start, SingleStep };
+    /// Keep the whole window (its frame too) inside the screen's available geometry: the
+    /// designed 1500x920 or the remembered geometry, shrunk and moved as needed.
+    void fitToScreen();
     QDockWidget* addDock(QWidget* panel, const QString& title, const QString& name,
                          Qt::DockWidgetArea area);
     void buildMenus();
     void rebuildRecentMenu();
     /// Ask for an operator note and queue it to the worker (recorded at the current step).
     void askForNote();
+    void showShortcuts();
+    void showAbout();
+    void openGuide();
     void wireController();
     void requestRun(RunRequest request);
     void showPreflight(const PreflightReport& report);
@@ -111,7 +120,9 @@ private:
     void onStateChanged(RunState state, const QString& message);
     void onAlarm(const Alarm& alarm);
     void onAttention(int count, const QString& latest);
-    void showLinkState(bool connected, bool fault);
+    /// The link label's sites (the configuration's, the setup's controller for the rest) and
+    /// the test's SiteMonitor: the one source of the link state shown.
+    void showLink();
     /// "HSMU Console - <test>" (or without a test), in the current language.
     void showTitle();
     /// The updating policy chosen in the Pending updates panel: the one setting, kept for
@@ -147,7 +158,9 @@ private:
     PreflightDialog* m_preflight = nullptr;
     QMessageBox* m_confirmation = nullptr;
     bool m_closeConfirmed = false;
-    bool m_linkConnected = false, m_linkFault = false; ///< the link state shown last
+    bool m_fittedOnShow = false;
+    QSize m_fittedSize; ///< the size fitToScreen() chose last
+    std::pair<int, double> m_lastProgress{0, 0.0}; ///< step, test time [s] last reported
     std::optional<std::pair<ReporterPolicy, int>> m_policyChoice;
 };
 

@@ -14,16 +14,23 @@
 #include "gui/app/TestController.h"
 #include "gui/app/TestStatusBar.h"
 #include "gui/app/TestWorker.h"
+#include "gui/plots/HistoryPlot.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/replay/ReplayWindow.h"
 
+#include "core/Version.h"
+
 #include <QAction>
+#include <QCoreApplication>
+#include <QDesktopServices>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QUrl>
 
 namespace hsmu::gui {
 
@@ -48,6 +55,14 @@ void MainWindow::buildMenus() {
     m_viewMenu = menuBar()->addMenu(QString());
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         m_viewMenu->addAction(dock->toggleViewAction());
+    QMenu* help = menuBar()->addMenu(QString());
+    help->setObjectName(QStringLiteral("helpMenu"));
+    QAction* guide = help->addAction(QString(), this, &MainWindow::openGuide);
+    guide->setShortcut(QKeySequence::HelpContents);
+    QAction* keys = help->addAction(QString(), this, &MainWindow::showShortcuts);
+    keys->setObjectName(QStringLiteral("showShortcuts"));
+    help->addSeparator();
+    QAction* about = help->addAction(QString(), this, &MainWindow::showAbout);
     LiveText::bind(menuBar(), [=, this] {
         file->setTitle(tr("&File"));
         open->setText(tr("&Open configuration..."));
@@ -59,7 +74,58 @@ void MainWindow::buildMenus() {
         quit->setText(tr("&Quit"));
         quit->setToolTip(tr("Quit the console (asks first while a test runs)"));
         m_viewMenu->setTitle(tr("&View"));
+        help->setTitle(tr("&Help"));
+        guide->setText(tr("Console &guide"));
+        guide->setToolTip(tr("The console's documentation (docs/console.md)"));
+        keys->setText(tr("&Keyboard shortcuts"));
+        about->setText(tr("&About HSMU Console"));
     });
+}
+
+QString MainWindow::shortcutsText() {
+    const auto key = [](const QKeySequence& k) { return k.toString(QKeySequence::NativeText); };
+    const QStringList rows{
+        tr("%1: Start (after the pre-flight check)").arg(key(QKeySequence(Qt::Key_F5))),
+        tr("%1: Pause").arg(key(QKeySequence(Qt::Key_F6))),
+        tr("%1: Resume").arg(key(QKeySequence(Qt::Key_F7))),
+        tr("%1: Single step").arg(key(QKeySequence(Qt::Key_F10))),
+        tr("%1: Stop (asks first)").arg(key(QKeySequence(Qt::SHIFT | Qt::Key_F5))),
+        tr("%1: Emergency hold (every window, always)")
+            .arg(key(ControlBar::emergencyHoldShortcut())),
+        tr("%1: Add a note to the record").arg(key(QKeySequence(Qt::CTRL | Qt::Key_N))),
+        tr("%1: Open a configuration").arg(key(QKeySequence::Open)),
+        tr("%1: Copy the selected alarms and events").arg(key(QKeySequence::Copy)),
+        tr("%1: Console guide").arg(key(QKeySequence::HelpContents)),
+        tr("%1: Quit (asks first while a test runs)").arg(key(QKeySequence::Quit)),
+    };
+    return rows.join(QLatin1Char('\n'));
+}
+
+void MainWindow::showShortcuts() {
+    QMessageBox::information(this, tr("Keyboard shortcuts"), shortcutsText());
+}
+
+void MainWindow::showAbout() {
+    QMessageBox::about(
+        this, tr("About HSMU Console"),
+        tr("HSMU Console %1\nHybrid simulation with online model updating (Hashemi, Masroor & "
+           "Mosqueda, EESD 2014).")
+            .arg(QString::fromLatin1(hsmu::versionString())));
+}
+
+void MainWindow::openGuide() {
+    // Installed: PREFIX/share/doc/hsmu; in a build tree: the source tree's docs.
+    const QDir bin(QCoreApplication::applicationDirPath());
+    for (const QString& candidate :
+         {bin.filePath(QStringLiteral("../share/doc/hsmu/console.md")),
+          bin.filePath(QStringLiteral("../../docs/console.md"))})
+        if (QFileInfo::exists(candidate)) {
+            QDesktopServices::openUrl(QUrl::fromLocalFile(QFileInfo(candidate).canonicalFilePath()));
+            return;
+        }
+    QMessageBox::information(this, tr("Console guide"),
+                             tr("The guide is docs/console.md of the source tree, installed as "
+                                "share/doc/hsmu/console.md."));
 }
 
 void MainWindow::askForNote() {
@@ -141,11 +207,26 @@ void MainWindow::wireController() {
             });
     connect(m_controller, &TestController::stateChanged, this, &MainWindow::onStateChanged);
     connect(m_controller, &TestController::progress, m_status, &TestStatusBar::setProgress);
+    connect(m_controller, &TestController::progress, this,
+            [this](int step, int, double time, double) { m_lastProgress = {step, time}; });
     connect(m_controller, &TestController::alarmRaised, this, &MainWindow::onAlarm);
     connect(m_controller, &TestController::updatingChanged, m_parameters,
             &ParametersPanel::setSnapshot);
     connect(m_controller, &TestController::updatingChanged, m_pending,
             &PendingUpdatesPanel::setSnapshot);
+    // The plots draw the bounds and the threshold in force (an accepted edit redraws them).
+    connect(m_controller, &TestController::updatingChanged, m_plots,
+            [this](const UpdatingSnapshot& s) {
+                if (!s.enabled)
+                    return;
+                for (const ParameterState& p : s.parameters)
+                    m_plots->setParameterBounds(QString::fromStdString(p.name), p.bounds.lower,
+                                                p.bounds.upper);
+                if (s.fitThreshold > 0.0 && s.fitThreshold != m_plots->fitError().threshold()) {
+                    m_plots->fitError().setThreshold(s.fitThreshold);
+                    m_plots->refresh();
+                }
+            });
     connect(m_controller, &TestController::commandRefused, this,
             [this](const QString&, const QString& source, const QStringList& args) {
                 // Redrawn from the template in a new language, as the other entries.

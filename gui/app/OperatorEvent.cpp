@@ -74,6 +74,9 @@ QString OperatorEvent::describe() const {
     QString what;
     if (is(action, kPreflightConfirmed))
         what = tr("pre-flight confirmed by the operator (zero offsets)");
+    else if (is(action, kPreflightSkipped))
+        what = tr("pre-flight check skipped: the test was started from the command line "
+                  "(--start)");
     else if (is(action, kStart))
         what = tr("test started by the operator");
     else if (is(action, kPause))
@@ -102,6 +105,8 @@ QString OperatorEvent::describe() const {
         what = tr("fit-error threshold changed: %1 -> %2").arg(o, n);
     else if (is(action, kPolicy))
         what = tr("updating policy changed: %1 -> %2").arg(policyText(o), policyText(n));
+    else if (is(action, kNote))
+        what = tr("note recorded: %1").arg(n);
     else
         what = QString::fromStdString(action);
     return tr("%1 (wall time %2)").arg(what, wallTime);

@@ -24,6 +24,8 @@ struct OperatorEvent {
 public:
     // Action keys (language-neutral; the record's vocabulary).
     static constexpr const char* kPreflightConfirmed = "preflight-confirmed";
+    /// Started without the pre-flight dialog (hsmu --start).
+    static constexpr const char* kPreflightSkipped = "preflight-skipped";
     static constexpr const char* kStart = "start";
     static constexpr const char* kPause = "pause";
     static constexpr const char* kSingleStep = "single-step";
@@ -36,6 +38,9 @@ public:
     static constexpr const char* kLock = "lock";
     static constexpr const char* kThreshold = "fit-threshold";
     static constexpr const char* kPolicy = "updating-policy";
+    /// An operator note (newValue: its text): shown in the event list; the record keeps the
+    /// note itself in /notes, not as an operator-event row.
+    static constexpr const char* kNote = "note";
 
     int step = 0;
     double time = 0.0;  ///< test time [s]

@@ -8,10 +8,10 @@
 namespace hsmu::gui {
 
 namespace {
-QString number(double v) {
+QString number(double v, int digits = 5) {
     if (std::isinf(v))
         return v > 0 ? QStringLiteral("+inf") : QStringLiteral("-inf");
-    return QString::number(v, 'g', 5);
+    return QString::number(v, 'g', digits);
 }
 } // namespace
 
@@ -59,8 +59,8 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
             return QString::fromStdString(p.name);
         case Value:
             return role == Qt::EditRole ? QVariant(p.value) : QVariant(number(p.value));
-        case Sigma:
-            return number(p.sigma);
+        case Sigma: // an uncertainty: three significant digits are all it has
+            return number(p.sigma, 3);
         case Lower:
             return role == Qt::EditRole ? QVariant(p.bounds.lower)
                                         : QVariant(number(p.bounds.lower));

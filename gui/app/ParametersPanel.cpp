@@ -22,8 +22,12 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     m_threshold->setRange(0.001, 10.0);
     m_threshold->setDecimals(3);
     m_threshold->setSingleStep(0.01);
-    connect(m_threshold, &QDoubleSpinBox::editingFinished, this,
-            [this] { emit thresholdEdited(m_threshold->value()); });
+    // Only a changed value is an edit (leaving the field is not: no "0.1 -> 0.1" event).
+    connect(m_threshold, &QDoubleSpinBox::editingFinished, this, [this] {
+        if (m_snapshot.enabled && m_threshold->value() != m_threshold->valueFromText(
+                                      m_threshold->textFromValue(m_snapshot.fitThreshold)))
+            emit thresholdEdited(m_threshold->value());
+    });
 
     m_model = new ParameterTableModel(this);
     connect(m_model, &ParameterTableModel::boundsEdited, this, &ParametersPanel::boundsEdited);
@@ -32,9 +36,15 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     m_table = new QTableView(this);
     m_table->setModel(m_model);
     m_table->verticalHeader()->hide();
+    // Names and the lock box take what they need, the numbers share the rest; a number is
+    // never broken over two lines ("0." / "0078312").
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(ParameterTableModel::Name,
+                                                      QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(ParameterTableModel::Locked,
                                                       QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setMinimumSectionSize(24);
+    m_table->setWordWrap(false);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                              QAbstractItemView::AnyKeyPressed);
     m_table->setAlternatingRowColors(true);

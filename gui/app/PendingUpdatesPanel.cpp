@@ -1,5 +1,7 @@
 #include "gui/app/PendingUpdatesPanel.h"
 
+#include <QBrush>
+#include <QColor>
 #include <QComboBox>
 #include <QEvent>
 #include <QHBoxLayout>
@@ -16,7 +18,7 @@
 namespace hsmu::gui {
 
 namespace {
-enum Column { Parameter, Current, Proposed, Change, ColumnCount };
+enum Column { Parameter, Current, Proposed, Latest, Change, ColumnCount };
 constexpr int kIdRole = Qt::UserRole;
 constexpr ReporterPolicy kPolicies[] = {ReporterPolicy::EveryStep, ReporterPolicy::ZeroCrossing,
                                         ReporterPolicy::EveryNSteps, ReporterPolicy::OnApproval};
@@ -92,11 +94,14 @@ void PendingUpdatesPanel::retranslateUi() {
     m_policy->setToolTip(m_policy->currentText());
     m_everyN->setPrefix(tr("N = "));
     m_policyLabel->setText(tr("Apply updates:"));
-    m_tree->setHeaderLabels({tr("Parameter"), tr("Current"), tr("Proposed"), tr("Change [%]")});
-    m_tree->setToolTip(tr("Current and proposed values in the law's normalized units"));
+    m_tree->setHeaderLabels(
+        {tr("Parameter"), tr("Current"), tr("Proposed"), tr("Estimate now"), tr("Change [%]")});
+    m_tree->setToolTip(tr("The target's current value, the proposed one, the estimator's "
+                          "value now and the change the proposal makes, in the law's "
+                          "normalized units"));
     showSummary();
     for (const UpdateProposal& p : m_snapshot.pending)
-        if (const auto it = m_items.find(p.id); it != m_items.end())
+        if (const auto it = m_items.find(p.element); it != m_items.end())
             fillProposal(it->second, p);
 }
 
@@ -148,8 +153,12 @@ void PendingUpdatesPanel::showSummary() {
                   "one.")
                    .arg(describe(s.policy));
     else
-        text = tr("%n update(s) waiting for a decision, oldest first.", nullptr,
-                  int(s.pending.size()));
+        text = tr("%n update(s) waiting for a decision.", nullptr, int(s.pending.size())) +
+               QLatin1Char(' ') +
+               tr("One proposal per target, renewed every %1 s of test time with the "
+                  "estimator's latest values (it replaces the one shown); Approve applies the "
+                  "values shown while they are current.")
+                   .arg(QString::number(s.proposalInterval, 'g', 3));
     if (s.enabled && s.notQueued > 0)
         text += QLatin1Char(' ') +
                 tr("%n newer proposal(s) were not queued (the queue holds %1); each is in the "
@@ -160,6 +169,7 @@ void PendingUpdatesPanel::showSummary() {
 }
 
 void PendingUpdatesPanel::fillProposal(QTreeWidgetItem* top, const UpdateProposal& p) {
+    const bool stale = m_snapshot.stale(p);
     QString title = tr("#%1 %2 at t = %3 s (step %4)")
                         .arg(p.id)
                         .arg(QString::fromStdString(p.element))
@@ -167,26 +177,47 @@ void PendingUpdatesPanel::fillProposal(QTreeWidgetItem* top, const UpdateProposa
                         .arg(p.step);
     if (std::isfinite(p.fitError))
         title += tr(", fit error %1").arg(QString::number(p.fitError, 'g', 3));
+    if (stale)
+        title += tr(": stale (older than %1 s), wait for the next proposal")
+                     .arg(QString::number(m_snapshot.proposalInterval, 'g', 3));
+    top->setData(Parameter, kIdRole, p.id);
     top->setText(Parameter, title);
     top->setToolTip(Parameter, title);
+    top->setForeground(Parameter, stale ? QBrush(QColor(0x8a, 0x4b, 0x00)) : QBrush());
     if (QTreeWidgetItem* decision = top->child(0))
         if (QWidget* buttons = m_tree->itemWidget(decision, Parameter))
-            for (QPushButton* b : buttons->findChildren<QPushButton*>())
-                b->setText(b->objectName().startsWith(QLatin1String("approve")) ? tr("Approve")
-                                                                                : tr("Reject"));
+            for (QPushButton* b : buttons->findChildren<QPushButton*>()) {
+                const bool approve = b->property("approve").toBool();
+                b->setObjectName(QStringLiteral("%1%2")
+                                     .arg(approve ? QStringLiteral("approve")
+                                                  : QStringLiteral("reject"))
+                                     .arg(p.id));
+                b->setText(approve ? tr("Approve") : tr("Reject"));
+                if (approve)
+                    b->setEnabled(!stale);
+            }
+    const auto latest = m_snapshot.latest.find(p.element);
     int k = 1; // the decision row first, right under the title; the parameters below it
     for (std::size_t j = 0; j < p.proposed.size(); ++j) {
         QTreeWidgetItem* row = top->child(k++);
+        if (!row)
+            row = new QTreeWidgetItem(top);
         const double proposed = p.proposed[j];
         const double current = j < p.current.size() ? p.current[j] : std::nan("");
+        const double now = latest != m_snapshot.latest.end() && j < latest->second.size()
+                               ? latest->second[j]
+                               : std::nan("");
         row->setText(Parameter, QString::fromStdString(p.parameters.name(j)));
         row->setText(Current, QString::number(current, 'g', 5));
         row->setText(Proposed, QString::number(proposed, 'g', 5));
+        row->setText(Latest, std::isfinite(now) ? QString::number(now, 'g', 5) : QString());
         row->setText(Change, current != 0.0 && std::isfinite(current)
                                  ? QString::number(
                                        100.0 * (proposed - current) / std::abs(current), 'f', 1)
                                  : QString());
     }
+    while (top->childCount() > k)
+        delete top->takeChild(k);
 }
 
 QTreeWidgetItem* PendingUpdatesPanel::addProposal(const UpdateProposal& p) {
@@ -194,24 +225,33 @@ QTreeWidgetItem* PendingUpdatesPanel::addProposal(const UpdateProposal& p) {
     // parameters below (at 1280x720 the oldest proposal's buttons show without scrolling).
     auto* top = new QTreeWidgetItem(m_tree);
     top->setFirstColumnSpanned(true);
-    top->setData(Parameter, kIdRole, p.id);
     auto* decision = new QTreeWidgetItem(top);
     decision->setFirstColumnSpanned(true);
-    for (std::size_t k = 0; k < p.proposed.size(); ++k)
-        new QTreeWidgetItem(top);
     auto* buttons = new QWidget(m_tree);
     auto* h = new QHBoxLayout(buttons);
     h->setContentsMargins(0, 0, 0, 0);
     auto* approve = new QPushButton(buttons);
     auto* reject = new QPushButton(buttons);
-    approve->setObjectName(QStringLiteral("approve%1").arg(p.id));
-    reject->setObjectName(QStringLiteral("reject%1").arg(p.id));
+    approve->setProperty("approve", true);
     h->addWidget(approve);
     h->addWidget(reject);
     h->addStretch(1);
-    const int id = p.id;
-    connect(approve, &QPushButton::clicked, this, [this, id] { emit approveRequested(id); });
-    connect(reject, &QPushButton::clicked, this, [this, id] { emit rejectRequested(id); });
+    // The decision is for the proposal shown when the button was pressed: one renewed under
+    // the mouse before the release is not the one the operator read (the worker then
+    // refuses the older one as superseded).
+    for (QPushButton* b : {approve, reject}) {
+        connect(b, &QPushButton::pressed, b,
+                [b, top] { b->setProperty("pressedId", top->data(Parameter, kIdRole)); });
+        connect(b, &QPushButton::clicked, this, [this, b, top, isApprove = b == approve] {
+            const QVariant pressed = b->property("pressedId");
+            const int id = pressed.isValid() ? pressed.toInt() : top->data(Parameter, kIdRole).toInt();
+            b->setProperty("pressedId", QVariant());
+            if (isApprove)
+                emit approveRequested(id);
+            else
+                emit rejectRequested(id);
+        });
+    }
     m_tree->setItemWidget(decision, Parameter, buttons);
     top->setExpanded(true);
     fillProposal(top, p);
@@ -227,22 +267,28 @@ void PendingUpdatesPanel::setSnapshot(const UpdatingSnapshot& s) {
     }
     m_snapshot = s;
     showSummary();
-    // The queue only grows at its end and loses decided proposals anywhere: remove the rows
-    // no longer pending, append the new ones; rows already shown stay where they are.
-    std::map<int, const UpdateProposal*> pending;
+    // One row per target: a newer proposal for a target takes its row in place (the buttons
+    // stay under the mouse); decided targets leave, new ones are appended below.
+    std::map<std::string, const UpdateProposal*> pending;
     for (const UpdateProposal& p : s.pending)
-        pending[p.id] = &p;
+        pending[p.element] = &p;
     for (auto it = m_items.begin(); it != m_items.end();) {
         if (pending.count(it->first)) {
             ++it;
             continue;
         }
-        delete it->second; // its children and button widget with it
+        // The buttons sit on a child row: the view does not release them with the parent.
+        if (QTreeWidgetItem* decision = it->second->child(0))
+            m_tree->removeItemWidget(decision, Parameter);
+        delete it->second;
         it = m_items.erase(it);
     }
-    for (const UpdateProposal& p : s.pending)
-        if (!m_items.count(p.id))
-            m_items[p.id] = addProposal(p);
+    for (const UpdateProposal& p : s.pending) {
+        if (const auto it = m_items.find(p.element); it != m_items.end())
+            fillProposal(it->second, p);
+        else
+            m_items[p.element] = addProposal(p);
+    }
     setEditable(m_editable);
 }
 

@@ -1,14 +1,17 @@
 #pragma once
 // PendingUpdatesPanel: the reporter's approval policy (every step, zero crossing, every N
-// steps, on approval; effective on the next step) and, under "on approval", the approval
-// queue: every pending proposal, oldest first, each with its target element, test time [s],
-// step and the fit error when it was made, and per parameter the target's current value, the
-// proposed one and the change [%], with its own Approve and Reject buttons. Nothing is
-// replaced: a proposal stays until the operator decides (the rows already shown never move
-// when newer ones arrive below). When the queue is full (Reporter::maxPending()) newer offers
-// are not queued: the summary says how many, and each is in the record (/updating/events,
-// decision "notQueued"). It only emits the operator's decisions; MainWindow wires them to the
-// TestController. Retranslates itself on a language change.
+// steps, on approval; effective on the next step) and, under "on approval", the pending
+// proposals: one per target (Reporter: renewed every proposal interval with the estimator's
+// latest values, each supersedes the one before), each with its target element, test time
+// [s], step and the fit error when it was made, and per parameter the target's current value,
+// the proposed one, the estimator's value now and the change [%] the proposal makes, with its
+// own Approve and Reject buttons. A renewed proposal takes its target's row in place (the rows
+// never move, the buttons stay under the mouse); a button decides the proposal shown when it
+// was pressed. A stale proposal (older than one interval: no offer renewed it) is marked and
+// its Approve disabled. Offers not queued (Reporter::maxPending()) are counted in the summary
+// and each is in the record (/updating/events, decision "notQueued"). It only emits the
+// operator's decisions; MainWindow wires them to the TestController. Retranslates itself on a
+// language change.
 // Thread rules: GUI thread only.
 
 #include "gui/app/UpdatingSnapshot.h"
@@ -16,6 +19,7 @@
 #include <QWidget>
 
 #include <map>
+#include <string>
 #include <vector>
 
 class QComboBox;
@@ -66,7 +70,7 @@ private:
     QLabel* m_summary = nullptr;
     QTreeWidget* m_tree = nullptr;
     UpdatingSnapshot m_snapshot;                   ///< the last one shown
-    std::map<int, QTreeWidgetItem*> m_items;       ///< proposal id -> its top-level row
+    std::map<std::string, QTreeWidgetItem*> m_items; ///< target element -> its top-level row
     bool m_editable = false;
     bool m_nextRunPolicy = false; ///< between runs: the policy is chosen for the next run
 };

@@ -10,9 +10,13 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QScreen>
+#include <QScrollArea>
+#include <QGuiApplication>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace hsmu::gui {
@@ -41,7 +45,19 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
     : QDialog(parent), m_report(report) {
     setObjectName(QStringLiteral("preflightDialog"));
     setWindowTitle(tr("Pre-flight check"));
-    auto* layout = new QVBoxLayout(this);
+    // The checks scroll when the screen is small (1280x720 with the amber box): every line
+    // keeps the height its words need; the confirmation and the buttons stay in view.
+    auto* outer = new QVBoxLayout(this);
+    auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("preflightScroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* body = new QWidget(scroll);
+    auto* layout = new QVBoxLayout(body);
+    layout->setContentsMargins(0, 0, 0, 0);
+    scroll->setWidget(body);
+    outer->addWidget(scroll, 1);
 
     auto* analysis = new QGroupBox(tr("Integration and stability"), this);
     auto* form = new QFormLayout(analysis);
@@ -137,7 +153,7 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
                               "actuator displacement and the load cell read zero."),
                            this);
     m_zero->setObjectName(QStringLiteral("zeroOffsetsConfirmed"));
-    layout->addWidget(m_zero);
+    outer->addWidget(m_zero);
 
     auto* buttons = new QDialogButtonBox(this);
     m_start = buttons->addButton(tr("Start test"), QDialogButtonBox::AcceptRole);
@@ -145,10 +161,23 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
     buttons->addButton(tr("Cancel"), QDialogButtonBox::RejectRole);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    layout->addWidget(buttons);
+    outer->addWidget(buttons);
     connect(m_zero, &QCheckBox::toggled, this, &PreflightDialog::updateStart);
     updateStart();
-    resize(760, 480);
+    // Every text wraps to the dialog's width (a long ground-motion path, a controller's
+    // description in Spanish) instead of widening it past the screen.
+    for (QLabel* l : body->findChildren<QLabel*>())
+        l->setWordWrap(true);
+    // 760 px wide, as tall as the checks need, within the screen's available height.
+    const int width = 760;
+    const int contents = body->heightForWidth(width - 2 * outer->contentsMargins().left());
+    QSize size(width, std::max(480, contents + m_zero->sizeHint().height() +
+                                        buttons->sizeHint().height() + 4 * outer->spacing() +
+                                        outer->contentsMargins().top() +
+                                        outer->contentsMargins().bottom()));
+    if (const QScreen* screen = parent ? parent->screen() : QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size() - QSize(16, 48));
+    resize(size);
 }
 
 void PreflightDialog::updateStart() {

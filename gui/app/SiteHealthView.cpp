@@ -24,6 +24,8 @@ SiteHealthView::SiteHealthView(QWidget* parent) : QGroupBox(parent) {
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setMaximumHeight(130);
+    // A cut address keeps its port ("tcp://...:5101"): the sites stay distinguishable.
+    m_table->setTextElideMode(Qt::ElideMiddle);
     layout->addWidget(m_table);
     m_poll = new SitePoll(500, this);
     connect(m_poll, &SitePoll::poll, this, &SiteHealthView::refresh);
@@ -45,6 +47,7 @@ void SiteHealthView::setConfig(const TestConfig& cfg) {
         m_table->insertRow(row);
         m_table->setItem(row, 0, new QTableWidgetItem(name));
         m_table->setItem(row, 1, new QTableWidgetItem(address));
+        m_table->item(row, 1)->setToolTip(address);
         m_table->setItem(row, 2, new QTableWidgetItem(elements));
         m_table->setItem(row, 3, new QTableWidgetItem(QStringLiteral("-")));
     };

@@ -145,6 +145,9 @@ void TestController::prepare() {
 void TestController::confirmPreflight() {
     onWorker([](TestWorker* w) { w->confirmPreflight(); });
 }
+void TestController::skipPreflight() {
+    onWorker([](TestWorker* w) { w->skipPreflight(); });
+}
 void TestController::start() {
     onWorker([](TestWorker* w) { w->start(); });
 }

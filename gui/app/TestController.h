@@ -82,6 +82,8 @@ public slots:
     void prepare();
     /// Record that the operator confirmed the pre-flight check (call before start()).
     void confirmPreflight();
+    /// Record that the test starts without the pre-flight dialog (hsmu --start).
+    void skipPreflight();
     /// Arm and start stepping (prepares first if needed, without a pre-flight report).
     void start();
     void pause();

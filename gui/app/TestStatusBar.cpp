@@ -21,19 +21,15 @@ TestStatusBar::TestStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_step = label(150);
     m_rate = label(120);
     m_state = label(120);
-    m_link = label(160);
-    m_sites = new SiteHealthLabel(this);
-    addPermanentWidget(m_sites);
+    m_link = new SiteHealthLabel(this);
+    addPermanentWidget(m_link);
     m_recording = label(120);
     m_time->setObjectName(QStringLiteral("statusTime"));
     m_step->setObjectName(QStringLiteral("statusStep"));
     m_rate->setObjectName(QStringLiteral("statusRate"));
     m_state->setObjectName(QStringLiteral("statusState"));
-    m_link->setObjectName(QStringLiteral("statusLink"));
     m_recording->setObjectName(QStringLiteral("statusRecording"));
-    for (QLabel* l : {m_link, m_recording})
-        l->setMaximumWidth(280); // long addresses and paths: cut, in full in the tool tip
-    setLink(tr("no link"), true);
+    m_recording->setMaximumWidth(280); // long paths: cut, in full in the tool tip
     // Every text again in the new language (the link's text comes from its owner).
     LiveText::bind(this, [this] {
         setProgress(m_progress.step, m_progress.total, m_progress.time, m_progress.rate);
@@ -46,7 +42,21 @@ void TestStatusBar::setProgress(int step, int totalSteps, double testTime, doubl
     m_progress = {step, totalSteps, testTime, stepsPerSecond};
     m_time->setText(tr("t = %1 s").arg(QString::number(testTime, 'f', 2)));
     m_step->setText(tr("step %1 / %2").arg(step).arg(totalSteps));
-    m_rate->setText(tr("%1 steps/s").arg(QString::number(stepsPerSecond, 'f', 0)));
+    const QString rate = tr("%1 steps/s").arg(QString::number(stepsPerSecond, 'f', 0));
+    // The time left at the present rate (while it runs).
+    if (stepsPerSecond >= 0.5 && totalSteps > step) {
+        const qint64 left = qRound64((totalSteps - step) / stepsPerSecond);
+        const QString eta = left >= 3600 ? QStringLiteral("%1:%2:%3")
+                                               .arg(left / 3600)
+                                               .arg(left / 60 % 60, 2, 10, QLatin1Char('0'))
+                                               .arg(left % 60, 2, 10, QLatin1Char('0'))
+                                         : QStringLiteral("%1:%2")
+                                               .arg(left / 60)
+                                               .arg(left % 60, 2, 10, QLatin1Char('0'));
+        m_rate->setText(tr("%1, %2 left").arg(rate, eta));
+    } else {
+        m_rate->setText(rate);
+    }
 }
 
 void TestStatusBar::setRunState(RunState state) {
@@ -57,10 +67,10 @@ void TestStatusBar::setRunState(RunState state) {
                                  : QString());
 }
 
-void TestStatusBar::setLink(const QString& text, bool ok) {
-    m_link->setText(tr("link: %1").arg(text));
-    m_link->setToolTip(m_link->text());
-    m_link->setStyleSheet(ok ? QString() : QStringLiteral("color: white; background: #c62828;"));
+void TestStatusBar::setLink(const QList<SiteHealthLabel::Site>& sites,
+                            std::shared_ptr<const SiteMonitor> monitor) {
+    m_link->setSites(sites);
+    m_link->setMonitor(std::move(monitor));
 }
 
 void TestStatusBar::setRecordingFile(const QString& file) {
@@ -71,10 +81,6 @@ void TestStatusBar::setRecordingFile(const QString& file) {
                              ? tr("not recording")
                              : tr("recording: %1/%2").arg(info.dir().dirName(), info.fileName()));
     m_recording->setToolTip(file);
-}
-
-void TestStatusBar::setSites(std::shared_ptr<const SiteMonitor> monitor) {
-    m_sites->setMonitor(std::move(monitor));
 }
 
 } // namespace hsmu::gui

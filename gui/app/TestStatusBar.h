@@ -1,10 +1,13 @@
 #pragma once
-// TestStatusBar: test time [s], step (of total), steps per second, the run state, the link to
-// the specimens (built-in virtual lab or tcp://host:port, with its state) and the recording
+// TestStatusBar: test time [s], step (of total), steps per second with the time left at that
+// rate (m:ss), the run state, the link to
+// the specimens per site (SiteHealthLabel: the built-in virtual lab or tcp://host:port, with
+// its state read from the test's SiteMonitor, the one source of truth) and the recording
 // file, always visible at the bottom of the main window. Temporary messages use
 // QStatusBar::showMessage. Thread rules: GUI thread only.
 
 #include "gui/app/RunState.h"
+#include "gui/app/SiteHealthLabel.h"
 
 #include <QStatusBar>
 
@@ -12,13 +15,7 @@
 
 class QLabel;
 
-namespace hsmu {
-class SiteMonitor;
-}
-
 namespace hsmu::gui {
-
-class SiteHealthLabel;
 
 class TestStatusBar : public QStatusBar {
     Q_OBJECT
@@ -27,12 +24,12 @@ public:
 
     void setProgress(int step, int totalSteps, double testTime, double stepsPerSecond);
     void setRunState(RunState state);
-    /// ok = false shows the link in the alarm colour (e.g. a link fault).
-    void setLink(const QString& text, bool ok);
     /// Empty: not recording.
     void setRecordingFile(const QString& file);
-    /// Per-site health of the loaded test (SiteHealthLabel); nullptr hides it.
-    void setSites(std::shared_ptr<const SiteMonitor> monitor);
+    /// The loaded test's sites and its monitor (SiteHealthLabel); no sites: "no link".
+    void setLink(const QList<SiteHealthLabel::Site>& sites,
+                 std::shared_ptr<const SiteMonitor> monitor);
+    SiteHealthLabel* link() const { return m_link; }
 
 private:
     struct Progress {
@@ -45,9 +42,8 @@ private:
     QLabel* m_step = nullptr;
     QLabel* m_rate = nullptr;
     QLabel* m_state = nullptr;
-    QLabel* m_link = nullptr;
+    SiteHealthLabel* m_link = nullptr;
     QLabel* m_recording = nullptr;
-    SiteHealthLabel* m_sites = nullptr;
 };
 
 } // namespace hsmu::gui

@@ -119,6 +119,11 @@ void TestWorker::confirmPreflight() {
         logEvent(OperatorEvent::kPreflightConfirmed, "unconfirmed", "confirmed");
 }
 
+void TestWorker::skipPreflight() {
+    if (m_state == RunState::Ready)
+        logEvent(OperatorEvent::kPreflightSkipped, "unconfirmed", "command line");
+}
+
 void TestWorker::start() {
     if (m_state != RunState::Ready || !ensurePrepared() || !openRecord())
         return;
@@ -173,7 +178,7 @@ void TestWorker::stop() {
         m_state == RunState::Holding)
         logEvent(OperatorEvent::kStop, "armed", "stopped, data kept");
     if (m_state == RunState::Running || m_state == RunState::Paused) {
-        m_session->hold("stopped by the operator"); // the record's text: language-neutral
+        m_session->hold(kStopReason); // the record's text: language-neutral
         publishAlarms();
     }
     if (m_state != RunState::Finished && m_state != RunState::Failed &&
@@ -222,8 +227,14 @@ QString TestWorker::refusalText(const QString& source, const QStringList& args) 
 void TestWorker::addNote(const QString& text) {
     if (text.trimmed().isEmpty())
         return;
+    if (!m_session->recording())
+        return refuse(QT_TR_NOOP("the note was not kept: this test is not recorded"));
     if (!m_session->addNote(text.toStdString()))
-        refuse(QT_TR_NOOP("the note was not kept: this test is not recorded"));
+        return refuse(QT_TR_NOOP("the note was not kept: %1"),
+                      {QString::fromStdString(m_session->lastError())});
+    // In the event list (the record keeps the note itself, not an operator-event row).
+    emit operatorEvent(OperatorEvent::now(test().currentStep(), test().time(),
+                                          OperatorEvent::kNote, {}, text.toStdString()));
 }
 
 void TestWorker::setParameterBounds(const QString& name, double lower, double upper) {
@@ -272,14 +283,26 @@ std::string proposalTag(int id) {
 
 void TestWorker::approveUpdate(int proposalId) {
     std::optional<UpdateProposal> proposal;
-    if (const ModelUpdater* u = test().updater())
-        for (const UpdateProposal& p : u->reporter().pending())
+    const Reporter* reporter = test().updater() ? &test().updater()->reporter() : nullptr;
+    if (reporter)
+        for (const UpdateProposal& p : reporter->pending())
             if (p.id == proposalId)
                 proposal = p;
     if (!test().approveUpdate(proposalId)) {
-        refuse(QT_TR_NOOP("update #%1 was not applied (no longer pending, or refused by "
-                          "the law; see the alarms)"),
-               {QString::number(proposalId)});
+        const std::optional<int> newer = reporter ? reporter->supersededBy(proposalId) : std::nullopt;
+        if (newer)
+            refuse(QT_TR_NOOP("update #%1 was not applied: the estimate has moved on and #%2 "
+                              "replaced it; check #%2 and approve it if it is right"),
+                   {QString::number(proposalId), QString::number(*newer)});
+        else if (proposal && reporter->stale(*proposal, test().time()))
+            refuse(QT_TR_NOOP("update #%1 was not applied: it is older than one proposal "
+                              "interval (%2 s) and no longer what the estimator believes; "
+                              "wait for the next proposal"),
+                   {QString::number(proposalId), QString::number(reporter->proposalInterval())});
+        else
+            refuse(QT_TR_NOOP("update #%1 was not applied (no longer pending, or refused by "
+                              "the law; see the alarms)"),
+                   {QString::number(proposalId)});
     } else if (proposal) {
         logEvent(OperatorEvent::kApprove,
                  proposalTag(proposalId) + " " + proposal->element + " " +
@@ -300,7 +323,13 @@ void TestWorker::rejectUpdate(int proposalId) {
             if (p.id == proposalId)
                 proposal = p;
     if (!test().rejectUpdate(proposalId) || !proposal) {
-        refuse(QT_TR_NOOP("update #%1 is no longer pending"), {QString::number(proposalId)});
+        const Reporter* reporter = test().updater() ? &test().updater()->reporter() : nullptr;
+        if (const std::optional<int> newer =
+                reporter ? reporter->supersededBy(proposalId) : std::nullopt)
+            refuse(QT_TR_NOOP("update #%1 is no longer pending: #%2 replaced it"),
+                   {QString::number(proposalId), QString::number(*newer)});
+        else
+            refuse(QT_TR_NOOP("update #%1 is no longer pending"), {QString::number(proposalId)});
     } else {
         logEvent(OperatorEvent::kReject, proposalTag(proposalId),
                  "rejected " + proposal->element + " " +

@@ -57,6 +57,8 @@ class TestWorker : public QObject, public StepObserver {
 public:
     /// Automatic resumes after a control fault (TestSession's ReconnectPolicy).
     static constexpr int kReconnectAttempts = 5;
+    /// The hold reason of an operator's Stop (the record's language-neutral text).
+    static constexpr const char* kStopReason = "stopped by the operator";
     /// A refusal (commandRefused's `source` and `args`) in the current language (GUI thread).
     static QString refusalText(const QString& source, const QStringList& args);
 
@@ -74,6 +76,9 @@ public slots:
     void prepare();
     /// The operator confirmed the pre-flight check (recorded as an event).
     void confirmPreflight();
+    /// The test starts without the pre-flight dialog (hsmu --start: the command line is the
+    /// operator's confirmation); recorded as an event.
+    void skipPreflight();
     /// Prepare if needed, arm and start stepping; Failed if it cannot start.
     void start();
     void pause();

@@ -17,9 +17,14 @@ const ParameterState* UpdatingSnapshot::parameter(const std::string& name) const
     return nullptr;
 }
 
+bool UpdatingSnapshot::stale(const UpdateProposal& p) const {
+    return Reporter::stale(p, time, proposalInterval);
+}
+
 UpdatingSnapshot snapshotOf(const HybridTest& test) {
     UpdatingSnapshot s;
     s.step = test.currentStep();
+    s.time = test.time();
     const ModelUpdater* u = test.updater();
     if (!u)
         return s;
@@ -40,6 +45,10 @@ UpdatingSnapshot snapshotOf(const HybridTest& test) {
     s.canLock = id.canLock();
     const Reporter& r = u->reporter();
     s.pending.assign(r.pending().begin(), r.pending().end());
+    s.proposalInterval = r.proposalInterval();
+    for (const ReporterTarget& t : r.targets())
+        if (const auto v = r.latestOffer(t.element); !v.empty())
+            s.latest[t.element].assign(v.begin(), v.end());
     for (const ReporterTarget& t : r.targets()) {
         const Element* e = test.structure().element(t.element);
         const HysteresisLaw* law = e ? e->law() : nullptr;

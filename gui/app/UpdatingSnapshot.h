@@ -32,11 +32,18 @@ struct ParameterState {
 struct UpdatingSnapshot {
     bool enabled = false; ///< false: the test has no updater, everything else is empty
     int step = 0;         ///< the committed step the snapshot was taken after
+    double time = 0.0;    ///< its test time [s]
     std::string specimen; ///< the identified experimental element
     std::string method;   ///< e.g. "UKF", "Nelder-Mead"
     bool canLock = false; ///< the method can lock parameters
     std::vector<ParameterState> parameters;         ///< identifier order
     std::vector<UpdateProposal> pending;            ///< the approval queue, oldest first
+    /// Target element -> the estimator's latest values as that target would take them (in
+    /// its proposals' parameter order): what a proposal is compared with (onApproval).
+    std::map<std::string, std::vector<double>> latest;
+    /// onApproval: test time [s] between two proposals for a target; a proposal this old is
+    /// stale (Reporter::stale) and refused.
+    double proposalInterval = 0.0;
     std::map<std::string, ParameterValues> targets; ///< target element -> its current values
     ReporterPolicy policy = ReporterPolicy::EveryStep;
     int everyN = 10;
@@ -47,6 +54,8 @@ struct UpdatingSnapshot {
     int maxPending = 0;  ///< the approval queue's capacity
 
     const ParameterState* parameter(const std::string& name) const;
+    /// Whether proposal p is stale at this snapshot's time (Reporter::stale).
+    bool stale(const UpdateProposal& p) const;
 };
 
 /// Copy the updating state of `test` (enabled = false if it has no updater).

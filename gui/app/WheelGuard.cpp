@@ -2,6 +2,7 @@
 
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
+#include <QApplication>
 #include <QComboBox>
 #include <QEvent>
 #include <QScrollBar>
@@ -10,34 +11,54 @@
 namespace hsmu::gui {
 
 namespace {
-bool guarded(const QWidget* w) {
+bool guarded(const QObject* w) {
     // Not scroll bars: a scroll area hands its wheel events to them, so guarding them would
     // stop the panel from scrolling under the wheel (the very thing the guard protects).
     return qobject_cast<const QAbstractSpinBox*>(w) || qobject_cast<const QComboBox*>(w) ||
            (qobject_cast<const QAbstractSlider*>(w) && !qobject_cast<const QScrollBar*>(w));
 }
+
+// The guarded widget w is, or is part of (a spin box's line edit), or nullptr.
+const QWidget* guardedOwner(const QWidget* w) {
+    for (; w; w = w->isWindow() ? nullptr : w->parentWidget())
+        if (guarded(w))
+            return w;
+    return nullptr;
+}
+
+void strongFocus(QWidget* w) {
+    if (w->focusPolicy() & Qt::WheelFocus)
+        w->setFocusPolicy(Qt::StrongFocus);
+}
 } // namespace
 
-void WheelGuard::install(QWidget* root) {
-    auto* guard = root->findChild<WheelGuard*>(QString(), Qt::FindDirectChildrenOnly);
-    if (!guard)
-        guard = new WheelGuard(root);
-    QList<QWidget*> widgets = root->findChildren<QWidget*>();
-    widgets.prepend(root);
-    for (QWidget* w : widgets) {
-        if (!guarded(w) || w->property("hsmuWheelGuard").toBool())
-            continue;
-        w->setFocusPolicy(Qt::StrongFocus);
-        w->installEventFilter(guard);
-        w->setProperty("hsmuWheelGuard", true);
-    }
+void WheelGuard::install() {
+    QCoreApplication* app = QCoreApplication::instance();
+    if (!app || app->findChild<WheelGuard*>(QString(), Qt::FindDirectChildrenOnly))
+        return;
+    auto* guard = new WheelGuard(app);
+    app->installEventFilter(guard);
+    for (QWidget* w : QApplication::allWidgets())
+        if (guarded(w))
+            strongFocus(w);
 }
 
 bool WheelGuard::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() == QEvent::Wheel) {
-        const auto* w = qobject_cast<QWidget*>(watched);
-        if (w && !w->hasFocus()) {
-            event->ignore(); // not accepted: QApplication passes it on to the parent
+    if (event->type() == QEvent::Polish && guarded(watched)) {
+        strongFocus(static_cast<QWidget*>(watched));
+    } else if (event->type() == QEvent::Wheel && watched->isWidgetType()) {
+        const auto* w = static_cast<const QWidget*>(watched);
+        const QWidget* owner = guardedOwner(w);
+        if (!owner) { // something else takes the wheel: a panel, a list, a plot scrolls
+            m_scrolled.start();
+            return false;
+        }
+        if (owner != w)
+            return false; // the field's inner part: the event goes on to the field itself
+        const bool scrolling = m_scrolled.isValid() && m_scrolled.elapsed() < kScrollGestureMs;
+        if (qobject_cast<const QComboBox*>(w) || !w->hasFocus() || scrolling) {
+            m_scrolled.start(); // the wheel goes on scrolling the panel
+            event->ignore();    // not accepted: QApplication passes it on to the parent
             return true;
         }
     }

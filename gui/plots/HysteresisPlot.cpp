@@ -26,6 +26,11 @@ void HysteresisPlot::retranslate() {
 
 std::vector<int> HysteresisPlot::specimenWithTwins(const RunLayout& layout) {
     int specimen = -1;
+    // The identified specimen first: its loop is the one the auxiliary model and the
+    // Parameters dock describe (two labs: Bearing D, not the first specimen, Bearing C).
+    for (std::size_t i = 0; i < layout.elements.size() && specimen < 0 && layout.updating; ++i)
+        if (layout.elements[i].experimental && layout.elements[i].name == layout.updating->specimen)
+            specimen = int(i);
     for (std::size_t i = 0; i < layout.elements.size() && specimen < 0; ++i)
         if (layout.elements[i].experimental)
             specimen = int(i);

@@ -6,6 +6,7 @@
 #include "gui/plots/ParameterPlot.h"
 #include "gui/plots/PlotExporter.h"
 #include "gui/plots/PlotStyle.h"
+#include "gui/plots/PlotTools.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -29,6 +30,10 @@ constexpr int kSmallPlotWidth = 160;  // [px] minimum, so the panel fits a 1280 
 constexpr int kSmallPlotHeight = 110; // [px]
 
 int specimenOf(const RunLayout& layout) {
+    // The identified specimen, as the hysteresis plot and the Parameters dock show it.
+    for (std::size_t i = 0; i < layout.elements.size() && layout.updating; ++i)
+        if (layout.elements[i].experimental && layout.elements[i].name == layout.updating->specimen)
+            return int(i);
     for (std::size_t i = 0; i < layout.elements.size(); ++i)
         if (layout.elements[i].experimental)
             return int(i);
@@ -162,6 +167,16 @@ bool LivePlotsPanel::overlayParameterHistory(const QString& curveName, const QSt
     return false;
 }
 
+bool LivePlotsPanel::setParameterBounds(const QString& parameter, double lower, double upper) {
+    for (ParameterPlot* p : m_parameters)
+        if (p->parameterName() == parameter) {
+            if (p->setBounds(lower, upper))
+                p->refresh();
+            return true;
+        }
+    return false;
+}
+
 void LivePlotsPanel::rebuildParameterPlots(const RunLayout& layout,
                                            const PlotReferences& references) {
     for (ParameterPlot* p : m_parameters)
@@ -206,6 +221,12 @@ void LivePlotsPanel::appendRecords(const std::vector<StepRecord>& rows) {
 }
 
 void LivePlotsPanel::clearData() {
+    // A read-out describes the data shown: it goes with them (another test's elements).
+    for (QCustomPlot* p : std::initializer_list<QCustomPlot*>{m_hysteresis, m_force, m_displacement,
+                                                              m_ground, m_tracking, m_fitError})
+        PlotTools::attach(*p)->hideReadout();
+    for (ParameterPlot* p : m_parameters)
+        PlotTools::attach(*p)->hideReadout();
     m_hysteresis->clearData();
     m_force->clearData();
     m_displacement->clearData();
@@ -283,44 +304,46 @@ QStringList LivePlotsPanel::exportAll(const QString& dir, const QString& suffix,
 }
 
 void LivePlotsPanel::enableExportMenu(QCustomPlot* plot) {
-    plot->setContextMenuPolicy(Qt::CustomContextMenu);
-    connect(plot, &QWidget::customContextMenuRequested, this,
-            [this, plot](const QPoint& pos) { showContextMenu(plot, pos); });
+    // The image exports join the plot's one context menu (PlotTools: autoscale, channels,
+    // the visible data as CSV).
+    connect(PlotTools::attach(*plot), &PlotTools::menuRequested, this,
+            [this, plot](QMenu* menu) { addExportActions(plot, menu); });
 }
 
-void LivePlotsPanel::showContextMenu(QCustomPlot* plot, const QPoint& pos) {
-    QMenu menu(this);
+void LivePlotsPanel::addExportActions(QCustomPlot* plot, QMenu* menu) {
+    menu->addSeparator();
+    menu->addAction(tr("Export this plot..."), this, [this, plot] { exportPlotWithDialog(plot); });
+    menu->addAction(tr("Export all plots..."), this, &LivePlotsPanel::exportAllWithDialog);
+}
+
+void LivePlotsPanel::exportPlotWithDialog(QCustomPlot* plot) {
     const QString png = tr("PNG image (*.png)"), svg = tr("SVG drawing (*.svg)"),
                   pdf = tr("PDF document (*.pdf)");
-    QAction* one = menu.addAction(tr("Export this plot..."));
-    QAction* all = menu.addAction(tr("Export all plots..."));
-    QAction* chosen = menu.exec(plot->mapToGlobal(pos));
-    if (chosen == one) {
-        QString filter = png;
-        const QString path = QFileDialog::getSaveFileName(
-            this, tr("Export plot"), QString(),
-            QStringList{png, svg, pdf}.join(QStringLiteral(";;")), &filter);
-        if (path.isEmpty())
-            return;
-        QString file = path;
-        if (QFileInfo(file).suffix().isEmpty())
-            file += filter == svg
-                        ? QStringLiteral(".svg")
-                        : (filter == pdf ? QStringLiteral(".pdf") : QStringLiteral(".png"));
-        QString why;
-        if (!PlotExporter::saveAs(*plot, file, plot->width(), plot->height(), &why))
-            QMessageBox::warning(this, tr("Export failed"), why);
-    } else if (chosen == all) {
-        const QString dir = QFileDialog::getExistingDirectory(this, tr("Export all plots to"));
-        if (dir.isEmpty())
-            return;
-        QStringList errors;
-        for (const QString& suffix :
-             {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("pdf")})
-            exportAll(dir, suffix, &errors);
-        if (!errors.isEmpty())
-            QMessageBox::warning(this, tr("Export failed"), errors.join(QLatin1Char('\n')));
-    }
+    QString filter = png;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export plot"), QString(), QStringList{png, svg, pdf}.join(QStringLiteral(";;")),
+        &filter);
+    if (path.isEmpty())
+        return;
+    QString file = path;
+    if (QFileInfo(file).suffix().isEmpty())
+        file += filter == svg ? QStringLiteral(".svg")
+                              : (filter == pdf ? QStringLiteral(".pdf") : QStringLiteral(".png"));
+    QString why;
+    if (!PlotExporter::saveAs(*plot, file, plot->width(), plot->height(), &why))
+        QMessageBox::warning(this, tr("Export failed"), why);
+}
+
+void LivePlotsPanel::exportAllWithDialog() {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Export all plots to"));
+    if (dir.isEmpty())
+        return;
+    QStringList errors;
+    for (const QString& suffix :
+         {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("pdf")})
+        exportAll(dir, suffix, &errors);
+    if (!errors.isEmpty())
+        QMessageBox::warning(this, tr("Export failed"), errors.join(QLatin1Char('\n')));
 }
 
 } // namespace hsmu::gui

@@ -17,7 +17,8 @@
 // max(kMinIntervalMs, kBudgetFactor x c) (pending requests coalesce into one), so drawing
 // never takes more than ~1/kBudgetFactor of the GUI thread however many points the plots
 // hold, and the test worker keeps its step rate (docs/benchmarks.md, "Step rate").
-// Each plot has a context menu to export it as PNG, SVG or PDF (PlotExporter).
+// Each plot's one context menu (PlotTools) also exports it, or every plot, as PNG, SVG or PDF
+// (PlotExporter).
 // Thread rules: GUI thread only.
 
 #include "core/output/RunLayout.h"
@@ -33,6 +34,7 @@
 
 class QCustomPlot;
 class QGridLayout;
+class QMenu;
 class QTimer;
 
 namespace hsmu {
@@ -81,6 +83,9 @@ public:
     /// no plot shows that parameter.
     bool overlayParameterHistory(const QString& curveName, const QString& parameter,
                                  const QVector<double>& time, const QVector<double>& values);
+    /// Draw `parameter`'s identification bounds at [lower, upper] (an edit the updater
+    /// accepted); redraws only when they changed. False if no plot shows that parameter.
+    bool setParameterBounds(const QString& parameter, double lower, double upper);
     /// Remove every point (the configuration stays).
     void clearData();
     /// Ask for a redraw: now if the budget allows, else once when it does.
@@ -108,8 +113,10 @@ public:
     QStringList exportAll(const QString& dir, const QString& suffix, QStringList* errors = nullptr);
 
 private:
-    void showContextMenu(QCustomPlot* plot, const QPoint& pos);
     void enableExportMenu(QCustomPlot* plot);
+    void addExportActions(QCustomPlot* plot, QMenu* menu);
+    void exportPlotWithDialog(QCustomPlot* plot);
+    void exportAllWithDialog();
     void rebuildParameterPlots(const RunLayout& layout, const PlotReferences& references);
     std::vector<QCustomPlot*> visiblePlots() const;
 

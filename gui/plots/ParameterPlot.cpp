@@ -70,11 +70,17 @@ void ParameterPlot::setTrueValue(double value) {
     updateTrueLine();
 }
 
-void ParameterPlot::setBounds(double lower, double upper) {
-    m_boundLow = std::isfinite(lower) ? lower : qQNaN();
-    m_boundHigh = std::isfinite(upper) ? upper : qQNaN();
+bool ParameterPlot::setBounds(double lower, double upper) {
+    const double low = std::isfinite(lower) ? lower : qQNaN();
+    const double high = std::isfinite(upper) ? upper : qQNaN();
+    const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+    if (same(low, m_boundLow) && same(high, m_boundHigh))
+        return false;
+    m_boundLow = low;
+    m_boundHigh = high;
     PlotStyle::placeLine(*m_lowerBound, Qt::Horizontal, m_boundLow);
     PlotStyle::placeLine(*m_upperBound, Qt::Horizontal, m_boundHigh);
+    return true;
 }
 
 void ParameterPlot::updateTrueLine() {

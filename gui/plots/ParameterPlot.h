@@ -32,7 +32,8 @@ public:
     /// Draw the true value as a dashed line over the data's time span; NaN hides it.
     void setTrueValue(double value);
     /// Draw the lower and upper bounds of the identification (infinite or NaN: not drawn).
-    void setBounds(double lower, double upper);
+    /// Returns whether they changed (the caller redraws).
+    bool setBounds(double lower, double upper);
 
     /// The estimate and the band's edges (value ∓ kBandSigmas sigma), e.g. for tests.
     const QCPGraph* estimateGraph() const { return m_value; }

@@ -4,12 +4,15 @@
 
 #include <QFile>
 #include <QFileDialog>
+#include <QFontMetrics>
+#include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
 #include <QTextStream>
 
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace hsmu::gui {
@@ -31,20 +34,20 @@ PlotTools::PlotTools(QCustomPlot& plot) : QObject(&plot), m_plot(plot) {
     m_plot.setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_plot.setContextMenuPolicy(Qt::CustomContextMenu);
     m_plot.setMouseTracking(true);
-    m_label = new QCPItemText(&m_plot);
+    // A widget over the plot, not a plot item: an opaque box that is never clipped by the
+    // axis rect and costs no replot when it moves.
+    m_label = new QLabel(&m_plot);
     m_label->setObjectName(QStringLiteral("cursorReadout"));
-    m_label->setPositionAlignment(Qt::AlignTop | Qt::AlignRight);
-    m_label->position->setType(QCPItemPosition::ptAxisRectRatio);
-    m_label->position->setCoords(0.995, 0.01);
-    m_label->setTextAlignment(Qt::AlignLeft);
-    m_label->setBrush(QColor(255, 255, 255, 220));
-    m_label->setPen(QPen(QColor(160, 160, 160)));
-    m_label->setPadding(QMargins(4, 2, 4, 2));
-    m_label->setClipToAxisRect(true);
-    m_label->setVisible(false);
+    m_label->setStyleSheet(QStringLiteral("QLabel#cursorReadout { background: white; color: "
+                                          "black; border: 1px solid #a0a0a0; padding: 1px 4px; }"));
+    m_label->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_label->setTextFormat(Qt::PlainText);
+    m_label->hide();
+    m_plot.installEventFilter(this);
     connect(&m_plot, &QCustomPlot::mouseMove, this, &PlotTools::onMouseMove);
     connect(&m_plot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale = false; });
     connect(&m_plot, &QCustomPlot::mouseDoubleClick, this, [this] { setAutoscale(true); });
+    // The plot's one context menu (an owner adds its entries through menuRequested()).
     connect(&m_plot, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
         QMenu* menu = buildMenu(&m_plot);
         menu->setAttribute(Qt::WA_DeleteOnClose);
@@ -101,19 +104,49 @@ QString PlotTools::readout(double x, double y) const {
 }
 
 QString PlotTools::cursorText() const {
-    return m_label->visible() ? m_label->text() : QString();
+    return m_label->isHidden() ? QString() : m_readout;
+}
+
+void PlotTools::hideReadout() {
+    m_label->hide();
+    m_readout.clear();
+}
+
+bool PlotTools::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == &m_plot &&
+        (event->type() == QEvent::Leave || event->type() == QEvent::Hide))
+        hideReadout();
+    return QObject::eventFilter(watched, event);
 }
 
 void PlotTools::onMouseMove(QMouseEvent* event) {
     if (event->buttons() & Qt::LeftButton)
         m_autoscale = false; // a drag pans
     const QPointF p = event->position();
-    const bool inside = m_plot.axisRect()->rect().contains(p.toPoint());
-    m_label->setVisible(inside);
-    if (inside)
-        m_label->setText(readout(m_plot.xAxis->pixelToCoord(p.x()),
-                                 m_plot.yAxis->pixelToCoord(p.y())));
-    m_plot.replot(QCustomPlot::rpQueuedReplot);
+    if (!m_plot.axisRect()->rect().contains(p.toPoint())) {
+        hideReadout();
+        return;
+    }
+    m_readout = readout(m_plot.xAxis->pixelToCoord(p.x()), m_plot.yAxis->pixelToCoord(p.y()));
+    placeReadout();
+    m_label->show();
+    m_label->raise();
+}
+
+void PlotTools::placeReadout() {
+    // Lines too long for the plot lose their middle (a name), never their numbers' ends.
+    const QFontMetrics fm(m_label->font());
+    const int room = std::max(40, m_plot.width() - 16);
+    QStringList lines = m_readout.split(QLatin1Char('\n'));
+    for (QString& line : lines)
+        line = fm.elidedText(line, Qt::ElideMiddle, room);
+    m_label->setText(lines.join(QLatin1Char('\n')));
+    m_label->adjustSize();
+    const QRect area = m_plot.axisRect()->rect();
+    const int x = std::clamp(area.right() - m_label->width() - 2, 2,
+                             std::max(2, m_plot.width() - m_label->width() - 2));
+    const int y = std::clamp(area.top() + 2, 0, std::max(0, m_plot.height() - m_label->height()));
+    m_label->move(x, y);
 }
 
 bool PlotTools::exportVisibleCsv(const QString& path, QString* error, int* rows) const {
@@ -179,6 +212,7 @@ QMenu* PlotTools::buildMenu(QWidget* parent) {
     }
     menu->addSeparator();
     menu->addAction(tr("Export visible data as CSV..."), this, &PlotTools::exportWithDialog);
+    emit menuRequested(menu);
     return menu;
 }
 

@@ -38,6 +38,32 @@ QString writeJson(const QTemporaryDir& dir, const QString& name, const QJsonObje
 class TestCommandLine : public QObject {
     Q_OBJECT
 private slots:
+    // Issue 25 item 22: on a machine without a display or XDG_RUNTIME_DIR, `hsmu run --plots`
+    // printed Qt's "QStandardPaths: XDG_RUNTIME_DIR not set" and "This plugin does not support
+    // propagateSizeHints()": a headless command prints only its own messages.
+    void headlessPlotsPrintOnlyTheirOwnMessages() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"XDG_RUNTIME_DIR", "DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+            env.remove(QString::fromLatin1(name));
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(HSMU_EXE),
+                {QStringLiteral("run"), QStringLiteral("sdof-bouc-wen"), QStringLiteral("--out"),
+                 dir.filePath(QStringLiteral("out")), QStringLiteral("--plots"),
+                 QStringLiteral("--duration"), QStringLiteral("1")});
+        QVERIFY(p.waitForFinished(120000));
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QCOMPARE(p.exitCode(), 0);
+        for (const QString& noise :
+             {QStringLiteral("QStandardPaths"), QStringLiteral("XDG_RUNTIME_DIR"),
+              QStringLiteral("propagateSizeHints"), QStringLiteral("qt.")})
+            QVERIFY2(!err.contains(noise), qPrintable(err));
+        QVERIFY2(err.contains(QStringLiteral("100 %")), qPrintable(err)); // its own progress
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("out/hysteresis.png"))));
+    }
+
     void runPresetWritesOutputsAndPlots() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());

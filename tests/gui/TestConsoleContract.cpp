@@ -177,62 +177,83 @@ private slots:
             QVERIFY(!file.readAll().contains(secret.toUtf8()));
     }
 
-    // Items 4-5: proposals replace each other every step under approval; the panel shows the
-    // latest in place (the buttons stay under the mouse) with the count since the decision.
-    void proposalsQueueInOrderAndNoneIsReplaced() {
+    // Issue 25 item 2: one row per target; a renewed proposal takes its row in place (the
+    // buttons stay under the mouse), shown against the estimate now; a button decides the
+    // proposal shown when it was pressed; a stale one is marked and cannot be approved.
+    void proposalsAreRenewedInPlaceAndShownAgainstTheEstimate() {
         PendingUpdatesPanel panel;
         panel.setEditable(true);
         panel.show();
         UpdatingSnapshot s;
         s.enabled = true;
         s.policy = ReporterPolicy::OnApproval;
-        s.maxPending = 3;
-        auto proposal = [](int id, double k0) {
+        s.maxPending = 100;
+        s.proposalInterval = 2.0;
+        auto proposal = [](int id, const char* element, double k0) {
             UpdateProposal p;
             p.id = id;
             p.step = id * 10;
             p.time = id * 0.1;
-            p.element = "Element 2";
+            p.element = element;
             p.parameters = ParameterLayout({"k0"});
             p.proposed = {k0};
             p.current = {1.0};
             p.fitError = 0.0125;
             return p;
         };
-        s.pending = {proposal(5, 1.10)};
+        s.time = 0.55;
+        s.pending = {proposal(5, "Element 2", 1.10)};
+        s.latest["Element 2"] = {1.105};
         panel.setSnapshot(s);
         QPushButton* approve5 = panel.findChild<QPushButton*>(QStringLiteral("approve5"));
-        QVERIFY(approve5);
-        s.pending = {proposal(5, 1.10), proposal(6, 1.12), proposal(7, 1.15)};
-        s.notQueued = 2;
-        panel.setSnapshot(s);
-        QCOMPARE(panel.shownProposals(), (QList<int>{5, 6, 7})); // oldest first, each one
-        QCOMPARE(panel.findChild<QPushButton*>(QStringLiteral("approve5")), approve5); // stays
-        QVERIFY(panel.findChild<QPushButton*>(QStringLiteral("reject7")));
-        const QTreeWidgetItem* top = panel.tree()->topLevelItem(2);
-        QVERIFY2(top->text(0).startsWith(QStringLiteral("#7 Element 2 at t = 0.70 s (step 70)")),
+        QVERIFY(approve5 && approve5->isEnabled());
+        const QTreeWidgetItem* top = panel.tree()->topLevelItem(0);
+        QVERIFY2(top->text(0).startsWith(QStringLiteral("#5 Element 2 at t = 0.50 s (step 50)")),
                  qPrintable(top->text(0)));
         QVERIFY2(top->text(0).contains(QStringLiteral("fit error 0.0125")), qPrintable(top->text(0)));
-        // The decision row right under the title (child 0), the parameters below it.
-        QCOMPARE(top->child(1)->text(2), QStringLiteral("1.15")); // its own proposed value
-        QCOMPARE(panel.tree()->topLevelItem(0)->child(1)->text(2), QStringLiteral("1.1"));
-        QVERIFY2(panel.summary()->text().contains(QStringLiteral("3 update")) &&
-                     panel.summary()->text().contains(QStringLiteral("2 newer proposal")),
+        // The decision row right under the title (child 0), the parameters below it: current,
+        // proposed, the estimate now, the change.
+        QCOMPARE(top->child(1)->text(1), QStringLiteral("1"));
+        QCOMPARE(top->child(1)->text(2), QStringLiteral("1.1"));
+        QCOMPARE(top->child(1)->text(3), QStringLiteral("1.105"));
+        QCOMPARE(top->child(1)->text(4), QStringLiteral("10.0"));
+        QVERIFY2(panel.summary()->text().contains(QStringLiteral("1 update")) &&
+                     panel.summary()->text().contains(QStringLiteral("every 2 s")),
                  qPrintable(panel.summary()->text()));
+
+        // The operator presses Approve on #5; before the release #6 renews the row in place.
         QSignalSpy approved(&panel, &PendingUpdatesPanel::approveRequested);
         QSignalSpy rejected(&panel, &PendingUpdatesPanel::rejectRequested);
-        panel.findChild<QPushButton*>(QStringLiteral("reject6"))->click();
-        approve5->click();
-        QCOMPARE(rejected.count(), 1);
-        QCOMPARE(rejected.at(0).at(0).toInt(), 6);
-        QCOMPARE(approved.count(), 1);
-        QCOMPARE(approved.at(0).at(0).toInt(), 5);
-        // Decided ones leave; a newer one is appended below the one still pending.
-        s.pending = {proposal(7, 1.15), proposal(8, 1.16)};
+        emit approve5->pressed();
+        s.time = 0.65;
+        s.pending = {proposal(6, "Element 2", 1.12), proposal(7, "Element 3", 0.9)};
+        s.latest["Element 2"] = {1.121};
         panel.setSnapshot(s);
-        QCOMPARE(panel.shownProposals(), (QList<int>{7, 8}));
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the old buttons
+        QCOMPARE(panel.shownProposals(), (QList<int>{6, 7})); // Element 2's row first, in place
+        QCOMPARE(panel.findChild<QPushButton*>(QStringLiteral("approve6")), approve5); // the same
         QVERIFY(!panel.findChild<QPushButton*>(QStringLiteral("approve5")));
+        QCOMPARE(panel.tree()->topLevelItem(0)->child(1)->text(2), QStringLiteral("1.12"));
+        emit approve5->released();
+        emit approve5->clicked();
+        QCOMPARE(approved.count(), 1);
+        QCOMPARE(approved.at(0).at(0).toInt(), 5); // what was shown at the press (refused later)
+        approve5->click(); // pressed and released on #6
+        QCOMPARE(approved.at(1).at(0).toInt(), 6);
+        panel.findChild<QPushButton*>(QStringLiteral("reject7"))->click();
+        QCOMPARE(rejected.count(), 1);
+        QCOMPARE(rejected.at(0).at(0).toInt(), 7);
+
+        // Decided targets leave; a proposal one interval old is stale: marked, not approvable.
+        s.time = 2.61;
+        s.pending = {proposal(6, "Element 2", 1.12)};
+        panel.setSnapshot(s);
+        QCOMPARE(panel.shownProposals(), (QList<int>{6}));
+        QVERIFY2(panel.tree()->topLevelItem(0)->text(0).contains(QStringLiteral("stale")),
+                 qPrintable(panel.tree()->topLevelItem(0)->text(0)));
+        QVERIFY(!panel.findChild<QPushButton*>(QStringLiteral("approve6"))->isEnabled());
+        QVERIFY(panel.findChild<QPushButton*>(QStringLiteral("reject6"))->isEnabled());
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the old buttons
+        QVERIFY(!panel.findChild<QPushButton*>(QStringLiteral("approve7")));
     }
 
     // Item 4 (follow-up): after Stop the one policy control stays usable for the next run

@@ -88,33 +88,38 @@ private slots:
         Rows rx;
         rx.attach(c);
         c.setSpeed(5.0);
-        c.load(updatingPreset(ReporterPolicy::OnApproval));
+        TestConfig cfg = updatingPreset(ReporterPolicy::OnApproval);
+        cfg.updating.proposalInterval = 0.2; // 20 steps
+        c.load(cfg);
         runThenPause(c, rx, 100);
         QTRY_VERIFY_WITH_TIMEOUT(c.updating().step == rx.rows.back().step, 5000);
         UpdatingSnapshot s = c.updating();
         QVERIFY(s.enabled);
         QCOMPARE(s.policy, ReporterPolicy::OnApproval);
-        // A true queue: every step's proposal, oldest first, none replaced.
-        QVERIFY2(s.pending.size() > 1, "every proposal is queued, none replaced");
-        for (std::size_t i = 1; i < s.pending.size(); ++i) {
-            QVERIFY(s.pending[i].id > s.pending[i - 1].id);
-            QVERIFY(s.pending[i].step > s.pending[i - 1].step);
-        }
-        QVERIFY(std::isfinite(s.pending.back().fitError)); // the fit error when proposed
+        QCOMPARE(s.proposalInterval, 0.2);
+        // One proposal for the one target, renewed: less than one interval old.
+        QCOMPARE(s.pending.size(), std::size_t(1));
+        QVERIFY2(s.pending.front().step > s.step - 20,
+                 qPrintable(QStringLiteral("made at step %1, now %2")
+                                .arg(s.pending.front().step).arg(s.step)));
+        QVERIFY(!s.stale(s.pending.front()));
+        QVERIFY(std::isfinite(s.pending.front().fitError)); // the fit error when proposed
+        QCOMPARE(s.latest.at("Element 2").size(), s.pending.front().proposed.size());
         QCOMPARE(s.appliedUpdates, 0);
         const ParameterValues initial = s.targets.at("Element 2");
-        const std::size_t queued = s.pending.size();
 
-        // Reject the oldest: the twin keeps its parameters, only that proposal is gone.
-        const UpdateProposal rejected = s.pending.front();
-        const UpdateProposal next = s.pending[1];
-        c.rejectUpdate(rejected.id);
-        QTRY_VERIFY_WITH_TIMEOUT(c.updating().pending.front().id == next.id, 5000);
-        QCOMPARE(c.updating().pending.size(), queued - 1);
+        // Reject it: the twin keeps its parameters.
+        c.rejectUpdate(s.pending.front().id);
+        QTRY_VERIFY_WITH_TIMEOUT(c.updating().pending.empty(), 5000);
         QVERIFY(c.updating().targets.at("Element 2") == initial);
         QCOMPARE(c.updating().appliedUpdates, 0);
 
-        // Approving the next one applies exactly its proposed values.
+        // The next one comes after one interval of running; approving applies exactly it.
+        c.resume();
+        QTRY_VERIFY_WITH_TIMEOUT(!c.updating().pending.empty(), 10000);
+        c.pause();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(c.updating().step == rx.rows.back().step, 5000);
         const UpdateProposal proposal = c.updating().pending.front();
         for (std::size_t j = 0; j < proposal.parameters.size(); ++j)
             QCOMPARE(proposal.current[j], initial.at(proposal.parameters.name(j)));
@@ -130,7 +135,7 @@ private slots:
             changed |= std::abs(v - initial.at(name)) > 1e-9 * std::abs(initial.at(name));
         }
         QVERIFY2(changed, "the identified values should differ from the wrong initial ones");
-        QCOMPARE(c.updating().pending.size(), queued - 2);
+        QVERIFY(c.updating().pending.empty());
     }
 
     void editedBoundTakesEffectOnTheNextStep() {

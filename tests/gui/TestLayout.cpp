@@ -266,7 +266,7 @@ private slots:
             p.id = id;
             p.step = 10 * id;
             p.time = 0.1 * id;
-            p.element = "Element 2";
+            p.element = id == 12 ? "Element 2" : "Element 4"; // one proposal per target
             p.parameters = ParameterLayout(names);
             p.proposed.assign(names.size(), 1.05);
             p.current.assign(names.size(), 1.0);

@@ -16,6 +16,7 @@
 #include "gui/app/SetupPanel.h"
 #include "gui/app/TestController.h"
 #include "gui/app/Translations.h"
+#include "gui/app/WheelGuard.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 
@@ -238,6 +239,7 @@ private slots:
         QVERIFY(!setup->isDirty());
         scale->setFocus();
         QTRY_VERIFY(scale->hasFocus());
+        QTest::qWait(WheelGuard::kScrollGestureMs + 100); // the panel's scrolling is over
         wheel(scale);
         QVERIFY(scale->value() > before); // focused: the wheel edits, as expected
     }
@@ -416,20 +418,25 @@ private slots:
         c.pause();
         QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
         auto* pending = window.findChild<PendingUpdatesPanel*>();
-        // The whole queue is shown, oldest first (nothing replaced).
+        // One proposal for the one target (renewed every interval, never a queue).
         const auto queueIds = [&c] {
             QList<int> ids;
             for (const UpdateProposal& p : c.updating().pending)
                 ids.push_back(p.id);
             return ids;
         };
-        QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals().size() > 1 &&
+        QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals().size() == 1 &&
                                      pending->shownProposals() == queueIds(),
                                  5000);
-        // Reject the oldest, approve the next.
+        // Reject it; the next one comes after one proposal interval of running; approve it.
         const int rejectedId = pending->shownProposals().front();
         pending->findChild<QPushButton*>(QStringLiteral("reject%1").arg(rejectedId))->click();
         QTRY_VERIFY_WITH_TIMEOUT(!pending->shownProposals().contains(rejectedId), 5000);
+        c.resume();
+        QTRY_VERIFY_WITH_TIMEOUT(!pending->shownProposals().isEmpty(), 20000);
+        c.pause();
+        QTRY_COMPARE_WITH_TIMEOUT(c.state(), RunState::Paused, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(pending->shownProposals() == queueIds(), 5000);
         const int id = pending->shownProposals().front();
         auto* approve = pending->findChild<QPushButton*>(QStringLiteral("approve%1").arg(id));
         QVERIFY(approve && approve->isEnabled());
@@ -471,7 +478,7 @@ private slots:
             else if (e.decision == "rejected")
                 rejected.push_back(e);
             else
-                QCOMPARE(e.decision, std::string("notQueued")); // the queue was full
+                QCOMPARE(e.decision, std::string("superseded")); // renewed proposals
         }
         QCOMPARE(int(applied.size()), 1);
         QCOMPARE(applied.front().step, approved->text(AlarmList::Step).toInt());

@@ -1,6 +1,6 @@
-// The console's per-site health (sites: docs/configuration.md): the status bar's
-// SiteHealthLabel reads a SiteMonitor (round trip in ms, a site that is down, faults, the
-// alarm colour while a link is down or the test holds); the setup panel's SiteHealthView lists
+// The console's per-site health (sites: docs/configuration.md): the status bar's link label
+// (SiteHealthLabel) reads a SiteMonitor (each site's address or name, connected with its
+// round trip in ms, down, faults, the alarm colour while a link is down); the setup panel's SiteHealthView lists
 // the configuration's sites (address, specimens, the default site for unlisted specimens) and
 // fills each site's health from the monitor. Offscreen.
 
@@ -42,23 +42,41 @@ nlohmann::json twoLabs() {
 class TestSiteHealth : public QObject {
     Q_OBJECT
 private slots:
+    // The status bar's one link label (issue 25 item 1): every site of the test from the
+    // monitor, by address (one site) or name (several), "(connects at start)" before any
+    // state, red while one is down.
     void statusBarLabelShowsEverySite() {
         auto monitor = std::make_shared<SiteMonitor>();
         SiteHealthLabel label;
-        label.setMonitor(nullptr);
-        QVERIFY(label.isHidden());
+        QCOMPARE(label.text(), QStringLiteral("link: no link"));
+        label.setSites({{QStringLiteral("Lab C"), QStringLiteral("tcp://127.0.0.1:5102"), false, {}},
+                        {QStringLiteral("Lab D"), QStringLiteral("tcp://127.0.0.1:5101"), false, {}}});
+        QCOMPARE(label.text(),
+                 QStringLiteral("link: Lab C (connects at start) | Lab D (connects at start)"));
         monitor->update({site("Lab C", true, 0.62e-3, 0), site("Lab D", true, 1.5e-3, 0)}, false);
         label.setMonitor(monitor);
-        QVERIFY(!label.isHidden());
-        QCOMPARE(label.text(), QStringLiteral("sites: Lab C 0.62 ms | Lab D 1.50 ms"));
+        QCOMPARE(label.text(),
+                 QStringLiteral("link: Lab C connected, 0.62 ms | Lab D connected, 1.50 ms"));
         QVERIFY(label.styleSheet().isEmpty());
-        QVERIFY(label.toolTip().contains(QStringLiteral("TCP link to Lab D (Bearing D)")));
+        QVERIFY2(label.toolTip().contains(QStringLiteral("Lab D: tcp://127.0.0.1:5101")) &&
+                     label.toolTip().contains(QStringLiteral("Bearing D")),
+                 qPrintable(label.toolTip()));
 
         monitor->update({site("Lab C", false, 0.62e-3, 1), site("Lab D", true, 1.5e-3, 0)}, true);
         label.refresh();
-        QCOMPARE(label.text(), QStringLiteral("sites: Lab C down (faults: 1) | Lab D 1.50 ms"));
+        QCOMPARE(label.text(),
+                 QStringLiteral("link: Lab C down (faults: 1) | Lab D connected, 1.50 ms"));
         QVERIFY(label.styleSheet().contains(QStringLiteral("#c62828")));
         QVERIFY(label.toolTip().contains(QStringLiteral("last fault: Bearing C: link lost")));
+
+        // One site: its address; the built-in virtual lab by name.
+        label.setSites({{QStringLiteral("controller"), QStringLiteral("tcp://127.0.0.1:5600"), false, {}}});
+        monitor->update({site("controller", true, 1e-3, 0)}, false);
+        label.refresh();
+        QCOMPARE(label.text(), QStringLiteral("link: tcp://127.0.0.1:5600 connected, 1.00 ms"));
+        QVERIFY(label.styleSheet().isEmpty());
+        label.setSites({{QStringLiteral("controller"), QStringLiteral("builtin"), true, {}}});
+        QCOMPARE(label.text(), QStringLiteral("link: built-in virtual lab"));
 
         SiteStatus fresh = site("Lab C", true, std::nan(""), 0);
         QCOMPARE(siteHealthText(fresh), QStringLiteral("-"));

@@ -165,35 +165,35 @@ private slots:
         QCOMPARE(w.nonFinite, 0);
     }
 
-    void onApprovalQueuesAndApprovingAppliesWhileRejectingDoesNot()
+    void onApprovalProposesOncePerIntervalAndApprovingAppliesWhileRejectingDoesNot()
     {
         TestConfig cfg = loadConfigFile(preset(3));
         cfg.analysis.duration = 3.0;
         cfg.updating.policy = ReporterPolicy::OnApproval;
+        cfg.updating.proposalInterval = 0.5;
         auto test = buildHybridTest(cfg);
         QVERIFY(test->prepare());
-        for (int i = 0; i < 200; ++i)
+        for (int i = 0; i < 120; ++i)
             test->step();
         HysteresisLaw* twin = test->structure().element("Element 2")->law();
         const double before = *test::parameterNamed(*twin, "k0");
         auto& pending = test->updater()->reporter().pending();
-        // 200 steps of proposals, none replaced: the queue is full (its capacity), the offers
-        // beyond it counted and reported once as an alarm.
-        const int capacity = test->updater()->reporter().maxPending();
-        QCOMPARE(int(pending.size()), capacity);
-        QVERIFY(test->updater()->reporter().notQueuedCount() > 0);
-        int full = 0;
-        for (const Alarm& a : test->alarms())
-            full += a.message.find("approval queue full") != std::string::npos;
-        QCOMPARE(full, 1);
+        // One target, one proposal: renewed every 0.5 s with the latest estimate (never a
+        // queue of every step's offer), so it is less than one interval old.
+        QCOMPARE(int(pending.size()), 1);
+        QCOMPARE(test->updater()->reporter().notQueuedCount(), 0);
         const UpdateProposal p = pending.front();
+        QVERIFY2(test->time() - p.time < 0.5 && p.step > 50,
+                 qPrintable(QStringLiteral("made at step %1").arg(p.step)));
         QVERIFY(test->rejectUpdate(p.id));
         QCOMPARE(*test::parameterNamed(*twin, "k0"), before);
-        QCOMPARE(int(pending.size()), capacity - 1);
-        test->step(); // room for one more, at the end of the queue
-        QCOMPARE(int(pending.size()), capacity);
-        const UpdateProposal q = test->updater()->reporter().pending().back();
+        QVERIFY(pending.empty());
+        for (int i = 0; i < 60 && pending.empty(); ++i)
+            test->step(); // the next one, one interval after the last
+        QCOMPARE(int(pending.size()), 1);
+        const UpdateProposal q = pending.front();
         QVERIFY(q.step > p.step);
+        QVERIFY(q.time - p.time >= 0.5 - 1e-9);
         QVERIFY(test->approveUpdate(q.id));
         QCOMPARE(*test::parameterNamed(*twin, "k0"), q.proposed.at(q.parameters.indexOf("k0", "test")));
     }

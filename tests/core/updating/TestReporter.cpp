@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 using namespace hsmu;
 
@@ -176,73 +177,123 @@ private slots:
         QCOMPARE(fired, expected);
     }
 
-    void approvalAppliesAndRejectionDoesNot()
+    // Issue 25 item 2: one proposal per target, renewed every proposal interval with the
+    // latest estimate (superseding the pending one, whose fate is an event); an approval of a
+    // superseded or stale proposal is refused, so nothing older than one interval is applied.
+    void approvalSupersedesPerTargetAndRefusesStaleProposals()
     {
         Rig rig;
         Reporter r(oneTarget(), ReporterPolicy::OnApproval);
+        r.setProposalInterval(0.05);
         rig.moveTo(0.02);
-        QVERIFY(offer(r, 1, 0.01, estimate(1.2), rig.s).empty());
+        QVERIFY(offer(r, 1, 0.01, estimate(1.2), rig.s).empty()); // the first one at once
         QCOMPARE(int(r.pending().size()), 1);
         const UpdateProposal p = r.pending().front();
         QCOMPARE(valueOf(p.parameters, p.proposed, "k0"), 1.2);
         QCOMPARE(valueOf(p.parameters, p.current, "k0"), 1.0);
         QVERIFY(r.reject(p.id));
         QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.0); // rejected: unchanged
-        QVERIFY(!r.reject(p.id));                   // gone
+        QVERIFY(!r.reject(p.id));                                // gone
+        // The next one comes one interval after the last proposal, not at once.
+        QVERIFY(offer(r, 2, 0.02, estimate(1.25), rig.s).empty());
+        QVERIFY(r.pending().empty());
 
         r.setProposalFitError(0.25);
-        offer(r, 2, 0.02, estimate(1.3), rig.s);
-        offer(r, 3, 0.03, estimate(1.35), rig.s); // queued after the older one, not replacing it
-        QCOMPARE(int(r.pending().size()), 2);
+        QVERIFY(offer(r, 6, 0.06, estimate(1.3), rig.s).empty());
+        QCOMPARE(int(r.pending().size()), 1);
+        const int first = r.pending().front().id;
+        QCOMPARE(r.pending().front().fitError, 0.25);
+        // Within the interval the proposal stays as it is; the latest offer is known.
+        QVERIFY(offer(r, 7, 0.07, estimate(1.31), rig.s).empty());
+        QCOMPARE(r.pending().front().id, first);
         QCOMPARE(valueOf(r.pending().front().parameters, r.pending().front().proposed, "k0"), 1.3);
-        QCOMPARE(valueOf(r.pending().back().parameters, r.pending().back().proposed, "k0"), 1.35);
-        QCOMPARE(r.pending().back().fitError, 0.25);
-        const auto ev = r.approve(r.pending().back().id, rig.s, 3, 0.03);
+        QCOMPARE(r.latestOffer("Target").size(), std::size_t(2));
+        QCOMPARE(valueOf(r.pending().front().parameters,
+                         std::vector<double>(r.latestOffer("Target").begin(),
+                                             r.latestOffer("Target").end()),
+                         "k0"),
+                 1.31);
+        QVERIFY(r.latestOffer("Nowhere").empty());
+        // One interval later a new proposal takes its place; the old one's fate is an event.
+        const auto events = offer(r, 11, 0.11, estimate(1.35), rig.s);
+        QCOMPARE(int(events.size()), 1);
+        QCOMPARE(events[0].decision, UpdateDecision::Superseded);
+        QCOMPARE(events[0].proposal, first);
+        QCOMPARE(events[0].step, 11);
+        QCOMPARE(valueOf(events[0].parameters, events[0].applied, "k0"), 1.3);
+        QVERIFY(!events[0].ok);
+        QCOMPARE(int(r.pending().size()), 1);
+        const int newer = r.pending().front().id;
+        QVERIFY(newer != first);
+        QCOMPARE(r.pending().front().step, 11);
+        QCOMPARE(r.supersededBy(first), std::optional<int>(newer));
+        QVERIFY(!r.supersededBy(newer));
+        // The superseded one cannot be approved; the one shown can.
+        QVERIFY(!r.approve(first, rig.s, 11, 0.11));
+        const auto ev = r.approve(newer, rig.s, 12, 0.12);
         QVERIFY(ev && ev->ok);
         QCOMPARE(ev->decision, UpdateDecision::Applied);
+        QCOMPARE(ev->proposal, newer);
         QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.35);
         QCOMPARE(r.appliedCount(), 1);
-        // The older one is still pending; rejecting it is an event with its values.
-        const int older = r.pending().front().id;
-        const auto no = r.rejectProposal(older, 4, 0.04);
+        // A proposal that no offer renewed for one interval is stale: refused, still pending.
+        QVERIFY(offer(r, 16, 0.16, estimate(1.4), rig.s).empty());
+        const UpdateProposal last = r.pending().front();
+        QVERIFY(!r.stale(last, 0.20));
+        QVERIFY(r.stale(last, 0.21));
+        QVERIFY(!r.approve(last.id, rig.s, 21, 0.21));
+        QCOMPARE(int(r.pending().size()), 1);
+        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.35);
+        // Rejecting is an event with its values.
+        const auto no = r.rejectProposal(last.id, 21, 0.21);
         QVERIFY(no && !no->ok);
         QCOMPARE(no->decision, UpdateDecision::Rejected);
-        QCOMPARE(no->proposal, older);
-        QCOMPARE(valueOf(no->parameters, no->applied, "k0"), 1.3);
-        QCOMPARE(no->step, 4);
-        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.35);
+        QCOMPARE(no->proposal, last.id);
+        QCOMPARE(valueOf(no->parameters, no->applied, "k0"), 1.4);
         QVERIFY(r.pending().empty());
+        QCOMPARE(std::string(updateDecisionName(UpdateDecision::Superseded)), std::string("superseded"));
     }
 
+    // With more targets than the pending list holds, an offer that finds it full is not
+    // queued and is reported (never dropped silently); a decision makes room.
     void aFullApprovalQueueReportsEveryOfferNotQueued()
     {
-        Rig rig;
-        Reporter r(oneTarget(), ReporterPolicy::OnApproval);
-        r.setMaxPending(3);
+        Structure s;
+        s.addDof("DOF 1", 1.0);
+        for (const char* name : {"Target", "Twin"}) {
+            BoucWenParameters p;
+            p.beta = 3.0;
+            p.gamma = 1.0;
+            s.addElement(SpringElement::lateral(name, 0, std::make_unique<BoucWen>(p)));
+        }
+        s.finalize();
+        Reporter r({{"Target", {"k0"}, {}}, {"Twin", {"k0"}, {}}}, ReporterPolicy::OnApproval);
+        r.setProposalInterval(0.0); // every offer renews
+        r.setMaxPending(1);
         int notQueued = 0;
-        for (int step = 1; step <= 5; ++step) {
-            const auto events = offer(r, step, 0.01 * step, estimate(1.0 + 0.01 * step), rig.s);
+        for (int step = 1; step <= 3; ++step) {
+            const auto events = offer(r, step, 0.01 * step, estimate(1.0 + 0.01 * step), s);
             for (const UpdateEvent& e : events) {
+                if (e.decision == UpdateDecision::Superseded)
+                    continue; // Target's own, renewed
                 QCOMPARE(e.decision, UpdateDecision::NotQueued);
-                QCOMPARE(e.step, step);
-                QCOMPARE(valueOf(e.parameters, e.applied, "k0"), 1.0 + 0.01 * step); // what was offered
+                QCOMPARE(e.element, std::string("Twin"));
+                QCOMPARE(valueOf(e.parameters, e.applied, "k0"), 1.0 + 0.01 * step);
                 ++notQueued;
             }
         }
-        QCOMPARE(notQueued, 2);
-        QCOMPARE(r.notQueuedCount(), 2);
-        QCOMPARE(int(r.pending().size()), 3);
-        QCOMPARE(r.pending().front().step, 1); // the oldest kept: nothing moves under the operator
-        // A decision makes room for the next offer.
-        QVERIFY(r.reject(r.pending().front().id));
-        QVERIFY(offer(r, 6, 0.06, estimate(1.06), rig.s).empty());
-        QCOMPARE(r.pending().back().step, 6);
-        // The headless flag decides every one, rejections included.
-        const auto all = r.resolveAll(false, rig.s, 7, 0.07);
-        QCOMPARE(int(all.size()), 3);
-        for (const UpdateEvent& e : all)
-            QCOMPARE(e.decision, UpdateDecision::Rejected);
-        QCOMPARE(*test::parameterNamed(rig.law(), "k0"), 1.0);
+        QCOMPARE(notQueued, 3);
+        QCOMPARE(r.notQueuedCount(), 3);
+        QCOMPARE(int(r.pending().size()), 1);
+        QCOMPARE(r.pending().front().element, std::string("Target"));
+        QCOMPARE(r.pending().front().step, 3); // renewed in place
+        // The headless flag decides what is pending, rejections included.
+        const auto all = r.resolveAll(false, s, 4, 0.04);
+        QCOMPARE(int(all.size()), 1);
+        QCOMPARE(all[0].decision, UpdateDecision::Rejected);
+        // Room again: Target's next offer is queued, Twin's still not (the cap is 1).
+        QVERIFY(offer(r, 5, 0.05, estimate(1.05), s).size() == 1);
+        QCOMPARE(int(r.pending().size()), 1);
     }
 
     void applyingKeepsTheTargetStateContinuous()
