@@ -2172,7 +2172,7 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     </message>
     <message>
         <source>Estimate now</source>
-        <translation>Estimación actual</translation>
+        <translation>Estim. actual</translation>
     </message>
     <message>
         <source>The target&apos;s current value, the proposed one, the estimator&apos;s value now and the change the proposal makes, in the law&apos;s normalized units</source>

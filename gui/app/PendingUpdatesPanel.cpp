@@ -61,6 +61,10 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     m_tree = new QTreeWidget(this);
     m_tree->setColumnCount(ColumnCount);
     m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
+    // Five columns share the dock's width: a long header is cut ("..."), the numbers fit,
+    // and no horizontal scroll bar takes a row of the short list.
+    m_tree->header()->setMinimumSectionSize(40);
+    m_tree->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_tree->setAlternatingRowColors(true);
     // Room for the header, the oldest proposal's title, its decision buttons and a parameter:
     // the dock cannot be squeezed below that (it was ~60 px at 1280x720, buttons hidden).
