@@ -6,9 +6,13 @@
 //   docks: Test setup and Parameters (right, one tab each: the setup raised when a test is
 //     loaded, the parameters when it runs), Pending updates (right), Alarms (bottom); their
 //     layout and the window geometry are remembered (ConsoleSettings)
-//   TestStatusBar: test time, step, steps/s, state, link, recording
+//   TestStatusBar: test time, step, steps/s and time left, state, link per site (from the
+//     test's SiteMonitor, showLink()), recording
 //   menus: File (open, recent files, open record -> ReplayWindow, add a note to the record
-//     (Ctrl+N, TestController::addNote), settings, quit), View
+//     (Ctrl+N, TestController::addNote; also after the end), settings, quit), View, Help
+//     (the guide, the keyboard shortcuts, About); F5 / F6 / F7 / F10 / Shift+F5 run the
+//     tool bar's Start / Pause / Resume / Single step / Stop with their confirmations
+// The window fits the available screen (fitToScreen: the designed or remembered geometry).
 // Start goes through the pre-flight: the worker prepares the test (connects a link, checks
 // stability) and the PreflightDialog must be confirmed before the first step; a command-line
 // --start is the operator's confirmation (setConfirmBeforeStart(false)). An emergency hold
