@@ -52,19 +52,26 @@ double loopDelay(const RthsSettings& s, double f)
 }
 
 RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
-                const RthsSettings& settings)
+                const RthsSettings& settings, TickGate* gate, double duration)
 {
     RthsLoop loop(partition, groundMotion, settings);
     const double h = loop.period();
-    const long n = long(std::floor(groundMotion.duration() / h + 1e-9)) + 1;
+    const double length = duration > 0.0 ? std::min(duration, groundMotion.duration())
+                                         : groundMotion.duration();
+    const long n = long(std::floor(length / h + 1e-9)) + 1;
     RthsRun run;
+    std::string gateHold;
     const auto floors = partition.reference.m.rows();
     for (auto* v : {&run.time, &run.desired, &run.command, &run.measured, &run.force})
         v->reserve(std::size_t(n));
     std::vector<Eigen::VectorXd> hybrid;
     hybrid.reserve(std::size_t(n));
     for (long k = 0; k < n; ++k) {
+        if (gate && !gate->admit(k, gateHold))
+            break;
         const bool advanced = loop.tick();
+        if (gate)
+            gate->done(k);
         const RthsTick& t = loop.last(); // sampled even when the tick held
         run.time.push_back(t.time);
         run.desired.push_back(t.desired);
@@ -78,7 +85,7 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
         if (!advanced)
             break;
     }
-    run.hold = loop.holdReason();
+    run.hold = loop.holdReason().empty() ? gateHold : loop.holdReason();
     const long m = long(run.time.size());
     run.hybrid.resize(m, floors);
     for (long k = 0; k < m; ++k)

@@ -34,9 +34,20 @@ RthsSettings defaultCompensation(const PlantParameters& nominal = {});
 /// The benchmark case's partition with the plant's specimen (me, ce, ke) at floor 1.
 Partition benchmarkPartition(int benchmarkCase, const PlantParameters& plant);
 
-/// Run a whole record (its duration, at settings.rate) and evaluate it.
+/// Paces the ticks of runRths (the real-time runner in comms; nothing at the simulated pace).
+class TickGate {
+public:
+    virtual ~TickGate() = default;
+    /// Before tick k: wait for its release time; false (with why) holds the run before it.
+    virtual bool admit(long k, std::string& why) = 0;
+    /// Tick k's work is done (its lateness is judged here).
+    virtual void done(long k) = 0;
+};
+
+/// Run a whole record (its duration, at settings.rate) and evaluate it; with a gate, each tick
+/// waits for admit() and reports done(). duration > 0 stops earlier [s].
 RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
-                const RthsSettings& settings);
+                const RthsSettings& settings, TickGate* gate = nullptr, double duration = 0.0);
 
 /// Command (before the lead) to measured displacement of the discrete loop at omega [rad/s]:
 /// Lead(z) C(z) Gd / (1 + C(z) Gd), z = e^{j omega h}, Gd ~ G(j omega) e^{-j omega h / 2} (ZOH).

@@ -49,26 +49,34 @@ Eigen::VectorXd RthsLoop::accelerationOf(const Eigen::VectorXd& x, const Eigen::
     return m_mnInv * load;
 }
 
+std::string plantLimitBreach(const ServoHydraulicPlant& plant, const ActuatorLimits& l)
+{
+    std::ostringstream o;
+    o.precision(4);
+    if (std::abs(plant.displacement()) > l.stroke)
+        o << "actuator displacement " << plant.displacement() * 1000.0
+          << " mm beyond the stroke limit +-" << l.stroke * 1000.0 << " mm";
+    else if (std::abs(plant.force()) > l.force)
+        o << "actuator force " << plant.force() << " N beyond the limit +-" << l.force << " N";
+    else if (std::abs(plant.velocity()) > l.velocity)
+        o << "actuator velocity " << plant.velocity() * 1000.0 << " mm/s beyond the limit +-"
+          << l.velocity * 1000.0 << " mm/s";
+    return o.str();
+}
+
 void RthsLoop::checkLimits(double command)
 {
     const auto& l = m_s.limits;
     std::ostringstream o;
     o.precision(4);
-    const double t = double(m_k) * m_h;
     if (std::abs(command) > l.stroke)
         o << "actuator command " << command * 1000.0 << " mm beyond the stroke limit +-"
           << l.stroke * 1000.0 << " mm";
-    else if (std::abs(m_plant.displacement()) > l.stroke)
-        o << "actuator displacement " << m_plant.displacement() * 1000.0
-          << " mm beyond the stroke limit +-" << l.stroke * 1000.0 << " mm";
-    else if (std::abs(m_plant.force()) > l.force)
-        o << "actuator force " << m_plant.force() << " N beyond the limit +-" << l.force << " N";
-    else if (std::abs(m_plant.velocity()) > l.velocity)
-        o << "actuator velocity " << m_plant.velocity() * 1000.0 << " mm/s beyond the limit +-"
-          << l.velocity * 1000.0 << " mm/s";
+    else if (const std::string why = plantLimitBreach(m_plant, l); !why.empty())
+        o << why;
     else
         return;
-    o << " at tick " << m_k << " (t = " << t << " s): test held";
+    o << " at tick " << m_k << " (t = " << double(m_k) * m_h << " s): test held";
     m_hold = o.str();
 }
 

@@ -102,6 +102,9 @@ private:
     std::string m_hold;
 };
 
+/// The first limit the plant is past, as a sentence naming the channel and its value; "".
+std::string plantLimitBreach(const ServoHydraulicPlant& plant, const ActuatorLimits& limits);
+
 /// The reference structure's response at the loop's ticks (RK4 at h, as the loop): row k,
 /// column i = floor i's displacement [m] at t = k h, for ticks 0 .. n-1.
 Eigen::MatrixXd referenceResponse(const LinearStructure& reference, const GroundMotion& ag,

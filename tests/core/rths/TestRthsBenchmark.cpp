@@ -6,6 +6,7 @@
 // CTest runs one case per test (tests/core/rths/CMakeLists.txt): data tags "case1".."case4".
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/rths/RthsBenchmark.h"
+#include "core/rths/RthsReport.h"
 
 #include <QtTest>
 
@@ -148,6 +149,27 @@ private slots:
         QVERIFY(std::abs(loopDelay(s, 1.0) - 4.6e-3) < 0.1e-3);
         s.compensation.lead.enabled = false;
         QVERIFY2(std::abs(loopDelay(s, 1.0) - 10.4e-3) < 0.3e-3, qPrintable(QString::number(loopDelay(s, 1.0) * 1e3)));
+    }
+
+    void preflightRefusesALoopSlowerThanTheCriticalDelay()
+    {
+        // The PI alone leaves ~10.6 ms (with the force's tick) against case 4's 8.7 ms: refused
+        // with both delays; the sample controller (4.8 ms) passes case 1 (14.6 ms) unflagged
+        // but is flagged on case 4; the default compensation leaves well under 1 ms.
+        RthsSettings pi = benchmarkSampleController();
+        pi.compensation.lead.enabled = false;
+        const Preflight refused = preflight(benchmarkPartition(4, pi.plant), pi);
+        QVERIFY(refused.refused);
+        QVERIFY(std::abs(refused.criticalDelay - 8.7e-3) < 0.1e-3);
+        QVERIFY2(refused.message.find("8.7") != std::string::npos && refused.message.find("10.") != std::string::npos,
+                 refused.message.c_str());
+        const RthsSettings sample = benchmarkSampleController();
+        const Preflight ok = preflight(benchmarkPartition(1, sample.plant), sample);
+        QVERIFY(!ok.refused && !ok.flagged);
+        QVERIFY(std::abs(ok.loopDelay - (4.6e-3 + 1.0 / 4096.0)) < 0.15e-3);
+        QVERIFY(preflight(benchmarkPartition(4, sample.plant), sample).flagged);
+        const RthsSettings def = defaultCompensation();
+        QVERIFY(preflight(benchmarkPartition(4, def.plant), def).loopDelay < 0.5e-3);
     }
 
     void badPlantIsRefusedWithItsName()
