@@ -3020,4 +3020,135 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>update #%1 is no longer pending: #%2 replaced it</translation>
     </message>
 </context>
+<context>
+    <name>RthsCommand</name>
+    <message>
+        <source>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</source>
+        <translation>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>The subcommand.</translation>
+    </message>
+    <message>
+        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
+        <translation>A configuration file or rths-benchmark-case-1 .. -4.</translation>
+    </message>
+    <message>
+        <source>Output folder.</source>
+        <translation>Output folder.</translation>
+    </message>
+    <message>
+        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
+        <translation>Ground-motion record (m/s^2 unless the configuration says).</translation>
+    </message>
+    <message>
+        <source>Scale of the record.</source>
+        <translation>Scale of the record.</translation>
+    </message>
+    <message>
+        <source>Stop after T seconds.</source>
+        <translation>Stop after T seconds.</translation>
+    </message>
+    <message>
+        <source>fast (simulated, default) or realtime (wall clock).</source>
+        <translation>fast (simulated, default) or realtime (wall clock).</translation>
+    </message>
+    <message>
+        <source>Run the loop's thread under SCHED_FIFO (with --pace realtime).</source>
+        <translation>Run the loop's thread under SCHED_FIFO (with --pace realtime).</translation>
+    </message>
+    <message>
+        <source>default, none, lead, polynomial, feedforward or ats.</source>
+        <translation>default, none, lead, polynomial, feedforward or ats.</translation>
+    </message>
+    <message>
+        <source>Draw the plant from the benchmark's distributions with this seed.</source>
+        <translation>Draw the plant from the benchmark's distributions with this seed.</translation>
+    </message>
+    <message>
+        <source>Sensor noise seed.</source>
+        <translation>Sensor noise seed.</translation>
+    </message>
+    <message>
+        <source>Sensors without noise.</source>
+        <translation>Sensors without noise.</translation>
+    </message>
+    <message>
+        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
+        <translation>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>missing --out DIR</translation>
+    </message>
+    <message>
+        <source>--pace: expected fast or realtime, got '%1'</source>
+        <translation>--pace: expected fast or realtime, got '%1'</translation>
+    </message>
+    <message>
+        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got '%1'</source>
+        <translation>--compensation: expected default, none, lead, polynomial, feedforward or ats, got '%1'</translation>
+    </message>
+    <message>
+        <source>--seed, --scale and --duration take numbers</source>
+        <translation>--seed, --scale and --duration take numbers</translation>
+    </message>
+    <message>
+        <source>--perturb takes a seed</source>
+        <translation>--perturb takes a seed</translation>
+    </message>
+    <message>
+        <source>no ground motion: give --ground-motion FILE</source>
+        <translation>no ground motion: give --ground-motion FILE</translation>
+    </message>
+    <message>
+        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
+        <translation>%1: the ground-motion record does not exist (give --ground-motion FILE)</translation>
+    </message>
+    <message>
+        <source>%1: %2 Hz loop, compensation %3%4</source>
+        <translation>%1: %2 Hz loop, compensation %3%4</translation>
+    </message>
+    <message>
+        <source> + phase lead</source>
+        <translation> + phase lead</translation>
+    </message>
+    <message>
+        <source>pre-flight: %1</source>
+        <translation>pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>refused in pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output folder</source>
+        <translation>%1: cannot create the output folder</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
+        <translation>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</translation>
+    </message>
+    <message>
+        <source>%1 ticks (%2 s); %3</source>
+        <translation>%1 ticks (%2 s); %3</translation>
+    </message>
+    <message>
+        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
+        <translation>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late)</source>
+        <translation>deadline misses: %1 (worst %2 us late)</translation>
+    </message>
+    <message>
+        <source>outputs: %1/steps.csv, %1/summary.json</source>
+        <translation>outputs: %1/steps.csv, %1/summary.json</translation>
+    </message>
+    <message>
+        <source>hsmu rths: %1</source>
+        <translation>hsmu rths: %1</translation>
+    </message>
+</context>
 </TS>

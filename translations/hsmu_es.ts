@@ -3020,4 +3020,135 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>la actualización n.º %1 ya no está pendiente: la n.º %2 la sustituyó</translation>
     </message>
 </context>
+<context>
+    <name>RthsCommand</name>
+    <message>
+        <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
+        <translation>Simulación híbrida en tiempo real con el actuador servohidráulico del laboratorio virtual.</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>El subcomando.</translation>
+    </message>
+    <message>
+        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
+        <translation>Un archivo de configuración o rths-benchmark-case-1 .. -4.</translation>
+    </message>
+    <message>
+        <source>Output folder.</source>
+        <translation>Carpeta de salida.</translation>
+    </message>
+    <message>
+        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
+        <translation>Registro sísmico (m/s^2 salvo que la configuración diga otra cosa).</translation>
+    </message>
+    <message>
+        <source>Scale of the record.</source>
+        <translation>Factor de escala del registro.</translation>
+    </message>
+    <message>
+        <source>Stop after T seconds.</source>
+        <translation>Detener tras T segundos.</translation>
+    </message>
+    <message>
+        <source>fast (simulated, default) or realtime (wall clock).</source>
+        <translation>fast (simulado, por defecto) o realtime (reloj real).</translation>
+    </message>
+    <message>
+        <source>Run the loop&apos;s thread under SCHED_FIFO (with --pace realtime).</source>
+        <translation>Ejecutar el hilo del lazo con SCHED_FIFO (con --pace realtime).</translation>
+    </message>
+    <message>
+        <source>default, none, lead, polynomial, feedforward or ats.</source>
+        <translation>default, none, lead, polynomial, feedforward o ats.</translation>
+    </message>
+    <message>
+        <source>Draw the plant from the benchmark&apos;s distributions with this seed.</source>
+        <translation>Sortear la planta de las distribuciones del benchmark con esta semilla.</translation>
+    </message>
+    <message>
+        <source>Sensor noise seed.</source>
+        <translation>Semilla del ruido de los sensores.</translation>
+    </message>
+    <message>
+        <source>Sensors without noise.</source>
+        <translation>Sensores sin ruido.</translation>
+    </message>
+    <message>
+        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
+        <translation>se esperaba un CONFIG (un archivo o rths-benchmark-case-1 .. -4)</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>falta --out DIR</translation>
+    </message>
+    <message>
+        <source>--pace: expected fast or realtime, got &apos;%1&apos;</source>
+        <translation>--pace: se esperaba fast o realtime, se recibió &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got &apos;%1&apos;</source>
+        <translation>--compensation: se esperaba default, none, lead, polynomial, feedforward o ats, se recibió &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--seed, --scale and --duration take numbers</source>
+        <translation>--seed, --scale y --duration requieren números</translation>
+    </message>
+    <message>
+        <source>--perturb takes a seed</source>
+        <translation>--perturb requiere una semilla</translation>
+    </message>
+    <message>
+        <source>no ground motion: give --ground-motion FILE</source>
+        <translation>no hay registro sísmico: indique --ground-motion ARCHIVO</translation>
+    </message>
+    <message>
+        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
+        <translation>%1: el registro sísmico no existe (indique --ground-motion ARCHIVO)</translation>
+    </message>
+    <message>
+        <source>%1: %2 Hz loop, compensation %3%4</source>
+        <translation>%1: lazo de %2 Hz, compensación %3%4</translation>
+    </message>
+    <message>
+        <source> + phase lead</source>
+        <translation> + adelanto de fase</translation>
+    </message>
+    <message>
+        <source>pre-flight: %1</source>
+        <translation>verificación previa: %1</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>rechazado en la verificación previa: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output folder</source>
+        <translation>%1: no se puede crear la carpeta de salida</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
+        <translation>hsmu rths: no se obtuvo la prioridad de tiempo real (%1); el lazo corrió con prioridad normal</translation>
+    </message>
+    <message>
+        <source>%1 ticks (%2 s); %3</source>
+        <translation>%1 ciclos (%2 s); %3</translation>
+    </message>
+    <message>
+        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
+        <translation>evaluación en frecuencia: amplitud %1, retardo %2 ms a %3 Hz; indicador de seguimiento %4 m^2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late)</source>
+        <translation>plazos incumplidos: %1 (el peor con %2 us de retraso)</translation>
+    </message>
+    <message>
+        <source>outputs: %1/steps.csv, %1/summary.json</source>
+        <translation>salidas: %1/steps.csv, %1/summary.json</translation>
+    </message>
+    <message>
+        <source>hsmu rths: %1</source>
+        <translation>hsmu rths: %1</translation>
+    </message>
+</context>
 </TS>

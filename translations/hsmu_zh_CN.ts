@@ -3017,4 +3017,135 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>更新 #%1 已不再待定：#%2 已替换它</translation>
     </message>
 </context>
+<context>
+    <name>RthsCommand</name>
+    <message>
+        <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
+        <translation>在虚拟实验室的电液伺服作动器上进行实时混合试验。</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>子命令。</translation>
+    </message>
+    <message>
+        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
+        <translation>配置文件或 rths-benchmark-case-1 .. -4。</translation>
+    </message>
+    <message>
+        <source>Output folder.</source>
+        <translation>输出文件夹。</translation>
+    </message>
+    <message>
+        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
+        <translation>地震动记录（除非配置另有说明，单位 m/s^2）。</translation>
+    </message>
+    <message>
+        <source>Scale of the record.</source>
+        <translation>记录的缩放系数。</translation>
+    </message>
+    <message>
+        <source>Stop after T seconds.</source>
+        <translation>T 秒后停止。</translation>
+    </message>
+    <message>
+        <source>fast (simulated, default) or realtime (wall clock).</source>
+        <translation>fast（模拟，默认）或 realtime（实际时钟）。</translation>
+    </message>
+    <message>
+        <source>Run the loop&apos;s thread under SCHED_FIFO (with --pace realtime).</source>
+        <translation>以 SCHED_FIFO 运行回路线程（配合 --pace realtime）。</translation>
+    </message>
+    <message>
+        <source>default, none, lead, polynomial, feedforward or ats.</source>
+        <translation>default、none、lead、polynomial、feedforward 或 ats。</translation>
+    </message>
+    <message>
+        <source>Draw the plant from the benchmark&apos;s distributions with this seed.</source>
+        <translation>用此种子从基准问题的分布中抽取被控对象。</translation>
+    </message>
+    <message>
+        <source>Sensor noise seed.</source>
+        <translation>传感器噪声种子。</translation>
+    </message>
+    <message>
+        <source>Sensors without noise.</source>
+        <translation>传感器无噪声。</translation>
+    </message>
+    <message>
+        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
+        <translation>需要一个 CONFIG（文件或 rths-benchmark-case-1 .. -4）</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>缺少 --out DIR</translation>
+    </message>
+    <message>
+        <source>--pace: expected fast or realtime, got &apos;%1&apos;</source>
+        <translation>--pace：应为 fast 或 realtime，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got &apos;%1&apos;</source>
+        <translation>--compensation：应为 default、none、lead、polynomial、feedforward 或 ats，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--seed, --scale and --duration take numbers</source>
+        <translation>--seed、--scale 和 --duration 需要数字</translation>
+    </message>
+    <message>
+        <source>--perturb takes a seed</source>
+        <translation>--perturb 需要一个种子</translation>
+    </message>
+    <message>
+        <source>no ground motion: give --ground-motion FILE</source>
+        <translation>没有地震动：请给出 --ground-motion FILE</translation>
+    </message>
+    <message>
+        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
+        <translation>%1：地震动记录不存在（请给出 --ground-motion FILE）</translation>
+    </message>
+    <message>
+        <source>%1: %2 Hz loop, compensation %3%4</source>
+        <translation>%1：%2 Hz 回路，补偿 %3%4</translation>
+    </message>
+    <message>
+        <source> + phase lead</source>
+        <translation> + 相位超前</translation>
+    </message>
+    <message>
+        <source>pre-flight: %1</source>
+        <translation>试验前检查：%1</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>试验前检查拒绝：%1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output folder</source>
+        <translation>%1：无法创建输出文件夹</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
+        <translation>hsmu rths：未获得实时优先级（%1）；回路以普通优先级运行</translation>
+    </message>
+    <message>
+        <source>%1 ticks (%2 s); %3</source>
+        <translation>%1 个周期（%2 s）；%3</translation>
+    </message>
+    <message>
+        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
+        <translation>频域评价：幅值 %1，延迟 %2 ms（%3 Hz）；跟踪指标 %4 m^2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late)</source>
+        <translation>错过截止时间：%1 次（最差迟到 %2 us）</translation>
+    </message>
+    <message>
+        <source>outputs: %1/steps.csv, %1/summary.json</source>
+        <translation>输出：%1/steps.csv、%1/summary.json</translation>
+    </message>
+    <message>
+        <source>hsmu rths: %1</source>
+        <translation>hsmu rths：%1</translation>
+    </message>
+</context>
 </TS>

@@ -13,10 +13,17 @@ ActuatorDynamics::ActuatorDynamics(const ActuatorModel& model, double rate) : m_
         const long d = std::lround(model.delay / h);
         m_line.assign(static_cast<std::size_t>(d > 0 ? d : 0), 0.0);
     }
+    if (model.type == ActuatorModel::Type::ServoHydraulic) {
+        rths::ServoActuatorSettings s = model.servo;
+        s.rate = rate; // the controller's own loop rate
+        m_servo.emplace(s);
+    }
 }
 
 void ActuatorDynamics::reset(double position) {
     m_position = position;
+    if (m_servo)
+        m_servo->reset(position);
     std::fill(m_line.begin(), m_line.end(), position);
     m_head = 0;
 }
@@ -25,6 +32,9 @@ double ActuatorDynamics::tick(double command) {
     switch (m_model.type) {
     case ActuatorModel::Type::Ideal:
         m_position = command;
+        break;
+    case ActuatorModel::Type::ServoHydraulic:
+        m_position = m_servo->tick(command);
         break;
     case ActuatorModel::Type::Lag:
         m_position += (command - m_position) * m_lagFactor;

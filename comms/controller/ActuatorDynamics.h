@@ -4,6 +4,7 @@
 //   ideal: a = c
 //   lag:   a += (c - a) (1 - exp(-h / tau))        (first-order lag, time constant tau [s])
 //   delay: a[i] = c[i - D], D = round(delay / h)   (pure delay of D ticks)
+//   servoHydraulic: one tick of rths::ServoActuator (servo-controller + plant, docs/rths.md)
 // The model (type, tau, delay) is the specimen section's `actuator` (ActuatorModel), run
 // here at the loop rate rather than once per integration step as in VirtualSpecimen.
 // reset(x) puts the actuator at rest at x (the delay line filled with x).
@@ -11,6 +12,7 @@
 #include "core/experimental/VirtualSpecimen.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace hsmu::comms {
@@ -32,6 +34,7 @@ private:
     std::vector<double> m_line; // ring buffer of the last D commands
     std::size_t m_head = 0;
     double m_position = 0.0;
+    std::optional<rths::ServoActuator> m_servo;
 };
 
 } // namespace hsmu::comms

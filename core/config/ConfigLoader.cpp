@@ -2,6 +2,7 @@
 #include "core/config/NumericalSite.h"
 #include "core/config/UpdatingConfig.h"
 #include "core/config/ConfigUnits.h"
+#include "core/config/RthsConfig.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
@@ -74,9 +75,13 @@ SpecimenSpec parseSpecimen(const JsonCursor& c)
     o.seed = static_cast<std::uint64_t>(c.integer("seed", 1, 0, std::numeric_limits<int>::max()));
     if (c.has("actuator")) {
         const JsonCursor a = c.child("actuator");
-        a.allowOnly({"type", "timeConstant", "delay"});
         const std::string type = a.string("type", "ideal");
-        if (type == "ideal")
+        if (type != "servoHydraulic")
+            a.allowOnly({"type", "timeConstant", "delay"});
+        if (type == "servoHydraulic") {
+            o.actuator.type = ActuatorModel::Type::ServoHydraulic;
+            parseServoActuator(a, o.actuator.servo); // SI units, docs/rths.md
+        } else if (type == "ideal")
             o.actuator.type = ActuatorModel::Type::Ideal;
         else if (type == "lag") {
             o.actuator.type = ActuatorModel::Type::Lag;
@@ -92,7 +97,7 @@ SpecimenSpec parseSpecimen(const JsonCursor& c)
                 a.fail("delay",
                        "expected a delay in [0, " + fmt(limits::kMaxActuatorDelay) + "] s");
         } else
-            a.fail("type", "expected 'ideal', 'lag' or 'delay', found '" + type + "'");
+            a.fail("type", "expected 'ideal', 'lag', 'delay' or 'servoHydraulic', found '" + type + "'");
     }
     if (c.has("fracture")) {
         const JsonCursor f = c.child("fracture");

@@ -16,7 +16,9 @@ std::string VirtualSpecimen::description() const
     char buf[200];
     const char* act = m_opt.actuator.type == ActuatorModel::Type::Lag     ? "lag"
                       : m_opt.actuator.type == ActuatorModel::Type::Delay ? "delay"
-                                                                          : "ideal";
+                      : m_opt.actuator.type == ActuatorModel::Type::ServoHydraulic
+                          ? "servo-hydraulic"
+                          : "ideal";
     std::snprintf(buf, sizeof buf, "virtual specimen (%s law, force noise std %.3g, %s actuator%s)",
                   m_law->lawName().c_str(), m_opt.forceNoiseStd, act,
                   m_opt.fracture.enabled() ? ", fracture event" : "");
@@ -32,6 +34,14 @@ ControlResult VirtualSpecimen::prepare(double dt)
     if (m_opt.actuator.type == ActuatorModel::Type::Delay) {
         const auto steps = static_cast<std::size_t>(std::lround(m_opt.actuator.delay / dt));
         m_delayLine.assign(steps, m_committedAchieved);
+    }
+    if (m_opt.actuator.type == ActuatorModel::Type::ServoHydraulic) {
+        try {
+            m_servo.emplace(m_opt.actuator.servo);
+        } catch (const std::exception& e) {
+            return ControlResult::fault(std::string("virtual specimen: ") + e.what());
+        }
+        m_servo->reset(m_committedAchieved);
     }
     return ControlResult::success();
 }
@@ -61,6 +71,11 @@ double VirtualSpecimen::actuatorResponse(double target)
     }
     case ActuatorModel::Type::Delay:
         return m_delayLine.empty() ? target : m_delayLine.front();
+    case ActuatorModel::Type::ServoHydraulic:
+        if (!m_servo)
+            return target;
+        m_servoTrial = *m_servo;
+        return m_servoTrial->advance(target, m_dt);
     case ActuatorModel::Type::Ideal:
         break;
     }
@@ -77,6 +92,12 @@ ControlResult VirtualSpecimen::setTarget(double d)
     }
     m_lastTarget = d;
     m_achieved = actuatorResponse(d);
+    if (m_servoTrial) {
+        if (const std::string why = m_servoTrial->limitBreach(); !why.empty()) {
+            hold(why);
+            return ControlResult::fault(m_holdReason);
+        }
+    }
     if (m_law->setTrialDeformation(m_achieved) != LawStatus::Ok) {
         hold("specimen law did not converge at deformation " + std::to_string(m_achieved));
         return ControlResult::fault(m_holdReason);
@@ -134,6 +155,8 @@ ControlResult VirtualSpecimen::commit()
         m_delayLine.pop_front();
         m_delayLine.push_back(m_lastTarget);
     }
+    if (m_servoTrial)
+        m_servo = m_servoTrial;
     return ControlResult::success();
 }
 

@@ -3,8 +3,10 @@
 // the ExperimentalControl seam. It has its *own* true law (different from the numerical
 // model's), and optionally:
 //   - Gaussian measurement noise on force and deformation (seeded, portable);
-//   - actuator tracking error: first-order lag  d_a[n+1] = d_a[n] + (d_t - d_a[n]) (1 - e^{-dt/tau})
-//     or a pure delay of round(delay / dt) steps;
+//   - actuator tracking error: first-order lag  d_a[n+1] = d_a[n] + (d_t - d_a[n]) (1 - e^{-dt/tau}),
+//     a pure delay of round(delay / dt) steps, or a servo-hydraulic actuator (rths::ServoActuator:
+//     round(dt rate) ticks of its controller's loop toward the target per step; a stroke,
+//     force or velocity limit of the plant holds the specimen naming the channel);
 //   - a fracture event: from the first step at which the cumulative deformation sum |dd|
 //     or the test time reaches its threshold, the force is multiplied by (1 - strengthLoss);
 //   - its own interlock limits (like a lab controller): a target past them is refused and the
@@ -13,6 +15,7 @@
 
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"
+#include "core/rths/ServoActuator.h"
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/util/PortableRandom.h"
 
@@ -20,14 +23,17 @@
 #include <deque>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace hsmu {
 
 struct ActuatorModel {
-    enum class Type { Ideal, Lag, Delay };
+    enum class Type { Ideal, Lag, Delay, ServoHydraulic };
     Type type = Type::Ideal;
     double timeConstant = 0.0; ///< first-order lag tau [s]
     double delay = 0.0;        ///< pure delay [s]
+    /// ServoHydraulic: the plant under its servo-controller at its loop rate (docs/rths.md).
+    rths::ServoActuatorSettings servo;
 };
 
 struct FractureEvent {
@@ -85,6 +91,7 @@ private:
     double m_achieved = 0.0, m_committedAchieved = 0.0;
     double m_cumulative = 0.0;
     std::deque<double> m_delayLine;
+    std::optional<rths::ServoActuator> m_servo, m_servoTrial; // committed and trial (ServoHydraulic)
     bool m_holding = false;
     std::string m_holdReason;
     bool m_fractured = false;

@@ -6,6 +6,7 @@
 #include "gui/cli/ExportCommand.h"
 #include "gui/cli/MaterialCommand.h"
 #include "gui/cli/ReplayCommand.h"
+#include "gui/cli/RthsCommand.h"
 #include "gui/cli/RunCommand.h"
 
 #include <QCoreApplication>
@@ -74,7 +75,7 @@ bool CliLauncher::headlessCommand(int argc, char** argv) {
     const std::string sub = argc > 1 ? argv[1] : "";
     if (sub == "run" || sub == "compare")
         return !hasArgument(argc, argv, {"--plots"});
-    if (sub == "material" || sub == "export")
+    if (sub == "material" || sub == "export" || sub == "rths")
         return true;
     return sub == "replay" && hasArgument(argc, argv, {"--identify", "--import"});
 }
@@ -89,6 +90,8 @@ int CliLauncher::runHeadless(const QStringList& arguments) {
         return ExportCommand::exec(arguments);
     if (sub == QLatin1String("replay"))
         return ReplayCommand::exec(arguments); // --identify / --import
+    if (sub == QLatin1String("rths"))
+        return RthsCommand::exec(arguments);
     return MaterialCommand::exec(arguments);
 }
 

@@ -1,0 +1,63 @@
+#pragma once
+// The RTHS benchmark (Silva, Gomez, Maghareh, Dyke & Spencer 2020; docs/rths.md, "The
+// benchmark"): a whole run of RthsLoop over a record, the histories it leaves, and the
+// evaluation criteria J1..J9 against the reference structure's response; the nominal loop's
+// closed-loop response (for the feedforward fit and pre-flight) and perturbed plants drawn from
+// the benchmark's distributions.
+
+#include "core/rths/RthsLoop.h"
+#include "core/rths/TrackingMetrics.h"
+
+#include <complex>
+#include <vector>
+
+namespace hsmu::rths {
+
+struct RthsRun {
+    std::vector<double> time, desired, command, measured, force; ///< per tick [s], [m], [N]
+    Eigen::MatrixXd hybrid;    ///< per tick x floor: the hybrid response [m]
+    Eigen::MatrixXd reference; ///< per tick x floor: the reference structure's response [m]
+    std::string hold;          ///< why the run stopped early, "" when it ran to the end
+    BenchmarkCriteria criteria;
+    FrequencyEvaluation frequency;
+    double trackingIndicator = 0.0; ///< [m^2]
+    double peakForce = 0.0, peakStroke = 0.0, peakVelocity = 0.0; ///< of the plant [N], [m], [m/s]
+};
+
+/// The benchmark's sample controller: PI 2 + 95 / s with the phase lead Gt on the command.
+RthsSettings benchmarkSampleController();
+/// The product's default RTHS compensation (docs/rths.md): the sample controller with an
+/// adaptive feedforward (ATS) ahead of its lead, starting from the feedforward fitted to the
+/// nominal loop over 0.2-6 Hz and re-fitted online to the plant it meets.
+RthsSettings defaultCompensation(const PlantParameters& nominal = {});
+
+/// The benchmark case's partition with the plant's specimen (me, ce, ke) at floor 1.
+Partition benchmarkPartition(int benchmarkCase, const PlantParameters& plant);
+
+/// Paces the ticks of runRths (the real-time runner in comms; nothing at the simulated pace).
+class TickGate {
+public:
+    virtual ~TickGate() = default;
+    /// Before tick k: wait for its release time; false (with why) holds the run before it.
+    virtual bool admit(long k, std::string& why) = 0;
+    /// Tick k's work is done (its lateness is judged here).
+    virtual void done(long k) = 0;
+};
+
+/// Run a whole record (its duration, at settings.rate) and evaluate it; with a gate, each tick
+/// waits for admit() and reports done(). duration > 0 stops earlier [s].
+RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
+                const RthsSettings& settings, TickGate* gate = nullptr, double duration = 0.0);
+
+/// Command (before the lead) to measured displacement of the discrete loop at omega [rad/s]:
+/// Lead(z) C(z) Gd / (1 + C(z) Gd), z = e^{j omega h}, Gd ~ G(j omega) e^{-j omega h / 2} (ZOH).
+std::complex<double> closedLoopResponse(const RthsSettings& s, double omega);
+/// The loop's delay at f [Hz] from closedLoopResponse [s].
+double loopDelay(const RthsSettings& s, double f);
+
+/// A plant drawn from the benchmark's distributions around nominal (a3, b1, b2, ke normal with
+/// the benchmark's standard deviations; ce follows ke at the nominal specimen damping ratio; a
+/// draw with a3 <= 0 is drawn again).
+PlantParameters perturbedPlant(const PlantParameters& nominal, PortableRandom& random);
+
+} // namespace hsmu::rths

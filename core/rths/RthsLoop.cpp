@@ -1,0 +1,157 @@
+#include "core/rths/RthsLoop.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace hsmu::rths {
+
+RthsLoop::RthsLoop(const Partition& partition, const GroundMotion& groundMotion,
+                   const RthsSettings& settings)
+    : m_p(partition), m_ag(groundMotion), m_s(settings), m_h(1.0 / settings.rate),
+      m_plant(settings.plant), m_pid(settings.pid, 1.0 / settings.rate),
+      m_comp(settings.compensation, 1.0 / settings.rate), m_random(settings.sensors.seed)
+{
+    if (!(settings.rate > 0.0 && std::isfinite(settings.rate)))
+        throw std::invalid_argument("RTHS: the loop rate must be a positive number of Hz");
+    if (settings.forceDelay < 0)
+        throw std::invalid_argument("RTHS: the force delay cannot be negative");
+    if (const std::string why = settings.plant.validate(); !why.empty())
+        throw std::invalid_argument("RTHS: " + why);
+    m_mnInv = m_p.numerical.m.inverse();
+    const auto n = m_p.numerical.m.rows();
+    m_x = Eigen::VectorXd::Zero(n);
+    m_v = Eigen::VectorXd::Zero(n);
+    m_plant.reset(0.0);
+    m_pid.reset(0.0);
+    m_comp.reset(0.0);
+}
+
+double RthsLoop::quantize(double v) const
+{
+    const double q = m_s.sensors.quantum;
+    return q > 0.0 ? q * std::round(v / q) : v;
+}
+
+double RthsLoop::sense(double value, double rms)
+{
+    return m_s.sensors.noise && rms > 0.0 ? value + rms * m_random.normal() : value;
+}
+
+Eigen::VectorXd RthsLoop::accelerationOf(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                         double ag, double fe) const
+{
+    const auto& n = m_p.numerical;
+    Eigen::VectorXd load = -(m_p.reference.m * m_p.reference.iota) * ag - n.c * v - n.k * x;
+    load(m_p.specimen.dof) -= fe;
+    return m_mnInv * load;
+}
+
+std::string plantLimitBreach(const ServoHydraulicPlant& plant, const ActuatorLimits& l)
+{
+    std::ostringstream o;
+    o.precision(4);
+    if (std::abs(plant.displacement()) > l.stroke)
+        o << "actuator displacement " << plant.displacement() * 1000.0
+          << " mm beyond the stroke limit +-" << l.stroke * 1000.0 << " mm";
+    else if (std::abs(plant.force()) > l.force)
+        o << "actuator force " << plant.force() << " N beyond the limit +-" << l.force << " N";
+    else if (std::abs(plant.velocity()) > l.velocity)
+        o << "actuator velocity " << plant.velocity() * 1000.0 << " mm/s beyond the limit +-"
+          << l.velocity * 1000.0 << " mm/s";
+    return o.str();
+}
+
+void RthsLoop::checkLimits(double command)
+{
+    const auto& l = m_s.limits;
+    std::ostringstream o;
+    o.precision(4);
+    if (std::abs(command) > l.stroke)
+        o << "actuator command " << command * 1000.0 << " mm beyond the stroke limit +-"
+          << l.stroke * 1000.0 << " mm";
+    else if (const std::string why = plantLimitBreach(m_plant, l); !why.empty())
+        o << why;
+    else
+        return;
+    o << " at tick " << m_k << " (t = " << double(m_k) * m_h << " s): test held";
+    m_hold = o.str();
+}
+
+bool RthsLoop::tick()
+{
+    if (holding())
+        return false;
+    const double t = double(m_k) * m_h;
+    const int j = m_p.specimen.dof;
+    // L1: sensors.
+    const double xm = quantize(sense(m_plant.displacement(), m_s.sensors.displacementNoise));
+    const double fm = sense(m_plant.force(), m_s.sensors.forceNoise);
+    m_forces.push_back(fm);
+    while (int(m_forces.size()) > m_s.forceDelay + 1)
+        m_forces.pop_front();
+    const double fe = int(m_forces.size()) > m_s.forceDelay ? m_forces.front() : 0.0;
+    // L2: the target, compensation, servo-controller.
+    const double ag0 = m_ag.at(t);
+    const Eigen::VectorXd a0 = accelerationOf(m_x, m_v, ag0, fe);
+    const TargetState target{m_x(j), m_v(j), a0(j)};
+    const double command = m_comp.command(target);
+    m_comp.observe(xm);
+    const double valve = quantize(m_pid.step(command - xm));
+    m_last.time = t;
+    m_last.desired = target.x;
+    m_last.command = command;
+    m_last.valve = valve;
+    m_last.measured = xm;
+    m_last.force = fm;
+    m_last.floors = m_x;
+    m_last.floors(j) = xm;
+    checkLimits(command);
+    if (holding())
+        return false;
+    // L4: the plant over [t, t + h].
+    m_plant.advance(valve, m_h);
+    // L5: the numerical substructure over [t, t + h] (RK4, fe held).
+    const double agMid = m_ag.at(t + 0.5 * m_h), ag1 = m_ag.at(t + m_h);
+    const Eigen::VectorXd k1x = m_v, k1v = a0;
+    const Eigen::VectorXd k2x = m_v + 0.5 * m_h * k1v;
+    const Eigen::VectorXd k2v = accelerationOf(m_x + 0.5 * m_h * k1x, k2x, agMid, fe);
+    const Eigen::VectorXd k3x = m_v + 0.5 * m_h * k2v;
+    const Eigen::VectorXd k3v = accelerationOf(m_x + 0.5 * m_h * k2x, k3x, agMid, fe);
+    const Eigen::VectorXd k4x = m_v + m_h * k3v;
+    const Eigen::VectorXd k4v = accelerationOf(m_x + m_h * k3x, k4x, ag1, fe);
+    m_x += m_h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+    m_v += m_h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+    ++m_k;
+    checkLimits(command);
+    return !holding();
+}
+
+Eigen::MatrixXd referenceResponse(const LinearStructure& r, const GroundMotion& ag, double h,
+                                  long n)
+{
+    const Eigen::MatrixXd mInv = r.m.inverse();
+    const Eigen::VectorXd load = r.m * r.iota;
+    const auto acc = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& v, double a) {
+        return Eigen::VectorXd(mInv * (-load * a - r.c * v - r.k * x));
+    };
+    const auto dofs = r.m.rows();
+    Eigen::MatrixXd out(n, dofs);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(dofs), v = x;
+    for (long k = 0; k < n; ++k) {
+        out.row(k) = x.transpose();
+        const double t = double(k) * h;
+        const double a0 = ag.at(t), am = ag.at(t + 0.5 * h), a1 = ag.at(t + h);
+        const Eigen::VectorXd k1x = v, k1v = acc(x, v, a0);
+        const Eigen::VectorXd k2x = v + 0.5 * h * k1v, k2v = acc(x + 0.5 * h * k1x, k2x, am);
+        const Eigen::VectorXd k3x = v + 0.5 * h * k2v, k3v = acc(x + 0.5 * h * k2x, k3x, am);
+        const Eigen::VectorXd k4x = v + h * k3v, k4v = acc(x + h * k3x, k4x, a1);
+        x += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+        v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+    }
+    return out;
+}
+
+} // namespace hsmu::rths

@@ -1,0 +1,179 @@
+#include "gui/cli/RthsCommand.h"
+
+#include "comms/rths/RealtimePacer.h"
+#include "core/config/RthsConfig.h"
+#include "core/groundmotion/AccelerationUnit.h"
+#include "core/groundmotion/GroundMotionReader.h"
+#include "core/rths/RthsReport.h"
+#include "gui/cli/ConsoleStreams.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+
+#include <cmath>
+
+#include <fstream>
+#include <thread>
+
+namespace hsmu::gui {
+
+namespace {
+
+int fail(const QString& message)
+{
+    ConsoleStreams::err() << "hsmu rths: " << message << Qt::endl;
+    return 1;
+}
+
+/// --compensation NAME over the configuration's compensation (lead kept unless "none").
+bool applyCompensation(const QString& name, rths::RthsSettings& s)
+{
+    auto& c = s.compensation;
+    if (name == QLatin1String("default")) {
+        c.type = rths::CompensationSettings::Type::Ats;
+        c.fitToLoop = true;
+        c.lead.enabled = true;
+        return true;
+    }
+    if (name == QLatin1String("lead")) {
+        c.type = rths::CompensationSettings::Type::None;
+        c.lead.enabled = true;
+        return true;
+    }
+    if (!rths::parseCompensationType(name.toStdString(), c.type))
+        return false;
+    if (c.type == rths::CompensationSettings::Type::None)
+        c.lead.enabled = false;
+    if (c.type == rths::CompensationSettings::Type::Feedforward ||
+        c.type == rths::CompensationSettings::Type::Ats)
+        c.fitToLoop = true;
+    if (c.type == rths::CompensationSettings::Type::Polynomial && c.delay == 0.0)
+        c.estimateDelay = true;
+    return true;
+}
+
+} // namespace
+
+int RthsCommand::exec(const QStringList& arguments)
+{
+    QCommandLineParser p;
+    p.setApplicationDescription(tr("Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator."));
+    p.addHelpOption();
+    p.addPositionalArgument(QStringLiteral("rths"), tr("The subcommand."));
+    p.addPositionalArgument(QStringLiteral("config"), tr("A configuration file or rths-benchmark-case-1 .. -4."));
+    const QCommandLineOption outOpt(QStringLiteral("out"), tr("Output folder."), QStringLiteral("dir"));
+    const QCommandLineOption gmOpt(QStringLiteral("ground-motion"), tr("Ground-motion record (m/s^2 unless the configuration says)."), QStringLiteral("file"));
+    const QCommandLineOption scaleOpt(QStringLiteral("scale"), tr("Scale of the record."), QStringLiteral("factor"));
+    const QCommandLineOption durationOpt(QStringLiteral("duration"), tr("Stop after T seconds."), QStringLiteral("seconds"));
+    const QCommandLineOption paceOpt(QStringLiteral("pace"), tr("fast (simulated, default) or realtime (wall clock)."), QStringLiteral("pace"));
+    const QCommandLineOption prioOpt(QStringLiteral("realtime-priority"), tr("Run the loop's thread under SCHED_FIFO (with --pace realtime)."));
+    const QCommandLineOption compOpt(QStringLiteral("compensation"), tr("default, none, lead, polynomial, feedforward or ats."), QStringLiteral("type"));
+    const QCommandLineOption perturbOpt(QStringLiteral("perturb"), tr("Draw the plant from the benchmark's distributions with this seed."), QStringLiteral("seed"));
+    const QCommandLineOption seedOpt(QStringLiteral("seed"), tr("Sensor noise seed."), QStringLiteral("n"));
+    const QCommandLineOption noNoiseOpt(QStringLiteral("no-noise"), tr("Sensors without noise."));
+    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt});
+    if (auto parsed = ConsoleStreams::parse(p, arguments))
+        return parsed->isEmpty() ? 0 : fail(*parsed);
+    const QStringList pos = p.positionalArguments();
+    if (pos.size() != 2)
+        return fail(tr("expected one CONFIG (a file or rths-benchmark-case-1 .. -4)"));
+    if (!p.isSet(outOpt))
+        return fail(tr("missing --out DIR"));
+    const QString pace = p.value(paceOpt).isEmpty() ? QStringLiteral("fast") : p.value(paceOpt);
+    if (pace != QLatin1String("fast") && pace != QLatin1String("realtime"))
+        return fail(tr("--pace: expected fast or realtime, got '%1'").arg(pace));
+    const auto number = [&](const QCommandLineOption& o, double& out) {
+        bool ok = true;
+        if (p.isSet(o))
+            out = p.value(o).toDouble(&ok);
+        return ok && std::isfinite(out);
+    };
+    try {
+        RthsConfig cfg = loadRthsConfig(pos.at(1).toStdString());
+        auto& s = cfg.settings;
+        if (p.isSet(compOpt) && !applyCompensation(p.value(compOpt), s))
+            return fail(tr("--compensation: expected default, none, lead, polynomial, feedforward or ats, got '%1'").arg(p.value(compOpt)));
+        if (p.isSet(noNoiseOpt))
+            s.sensors.noise = false;
+        double seed = double(s.sensors.seed), scale = cfg.groundMotionScale, duration = 0.0;
+        if (!number(seedOpt, seed) || !number(scaleOpt, scale) || !number(durationOpt, duration))
+            return fail(tr("--seed, --scale and --duration take numbers"));
+        s.sensors.seed = std::uint64_t(seed);
+        // The feedforward is fitted to the nominal plant (a lab knows only its model of it).
+        if (s.compensation.fitToLoop)
+            rths::fitFeedforward([&](double w) { return rths::closedLoopResponse(s, w); }, 0.2, 6.0, s.compensation);
+        if (p.isSet(perturbOpt)) {
+            double ps = 0.0;
+            if (!number(perturbOpt, ps))
+                return fail(tr("--perturb takes a seed"));
+            PortableRandom random{std::uint64_t(ps)};
+            s.plant = rths::perturbedPlant(s.plant, random);
+        }
+        const QString gmFile = p.isSet(gmOpt) ? p.value(gmOpt) : QString::fromStdString(cfg.groundMotionFile);
+        if (gmFile.isEmpty())
+            return fail(tr("no ground motion: give --ground-motion FILE"));
+        if (!QFileInfo::exists(gmFile))
+            return fail(tr("%1: the ground-motion record does not exist (give --ground-motion FILE)").arg(gmFile));
+        const auto unit = parseAccelerationUnit(cfg.groundMotionUnit); // checked by the parser
+        const GroundMotion ag = readGroundMotion(gmFile.toStdString(), GroundMotionFormat::Auto, unit).scaled(scale);
+
+        const rths::Partition part = cfg.partition();
+        const rths::Preflight pre = rths::preflight(part, s);
+        auto& out = ConsoleStreams::out();
+        out << tr("%1: %2 Hz loop, compensation %3%4").arg(QString::fromStdString(cfg.name)).arg(s.rate)
+                   .arg(QString::fromLatin1(rths::compensationTypeName(s.compensation.type)))
+                   .arg(s.compensation.lead.enabled ? tr(" + phase lead") : QString()) << Qt::endl;
+        out << tr("pre-flight: %1").arg(QString::fromStdString(pre.message)) << Qt::endl;
+        if (pre.refused)
+            return fail(tr("refused in pre-flight: %1").arg(QString::fromStdString(pre.message)));
+
+        if (!QDir().mkpath(p.value(outOpt)))
+            return fail(tr("%1: cannot create the output folder").arg(p.value(outOpt)));
+        rths::RthsRun run;
+        comms::MonotonicClock clock;
+        comms::RealtimePacer pacer(clock, 1.0 / s.rate, cfg.holdAfterMisses);
+        std::string priority;
+        if (pace == QLatin1String("realtime")) {
+            std::thread loop([&] {
+                if (p.isSet(prioOpt))
+                    priority = comms::enterRealtimePriority(80);
+                run = rths::runRths(part, ag, s, &pacer, duration);
+            });
+            loop.join();
+            if (!priority.empty())
+                ConsoleStreams::err() << tr("hsmu rths: real-time priority not taken (%1); the loop ran at normal priority").arg(QString::fromStdString(priority)) << Qt::endl;
+        } else {
+            run = rths::runRths(part, ag, s, nullptr, duration);
+        }
+        const QString dir = p.value(outOpt);
+        rths::writeRthsSteps((dir + QStringLiteral("/steps.csv")).toStdString(), run);
+        nlohmann::json summary = rths::rthsSummary(run, s, pre);
+        summary["name"] = cfg.name;
+        summary["pace"] = pace.toStdString();
+        summary["deadlineMisses"] = {{"count", pacer.misses()}, {"worstLateness_us", pacer.worstLateness() * 1e6},
+                                     {"firstTick", pacer.firstMissTick()}, {"holdAfter", cfg.holdAfterMisses}};
+        const std::string summaryPath = (dir + QStringLiteral("/summary.json")).toStdString();
+        std::ofstream(summaryPath) << summary.dump(2) << '\n';
+
+        QString table;
+        for (int i = 0; i < 9; ++i)
+            table += QStringLiteral("J%1 %2%3  ").arg(i + 1).arg(run.criteria.j[i], 0, 'f', 2).arg(i == 0 ? QStringLiteral(" ms") : QStringLiteral(" %"));
+        out << tr("%1 ticks (%2 s); %3").arg(run.time.size()).arg(run.time.empty() ? 0.0 : run.time.back(), 0, 'f', 3).arg(table) << Qt::endl;
+        out << tr("frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2")
+                   .arg(run.frequency.amplitude, 0, 'f', 3).arg(run.frequency.delay, 0, 'f', 2)
+                   .arg(run.frequency.frequency, 0, 'f', 2).arg(run.trackingIndicator, 0, 'g', 3) << Qt::endl;
+        if (pace == QLatin1String("realtime"))
+            out << tr("deadline misses: %1 (worst %2 us late)").arg(pacer.misses()).arg(pacer.worstLateness() * 1e6, 0, 'f', 1) << Qt::endl;
+        out << tr("outputs: %1/steps.csv, %1/summary.json").arg(dir) << Qt::endl;
+        if (!run.hold.empty()) {
+            ConsoleStreams::err() << tr("hsmu rths: %1").arg(QString::fromStdString(run.hold)) << Qt::endl;
+            return 2;
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,122 @@
+// The real-time pace of the RTHS loop (comms/rths/RealtimePacer.h) on an injected clock: absolute
+// release times, deadline misses counted with their lateness, the hold after N misses naming
+// the tick; then a whole paced run on the benchmark loop that holds on its misses and keeps
+// every tick before the hold. No sleeping, no wall time: the clock is simulated.
+#include "comms/rths/RealtimePacer.h"
+
+#include <QtTest>
+
+using namespace hsmu;
+using namespace std::chrono;
+
+namespace {
+
+// now() is the simulated time; sleepUntil() jumps there (never back); work() spends time.
+class FakeClock final : public comms::PaceClock {
+public:
+    nanoseconds now() override { return m_now; }
+    void sleepUntil(nanoseconds t) override
+    {
+        m_sleeps += t > m_now ? 1 : 0;
+        m_now = std::max(m_now, t);
+    }
+    void work(nanoseconds d) { m_now += d; }
+    int sleeps() const { return m_sleeps; }
+
+private:
+    nanoseconds m_now{1'000'000'000};
+    int m_sleeps = 0;
+};
+
+// A gate wrapper that spends `cost(k)` of simulated time inside each tick.
+class CostlyGate final : public rths::TickGate {
+public:
+    CostlyGate(comms::RealtimePacer& pacer, FakeClock& clock, long slowEvery)
+        : m_pacer(pacer), m_clock(clock), m_slowEvery(slowEvery) {}
+    bool admit(long k, std::string& why) override { return m_pacer.admit(k, why); }
+    void done(long k) override
+    {
+        m_clock.work(k % m_slowEvery == m_slowEvery - 1 ? microseconds(400) : microseconds(20));
+        m_pacer.done(k);
+    }
+
+private:
+    comms::RealtimePacer& m_pacer;
+    FakeClock& m_clock;
+    long m_slowEvery;
+};
+
+} // namespace
+
+class TestRealtimePacer : public QObject {
+    Q_OBJECT
+
+private slots:
+    void missesAreCountedAndHoldAfterTheLimit()
+    {
+        FakeClock clock;
+        const double period = 1.0 / 4096.0; // 244.14 us
+        comms::RealtimePacer pacer(clock, period, 2);
+        std::string why;
+        const auto tickCosting = [&](long k, microseconds cost) {
+            const bool ok = pacer.admit(k, why);
+            clock.work(cost);
+            pacer.done(k);
+            return ok;
+        };
+        QVERIFY(tickCosting(0, microseconds(100)));
+        QVERIFY(tickCosting(1, microseconds(100)));
+        QCOMPARE(pacer.misses(), 0L);
+        QVERIFY(tickCosting(2, microseconds(300))); // ends 55.86 us after its deadline
+        QCOMPARE(pacer.misses(), 1L);
+        QCOMPARE(pacer.firstMissTick(), 2L);
+        QVERIFY(std::abs(pacer.worstLateness() - (300e-6 - period)) < 1e-8);
+        QVERIFY(tickCosting(3, microseconds(100))); // released late, still ends in time
+        QCOMPARE(pacer.misses(), 1L);
+        QVERIFY(tickCosting(4, microseconds(500)));
+        QCOMPARE(pacer.misses(), 2L);
+        QVERIFY(!pacer.admit(5, why));
+        QVERIFY2(why.find("2 deadline misses") != std::string::npos, why.c_str());
+        QVERIFY2(why.find("tick 4") != std::string::npos, why.c_str());
+        QVERIFY2(why.find("before tick 5") != std::string::npos, why.c_str());
+    }
+
+    void releasesAreAbsoluteSoNothingDrifts()
+    {
+        // 1000 ticks of 20 us work: every release is start + k h; the clock ends at the last
+        // release plus the work, not at a sum of rounded sleeps.
+        FakeClock clock;
+        comms::RealtimePacer pacer(clock, 1.0 / 4096.0, 0);
+        const nanoseconds start = clock.now();
+        std::string why;
+        for (long k = 0; k < 1000; ++k) {
+            QVERIFY(pacer.admit(k, why));
+            clock.work(microseconds(20));
+            pacer.done(k);
+        }
+        const nanoseconds expected = start + 999 * nanoseconds(244141) + microseconds(20);
+        QVERIFY(std::abs((clock.now() - expected).count()) <= 1);
+        QCOMPARE(pacer.misses(), 0L);
+    }
+
+    void aPacedBenchmarkRunHoldsOnItsMisses()
+    {
+        // Case 1 on a 1 s synthetic record; every 50th tick costs 400 us: the 10th miss holds
+        // the run before tick 500, with every tick before it kept.
+        FakeClock clock;
+        comms::RealtimePacer pacer(clock, 1.0 / 4096.0, 10);
+        CostlyGate gate(pacer, clock, 50);
+        GroundMotion ag;
+        ag.dt = 0.01;
+        for (int i = 0; i <= 100; ++i)
+            ag.acceleration.push_back(0.5 * std::sin(2 * M_PI * 2.0 * i * 0.01));
+        const rths::RthsSettings s = rths::benchmarkSampleController();
+        const rths::RthsRun run = rths::runRths(rths::benchmarkPartition(1, s.plant), ag, s, &gate);
+        QCOMPARE(pacer.misses(), 10L);
+        QCOMPARE(run.time.size(), std::size_t(500));
+        QVERIFY2(run.hold.find("before tick 500") != std::string::npos, run.hold.c_str());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestRealtimePacer)
+#include "TestRealtimePacer.moc"
