@@ -5,6 +5,7 @@
 // (the robust UKF, replayed sample by sample as online) must end within 25 % of the
 // calibration's NRMSE, without a divergence and with no parameter on a bound that the
 // calibration does not also put there.
+// Nelder-Mead (nelderMead:<record>) must end within 25 % of the calibration's NRMSE in <= 60 s.
 // One CTest test per record: the executable takes a data tag (e.g. `calibrates:gill`).
 
 #include "core/identification/CalibrationDefaults.h"
@@ -115,6 +116,43 @@ private slots:
             }
         }
         QVERIFY2(pinned.isEmpty(), qPrintable("on a bound online only: " + pinned.join(", ")));
+    }
+
+    /// Nelder-Mead (`hsmu replay --import FILE --method nelder-mead`, no user input): its
+    /// scales and box from the data as the calibration's, its refits bounded in cost on the
+    /// long records; the final model within 1.25 x the calibration's NRMSE, in <= 60 s, and
+    /// never worse than the initial model.
+    void nelderMead_data() { calibrates_data(); }
+
+    void nelderMead() {
+        QFETCH(QString, file);
+        SpecimenHistory h;
+        if (!readRecord(file.toStdString(), h))
+            QSKIP(qPrintable("shared record absent (a fresh machine has no ../shared/data): " + file));
+        const IdentificationSettings s0 = withMethod(defaultIdentificationSettings(), "nelder-mead");
+        IdentificationSettings s = s0;
+        s.calibrate = false;
+        QElapsedTimer timer;
+        timer.start();
+        const OfflineIdentificationResult r = identifyOffline(h, s);
+        const double seconds = 1e-3 * double(timer.elapsed());
+        CalibrationRequest request;
+        const CalibrationResult c = calibrateHistory(h.deformation, h.force, request);
+        QVERIFY2(c.ok, c.reason.c_str());
+        qInfo("%s: Nelder-Mead final NRMSE %.4f (%.3fx the calibration's %.4f), initial %.4f, "
+              "online prediction %.4f, %d fits accepted, %.1f s",
+              qPrintable(QFileInfo(file).fileName()), r.finalNrmse, r.finalNrmse / c.nrmse,
+              c.nrmse, r.initialNrmse, r.auxiliaryNrmse, r.refits, seconds);
+        if (qEnvironmentVariableIsSet("HSMU_VERBOSE"))
+            for (const std::string& m : r.messages)
+                qInfo("  %s", m.c_str());
+        QVERIFY2(r.finalNrmse <= 1.25 * c.nrmse,
+                 qPrintable(QString("Nelder-Mead NRMSE %1 > 1.25 x %2").arg(r.finalNrmse).arg(c.nrmse)));
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) // the Release budget
+        QVERIFY2(seconds <= 60.0, qPrintable(QString("%1 s > 60 s").arg(seconds)));
+#endif
+        QVERIFY(r.worseThanInitial.empty());
+        QVERIFY(r.finalNrmse <= r.initialNrmse);
     }
 
     /// The pinching law (boucWenPinching) with no user input: within 5 % of the independent
