@@ -18,13 +18,14 @@
 // so that the auxiliary model and the twins take them. Bounds are published once known
 // (NaN before the first refit for the data-derived ones).
 //
-// Cost on long records (settings.refitSamples, refitGrowth): on a history longer than
-// refitSamples (4000) samples, (a) a trigger refits only once the history has grown by
-// refitGrowth (10 %) since the last refit, so a record of N samples costs about
-// ln(N / refitSamples) / ln(1.1) refits past that size, and (b) the calibrated fits run on
-// the reduced history of refitSamples samples (Calibration.h, polishSamples; not with a
-// window), warm-started from the current estimate; the acceptance replay is over the whole
-// history. finalFit() (offline, after the last sample) has no such budget.
+// Cost (settings.refitSamples, refitGrowth): (a) a calibrated refit runs only once the
+// history has grown by refitGrowth (10 %) since the last refit (besides the cooldown), so a
+// record of N samples costs about ln(N / N0) / ln(1.1) refits after the first at N0 (the
+// simplex refits likewise past refitSamples samples; before, the paper's cooldown alone);
+// (b) on a history longer than refitSamples (2000) samples the calibrated fits run on the
+// reduced history of refitSamples samples (Calibration.h, polishSamples; not with a window),
+// warm-started from the current estimate; the acceptance replay is over the whole history.
+// finalFit() (offline, after the last sample) has no such budget.
 //
 // Two fits (settings.calibrated):
 //  - calibration (default, for the laws CalibrationDefaults knows: boucWen, boucWenPinching,
@@ -74,7 +75,7 @@ struct NelderMeadIdentifierSettings {
     int cooldownSteps = 100;             ///< steps between two triggers
     int windowSteps = 0;                 ///< RMS over the last N points (0 = all)
     bool calibrated = true;              ///< the calibration's fit (else the simplex)
-    std::size_t refitSamples = 4000;     ///< cost budget of one refit on long histories
+    std::size_t refitSamples = 2000;     ///< cost budget of one refit on long histories
     double refitGrowth = 0.1;            ///< ... and the growth between two refits there
 };
 
