@@ -143,7 +143,10 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
                .arg(h.size())
                .arg(num(s.dt))
         << Qt::endl;
-    const auto finalScales = scalesOf(r.finalEstimate, s);
+    // a calibration-only run's final model is the calibration's (its scales are not fitted)
+    const bool calibrationOnly = r.method == "calibration" && r.calibration && r.calibration->ok;
+    const auto finalScales =
+        scalesOf(calibrationOnly ? r.calibration->parameters : r.finalEstimate, s);
     if (finalScales)
         out << ReplayCommand::tr("  normalized units (x = u / uRef, f = F / fRef), final model's "
                                  "scales: %1")
