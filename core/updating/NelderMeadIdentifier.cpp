@@ -159,8 +159,8 @@ IdentificationStatus NelderMeadIdentifier::observe(double deformation, double fo
     if (!updateRequested || m_sinceTrigger < m_s.cooldownSteps)
         return {};
     // The cost bound: refit only once the history has grown by refitGrowth since the last
-    // refit (the calibrated refits always; the simplex past refitSamples).
-    const bool spaced = m_s.calibrated || (m_s.refitSamples > 0 && m_u.size() > m_s.refitSamples);
+    // refit (the calibrated refits always; the paper's simplex past kSimplexSpacedSamples).
+    const bool spaced = m_s.calibrated || m_u.size() > kSimplexSpacedSamples;
     if (spaced && m_lastRefitSize > 0 &&
         double(m_u.size()) < (1.0 + m_s.refitGrowth) * double(m_lastRefitSize))
         return {};

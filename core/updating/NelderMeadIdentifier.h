@@ -21,7 +21,8 @@
 // Cost (settings.refitSamples, refitGrowth): (a) a calibrated refit runs only once the
 // history has grown by refitGrowth (10 %) since the last refit (besides the cooldown), so a
 // record of N samples costs about ln(N / N0) / ln(1.1) refits after the first at N0 (the
-// simplex refits likewise past refitSamples samples; before, the paper's cooldown alone);
+// simplex refits likewise past kSimplexSpacedSamples (10000) samples; before, the paper's
+// cooldown alone, as paper-bilinear-nelder-mead's 3000 steps keep it);
 // (b) on a history longer than refitSamples (2000) samples the calibrated fits run on the
 // reduced history of refitSamples samples (Calibration.h, polishSamples; not with a window),
 // warm-started from the current estimate; the acceptance replay is over the whole history.
@@ -85,6 +86,7 @@ public:
     static constexpr double kPoorNrmse = 0.10;
     static constexpr double kPoorGrowth = 1.25;
     static constexpr double kRescaleFactor = 1.5;
+    static constexpr std::size_t kSimplexSpacedSamples = 10000;
 
     /// model: the specimen's numerical model (its law name and initial parameters).
     /// Throws std::invalid_argument naming a parameter without finite bounds or unknown.
