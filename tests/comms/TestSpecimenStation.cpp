@@ -112,6 +112,24 @@ private slots:
         QCOMPARE(delay.tick(2.0), 0.0);
         QCOMPARE(delay.tick(3.0), 0.0);
         QCOMPARE(delay.tick(4.0), 1.0);
+        // servoHydraulic: the ServoActuator at the controller's rate (its own "rate" ignored),
+        // bit for bit; it lags a step command and settles on it.
+        ActuatorModel servoModel{ActuatorModel::Type::ServoHydraulic, 0.0, 0.0};
+        servoModel.servo.rate = 4096.0;
+        ActuatorDynamics servo(servoModel, 1024.0);
+        servo.reset(0.0);
+        rths::ServoActuatorSettings alone = servoModel.servo;
+        alone.rate = 1024.0;
+        rths::ServoActuator reference(alone);
+        const double first = servo.tick(0.002);
+        QCOMPARE(first, reference.tick(0.002));
+        QVERIFY(first > 0.0 && first < 0.002);
+        double last = first;
+        for (int i = 0; i < 2048; ++i) {
+            last = servo.tick(0.002);
+            QCOMPARE(last, reference.tick(0.002));
+        }
+        QVERIFY(std::abs(last - 0.002) < 1e-6);
     }
 
     void fastStationEqualsTheInProcessSpecimen() {
