@@ -1029,10 +1029,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>online</translation>
     </message>
     <message>
-        <source>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</source>
-        <translation>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</translation>
-    </message>
-    <message>
         <source>  Nelder-Mead fits accepted: %1</source>
         <translation>  Nelder-Mead fits accepted: %1</translation>
     </message>
@@ -1079,6 +1075,54 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  verdict: %1</source>
         <translation>  verdict: %1</translation>
+    </message>
+    <message>
+        <source>uRef %1 %2, fRef %3 %4</source>
+        <translation>uRef %1 %2, fRef %3 %4</translation>
+    </message>
+    <message>
+        <source>  normalized units (x = u / uRef, f = F / fRef), final model's scales: %1</source>
+        <translation>  normalized units (x = u / uRef, f = F / fRef), final model's scales: %1</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>unit</translation>
+    </message>
+    <message>
+        <source>  final model over the whole history: RMS force error %1 %2 (NRMSE %3 %; the initial model's %4 %)</source>
+        <translation>  final model over the whole history: RMS force error %1 %2 (NRMSE %3 %; the initial model's %4 %)</translation>
+    </message>
+    <message>
+        <source>  online model's prediction over the record (each sample with the estimate known before it): NRMSE %1 %</source>
+        <translation>  online model's prediction over the record (each sample with the estimate known before it): NRMSE %1 %</translation>
+    </message>
+    <message>
+        <source>  warning: %1</source>
+        <translation>  warning: %1</translation>
+    </message>
+    <message>
+        <source>    in the same scales: %1</source>
+        <translation>    in the same scales: %1</translation>
+    </message>
+    <message>
+        <source>    in its own scales: %1 (its normalized values are not comparable with the table's above)</source>
+        <translation>    in its own scales: %1 (its normalized values are not comparable with the table's above)</translation>
+    </message>
+    <message>
+        <source>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</source>
+        <translation>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</translation>
+    </message>
+    <message>
+        <source>hsmu replay: %1 (%2 s elapsed)</source>
+        <translation>hsmu replay: %1 (%2 s elapsed)</translation>
+    </message>
+    <message>
+        <source>calibrating over the whole history</source>
+        <translation>calibrating over the whole history</translation>
+    </message>
+    <message>
+        <source>final fit over the whole history</source>
+        <translation>final fit over the whole history</translation>
     </message>
 </context>
 <context>

@@ -1029,10 +1029,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>en línea</translation>
     </message>
     <message>
-        <source>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</source>
-        <translation>  modelo final sobre toda la historia: error RMS de fuerza %1 %2 (%3 % de la fuerza RMS); error de ajuste del inspector al final %4 %</translation>
-    </message>
-    <message>
         <source>  Nelder-Mead fits accepted: %1</source>
         <translation>  ajustes de Nelder-Mead aceptados: %1</translation>
     </message>
@@ -1079,6 +1075,54 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  verdict: %1</source>
         <translation>  veredicto: %1</translation>
+    </message>
+    <message>
+        <source>uRef %1 %2, fRef %3 %4</source>
+        <translation>uRef %1 %2, fRef %3 %4</translation>
+    </message>
+    <message>
+        <source>  normalized units (x = u / uRef, f = F / fRef), final model&apos;s scales: %1</source>
+        <translation>  unidades normalizadas (x = u / uRef, f = F / fRef), escalas del modelo final: %1</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>unidad</translation>
+    </message>
+    <message>
+        <source>  final model over the whole history: RMS force error %1 %2 (NRMSE %3 %; the initial model&apos;s %4 %)</source>
+        <translation>  modelo final sobre toda la historia: error RMS de fuerza %1 %2 (NRMSE %3 %; el del modelo inicial %4 %)</translation>
+    </message>
+    <message>
+        <source>  online model&apos;s prediction over the record (each sample with the estimate known before it): NRMSE %1 %</source>
+        <translation>  predicción del modelo en línea sobre el registro (cada muestra con la estimación conocida antes de ella): NRMSE %1 %</translation>
+    </message>
+    <message>
+        <source>  warning: %1</source>
+        <translation>  aviso: %1</translation>
+    </message>
+    <message>
+        <source>    in the same scales: %1</source>
+        <translation>    en las mismas escalas: %1</translation>
+    </message>
+    <message>
+        <source>    in its own scales: %1 (its normalized values are not comparable with the table&apos;s above)</source>
+        <translation>    en sus propias escalas: %1 (sus valores normalizados no son comparables con los de la tabla anterior)</translation>
+    </message>
+    <message>
+        <source>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</source>
+        <translation>hsmu replay: %1 / %2 muestras, %3 reajustes, %4 rechazadas, %5 s transcurridos, quedan unos %6 s</translation>
+    </message>
+    <message>
+        <source>hsmu replay: %1 (%2 s elapsed)</source>
+        <translation>hsmu replay: %1 (%2 s transcurridos)</translation>
+    </message>
+    <message>
+        <source>calibrating over the whole history</source>
+        <translation>calibrando sobre toda la historia</translation>
+    </message>
+    <message>
+        <source>final fit over the whole history</source>
+        <translation>ajuste final sobre toda la historia</translation>
     </message>
 </context>
 <context>

@@ -1029,10 +1029,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>在线</translation>
     </message>
     <message>
-        <source>  final model over the whole history: RMS force error %1 %2 (%3 % of RMS force); inspector fit error at the end %4 %</source>
-        <translation>  最终模型在整个时程上：力的 RMS 误差 %1 %2（为 RMS 力的 %3 %）；结束时检查器拟合误差 %4 %</translation>
-    </message>
-    <message>
         <source>  Nelder-Mead fits accepted: %1</source>
         <translation>  已接受的 Nelder-Mead 拟合：%1</translation>
     </message>
@@ -1079,6 +1075,54 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  verdict: %1</source>
         <translation>  结论：%1</translation>
+    </message>
+    <message>
+        <source>uRef %1 %2, fRef %3 %4</source>
+        <translation>uRef %1 %2, fRef %3 %4</translation>
+    </message>
+    <message>
+        <source>  normalized units (x = u / uRef, f = F / fRef), final model&apos;s scales: %1</source>
+        <translation>  归一化单位 (x = u / uRef, f = F / fRef)，最终模型的尺度：%1</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>  final model over the whole history: RMS force error %1 %2 (NRMSE %3 %; the initial model&apos;s %4 %)</source>
+        <translation>  最终模型在整个历史上：力的 RMS 误差 %1 %2（NRMSE %3 %；初始模型为 %4 %）</translation>
+    </message>
+    <message>
+        <source>  online model&apos;s prediction over the record (each sample with the estimate known before it): NRMSE %1 %</source>
+        <translation>  在线模型对整个记录的预测（每个样本使用其之前已知的估计）：NRMSE %1 %</translation>
+    </message>
+    <message>
+        <source>  warning: %1</source>
+        <translation>  警告：%1</translation>
+    </message>
+    <message>
+        <source>    in the same scales: %1</source>
+        <translation>    尺度相同：%1</translation>
+    </message>
+    <message>
+        <source>    in its own scales: %1 (its normalized values are not comparable with the table&apos;s above)</source>
+        <translation>    采用其自身的尺度：%1（其归一化值与上表中的值不可比较）</translation>
+    </message>
+    <message>
+        <source>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</source>
+        <translation>hsmu replay：%1 / %2 个样本，%3 次重新拟合，%4 次拒绝，已用 %5 s，约剩 %6 s</translation>
+    </message>
+    <message>
+        <source>hsmu replay: %1 (%2 s elapsed)</source>
+        <translation>hsmu replay：%1（已用 %2 s）</translation>
+    </message>
+    <message>
+        <source>calibrating over the whole history</source>
+        <translation>正在对整个历史进行标定</translation>
+    </message>
+    <message>
+        <source>final fit over the whole history</source>
+        <translation>对整个历史进行最终拟合</translation>
     </message>
 </context>
 <context>

@@ -269,6 +269,8 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
         NelderMeadIdentifierSettings s;
         s.parameters = u.parameters;
         s.bounds = u.bounds;
+        s.uRef = u.modelURef;
+        s.fRef = u.modelFRef;
         s.maxEvaluations = u.maxEvaluations;
         s.cooldownSteps = static_cast<int>(u.cooldown / dt + 0.5);
         s.windowSteps = static_cast<int>(u.fitWindow / dt + 0.5);

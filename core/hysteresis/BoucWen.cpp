@@ -31,10 +31,73 @@ constexpr std::array<std::pair<const char*, Field>, 11> kFields{{
     {"fRef", &BoucWenParameters::fRef},
 }};
 
+// The backward-Euler residual of BackwardEuler (BoucWenNewton.h) at z, for the safeguarded
+// solve below.
+double residualAt(const BoucWenParameters& p, const BoucWenState& from, double dx, double z) {
+    const double e = from.e + (1.0 - p.alpha) * p.k0 * z * dx;
+    const Degradation d = degradationAt(p, e);
+    const double psi = p.gamma + p.beta * signOf(dx * z);
+    const double phi = d.a - std::pow(std::abs(z), p.n) * psi * d.nu;
+    return z - from.z - dx * phi / d.eta;
+}
+
+// The safeguarded solve of one backward-Euler step, for an increment on which Newton failed
+// even after every halving (a cusp of |z|^n with n < 1 at z = 0, where Newton cycles, or a
+// wild iterate): the root nearest z0 in the direction r(z0) points to is bracketed by steps
+// |r(z0)|, 2 |r(z0)|, 4 |r(z0)|, ... from z0 (inside the iterates' bound), then bisected to the
+// Newton tolerance. False when no bracket is found or a residual is not finite. Only ever
+// reached where the law failed before (issue 29), so every step that succeeded is unchanged.
+bool bracketedStep(const BoucWenParameters& p, BoucWenState& state, double dx,
+                   StepLimits& limits) {
+    const double z0 = state.z;
+    const double r0 = residualAt(p, state, dx, z0);
+    if (!std::isfinite(r0))
+        return false;
+    const double c = (1.0 - p.alpha) * p.k0;
+    const auto finish = [&](double z) {
+        const BoucWenState next{z, state.e + c * z * dx};
+        if (!std::isfinite(next.z) || !std::isfinite(next.e))
+            return false;
+        state = next;
+        return true;
+    };
+    if (r0 == 0.0)
+        return finish(z0);
+    const bool positive = r0 > 0.0;
+    const double dir = positive ? -1.0 : 1.0;
+    double lo = z0, hi = z0;
+    double step = std::max(std::abs(r0), std::numeric_limits<double>::min());
+    for (int k = 0;; ++k) {
+        hi = z0 + dir * step;
+        const double r = residualAt(p, state, dx, hi);
+        if (k > 1100 || !std::isfinite(r) || !limits.withinZBound(std::abs(hi)))
+            return false;
+        if (r == 0.0)
+            return finish(hi);
+        if ((r > 0.0) != positive)
+            break;
+        lo = hi; // r(lo) keeps r0's sign, r(hi) the other
+        step *= 2.0;
+    }
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi ||
+            std::abs(hi - lo) <= kRelativeTolerance * std::max(std::abs(lo), std::abs(hi)))
+            break;
+        const double r = residualAt(p, state, dx, mid);
+        if (!std::isfinite(r))
+            return false;
+        if (r == 0.0)
+            return finish(mid);
+        ((r > 0.0) == positive ? lo : hi) = mid;
+    }
+    return finish(0.5 * (lo + hi));
+}
+
 // Integrates dx from state (updated in place). Increments longer than the maximum step, or
 // unloading ones too stiff for a single root (withinUnloadingStep(), judged from the sub-step's
 // own start), and those where Newton fails, are halved while levelsLeft > 0; the halves run
-// sequentially.
+// sequentially. At the last level a failed Newton solve is retried by bracketedStep().
 bool integrateSplit(const BoucWenParameters& p, BoucWenState& state, double dx, int levelsLeft,
                     StepLimits& limits, int& subSteps) {
     if (levelsLeft <= 0 ||
@@ -50,6 +113,10 @@ bool integrateSplit(const BoucWenParameters& p, BoucWenState& state, double dx, 
             return true;
         }
         if (levelsLeft <= 0) {
+            if (bracketedStep(p, state, dx, limits)) {
+                ++subSteps;
+                return true;
+            }
             return false;
         }
     }

@@ -23,8 +23,12 @@
 // |dx| n |z0|^(n-1) (gamma - beta) nu / eta > 0.5 at its start (else dr/dz can be negative at
 // z0 and Newton finds a second root beyond -zu; BoucWenNewton.h, withinUnloadingStep), and a
 // failed one is halved too, recursively up to maxSubdivisions
-// halvings (2^12 sub-steps by default); the sub-steps run sequentially. Failure is reported
-// as LawStatus::NoConvergence and leaves the committed state untouched.
+// halvings (2^12 sub-steps by default); the sub-steps run sequentially. A sub-step of the
+// last level whose Newton solve fails (with n < 1 Newton cycles at the cusp of |z|^n at z = 0)
+// is solved bracketed: the root nearest z0 in the direction of -r(z0), bracketed by doubling
+// steps from z0 within the iterates' bound, then bisected to the Newton tolerance (issue 29;
+// only ever where the law failed before, so a step that succeeded is unchanged). Failure is
+// reported as LawStatus::NoConvergence and leaves the committed state untouched.
 // Accuracy: first order in the step (about 4e-4 of the peak force with 20000 points per
 // +-8-yield cycle; 2e-2 with 400 points).
 //

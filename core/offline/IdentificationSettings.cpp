@@ -25,11 +25,9 @@ IdentificationSettings reparse(const IdentificationSettings& base, nlohmann::jso
     full["specimen"] = base.specimen;
     IdentificationSettings s = base;
     s.updating = parseUpdating(JsonCursor(full, sourceName, "updating"), cfg);
-    // Nelder-Mead needs finite bounds; for a Bouc-Wen model Table III fills the missing ones
-    // (the UKF's defaults), so that --method nelder-mead works on a UKF record as it is.
-    if (s.updating.method == "nelderMead" && s.model.law == "boucWen")
-        for (const auto& [name, b] : tableIIIBounds())
-            s.updating.bounds.emplace(name, b);
+    // Nelder-Mead's missing bounds (and, without the model's uRef / fRef, its scales) come
+    // from the data as the calibration's (NelderMeadIdentifier.h): Table III only where the
+    // configuration names it (the paper's presets).
     s.updatingDocument = std::move(section);
     return s;
 }

@@ -10,7 +10,9 @@
 #include "core/structure/Structure.h"
 #include "core/updating/Identifier.h"
 #include "core/updating/ModelUpdater.h"
+#include "core/updating/NelderMeadIdentifier.h"
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -59,31 +61,14 @@ ParameterValues rowValues(const std::vector<std::string>& names, const Eigen::Ma
     return v;
 }
 
-/// The final fit over the whole history (Nelder-Mead), from the last estimate.
-void finalFit(const SpecimenHistory& h, const IdentificationSettings& s,
-              std::map<std::string, double>& all, OfflineIdentificationResult& r) {
-    HistoryFitSpec spec;
-    spec.law = s.model.law;
-    spec.initial = all;
-    for (const auto& name : r.parameterNames) {
-        const ParameterBounds& b = s.updating.bounds.at(name);
-        spec.fitted.push_back({name, b.lower, b.upper});
-    }
-    spec.optimizer.maxEvaluations = s.updating.maxEvaluations;
-    const HistoryFitResult fit = HistoryFit(spec).fit(h.deformation, h.force);
-    if (!fit.ok) {
-        r.messages.push_back(at(h.time.back(), "final Nelder-Mead fit failed: " + fit.reason));
-        return;
-    }
-    if (!(fit.rmsAfter < fit.rmsBefore))
-        return;
-    ++r.refits;
-    for (const auto& name : r.parameterNames)
-        all[name] = r.finalEstimate[name] = fit.parameters.at(name);
-    std::ostringstream m;
-    m << "final Nelder-Mead fit over " << h.size() << " samples: RMS force error " << fit.rmsBefore
-      << " -> " << fit.rmsAfter << " (" << fit.evaluations << " evaluations)";
-    r.messages.push_back(at(h.time.back(), m.str()));
+double nrmseOf(const std::string& law, const std::map<std::string, double>& values,
+               const SpecimenHistory& h, double& rms) {
+    rms = HistoryFit::rmsError(law, values, h.deformation, h.force, 0);
+    double sumF2 = 0.0;
+    for (double f : h.force)
+        sumF2 += f * f;
+    const double rmsF = std::sqrt(sumF2 / double(h.size()));
+    return rmsF > 0.0 ? rms / rmsF : 0.0;
 }
 
 } // namespace
@@ -118,12 +103,28 @@ void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
 }
 
 OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
-                                            const IdentificationSettings& settings) {
+                                            const IdentificationSettings& settings,
+                                            const OfflineProgressCallback& progress) {
     if (const std::string why = history.problem(); !why.empty())
         throw std::invalid_argument(history.source + ": " + why);
+    const auto started = std::chrono::steady_clock::now();
+    const auto tell = [&](std::size_t done, int refits, int rejected, const char* phase) {
+        if (!progress)
+            return;
+        OfflineProgress p;
+        p.samplesDone = done;
+        p.samples = history.size();
+        p.refits = refits;
+        p.rejected = rejected;
+        p.phase = phase;
+        p.elapsedSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        progress(p);
+    };
     if (!settings.online) {
         OfflineIdentificationResult r;
         r.method = "calibration";
+        tell(0, 0, 0, "calibration");
         calibrateWhole(history, settings, r);
         if (!r.calibration || !r.calibration->ok)
             throw std::invalid_argument("calibration of " + history.source + " failed: " +
@@ -145,8 +146,10 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     const std::vector<std::string> lawNames = model->parameterNames();
     for (std::size_t i = 0; i < lawNames.size(); ++i)
         all[lawNames[i]] = model->parameterValue(static_cast<int>(i));
+    const std::map<std::string, double> initialValues = all;
     auto identifier = buildIdentifier(settings.updating, *model, settings.dt, where);
     const Identifier& id = *identifier;
+    auto* nelderMead = dynamic_cast<NelderMeadIdentifier*>(identifier.get());
     ModelUpdater updater(
         settings.specimen, std::move(model), std::move(identifier), settings.updating.inspector,
         std::make_unique<Reporter>(std::vector<ReporterTarget>{}, ReporterPolicy::EveryStep));
@@ -194,25 +197,56 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
         putRow(r.stddev, k, sample.stddev);
         r.auxiliaryForce[k] = sample.auxiliaryForce;
         r.fitError[k] = sample.fitError;
-        const bool nelderMead = settings.updating.method == "nelderMead";
-        if (nelderMead && k > 0 && r.parameters.row(k) != r.parameters.row(k - 1))
+        const bool refitting = settings.updating.method == "nelderMead";
+        if (refitting && k > 0 && r.parameters.row(k) != r.parameters.row(k - 1))
             ++r.refits; // a Nelder-Mead estimate changes only by an accepted fit
+        if ((k + 1) % 64 == 0)
+            tell(std::size_t(k) + 1, r.refits, r.estimatorWarnings, "online");
     }
     r.finalEstimate = rowValues(r.parameterNames, r.parameters, n - 1);
     r.finalStddev = rowValues(r.parameterNames, r.stddev, n - 1);
     for (const auto& [name, v] : r.finalEstimate)
         all[name] = v;
-    if (settings.finalFit && settings.updating.method == "nelderMead")
-        finalFit(history, settings, all, r);
-    r.finalRmsError =
-        HistoryFit::rmsError(settings.model.law, all, history.deformation, history.force, 0);
-    double sumF2 = 0.0;
-    for (double f : history.force)
-        sumF2 += f * f;
-    const double rmsF = std::sqrt(sumF2 / double(n));
-    r.finalNrmse = rmsF > 0.0 ? r.finalRmsError / rmsF : 0.0;
-    if (settings.calibrate)
+    if (settings.finalFit && nelderMead) {
+        // One more fit over the whole history, from the last estimate, through the
+        // identifier's own scales and box (NelderMeadIdentifier::finalFit).
+        tell(history.size(), r.refits, r.estimatorWarnings, "final fit");
+        const IdentificationStatus st = nelderMead->finalFit();
+        if (!st.message.empty())
+            r.messages.push_back(at(history.time.back(), st.message));
+        if (!st.ok)
+            ++r.estimatorWarnings;
+        if (st.updated) {
+            ++r.refits;
+            for (std::size_t j = 0; j < r.parameterNames.size(); ++j)
+                r.finalEstimate[r.parameterNames[j]] = nelderMead->estimate()[j];
+            for (const auto& [name, v] : nelderMead->values())
+                all[name] = v;
+        }
+    }
+    r.finalNrmse = nrmseOf(settings.model.law, all, history, r.finalRmsError);
+    {
+        double sumR2 = 0.0, sumF2 = 0.0;
+        for (Eigen::Index k = 0; k < n; ++k) {
+            const double f = history.force[std::size_t(k)];
+            sumR2 += (r.auxiliaryForce[k] - f) * (r.auxiliaryForce[k] - f);
+            sumF2 += f * f;
+        }
+        r.auxiliaryNrmse = sumF2 > 0.0 ? std::sqrt(sumR2 / sumF2) : 0.0;
+    }
+    // The final model against the initial one: never worse without saying so.
+    r.initialNrmse = nrmseOf(settings.model.law, initialValues, history, r.initialRmsError);
+    if (std::isfinite(r.initialNrmse) && !(r.finalNrmse <= r.initialNrmse)) {
+        std::ostringstream m;
+        m << "the final model fits the history worse than the initial one (NRMSE "
+          << r.finalNrmse << " against " << r.initialNrmse << ")";
+        r.worseThanInitial = m.str();
+        r.messages.push_back(at(history.time.back(), r.worseThanInitial));
+    }
+    if (settings.calibrate) {
+        tell(history.size(), r.refits, r.estimatorWarnings, "calibration");
         calibrateWhole(history, settings, r);
+    }
     return r;
 }
 

@@ -18,7 +18,8 @@
 // the inspector's fit error e = RMS(F_aux - F) / RMS(F) over its sliding window [-].
 // Summary: the final estimate and the RMS force error of the final model replayed from the
 // virgin state over the whole history (HistoryFit::rmsError) [force units] and its ratio to
-// RMS(F) [-].
+// RMS(F) [-]; the same for the initial model, and an alarm (worseThanInitial, also among the
+// messages) when the final model is the worse of the two.
 // Calibration (settings.calibrate): the law fitted over the whole history by the global-then-
 // local least squares of Calibration.h, with the scales and bounds of CalibrationDefaults.h
 // unless the model gives uRef / fRef and the updating section bounds; its NRMSE is the best
@@ -37,6 +38,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,6 +57,13 @@ struct OfflineIdentificationResult {
     ParameterValues finalStddev;
     double finalRmsError = 0.0;        ///< replay of the final model over the history [force units]
     double finalNrmse = 0.0;           ///< finalRmsError / RMS(F) [-]
+    double initialRmsError = 0.0;      ///< the initial model's, likewise [force units]
+    double initialNrmse = 0.0;         ///< initialRmsError / RMS(F) [-] (inf: it fails)
+    /// "" or the alarm when the final model fits the history worse than the initial one
+    std::string worseThanInitial;
+    /// The online (auxiliary) model's prediction over the record, each sample with the
+    /// estimate known before it: RMS(F_aux - F) / RMS(F) [-] (what the twins were given).
+    double auxiliaryNrmse = 0.0;
     int estimatorWarnings = 0;         ///< inspector alarms "estimator rejected" (rejected updates)
     int refits = 0;                    ///< Nelder-Mead fits accepted (the final fit included)
     std::vector<std::string> messages; ///< "t = T s: ..." identifier and inspector messages
@@ -65,7 +74,21 @@ struct OfflineIdentificationResult {
     std::string verdict;
 };
 
+/// Where a long identification is (the callback of identifyOffline).
+struct OfflineProgress {
+    std::size_t samplesDone = 0; ///< samples identified so far
+    std::size_t samples = 0;     ///< of the history
+    int refits = 0;              ///< Nelder-Mead fits accepted so far
+    int rejected = 0;            ///< rejected identification steps so far
+    double elapsedSeconds = 0.0; ///< wall time since the start [s]
+    const char* phase = "online"; ///< "online", "final fit" or "calibration"
+};
+using OfflineProgressCallback = std::function<void(const OfflineProgress&)>;
+
+/// progress (may be empty) is called on the calling thread every 64 samples of the online
+/// pass and before the final fit and the calibration.
 OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
-                                            const IdentificationSettings& settings);
+                                            const IdentificationSettings& settings,
+                                            const OfflineProgressCallback& progress = {});
 
 } // namespace hsmu

@@ -14,7 +14,7 @@ namespace hsmu {
 
 namespace {
 
-void writeCsv(const std::string& path, const SpecimenHistory& h,
+void writeCsv(const std::string& path, const SpecimenHistory& h, const std::string& law,
               const OfflineIdentificationResult& r, std::vector<std::string>& written) {
     using csvtext::number;
     CsvFile f(path, written);
@@ -24,9 +24,9 @@ void writeCsv(const std::string& path, const SpecimenHistory& h,
     f.column("auxiliary_force", h.forceUnits);
     f.column("fit_error", "-");
     for (const auto& p : r.parameterNames)
-        f.column(p, "-");
+        f.column(p, parameterUnit(law, p, h.deformationUnits, h.forceUnits));
     for (const auto& p : r.parameterNames)
-        f.column("stddev " + p, "-");
+        f.column("stddev " + p, parameterUnit(law, p, h.deformationUnits, h.forceUnits));
     f.endHeader();
     for (Eigen::Index k = 0; k < r.parameters.rows(); ++k) {
         const auto i = std::size_t(k);
@@ -43,6 +43,20 @@ void writeCsv(const std::string& path, const SpecimenHistory& h,
 
 } // namespace
 
+std::string parameterUnit(const std::string& law, const std::string& name,
+                          const std::string& deformationUnits, const std::string& forceUnits) {
+    if (name == "uRef")
+        return deformationUnits;
+    if (name == "fRef")
+        return forceUnits;
+    const std::string stiffness = forceUnits + "/" + deformationUnits;
+    if (law == "bilinear")
+        return name == "k0" ? stiffness : (name == "fy" ? forceUnits : "-");
+    if (law == "elastic" && name == "k")
+        return stiffness;
+    return "-";
+}
+
 std::vector<std::string> writeIdentificationReport(const std::string& dir,
                                                    const SpecimenHistory& history,
                                                    const IdentificationSettings& settings,
@@ -50,7 +64,7 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
                                                    const ParameterValues& online) {
     std::vector<std::string> written;
     const std::filesystem::path d(dir);
-    writeCsv((d / "parameters.csv").string(), history, result, written);
+    writeCsv((d / "parameters.csv").string(), history, settings.model.law, result, written);
 
     nlohmann::json j;
     j["source"] = history.source;
@@ -63,7 +77,13 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
     for (const auto& [name, v] : settings.model.params)
         model[name] = v;
     j["model"] = model;
-    j["updating"] = settings.updatingDocument;
+    if (settings.online)
+        j["updating"] = settings.updatingDocument;
+    nlohmann::json units = nlohmann::json::object();
+    for (const auto& name : result.parameterNames)
+        units[name] = parameterUnit(settings.model.law, name, history.deformationUnits,
+                                    history.forceUnits);
+    j["parameterUnits"] = units;
     nlohmann::json params = nlohmann::json::object();
     for (const auto& name : result.parameterNames) {
         nlohmann::json p = {{"initial", result.initial.at(name)},
@@ -76,7 +96,13 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
     j["parameters"] = params;
     j["finalRmsError"] = result.finalRmsError;
     j["finalNrmse"] = result.finalNrmse;
-    j["finalFitError"] = result.fitError.size() ? result.fitError[result.fitError.size() - 1] : 0.0;
+    j["initialNrmse"] = result.initialNrmse;
+    if (!result.worseThanInitial.empty())
+        j["worseThanInitial"] = result.worseThanInitial;
+    if (result.fitError.size()) {
+        j["auxiliaryNrmse"] = result.auxiliaryNrmse;
+        j["finalFitError"] = result.fitError[result.fitError.size() - 1];
+    }
     j["refits"] = result.refits;
     j["estimatorWarnings"] = result.estimatorWarnings;
     j["messages"] = result.messages;

@@ -3,14 +3,19 @@
 // (docs/cli.md) from an OfflineIdentificationResult:
 //
 //   parameters.csv  one row per sample: time [s], deformation [unit], force [unit],
-//                   auxiliary_force [unit], fit_error [-], <parameter> [-] ...,
-//                   stddev <parameter> [-] ...   (CsvText.h formatting: exact round trip)
+//                   auxiliary_force [unit], fit_error [-], <parameter> [its unit] ...,
+//                   stddev <parameter> [its unit] ...   (parameterUnit(); CsvText.h
+//                   formatting: exact round trip)
 //   summary.json    { "source", "specimen", "method", "samples", "dt", "units":
 //                     {"deformation", "force"}, "model": {law, parameters},
-//                     "updating": the settings section used,
+//                     "updating": the settings section used (absent when only the
+//                     calibration ran: "method" is then "calibration"),
+//                     "parameterUnits": { NAME: unit },
 //                     "parameters": { NAME: {"initial", "final", "stddev"[, "online"]} },
-//                     "finalRmsError", "finalNrmse", "finalFitError", "refits",
-//                     "estimatorWarnings", "messages": [...],
+//                     "finalRmsError", "finalNrmse", "initialNrmse",
+//                     "worseThanInitial" (when it is), "auxiliaryNrmse" and
+//                     "finalFitError" (the inspector's last window; online runs only),
+//                     "refits", "estimatorWarnings", "messages": [...],
 //                     "calibration": { "nrmse", "rmsError", "starts", "replays", "seconds",
 //                        "model": {every parameter}, "parameters": { NAME: {"value",
 //                        "onBound", "stddev", "ci95": [lo, hi], "correlation": {NAME: r}}}},
@@ -25,6 +30,13 @@
 #include <vector>
 
 namespace hsmu {
+
+/// The unit of a law's parameter as the tables and files state it: uRef in the deformation's
+/// unit, fRef in the force's; "-" for the Bouc-Wen laws' normalized parameters; the bilinear
+/// law's k0 in force / deformation, fy in force, b "-"; the elastic law's k in force /
+/// deformation; "-" otherwise.
+std::string parameterUnit(const std::string& law, const std::string& name,
+                          const std::string& deformationUnits, const std::string& forceUnits);
 
 /// Returns the paths written (DIR must exist).
 std::vector<std::string> writeIdentificationReport(const std::string& dir,

@@ -50,8 +50,12 @@ void Inspector::observe(const InspectorInput& in, std::vector<Alarm>& alarms)
         }
     }
     m_peakForce = std::max(m_peakForce, std::abs(in.measuredForce));
+    // Undefined (0, no request) until a force has been measured: relative to a specimen that
+    // has carried nothing yet, any model force was an error of 1e14 % (Gill's first sample).
     const double floor = 1e-6 * std::max(m_peakForce, 1e-12);
-    m_fitError = std::sqrt(std::max(m_sumR2, 0.0) / std::max(m_sumF2, floor * floor * m_residual.size()));
+    m_fitError = m_peakForce > 0.0 ? std::sqrt(std::max(m_sumR2, 0.0) /
+                                               std::max(m_sumF2, floor * floor * m_residual.size()))
+                                   : 0.0;
     const bool above = m_residual.size() >= windowSteps / 2 && m_fitError > m_s.threshold;
     m_updateRequested = above;
     if (above && !m_aboveThreshold)

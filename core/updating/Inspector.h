@@ -3,7 +3,8 @@
 // fit, and decides when updating is needed.
 //
 //   fit error   e = RMS(F_aux - F_meas) / RMS(F_meas) over a sliding window of W seconds
-//               (normalized RMS error; RMS(F_meas) floored at 1e-6 fRef-like scale);
+//               (normalized RMS error; RMS(F_meas) floored at 1e-6 x the peak |F_meas| so
+//               far; 0, undefined, until a nonzero force has been measured);
 //               e > threshold raises a Warning once per excursion and requests updating.
 //   fracture    sudden strength loss: at one step the measured force magnitude falls short of
 //               the auxiliary model's prediction by more than fractureDrop x the peak measured

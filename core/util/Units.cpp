@@ -47,12 +47,17 @@ std::string_view trim(std::string_view s) {
     return s.substr(b, e - b + 1);
 }
 
+// Spellings in common use read as a symbol of the tables (the US plural "kips").
+std::string canonical(std::string key) {
+    return key == "kips" ? std::string("kip") : key;
+}
+
 // Letter case is ignored, except that "mN" (the millinewton, not supported) is never read as
 // the meganewton MN.
 template <std::size_t N>
 std::optional<Entry> find(const std::array<Entry, N>& table, std::string_view text) {
     const std::string_view t = trim(text);
-    const std::string key = lower(t);
+    const std::string key = canonical(lower(t));
     for (const Entry& e : table) {
         if (key == lower(e.symbol) && !(e.symbol[0] == 'M' && t[0] == 'm')) {
             return e;

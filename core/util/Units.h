@@ -13,7 +13,8 @@
 // 1 lbf = 0.45359237 kg x 9.80665 m/s^2 = 4.4482216152605 N exactly; 1 kip = 1000 lbf;
 // 1 kgf = 9.80665 N and 1 tonf = 1000 kgf (standard gravity, CGPM 1901).
 // Symbols are matched ignoring letter case ("KN", "kn" and "kN" are the kilonewton) and
-// surrounding blanks, except "mN" (a millinewton, not supported), which is not the MN.
+// surrounding blanks, except "mN" (a millinewton, not supported), which is not the MN; the US
+// plural "kips" is the kip (also in moments: "kips*in", "kips ft").
 // Thread rules: none (pure functions).
 
 #include <optional>

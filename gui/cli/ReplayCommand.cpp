@@ -13,6 +13,7 @@
 #include <QTextStream>
 
 #include <optional>
+#include <string_view>
 
 namespace hsmu::gui {
 
@@ -110,6 +111,29 @@ QString num(double x) {
     return QString::number(x, 'g', 6);
 }
 
+/// The scales of a Bouc-Wen-class model's normalized parameters (uRef, fRef), from the values
+/// when they hold them, else the model's configuration; nullopt for a law without them.
+std::optional<std::pair<double, double>> scalesOf(const ParameterValues& values,
+                                                  const IdentificationSettings& s) {
+    const auto pick = [&](const char* name) -> std::optional<double> {
+        if (const auto it = values.find(name); it != values.end())
+            return it->second;
+        if (const auto it = s.model.params.find(name); it != s.model.params.end())
+            return it->second;
+        return std::nullopt;
+    };
+    if (s.model.law != "boucWen" && s.model.law != "boucWenPinching")
+        return std::nullopt;
+    const std::optional<double> u = pick("uRef"), f = pick("fRef");
+    return std::make_pair(u.value_or(1.0), f.value_or(1.0));
+}
+
+QString scalesText(const std::pair<double, double>& sc, const SpecimenHistory& h) {
+    return ReplayCommand::tr("uRef %1 %2, fRef %3 %4")
+        .arg(num(sc.first), QString::fromStdString(h.deformationUnits), num(sc.second),
+             QString::fromStdString(h.forceUnits));
+}
+
 void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
                 const OfflineIdentificationResult& r, const ParameterValues& online,
                 const QString& dir) {
@@ -119,8 +143,18 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
                .arg(h.size())
                .arg(num(s.dt))
         << Qt::endl;
-    out << QStringLiteral("  %1 %2 %3 %4")
+    // a calibration-only run's final model is the calibration's (its scales are not fitted)
+    const bool calibrationOnly = r.method == "calibration" && r.calibration && r.calibration->ok;
+    const auto finalScales =
+        scalesOf(calibrationOnly ? r.calibration->parameters : r.finalEstimate, s);
+    if (finalScales)
+        out << ReplayCommand::tr("  normalized units (x = u / uRef, f = F / fRef), final model's "
+                                 "scales: %1")
+                   .arg(scalesText(*finalScales, h))
+            << Qt::endl;
+    out << QStringLiteral("  %1 %2 %3 %4 %5")
                .arg(ReplayCommand::tr("parameter"), -10)
+               .arg(ReplayCommand::tr("unit"), -8)
                .arg(ReplayCommand::tr("initial"), 12)
                .arg(ReplayCommand::tr("final"), 12)
                .arg(ReplayCommand::tr("std"), 12);
@@ -128,8 +162,11 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
         out << QStringLiteral(" %1").arg(ReplayCommand::tr("online"), 12);
     out << Qt::endl;
     for (const auto& name : r.parameterNames) {
-        out << QStringLiteral("  %1 %2 %3 %4")
+        out << QStringLiteral("  %1 %2 %3 %4 %5")
                    .arg(QString::fromStdString(name), -10)
+                   .arg(QString::fromStdString(
+                            parameterUnit(s.model.law, name, h.deformationUnits, h.forceUnits)),
+                        -8)
                    .arg(num(r.initial.at(name)), 12)
                    .arg(num(r.finalEstimate.at(name)), 12)
                    .arg(num(r.finalStddev.at(name)), 12);
@@ -137,13 +174,20 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
             out << QStringLiteral(" %1").arg(num(it->second), 12);
         out << Qt::endl;
     }
-    const double lastFit = r.fitError.size() ? r.fitError[r.fitError.size() - 1] : 0.0;
     out << ReplayCommand::tr("  final model over the whole history: RMS force error %1 %2 "
-                             "(%3 % of RMS force); inspector fit error at the end %4 %")
+                             "(NRMSE %3 %; the initial model's %4 %)")
                .arg(num(r.finalRmsError), QString::fromStdString(h.forceUnits))
                .arg(QString::number(100.0 * r.finalNrmse, 'f', 2))
-               .arg(QString::number(100.0 * lastFit, 'f', 2))
+               .arg(QString::number(100.0 * r.initialNrmse, 'f', 2))
         << Qt::endl;
+    if (r.fitError.size() > 0) // an online pass ran
+        out << ReplayCommand::tr("  online model's prediction over the record (each sample with "
+                                 "the estimate known before it): NRMSE %1 %")
+                   .arg(QString::number(100.0 * r.auxiliaryNrmse, 'f', 2))
+            << Qt::endl;
+    if (!r.worseThanInitial.empty())
+        out << ReplayCommand::tr("  warning: %1").arg(QString::fromStdString(r.worseThanInitial))
+            << Qt::endl;
     if (r.refits > 0)
         out << ReplayCommand::tr("  Nelder-Mead fits accepted: %1").arg(r.refits) << Qt::endl;
     if (r.estimatorWarnings > 0)
@@ -158,6 +202,15 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
                    .arg(QString::number(c.computeSeconds, 'f', 2))
                    .arg(QString::number(100.0 * c.nrmse, 'f', 2))
             << Qt::endl;
+        if (const auto sc = scalesOf(c.parameters, s)) {
+            const bool same = finalScales && num(finalScales->first) == num(sc->first) &&
+                              num(finalScales->second) == num(sc->second);
+            out << (same ? ReplayCommand::tr("    in the same scales: %1")
+                         : ReplayCommand::tr("    in its own scales: %1 (its normalized values "
+                                             "are not comparable with the table's above)"))
+                           .arg(scalesText(*sc, h))
+                << Qt::endl;
+        }
         for (std::size_t i = 0; i < c.names.size(); ++i) {
             const auto k = Eigen::Index(i);
             const double sd = c.standardDeviation[k];
@@ -168,10 +221,6 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
                                          : QStringLiteral("+- %1").arg(num(1.96 * sd)))
                 << Qt::endl;
         }
-        for (const char* scale : {"uRef", "fRef"})
-            if (auto it = c.parameters.find(scale); it != c.parameters.end())
-                out << QStringLiteral("    %1 %2\n").arg(QString::fromLatin1(scale), -10)
-                           .arg(num(it->second), 12);
     }
     if (!r.verdict.empty())
         out << ReplayCommand::tr("  verdict: %1").arg(QString::fromStdString(r.verdict))
@@ -216,7 +265,36 @@ int ReplayCommand::exec(const QStringList& arguments) {
     if (!QDir().mkpath(o.outDir))
         return fail(tr("%1: cannot create the output directory").arg(o.outDir));
     try {
-        const OfflineIdentificationResult r = identifyOffline(history, settings);
+        // Progress on stderr once the work has run for a few seconds, then every 5 s.
+        double nextReport = 3.0;
+        const auto progress = [&nextReport](const OfflineProgress& p) {
+            if (p.elapsedSeconds < nextReport)
+                return;
+            nextReport = p.elapsedSeconds + 5.0;
+            QTextStream& err = ConsoleStreams::err();
+            if (std::string_view(p.phase) == "online" && p.samplesDone > 0) {
+                const double left = p.elapsedSeconds * double(p.samples - p.samplesDone) /
+                                    double(p.samplesDone);
+                err << tr("hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, "
+                          "about %6 s left")
+                           .arg(p.samplesDone)
+                           .arg(p.samples)
+                           .arg(p.refits)
+                           .arg(p.rejected)
+                           .arg(QString::number(p.elapsedSeconds, 'f', 0))
+                           .arg(QString::number(left, 'f', 0))
+                    << Qt::endl;
+            } else {
+                err << tr("hsmu replay: %1 (%2 s elapsed)")
+                           .arg(std::string_view(p.phase) == "calibration"
+                                    ? tr("calibrating over the whole history")
+                                    : tr("final fit over the whole history"))
+                           .arg(QString::number(p.elapsedSeconds, 'f', 0))
+                    << Qt::endl;
+                nextReport = p.elapsedSeconds; // the next phase is told at once
+            }
+        };
+        const OfflineIdentificationResult r = identifyOffline(history, settings, progress);
         if (reader)
             online = onlineEstimate(reader->data(), settings.specimen, r.method);
         writeIdentificationReport(o.outDir.toStdString(), history, settings, r, online);

@@ -5,6 +5,7 @@
 // (the robust UKF, replayed sample by sample as online) must end within 25 % of the
 // calibration's NRMSE, without a divergence and with no parameter on a bound that the
 // calibration does not also put there.
+// Nelder-Mead (nelderMead:<record>) must end within 25 % of the calibration's NRMSE in <= 60 s.
 // One CTest test per record: the executable takes a data tag (e.g. `calibrates:gill`).
 
 #include "core/identification/CalibrationDefaults.h"
@@ -13,7 +14,9 @@
 #include <QtTest>
 
 #include <cmath>
+#include <ctime>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -96,6 +99,8 @@ private slots:
                 ++divergences;
         qInfo("  divergences detected and recovered: %d", divergences);
         QVERIFY2(divergences == 0, qPrintable(QString("%1 divergences").arg(divergences)));
+        QVERIFY2(r.estimatorWarnings == 0,
+                 qPrintable(QString("%1 rejected samples").arg(r.estimatorWarnings)));
         // No parameter on a bound unless the data put it there: a bound of the default box
         // (CalibrationDefaults.h; the deltas' upper bounds depend on the energy seen, their
         // lower bound 0 does not) is reached online only where the calibration sits on it.
@@ -115,6 +120,109 @@ private slots:
             }
         }
         QVERIFY2(pinned.isEmpty(), qPrintable("on a bound online only: " + pinned.join(", ")));
+    }
+
+    /// Nelder-Mead (`hsmu replay --import FILE --method nelder-mead`, no user input): its
+    /// scales and box from the data as the calibration's, its refits bounded in cost on the
+    /// long records; the final model within 1.25 x the calibration's NRMSE, in <= 60 s, and
+    /// never worse than the initial model.
+    void nelderMead_data() { calibrates_data(); }
+
+    void nelderMead() {
+        QFETCH(QString, file);
+        SpecimenHistory h;
+        if (!readRecord(file.toStdString(), h))
+            QSKIP(qPrintable("shared record absent (a fresh machine has no ../shared/data): " + file));
+        const IdentificationSettings s0 = withMethod(defaultIdentificationSettings(), "nelder-mead");
+        IdentificationSettings s = s0;
+        s.calibrate = false;
+        // Timed in process CPU (Nelder-Mead runs on this thread alone): the machine's other
+        // work (ctest -j, builds) does not count against its budget.
+        QElapsedTimer timer;
+        timer.start();
+        const std::clock_t cpu0 = std::clock();
+        const OfflineIdentificationResult r = identifyOffline(h, s);
+        const double seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+        const double wall = 1e-3 * double(timer.elapsed());
+        CalibrationRequest request;
+        const CalibrationResult c = calibrateHistory(h.deformation, h.force, request);
+        QVERIFY2(c.ok, c.reason.c_str());
+        qInfo("%s: Nelder-Mead final NRMSE %.4f (%.3fx the calibration's %.4f), initial %.4f, "
+              "online prediction %.4f, %d fits accepted, %.1f s CPU (%.1f s wall)",
+              qPrintable(QFileInfo(file).fileName()), r.finalNrmse, r.finalNrmse / c.nrmse,
+              c.nrmse, r.initialNrmse, r.auxiliaryNrmse, r.refits, seconds, wall);
+        if (qEnvironmentVariableIsSet("HSMU_VERBOSE"))
+            for (const std::string& m : r.messages)
+                qInfo("  %s", m.c_str());
+        QVERIFY2(r.finalNrmse <= 1.25 * c.nrmse,
+                 qPrintable(QString("Nelder-Mead NRMSE %1 > 1.25 x %2").arg(r.finalNrmse).arg(c.nrmse)));
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) // the Release budget
+        QVERIFY2(seconds <= 60.0, qPrintable(QString("%1 s > 60 s").arg(seconds)));
+#endif
+        QVERIFY(r.worseThanInitial.empty());
+        QVERIFY(r.finalNrmse <= r.initialNrmse);
+    }
+
+    /// The default online UKF on a record that starts with 5 s of sub-millimetre noise (a
+    /// specimen at rest before the test: the first anchor's scales come from sensor noise)
+    /// and then cycles to 5 yield deformations: no rejected sample (the law's integration
+    /// holds at every sigma point, BoucWen.cpp's bracketed fallback), no divergence, and the
+    /// final model within 1.25 x the calibration.
+    void noRejectionAfterANoisyStart() {
+        SpecimenHistory h;
+        std::mt19937 rng(29u);
+        const auto uniform = [&rng] { return double(rng()) / 4294967296.0 * 2.0 - 1.0; };
+        const auto gauss = [&] { // sum of 12 uniforms: mean 0, std 1 (Irwin-Hall)
+            double sum = 0.0;
+            for (int i = 0; i < 12; ++i)
+                sum += 0.5 * (uniform() + 1.0);
+            return sum - 6.0;
+        };
+        // Bouc-Wen, units mm and kN: k0 20 kN/mm, alpha 0.05, n 2, z ultimate 5 mm.
+        const double k0 = 20.0, alpha = 0.05, n = 2.0, beta = 0.02, gamma = 0.02;
+        double z = 0.0, uPrevious = 0.0;
+        for (int k = 0; k < 4500; ++k) {
+            const double t = 0.01 * k;
+            double u = 0.0;
+            if (k < 500) {
+                u = 0.3 * uniform(); // sub-millimetre noise
+            } else {
+                const double tt = 0.01 * (k - 500);
+                u = std::min(1.0, tt / 30.0) * 25.0 * std::sin(2.0 * M_PI * 0.25 * tt);
+            }
+            const double du = (u - uPrevious) / 50.0;
+            for (int i = 0; i < 50; ++i)
+                z += (1.0 - std::pow(std::abs(z), n) * (du * z > 0 ? beta + gamma : gamma - beta)) * du;
+            uPrevious = u;
+            h.time.push_back(t);
+            h.deformation.push_back(1e-3 * u); // m
+            h.force.push_back(k0 * (alpha * u + (1.0 - alpha) * z) + 0.5 * gauss()); // kN
+        }
+        h.source = "synthetic record with a noisy start";
+        const OfflineIdentificationResult r = identifyOffline(h, defaultIdentificationSettings());
+        QVERIFY(r.calibration && r.calibration->ok);
+        int rejected = 0, divergences = 0;
+        for (const std::string& m : r.messages) {
+            rejected += m.find("identification step rejected") != std::string::npos;
+            divergences += m.find("UKF diverging") != std::string::npos;
+        }
+        qInfo("noisy start: %d rejected samples, %d divergences; UKF final NRMSE %.4f, "
+              "calibration %.4f", rejected, divergences, r.finalNrmse, r.calibration->nrmse);
+        if (rejected > 0 || qEnvironmentVariableIsSet("HSMU_VERBOSE"))
+            for (const std::string& m : r.messages)
+                qInfo("  %s", m.c_str());
+        QVERIFY(r.finalNrmse <= 1.25 * r.calibration->nrmse);
+        // Not yet (issue 29, item 5, open): the first anchor's scales come from 6 samples of
+        // noise, the box lets the sigma points reach beta = 0 (or below) with deltaNu at its
+        // bound, and from there an unloading step whose z ends above the degraded ultimate z
+        // runs away (dz/dx = A - |z|^n (gamma - beta) nu < 0): no root within the iterates'
+        // bound, for Newton or the bracketed fallback. 35 rejected samples before the
+        // fallback and 27 with beta >= 0 in the box (tried, not kept: it moves the
+        // calibrations); the law's energy e = (1 - alpha) k0 int z dx decreasing on such
+        // unloadings is the next thing to look at.
+        QEXPECT_FAIL("", "sigma points at beta ~ 0 with a fast-degrading nu run away (issue 29)",
+                     Continue);
+        QCOMPARE(rejected + divergences, 0);
     }
 
     /// The pinching law (boucWenPinching) with no user input: within 5 % of the independent

@@ -64,6 +64,10 @@ void TestUnits::forceFactors() {
     // Letter case is free except that mN is not MN.
     QCOMPARE(parse("KN", Dimension::Force)->factor, 1.0);
     QCOMPARE(parse(" kip ", Dimension::Force)->factor, parse("KIP", Dimension::Force)->factor);
+    // The US plural (issue 29: `--units s,in,kips` was refused), also in a moment.
+    QCOMPARE(parse("kips", Dimension::Force)->factor, parse("kip", Dimension::Force)->factor);
+    QCOMPARE(parse("kips", Dimension::Force)->symbol, std::string("kip"));
+    QCOMPARE(parse("kips*in", Dimension::Moment)->factor, parse("kip in", Dimension::Moment)->factor);
     QVERIFY(!parse("mN", Dimension::Force).has_value());
     QCOMPARE(parse("MN", Dimension::Force)->factor, 1000.0);
 }
