@@ -247,6 +247,11 @@ bool NelderMeadIdentifier::fittedBox(const HistoryScales& scales,
     for (const auto& name : m_s.parameters)
         if (!m_s.bounds.count(name))
             request.fitted.push_back(name);
+    if (m_law == "mrDamper") { // the box in the model's own scales, velocities from the times
+        request.uRef = m_all.at("uRef");
+        request.fRef = m_all.at("fRef");
+        request.time = m_t;
+    }
     CalibrationSpec spec;
     if (!request.fitted.empty()) {
         try {
