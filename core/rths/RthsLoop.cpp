@@ -8,6 +8,24 @@
 
 namespace hsmu::rths {
 
+namespace {
+
+/// One classical Runge-Kutta step of x'' = acc(x, v, s) over h (docs/rths.md, "The loop"),
+/// s the stage's time as a fraction of h (0, 1/2 or 1); a0 = acc(x, v, 0), already known.
+template <class Acceleration>
+void rk4Step(Eigen::VectorXd& x, Eigen::VectorXd& v, double h, const Eigen::VectorXd& a0,
+             const Acceleration& acc)
+{
+    const Eigen::VectorXd k1x = v, k1v = a0;
+    const Eigen::VectorXd k2x = v + 0.5 * h * k1v, k2v = acc(x + 0.5 * h * k1x, k2x, 0.5);
+    const Eigen::VectorXd k3x = v + 0.5 * h * k2v, k3v = acc(x + 0.5 * h * k2x, k3x, 0.5);
+    const Eigen::VectorXd k4x = v + h * k3v, k4v = acc(x + h * k3x, k4x, 1.0);
+    x += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+    v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+}
+
+} // namespace
+
 RthsLoop::RthsLoop(const Partition& partition, const GroundMotion& groundMotion,
                    const RthsSettings& settings)
     : m_p(partition), m_ag(groundMotion), m_s(settings), m_h(1.0 / settings.rate),
@@ -64,20 +82,30 @@ std::string plantLimitBreach(const ServoHydraulicPlant& plant, const ActuatorLim
     return o.str();
 }
 
-void RthsLoop::checkLimits(double command)
+void RthsLoop::holdAt(const std::string& why)
 {
-    const auto& l = m_s.limits;
     std::ostringstream o;
     o.precision(4);
-    if (std::abs(command) > l.stroke)
-        o << "actuator command " << command * 1000.0 << " mm beyond the stroke limit +-"
-          << l.stroke * 1000.0 << " mm";
-    else if (const std::string why = plantLimitBreach(m_plant, l); !why.empty())
-        o << why;
-    else
-        return;
-    o << " at tick " << m_k << " (t = " << double(m_k) * m_h << " s): test held";
+    o << why << " at tick " << m_k << " (t = " << double(m_k) * m_h << " s): test held";
     m_hold = o.str();
+}
+
+void RthsLoop::checkCommand(double command)
+{
+    const double stroke = m_s.limits.stroke;
+    if (std::abs(command) <= stroke)
+        return;
+    std::ostringstream o;
+    o.precision(4);
+    o << "actuator command " << command * 1000.0 << " mm beyond the stroke limit +-"
+      << stroke * 1000.0 << " mm";
+    holdAt(o.str());
+}
+
+void RthsLoop::checkPlant()
+{
+    if (const std::string why = plantLimitBreach(m_plant, m_s.limits); !why.empty())
+        holdAt(why);
 }
 
 bool RthsLoop::tick()
@@ -108,24 +136,19 @@ bool RthsLoop::tick()
     m_last.force = fm;
     m_last.floors = m_x;
     m_last.floors(j) = xm;
-    checkLimits(command);
+    checkCommand(command); // the plant's state was checked at the end of the last tick
     if (holding())
         return false;
     // L4: the plant over [t, t + h].
     m_plant.advance(valve, m_h);
     // L5: the numerical substructure over [t, t + h] (RK4, fe held).
     const double agMid = m_ag.at(t + 0.5 * m_h), ag1 = m_ag.at(t + m_h);
-    const Eigen::VectorXd k1x = m_v, k1v = a0;
-    const Eigen::VectorXd k2x = m_v + 0.5 * m_h * k1v;
-    const Eigen::VectorXd k2v = accelerationOf(m_x + 0.5 * m_h * k1x, k2x, agMid, fe);
-    const Eigen::VectorXd k3x = m_v + 0.5 * m_h * k2v;
-    const Eigen::VectorXd k3v = accelerationOf(m_x + 0.5 * m_h * k2x, k3x, agMid, fe);
-    const Eigen::VectorXd k4x = m_v + m_h * k3v;
-    const Eigen::VectorXd k4v = accelerationOf(m_x + m_h * k3x, k4x, ag1, fe);
-    m_x += m_h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-    m_v += m_h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+    rk4Step(m_x, m_v, m_h, a0,
+            [&](const Eigen::VectorXd& x, const Eigen::VectorXd& v, double s) {
+                return accelerationOf(x, v, s < 1.0 ? agMid : ag1, fe);
+            });
     ++m_k;
-    checkLimits(command);
+    checkPlant();
     return !holding();
 }
 
@@ -144,12 +167,10 @@ Eigen::MatrixXd referenceResponse(const LinearStructure& r, const GroundMotion& 
         out.row(k) = x.transpose();
         const double t = double(k) * h;
         const double a0 = ag.at(t), am = ag.at(t + 0.5 * h), a1 = ag.at(t + h);
-        const Eigen::VectorXd k1x = v, k1v = acc(x, v, a0);
-        const Eigen::VectorXd k2x = v + 0.5 * h * k1v, k2v = acc(x + 0.5 * h * k1x, k2x, am);
-        const Eigen::VectorXd k3x = v + 0.5 * h * k2v, k3v = acc(x + 0.5 * h * k2x, k3x, am);
-        const Eigen::VectorXd k4x = v + h * k3v, k4v = acc(x + h * k3x, k4x, a1);
-        x += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-        v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        rk4Step(x, v, h, acc(x, v, a0),
+                [&](const Eigen::VectorXd& xs, const Eigen::VectorXd& vs, double s) {
+                    return acc(xs, vs, s < 1.0 ? am : a1);
+                });
     }
     return out;
 }

@@ -82,7 +82,9 @@ public:
 private:
     double sense(double value, double rms);
     double quantize(double v) const;
-    void checkLimits(double command);
+    void checkCommand(double command); ///< the stroke limit, before the plant moves
+    void checkPlant();                 ///< stroke, force and velocity, after it moved
+    void holdAt(const std::string& why);
     Eigen::VectorXd accelerationOf(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double ag,
                                    double fe) const;
 
