@@ -14,17 +14,18 @@ double channel(std::int64_t v) {
 
 void ActuatorColumns::create(hid_t elementsGroup, const std::vector<std::string>& names,
                              const std::vector<std::string>& deformationUnits,
-                             const std::string& where) {
+                             const std::string& where, int deflate) {
     m_nElem = names.size();
     const h5::Id g =
         h5::check(H5Gcreate2(elementsGroup, "actuator", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                   where, "cannot create group /elements/actuator");
     const hid_t f64 = H5T_NATIVE_DOUBLE;
     const int n = int(m_nElem);
-    m_cmd = h5::Extendible(g.get(), "commanded", f64, n, where);
-    m_measured = h5::Extendible(g.get(), "measured", f64, n, where);
-    m_ticks = h5::Extendible(g.get(), "held_ticks", f64, n, where);
-    m_flags = h5::Extendible(g.get(), "flags", f64, n, where);
+    const int rows = recordschema::kChunkRows;
+    m_cmd = h5::Extendible(g.get(), "commanded", f64, n, where, rows, deflate);
+    m_measured = h5::Extendible(g.get(), "measured", f64, n, where, rows, deflate);
+    m_ticks = h5::Extendible(g.get(), "held_ticks", f64, n, where, rows, deflate);
+    m_flags = h5::Extendible(g.get(), "flags", f64, n, where, rows, deflate);
     for (auto* d : {&m_cmd, &m_measured, &m_ticks, &m_flags})
         h5::writeAttr(d->id(), "names", names, where);
     h5::writeAttr(m_cmd.id(), "units", deformationUnits, where);

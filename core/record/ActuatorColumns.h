@@ -19,7 +19,8 @@ class ActuatorColumns {
 public:
     /// Create the group "actuator" under elementsGroup. Throws RecordError naming `where`.
     void create(hid_t elementsGroup, const std::vector<std::string>& names,
-                const std::vector<std::string>& deformationUnits, const std::string& where);
+                const std::vector<std::string>& deformationUnits, const std::string& where,
+                int deflate = 0);
     /// Buffered rows (RecordWriter fills one batch while its thread writes another).
     struct Rows {
         std::vector<double> cmd, measured, ticks, flags;

@@ -164,9 +164,10 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         const h5::Id g = group("dofs");
         h5::writeAttr(g.get(), "names", layout.dofNames, w);
         const int n = int(nDof);
-        u = h5::Extendible(g.get(), "u", f64, n, w);
-        v = h5::Extendible(g.get(), "v", f64, n, w);
-        a = h5::Extendible(g.get(), "a", f64, n, w);
+        const int rows = recordschema::kChunkRows, z = start.deflate;
+        u = h5::Extendible(g.get(), "u", f64, n, w, rows, z);
+        v = h5::Extendible(g.get(), "v", f64, n, w, rows, z);
+        a = h5::Extendible(g.get(), "a", f64, n, w, rows, z);
         for (auto* d : {&u, &v, &a})
             h5::writeAttr(d->id(), "names", layout.dofNames, w);
         units(u, "m");
@@ -190,15 +191,16 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(g.get(), "experimental", experimental, w);
         h5::writeAttr(g.get(), "nonlinear", nonlinear, w);
         const int n = int(nElem);
-        def = h5::Extendible(g.get(), "deformation", f64, n, w);
-        force = h5::Extendible(g.get(), "force", f64, n, w);
-        cmd = h5::Extendible(g.get(), "commanded", f64, n, w);
+        const int rows = recordschema::kChunkRows, z = start.deflate;
+        def = h5::Extendible(g.get(), "deformation", f64, n, w, rows, z);
+        force = h5::Extendible(g.get(), "force", f64, n, w, rows, z);
+        cmd = h5::Extendible(g.get(), "commanded", f64, n, w, rows, z);
         for (auto* d : {&def, &force, &cmd})
             h5::writeAttr(d->id(), "names", names, w);
         h5::writeAttr(def.id(), "units", defUnits, w);
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
-        actuator.create(g.get(), names, defUnits, w);
+        actuator.create(g.get(), names, defUnits, w, start.deflate);
     }
     if (layout.updating)
         createUpdating(root);

@@ -59,6 +59,9 @@ struct RecordStart {
     /// Which run of a protocol this is ("reference", "initial", "updated" for hsmu compare;
     /// "" for a single run). The configuration is the one given to the command.
     std::string run{};
+    /// Deflate level 1-9 (with HDF5's shuffle filter) of the per-step DOF, element and
+    /// actuator matrices; 0 (the default) writes them uncompressed (docs/recording.md).
+    int deflate = 0;
 };
 
 class RecordWriter final : public StepObserver {
