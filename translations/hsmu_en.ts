@@ -1308,6 +1308,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration's controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco's GenericTCP).</source>
         <translation>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration's controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco's GenericTCP).</translation>
     </message>
+    <message>
+        <source>steps.csv: auto (written when a row has at most 200 values, the default), all or none; record.h5 holds every column either way.</source>
+        <translation>steps.csv: auto (written when a row has at most 200 values, the default), all or none; record.h5 holds every column either way.</translation>
+    </message>
+    <message>
+        <source>Compress the record's per-step matrices: deflate level 1-9 with shuffle (default 0: uncompressed).</source>
+        <translation>Compress the record's per-step matrices: deflate level 1-9 with shuffle (default 0: uncompressed).</translation>
+    </message>
+    <message>
+        <source>--csv: expected auto, all or none, found '%1'</source>
+        <translation>--csv: expected auto, all or none, found '%1'</translation>
+    </message>
+    <message>
+        <source>--compress: expected a whole number from 0 to 9, found '%1'</source>
+        <translation>--compress: expected a whole number from 0 to 9, found '%1'</translation>
+    </message>
 </context>
 <context>
     <name>RunReport</name>

@@ -1308,6 +1308,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration&apos;s controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco&apos;s GenericTCP).</source>
         <translation>Controlador del actuador: builtin (probetas virtuales en el propio proceso, por defecto), tcp://HOST:PORT (hsmu-controller o un controlador de laboratorio, con el controller.protocol de la configuración, native por defecto), simapp://HOST:PORT (un servidor SimApp de OpenFresco) o generictcp://HOST:PORT (un servidor para el GenericTCP de OpenFresco).</translation>
     </message>
+    <message>
+        <source>steps.csv: auto (written when a row has at most 200 values, the default), all or none; record.h5 holds every column either way.</source>
+        <translation>steps.csv: auto (se escribe cuando una fila tiene como máximo 200 valores, por defecto), all o none; record.h5 guarda todas las columnas en cualquier caso.</translation>
+    </message>
+    <message>
+        <source>Compress the record&apos;s per-step matrices: deflate level 1-9 with shuffle (default 0: uncompressed).</source>
+        <translation>Comprime las matrices por paso del registro: nivel de deflate 1-9 con shuffle (por defecto 0: sin comprimir).</translation>
+    </message>
+    <message>
+        <source>--csv: expected auto, all or none, found &apos;%1&apos;</source>
+        <translation>--csv: se esperaba auto, all o none, se encontró &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--compress: expected a whole number from 0 to 9, found &apos;%1&apos;</source>
+        <translation>--compress: se esperaba un número entero de 0 a 9, se encontró &apos;%1&apos;</translation>
+    </message>
 </context>
 <context>
     <name>RunReport</name>

@@ -1308,6 +1308,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>Actuator controller: builtin (in-process virtual specimens, the default), tcp://HOST:PORT (hsmu-controller or a lab controller, in the configuration&apos;s controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp server) or generictcp://HOST:PORT (a server for OpenFresco&apos;s GenericTCP).</source>
         <translation>作动器控制器：builtin（进程内虚拟试件，默认）、tcp://HOST:PORT（hsmu-controller 或实验室控制器，使用配置中的 controller.protocol，默认为 native）、simapp://HOST:PORT（OpenFresco SimApp 服务器）或 generictcp://HOST:PORT（供 OpenFresco GenericTCP 使用的服务器）。</translation>
     </message>
+    <message>
+        <source>steps.csv: auto (written when a row has at most 200 values, the default), all or none; record.h5 holds every column either way.</source>
+        <translation>steps.csv：auto（每行最多 200 个值时写出，默认）、all 或 none；无论哪种，record.h5 都保存所有列。</translation>
+    </message>
+    <message>
+        <source>Compress the record&apos;s per-step matrices: deflate level 1-9 with shuffle (default 0: uncompressed).</source>
+        <translation>压缩记录的逐步矩阵：deflate 级别 1-9，带 shuffle（默认 0：不压缩）。</translation>
+    </message>
+    <message>
+        <source>--csv: expected auto, all or none, found &apos;%1&apos;</source>
+        <translation>--csv：应为 auto、all 或 none，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>--compress: expected a whole number from 0 to 9, found &apos;%1&apos;</source>
+        <translation>--compress：应为 0 到 9 的整数，实际为“%1”</translation>
+    </message>
 </context>
 <context>
     <name>RunReport</name>

@@ -37,7 +37,7 @@ double residualAt(const BoucWenParameters& p, const BoucWenState& from, double d
     const double e = from.e + (1.0 - p.alpha) * p.k0 * z * dx;
     const Degradation d = degradationAt(p, e);
     const double psi = p.gamma + p.beta * signOf(dx * z);
-    const double phi = d.a - std::pow(std::abs(z), p.n) * psi * d.nu;
+    const double phi = d.a - absPow(std::abs(z), p.n) * psi * d.nu;
     return z - from.z - dx * phi / d.eta;
 }
 
@@ -130,6 +130,17 @@ BoucWenIncrement integrateAdmissible(const BoucWenParameters& p, const BoucWenSt
                                      double dx, int maxSubdivisions) {
     if (!std::isfinite(dx) || !std::isfinite(from.z) || !std::isfinite(from.e)) {
         return {LawStatus::InvalidInput, from, 0.0, 0};
+    }
+    if (dx == 0.0) {
+        // At rest (most storeys of a tall building early in a run): Newton's first iterate
+        // has r = 0 and converges on z0 whenever Phi / eta is finite, so its result is taken
+        // without the iteration.
+        const Degradation d = degradationAt(p, from.e);
+        const double psi = p.gamma + p.beta * signOf(dx * from.z);
+        if (std::isfinite((d.a - absPow(std::abs(from.z), p.n) * psi * d.nu) / d.eta)) {
+            const double c = (1.0 - p.alpha) * p.k0;
+            return {LawStatus::Ok, {from.z, from.e + c * from.z * dx}, 0.0, 1};
+        }
     }
     StepLimits limits(p, from);
     BoucWenState end = from;
@@ -230,8 +241,8 @@ double BoucWen::algorithmicTangent() const {
     const double e = m_trial.e;
     const double a = p.A0 - p.deltaA * e, nu = 1.0 + p.deltaNu * e, eta = 1.0 + p.deltaEta * e;
     const double psi = p.gamma + p.beta * (dx * z > 0.0 ? 1.0 : -1.0);
-    const double zn = std::pow(std::abs(z), p.n);
-    const double zn1 = p.n * std::pow(std::abs(z), p.n - 1.0) * (z > 0.0 ? 1.0 : -1.0);
+    const double zn = absPow(std::abs(z), p.n);
+    const double zn1 = p.n * absPow(std::abs(z), p.n - 1.0) * (z > 0.0 ? 1.0 : -1.0);
     const double phi = a - zn * psi * nu;
     // dPhi/de and deta/de (A, nu, eta are linear in e)
     const double phiE = -p.deltaA - zn * psi * p.deltaNu;

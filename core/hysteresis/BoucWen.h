@@ -98,7 +98,8 @@ public:
                                            int maxSubdivisions = kDefaultMaxSubdivisions);
     /// How integrateStates() evaluates |z|^n.
     enum class BatchMath {
-        Exact, ///< std::pow: the end states of integrateState(), bit for bit
+        Exact, ///< std::pow (exact forms for z = 0, n = 1, 2): the end states of integrateState(),
+               ///< bit for bit
         Fast,  ///< a vector pow (glibc libmvec, AVX2) where the processor has AVX2, four
                ///< problems per call, within 1 ulp of std::pow (end states within a few ulps
                ///< of integrateState()'s); elsewhere Exact

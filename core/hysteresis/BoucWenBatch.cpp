@@ -3,9 +3,9 @@
 // exactly the scalar operations of BackwardEuler::iterate() (BoucWenNewton.h) in the same
 // order, each correctly rounded (no contraction into fused multiply-adds: this file is built
 // with -ffp-contract=off); only the decisions (convergence, failure) are taken lane by lane.
-// |z|^n: BatchMath::Exact calls std::pow lane by lane, so the end states are those of
-// integrateState() bit for bit; BatchMath::Fast calls glibc's AVX2 vector pow (libmvec) once
-// per vector on processors with AVX2, from a function compiled for AVX2 (selected at run time;
+// |z|^n: BatchMath::Exact calls absPow() (BoucWenNewton.h) lane by lane, so the end states are
+// those of integrateState() bit for bit; BatchMath::Fast calls glibc's AVX2 vector pow (libmvec)
+// once per vector on processors with AVX2, from a function compiled for AVX2 (selected at run time;
 // the rest of the program stays baseline x86-64). Fast halves the step of the 19 sigma points
 // (docs/benchmarks.md): pow was a third of it, and the vectors also divide four lanes at a time.
 
@@ -190,14 +190,14 @@ template <class Pow>
     }
 }
 
-// std::pow lane by lane (running lanes only): the results of integrateState(), bit for bit.
+// absPow() lane by lane (running lanes only): the results of integrateState(), bit for bit.
 void roundExact(Lanes* vectors, int count, const Batch& b) {
     roundWith(
         vectors, count, b, [](const Lanes& lanes, const Vec& absZ) __attribute__((always_inline)) {
             Vec out{};
             for (int lane = 0; lane < kLanes; ++lane) {
                 if ((lanes.running & (1u << lane)) != 0) {
-                    out[lane] = std::pow(absZ[lane], lanes.n[lane]);
+                    out[lane] = absPow(absZ[lane], lanes.n[lane]);
                 }
             }
             return out;
@@ -239,7 +239,8 @@ void BoucWen::integrateStates(std::span<const BoucWenParameters> p,
                               std::span<BoucWenIncrement> out, BatchMath math) {
     const bool vector = math == BatchMath::Fast && vectorPowAvailable();
     // A problem that is not a plain single step from the start (inadmissible, non-finite, an
-    // increment to halve, as too long or too stiff an unloading) is left to integrateState(), which takes the same decisions.
+    // increment to halve, as too long or too stiff an unloading) is left to integrateState(), which
+    // takes the same decisions.
     const std::size_t count = std::min({p.size(), from.size(), out.size()});
     for (std::size_t first = 0; first < count; first += kBlock) {
         std::array<Lanes, kVectorsPerBlock> vectors;

@@ -7,8 +7,8 @@
 // elements, step 0, OpenFresco's ticks and flags). Private to core/record (HDF5 inside).
 // Thread rules: RecordWriter's.
 
-#include "core/record/Hdf5Util.h"
 #include "core/experiment/StepRecord.h"
+#include "core/record/Hdf5Util.h"
 
 #include <string>
 #include <vector>
@@ -19,19 +19,24 @@ class ActuatorColumns {
 public:
     /// Create the group "actuator" under elementsGroup. Throws RecordError naming `where`.
     void create(hid_t elementsGroup, const std::vector<std::string>& names,
-                const std::vector<std::string>& deformationUnits, const std::string& where);
-    /// Buffer one step's row (elements beyond r.elements: NaN).
-    void buffer(const StepRecord& r);
-    /// Append the `rows` buffered rows (every buffer holds rows x nElem values).
-    void write(hsize_t rows);
-    void clear();
+                const std::vector<std::string>& deformationUnits, const std::string& where,
+                int deflate = 0);
+    /// Buffered rows (RecordWriter fills one batch while its thread writes another).
+    struct Rows {
+        std::vector<double> cmd, measured, ticks, flags;
+        void clear();
+        void reserve(std::size_t values);
+    };
+    /// Buffer one step's row into rows (elements beyond r.elements: NaN).
+    void buffer(const StepRecord& r, Rows& rows) const;
+    /// Append the `count` rows of `rows` (every buffer holds count x nElem values).
+    void write(const Rows& rows, hsize_t count);
     /// Close the datasets (RecordWriter::finish).
     void close();
 
 private:
     std::size_t m_nElem = 0;
     h5::Extendible m_cmd, m_measured, m_ticks, m_flags;
-    std::vector<double> m_bCmd, m_bMeasured, m_bTicks, m_bFlags;
 };
 
 } // namespace hsmu

@@ -225,7 +225,7 @@ Id fixedStringType(int chars) {
 }
 
 Extendible::Extendible(hid_t parent, const char* name, hid_t type, int cols,
-                       const std::string& where, int chunkRows)
+                       const std::string& where, int chunkRows, int deflate)
     : m_type(type), m_cols(cols), m_where(where + ": " + name) {
     const int rank = cols >= 0 ? 2 : 1;
     const hsize_t width = hsize_t(cols > 0 ? cols : 0);
@@ -238,6 +238,11 @@ Extendible::Extendible(hid_t parent, const char* name, hid_t type, int cols,
     const Id space = check(H5Screate_simple(rank, dims, maxDims), where, "cannot make a dataspace");
     const Id dcpl = check(H5Pcreate(H5P_DATASET_CREATE), where, "cannot make a property list");
     check(H5Pset_chunk(dcpl.get(), rank, chunk), where, "cannot set chunking");
+    if (deflate > 0) {
+        check(H5Pset_shuffle(dcpl.get()), where, "cannot set the shuffle filter");
+        check(H5Pset_deflate(dcpl.get(), unsigned(std::min(deflate, 9))), where,
+              "cannot set the deflate filter");
+    }
     // Every chunk carries a Fletcher32 checksum: a flipped data byte fails the read
     // (RecordReader: "damaged or truncated record (cannot read ...)"), it is never replayed.
     check(H5Pset_fletcher32(dcpl.get()), where, "cannot set the Fletcher32 checksum");

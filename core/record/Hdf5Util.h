@@ -80,12 +80,13 @@ Id fixedStringType(int chars);
 
 /// A per-step dataset: rows x cols (cols < 0: one-dimensional [rows]) of `type`, chunked by
 /// chunkRows rows, unlimited rows. append() extends it and writes `rows` rows from a
-/// row-major buffer in memory type `type`.
+/// row-major buffer in memory type `type`. deflate 1-9: each chunk is byte-shuffled and
+/// deflated at that level (HDF5's shuffle and deflate filters, before the checksum); 0 none.
 class Extendible {
 public:
     Extendible() = default;
     Extendible(hid_t parent, const char* name, hid_t type, int cols, const std::string& where,
-               int chunkRows = recordschema::kChunkRows);
+               int chunkRows = recordschema::kChunkRows, int deflate = 0);
     void append(const void* rowMajor, hsize_t rows);
     hid_t id() const { return m_dset.get(); }
     hsize_t rows() const { return m_rows; }

@@ -8,7 +8,10 @@
 #include "core/record/RecordData.h"
 #include "core/record/RecordError.h"
 #include "core/record/RecordSchema.h"
+#include "core/record/RecordThread.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -66,29 +69,46 @@ struct RecordWriter::Impl {
     h5::Extendible siteRoundTrip;
     ActuatorColumns actuator; // /elements/actuator
 
-    std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep, bEventElement,
-        bEventDecision, bEventProposal;
-    std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
-        bTracking, bEventTime, bEventValues, bSiteRoundTrip;
-    std::vector<Alarm> bAlarms;
-    std::vector<RecordNote> bNotes;
+    /// Rows, alarms and notes buffered between two flushes.
+    struct Batch {
+        std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep,
+            bEventElement, bEventDecision, bEventProposal;
+        std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
+            bTracking, bEventTime, bEventValues, bSiteRoundTrip;
+        ActuatorColumns::Rows actuator;
+        std::vector<Alarm> bAlarms;
+        std::vector<RecordNote> bNotes;
+
+        void clear();
+        /// Capacity for `rows` rows, so that appending a row never allocates.
+        void reserve(std::size_t rows, std::size_t nDof, std::size_t nElem, std::size_t nPar,
+                     std::size_t nSite);
+    };
+    // `fill` belongs to the stepping thread; `out` to the record thread while it writes it
+    // (between RecordThread::start() and the next wait()), to the stepping thread otherwise.
+    Batch fill, out;
+    std::unique_ptr<RecordThread> thread;
 
     const std::vector<Alarm>* tracked = nullptr;
     std::size_t alarmsSeen = 0;
-    int received = 0, flushed = 0, alarmsFlushed = 0, notesFlushed = 0;
-    bool failed = false, closed = false;
+    int received = 0;
+    std::atomic<int> flushed{0}, alarmsFlushed{0}, notesFlushed{0}; // by the record thread
+    std::atomic<bool> failed{false}; // set by the record thread once `error` is written
+    bool closed = false;
     std::string error;
     Clock::time_point lastFlush = Clock::now();
 
     void create(const RecordStart& start);
     void createUpdating(hid_t root);
     void createLogs(hid_t root);
-    void clearBuffers();
-    void writeBuffers();
-    void writeLogs();
+    void writeBuffers(const Batch& b);
+    void writeLogs(const Batch& b);
+    void writeOut(); // the record thread's job: writes and clears `out`
     bool hasBuffered() const;
     void bufferEvent(const UpdateEvent& ev);
-    bool flush();
+    /// Hands the buffered rows to the record thread; with `synchronous`, waits until they
+    /// are on disk.
+    bool flush(bool synchronous);
     std::vector<h5::Extendible*> datasets();
 };
 
@@ -97,6 +117,16 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     const h5::Id fapl = h5::check(H5Pcreate(H5P_FILE_ACCESS), w, "cannot make a property list");
     h5::check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST), w,
               "cannot select the latest file format");
+    // Each dataset's chunk cache holds one and a half of the largest chunk (the chunk being
+    // filled), not HDF5's default 1 MiB: rows are only appended, so a written chunk is never
+    // read back, and with 1 MiB a 31,160-step SDOF run kept 3.2 MB of written chunks (issue
+    // 27). Set on the file: H5Fstart_swmr_write() reopens the datasets with the file's cache.
+    const long widest = long(std::max({nDof, nElem, nPar, nSite,
+                                       std::size_t(recordschema::kTrackingColumns)}));
+    const std::size_t chunkBytes = std::size_t(
+        long(recordschema::chunkRowsFor(int(widest), int(sizeof(double)))) * widest * 8);
+    h5::check(H5Pset_cache(fapl.get(), 0, 521, chunkBytes * 3 / 2 + 1, 1.0), w,
+              "cannot size the chunk cache");
     file = h5::check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), w,
                      "cannot be created");
     const hid_t root = file.get();
@@ -144,9 +174,10 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         const h5::Id g = group("dofs");
         h5::writeAttr(g.get(), "names", layout.dofNames, w);
         const int n = int(nDof);
-        u = h5::Extendible(g.get(), "u", f64, n, w);
-        v = h5::Extendible(g.get(), "v", f64, n, w);
-        a = h5::Extendible(g.get(), "a", f64, n, w);
+        const int rows = recordschema::kChunkRows, z = start.deflate;
+        u = h5::Extendible(g.get(), "u", f64, n, w, rows, z);
+        v = h5::Extendible(g.get(), "v", f64, n, w, rows, z);
+        a = h5::Extendible(g.get(), "a", f64, n, w, rows, z);
         for (auto* d : {&u, &v, &a})
             h5::writeAttr(d->id(), "names", layout.dofNames, w);
         units(u, "m");
@@ -170,15 +201,16 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(g.get(), "experimental", experimental, w);
         h5::writeAttr(g.get(), "nonlinear", nonlinear, w);
         const int n = int(nElem);
-        def = h5::Extendible(g.get(), "deformation", f64, n, w);
-        force = h5::Extendible(g.get(), "force", f64, n, w);
-        cmd = h5::Extendible(g.get(), "commanded", f64, n, w);
+        const int rows = recordschema::kChunkRows, z = start.deflate;
+        def = h5::Extendible(g.get(), "deformation", f64, n, w, rows, z);
+        force = h5::Extendible(g.get(), "force", f64, n, w, rows, z);
+        cmd = h5::Extendible(g.get(), "commanded", f64, n, w, rows, z);
         for (auto* d : {&def, &force, &cmd})
             h5::writeAttr(d->id(), "names", names, w);
         h5::writeAttr(def.id(), "units", defUnits, w);
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
-        actuator.create(g.get(), names, defUnits, w);
+        actuator.create(g.get(), names, defUnits, w, start.deflate);
     }
     if (layout.updating)
         createUpdating(root);
@@ -235,9 +267,9 @@ void RecordWriter::Impl::createUpdating(hid_t root) {
     // What became of each offer (UpdateDecision, language-neutral codes) and its proposal id.
     eventDecision = h5::Extendible(e.get(), "decision", i32, -1, w, chunk);
     std::vector<std::string> codes;
-    for (UpdateDecision d : {UpdateDecision::Applied, UpdateDecision::Refused,
-                             UpdateDecision::Rejected, UpdateDecision::NotQueued,
-                             UpdateDecision::Superseded})
+    for (UpdateDecision d :
+         {UpdateDecision::Applied, UpdateDecision::Refused, UpdateDecision::Rejected,
+          UpdateDecision::NotQueued, UpdateDecision::Superseded})
         codes.emplace_back(updateDecisionName(d));
     h5::writeAttr(eventDecision.id(), "codes", codes, w);
     eventProposal = h5::Extendible(e.get(), "proposal", i32, -1, w, chunk);
@@ -273,10 +305,9 @@ void RecordWriter::Impl::createLogs(hid_t root) {
     noteText = h5::Extendible(g.get(), "text", noteType.get(), -1, w, chunk);
 }
 
-void RecordWriter::Impl::clearBuffers() {
-    for (auto* b :
-         {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep, &bEventElement,
-          &bEventDecision, &bEventProposal})
+void RecordWriter::Impl::Batch::clear() {
+    for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep,
+                    &bEventElement, &bEventDecision, &bEventProposal})
         b->clear();
     for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
                     &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip})
@@ -286,45 +317,62 @@ void RecordWriter::Impl::clearBuffers() {
     actuator.clear();
 }
 
-void RecordWriter::Impl::writeBuffers() {
-    const hsize_t n = bTime.size();
-    if (n > 0) {
-        step.append(bStep.data(), n);
-        time.append(bTime.data(), n);
-        ag.append(bAg.data(), n);
-        u.append(bU.data(), n);
-        v.append(bV.data(), n);
-        a.append(bA.data(), n);
-        def.append(bDef.data(), n);
-        force.append(bForce.data(), n);
-        cmd.append(bCmd.data(), n);
-        if (nSite > 0)
-            siteRoundTrip.append(bSiteRoundTrip.data(), n);
-        actuator.write(n);
-        if (layout.updating) {
-            par.append(bPar.data(), n);
-            sd.append(bSd.data(), n);
-            aux.append(bAux.data(), n);
-            fit.append(bFit.data(), n);
-            applied.append(bApplied.data(), n);
-            thisStep.append(bThisStep.data(), n);
-            pending.append(bPending.data(), n);
-            tracking.append(bTracking.data(), n);
-            requested.append(bRequested.data(), n);
-        }
-    }
-    writeLogs();
-    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), path, "cannot be flushed");
-    flushed += int(n);
-    alarmsFlushed += int(bAlarms.size());
+void RecordWriter::Impl::Batch::reserve(std::size_t rows, std::size_t nDof, std::size_t nElem,
+                                        std::size_t nPar, std::size_t nSite) {
+    for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending, &bRequested})
+        b->reserve(rows);
+    for (auto* b : {&bTime, &bAg, &bAux, &bFit})
+        b->reserve(rows);
+    for (auto* b : {&bU, &bV, &bA})
+        b->reserve(rows * nDof);
+    for (auto* b : {&bDef, &bForce, &bCmd})
+        b->reserve(rows * nElem);
+    for (auto* b : {&bPar, &bSd})
+        b->reserve(rows * nPar);
+    bTracking.reserve(rows * std::size_t(recordschema::kTrackingColumns));
+    bSiteRoundTrip.reserve(rows * nSite);
+    actuator.reserve(rows * nElem);
 }
 
-void RecordWriter::Impl::writeLogs() {
-    if (!bAlarms.empty()) {
+void RecordWriter::Impl::writeBuffers(const Batch& b) {
+    const hsize_t n = b.bTime.size();
+    if (n > 0) {
+        step.append(b.bStep.data(), n);
+        time.append(b.bTime.data(), n);
+        ag.append(b.bAg.data(), n);
+        u.append(b.bU.data(), n);
+        v.append(b.bV.data(), n);
+        a.append(b.bA.data(), n);
+        def.append(b.bDef.data(), n);
+        force.append(b.bForce.data(), n);
+        cmd.append(b.bCmd.data(), n);
+        if (nSite > 0)
+            siteRoundTrip.append(b.bSiteRoundTrip.data(), n);
+        actuator.write(b.actuator, n);
+        if (layout.updating) {
+            par.append(b.bPar.data(), n);
+            sd.append(b.bSd.data(), n);
+            aux.append(b.bAux.data(), n);
+            fit.append(b.bFit.data(), n);
+            applied.append(b.bApplied.data(), n);
+            thisStep.append(b.bThisStep.data(), n);
+            pending.append(b.bPending.data(), n);
+            tracking.append(b.bTracking.data(), n);
+            requested.append(b.bRequested.data(), n);
+        }
+    }
+    writeLogs(b);
+    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), path, "cannot be flushed");
+    flushed += int(n);
+    alarmsFlushed += int(b.bAlarms.size());
+}
+
+void RecordWriter::Impl::writeLogs(const Batch& b) {
+    if (!b.bAlarms.empty()) {
         std::vector<double> t;
         std::vector<int> s;
         std::vector<char> sev, kind, msg, code;
-        for (const Alarm& al : bAlarms) {
+        for (const Alarm& al : b.bAlarms) {
             t.push_back(al.time);
             s.push_back(al.step);
             putFixed(sev, alarmSeverityName(al.severity), recordschema::kSeverityChars);
@@ -332,7 +380,7 @@ void RecordWriter::Impl::writeLogs() {
             putFixed(msg, al.message, recordschema::kMessageChars);
             putFixed(code, al.code, recordschema::kKindChars);
         }
-        const hsize_t m = bAlarms.size();
+        const hsize_t m = b.bAlarms.size();
         alarmTime.append(t.data(), m);
         alarmStep.append(s.data(), m);
         alarmSeverity.append(sev.data(), m);
@@ -340,25 +388,25 @@ void RecordWriter::Impl::writeLogs() {
         alarmMessage.append(msg.data(), m);
         alarmCode.append(code.data(), m);
     }
-    if (!bEventStep.empty() && layout.updating) {
-        const hsize_t m = bEventStep.size();
-        eventStep.append(bEventStep.data(), m);
-        eventTime.append(bEventTime.data(), m);
-        eventElement.append(bEventElement.data(), m);
-        eventValues.append(bEventValues.data(), m);
-        eventDecision.append(bEventDecision.data(), m);
-        eventProposal.append(bEventProposal.data(), m);
+    if (!b.bEventStep.empty() && layout.updating) {
+        const hsize_t m = b.bEventStep.size();
+        eventStep.append(b.bEventStep.data(), m);
+        eventTime.append(b.bEventTime.data(), m);
+        eventElement.append(b.bEventElement.data(), m);
+        eventValues.append(b.bEventValues.data(), m);
+        eventDecision.append(b.bEventDecision.data(), m);
+        eventProposal.append(b.bEventProposal.data(), m);
     }
-    if (!bNotes.empty()) {
+    if (!b.bNotes.empty()) {
         std::vector<double> t;
         std::vector<int> s;
         std::vector<char> text;
-        for (const RecordNote& note : bNotes) {
+        for (const RecordNote& note : b.bNotes) {
             t.push_back(note.time);
             s.push_back(note.step);
             putFixed(text, note.text, recordschema::kNoteChars);
         }
-        const hsize_t m = bNotes.size();
+        const hsize_t m = b.bNotes.size();
         noteTime.append(t.data(), m);
         noteStep.append(s.data(), m);
         noteText.append(text.data(), m);
@@ -366,32 +414,70 @@ void RecordWriter::Impl::writeLogs() {
     }
 }
 
-bool RecordWriter::Impl::flush() {
+bool RecordWriter::Impl::flush(bool synchronous) {
     lastFlush = Clock::now();
     if (failed || closed)
         return !failed;
     if (tracked && tracked->size() > alarmsSeen) {
-        bAlarms.insert(bAlarms.end(), tracked->begin() + long(alarmsSeen), tracked->end());
+        fill.bAlarms.insert(fill.bAlarms.end(), tracked->begin() + long(alarmsSeen),
+                            tracked->end());
         alarmsSeen = tracked->size();
     }
-    try {
-        const h5::QuietErrors quiet;
-        writeBuffers();
-    } catch (const std::exception& e) {
-        failed = true;
-        error = e.what();
-    }
-    clearBuffers();
+    thread->wait();       // back-pressure: the previous batch is on disk before the next goes
+    std::swap(fill, out); // the vectors' buffers change hands, capacities kept
+    thread->start();
+    if (synchronous)
+        thread->wait();
     return !failed;
 }
 
+void RecordWriter::Impl::writeOut() {
+    if (!failed) {
+        try {
+            const h5::QuietErrors quiet;
+            writeBuffers(out);
+        } catch (const std::exception& e) {
+            error = e.what();
+            failed = true;
+        }
+    }
+    out.clear();
+}
+
 std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
-    return {&step,          &time,      &ag,           &u,           &v,         &a,
-            &def,           &force,     &cmd,          &par,         &sd,        &aux,
-            &fit,           &applied,   &thisStep,     &pending,     &tracking,  &requested,
-            &eventStep,     &eventTime, &eventElement, &eventValues, &eventDecision,
-            &eventProposal, &alarmTime, &alarmStep,
-            &alarmSeverity, &alarmKind, &alarmMessage, &alarmCode, &noteTime,    &noteStep,  &noteText,
+    return {&step,
+            &time,
+            &ag,
+            &u,
+            &v,
+            &a,
+            &def,
+            &force,
+            &cmd,
+            &par,
+            &sd,
+            &aux,
+            &fit,
+            &applied,
+            &thisStep,
+            &pending,
+            &tracking,
+            &requested,
+            &eventStep,
+            &eventTime,
+            &eventElement,
+            &eventValues,
+            &eventDecision,
+            &eventProposal,
+            &alarmTime,
+            &alarmStep,
+            &alarmSeverity,
+            &alarmKind,
+            &alarmMessage,
+            &alarmCode,
+            &noteTime,
+            &noteStep,
+            &noteText,
             &siteRoundTrip};
 }
 
@@ -406,6 +492,12 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->nSite = layout.sites.size();
     const h5::QuietErrors quiet;
     m_d->create(start); // on a throw, Impl's handles close the partial file
+    const std::size_t width = std::max<std::size_t>(3 * (m_d->nDof + m_d->nElem), 1);
+    const std::size_t rows =
+        std::min<std::size_t>(kMaxBufferedRows, std::size_t(kMaxBufferedValues) / width + 1);
+    for (Impl::Batch* b : {&m_d->fill, &m_d->out})
+        b->reserve(rows, m_d->nDof, m_d->nElem, m_d->nPar, m_d->nSite);
+    m_d->thread = std::make_unique<RecordThread>([d = m_d.get()] { d->writeOut(); });
 }
 
 RecordWriter::~RecordWriter() {
@@ -417,49 +509,50 @@ void RecordWriter::onStep(const StepRecord& r) {
     ++d.received;
     if (d.failed || d.closed)
         return;
-    d.bStep.push_back(r.step);
-    d.bTime.push_back(r.time);
-    d.bAg.push_back(r.groundAcceleration);
-    pushVector(d.bU, r.u, d.nDof);
-    pushVector(d.bV, r.v, d.nDof);
-    pushVector(d.bA, r.a, d.nDof);
+    d.fill.bStep.push_back(r.step);
+    d.fill.bTime.push_back(r.time);
+    d.fill.bAg.push_back(r.groundAcceleration);
+    pushVector(d.fill.bU, r.u, d.nDof);
+    pushVector(d.fill.bV, r.v, d.nDof);
+    pushVector(d.fill.bA, r.a, d.nDof);
     for (std::size_t i = 0; i < d.nElem; ++i) {
         const ElementSample s = i < r.elements.size() ? r.elements[i] : ElementSample{};
-        d.bDef.push_back(s.deformation);
-        d.bForce.push_back(s.force);
-        d.bCmd.push_back(s.commanded);
+        d.fill.bDef.push_back(s.deformation);
+        d.fill.bForce.push_back(s.force);
+        d.fill.bCmd.push_back(s.commanded);
     }
-    pushValues(d.bSiteRoundTrip, r.siteRoundTrips, d.nSite, true);
-    d.actuator.buffer(r);
+    pushValues(d.fill.bSiteRoundTrip, r.siteRoundTrips, d.nSite, true);
+    d.actuator.buffer(r, d.fill.actuator);
     if (d.layout.updating) {
         const UpdatingSample& up = r.updating;
-        pushValues(d.bPar, up.parameters, d.nPar, r.hasUpdating);
-        pushValues(d.bSd, up.stddev, d.nPar, r.hasUpdating);
-        d.bAux.push_back(r.hasUpdating ? up.auxiliaryForce : kNaN);
-        d.bFit.push_back(r.hasUpdating ? up.fitError : kNaN);
-        d.bApplied.push_back(r.hasUpdating ? up.appliedUpdates : 0);
-        d.bThisStep.push_back(r.hasUpdating ? up.updatesThisStep : 0);
-        d.bPending.push_back(r.hasUpdating ? up.pendingProposals : 0);
-        d.bTracking.push_back(r.hasUpdating ? up.tracking.j1 : kNaN);
-        d.bTracking.push_back(r.hasUpdating ? up.tracking.j2 : kNaN);
-        d.bTracking.push_back(r.hasUpdating ? up.tracking.j3 : kNaN);
-        d.bRequested.push_back(r.hasUpdating && up.updateRequested ? 1 : 0);
+        pushValues(d.fill.bPar, up.parameters, d.nPar, r.hasUpdating);
+        pushValues(d.fill.bSd, up.stddev, d.nPar, r.hasUpdating);
+        d.fill.bAux.push_back(r.hasUpdating ? up.auxiliaryForce : kNaN);
+        d.fill.bFit.push_back(r.hasUpdating ? up.fitError : kNaN);
+        d.fill.bApplied.push_back(r.hasUpdating ? up.appliedUpdates : 0);
+        d.fill.bThisStep.push_back(r.hasUpdating ? up.updatesThisStep : 0);
+        d.fill.bPending.push_back(r.hasUpdating ? up.pendingProposals : 0);
+        d.fill.bTracking.push_back(r.hasUpdating ? up.tracking.j1 : kNaN);
+        d.fill.bTracking.push_back(r.hasUpdating ? up.tracking.j2 : kNaN);
+        d.fill.bTracking.push_back(r.hasUpdating ? up.tracking.j3 : kNaN);
+        d.fill.bRequested.push_back(r.hasUpdating && up.updateRequested ? 1 : 0);
         if (r.hasUpdating)
             for (const auto* events : {&up.applied, &up.decided})
                 for (const UpdateEvent& ev : *events)
                     d.bufferEvent(ev);
     }
-    if (d.bTime.size() >= std::size_t(kMaxBufferedRows) ||
-        long(d.bU.size() * 3 + d.bDef.size() * 3) >= kMaxBufferedValues ||
+    if (d.fill.bTime.size() >= std::size_t(kMaxBufferedRows) ||
+        long(d.fill.bU.size() * 3 + d.fill.bDef.size() * 3) >= kMaxBufferedValues ||
         Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
-        d.flush();
+        d.flush(false);
 }
 
 void RecordWriter::writeAlarms(const std::vector<Alarm>& alarms) {
     Impl& d = *m_d;
     // A vector other than the tracked one: its own count is the number already seen.
     if (alarms.size() > d.alarmsSeen) {
-        d.bAlarms.insert(d.bAlarms.end(), alarms.begin() + long(d.alarmsSeen), alarms.end());
+        d.fill.bAlarms.insert(d.fill.bAlarms.end(), alarms.begin() + long(d.alarmsSeen),
+                              alarms.end());
         d.alarmsSeen = alarms.size();
     }
 }
@@ -473,44 +566,45 @@ void RecordWriter::Impl::bufferEvent(const UpdateEvent& ev) {
     for (std::size_t j = 0; j < layout.elements.size(); ++j)
         if (layout.elements[j].name == ev.element)
             element = int(j);
-    bEventStep.push_back(ev.step);
-    bEventTime.push_back(ev.time);
-    bEventElement.push_back(element);
-    bEventDecision.push_back(int(ev.decision));
-    bEventProposal.push_back(ev.proposal);
+    fill.bEventStep.push_back(ev.step);
+    fill.bEventTime.push_back(ev.time);
+    fill.bEventElement.push_back(element);
+    fill.bEventDecision.push_back(int(ev.decision));
+    fill.bEventProposal.push_back(ev.proposal);
     for (const std::string& name : layout.updating->parameters) {
         const auto k = ev.parameters.find(name);
-        bEventValues.push_back(k && *k < ev.applied.size() ? ev.applied[*k] : kNaN);
+        fill.bEventValues.push_back(k && *k < ev.applied.size() ? ev.applied[*k] : kNaN);
     }
 }
 
 bool RecordWriter::Impl::hasBuffered() const {
-    return !bTime.empty() || !bAlarms.empty() || !bNotes.empty() || !bEventStep.empty() ||
-           (tracked && tracked->size() > alarmsSeen);
+    return !fill.bTime.empty() || !fill.bAlarms.empty() || !fill.bNotes.empty() ||
+           !fill.bEventStep.empty() || (tracked && tracked->size() > alarmsSeen);
 }
 
 void RecordWriter::flushIfDue() {
     const Impl& d = *m_d;
     if (d.hasBuffered() &&
         Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
-        m_d->flush();
+        m_d->flush(false);
 }
 
 void RecordWriter::addNote(double time, int step, const std::string& text) {
     if (!m_d->failed && !m_d->closed)
-        m_d->bNotes.push_back({time, step, text});
+        m_d->fill.bNotes.push_back({time, step, text});
 }
 
 bool RecordWriter::flush() {
-    return m_d->flush();
+    return m_d->flush(true);
 }
 
 bool RecordWriter::finish() {
     Impl& d = *m_d;
     if (d.closed)
         return !d.failed;
-    d.flush();
+    d.flush(true);
     d.closed = true;
+    d.thread.reset(); // joined: from here on HDF5 is used by this thread only
     const h5::QuietErrors quiet;
     for (h5::Extendible* x : d.datasets())
         *x = h5::Extendible();
@@ -540,14 +634,14 @@ bool RecordWriter::appendNote(const std::string& path, double time, int step,
             h5::check(H5Dset_extent(dset.get(), &grown), path, "cannot extend the notes");
             const h5::Id fileSpace = h5::check(H5Dget_space(dset.get()), path, "no dataspace");
             const hsize_t one = 1;
-            h5::check(H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, &rows, nullptr, &one,
-                                          nullptr),
-                      path, "cannot select the new note");
-            const h5::Id memSpace = h5::check(H5Screate_simple(1, &one, nullptr), path,
-                                              "no dataspace");
-            h5::check(H5Dwrite(dset.get(), memType, memSpace.get(), fileSpace.get(), H5P_DEFAULT,
-                               value),
-                      path, "cannot write the note");
+            h5::check(
+                H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, &rows, nullptr, &one, nullptr),
+                path, "cannot select the new note");
+            const h5::Id memSpace =
+                h5::check(H5Screate_simple(1, &one, nullptr), path, "no dataspace");
+            h5::check(
+                H5Dwrite(dset.get(), memType, memSpace.get(), fileSpace.get(), H5P_DEFAULT, value),
+                path, "cannot write the note");
         };
         std::vector<char> fixed;
         putFixed(fixed, text, recordschema::kNoteChars);
@@ -556,8 +650,8 @@ bool RecordWriter::appendNote(const std::string& path, double time, int step,
         appendRow("/notes/step", H5T_NATIVE_INT, &step);
         appendRow("/notes/text", noteType.get(), fixed.data());
         if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
-            throw RecordError(path + ": the note could not be written (HDF5: " +
-                              h5::errorText() + ")");
+            throw RecordError(path + ": the note could not be written (HDF5: " + h5::errorText() +
+                              ")");
         return true;
     } catch (const std::exception& e) {
         if (error)
@@ -570,7 +664,8 @@ bool RecordWriter::ok() const {
     return !m_d->failed;
 }
 const std::string& RecordWriter::error() const {
-    return m_d->error;
+    static const std::string none;
+    return m_d->failed ? m_d->error : none; // `error` is complete once `failed` is set
 }
 const std::string& RecordWriter::path() const {
     return m_d->path;

@@ -19,8 +19,16 @@
 // The file is created with the latest format and switched to SWMR write mode, so another
 // process can read it (RecordReader, h5py with swmr=True) while the run goes on. Rows are
 // buffered in memory and appended (extend + write + H5Fflush) at least every kFlushInterval
-// seconds of wall time, every kMaxBufferedRows rows (or kMaxBufferedValues values), and by flush() / finish() / the
-// destructor: a process killed mid-run leaves a file holding every step flushed before.
+// seconds of wall time, every kMaxBufferedRows rows (or kMaxBufferedValues values), and by
+// flush() / finish() / the destructor: a process killed mid-run leaves a file holding every
+// step flushed before.
+// Off the stepping thread (issue 27): onStep() only copies the row into a batch whose
+// capacity was reserved up front (no allocation per row); a flush hands the batch to the
+// writer's own thread (RecordThread), which writes it while the next batch fills. A flush
+// waits while the previous batch is still being written (back-pressure: no row is ever
+// dropped; at most two batches, 2 x kMaxBufferedRows rows, are not yet on disk). flush() and
+// finish() return once the rows are on disk; rowsFlushed(), alarmsFlushed() and
+// notesFlushed() count what the writer's thread has written so far.
 // onStep() only checks the clock when rows are buffered; a test that holds (no steps) should
 // have its owner call flushIfDue() at least once a second while it holds (TestSession::tick(),
 // core/session, does for every front end) so that held rows, alarms and notes reach the file.
@@ -29,7 +37,9 @@
 // Errors: the constructor throws RecordError naming the file; a later write failure stops
 // recording (ok() false, error() says why) and never throws out of onStep().
 //
-// Thread rules: one thread (the test's); HDF5 is not used from any other thread by core.
+// Thread rules: every call on one thread (the test's). After the constructor, HDF5 is used
+// by the writer's thread only (one batch at a time), then by finish() once that thread has
+// been joined; core uses HDF5 from no other thread.
 
 #include "core/output/RunLayout.h"
 #include "core/util/Alarm.h"
@@ -49,6 +59,9 @@ struct RecordStart {
     /// Which run of a protocol this is ("reference", "initial", "updated" for hsmu compare;
     /// "" for a single run). The configuration is the one given to the command.
     std::string run{};
+    /// Deflate level 1-9 (with HDF5's shuffle filter) of the per-step DOF, element and
+    /// actuator matrices; 0 (the default) writes them uncompressed (docs/recording.md).
+    int deflate = 0;
 };
 
 class RecordWriter final : public StepObserver {
@@ -56,8 +69,9 @@ public:
     static constexpr double kFlushInterval = 0.5; ///< [s] of wall time
     static constexpr int kMaxBufferedRows = 500; // crash safety: <= 1,000 rows behind steps.csv
     /// Also flush once the buffered per-step values (DOF and element columns) reach this
-    /// many doubles (16 MiB): a 10,000-DOF model flushes every 34 rows, bounding memory.
-    static constexpr long kMaxBufferedValues = 1L << 21;
+    /// many doubles (8 MiB): a 10,000-DOF model flushes every 18 rows, bounding memory (two
+    /// batches, one filling and one being written, hold what one batch of 16 MiB did).
+    static constexpr long kMaxBufferedValues = 1L << 20;
 
     /// Creates (truncates) path. Throws RecordError naming the file on failure.
     RecordWriter(const std::string& path, const RunLayout& layout, const RecordStart& start);

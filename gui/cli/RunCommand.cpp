@@ -102,7 +102,9 @@ int RunCommand::exec(const QStringList& arguments) {
     const RunLayout layout = RunLayout::of(*test);
     std::unique_ptr<StepCsvWriter> csv;
     const std::size_t csvColumns = StepCsvWriter::columnCount(layout);
-    if (csvColumns > StepCsvWriter::kMaxColumns) {
+    if (options.csv == QLatin1String("none")) {
+        // steps.csv not wanted: record.h5 holds every column
+    } else if (csvColumns > StepCsvWriter::kMaxColumns && options.csv != QLatin1String("all")) {
         err() << tr("hsmu run: steps.csv not written (%1 columns); record.h5 holds every "
                     "column (hsmu export writes CSV from it)")
                      .arg(csvColumns)
@@ -121,6 +123,7 @@ int RunCommand::exec(const QStringList& arguments) {
     sessionOptions.reconnect.attempts = options.reconnect;
     sessionOptions.recordPath = dir.filePath(QStringLiteral("record.h5")).toStdString();
     sessionOptions.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
+    sessionOptions.recordStart.deflate = options.deflate;
     TestSession session(std::move(test), sessionOptions);
     HybridTest* const run = &session.test();
     if (!session.openRecord())

@@ -39,9 +39,20 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
         tr("Decision on update proposals of the onApproval policy: manual, approveAll or "
            "rejectAll (default: the configuration's)."),
         QStringLiteral("mode"));
+    const QCommandLineOption csvOpt(
+        QStringLiteral("csv"),
+        tr("steps.csv: auto (written when a row has at most 200 values, the default), all or "
+           "none; record.h5 holds every column either way."),
+        QStringLiteral("mode"), QStringLiteral("auto"));
+    const QCommandLineOption compressOpt(
+        QStringLiteral("compress"),
+        tr("Compress the record's per-step matrices: deflate level 1-9 with shuffle (default 0: "
+           "uncompressed)."),
+        QStringLiteral("level"), QStringLiteral("0"));
     p.addOption(outOpt);
     overrides.addTo(p);
-    p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, reconnectOpt, approvalOpt});
+    p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, reconnectOpt, approvalOpt,
+                  csvOpt, compressOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed;
     const QStringList pos = p.positionalArguments();
@@ -67,6 +78,14 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
     if (!ok || options.reconnect < 0)
         return tr("--reconnect: expected a whole number >= 0, found '%1'")
             .arg(p.value(reconnectOpt));
+    options.csv = p.value(csvOpt);
+    if (!QStringList{QStringLiteral("auto"), QStringLiteral("all"), QStringLiteral("none")}
+             .contains(options.csv))
+        return tr("--csv: expected auto, all or none, found '%1'").arg(options.csv);
+    options.deflate = p.value(compressOpt).toInt(&ok);
+    if (!ok || options.deflate < 0 || options.deflate > 9)
+        return tr("--compress: expected a whole number from 0 to 9, found '%1'")
+            .arg(p.value(compressOpt));
     if (p.isSet(approvalOpt)) {
         options.approval = p.value(approvalOpt);
         const QStringList modes{QStringLiteral("manual"), QStringLiteral("approveAll"),

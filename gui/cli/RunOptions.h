@@ -2,7 +2,8 @@
 // RunOptions: the arguments of `hsmu run` (see RunCommand.h and docs/cli.md):
 //   CONFIG --out DIR [--ground-motion FILE] [--scale S] [--dt DT] [--duration T]
 //   [--allow-unstable] [--plots] [--controller builtin|tcp://|simapp://|generictcp://HOST:PORT] [--token T]
-//   [--reconnect N] [--approval manual|approveAll|rejectAll]
+//   [--reconnect N] [--approval manual|approveAll|rejectAll] [--csv auto|all|none]
+//   [--compress LEVEL]
 // Thread rules: plain data; parse() on the main thread.
 
 #include "comms/LinkAddress.h"
@@ -27,6 +28,10 @@ public:
     QString token;                 ///< shared secret for the controller's hello
     int reconnect = 0;             ///< headless resumes after a link fault (per fault)
     QString approval;              ///< "" keeps the configuration's updating.approval
+    /// steps.csv: "auto" (when a row has at most StepCsvWriter::kMaxColumns values), "all"
+    /// or "none"; record.h5 always holds every column (hsmu export writes CSV from it).
+    QString csv = QStringLiteral("auto");
+    int deflate = 0; ///< the record's deflate level (RecordStart::deflate), 0: uncompressed
 
     /// Parse the process arguments (program, "run", ...). nullopt: options filled; an empty
     /// string: --help was printed; otherwise the message of what is wrong.

@@ -7,6 +7,7 @@
 #include <QColor>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -127,6 +128,64 @@ private slots:
         }
         // Element 3 is elastic: no hysteresis plot for it.
         QVERIFY(!QFile::exists(out + QStringLiteral("/hysteresis_Element_3.png")));
+    }
+
+    // Issue 27 item 2: steps.csv only up to 200 values a row unless --csv all (none: never);
+    // --compress writes a smaller record holding the same values (hsmu export of both).
+    void csvModesAndCompressedRecord() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const auto run = [&](const QString& name, const QStringList& extra) {
+            return hsmu(QStringList{QStringLiteral("run"), QStringLiteral("shear-building-40"),
+                                    QStringLiteral("--duration"), QStringLiteral("0.05"),
+                                    QStringLiteral("--out"), dir.filePath(name)} +
+                        extra);
+        };
+        // 40 storeys: 2 + 3 x 40 DOF + 2 x 40 element values = 202 a row.
+        const Result automatic = run(QStringLiteral("auto"), {});
+        QVERIFY2(automatic.exitCode == 0, qPrintable(report(automatic)));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("auto/steps.csv"))));
+        QVERIFY2(automatic.err.contains(QStringLiteral("202 columns")),
+                 qPrintable(automatic.err));
+        const Result all = run(QStringLiteral("all"), {QStringLiteral("--csv"),
+                                                       QStringLiteral("all")});
+        QVERIFY2(all.exitCode == 0, qPrintable(report(all)));
+        const QStringList lines = readLines(dir.filePath(QStringLiteral("all/steps.csv")));
+        QCOMPARE(lines.size(), 52); // header + steps 0..50
+        QCOMPARE(lines.front().split(QLatin1Char(',')).size(), 202);
+        const Result none = hsmu({QStringLiteral("run"), QStringLiteral("sdof-bouc-wen"),
+                                  QStringLiteral("--duration"), QStringLiteral("0.5"),
+                                  QStringLiteral("--csv"), QStringLiteral("none"),
+                                  QStringLiteral("--out"), dir.filePath(QStringLiteral("none"))});
+        QVERIFY2(none.exitCode == 0, qPrintable(report(none)));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("none/steps.csv"))));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("none/record.h5"))));
+
+        const Result packed = run(QStringLiteral("packed"), {QStringLiteral("--compress"),
+                                                             QStringLiteral("4")});
+        QVERIFY2(packed.exitCode == 0, qPrintable(report(packed)));
+        const qint64 plain = QFileInfo(dir.filePath(QStringLiteral("auto/record.h5"))).size();
+        const qint64 small = QFileInfo(dir.filePath(QStringLiteral("packed/record.h5"))).size();
+        QVERIFY2(small < plain, qPrintable(QStringLiteral("%1 vs %2").arg(small).arg(plain)));
+        for (const QString& name : {QStringLiteral("auto"), QStringLiteral("packed")}) {
+            const Result e = hsmu({QStringLiteral("export"),
+                                   dir.filePath(name + QStringLiteral("/record.h5")),
+                                   QStringLiteral("--csv"), dir.filePath(name + "-csv")});
+            QVERIFY2(e.exitCode == 0, qPrintable(report(e)));
+        }
+        for (const QString& file : {QStringLiteral("dofs.csv"), QStringLiteral("elements.csv")}) {
+            const QStringList a = readLines(dir.filePath(QStringLiteral("auto-csv/") + file));
+            QVERIFY(a.size() == 52);
+            QCOMPARE(readLines(dir.filePath(QStringLiteral("packed-csv/") + file)), a);
+        }
+
+        for (const QStringList& bad : {QStringList{QStringLiteral("--csv"), QStringLiteral("some")},
+                                       QStringList{QStringLiteral("--compress"),
+                                                   QStringLiteral("12")}}) {
+            const Result r = run(QStringLiteral("bad"), bad);
+            QCOMPARE(r.exitCode, 1);
+            QVERIFY2(r.err.contains(bad.front() + QStringLiteral(": expected")), qPrintable(r.err));
+        }
     }
 
     void malformedConfigNamesFileAndField() {

@@ -1,0 +1,131 @@
+// Tests of recording off the stepping thread (issue 27): RecordThread runs its job on a thread
+// of its own, one job at a time, and a start() waits for the running job (back-pressure, no
+// job is lost); RecordWriter::onStep() allocates nothing on the stepping thread, flushes
+// included, and every row it was given reaches the file in order with its values.
+
+#include "core/record/RecordReader.h"
+#include "core/record/RecordThread.h"
+#include "core/record/RecordWriter.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <thread>
+
+// Allocations made by each thread (the record thread allocates in HDF5; the stepping thread
+// must not).
+namespace {
+thread_local long t_allocations = 0;
+}
+
+void* operator new(std::size_t size) {
+    ++t_allocations;
+    if (void* p = std::malloc(size == 0 ? 1 : size))
+        return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+
+using namespace hsmu;
+
+namespace {
+
+RunLayout layout(int dofs) {
+    RunLayout l;
+    for (int i = 0; i < dofs; ++i)
+        l.dofNames.push_back("S" + std::to_string(i + 1));
+    for (int i = 0; i < dofs; ++i)
+        l.elements.push_back({"storey " + std::to_string(i + 1), "truss", i == 0, i == 0,
+                              ElementUnits{}});
+    return l;
+}
+
+// Row k: every value a distinct function of k and the column.
+void fillRow(StepRecord& r, int k) {
+    r.step = k;
+    r.time = 0.001 * k;
+    r.groundAcceleration = -k;
+    for (Eigen::Index i = 0; i < r.u.size(); ++i) {
+        r.u[i] = k + 1e-3 * double(i);
+        r.v[i] = -k - 1e-3 * double(i);
+        r.a[i] = 2.0 * k + double(i);
+    }
+    for (std::size_t i = 0; i < r.elements.size(); ++i) {
+        r.elements[i].deformation = k * 1e-4 + double(i);
+        r.elements[i].force = k * 0.5 - double(i);
+    }
+}
+
+} // namespace
+
+class TestRecordThread : public QObject {
+    Q_OBJECT
+
+private slots:
+    void jobsRunOnTheirOwnThreadOneAtATime() {
+        std::atomic<int> running{0}, overlapped{0}, done{0};
+        std::thread::id jobThread;
+        {
+            RecordThread thread([&] {
+                if (running.fetch_add(1) != 0)
+                    ++overlapped;
+                jobThread = std::this_thread::get_id();
+                ++done;
+                running.fetch_sub(1);
+            });
+            for (int i = 0; i < 1000; ++i)
+                thread.start(); // each waits for the previous job: none is dropped
+            thread.wait();
+            QCOMPARE(done.load(), 1000);
+            thread.start(); // the destructor waits for this one
+        }
+        QCOMPARE(done.load(), 1001);
+        QCOMPARE(overlapped.load(), 0);
+        QVERIFY(jobThread != std::this_thread::get_id());
+    }
+
+    void steppingThreadAllocatesNothingPerRow() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const std::string path = dir.filePath("rows.h5").toStdString();
+        const int dofs = 300, rows = 3000; // 6 flushes of 500 rows (kMaxBufferedRows)
+        RecordWriter writer(path, layout(dofs), RecordStart{"{}", "rows", {}, 0.001});
+        StepRecord r;
+        r.u = r.v = r.a = Eigen::VectorXd::Zero(dofs);
+        r.elements.resize(std::size_t(dofs));
+        const long before = t_allocations;
+        for (int k = 0; k < rows; ++k) {
+            fillRow(r, k);
+            writer.onStep(r);
+        }
+        const long allocations = t_allocations - before;
+        QVERIFY2(allocations == 0, qPrintable(QString::number(allocations)));
+        QVERIFY(writer.rowsFlushed() >= 2000); // flushes were handed over meanwhile
+        QVERIFY2(writer.finish(), writer.error().c_str());
+        QCOMPARE(writer.rowsFlushed(), rows);
+
+        const RecordReader reader(path);
+        const RecordData& d = reader.data();
+        QCOMPARE(d.rows(), rows);
+        StepRecord expected = r;
+        for (int k = 0; k < rows; ++k) {
+            fillRow(expected, k);
+            QCOMPARE(d.steps[std::size_t(k)], k);
+            QCOMPARE(d.time[k], expected.time);
+            QVERIFY(d.u.row(k).transpose() == expected.u);
+            QVERIFY(d.a.row(k).transpose() == expected.a);
+            QCOMPARE(d.force(k, dofs - 1), expected.elements.back().force);
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestRecordThread)
+#include "TestRecordThread.moc"
