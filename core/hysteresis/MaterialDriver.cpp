@@ -150,9 +150,9 @@ std::vector<double> readDeformationHistory(const std::string& path) {
     return parseDeformationHistory(in, path);
 }
 
-std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations) {
-    std::vector<MaterialSample> samples;
-    samples.reserve(deformations.size());
+void driveLawInto(HysteresisLaw& law, std::span<const double> deformations,
+                  std::span<double> force, std::span<double> tangent,
+                  const std::function<void(std::size_t)>& afterCommit) {
     for (std::size_t i = 0; i < deformations.size(); ++i) {
         const LawStatus status = law.setTrialDeformation(deformations[i]);
         if (status != LawStatus::Ok) {
@@ -160,9 +160,23 @@ std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<doubl
                                      std::to_string(i) + " (deformation " +
                                      formatExact(deformations[i]) + ")");
         }
-        samples.push_back({deformations[i], law.trialForce(), law.trialTangent()});
+        if (!force.empty())
+            force[i] = law.trialForce();
+        if (!tangent.empty())
+            tangent[i] = law.trialTangent();
         law.commit();
+        if (afterCommit)
+            afterCommit(i);
     }
+}
+
+std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations) {
+    std::vector<double> force(deformations.size()), tangent(deformations.size());
+    driveLawInto(law, deformations, force, tangent);
+    std::vector<MaterialSample> samples;
+    samples.reserve(deformations.size());
+    for (std::size_t i = 0; i < deformations.size(); ++i)
+        samples.push_back({deformations[i], force[i], tangent[i]});
     return samples;
 }
 
