@@ -37,9 +37,8 @@ RealArray realVector(py::handle value, const std::string& what, bool requireFini
         const double* p = out.data();
         for (py::ssize_t i = 0; i < out.size(); ++i)
             if (!std::isfinite(p[i]))
-                throw py::value_error(what + ": value " + std::to_string(i) +
-                                      " is not finite (" + std::string(py::str(py::float_(p[i]))) +
-                                      ")");
+                throw py::value_error(what + ": value " + std::to_string(i) + " is not finite (" +
+                                      std::string(py::str(py::float_(p[i]))) + ")");
     }
     return out;
 }

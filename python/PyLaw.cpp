@@ -81,8 +81,10 @@ public:
         }
         const int refused = m_law->setParameterValues(indices, values, true);
         if (refused >= 0)
-            throw py::value_error(name_() + ": the parameter set is not admissible (first "
-                                  "refused: '" + names[std::size_t(refused)] + "')");
+            throw py::value_error(name_() +
+                                  ": the parameter set is not admissible (first "
+                                  "refused: '" +
+                                  names[std::size_t(refused)] + "')");
     }
 
     py::object drive(py::handle deformation, bool withTangent, bool withZ) {
@@ -132,7 +134,8 @@ public:
         std::string text = "hsmu.Law('" + name() + "'";
         const auto names = m_law->parameterNames();
         for (std::size_t i = 0; i < names.size(); ++i)
-            text += ", " + names[i] + "=" + std::string(py::repr(py::float_(m_law->parameterValue(int(i)))));
+            text += ", " + names[i] + "=" +
+                    std::string(py::repr(py::float_(m_law->parameterValue(int(i)))));
         return text + ")";
     }
 
@@ -184,7 +187,8 @@ is not finite, RuntimeError if the law fails to converge (the points before are 
         .def("reset", &Law::reset, "Return to the virgin state (zero deformation and force).")
         .def("copy", &Law::copy, "A deep copy, including the current state.")
         .def("__copy__", &Law::copy)
-        .def("__deepcopy__", [](const Law& l, py::handle) { return l.copy(); }, py::arg("memo"))
+        .def(
+            "__deepcopy__", [](const Law& l, py::handle) { return l.copy(); }, py::arg("memo"))
         .def_property_readonly("deformation", &Law::deformation,
                                "The committed deformation [deformation unit].")
         .def_property_readonly("force", &Law::force, "The committed force [force unit].")

@@ -150,9 +150,8 @@ std::vector<double> readDeformationHistory(const std::string& path) {
     return parseDeformationHistory(in, path);
 }
 
-void driveLawInto(HysteresisLaw& law, std::span<const double> deformations,
-                  std::span<double> force, std::span<double> tangent,
-                  const std::function<void(std::size_t)>& afterCommit) {
+void driveLawInto(HysteresisLaw& law, std::span<const double> deformations, std::span<double> force,
+                  std::span<double> tangent, const std::function<void(std::size_t)>& afterCommit) {
     for (std::size_t i = 0; i < deformations.size(); ++i) {
         const LawStatus status = law.setTrialDeformation(deformations[i]);
         if (status != LawStatus::Ok) {

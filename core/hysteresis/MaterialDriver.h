@@ -46,8 +46,8 @@ std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<doubl
 /// written; a non-empty one has deformations.size() elements); afterCommit(i), when given, is
 /// called once point i is committed (to read state variables such as Bouc-Wen's z).
 /// Throws as driveLaw; the points before the failing one are written and committed.
-void driveLawInto(HysteresisLaw& law, std::span<const double> deformations,
-                  std::span<double> force, std::span<double> tangent,
+void driveLawInto(HysteresisLaw& law, std::span<const double> deformations, std::span<double> force,
+                  std::span<double> tangent,
                   const std::function<void(std::size_t)>& afterCommit = {});
 
 /// Writes the header "deformation,force,tangent" and one line per sample, every value with
