@@ -6,6 +6,7 @@
 #include "core/record/RecordError.h"
 #include "python/PyIdentification.h"
 #include "python/PyLaw.h"
+#include "python/PyRecord.h"
 
 #include <pybind11/pybind11.h>
 
@@ -30,4 +31,5 @@ PYBIND11_MODULE(hsmu, m) {
     });
     hsmu::python::bindLaw(m);
     hsmu::python::bindIdentification(m);
+    hsmu::python::bindRecord(m);
 }
