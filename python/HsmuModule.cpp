@@ -7,6 +7,7 @@
 #include "python/PyIdentification.h"
 #include "python/PyLaw.h"
 #include "python/PyRecord.h"
+#include "python/PyRun.h"
 
 #include <pybind11/pybind11.h>
 
@@ -32,4 +33,5 @@ PYBIND11_MODULE(hsmu, m) {
     hsmu::python::bindLaw(m);
     hsmu::python::bindIdentification(m);
     hsmu::python::bindRecord(m);
+    hsmu::python::bindRun(m);
 }

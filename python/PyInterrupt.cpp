@@ -28,16 +28,21 @@ bool runInterruptible(const std::function<void()>& work, const std::function<voi
     {
         py::gil_scoped_release release;
         while (finished.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-            if (interrupt)
-                continue;
             py::gil_scoped_acquire acquire;
-            if (PyErr_CheckSignals() != 0) {
-                interrupt.emplace(); // fetches the pending Python exception
-                onInterrupt();
+            if (PyErr_CheckSignals() == 0)
+                continue;
+            if (interrupt) {
+                PyErr_Clear(); // a second Ctrl+C while the first is handled changes nothing
+                continue;
             }
+            interrupt.emplace(); // fetches the pending Python exception
+            onInterrupt();
         }
         worker.join();
     }
+    if (interrupt)
+        while (PyErr_CheckSignals() != 0) // signals that arrived as the work ended
+            PyErr_Clear();
     if (interrupt && reraise)
         throw std::move(*interrupt);
     finished.get(); // re-throws the work's exception

@@ -7,7 +7,8 @@
 // thread, every 50 ms, takes the GIL and runs the signal handlers (PyErr_CheckSignals): on a
 // KeyboardInterrupt (or any exception a handler raises) it calls onInterrupt() once (set a
 // cancel flag, hold the test), waits for the work to end, then re-raises the exception unless
-// keepGoing is true (a run that ends cleanly held returns its result instead).
+// reraise is false (a run that ends cleanly held returns its result instead). Further
+// interrupts while the first is handled change nothing (as SignalHold's for `hsmu run`).
 // Exceptions of the work are re-thrown on the calling thread.
 // Thread rules: call with the GIL held.
 
