@@ -67,6 +67,17 @@ def test_calibrate_equals_hsmu_replay_calibration(cli, tmp_path, column):
         result["parameters"]["k0"]["value"] < result["parameters"]["k0"]["ci95"][1]
 
 
+def test_the_calibrated_model_driven_by_law_gives_the_calibrations_nrmse(column):
+    # an independent check of the two APIs: the fitted law replayed from rest over the
+    # history has the RMS error the calibration reports
+    m = hsmu.read_measured(column)
+    cal = hsmu.calibrate(m["time"], m["deformation"], m["force"], units=m["units"])
+    force = hsmu.Law(cal["law"], **cal["model"]).drive(m["deformation"])
+    rms = np.sqrt(np.mean((force - m["force"]) ** 2))
+    assert rms == pytest.approx(cal["rmsError"], rel=1e-9)
+    assert rms / np.sqrt(np.mean(m["force"] ** 2)) == pytest.approx(cal["nrmse"], rel=1e-9)
+
+
 def test_calibrate_with_units_and_a_law_equals_the_program(cli, tmp_path, column):
     # the history written in mm with a header, calibrated with the bilinear law
     m = hsmu.read_measured(column)
