@@ -4,7 +4,10 @@
 # preferred to one earlier on PATH: it is the one the .deb installs into. Give
 # -DPython_EXECUTABLE=... to build for another.
 set(HSMU_PYTHON_MODULE OFF)
-if(HSMU_BUILD_PYTHON)
+if(HSMU_BUILD_PYTHON AND HSMU_SANITIZE)
+  # An instrumented module cannot be loaded into the uninstrumented interpreter.
+  message(STATUS "Python module hsmu: not built in a sanitized build (HSMU_SANITIZE)")
+elseif(HSMU_BUILD_PYTHON)
   if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
     set(Python_EXECUTABLE /usr/bin/python3)
   endif()

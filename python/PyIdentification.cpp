@@ -1,9 +1,11 @@
 #include "python/PyIdentification.h"
 
+#include "core/config/ConfigLoader.h"
 #include "core/offline/IdentificationSettings.h"
 #include "core/offline/MeasuredDataCsv.h"
 #include "core/offline/OfflineIdentification.h"
 #include "core/offline/OfflineIdentificationReport.h"
+#include "core/record/RecordReader.h"
 #include "python/PyArrays.h"
 #include "python/PyInterrupt.h"
 #include "python/PyJson.h"
@@ -135,12 +137,8 @@ py::dict calibrate(py::handle time, py::handle deformation, py::handle force, py
     return out;
 }
 
-py::dict identifyArrays(py::handle time, py::handle deformation, py::handle force, py::handle units,
-                        const std::string& method, const std::optional<std::string>& law,
-                        py::handle model, py::handle updating, py::handle progress) {
-    const SpecimenHistory h = historyOf(time, deformation, force, units);
-    const IdentificationSettings s = settingsOf(h, law, model, updating, method);
-    const OfflineIdentificationResult r = identify(h, s, progress);
+py::dict resultDict(const SpecimenHistory& h, const IdentificationSettings& s,
+                    const OfflineIdentificationResult& r) {
     const auto n = std::size_t(h.size());
     const auto column = [n](const Eigen::MatrixXd& m, Eigen::Index j) {
         RealArray a = newVector(n);
@@ -186,6 +184,37 @@ py::dict identifyArrays(py::handle time, py::handle deformation, py::handle forc
     out["verdict"] = r.verdict;
     out["units"] = unitsDict(h, s, r.parameterNames);
     return out;
+}
+
+py::dict identifyArrays(py::handle time, py::handle deformation, py::handle force, py::handle units,
+                        const std::string& method, const std::optional<std::string>& law,
+                        py::handle model, py::handle updating, py::handle progress) {
+    const SpecimenHistory h = historyOf(time, deformation, force, units);
+    const IdentificationSettings s = settingsOf(h, law, model, updating, method);
+    return resultDict(h, s, identify(h, s, progress));
+}
+
+/// `hsmu replay FILE.h5 --identify [--method M] [--specimen S] [--config OVERRIDE]`.
+py::dict identifyRecord(const std::filesystem::path& path, const std::string& method,
+                        const std::string& specimen, py::handle model, py::handle updating,
+                        py::handle progress) {
+    const std::string source = path.string();
+    RecordReader reader(source);
+    const TestConfig cfg =
+        parseConfig(nlohmann::json::parse(reader.data().meta.configuration), source);
+    IdentificationSettings s = identificationSettingsFrom(cfg, specimen);
+    const SpecimenHistory h = historyFromRecord(reader.data(), s.specimen, source);
+    nlohmann::json override = nlohmann::json::object();
+    if (!model.is_none())
+        override["model"] = toJson(model, "model");
+    if (!updating.is_none())
+        override["updating"] = toJson(updating, "updating");
+    if (!override.empty())
+        s = withOverride(s, override, "hsmu (Python)", method);
+    else if (!method.empty())
+        s = withMethod(s, method);
+    s.online = !(method == "calibration" || (method.empty() && calibrationOnlyByDefault(s)));
+    return resultDict(h, s, identify(h, s, progress));
 }
 
 py::dict readMeasured(const std::filesystem::path& path, py::handle units, py::handle columns) {
@@ -252,6 +281,16 @@ estimate known before each sample) and "fit_error" (arrays); "initial", "final",
 "final_stddev" ({name: value}); "final_nrmse", "initial_nrmse", "auxiliary_nrmse", "refits",
 "estimator_warnings", "messages", "calibration" (as hsmu.calibrate's, or None), "verdict",
 "method", "law", "units". The GIL is released; Ctrl+C stops and raises KeyboardInterrupt.)doc");
+    m.def("identify_record", &identifyRecord, py::arg("path"), py::kw_only(),
+          py::arg("method") = "", py::arg("specimen") = "", py::arg("model") = py::none(),
+          py::arg("updating") = py::none(), py::arg("progress") = py::none(),
+          R"doc(Identify a recorded specimen again, as `hsmu replay FILE.h5 --identify
+[--method M] [--specimen S]` does (the same code): the record's configuration gives the
+model and the updating settings; model / updating (dicts) override them as --config does.
+method: "" (the record's own; only the calibration for a pinching model without one), "ukf",
+"nelder-mead" or "calibration". specimen: "" for the updating specimen (else the only
+experimental element). Returns the dict of hsmu.identify. Raises OSError for a bad record,
+ValueError for settings the method cannot use.)doc");
     m.def("read_measured", &readMeasured, py::arg("path"), py::kw_only(),
           py::arg("units") = py::none(), py::arg("columns") = py::none(),
           R"doc(Read a measured history file as `hsmu replay --import` does (CSV or text with a

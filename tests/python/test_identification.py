@@ -169,5 +169,30 @@ def test_ctrl_c_stops_a_calibration(column):
 
 
 def test_documented():
-    for name in ("calibrate", "identify", "read_measured"):
+    for name in ("calibrate", "identify", "identify_record", "read_measured"):
         assert "hsmu replay" in getattr(hsmu, name).__doc__
+
+
+def test_identify_record_equals_hsmu_replay_identify(cli, tmp_path):
+    cli("run", "paper-condition-3", "--out", tmp_path / "run", cwd=tmp_path)
+    record = tmp_path / "run" / "record.h5"
+    cli("replay", record, "--identify", "--out", tmp_path / "replay")
+    with open(tmp_path / "replay" / "parameters.csv") as f:
+        header = [h.rsplit(" [", 1)[0] for h in f.readline().strip().split(",")]
+    table = np.genfromtxt(tmp_path / "replay" / "parameters.csv", delimiter=",", skip_header=1)
+    summary = json.loads((tmp_path / "replay" / "summary.json").read_text())
+    r = hsmu.identify_record(record)
+    assert r["method"] == summary["method"] == "UKF"
+    assert r["units"]["deformation"] == summary["units"]["deformation"] == "rad"
+    arrays = {"time": r["time"], "deformation": r["deformation"], "force": r["force"],
+              "auxiliary_force": r["auxiliary_force"], "fit_error": r["fit_error"]}
+    arrays.update(r["parameters"])
+    arrays.update({"stddev " + k: v for k, v in r["stddev"].items()})
+    assert sorted(arrays) == sorted(header)
+    for j, name in enumerate(header):
+        np.testing.assert_allclose(arrays[name], table[:, j], rtol=1e-12, atol=1e-300,
+                                   err_msg=name)
+    assert r["final_nrmse"] == pytest.approx(summary["finalNrmse"], rel=1e-12)
+    assert r["calibration"]["nrmse"] == pytest.approx(summary["calibration"]["nrmse"], rel=1e-12)
+    with pytest.raises(ValueError):
+        hsmu.identify_record(record, specimen="no such element")
