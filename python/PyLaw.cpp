@@ -5,6 +5,7 @@
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
 #include "core/hysteresis/MaterialDriver.h"
+#include "core/hysteresis/MrDamper.h"
 #include "python/PyArrays.h"
 
 #include <pybind11/stl.h>
@@ -29,6 +30,8 @@ std::optional<double> committedZ(const HysteresisLaw& law) {
         return bw->committedState().z;
     if (const auto* pinching = dynamic_cast<const BoucWenPinching*>(&law))
         return pinching->committedState().z;
+    if (const auto* mr = dynamic_cast<const MrDamper*>(&law))
+        return mr->committedState().z;
     return std::nullopt;
 }
 
@@ -87,9 +90,22 @@ public:
                                   names[std::size_t(refused)] + "')");
     }
 
-    py::object drive(py::handle deformation, bool withTangent, bool withZ) {
+    py::object drive(py::handle deformation, py::handle time, bool withTangent, bool withZ) {
         const RealArray d = realVector(deformation, "deformation");
         const std::size_t n = std::size_t(d.size());
+        const RealArray t0 = time.is_none() ? newVector(0) : realVector(time, "time");
+        if (!time.is_none() && std::size_t(t0.size()) != n)
+            throw py::value_error("time: expected " + std::to_string(n) +
+                                  " values (one per deformation), got " +
+                                  std::to_string(t0.size()));
+        for (py::ssize_t i = 1; i < t0.size(); ++i)
+            if (!(t0.data()[i] > t0.data()[i - 1]))
+                throw py::value_error("time: the time does not increase at point " +
+                                      std::to_string(i) + " (time " +
+                                      std::string(py::repr(py::float_(t0.data()[i]))) + ")");
+        if (time.is_none() && m_law->isRateDependent())
+            throw py::value_error(name_() + " is rate-dependent: give time= (one time per "
+                                            "point [s]), as a time column for hsmu material");
         if (withZ && !committedZ(*m_law))
             throw py::value_error(name_() + ": this law has no hysteretic variable z");
         RealArray force = newVector(n);
@@ -107,7 +123,8 @@ public:
             if (!lock.owns_lock())
                 throw py::value_error(name_() + ": this Law is being driven by another thread");
             py::gil_scoped_release release;
-            driveLawInto(*m_law, in, f, t, afterCommit);
+            driveLawInto(*m_law, in, std::span<const double>(t0.data(), std::size_t(t0.size())), f,
+                         t, afterCommit);
         }
         if (!withTangent && !withZ)
             return force;
@@ -121,6 +138,7 @@ public:
     }
 
     void reset() { m_law->revertToStart(); }
+    bool rateDependent() const { return m_law->isRateDependent(); }
     std::unique_ptr<Law> copy() const { return std::make_unique<Law>(m_law->clone()); }
     double deformation() const { return m_law->committedDeformation(); }
     double force() const { return m_law->committedForce(); }
@@ -172,11 +190,14 @@ Example:
 The committed state (deformation, z) is kept. Raises ValueError for an unknown name or an
 inadmissible set, TypeError for a value that is not a number.)doc")
         .def("drive", &Law::drive, py::arg("deformation"), py::kw_only(),
-             py::arg("tangent") = false, py::arg("z") = false,
+             py::arg("time") = py::none(), py::arg("tangent") = false, py::arg("z") = false,
              R"doc(Drive the law through a deformation history, point by point (trial, commit),
 from its current committed state, exactly as `hsmu material --history` does.
 
 deformation: 1-D array of real numbers [the law's deformation unit], all finite.
+time: None or a 1-D array of the same length [s], increasing: required by a rate-dependent
+law (rate_dependent; the MR damper), which gets each point's time increment as the time
+column of `hsmu material --history` gives it; ignored by the others.
 Returns force [the law's force unit] as a float64 array of the same length; with tangent=True
 and/or z=True a tuple (force[, tangent][, z]): tangent dF/du [force unit per deformation
 unit], z Bouc-Wen's hysteretic variable after each point (normalised deformation units;
@@ -194,6 +215,9 @@ is not finite, RuntimeError if the law fails to converge (the points before are 
         .def_property_readonly("force", &Law::force, "The committed force [force unit].")
         .def_property_readonly("z", &Law::z,
                                "Bouc-Wen's committed hysteretic variable z, None for other laws.")
+        .def_property_readonly(
+            "rate_dependent", [](const Law& l) { return l.rateDependent(); },
+            "Whether the law needs times (drive(..., time=...)).")
         .def_property_readonly("initial_tangent", &Law::initialTangent,
                                "Tangent of the virgin law at zero deformation [force/deformation].")
         .def("__repr__", &Law::repr);

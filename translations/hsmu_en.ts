@@ -782,6 +782,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>--param '%1': expected NAME=VALUE with a finite number</source>
         <translation>--param '%1': expected NAME=VALUE with a finite number</translation>
     </message>
+    <message>
+        <source>Time step [s] between the points of a one-column history (a rate-dependent law).</source>
+        <translation>Time step [s] between the points of a one-column history (a rate-dependent law).</translation>
+    </message>
+    <message>
+        <source>--dt '%1': expected a time step &gt; 0 in seconds</source>
+        <translation>--dt '%1': expected a time step &gt; 0 in seconds</translation>
+    </message>
+    <message>
+        <source>--dt: the history has its own time column</source>
+        <translation>--dt: the history has its own time column</translation>
+    </message>
+    <message>
+        <source>%1 is rate-dependent: give the history a time column (time, deformation) or --dt</source>
+        <translation>%1 is rate-dependent: give the history a time column (time, deformation) or --dt</translation>
+    </message>
 </context>
 <context>
     <name>OperatorEvent</name>

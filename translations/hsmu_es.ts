@@ -782,6 +782,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>--param &apos;%1&apos;: expected NAME=VALUE with a finite number</source>
         <translation>--param &apos;%1&apos;: se esperaba NAME=VALUE con un número finito</translation>
     </message>
+    <message>
+        <source>Time step [s] between the points of a one-column history (a rate-dependent law).</source>
+        <translation>Paso de tiempo [s] entre los puntos de una historia de una columna (una ley que depende de la velocidad).</translation>
+    </message>
+    <message>
+        <source>--dt &apos;%1&apos;: expected a time step &gt; 0 in seconds</source>
+        <translation>--dt &apos;%1&apos;: se esperaba un paso de tiempo &gt; 0 en segundos</translation>
+    </message>
+    <message>
+        <source>--dt: the history has its own time column</source>
+        <translation>--dt: la historia tiene su propia columna de tiempo</translation>
+    </message>
+    <message>
+        <source>%1 is rate-dependent: give the history a time column (time, deformation) or --dt</source>
+        <translation>%1 depende de la velocidad: dé a la historia una columna de tiempo (tiempo, deformación) o --dt</translation>
+    </message>
 </context>
 <context>
     <name>OperatorEvent</name>

@@ -782,6 +782,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>--param &apos;%1&apos;: expected NAME=VALUE with a finite number</source>
         <translation>--param “%1”：应为 NAME=VALUE 形式，且 VALUE 为有限数值</translation>
     </message>
+    <message>
+        <source>Time step [s] between the points of a one-column history (a rate-dependent law).</source>
+        <translation>单列历程中各点之间的时间步长 [s]（用于与速率相关的本构）。</translation>
+    </message>
+    <message>
+        <source>--dt &apos;%1&apos;: expected a time step &gt; 0 in seconds</source>
+        <translation>--dt &apos;%1&apos;：应为大于 0 的时间步长（秒）</translation>
+    </message>
+    <message>
+        <source>--dt: the history has its own time column</source>
+        <translation>--dt：该历程已有自己的时间列</translation>
+    </message>
+    <message>
+        <source>%1 is rate-dependent: give the history a time column (time, deformation) or --dt</source>
+        <translation>%1 与速率相关：请为历程提供时间列（时间, 变形）或 --dt</translation>
+    </message>
 </context>
 <context>
     <name>OperatorEvent</name>

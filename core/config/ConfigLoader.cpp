@@ -30,7 +30,7 @@ MaterialSpec parseMaterial(const JsonCursor& c)
         m.params[it.key()] = c.number(it.key());
     }
     try { // validate now, so the message carries the field path
-        makeLaw(m.law, m.params);
+        m.law = makeLaw(m.law, m.params)->lawName(); // the canonical name ("mr-damper": mrDamper)
     } catch (const std::exception& e) {
         c.fail("", e.what());
     }

@@ -60,18 +60,22 @@ void scale(nlohmann::json& obj, const char* key, double factor) {
         obj[key] = obj[key].get<double>() * factor;
 }
 
-void scaleMaterial(nlohmann::json& m, double d, double f) {
+void scaleMaterial(nlohmann::json& m, double d, double f, double t) {
     if (!m.is_object() || !m.contains("law") || !m["law"].is_string())
         return;
     std::string law = m["law"].get<std::string>();
     for (char& c : law)
         c = char(std::tolower(static_cast<unsigned char>(c)));
     if (law == "boucwen" || law == "bouc-wen" || law == "boucwenpinching" ||
-        law == "bouc-wen-pinching") {
+        law == "bouc-wen-pinching" || law == "mrdamper" || law == "mr-damper") {
         for (const auto& [key, factor] : {std::pair{"uRef", d}, std::pair{"fRef", f}}) {
             if (!m.contains(key))
                 m[key] = 1.0;
             scale(m, key, factor);
+        }
+        if (law == "mrdamper" || law == "mr-damper") { // the dashpots: normalized force x time
+            scale(m, "c0", t);
+            scale(m, "c1", t);
         }
     } else if (law == "bilinear") {
         scale(m, "k0", f / d);
@@ -96,13 +100,13 @@ void scaleElement(nlohmann::json& e, const Factors& u) {
     scale(e, "height", u.length);
     scale(e, "ei", u.force * u.length * u.length);
     if (e.contains("material"))
-        scaleMaterial(e["material"], d, f);
+        scaleMaterial(e["material"], d, f, u.time);
     if (e.contains("limits"))
         scaleLimits(e["limits"], d, f);
     if (e.contains("specimen") && e["specimen"].is_object()) {
         nlohmann::json& s = e["specimen"];
         if (s.contains("material"))
-            scaleMaterial(s["material"], d, f);
+            scaleMaterial(s["material"], d, f, u.time);
         scale(s, "forceNoiseStd", f);
         scale(s, "deformationNoiseStd", d);
         if (s.contains("fracture")) {

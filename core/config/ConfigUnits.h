@@ -13,6 +13,8 @@
 //   (lateralSpring, truss: length and force; rotationalBaseSpring: rotation and moment):
 //     boucWen, boucWenPinching  uRef (D), fRef (F) (the defaults 1 D and 1 F are written out;
 //                               k0 and the other parameters are normalized, unchanged)
+//     mrDamper                  uRef (D), fRef (F) as boucWen; c0, c1 (normalized force x
+//                               time) by the time unit
 //     bilinear                  k0 (F / D), fy (F);   elastic  k (F / D)
 //   specimen.forceNoiseStd (F), deformationNoiseStd (D), fracture.atCumulativeDeformation (D),
 //   fracture.atTime, actuator.timeConstant, actuator.delay (time); limits and

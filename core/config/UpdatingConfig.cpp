@@ -3,8 +3,10 @@
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
 #include "core/hysteresis/BoucWenPinching.h"
+#include "core/hysteresis/MrDamper.h"
 #include "core/record/RecordReader.h"
 #include "core/updating/ModelUpdater.h"
+#include "core/updating/MrDamperUkfIdentifier.h"
 #include "core/updating/NelderMeadIdentifier.h"
 #include "core/updating/PinchingUkfIdentifier.h"
 #include "core/updating/RobustUkfIdentifier.h"
@@ -46,6 +48,8 @@ std::vector<std::string> defaultTargetParameters(const std::string& law)
                 "zetaS", "p",     "q", "psi",  "deltaPsi", "lambda"};
     if (law == "bilinear")
         return {"k0", "fy", "b"};
+    if (law == "mrDamper") // all but A (with alpha, it only sets the scale of z) and the scales
+        return {"c0", "c1", "k0", "k1", "f0", "alpha", "beta", "gamma", "n"};
     return {"k"};
 }
 
@@ -96,9 +100,10 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     if (u.method != "ukf" && u.method != "nelderMead")
         c.fail("method", "expected 'ukf' or 'nelderMead'");
     if (u.method == "ukf" && sp->material.law != "boucWen" &&
-        sp->material.law != "boucWenPinching")
-        c.fail("method", "the UKF identifies a boucWen model or a boucWenPinching model; "
-                         "the specimen's model is '" + sp->material.law + "' (use nelderMead)");
+        sp->material.law != "boucWenPinching" && sp->material.law != "mrDamper")
+        c.fail("method", "the UKF identifies a boucWen model, a boucWenPinching model or an "
+                         "mrDamper model; the specimen's model is '" + sp->material.law +
+                             "' (use nelderMead)");
     if (auto it = sp->material.params.find("uRef"); it != sp->material.params.end())
         u.modelURef = it->second;
     if (auto it = sp->material.params.find("fRef"); it != sp->material.params.end())
@@ -164,7 +169,7 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     {
         const auto& mp = sp->material.params;
         const std::string& law = sp->material.law;
-        const char* key = law == "boucWen" || law == "boucWenPinching"
+        const char* key = law == "boucWen" || law == "boucWenPinching" || law == "mrDamper"
                               ? "fRef"
                               : (law == "bilinear" ? "fy" : "");
         if (*key)
@@ -246,6 +251,16 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
                 static_cast<const BoucWenPinching&>(model).parameters(), u.modelURef,
                 u.modelFRef, u.bounds);
         }
+        if (u.method == "ukf" && model.lawName() == "mrDamper") {
+            if (u.ukfFormulation != "robust")
+                throw ConfigError(where + ": the paper's UKF formulation identifies a boucWen "
+                                          "model; mrDamper takes the robust one (the default)");
+            const auto* mr = dynamic_cast<const MrDamper*>(&model);
+            if (!mr)
+                throw ConfigError(where + ": the MR damper UKF needs an mrDamper specimen model");
+            return std::make_unique<MrDamperUkfIdentifier>(*mr, u.modelURef, u.modelFRef,
+                                                           u.bounds);
+        }
         if (u.method == "ukf") {
             const auto* bw = dynamic_cast<const BoucWen*>(&model);
             if (!bw)
@@ -276,7 +291,8 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
         s.windowSteps = static_cast<int>(u.fitWindow / dt + 0.5);
         s.calibrated = u.nelderMeadRefit == "calibration" ||
                        (u.nelderMeadRefit == "auto" && (model.lawName() == "boucWen" ||
-                                                        model.lawName() == "boucWenPinching"));
+                                                        model.lawName() == "boucWenPinching" ||
+                                                        model.lawName() == "mrDamper"));
         return std::make_unique<NelderMeadIdentifier>(model, s);
     } catch (const std::invalid_argument& e) {
         throw ConfigError(where + ": " + e.what());
@@ -293,6 +309,7 @@ std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
     if (!sp)
         throw ConfigError(where + ": no element '" + u.specimen + "'");
     auto aux = buildLaw(sp->material, where);
+    aux->setTimeIncrement(cfg.analysis.dt); // a rate-dependent model: the identifier's too
     std::unique_ptr<Identifier> identifier = buildIdentifier(u, *aux, cfg.analysis.dt, where);
     auto reporter = std::make_unique<Reporter>(u.targets, u.policy, u.everyN);
     reporter->setProposalInterval(u.proposalInterval);

@@ -156,6 +156,9 @@ bool HybridTest::prepare()
     m_totalSteps = static_cast<int>(std::floor(duration / m_options.dt + 1e-9));
     m_totalSteps = std::min<int>(m_totalSteps, int(m_groundMotion.acceleration.size()) - 1);
 
+    for (const auto& e : m_structure->elements()) // rate-dependent laws step with the test
+        if (HysteresisLaw* law = e->law())
+            law->setTimeIncrement(m_options.dt);
     m_stability = checkStability(*m_structure, *m_integrator, m_options.dt);
     m_updatedStability = m_stability;
     m_initialStiffness.clear();

@@ -30,6 +30,7 @@ ControlResult VirtualSpecimen::prepare(double dt)
     if (!(dt > 0.0))
         return ControlResult::fault("virtual specimen: dt must be > 0");
     m_dt = dt;
+    m_law->setTimeIncrement(dt); // a rate-dependent true law steps with the test
     m_delayLine.clear();
     if (m_opt.actuator.type == ActuatorModel::Type::Delay) {
         const auto steps = static_cast<std::size_t>(std::lround(m_opt.actuator.delay / dt));

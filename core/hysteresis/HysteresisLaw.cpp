@@ -1,6 +1,7 @@
 #include "core/hysteresis/HysteresisLaw.h"
 
 #include <cstddef>
+#include <limits>
 
 namespace hsmu {
 
@@ -24,6 +25,16 @@ int HysteresisLaw::parameterIndex(const std::string& name) const {
         }
     }
     return -1;
+}
+
+double historyTimeIncrement(std::span<const double> time, std::size_t k) {
+    if (k >= time.size())
+        return std::numeric_limits<double>::quiet_NaN();
+    return k == 0 ? std::numeric_limits<double>::infinity() : time[k] - time[k - 1];
+}
+
+double HysteresisLaw::timeIncrement() const {
+    return std::numeric_limits<double>::quiet_NaN();
 }
 
 bool HysteresisLaw::setParameterValue(int index, double value) {

@@ -9,6 +9,7 @@
 //   revertToStart() returns to the virgin state.
 // Thread rules: none; an instance is used by one thread at a time.
 
+#include <cstddef>
 #include <memory>
 #include <span>
 #include <string>
@@ -22,6 +23,13 @@ enum class LawStatus {
     NoConvergence, ///< the local solver did not converge even after sub-stepping
     InvalidInput   ///< deformation is not finite
 };
+
+/// For a replay of a measured history whose sample k was taken at time[k] [s]: the time
+/// increment into sample k, time[k] - time[k - 1], and +infinity for k = 0 (a history starts
+/// from the virgin state at rest, reached quasi-statically; for a run's record the first
+/// sample is one step from rest at u = 0, for an imported test wherever the specimen was when
+/// the recording began). NaN if k is beyond time.
+double historyTimeIncrement(std::span<const double> time, std::size_t k);
 
 /// Words for a status (for messages; the GUI translates its own). Not named toString: Qt Test
 /// would find it by ADL in QCOMPARE and delete[] the literal.
@@ -45,6 +53,24 @@ public:
     /// OpenSees' uniaxial material getTangent() defines it (what an OpenFresco element server
     /// reports for action 13). Equal to trialTangent() for laws whose update is exact.
     virtual double algorithmicTangent() const { return trialTangent(); }
+
+    // Rate-dependent laws (docs/hysteresis-laws.md, "Rate-dependent laws"): the force depends
+    // on how fast the deformation changes (mrDamper). Such a law takes the velocity of a trial
+    // as (u - committed u) / dt, dt being the time from the committed state to the trial. The
+    // owner sets dt before driving it: once when its step is constant (a structure's element,
+    // the virtual specimen, the auxiliary model: the integration step), per sample when it is
+    // not (a replay of a measured history: the samples' times). dt is kept until set again,
+    // copied by clone(), untouched by commit(), revert() and revertToStart(); +infinity is a
+    // quasi-static step (velocity 0). A rate-dependent law whose dt was never set (or is not
+    // > 0) refuses setTrialDeformation() with InvalidInput and says why in failureReason().
+    // Rate-independent laws ignore dt (the defaults below).
+
+    /// True for a law whose force depends on the deformation rate.
+    virtual bool isRateDependent() const { return false; }
+    /// The time from the committed state to the next trials [s]; see above.
+    virtual void setTimeIncrement(double /*dt*/) {}
+    /// The time increment in use; NaN if never set (and for rate-independent laws).
+    virtual double timeIncrement() const;
 
     /// Why the last setTrialDeformation() failed, when the status alone does not say (a law
     /// computed by another program: "OpenSees twin: no reply within 10 s"); "" otherwise.

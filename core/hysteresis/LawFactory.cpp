@@ -4,6 +4,7 @@
 #include "core/hysteresis/BoucWen.h"
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/hysteresis/LinearElastic.h"
+#include "core/hysteresis/MrDamper.h"
 
 #include <algorithm>
 #include <cctype>
@@ -60,6 +61,21 @@ const ParameterSpec<PinchingParameters> kPinchingSpecs[] = {
     {"psi", &PinchingParameters::psi, positive, "a finite number > 0"},
     {"deltaPsi", &PinchingParameters::deltaPsi, nonNegative, "a finite number >= 0"},
     {"lambda", &PinchingParameters::lambda, positive, "a finite number > 0"},
+};
+
+const ParameterSpec<MrDamperParameters> kMrDamperSpecs[] = {
+    {"c0", &MrDamperParameters::c0, nonNegative, "a finite number >= 0"},
+    {"c1", &MrDamperParameters::c1, positive, "a finite number > 0"},
+    {"k0", &MrDamperParameters::k0, nonNegative, "a finite number >= 0"},
+    {"k1", &MrDamperParameters::k1, nonNegative, "a finite number >= 0"},
+    {"f0", &MrDamperParameters::f0, anyFinite, "a finite number"},
+    {"alpha", &MrDamperParameters::alpha, nonNegative, "a finite number >= 0"},
+    {"A", &MrDamperParameters::A, positive, "a finite number > 0"},
+    {"beta", &MrDamperParameters::beta, anyFinite, "a finite number"},
+    {"gamma", &MrDamperParameters::gamma, anyFinite, "a finite number"},
+    {"n", &MrDamperParameters::n, positive, "a finite number > 0"},
+    {"uRef", &MrDamperParameters::uRef, positive, "a finite number > 0"},
+    {"fRef", &MrDamperParameters::fRef, positive, "a finite number > 0"},
 };
 
 const ParameterSpec<BilinearParameters> kBilinearSpecs[] = {
@@ -123,7 +139,7 @@ std::string lowerCase(std::string s) {
     return s;
 }
 
-void requireBoundedZ(const std::string& law, const BoucWenParameters& p) {
+template <typename P> void requireBoundedZ(const std::string& law, const P& p) {
     if (!(p.beta + p.gamma > 0.0)) {
         throw std::invalid_argument(law + ": parameters 'beta' + 'gamma' = " +
                                     formatValue(p.beta + p.gamma) +
@@ -158,6 +174,11 @@ std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
         requireBoundedZ(law, p.boucWen);
         return std::make_unique<BoucWenPinching>(p);
     }
+    if (key == "mrdamper" || key == "mr-damper") {
+        const auto p = fillParameters("mrDamper", kMrDamperSpecs, params);
+        requireBoundedZ("mrDamper", p);
+        return std::make_unique<MrDamper>(p);
+    }
     if (key == "bilinear") {
         return std::make_unique<Bilinear>(fillParameters("bilinear", kBilinearSpecs, params));
     }
@@ -166,11 +187,11 @@ std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
     }
     throw std::invalid_argument("unknown hysteresis law '" + lawName +
                                 "' (expected one of boucWen, bouc-wen, boucWenPinching, "
-                                "bouc-wen-pinching, bilinear, elastic)");
+                                "bouc-wen-pinching, mrDamper, mr-damper, bilinear, elastic)");
 }
 
 std::vector<std::string> knownLaws() {
-    return {"boucWen", "boucWenPinching", "bilinear", "elastic"};
+    return {"boucWen", "boucWenPinching", "mrDamper", "bilinear", "elastic"};
 }
 
 } // namespace hsmu

@@ -3,12 +3,14 @@
 // configuration file or on the `hsmu material` command line.
 //
 // Law names (case-insensitive): "boucWen" (also "bouc-wen"), "boucWenPinching" (also
-// "bouc-wen-pinching"), "bilinear", "elastic".
+// "bouc-wen-pinching"), "mrDamper" (also "mr-damper"), "bilinear", "elastic".
 // Parameter names are those of each law's parameterNames():
 //   boucWen   k0, alpha, n, beta, gamma, A0, deltaA, deltaNu, deltaEta, uRef, fRef
 //             (defaults of BoucWenParameters; see BoucWen.h for the equations)
 //   boucWenPinching  boucWen's names and zetaS, p, q, psi, deltaPsi, lambda (defaults of
 //             BoucWenParameters and PinchingParameters; BoucWenPinching.h)
+//   mrDamper  c0, c1, k0, k1, f0, alpha, A, beta, gamma, n, uRef, fRef (defaults of
+//             MrDamperParameters; MrDamper.h; rate-dependent: the owner sets the time step)
 //   bilinear  k0, fy, b   (defaults of BilinearParameters: 1, 1, 0.1)
 //   elastic   k           (default 1)
 // Unspecified parameters take the defaults.
@@ -28,7 +30,7 @@ class HysteresisLaw;
 std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
                                        const std::map<std::string, double>& params);
 
-/// The canonical law names: "boucWen", "boucWenPinching", "bilinear", "elastic".
+/// The canonical law names: "boucWen", "boucWenPinching", "mrDamper", "bilinear", "elastic".
 std::vector<std::string> knownLaws();
 
 } // namespace hsmu

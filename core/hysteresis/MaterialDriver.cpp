@@ -91,7 +91,11 @@ std::string formatExact(double v) {
 } // namespace
 
 std::vector<double> parseDeformationHistory(std::istream& in, const std::string& sourceName) {
-    std::vector<double> deformations;
+    return parseTimedHistory(in, sourceName).deformation;
+}
+
+TimedHistory parseTimedHistory(std::istream& in, const std::string& sourceName) {
+    std::vector<double> deformations, times;
     std::size_t columns = 0;
     std::size_t lineNumber = 0;
     std::string raw;
@@ -131,6 +135,9 @@ std::vector<double> parseDeformationHistory(std::istream& in, const std::string&
             }
         }
         deformations.push_back(*parseNumber(fields.back()));
+        if (columns == 2) {
+            times.push_back(*parseNumber(fields.front()));
+        }
     }
     if (in.bad()) {
         throw std::runtime_error(sourceName + ": read error after line " +
@@ -139,25 +146,46 @@ std::vector<double> parseDeformationHistory(std::istream& in, const std::string&
     if (deformations.empty()) {
         throw std::runtime_error(sourceName + ": no deformation data found");
     }
-    return deformations;
+    return {std::move(times), std::move(deformations)};
 }
 
 std::vector<double> readDeformationHistory(const std::string& path) {
+    return readTimedHistory(path).deformation;
+}
+
+TimedHistory readTimedHistory(const std::string& path) {
     std::ifstream in(path);
     if (!in) {
         throw std::runtime_error(path + ": cannot open the deformation history file");
     }
-    return parseDeformationHistory(in, path);
+    return parseTimedHistory(in, path);
 }
 
-void driveLawInto(HysteresisLaw& law, std::span<const double> deformations, std::span<double> force,
-                  std::span<double> tangent, const std::function<void(std::size_t)>& afterCommit) {
+void driveLawInto(HysteresisLaw& law, std::span<const double> deformations,
+                  std::span<const double> time, std::span<double> force, std::span<double> tangent,
+                  const std::function<void(std::size_t)>& afterCommit) {
+    const bool rate = law.isRateDependent();
+    if (rate && time.size() != deformations.size()) {
+        throw std::runtime_error(law.lawName() + " is rate-dependent: the history needs a time "
+                                                 "for every point (a time column, or a step)");
+    }
     for (std::size_t i = 0; i < deformations.size(); ++i) {
+        if (rate) {
+            const double dt = historyTimeIncrement(time, i);
+            if (!(dt > 0.0)) {
+                throw std::runtime_error("the time does not increase at point " +
+                                         std::to_string(i) + " (time " + formatExact(time[i]) +
+                                         ")");
+            }
+            law.setTimeIncrement(dt);
+        }
         const LawStatus status = law.setTrialDeformation(deformations[i]);
         if (status != LawStatus::Ok) {
+            const std::string why = law.failureReason();
             throw std::runtime_error(law.lawName() + ": " + lawStatusName(status) + " at point " +
                                      std::to_string(i) + " (deformation " +
-                                     formatExact(deformations[i]) + ")");
+                                     formatExact(deformations[i]) + ")" +
+                                     (why.empty() ? "" : ": " + why));
         }
         if (!force.empty())
             force[i] = law.trialForce();
@@ -170,8 +198,13 @@ void driveLawInto(HysteresisLaw& law, std::span<const double> deformations, std:
 }
 
 std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations) {
+    return driveLaw(law, deformations, {});
+}
+
+std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations,
+                                     const std::vector<double>& time) {
     std::vector<double> force(deformations.size()), tangent(deformations.size());
-    driveLawInto(law, deformations, force, tangent);
+    driveLawInto(law, deformations, time, force, tangent);
     std::vector<MaterialSample> samples;
     samples.reserve(deformations.size());
     for (std::size_t i = 0; i < deformations.size(); ++i)

@@ -35,19 +35,39 @@ std::vector<double> readDeformationHistory(const std::string& path);
 /// Same as readDeformationHistory for an already open stream; sourceName is used in messages.
 std::vector<double> parseDeformationHistory(std::istream& in, const std::string& sourceName);
 
+/// A deformation history with its times: `time` empty for a one-column file.
+struct TimedHistory {
+    std::vector<double> time;        ///< [s] (the first column of a two-column file)
+    std::vector<double> deformation; ///< the last column
+};
+
+/// readDeformationHistory() keeping the time column of a two-column file.
+TimedHistory readTimedHistory(const std::string& path);
+/// parseDeformationHistory() keeping the time column of a two-column file.
+TimedHistory parseTimedHistory(std::istream& in, const std::string& sourceName);
+
 /// Drives `law` from its current committed state through `deformations`: for each point,
 /// setTrialDeformation then commit, and records the trial force and tangent.
 /// Throws std::runtime_error naming the 0-based point index (and the deformation) if the law
 /// does not return LawStatus::Ok; the law is then left committed at the previous point.
 std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations);
 
+/// driveLaw() for a history with times: a rate-dependent law (HysteresisLaw.h) gets the time
+/// increment historyTimeIncrement(time, i) before point i (the first point is reached
+/// quasi-statically, as in every replay of a measured history); the others ignore the times.
+/// Throws std::runtime_error if the law is rate-dependent and `time` does not give one time
+/// per point, or the times do not increase.
+std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations,
+                                     const std::vector<double>& time);
+
 /// The loop of driveLaw (the one loop; driveLaw and the Python module's Law.drive call it),
 /// writing into the caller's arrays: force[i] and tangent[i] for point i (an empty span is not
-/// written; a non-empty one has deformations.size() elements); afterCommit(i), when given, is
-/// called once point i is committed (to read state variables such as Bouc-Wen's z).
+/// written; a non-empty one has deformations.size() elements); time as driveLaw's (may be
+/// empty for a rate-independent law); afterCommit(i), when given, is called once point i is
+/// committed (to read state variables such as Bouc-Wen's z).
 /// Throws as driveLaw; the points before the failing one are written and committed.
-void driveLawInto(HysteresisLaw& law, std::span<const double> deformations, std::span<double> force,
-                  std::span<double> tangent,
+void driveLawInto(HysteresisLaw& law, std::span<const double> deformations,
+                  std::span<const double> time, std::span<double> force, std::span<double> tangent,
                   const std::function<void(std::size_t)>& afterCommit = {});
 
 /// Writes the header "deformation,force,tangent" and one line per sample, every value with

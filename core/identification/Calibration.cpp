@@ -14,6 +14,7 @@
 #include <exception>
 #include <memory>
 #include <numeric>
+#include <span>
 
 namespace hsmu {
 
@@ -23,11 +24,12 @@ namespace {
 class Replay {
 public:
     /// Residuals of the kept samples k >= firstScored (the others are replayed only).
+    /// time: the samples' times for a rate-dependent law (every sample kept), else empty.
     Replay(HysteresisLaw& law, std::vector<int> indices, const std::vector<double>& u,
            const std::vector<double>& f, std::vector<std::size_t> keep, double scale,
-           std::size_t firstScored = 0)
+           std::size_t firstScored = 0, std::span<const double> time = {})
         : m_law(law), m_indices(std::move(indices)), m_u(u), m_f(f), m_keep(std::move(keep)),
-          m_scale(scale), m_firstScored(firstScored) {
+          m_scale(scale), m_firstScored(firstScored), m_time(time) {
         for (std::size_t k : m_keep)
             m_scored += k >= m_firstScored;
     }
@@ -39,6 +41,8 @@ public:
         r.resize(Eigen::Index(m_scored));
         Eigen::Index j = 0;
         for (const std::size_t k : m_keep) {
+            if (!m_time.empty())
+                m_law.setTimeIncrement(historyTimeIncrement(m_time, k));
             if (m_law.setTrialDeformation(m_u[k]) != LawStatus::Ok)
                 return false;
             m_law.commit();
@@ -56,6 +60,7 @@ private:
     std::vector<std::size_t> m_keep;
     double m_scale;
     std::size_t m_firstScored = 0, m_scored = 0;
+    std::span<const double> m_time;
 };
 
 struct Candidate {
@@ -141,6 +146,11 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     } catch (const std::exception& e) {
         return done(e.what());
     }
+    const bool rate = law->isRateDependent();
+    if (rate && spec.time.size() != u.size())
+        return done(spec.law + " is rate-dependent: the calibration needs the samples' times");
+    const std::span<const double> time =
+        rate ? std::span<const double>(spec.time) : std::span<const double>();
     const auto p = Eigen::Index(spec.fitted.size());
     std::vector<int> indices;
     Eigen::VectorXd lower(p), upper(p), typical(p), searchLower(p), searchUpper(p);
@@ -184,7 +194,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
         return done("the measured force is zero throughout");
 
     // 1. Global phase on the reduced history.
-    std::vector<std::size_t> reduced = reducedHistory(u, spec.reducedSamples);
+    std::vector<std::size_t> reduced = reducedHistory(u, rate ? u.size() : spec.reducedSamples);
     if (first > 0) {
         // with a window every scored sample is kept (the reduced history only thins the
         // replayed part before it)
@@ -194,7 +204,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
         for (std::size_t k = first; k < u.size(); ++k)
             reduced.push_back(k);
     }
-    const Replay coarse(*law, indices, u, f, reduced, rmsF, first);
+    const Replay coarse(*law, indices, u, f, reduced, rmsF, first, time);
     std::vector<Eigen::VectorXd> starts;
     for (const std::vector<double>& s : spec.starts) {
         if (s.size() != spec.fitted.size())
@@ -226,14 +236,14 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
 
     // 2. Local phase on the whole history.
     std::vector<std::size_t> all;
-    if (spec.polishSamples > 0 && first == 0 && u.size() > spec.polishSamples) {
+    if (!rate && spec.polishSamples > 0 && first == 0 && u.size() > spec.polishSamples) {
         all = reducedHistory(u, spec.polishSamples); // a budget (online anchors)
     } else {
         all.resize(u.size());
         std::iota(all.begin(), all.end(), std::size_t(0));
     }
     const std::size_t polishScored = first == 0 ? all.size() : scored;
-    const Replay fine(*law, indices, u, f, all, rmsF, first);
+    const Replay fine(*law, indices, u, f, all, rmsF, first, time);
     LevenbergMarquardtResult best;
     best.cost = std::numeric_limits<double>::infinity();
     const std::size_t polish = std::min(candidates.size(), std::size_t(std::max(spec.polished, 1)));

@@ -48,6 +48,11 @@ struct CalibrationSpec {
         double searchUpper = std::numeric_limits<double>::quiet_NaN();
     };
     std::vector<Parameter> fitted;
+    /// The samples' times [s], needed by a rate-dependent law (HysteresisLaw.h; mrDamper) and
+    /// ignored by the others: each replayed sample k gets the time increment
+    /// historyTimeIncrement(time, k), the first quasi-static; both phases then replay every
+    /// sample (a reduced history would change the velocities).
+    std::vector<double> time;
     /// Starting points (values of the fitted parameters, in `fitted` order); clamped into
     /// the box and made admissible.
     std::vector<std::vector<double>> starts;

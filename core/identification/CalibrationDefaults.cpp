@@ -96,6 +96,39 @@ std::vector<std::vector<double>> boucWenStarts() {
     return starts;
 }
 
+/// The typical normalized velocity of a history with these scales and times (see the header).
+double typicalVelocity(const HistoryScales& s, const std::vector<double>& time) {
+    const double duration = time.size() > 1 ? time.back() - time.front() : 0.0;
+    const double v = duration > 0 ? 3.141592653589793 * std::max(s.reversals, 1) / duration *
+                                        0.5 * s.deformationRange / s.uRef
+                                  : 1.0;
+    return std::isfinite(v) && v > 0 ? v : 1.0;
+}
+
+std::vector<Box> mrDamperBox(double v) {
+    return {{"c0", 0.0, 5.0 / v, 0.1 / v},          {"c1", 0.01 / v, 500.0 / v, 1.0 / v},
+            {"k0", 0.0, 5.0, 0.05},                 {"k1", 0.0, 5.0, 0.05},
+            {"f0", -1.0, 1.0, 0.05},                {"alpha", 0.0, 2000.0, 1.0},
+            {"n", 0.2, 10.0, 1.0},                  {"beta", -1e4, 1e4, 1.0},
+            {"gamma", -1e4, 1e4, 1.0}};
+}
+
+std::vector<std::vector<double>> mrDamperStarts(double v) {
+    std::vector<std::vector<double>> starts;
+    const double zu = 0.05;
+    for (double viscous : {0.1, 0.4})
+        for (double series : {3.0, 30.0})
+            for (double n : {0.5, 1.0, 2.0})
+                for (double share : {0.5, 0.9}) {
+                    const double sum = std::pow(zu, -n);
+                    const double c0 = viscous / v;
+                    starts.push_back({c0, series * c0, 0.02, 0.02, 0.0,
+                                      0.8 * (1.0 - viscous) / zu, n, share * sum,
+                                      (1.0 - share) * sum});
+                }
+    return starts;
+}
+
 /// Apply the user's bounds (and keep the typical scale inside the new box).
 void applyBounds(std::vector<Box>& box, const ParameterBoundsMap& user) {
     for (const auto& [name, b] : user) {
@@ -162,6 +195,16 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
             for (auto& s : starts) // no pinching: the starts of the plain law
                 s.insert(s.end(), {0.0, 0.0, 0.1, 0.2, 0.0, 0.5});
         }
+    } else if (request.law == "mrDamper") {
+        spec.fixed = {{"A", 1.0},
+                      {"uRef", request.uRef.value_or(scales.uRef)},
+                      {"fRef", request.fRef.value_or(scales.fRef)}};
+        HistoryScales used = scales;
+        used.uRef = spec.fixed.at("uRef");
+        const double v = typicalVelocity(used, request.time);
+        defaults = mrDamperBox(v);
+        starts = mrDamperStarts(v);
+        spec.polished = 2;
     } else if (request.law == "bilinear") {
         const double k = scales.stiffness, f = scales.fRef;
         defaults = {{"k0", 0.05 * k, 20.0 * k, k}, {"fy", 0.02 * f, 2.0 * f, 0.1 * f},
@@ -171,14 +214,15 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
                 starts.push_back({k, fy * f, b});
     } else {
         throw std::invalid_argument("calibration: no default ranges for the law '" +
-                                    request.law + "' (expected boucWen, boucWenPinching or "
-                                    "bilinear)");
+                                    request.law + "' (expected boucWen, boucWenPinching, "
+                                    "mrDamper or bilinear)");
     }
     std::vector<Box> box = defaults;
     restrictTo(box, request.fitted);
     applyBounds(box, request.bounds);
     spec.fitted = box;
     spec.starts = reorder(defaults, starts, box);
+    spec.time = request.time;
     spec.window = request.window;
     spec.reducedSamples = request.reducedSamples;
     spec.cancel = request.cancel;

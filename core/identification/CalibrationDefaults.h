@@ -15,6 +15,14 @@
 // no degradation. The pinching law starts from the Bouc-Wen optimum without pinching and from
 // 24 starts scattered around it (pinching parameters over their whole box, the Bouc-Wen
 // shape within +-25 % of the optimum; a fixed seed), the two best polished. Bilinear: k0 [0.05 K, 20 K], fy [0.02, 2] x the peak force, b [0, 0.9].
+// mrDamper (rate-dependent; the history's times are needed): normalized like the Bouc-Wen
+// laws, A = 1 fixed (A and alpha are not separately identifiable), and with v the history's
+// typical normalized velocity (pi reversals / duration x half the deformation range / uRef)
+//   c0 [0, 5 / v]   c1 [0.01 / v, 500 / v]   k0, k1 [0, 5]   f0 [-1, 1]   alpha [0, 2000]
+//   n [0.2, 10]   beta, gamma [-2000, 2000] (beta + gamma > 0)
+// from 24 starts: c0 in {0.1, 0.4} / v, c1 in {3, 30} c0, n in {0.5, 1, 2}, beta / (beta +
+// gamma) in {0.5, 0.9} at an ultimate z of 0.05, alpha giving a hysteretic force of 0.8 (1 -
+// c0 v), k0 = k1 = 0.02, f0 = 0; the two best polished.
 // A user's bounds replace the defaults name by name; a user's uRef / fRef replace the
 // derived scales.
 // Thread rules: none.
@@ -40,6 +48,7 @@ struct CalibrationRequest {
     std::size_t polishSamples = 0;       ///< CalibrationSpec::polishSamples (0: whole history)
     int localIterations = 0;             ///< the local phase's iteration budget (0: default)
     const std::atomic<bool>* cancel = nullptr; ///< CalibrationSpec::cancel
+    std::vector<double> time; ///< the samples' times [s] (CalibrationSpec::time; mrDamper)
 };
 
 /// The default spec for `law` on a history with these scales. Throws std::invalid_argument

@@ -18,11 +18,18 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // J (see the header) for a law at its virgin state.
 double replayRms(HysteresisLaw& law, const std::vector<double>& u, const std::vector<double>& f,
-                 std::size_t window) {
+                 std::size_t window, const std::vector<double>& time) {
     const std::size_t n = u.size();
     const std::size_t first = window == 0 || window >= n ? 0 : n - window;
+    const bool rate = law.isRateDependent();
+    if (rate && time.size() != n) {
+        return kInf;
+    }
     double sum = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
+        if (rate) {
+            law.setTimeIncrement(historyTimeIncrement(time, k));
+        }
         if (law.setTrialDeformation(u[k]) != LawStatus::Ok) {
             return kInf;
         }
@@ -52,12 +59,13 @@ build(const std::string& law, const std::map<std::string, double>& parameters, s
 
 double HistoryFit::rmsError(const std::string& law, const std::map<std::string, double>& parameters,
                             const std::vector<double>& deformation,
-                            const std::vector<double>& force, std::size_t window) {
+                            const std::vector<double>& force, std::size_t window,
+                            const std::vector<double>& time) {
     if (deformation.empty() || deformation.size() != force.size()) {
         return kInf;
     }
     const auto model = build(law, parameters, nullptr);
-    return model ? replayRms(*model, deformation, force, window) : kInf;
+    return model ? replayRms(*model, deformation, force, window, time) : kInf;
 }
 
 HistoryFitResult HistoryFit::fit(const std::vector<double>& deformation,
@@ -91,6 +99,9 @@ HistoryFitResult HistoryFit::fit(const std::vector<double>& deformation,
     if (m_spec.fitted.empty()) {
         return fail("no parameter to fit");
     }
+    if (prototype->isRateDependent() && m_spec.time.size() != deformation.size()) {
+        return fail(m_spec.law + " is rate-dependent: the fit needs the samples' times");
+    }
     const auto n = static_cast<Eigen::Index>(m_spec.fitted.size());
     Eigen::VectorXd x0(n), lower(n), upper(n);
     std::vector<int> indices; // the fitted parameters' positions in the law
@@ -120,7 +131,7 @@ HistoryFitResult HistoryFit::fit(const std::vector<double>& deformation,
             return kInf; // not admissible for the law
         }
         law->revertToStart();
-        return replayRms(*law, deformation, force, m_spec.window);
+        return replayRms(*law, deformation, force, m_spec.window, m_spec.time);
     };
     result.rmsBefore = objective(x0);
 

@@ -36,6 +36,9 @@ struct HistoryFitSpec {
     };
     std::vector<Fitted> fitted; ///< the parameters to fit, with their bounds
     std::size_t window = 0;     ///< RMS over the last `window` points (0 = all)
+    /// The samples' times [s] for a rate-dependent law (HysteresisLaw.h; sample k replayed
+    /// with historyTimeIncrement(time, k)); ignored by the others.
+    std::vector<double> time;
     NelderMeadSettings optimizer{200, 1e-12, 1e-10, 1e-8, 0.1, 3};
 };
 
@@ -62,10 +65,11 @@ public:
                          const std::vector<double>& force) const;
 
     /// J(p) for the law built from `parameters` (all of them), as used by fit(); +inf if the
-    /// law cannot be built or fails.
+    /// law cannot be built or fails (or is rate-dependent and `time` does not give a time for
+    /// every sample).
     static double rmsError(const std::string& law, const std::map<std::string, double>& parameters,
                            const std::vector<double>& deformation, const std::vector<double>& force,
-                           std::size_t window);
+                           std::size_t window, const std::vector<double>& time = {});
 
 private:
     HistoryFitSpec m_spec;

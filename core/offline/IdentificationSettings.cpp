@@ -68,7 +68,9 @@ IdentificationSettings identificationSettingsFrom(const TestConfig& cfg,
     }
     nlohmann::json section = nlohmann::json::object();
     if (s.model.law != "boucWenPinching") // its default (the pinching UKF) left implicit:
-        section["method"] = s.model.law == "boucWen" ? "ukf" : "nelderMead"; // replay calibrates
+        section["method"] = s.model.law == "boucWen" || s.model.law == "mrDamper"
+                                ? "ukf"
+                                : "nelderMead"; // replay calibrates
     return reparse(s, section, cfg.sourcePath);
 }
 

@@ -48,7 +48,7 @@ struct IdentificationSettings {
 /// Settings for the experimental element `specimen` of a parsed configuration ("": the
 /// updating specimen, else the only experimental element): its model, the configuration's
 /// updating section when that identifies this specimen (else the defaults: the UKF for a
-/// boucWen model, Nelder-Mead otherwise), and the configuration's dt. Throws ConfigError
+/// boucWen or mrDamper model, Nelder-Mead otherwise), and the configuration's dt. Throws ConfigError
 /// when there is no such specimen or the choice is ambiguous.
 IdentificationSettings identificationSettingsFrom(const TestConfig& cfg,
                                                   const std::string& specimen = {});

@@ -63,7 +63,7 @@ ParameterValues rowValues(const std::vector<std::string>& names, const Eigen::Ma
 
 double nrmseOf(const std::string& law, const std::map<std::string, double>& values,
                const SpecimenHistory& h, double& rms) {
-    rms = HistoryFit::rmsError(law, values, h.deformation, h.force, 0);
+    rms = HistoryFit::rmsError(law, values, h.deformation, h.force, 0, h.time);
     double sumF2 = 0.0;
     for (double f : h.force)
         sumF2 += f * f;
@@ -81,6 +81,7 @@ void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
     request.uRef = s.updating.modelURef;
     request.fRef = s.updating.modelFRef;
     request.cancel = s.cancel;
+    request.time = h.time; // a rate-dependent law's velocities
     if (s.updating.method == "ukf" && s.updating.ukfFormulation == "robust")
         request.bounds = s.updating.bounds; // the paper's bounds are for its normalization
     try {
@@ -147,6 +148,7 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     }
     const std::string where = "identification of " + history.source;
     auto model = buildLaw(settings.model, where);
+    model->setTimeIncrement(settings.dt); // a rate-dependent model: the identifier's copies too
     std::map<std::string, double> all; // every parameter of the law (for the replays)
     const std::vector<std::string> lawNames = model->parameterNames();
     for (std::size_t i = 0; i < lawNames.size(); ++i)

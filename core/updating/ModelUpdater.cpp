@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hsmu {
 
@@ -37,7 +38,24 @@ bool ModelUpdater::attach(Structure& structure, double dt, std::string* error)
     for (const auto& name : layout.names())
         m_auxIndex.push_back(m_aux->parameterIndex(name));
     m_inspector = Inspector(m_inspector.settings(), dt);
+    m_dt = dt;
+    m_aux->setTimeIncrement(dt);
+    m_auxInitial->setTimeIncrement(dt);
     return true;
+}
+
+LawStatus ModelUpdater::stepAuxiliary(double deformation, bool first)
+{
+    // A rate-dependent model reaches the first sample quasi-statically, as every replay of a
+    // measured history does (historyTimeIncrement): in a run it is one step from rest at 0.
+    if (first)
+        m_aux->setTimeIncrement(std::numeric_limits<double>::infinity());
+    const LawStatus status = m_aux->setTrialDeformation(deformation);
+    if (first)
+        m_aux->setTimeIncrement(m_dt);
+    if (status == LawStatus::Ok)
+        m_aux->commit();
+    return status;
 }
 
 void ModelUpdater::applyToAuxiliary(std::span<const double> values)
@@ -100,9 +118,7 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     const double fm = m.force;
 
     // Auxiliary model: the prediction with the parameters known before this step.
-    if (m_aux->setTrialDeformation(dm) == LawStatus::Ok)
-        m_aux->commit();
-    else
+    if (stepAuxiliary(dm, m_history.empty()) != LawStatus::Ok)
         alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::EstimatorRejected,
                           "auxiliary model did not converge at deformation " + std::to_string(dm)});
     out.auxiliaryForce = m_aux->committedForce();
@@ -115,9 +131,8 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
             // A batch fit: replay the auxiliary model over the history with the new values.
             m_aux = m_auxInitial->clone();
             applyToAuxiliary(values);
-            for (double d : m_history)
-                if (m_aux->setTrialDeformation(d) == LawStatus::Ok)
-                    m_aux->commit();
+            for (std::size_t k = 0; k < m_history.size(); ++k)
+                stepAuxiliary(m_history[k], k == 0);
         } else {
             applyToAuxiliary(values);
         }

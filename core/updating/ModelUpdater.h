@@ -12,6 +12,7 @@
 // history so its state matches the fitted parameters.
 // Bounds, thresholds and policies may change between steps (effective next step).
 
+#include "core/hysteresis/HysteresisLaw.h"
 #include "core/util/Alarm.h"
 #include "core/updating/Identifier.h"
 #include "core/updating/Inspector.h"
@@ -87,6 +88,9 @@ private:
     /// The identified values (layout order) to the auxiliary model: as one set, else value by
     /// value (non-finite and refused values skipped).
     void applyToAuxiliary(std::span<const double> values);
+    /// Trial + commit of the auxiliary model at a measured deformation (`first`: the first
+    /// sample, reached quasi-statically by a rate-dependent model).
+    LawStatus stepAuxiliary(double deformation, bool first);
     /// Moves the applied events into out.applied, rejected and not-queued ones into
     /// out.decided; refusals become alarms (a full approval queue one alarm until it drains).
     void report(std::vector<UpdateEvent>& events, std::vector<Alarm>& alarms, int step,
@@ -100,6 +104,7 @@ private:
     std::unique_ptr<Reporter> m_reporter;
     ExperimentalElement* m_element = nullptr;
     std::vector<double> m_history; // measured deformations, for replays of the auxiliary model
+    double m_dt = 0.0;             // the step (a rate-dependent auxiliary law's time increment)
     std::optional<bool> m_autoResolve;
     // Resolved by attach(): the position in the auxiliary law of each layout entry (-1: none).
     std::vector<int> m_auxIndex;

@@ -64,6 +64,12 @@ NelderMeadIdentifier::NelderMeadIdentifier(const HysteresisLaw& model,
                                            const NelderMeadIdentifierSettings& s)
     : m_law(model.lawName()), m_s(s), m_sinceTrigger(s.cooldownSteps)
 {
+    if (model.isRateDependent()) {
+        m_dt = model.timeIncrement();
+        if (!(m_dt > 0.0) || !std::isfinite(m_dt))
+            throw std::invalid_argument("nelderMead: the " + m_law + " model is rate-dependent "
+                                        "and needs the time step of the samples");
+    }
     const std::vector<std::string> lawNames = model.parameterNames();
     for (std::size_t i = 0; i < lawNames.size(); ++i)
         m_all[lawNames[i]] = model.parameterValue(static_cast<int>(i));
@@ -153,6 +159,8 @@ bool NelderMeadIdentifier::setBounds(std::size_t index, const ParameterBounds& b
 IdentificationStatus NelderMeadIdentifier::observe(double deformation, double force,
                                                    bool updateRequested)
 {
+    if (m_dt > 0.0)
+        m_t.push_back(double(m_u.size()) * m_dt);
     m_u.push_back(deformation);
     m_f.push_back(force);
     ++m_sinceTrigger;
@@ -239,6 +247,11 @@ bool NelderMeadIdentifier::fittedBox(const HistoryScales& scales,
     for (const auto& name : m_s.parameters)
         if (!m_s.bounds.count(name))
             request.fitted.push_back(name);
+    if (m_law == "mrDamper") { // the box in the model's own scales, velocities from the times
+        request.uRef = m_all.at("uRef");
+        request.fRef = m_all.at("fRef");
+        request.time = m_t;
+    }
     CalibrationSpec spec;
     if (!request.fitted.empty()) {
         try {
@@ -291,6 +304,7 @@ IdentificationStatus NelderMeadIdentifier::simplexRefit(bool final)
     const std::size_t window = final ? 0 : static_cast<std::size_t>(std::max(0, m_s.windowSteps));
     spec.window = window;
     spec.optimizer.maxEvaluations = m_s.maxEvaluations;
+    spec.time = m_t;
     const HistoryFitResult r = HistoryFit(spec).fit(m_u, m_f);
     m_lastSeconds = r.computeSeconds;
     m_lastEvaluations = r.evaluations;
@@ -301,7 +315,7 @@ IdentificationStatus NelderMeadIdentifier::simplexRefit(bool final)
         return st;
     }
     const double rmsBefore =
-        clamped ? HistoryFit::rmsError(m_law, m_all, m_u, m_f, window) : r.rmsBefore;
+        clamped ? HistoryFit::rmsError(m_law, m_all, m_u, m_f, window, m_t) : r.rmsBefore;
     if (!(r.rmsAfter < rmsBefore)) {
         std::snprintf(buf, sizeof buf,
                       "%s kept the parameters (RMS %.4g not improved, %d evaluations, %.1f ms)",
@@ -326,7 +340,8 @@ CalibrationRequest NelderMeadIdentifier::refitRequest(bool final) const
     request.bounds = m_s.bounds;
     request.fitted = m_s.parameters;
     request.window = final ? 0 : static_cast<std::size_t>(std::max(0, m_s.windowSteps));
-    if (isBoucWenFamily(m_law)) {
+    request.time = m_t;
+    if (isBoucWenFamily(m_law) || m_law == "mrDamper") {
         // the estimate's normalization: the fit's values are in its units
         request.uRef = m_all.at("uRef");
         request.fRef = m_all.at("fRef");
@@ -392,7 +407,7 @@ IdentificationStatus NelderMeadIdentifier::calibratedRefit(bool final)
     // Every candidate is judged by a replay over the whole history (scored over the window),
     // whatever part of it the fit ran on.
     const auto rmsOfValues = [&](const ParameterValues& v) {
-        return HistoryFit::rmsError(m_law, v, m_u, m_f, window);
+        return HistoryFit::rmsError(m_law, v, m_u, m_f, window, m_t);
     };
     IdentificationStatus st;
     const double rmsBefore = rmsOfValues(m_all);

@@ -51,7 +51,10 @@
 //  - simplex: the paper's Nelder-Mead (HistoryFit.h) from the current estimate, at most
 //    maxEvaluations replays; also the fallback for a law without calibration defaults.
 // The method keeps its name ("nelderMead" in configurations, "Nelder-Mead" in messages).
-// Values in the law's units (normalized for Bouc-Wen with uRef / fRef).
+// Values in the law's units (normalized for Bouc-Wen with uRef / fRef). A rate-dependent
+// model (mrDamper) is replayed with the samples a step apart, the step being the model's time
+// increment when the identifier is made (the run's dt); its refits go through its
+// calibration defaults in the model's own uRef / fRef.
 
 #include "core/identification/HistoryFit.h"
 #include "core/updating/Identifier.h"
@@ -151,6 +154,10 @@ private:
     std::vector<double> m_estimate, m_stddev;
     std::vector<ParameterBounds> m_bounds;
     std::vector<double> m_u, m_f;
+    /// A rate-dependent model (mrDamper): the samples' times, k dt with the model's time
+    /// increment at construction (the run's step); empty otherwise.
+    std::vector<double> m_t;
+    double m_dt = 0.0;
     int m_sinceTrigger;
     std::size_t m_lastRefitSize = 0; ///< history size at the last refit
     int m_triggers = 0;

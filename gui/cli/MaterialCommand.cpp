@@ -45,7 +45,11 @@ int MaterialCommand::exec(const QStringList& arguments) {
                                         QStringLiteral("file"));
     const QCommandLineOption outOpt(QStringLiteral("out"), tr("Output CSV (default: stdout)."),
                                     QStringLiteral("file"));
-    p.addOptions({lawOpt, paramOpt, historyOpt, outOpt});
+    const QCommandLineOption dtOpt(
+        QStringLiteral("dt"),
+        tr("Time step [s] between the points of a one-column history (a rate-dependent law)."),
+        QStringLiteral("seconds"));
+    p.addOptions({lawOpt, paramOpt, historyOpt, outOpt, dtOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed->isEmpty() ? 0 : fail(*parsed);
     if (p.positionalArguments().size() > 1)
@@ -64,10 +68,27 @@ int MaterialCommand::exec(const QStringList& arguments) {
             return fail(tr("--param '%1': expected NAME=VALUE with a finite number").arg(item));
         params[item.left(eq).trimmed().toStdString()] = value;
     }
+    double dt = 0.0;
+    if (p.isSet(dtOpt)) {
+        bool ok = false;
+        dt = p.value(dtOpt).toDouble(&ok);
+        if (!ok || !(dt > 0.0) || !std::isfinite(dt))
+            return fail(tr("--dt '%1': expected a time step > 0 in seconds").arg(p.value(dtOpt)));
+    }
     try {
         auto law = makeLaw(p.value(lawOpt).toStdString(), params);
-        const auto history = readDeformationHistory(p.value(historyOpt).toStdString());
-        const auto samples = driveLaw(*law, history);
+        TimedHistory history = readTimedHistory(p.value(historyOpt).toStdString());
+        if (dt > 0.0) {
+            if (!history.time.empty())
+                return fail(tr("--dt: the history has its own time column"));
+            for (std::size_t i = 0; i < history.deformation.size(); ++i)
+                history.time.push_back(double(i) * dt);
+        }
+        if (law->isRateDependent() && history.time.empty())
+            return fail(tr("%1 is rate-dependent: give the history a time column (time, "
+                           "deformation) or --dt")
+                            .arg(QString::fromStdString(law->lawName())));
+        const auto samples = driveLaw(*law, history.deformation, history.time);
         if (p.isSet(outOpt)) {
             writeMaterialCsv(p.value(outOpt).toStdString(), samples);
         } else {

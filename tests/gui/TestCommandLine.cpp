@@ -13,6 +13,8 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QSet>
+
+#include <cmath>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -252,6 +254,39 @@ private slots:
                   history, QStringLiteral("--out"), csv});
         QVERIFY2(r2.exitCode == 0, qPrintable(report(r2)));
         QCOMPARE(readLines(csv), lines);
+    }
+
+    void materialRateDependentLaw() {
+        // mrDamper with the hysteresis off: force = c0 c1 / (c0 + c1) v + k1 u, the velocity
+        // from --dt (or the history's time column); without either, an error naming the law.
+        QTemporaryDir dir;
+        const QString history = dir.filePath(QStringLiteral("h.csv"));
+        QFile f(history);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("0.001\n0.003\n0.002\n");
+        f.close();
+        const QStringList law{QStringLiteral("material"), QStringLiteral("--law"),
+                              QStringLiteral("mrDamper"), QStringLiteral("--param"),
+                              QStringLiteral("alpha=0"), QStringLiteral("--param"),
+                              QStringLiteral("c0=3"), QStringLiteral("--param"),
+                              QStringLiteral("c1=6"), QStringLiteral("--param"),
+                              QStringLiteral("k1=10"), QStringLiteral("--history"), history};
+        Result r = hsmu(law);
+        QVERIFY2(r.exitCode == 1, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("mrDamper is rate-dependent")), qPrintable(r.err));
+        r = hsmu(law + QStringList{QStringLiteral("--dt"), QStringLiteral("0.01")});
+        QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+        const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 4);
+        const QList<double> expected{10.0 * 0.001, 2.0 * 0.002 / 0.01 + 10.0 * 0.003,
+                                     2.0 * -0.001 / 0.01 + 10.0 * 0.002};
+        for (int i = 1; i < lines.size(); ++i) {
+            const double force = lines[i].split(QLatin1Char(','))[1].toDouble();
+            QVERIFY2(std::abs(force - expected[i - 1]) < 1e-12, qPrintable(lines[i]));
+        }
+        r = hsmu(law + QStringList{QStringLiteral("--dt"), QStringLiteral("-1")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("--dt")), qPrintable(r.err));
     }
 
     void materialErrorsAreClear() {

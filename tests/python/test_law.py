@@ -14,21 +14,31 @@ LAWS = {
                     deltaEta=0.03, uRef=0.02, fRef=40.0),
     "boucWenPinching": dict(k0=2.0, alpha=0.05, n=1.5, beta=0.6, gamma=0.4, zetaS=0.8, p=1.2,
                             q=0.1, psi=0.05, uRef=0.01, fRef=30.0),
+    "mrDamper": dict(c0=2.0, c1=20.0, k0=0.5, k1=0.1, alpha=3.0, A=1.2, beta=0.6, gamma=0.4,
+                     n=2.0, uRef=0.01, fRef=2.0),
     "bilinear": dict(k0=1200.0, fy=25.0, b=0.04),
     "elastic": dict(k=350.0),
 }
 
 
 def history(n=3000, amplitude=0.06):
-    """A cyclic history with a growing amplitude [the law's deformation unit]."""
+    """A cyclic history with a growing amplitude [the law's deformation unit] over 3 s."""
     t = np.linspace(0.0, 1.0, n)
     return amplitude * t * np.sin(2 * np.pi * 6 * t)
+
+
+def times(n=3000):
+    """The history's times [s] (the rate-dependent MR damper needs them)."""
+    return np.linspace(0.0, 3.0, n)
 
 
 def cli_material(cli, tmp_path, law, params, d):
     hist = tmp_path / f"{law}-history.csv"
     out = tmp_path / f"{law}-out.csv"
-    write_column(hist, d)
+    with open(hist, "w") as f:
+        f.write("time,deformation\n")
+        for t, x in zip(times(len(d)), d):
+            f.write(f"{float(t)!r},{float(x)!r}\n")
     args = ["material", "--law", law, "--history", hist, "--out", out]
     for name, value in params.items():
         args += ["--param", f"{name}={value!r}"]
@@ -49,7 +59,7 @@ def test_every_law_of_the_program_is_covered():
 def test_drive_equals_hsmu_material(cli, tmp_path, law):
     d = history()
     expected = cli_material(cli, tmp_path, law, LAWS[law], d)
-    force, tangent = hsmu.Law(law, **LAWS[law]).drive(d, tangent=True)
+    force, tangent = hsmu.Law(law, **LAWS[law]).drive(d, time=times(), tangent=True)
     assert force.dtype == np.float64 and force.shape == d.shape
     np.testing.assert_array_equal(expected[:, 0], d)
     assert_close(force, expected[:, 1])
@@ -157,6 +167,21 @@ def test_bad_parameter_values():
     with pytest.raises(ValueError, match="not admissible"):
         law.set_parameters(k0=5.0, b=-1.0)
     assert law.parameters == {"k0": 1.0, "fy": 2.0, "b": 0.1}  # all or nothing
+
+
+def test_a_rate_dependent_law_needs_times():
+    law = hsmu.Law("mrDamper", **LAWS["mrDamper"])
+    assert law.rate_dependent and not hsmu.Law("bilinear").rate_dependent
+    with pytest.raises(ValueError, match="rate-dependent: give time="):
+        law.drive(history())
+    with pytest.raises(ValueError, match="time: expected 3000 values"):
+        law.drive(history(), time=times()[:10])
+    with pytest.raises(ValueError, match="time does not increase at point 1"):
+        law.drive([0.0, 0.1], time=[1.0, 1.0])
+    # twice as fast, twice the viscous force at small velocities: the times matter
+    slow = law.copy().drive(history(), time=times())
+    fast = law.copy().drive(history(), time=times() / 2)
+    assert np.max(np.abs(fast)) > 1.2 * np.max(np.abs(slow))
 
 
 def test_z_of_a_law_without_z():

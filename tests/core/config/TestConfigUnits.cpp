@@ -43,7 +43,9 @@ nlohmann::json labDocument() {
              "interlock": {"deformation": 3, "force": 900, "increment": 0.6}},
            "limits": {"deformation": 2, "force": 800, "increment": 0.5}},
           {"name": "elastic", "type": "truss", "dofs": ["floor", "roof"],
-           "material": {"law": "elastic", "k": 4}}
+           "material": {"law": "elastic", "k": 4}},
+          {"name": "damper", "type": "lateralSpring", "dof": "floor",
+           "material": {"law": "mr-damper", "c0": 30, "c1": 400, "uRef": 2, "alpha": 5}}
         ]
       },
       "groundMotion": {"builtin": "synthetic", "dt": 20},
@@ -93,6 +95,14 @@ void TestConfigUnits::convertsEveryDimensionalField() {
     QVERIFY(close(column.limits.maxIncrement, 0.5 * kDeg));
     QVERIFY(close(column.limits.maxForce, 800.0 * kKip * 0.001));
     QVERIFY(close(cfg.elements[2].material.params.at("k"), 4.0 * kKip / 0.001));
+    // mrDamper: the scales as Bouc-Wen's, the dashpots (normalized force x time) from ms to s.
+    const MaterialSpec& damper = cfg.elements[3].material;
+    QCOMPARE(damper.law, std::string("mrDamper"));
+    QVERIFY(close(damper.params.at("uRef"), 0.002));
+    QVERIFY(close(damper.params.at("fRef"), kKip));
+    QVERIFY(close(damper.params.at("c0"), 0.03));
+    QVERIFY(close(damper.params.at("c1"), 0.4));
+    QCOMPARE(damper.params.at("alpha"), 5.0);
     QVERIFY(close(cfg.groundMotion.dt, 0.02));
     QVERIFY(close(cfg.analysis.dt, 0.01));
     QVERIFY(close(cfg.analysis.duration, 5.0));

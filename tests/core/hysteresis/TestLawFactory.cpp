@@ -46,7 +46,8 @@ private slots:
 
 void TestLawFactory::makesEachLawWithDefaults() {
     QVERIFY(knownLaws() ==
-            (std::vector<std::string>{"boucWen", "boucWenPinching", "bilinear", "elastic"}));
+            (std::vector<std::string>{"boucWen", "boucWenPinching", "mrDamper", "bilinear",
+                                      "elastic"}));
     for (const std::string& name : knownLaws()) {
         const auto law = makeLaw(name, {});
         QVERIFY(law != nullptr);
@@ -104,7 +105,7 @@ void TestLawFactory::rejectsUnknownLaw() {
     const std::string message = rejection("takeda", {});
     QVERIFY(contains(message, "'takeda'"));
     QVERIFY(contains(message, "boucWen") && contains(message, "bilinear") &&
-            contains(message, "elastic"));
+            contains(message, "elastic") && contains(message, "mrDamper"));
 }
 
 void TestLawFactory::rejectsUnknownParameter() {

@@ -5,6 +5,7 @@
 #include "core/hysteresis/MaterialDriver.h"
 
 #include "core/hysteresis/LinearElastic.h"
+#include "core/hysteresis/MrDamper.h"
 
 #include <cmath>
 #include <QTemporaryDir>
@@ -83,6 +84,7 @@ private slots:
     void drivesElasticLawExactly();
     void reportsTheFailingPoint();
     void writesExactCsv();
+    void drivesARateDependentLawWithItsTimes();
 };
 
 void TestMaterialDriver::readsOneColumn() {
@@ -179,6 +181,48 @@ void TestMaterialDriver::writesExactCsv() {
     writeMaterialCsv(text, {{0.1, 0.2, 0.3}});
     QCOMPARE(text.str(), std::string("deformation,force,tangent\n0.10000000000000001,"
                                      "0.20000000000000001,0.29999999999999999\n"));
+}
+
+void TestMaterialDriver::drivesARateDependentLawWithItsTimes() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const std::string timed =
+        writeFile(dir, "timed.csv", "time [s], deformation [m]\n0, 0.001\n0.01, 0.002\n0.03, 0.004\n");
+    const TimedHistory h = readTimedHistory(timed);
+    QVERIFY((h.time == std::vector<double>{0.0, 0.01, 0.03}));
+    QVERIFY((h.deformation == std::vector<double>{0.001, 0.002, 0.004}));
+    QVERIFY(readTimedHistory(writeFile(dir, "one.csv", "0.1\n0.2\n")).time.empty());
+    // mrDamper with the hysteresis off: force = c0 c1 / (c0 + c1) v + k1 u, the velocity from
+    // the times; the first point reached quasi-statically.
+    MrDamperParameters p;
+    p.alpha = 0.0;
+    p.c0 = 3.0;
+    p.c1 = 6.0;
+    p.k1 = 10.0;
+    MrDamper law(p);
+    const std::vector<MaterialSample> out = driveLaw(law, h.deformation, h.time);
+    QCOMPARE(out.size(), std::size_t(3));
+    QVERIFY(std::abs(out[0].force - 10.0 * 0.001) < 1e-15);
+    QVERIFY(std::abs(out[1].force - (2.0 * 0.001 / 0.01 + 10.0 * 0.002)) < 1e-12);
+    QVERIFY(std::abs(out[2].force - (2.0 * 0.002 / 0.02 + 10.0 * 0.004)) < 1e-12);
+    QVERIFY(std::abs(out[2].tangent - (2.0 / 0.02 + 10.0)) < 1e-12);
+    // No times, or times that do not increase: refused, naming the law or the point.
+    MrDamper again(p);
+    try {
+        driveLaw(again, h.deformation);
+        QFAIL("a rate-dependent law was driven without times");
+    } catch (const std::runtime_error& e) {
+        QVERIFY(std::string(e.what()).find("mrDamper is rate-dependent") != std::string::npos);
+    }
+    try {
+        driveLaw(again, h.deformation, {0.0, 0.01, 0.01});
+        QFAIL("a repeated time was accepted");
+    } catch (const std::runtime_error& e) {
+        QVERIFY(std::string(e.what()).find("at point 2") != std::string::npos);
+    }
+    // A rate-independent law ignores the times.
+    LinearElastic elastic(2.0);
+    QCOMPARE(driveLaw(elastic, h.deformation, h.time)[2].force, 0.008);
 }
 
 QTEST_APPLESS_MAIN(TestMaterialDriver)

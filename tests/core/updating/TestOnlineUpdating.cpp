@@ -214,6 +214,40 @@ private slots:
         QVERIFY(r.updatedMetric.displacementNrmse < 0.25 * r.initialMetric.displacementNrmse);
     }
 
+    /// An MR damper (mrDamper, rate-dependent) as the virtual specimen and as its numerical
+    /// twin, the twin updated every step by the MR damper UKF (preset mr-damper-twin): the
+    /// updated twin follows the reference (the twin given the specimen's true law).
+    void mrDamperTwinFollowsTheReference()
+    {
+        const TestConfig cfg = loadConfigFile(std::string(HSMU_SOURCE_DIR) +
+                                              "/resources/presets/mr-damper-twin.json");
+        ComparisonOptions o;
+        o.element = "Damper B";
+        const ComparisonResult r = runComparison(cfg, o);
+        qInfo("MR damper twin: initial %.4f / %.4f, updated %.4f / %.4f (force / displacement "
+              "NRMSE), %d updates applied",
+              r.initialMetric.forceNrmse, r.initialMetric.displacementNrmse,
+              r.updatedMetric.forceNrmse, r.updatedMetric.displacementNrmse,
+              r.updated.appliedUpdates);
+        QCOMPARE(r.updated.finalState, r.reference.finalState);
+        QVERIFY(r.updated.appliedUpdates > 0);
+        QVERIFY(r.initialMetric.forceNrmse > 0.3);
+        QVERIFY(r.updatedMetric.forceNrmse < 0.1);
+        QVERIFY(r.updatedMetric.forceNrmse < 0.2 * r.initialMetric.forceNrmse);
+        QVERIFY(r.updatedMetric.displacementNrmse < 0.05);
+        // The identified damper: the true viscous and hysteretic terms within 2 %.
+        const std::vector<double>& last = r.updated.parameters.back();
+        const auto value = [&](const std::string& name) {
+            for (std::size_t i = 0; i < r.updated.parameterNames.size(); ++i)
+                if (r.updated.parameterNames[i] == name)
+                    return last[i];
+            return std::nan("");
+        };
+        const auto& truth = cfg.elements[2].specimen.trueMaterial.params;
+        for (const char* name : {"c0", "c1", "alpha"})
+            QVERIFY2(std::abs(value(name) / truth.at(name) - 1.0) < 0.02, name);
+    }
+
     void bilinearNelderMeadTriggersAtThresholdsAndImprovesTheTwin()
     {
         TestConfig cfg = loadConfigFile(std::string(HSMU_SOURCE_DIR) +

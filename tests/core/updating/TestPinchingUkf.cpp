@@ -10,6 +10,7 @@
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/offline/OfflineIdentification.h"
 #include "core/updating/PinchingUkfIdentifier.h"
+#include "core/updating/PinchingUkfJobs.h"
 #include "core/updating/RobustUkfIdentifier.h"
 #include "../identification/SyntheticHistory.h"
 
@@ -199,6 +200,39 @@ private slots:
         // the sub-step limits are scale-free, so only roundings differ
         QVERIFY2(worst <= 1e-9 * rms(fa), qPrintable(QString::number(worst / rms(fa))));
         QVERIFY(a.committedState().e > 1.0); // degraded and pinched
+    }
+
+    /// An anchor carried into other scales can leave the calibration's box (beta and gamma
+    /// scale with (uRef ratio)^n): it is not taken as the new anchor even when it replays the
+    /// history best, since the UKF would start outside the box it is given and diverge (seen
+    /// on the HDRB bearing: beta 66 against the box's 20 after the scales moved, 9 divergences).
+    void anchorStaysInsideTheUkfBoxWhenTheScalesMove() {
+        BoucWenPinchingParameters p = truth(); // at uRef = fRef = 1
+        p.boucWen.n = 1.0;
+        p.boucWen.beta = 25.0; // outside the box [-20, 20] at uRef = 1
+        p.boucWen.gamma = -19.0;
+        BoucWenPinching law(p);
+        PinchingAnchorJobInput in;
+        in.u = testing::cyclic(0.5, 4, 100);
+        in.f = testing::forcesOf(law, in.u); // the anchor's own force: it replays exactly
+        in.uRef = 1.0;
+        in.fRef = 1.0;
+        in.anchor = rescaled(p, 0.25, 1.0); // beta 6.25 there, 25 again at uRef = 1
+        in.anchorNrmse = 0.01;
+        in.initial = truth();
+        in.global = false;
+        const PinchingAnchorJobResult r = pinchingAnchorJob(in);
+        QVERIFY2(r.ok, r.reason.c_str());
+        for (int j = 0; j < kPinchingUkfParameters; ++j) {
+            const double v = PinchingUkf::field(r.best, j);
+            QVERIFY2(r.box[std::size_t(j)].contains(v),
+                     qPrintable(QString("%1 = %2 outside [%3, %4]")
+                                    .arg(pinchingUkfParameterNames()[std::size_t(j)])
+                                    .arg(v)
+                                    .arg(r.box[std::size_t(j)].lower)
+                                    .arg(r.box[std::size_t(j)].upper)));
+        }
+        QVERIFY(r.nrmse < 0.2); // still a fit of the history, from inside the box
     }
 
     void refusesThePaperFormulationAndForeignBoundsAndIsBuiltForUkf() {
