@@ -252,7 +252,7 @@ time, deformation, force: 1-D arrays of equal length, finite, time increasing; i
 for a sample index; deformation m, cm, mm, in, ft, rad, mrad, deg; force N, kN, MN, lbf, kip,
 kgf, tonf, g, or a moment such as kN*m with a rotation). They are converted to the console's
 units (s; m or rad; kN or kN m) as a CSV import is.
-law: "boucWen" (the default), "boucWenPinching", "bilinear" or "elastic"; model: a dict of
+law: "boucWen" (the default), "boucWenPinching", "mrDamper", "bilinear" or "elastic"; model: a dict of
 initial parameters (e.g. {"uRef": 0.02, "fRef": 40}), as the "model" of --config.
 
 Returns a dict shaped like summary.json's "calibration": "parameters" {name: {"value",
