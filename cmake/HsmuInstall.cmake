@@ -7,6 +7,7 @@
 #     PREFIX/share/applications/hsmu.desktop
 #     PREFIX/share/icons/hicolor/scalable/apps/hsmu.svg
 #     PREFIX/share/doc/hsmu/{README.md, *.md}
+#     PREFIX/lib/python3/dist-packages/hsmu.cpython-*.so   (the Python module, python/)
 #   cpack -G DEB (in build/) makes hsmu_<version>_<arch>.deb with the run-time packages of
 #   Debian 12 as dependencies (dpkg-shlibdeps when available).
 include(GNUInstallDirs)
@@ -44,5 +45,9 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Qt's platform plugins are loaded at run time, not linked: name them.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6svg6")
+# The Python module (`import hsmu`, docs/python.md) needs the interpreter and NumPy.
+if(HSMU_PYTHON_MODULE)
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3, python3-numpy")
+endif()
 set(CPACK_GENERATOR DEB)
 include(CPack)

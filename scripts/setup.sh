@@ -13,6 +13,7 @@ packages=(
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libboost-dev libboost-system-dev libhdf5-dev hdf5-tools nlohmann-json3-dev
   libbenchmark-dev xvfb xauth
+  python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module hsmu (docs/python.md)
   fonts-wqy-microhei  # Chinese glyphs for the zh_CN console and its screenshots
 )
 # The real OpenSees 3.8 + OpenFresco 2.8 the pairing tests run (../shared/tools/opensees, present

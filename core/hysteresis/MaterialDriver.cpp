@@ -161,19 +161,14 @@ TimedHistory readTimedHistory(const std::string& path) {
     return parseTimedHistory(in, path);
 }
 
-std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations) {
-    return driveLaw(law, deformations, {});
-}
-
-std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations,
-                                     const std::vector<double>& time) {
+void driveLawInto(HysteresisLaw& law, std::span<const double> deformations,
+                  std::span<const double> time, std::span<double> force, std::span<double> tangent,
+                  const std::function<void(std::size_t)>& afterCommit) {
     const bool rate = law.isRateDependent();
     if (rate && time.size() != deformations.size()) {
         throw std::runtime_error(law.lawName() + " is rate-dependent: the history needs a time "
                                                  "for every point (a time column, or a step)");
     }
-    std::vector<MaterialSample> samples;
-    samples.reserve(deformations.size());
     for (std::size_t i = 0; i < deformations.size(); ++i) {
         if (rate) {
             const double dt = historyTimeIncrement(time, i);
@@ -192,9 +187,28 @@ std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<doubl
                                      formatExact(deformations[i]) + ")" +
                                      (why.empty() ? "" : ": " + why));
         }
-        samples.push_back({deformations[i], law.trialForce(), law.trialTangent()});
+        if (!force.empty())
+            force[i] = law.trialForce();
+        if (!tangent.empty())
+            tangent[i] = law.trialTangent();
         law.commit();
+        if (afterCommit)
+            afterCommit(i);
     }
+}
+
+std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations) {
+    return driveLaw(law, deformations, {});
+}
+
+std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations,
+                                     const std::vector<double>& time) {
+    std::vector<double> force(deformations.size()), tangent(deformations.size());
+    driveLawInto(law, deformations, time, force, tangent);
+    std::vector<MaterialSample> samples;
+    samples.reserve(deformations.size());
+    for (std::size_t i = 0; i < deformations.size(); ++i)
+        samples.push_back({deformations[i], force[i], tangent[i]});
     return samples;
 }
 

@@ -4,7 +4,10 @@
 // (trial + commit), write deformation, force and tangent as CSV.
 // Units are the law's: deformations in the law's deformation unit, forces in its force unit.
 
+#include <cstddef>
+#include <functional>
 #include <iosfwd>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -56,6 +59,16 @@ std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<doubl
 /// per point, or the times do not increase.
 std::vector<MaterialSample> driveLaw(HysteresisLaw& law, const std::vector<double>& deformations,
                                      const std::vector<double>& time);
+
+/// The loop of driveLaw (the one loop; driveLaw and the Python module's Law.drive call it),
+/// writing into the caller's arrays: force[i] and tangent[i] for point i (an empty span is not
+/// written; a non-empty one has deformations.size() elements); time as driveLaw's (may be
+/// empty for a rate-independent law); afterCommit(i), when given, is called once point i is
+/// committed (to read state variables such as Bouc-Wen's z).
+/// Throws as driveLaw; the points before the failing one are written and committed.
+void driveLawInto(HysteresisLaw& law, std::span<const double> deformations,
+                  std::span<const double> time, std::span<double> force, std::span<double> tangent,
+                  const std::function<void(std::size_t)>& afterCommit = {});
 
 /// Writes the header "deformation,force,tangent" and one line per sample, every value with
 /// 17 significant digits like "%.17g" (round-trips exactly), always with a '.' decimal point

@@ -17,6 +17,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
+
 #include <string>
 
 namespace hsmu {
@@ -37,6 +39,10 @@ struct IdentificationSettings {
     bool calibrate = true;
     /// A calibration NRMSE above this says that the law cannot represent the specimen [-].
     double verdictNrmse = 0.25;
+    /// When set and true (from any thread), the work stops at the calibration's next
+    /// iteration or the online pass's next sample and identifyOffline throws
+    /// OfflineCancelled (the Python module's Ctrl+C). May be null; not owned.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 /// Settings for the experimental element `specimen` of a parsed configuration ("": the

@@ -21,6 +21,10 @@ namespace {
 enum Column { Time = 0, Deformation = 1, Force = 2 };
 const char* const kColumnNames[] = {"time", "deformation", "force"};
 
+[[noreturn]] void fail(const std::string& what) {
+    throw MeasuredDataError(what);
+}
+
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
@@ -40,35 +44,34 @@ struct Role {
 };
 
 std::optional<Role> roleOf(const std::string& name) {
-    static const std::map<std::string, Role> names{
-        {"time", {Time}},
-        {"t", {Time}},
-        {"step", {Time, true}},
-        {"k", {Time, true}},
-        {"index", {Time, true}},
-        {"sample", {Time, true}},
-        {"deformation", {Deformation}},
-        {"displacement", {Deformation}},
-        {"rotation", {Deformation}},
-        {"d", {Deformation}},
-        {"u", {Deformation}},
-        {"force", {Force}},
-        {"moment", {Force}},
-        {"load", {Force}},
-        {"lateral_load", {Force}},
-        {"f", {Force}}};
+    static const std::map<std::string, Role> names{{"time", {Time}},
+                                                   {"t", {Time}},
+                                                   {"step", {Time, true}},
+                                                   {"k", {Time, true}},
+                                                   {"index", {Time, true}},
+                                                   {"sample", {Time, true}},
+                                                   {"deformation", {Deformation}},
+                                                   {"displacement", {Deformation}},
+                                                   {"rotation", {Deformation}},
+                                                   {"d", {Deformation}},
+                                                   {"u", {Deformation}},
+                                                   {"force", {Force}},
+                                                   {"moment", {Force}},
+                                                   {"load", {Force}},
+                                                   {"lateral_load", {Force}},
+                                                   {"f", {Force}}};
     auto it = names.find(lower(name));
     return it == names.end() ? std::nullopt : std::optional<Role>(it->second);
 }
 
 /// One header field: "time [s]", "force (kN m)", "displacement_mm", "lateral_load_g", "k".
 struct HeaderField {
-    std::string text;           ///< as written
-    std::string name;           ///< without the unit
-    std::string unit;           ///< "" if none
-    std::optional<Role> role;   ///< nullopt: not a column this reader knows
-    bool unclosed = false;      ///< "name [unit" without the closing bracket
-    std::string lastWord;       ///< an unknown NAME_UNIT's last '_' word ("raw_dist_mm": mm)
+    std::string text;         ///< as written
+    std::string name;         ///< without the unit
+    std::string unit;         ///< "" if none
+    std::optional<Role> role; ///< nullopt: not a column this reader knows
+    bool unclosed = false;    ///< "name [unit" without the closing bracket
+    std::string lastWord;     ///< an unknown NAME_UNIT's last '_' word ("raw_dist_mm": mm)
 };
 
 HeaderField parseHeaderField(const std::string& field) {
@@ -230,8 +233,7 @@ public:
                 for (std::size_t i = 0; i < fields.size(); ++i)
                     if (!fields[i].role)
                         fail(line, "column " + std::to_string(i + 1) + ": unknown column '" +
-                                       fields[i].name +
-                                       "' (expected time, deformation or force)");
+                                       fields[i].name + "' (expected time, deformation or force)");
                 const auto missing = std::find(picked.begin(), picked.end(), -1) - picked.begin();
                 fail(line, std::string("no ") + kColumnNames[missing] +
                                " column in the header (name the columns time, deformation, "
@@ -260,49 +262,19 @@ public:
 
     /// Decide the scales from the explicit units or the header's.
     void resolveUnits() {
-        const int line = m_headerLine;
         if (m_options.units)
             m_written = {m_options.units->time, m_options.units->deformation,
                          m_options.units->force};
-        for (int c = 0; c < 3; ++c) {
-            if (m_written[std::size_t(c)].empty())
-                fail(line, std::string("no unit for the ") + kColumnNames[c] +
-                               " (write e.g. 'time [s], deformation [mm], force [kN]' in the "
-                               "header, or give the units explicitly: --units s,mm,kN)");
+        MeasuredDataScales scales;
+        try {
+            scales =
+                measuredDataScales({m_written[Time], m_written[Deformation], m_written[Force]});
+        } catch (const MeasuredDataError& e) {
+            fail(m_headerLine, e.what());
         }
-        const std::string& t = m_written[Time];
-        if (lower(t) == "step") {
-            m_scale[Time] = 1.0;
-        } else if (const auto u = units::parse(t, units::Dimension::Time)) {
-            m_scale[Time] = u->factor;
-        } else {
-            fail(line, "unknown time unit '" + t + "' (expected " +
-                           units::accepted(units::Dimension::Time) +
-                           ", or step for a sample index)");
-        }
-        const auto d = units::parseDeformation(m_written[Deformation]);
-        if (!d)
-            fail(line, "unknown deformation unit '" + m_written[Deformation] + "' (expected " +
-                           units::accepted(units::Dimension::Length) + ", " +
-                           units::accepted(units::Dimension::Rotation) + ")");
-        m_scale[Deformation] = d->factor;
-        const bool rad = d->dimension == units::Dimension::Rotation;
-        const std::string& fw = m_written[Force];
-        const bool weight = trim(fw) == "g" || trim(fw) == "G";
-        const auto f = weight ? std::nullopt : units::parseForce(fw);
-        if (!weight && !f)
-            fail(line, "unknown force unit '" + fw + "' (expected " + forceUnitsExpected() + ")");
-        const bool moment = f && f->dimension == units::Dimension::Moment;
-        if (rad && !moment && !weight)
-            fail(line, "deformation in " + m_written[Deformation] + " needs a moment unit (" +
-                           units::accepted(units::Dimension::Moment) + "), found '" + fw + "'");
-        if (!rad && moment)
-            fail(line, "deformation in " + m_written[Deformation] + " needs a force unit (" +
-                           units::accepted(units::Dimension::Force) +
-                           ", g), found the moment unit '" + fw + "'");
-        m_scale[Force] = weight ? 1.0 : f->factor;
-        m_history.deformationUnits = rad ? "rad" : "m";
-        m_history.forceUnits = weight ? "W" : (rad ? "kN m" : "kN");
+        m_scale = {scales.time, scales.deformation, scales.force};
+        m_history.deformationUnits = scales.deformationUnits;
+        m_history.forceUnits = scales.forceUnits;
     }
 
     void row(const std::vector<std::string>& fields, int line) {
@@ -324,8 +296,8 @@ public:
             const std::size_t i = m_position[std::size_t(c)];
             if (i >= fields.size())
                 fail(line, std::string("no column ") + std::to_string(i + 1) + " (" +
-                               kColumnNames[c] + "): the row has " +
-                               std::to_string(fields.size()) + " values");
+                               kColumnNames[c] + "): the row has " + std::to_string(fields.size()) +
+                               " values");
             double x = 0.0;
             if (!parseNumber(fields[i], x))
                 fail(line, "column " + std::to_string(i + 1) + " (" + kColumnNames[c] + "): '" +
@@ -418,6 +390,49 @@ std::vector<std::string> commaParts(const std::string& text) {
 
 } // namespace
 
+MeasuredDataScales measuredDataScales(const MeasuredDataUnits& written) {
+    const std::array<std::string, 3> w{written.time, written.deformation, written.force};
+    for (int c = 0; c < 3; ++c) {
+        if (w[std::size_t(c)].empty())
+            fail(std::string("no unit for the ") + kColumnNames[c] +
+                 " (write e.g. 'time [s], deformation [mm], force [kN]' in the "
+                 "header, or give the units explicitly: --units s,mm,kN)");
+    }
+    MeasuredDataScales out;
+    const std::string& t = w[0];
+    if (lower(t) == "step") {
+        out.time = 1.0;
+    } else if (const auto u = units::parse(t, units::Dimension::Time)) {
+        out.time = u->factor;
+    } else {
+        fail("unknown time unit '" + t + "' (expected " + units::accepted(units::Dimension::Time) +
+             ", or step for a sample index)");
+    }
+    const auto d = units::parseDeformation(w[1]);
+    if (!d)
+        fail("unknown deformation unit '" + w[1] + "' (expected " +
+             units::accepted(units::Dimension::Length) + ", " +
+             units::accepted(units::Dimension::Rotation) + ")");
+    out.deformation = d->factor;
+    const bool rad = d->dimension == units::Dimension::Rotation;
+    const std::string& fw = w[2];
+    const bool weight = trim(fw) == "g" || trim(fw) == "G";
+    const auto f = weight ? std::nullopt : units::parseForce(fw);
+    if (!weight && !f)
+        fail("unknown force unit '" + fw + "' (expected " + forceUnitsExpected() + ")");
+    const bool moment = f && f->dimension == units::Dimension::Moment;
+    if (rad && !moment && !weight)
+        fail("deformation in " + w[1] + " needs a moment unit (" +
+             units::accepted(units::Dimension::Moment) + "), found '" + fw + "'");
+    if (!rad && moment)
+        fail("deformation in " + w[1] + " needs a force unit (" +
+             units::accepted(units::Dimension::Force) + ", g), found the moment unit '" + fw + "'");
+    out.force = weight ? 1.0 : f->factor;
+    out.deformationUnits = rad ? "rad" : "m";
+    out.forceUnits = weight ? "W" : (rad ? "kN m" : "kN");
+    return out;
+}
+
 MeasuredDataUnits parseMeasuredDataUnits(const std::string& text) {
     const std::vector<std::string> parts = commaParts(text);
     if (parts.size() != 3 || parts[0].empty() || parts[1].empty() || parts[2].empty())
@@ -463,9 +478,8 @@ SpecimenHistory readMeasuredDataCsv(const std::string& path, const MeasuredDataO
         throw MeasuredDataError(path + ": not a regular file (a folder, device, pipe or socket)");
     if (const auto size = std::filesystem::file_size(path, ec);
         !ec && size > limits::kMaxTextFileBytes)
-        throw MeasuredDataError(path + ": too large (" + std::to_string(size) +
-                                " bytes, at most " + std::to_string(limits::kMaxTextFileBytes) +
-                                ")");
+        throw MeasuredDataError(path + ": too large (" + std::to_string(size) + " bytes, at most " +
+                                std::to_string(limits::kMaxTextFileBytes) + ")");
     std::ifstream in(path);
     if (!in)
         throw MeasuredDataError(path + ": cannot be opened (no such file or no permission)");

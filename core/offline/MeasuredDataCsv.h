@@ -53,6 +53,17 @@ struct MeasuredDataUnits {
     std::string time, deformation, force;
 };
 
+/// The factors that take each column to the console's units (value * factor) and the units the
+/// history is then in: deformationUnits "m" or "rad", forceUnits "kN", "kN m" or "W" (g: the
+/// values are kept). The one rule for a file's units and for arrays given with units (the
+/// Python module's hsmu.calibrate). Throws MeasuredDataError (no file or line: the caller
+/// adds them) for a missing or unknown unit or a deformation / force pair that does not match.
+struct MeasuredDataScales {
+    double time = 1.0, deformation = 1.0, force = 1.0;
+    std::string deformationUnits = "m", forceUnits = "kN";
+};
+MeasuredDataScales measuredDataScales(const MeasuredDataUnits& units);
+
 /// Parse "s,mm,kN" (the --units option). Throws MeasuredDataError.
 MeasuredDataUnits parseMeasuredDataUnits(const std::string& text);
 

@@ -80,6 +80,7 @@ void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
     request.law = s.model.law;
     request.uRef = s.updating.modelURef;
     request.fRef = s.updating.modelFRef;
+    request.cancel = s.cancel;
     request.time = h.time; // a rate-dependent law's velocities
     if (s.updating.method == "ukf" && s.updating.ukfFormulation == "robust")
         request.bounds = s.updating.bounds; // the paper's bounds are for its normalization
@@ -89,6 +90,8 @@ void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
         r.messages.push_back(at(h.time.back(), std::string("calibration: ") + e.what()));
         return;
     }
+    if (r.calibration->cancelled)
+        throw OfflineCancelled();
     if (!r.calibration->ok) {
         r.messages.push_back(at(h.time.back(), "calibration failed: " + r.calibration->reason));
         return;
@@ -97,8 +100,8 @@ void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
         std::ostringstream m;
         m.setf(std::ios::fixed);
         m.precision(2);
-        m << "the model family cannot represent this specimen (best NRMSE "
-          << r.calibration->nrmse << ")";
+        m << "the model family cannot represent this specimen (best NRMSE " << r.calibration->nrmse
+          << ")";
         r.verdict = m.str();
     }
 }
@@ -110,6 +113,8 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
         throw std::invalid_argument(history.source + ": " + why);
     const auto started = std::chrono::steady_clock::now();
     const auto tell = [&](std::size_t done, int refits, int rejected, const char* phase) {
+        if (settings.cancel && settings.cancel->load())
+            throw OfflineCancelled();
         if (!progress)
             return;
         OfflineProgress p;
@@ -240,8 +245,8 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     r.initialNrmse = nrmseOf(settings.model.law, initialValues, history, r.initialRmsError);
     if (std::isfinite(r.initialNrmse) && !(r.finalNrmse <= r.initialNrmse)) {
         std::ostringstream m;
-        m << "the final model fits the history worse than the initial one (NRMSE "
-          << r.finalNrmse << " against " << r.initialNrmse << ")";
+        m << "the final model fits the history worse than the initial one (NRMSE " << r.finalNrmse
+          << " against " << r.initialNrmse << ")";
         r.worseThanInitial = m.str();
         r.messages.push_back(at(history.time.back(), r.worseThanInitial));
     }

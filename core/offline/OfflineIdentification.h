@@ -32,14 +32,15 @@
 // Thread rules: none; independent calls may run on different threads.
 
 #include "core/identification/Calibration.h"
+#include "core/identification/ParameterSet.h"
 #include "core/offline/IdentificationSettings.h"
 #include "core/offline/SpecimenHistory.h"
-#include "core/identification/ParameterSet.h"
 
 #include <Eigen/Core>
 
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,10 +56,10 @@ struct OfflineIdentificationResult {
     Eigen::VectorXd fitError;                ///< [N] [-]
     ParameterValues finalEstimate;           ///< after the last sample (and the final fit)
     ParameterValues finalStddev;
-    double finalRmsError = 0.0;        ///< replay of the final model over the history [force units]
-    double finalNrmse = 0.0;           ///< finalRmsError / RMS(F) [-]
-    double initialRmsError = 0.0;      ///< the initial model's, likewise [force units]
-    double initialNrmse = 0.0;         ///< initialRmsError / RMS(F) [-] (inf: it fails)
+    double finalRmsError = 0.0;   ///< replay of the final model over the history [force units]
+    double finalNrmse = 0.0;      ///< finalRmsError / RMS(F) [-]
+    double initialRmsError = 0.0; ///< the initial model's, likewise [force units]
+    double initialNrmse = 0.0;    ///< initialRmsError / RMS(F) [-] (inf: it fails)
     /// "" or the alarm when the final model fits the history worse than the initial one
     std::string worseThanInitial;
     /// The online (auxiliary) model's prediction over the record, each sample with the
@@ -76,14 +77,20 @@ struct OfflineIdentificationResult {
 
 /// Where a long identification is (the callback of identifyOffline).
 struct OfflineProgress {
-    std::size_t samplesDone = 0; ///< samples identified so far
-    std::size_t samples = 0;     ///< of the history
-    int refits = 0;              ///< Nelder-Mead fits accepted so far
-    int rejected = 0;            ///< rejected identification steps so far
-    double elapsedSeconds = 0.0; ///< wall time since the start [s]
+    std::size_t samplesDone = 0;  ///< samples identified so far
+    std::size_t samples = 0;      ///< of the history
+    int refits = 0;               ///< Nelder-Mead fits accepted so far
+    int rejected = 0;             ///< rejected identification steps so far
+    double elapsedSeconds = 0.0;  ///< wall time since the start [s]
     const char* phase = "online"; ///< "online", "final fit" or "calibration"
 };
 using OfflineProgressCallback = std::function<void(const OfflineProgress&)>;
+
+/// Thrown by identifyOffline when settings.cancel was set (nothing is returned).
+class OfflineCancelled : public std::runtime_error {
+public:
+    OfflineCancelled() : std::runtime_error("the identification was cancelled") {}
+};
 
 /// progress (may be empty) is called on the calling thread every 64 samples of the online
 /// pass and before the final fit and the calibration.

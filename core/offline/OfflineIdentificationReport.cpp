@@ -57,6 +57,36 @@ std::string parameterUnit(const std::string& law, const std::string& name,
     return "-";
 }
 
+nlohmann::json calibrationJson(const CalibrationResult& c) {
+    nlohmann::json cal = {{"nrmse", c.nrmse},
+                          {"rmsError", c.rmsError},
+                          {"starts", c.startsTried},
+                          {"replays", c.residualEvaluations},
+                          {"seconds", c.computeSeconds}};
+    nlohmann::json all = nlohmann::json::object();
+    for (const auto& [name, v] : c.parameters)
+        all[name] = v;
+    cal["model"] = all;
+    nlohmann::json fitted = nlohmann::json::object();
+    for (std::size_t i = 0; i < c.names.size(); ++i) {
+        const auto k = Eigen::Index(i);
+        const double sd = c.standardDeviation[k];
+        nlohmann::json p = {{"value", c.estimate[k]}, {"onBound", bool(c.onBound[i])}};
+        if (std::isfinite(sd)) {
+            p["stddev"] = sd;
+            p["ci95"] = {c.estimate[k] - 1.96 * sd, c.estimate[k] + 1.96 * sd};
+            nlohmann::json corr = nlohmann::json::object();
+            for (std::size_t m = 0; m < c.names.size(); ++m)
+                if (std::isfinite(c.correlation(k, Eigen::Index(m))))
+                    corr[c.names[m]] = c.correlation(k, Eigen::Index(m));
+            p["correlation"] = corr;
+        }
+        fitted[c.names[i]] = p;
+    }
+    cal["parameters"] = fitted;
+    return cal;
+}
+
 std::vector<std::string> writeIdentificationReport(const std::string& dir,
                                                    const SpecimenHistory& history,
                                                    const IdentificationSettings& settings,
@@ -81,8 +111,8 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
         j["updating"] = settings.updatingDocument;
     nlohmann::json units = nlohmann::json::object();
     for (const auto& name : result.parameterNames)
-        units[name] = parameterUnit(settings.model.law, name, history.deformationUnits,
-                                    history.forceUnits);
+        units[name] =
+            parameterUnit(settings.model.law, name, history.deformationUnits, history.forceUnits);
     j["parameterUnits"] = units;
     nlohmann::json params = nlohmann::json::object();
     for (const auto& name : result.parameterNames) {
@@ -106,36 +136,8 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
     j["refits"] = result.refits;
     j["estimatorWarnings"] = result.estimatorWarnings;
     j["messages"] = result.messages;
-    if (result.calibration && result.calibration->ok) {
-        const CalibrationResult& c = *result.calibration;
-        nlohmann::json cal = {{"nrmse", c.nrmse},
-                              {"rmsError", c.rmsError},
-                              {"starts", c.startsTried},
-                              {"replays", c.residualEvaluations},
-                              {"seconds", c.computeSeconds}};
-        nlohmann::json all = nlohmann::json::object();
-        for (const auto& [name, v] : c.parameters)
-            all[name] = v;
-        cal["model"] = all;
-        nlohmann::json fitted = nlohmann::json::object();
-        for (std::size_t i = 0; i < c.names.size(); ++i) {
-            const auto k = Eigen::Index(i);
-            const double sd = c.standardDeviation[k];
-            nlohmann::json p = {{"value", c.estimate[k]}, {"onBound", bool(c.onBound[i])}};
-            if (std::isfinite(sd)) {
-                p["stddev"] = sd;
-                p["ci95"] = {c.estimate[k] - 1.96 * sd, c.estimate[k] + 1.96 * sd};
-                nlohmann::json corr = nlohmann::json::object();
-                for (std::size_t m = 0; m < c.names.size(); ++m)
-                    if (std::isfinite(c.correlation(k, Eigen::Index(m))))
-                        corr[c.names[m]] = c.correlation(k, Eigen::Index(m));
-                p["correlation"] = corr;
-            }
-            fitted[c.names[i]] = p;
-        }
-        cal["parameters"] = fitted;
-        j["calibration"] = cal;
-    }
+    if (result.calibration && result.calibration->ok)
+        j["calibration"] = calibrationJson(*result.calibration);
     j["verdict"] = result.verdict;
     const std::string path = (d / "summary.json").string();
     std::ofstream out(path);

@@ -26,10 +26,16 @@
 
 #include "core/offline/OfflineIdentification.h"
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
 namespace hsmu {
+
+/// summary.json's "calibration" object (above) for an ok calibration: the one shape for the
+/// file and for the Python module's hsmu.calibrate.
+nlohmann::json calibrationJson(const CalibrationResult& c);
 
 /// The unit of a law's parameter as the tables and files state it: uRef in the deformation's
 /// unit, fRef in the force's; "-" for the Bouc-Wen laws' normalized parameters; the bilinear

@@ -27,25 +27,69 @@ std::size_t StepCsvWriter::columnCount(const RunLayout& layout) {
     return n;
 }
 
-std::string StepCsvWriter::header(const RunLayout& layout) {
-    std::string h = "time_s,ag_m_s2";
+std::vector<std::string> StepCsvWriter::columnNames(const RunLayout& layout) {
+    std::vector<std::string> h{"time_s", "ag_m_s2"};
     for (const auto& d : layout.dofNames)
-        h += "," + d + "_u_m," + d + "_v_m_s," + d + "_a_m_s2";
+        for (const char* suffix : {"_u_m", "_v_m_s", "_a_m_s2"})
+            h.push_back(d + suffix);
     for (const auto& e : layout.elements) {
         const std::string def = compactUnit(e.units.deformation);
-        h += "," + e.name + "_deformation_" + def + "," + e.name + "_force_" +
-             compactUnit(e.units.force);
+        h.push_back(e.name + "_deformation_" + def);
+        h.push_back(e.name + "_force_" + compactUnit(e.units.force));
         if (e.experimental)
-            h += "," + e.name + "_commanded_" + def;
+            h.push_back(e.name + "_commanded_" + def);
     }
     if (layout.updating) {
         for (const auto& p : layout.updating->parameters)
-            h += ",param_" + p;
+            h.push_back("param_" + p);
         for (const auto& p : layout.updating->parameters)
-            h += ",std_" + p;
-        h += ",aux_force_" + compactUnit(layout.updating->units.force) + ",fit_error";
+            h.push_back("std_" + p);
+        h.push_back("aux_force_" + compactUnit(layout.updating->units.force));
+        h.push_back("fit_error");
     }
     return h;
+}
+
+std::string StepCsvWriter::header(const RunLayout& layout) {
+    std::string h;
+    for (const std::string& name : columnNames(layout))
+        h += (h.empty() ? "" : ",") + name;
+    return h;
+}
+
+void StepCsvWriter::rowValues(const RunLayout& layout, const StepRecord& record,
+                              std::vector<double>& out) {
+    out.clear();
+    out.push_back(record.time);
+    out.push_back(record.groundAcceleration);
+    for (std::size_t i = 0; i < layout.dofNames.size(); ++i) {
+        const auto at = [i](const Eigen::VectorXd& x) {
+            return Eigen::Index(i) < x.size() ? x[Eigen::Index(i)] : std::nan("");
+        };
+        out.push_back(at(record.u));
+        out.push_back(at(record.v));
+        out.push_back(at(record.a));
+    }
+    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
+        const ElementSample s = i < record.elements.size() ? record.elements[i] : ElementSample{};
+        out.push_back(s.deformation);
+        out.push_back(s.force);
+        if (layout.elements[i].experimental)
+            out.push_back(s.commanded);
+    }
+    if (!layout.updating)
+        return;
+    const std::size_t n = layout.updating->parameters.size();
+    const UpdatingSample& u = record.updating;
+    const auto at = [&record](const std::vector<double>& x, std::size_t i) {
+        return record.hasUpdating && i < x.size() ? x[i] : std::nan("");
+    };
+    for (std::size_t i = 0; i < n; ++i)
+        out.push_back(at(u.parameters, i));
+    for (std::size_t i = 0; i < n; ++i)
+        out.push_back(at(u.stddev, i));
+    out.push_back(record.hasUpdating ? u.auxiliaryForce : std::nan(""));
+    out.push_back(record.hasUpdating ? u.fitError : std::nan(""));
 }
 
 StepCsvWriter::StepCsvWriter(const std::string& path, const RunLayout& layout)
@@ -62,47 +106,17 @@ StepCsvWriter::~StepCsvWriter() {
 void StepCsvWriter::onStep(const StepRecord& record) {
     if (!m_out.is_open())
         return;
+    rowValues(m_layout, record, m_values);
     m_line.clear();
-    appendValue(m_line, record.time);
+    for (double v : m_values)
+        appendValue(m_line, v);
     m_line.erase(0, 1); // no leading comma
-    appendValue(m_line, record.groundAcceleration);
-    for (std::size_t i = 0; i < m_layout.dofNames.size(); ++i) {
-        const auto at = [i](const Eigen::VectorXd& x) {
-            return Eigen::Index(i) < x.size() ? x[Eigen::Index(i)] : std::nan("");
-        };
-        appendValue(m_line, at(record.u));
-        appendValue(m_line, at(record.v));
-        appendValue(m_line, at(record.a));
-    }
-    for (std::size_t i = 0; i < m_layout.elements.size(); ++i) {
-        const ElementSample s = i < record.elements.size() ? record.elements[i] : ElementSample{};
-        appendValue(m_line, s.deformation);
-        appendValue(m_line, s.force);
-        if (m_layout.elements[i].experimental)
-            appendValue(m_line, s.commanded);
-    }
-    if (m_layout.updating)
-        appendUpdating(record);
     m_line.push_back('\n');
     m_out.write(m_line.data(), std::streamsize(m_line.size()));
     if (++m_rows % kFlushInterval == 0)
         m_out.flush();
     if (!m_out)
         m_failed = true;
-}
-
-void StepCsvWriter::appendUpdating(const StepRecord& record) {
-    const std::size_t n = m_layout.updating->parameters.size();
-    const UpdatingSample& u = record.updating;
-    const auto at = [&record](const std::vector<double>& x, std::size_t i) {
-        return record.hasUpdating && i < x.size() ? x[i] : std::nan("");
-    };
-    for (std::size_t i = 0; i < n; ++i)
-        appendValue(m_line, at(u.parameters, i));
-    for (std::size_t i = 0; i < n; ++i)
-        appendValue(m_line, at(u.stddev, i));
-    appendValue(m_line, record.hasUpdating ? u.auxiliaryForce : std::nan(""));
-    appendValue(m_line, record.hasUpdating ? u.fitError : std::nan(""));
 }
 
 bool StepCsvWriter::finish() {

@@ -20,11 +20,12 @@
 // Thread rules: onStep() runs on the test's thread; construct, finish and destroy on the same
 // thread or after the test has stopped stepping.
 
-#include "core/output/RunLayout.h"
 #include "core/experiment/StepRecord.h"
+#include "core/output/RunLayout.h"
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace hsmu {
 
@@ -47,8 +48,14 @@ public:
     StepCsvWriter(const StepCsvWriter&) = delete;
     StepCsvWriter& operator=(const StepCsvWriter&) = delete;
 
-    /// The header line (without the newline) for a layout.
+    /// The header line (without the newline) for a layout: columnNames() joined by commas.
     static std::string header(const RunLayout& layout);
+    /// The columns' names, in order (columnCount(layout) of them).
+    static std::vector<std::string> columnNames(const RunLayout& layout);
+    /// One row's values, in columnNames() order, as full doubles (the file rounds them to 10
+    /// digits): the one ordering for the file and for the Python module's hsmu.run arrays.
+    static void rowValues(const RunLayout& layout, const StepRecord& record,
+                          std::vector<double>& out);
 
     void onStep(const StepRecord& record) override;
     /// Flush and close. False if any write failed (disk full, ...).
@@ -58,12 +65,11 @@ public:
     const std::string& path() const { return m_path; }
 
 private:
-    void appendUpdating(const StepRecord& record);
-
     std::string m_path;
     RunLayout m_layout;
     std::ofstream m_out;
     std::string m_line;
+    std::vector<double> m_values;
     int m_rows = 0;
     bool m_failed = false;
 };

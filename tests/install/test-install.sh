@@ -2,7 +2,10 @@
 # test_install: `cmake --install` into a fresh prefix, then the installed programs run from
 # there: `hsmu run paper-condition-3`, `hsmu-controller --config paper-condition-3` (a preset
 # name, found under PREFIX/share/hsmu/presets). With dpkg-deb, the .deb made by
-# `cpack -G DEB` is unpacked into a fresh root and its hsmu runs the same test.
+# `cpack -G DEB` is unpacked into a fresh root and its hsmu runs the same test. When the build
+# has the Python module (python/), `import hsmu` works from both in a fresh environment
+# (only PYTHONPATH set to PREFIX/lib/python3/dist-packages) and runs the preset found under
+# PREFIX/share/hsmu/presets.
 # usage: test-install.sh BUILD_DIR WORK_DIR
 set -euo pipefail
 build="$1"
@@ -27,6 +30,17 @@ run_test() { # PREFIX
     echo "ok: $1/bin/hsmu run paper-condition-3: $(tail -1 "$work/run.log")"
 }
 
+python_module=$(ls "$build"/python/hsmu.*.so 2> /dev/null | head -1 || true)
+python_test() { # PREFIX
+    [ -n "$python_module" ] || return 0
+    local site="$1/lib/python3/dist-packages"
+    ls "$site"/hsmu.*.so > /dev/null 2>&1 || { echo "FAIL: $site/hsmu.*.so is not installed"; exit 1; }
+    (cd "$work" && env -i HOME="$HOME" PATH=/usr/bin:/bin PYTHONPATH="$site" /usr/bin/python3 -c \
+        "import hsmu, os; assert os.path.dirname(hsmu.__file__) == '$site', hsmu.__file__; print(hsmu.__version__); r = hsmu.run('paper-condition-3'); assert r['status'] == 'finished', r['status']; print(len(r['steps']['time_s']), 'steps')" \
+        > "$work/python.log" 2>&1) || { cat "$work/python.log"; echo "FAIL: import hsmu from $site"; exit 1; }
+    echo "ok: import hsmu from $site: $(tr '\n' ' ' < "$work/python.log")"
+}
+
 prefix="$work/prefix"
 cmake --install "$build" --prefix "$prefix" > "$work/install.log"
 check_tree "$prefix"
@@ -34,6 +48,7 @@ if command -v desktop-file-validate > /dev/null; then
     desktop-file-validate "$prefix/share/applications/hsmu.desktop"
 fi
 run_test "$prefix"
+python_test "$prefix"
 
 # The controller takes a preset name (resolved next to the installed program).
 "$prefix/bin/hsmu-controller" --config paper-condition-3 --port 0 --quiet \
@@ -60,5 +75,6 @@ if command -v dpkg-deb > /dev/null && command -v cpack > /dev/null; then
     dpkg-deb -x "$deb" "$work/root"
     check_tree "$work/root/usr"
     run_test "$work/root/usr"
+    python_test "$work/root/usr"
 fi
 echo "PASS"

@@ -1,0 +1,320 @@
+#include "python/PyRecord.h"
+
+#include "core/record/RecordReader.h"
+#include "python/PyArrays.h"
+#include "python/PyJson.h"
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+namespace py = pybind11;
+
+namespace hsmu::python {
+
+namespace {
+
+/// One per-step column: its name and unit as `hsmu export --csv` writes them, and its values.
+struct Column {
+    std::string name, unit;
+    std::function<double(const RecordData&, Eigen::Index)> value;
+};
+
+std::vector<Column> columnsOf(const RecordData& r) {
+    std::vector<Column> c;
+    const auto matrixColumn = [&c](std::string name, std::string unit,
+                                   const Eigen::MatrixXd RecordData::*m, Eigen::Index j) {
+        c.push_back({std::move(name), std::move(unit),
+                     [m, j](const RecordData& d, Eigen::Index i) { return (d.*m)(i, j); }});
+    };
+    c.push_back({"step", "", [](const RecordData& d, Eigen::Index i) {
+                     return double(d.steps[std::size_t(i)]);
+                 }});
+    c.push_back({"time", "s", [](const RecordData& d, Eigen::Index i) { return d.time[i]; }});
+    c.push_back({"ground_acceleration", "m/s^2",
+                 [](const RecordData& d, Eigen::Index i) { return d.groundAcceleration[i]; }});
+    const std::tuple<const char*, const char*, const Eigen::MatrixXd RecordData::*> dofs[] = {
+        {"u", "m", &RecordData::u}, {"v", "m/s", &RecordData::v}, {"a", "m/s^2", &RecordData::a}};
+    for (const auto& [kind, unit, m] : dofs)
+        for (std::size_t j = 0; j < r.layout.dofNames.size(); ++j)
+            matrixColumn(std::string(kind) + " " + r.layout.dofNames[j], unit, m, Eigen::Index(j));
+    for (std::size_t j = 0; j < r.layout.elements.size(); ++j) {
+        const ElementInfo& e = r.layout.elements[j];
+        const auto k = Eigen::Index(j);
+        matrixColumn(e.name + " deformation", e.units.deformation, &RecordData::deformation, k);
+        matrixColumn(e.name + " force", e.units.force, &RecordData::force, k);
+        matrixColumn(e.name + " commanded", e.units.deformation, &RecordData::commanded, k);
+        if (e.experimental &&
+            r.actuatorCommanded.cols() == Eigen::Index(r.layout.elements.size())) {
+            matrixColumn(e.name + " actuator commanded", e.units.deformation,
+                         &RecordData::actuatorCommanded, k);
+            matrixColumn(e.name + " actuator measured", e.units.deformation,
+                         &RecordData::actuatorMeasured, k);
+            matrixColumn(e.name + " held ticks", "-", &RecordData::heldTicks, k);
+            matrixColumn(e.name + " flags", "-", &RecordData::actuatorFlags, k);
+        }
+    }
+    for (Eigen::Index j = 0; j < r.siteRoundTrip.cols(); ++j)
+        matrixColumn((std::size_t(j) < r.layout.sites.size() ? r.layout.sites[std::size_t(j)]
+                                                             : "site " + std::to_string(j + 1)) +
+                         " round trip",
+                     "s", &RecordData::siteRoundTrip, j);
+    if (r.layout.updating) {
+        const UpdatingInfo& info = *r.layout.updating;
+        for (std::size_t j = 0; j < info.parameters.size(); ++j)
+            matrixColumn(info.parameters[j], "-", &RecordData::parameters, Eigen::Index(j));
+        for (std::size_t j = 0; j < info.parameters.size(); ++j)
+            matrixColumn("stddev " + info.parameters[j], "-", &RecordData::stddev, Eigen::Index(j));
+        c.push_back({"auxiliary_force", info.units.force,
+                     [](const RecordData& d, Eigen::Index i) { return d.auxiliaryForce[i]; }});
+        c.push_back(
+            {"fit_error", "-", [](const RecordData& d, Eigen::Index i) { return d.fitError[i]; }});
+        const std::pair<const char*, const std::vector<int> RecordData::*> counts[] = {
+            {"applied_updates", &RecordData::appliedUpdates},
+            {"updates_this_step", &RecordData::updatesThisStep},
+            {"pending_proposals", &RecordData::pendingProposals}};
+        for (const auto& [name, v] : counts)
+            c.push_back({name, "-", [v](const RecordData& d, Eigen::Index i) {
+                             return double((d.*v)[std::size_t(i)]);
+                         }});
+        if (r.tracking.rows() == r.rows() && r.rows() > 0) {
+            matrixColumn("tracking_j1", "s", &RecordData::tracking, 0);
+            matrixColumn("tracking_j2", "-", &RecordData::tracking, 1);
+            matrixColumn("tracking_j3", "-", &RecordData::tracking, 2);
+            c.push_back({"update_requested", "-", [](const RecordData& d, Eigen::Index i) {
+                             return double(d.updateRequested[std::size_t(i)]);
+                         }});
+        }
+    }
+    return c;
+}
+
+class Record {
+public:
+    explicit Record(const std::filesystem::path& path) {
+        py::gil_scoped_release release;
+        m_reader = std::make_unique<RecordReader>(path.string());
+        m_columns = columnsOf(m_reader->data());
+    }
+
+    const RecordData& d() const { return m_reader->data(); }
+
+    std::vector<std::string> names() const {
+        std::vector<std::string> out;
+        for (const Column& c : m_columns)
+            out.push_back(c.name);
+        return out;
+    }
+
+    py::dict units() const {
+        py::dict out;
+        for (const Column& c : m_columns)
+            out[py::str(c.name)] = c.unit;
+        return out;
+    }
+
+    RealArray column(const std::string& name) const {
+        for (const Column& c : m_columns) {
+            if (c.name != name)
+                continue;
+            const auto n = std::size_t(d().rows());
+            RealArray a = newVector(n);
+            double* out = a.mutable_data();
+            for (std::size_t i = 0; i < n; ++i)
+                out[i] = c.value(d(), Eigen::Index(i));
+            return a;
+        }
+        throw py::key_error(m_reader->path() + ": no dataset '" + name +
+                            "' (Record.names lists them)");
+    }
+
+    py::dict data() const {
+        py::dict out;
+        for (const Column& c : m_columns)
+            out[py::str(c.name)] = column(c.name);
+        return out;
+    }
+
+    py::dict metadata() const {
+        const RecordMetadata& m = d().meta;
+        py::dict out;
+        out["schema_version"] = m.schemaVersion;
+        out["program"] = m.program;
+        out["program_version"] = m.programVersion;
+        out["start_time"] = m.startTime;
+        out["config_name"] = m.configName;
+        out["operator_notes"] = m.operatorNotes;
+        out["dt"] = m.dt;
+        out["run"] = m.run;
+        out["numerics"] = m.numerics;
+        return out;
+    }
+
+    py::object configuration() const {
+        try {
+            return toPython(nlohmann::json::parse(d().meta.configuration));
+        } catch (const nlohmann::json::exception& e) {
+            throw py::value_error(m_reader->path() + ": the recorded configuration is not JSON (" +
+                                  e.what() + ")");
+        }
+    }
+
+    py::list alarms() const {
+        py::list out;
+        for (const Alarm& a : d().alarms) {
+            py::dict x;
+            x["time"] = a.time;
+            x["step"] = a.step;
+            x["severity"] = alarmSeverityName(a.severity);
+            x["kind"] = alarmKindName(a.kind);
+            x["message"] = a.message;
+            x["code"] = a.code;
+            x["args"] = a.args;
+            out.append(x);
+        }
+        return out;
+    }
+
+    py::list events() const {
+        py::list out;
+        const std::vector<std::string> params =
+            d().layout.updating ? d().layout.updating->parameters : std::vector<std::string>{};
+        for (const RecordedUpdate& u : d().updateEvents) {
+            py::dict x, values;
+            x["step"] = u.step;
+            x["time"] = u.time;
+            x["element"] = u.element;
+            for (std::size_t j = 0; j < u.values.size() && j < params.size(); ++j)
+                values[py::str(params[j])] = u.values[j];
+            x["values"] = values;
+            x["decision"] = u.decision;
+            x["proposal"] = u.proposal;
+            out.append(x);
+        }
+        return out;
+    }
+
+    py::list notes() const {
+        py::list out;
+        for (const RecordNote& n : d().notes) {
+            py::dict x;
+            x["time"] = n.time;
+            x["step"] = n.step;
+            x["text"] = n.text;
+            out.append(x);
+        }
+        return out;
+    }
+
+    py::list elements() const {
+        py::list out;
+        for (const ElementInfo& e : d().layout.elements) {
+            py::dict x;
+            x["name"] = e.name;
+            x["type"] = e.type;
+            x["experimental"] = e.experimental;
+            x["nonlinear"] = e.nonlinear;
+            x["deformation_unit"] = e.units.deformation;
+            x["force_unit"] = e.units.force;
+            out.append(x);
+        }
+        return out;
+    }
+
+    py::object updating() const {
+        if (!d().layout.updating)
+            return py::none();
+        const UpdatingInfo& u = *d().layout.updating;
+        py::dict x;
+        x["specimen"] = u.specimen;
+        x["method"] = u.method;
+        x["parameters"] = u.parameters;
+        return x;
+    }
+
+    int refresh() {
+        int added = 0;
+        {
+            py::gil_scoped_release release;
+            added = m_reader->refresh();
+        }
+        m_columns = columnsOf(d());
+        return added;
+    }
+
+    int rows() const { return d().rows(); }
+    bool swmr() const { return m_reader->swmr(); }
+    std::string path() const { return m_reader->path(); }
+    std::vector<std::string> sites() const { return d().layout.sites; }
+    std::vector<std::string> dofs() const { return d().layout.dofNames; }
+
+private:
+    std::unique_ptr<RecordReader> m_reader;
+    std::vector<Column> m_columns;
+};
+
+} // namespace
+
+void bindRecord(py::module_& m) {
+    py::class_<Record>(m, "Record", R"doc(A run record (record.h5, docs/recording.md), read with the
+program's own reader: no h5py needed. A record that a running test is still writing is opened
+in SWMR mode and refresh() reads the rows flushed since.
+
+Per-step datasets are 1-D float64 arrays named as `hsmu export --csv` names its columns:
+"step", "time", "ground_acceleration", "u <dof>", "v <dof>", "a <dof>", "<element>
+deformation", "<element> force", "<element> commanded", "<specimen> actuator commanded" ...,
+"<site> round trip", and with online updating "<parameter>", "stddev <parameter>",
+"auxiliary_force", "fit_error", ... Record.names lists them, Record.units gives each one's
+unit ("[-]" dimensionless: "-"; "" for counts), record[name] returns one, record.data all.
+Raises OSError with the program's message for a missing, foreign or damaged file.
+
+Example:
+    rec = hsmu.Record("out/paper-condition-3/record.h5")
+    t, F = rec["time"], rec["specimen force"]
+)doc")
+        .def(py::init<const std::filesystem::path&>(), py::arg("path"))
+        .def_property_readonly("path", &Record::path, "The file.")
+        .def_property_readonly("rows", &Record::rows, "Rows read (row 0: the initial state).")
+        .def("__len__", &Record::rows)
+        .def_property_readonly("swmr", &Record::swmr, "Whether the file was opened in SWMR mode.")
+        .def_property_readonly("names", &Record::names, "The per-step datasets' names, in order.")
+        .def_property_readonly("units", &Record::units, "{name: unit} of every dataset.")
+        .def("__getitem__", &Record::column, py::arg("name"),
+             "One dataset as a float64 array of `rows` values; KeyError naming the file if absent.")
+        .def("__contains__",
+             [](const Record& r, const std::string& name) {
+                 const auto n = r.names();
+                 return std::find(n.begin(), n.end(), name) != n.end();
+             })
+        .def_property_readonly("data", &Record::data, "Every dataset: {name: array}.")
+        .def_property_readonly("metadata", &Record::metadata,
+                               "Run metadata: schema_version, program, program_version, "
+                               "start_time, config_name, operator_notes, dt [s], run, numerics.")
+        .def_property_readonly("configuration", &Record::configuration,
+                               "The run's configuration as a dict (its JSON shape).")
+        .def_property_readonly("alarms", &Record::alarms,
+                               "Alarms in the order raised: dicts of time [s], step, severity, "
+                               "kind, message, code, args.")
+        .def_property_readonly("events", &Record::events,
+                               "Update events (/updating/events): dicts of step, time [s], "
+                               "element, values {parameter: value}, decision, proposal.")
+        .def_property_readonly("notes", &Record::notes,
+                               "Operator notes: dicts of time [s], step, text.")
+        .def_property_readonly("elements", &Record::elements,
+                               "Elements: dicts of name, type, experimental, nonlinear, "
+                               "deformation_unit, force_unit.")
+        .def_property_readonly("sites", &Record::sites, "The sites of the experimental elements.")
+        .def_property_readonly("dofs", &Record::dofs, "The DOF names.")
+        .def_property_readonly("updating", &Record::updating,
+                               "None, or {specimen, method, parameters} of online updating.")
+        .def("refresh", &Record::refresh,
+             "Read rows and alarms a running test flushed since; returns the number of new rows.")
+        .def("__repr__", [](const Record& r) {
+            return "hsmu.Record('" + r.path() + "', rows=" + std::to_string(r.rows()) + ")";
+        });
+}
+
+} // namespace hsmu::python
