@@ -1,6 +1,7 @@
 #include "comms/controller/ControllerServer.h"
 
 #include "comms/controller/ControllerSession.h"
+#include "comms/LogText.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
@@ -153,7 +154,7 @@ struct ControllerServer::Impl final : SessionHost {
                 index = static_cast<int>(i);
         if (index < 0 || stations.empty())
             return refuse(ErrorCode::UnknownElement,
-                          "this controller has no specimen named '" + hello.element + "'");
+                          "this controller has no specimen named '" + logText(hello.element, 64) + "'");
         if (hasOwner && owner != hello.sessionId && ownerConnected())
             return refuse(ErrorCode::Busy,
                           "another console session is running a test on this controller "
