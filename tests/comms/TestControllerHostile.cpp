@@ -13,6 +13,7 @@
 #include <QDeadlineTimer>
 #include <QDir>
 #include <QProcess>
+#include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -90,6 +91,7 @@ private slots:
         m_config = writeConfig(m_dir.path(), "c3.json", condition3(1.0));
         m_tokenFile = m_dir.filePath("token");
         std::ofstream(m_tokenFile.toStdString()) << "s3cret\n";
+        QFile::setPermissions(m_tokenFile, QFile::ReadOwner | QFile::WriteOwner); // 0600
     }
 
     void nonReadingClientIsDropped() {
