@@ -10,6 +10,7 @@
 #include "core/record/RecordSchema.h"
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <ctime>
 
@@ -97,7 +98,11 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     const h5::Id fapl = h5::check(H5Pcreate(H5P_FILE_ACCESS), w, "cannot make a property list");
     h5::check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST), w,
               "cannot select the latest file format");
-    file = h5::check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), w,
+    // Created under a temporary name in the same folder and renamed (atomically) once its
+    // header is on disk: a file at `path` always reads, even after a kill -9 at any moment
+    // (issue 26, D10). The open handle follows the rename.
+    const std::string partial = path + ".partial";
+    file = h5::check(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), w,
                      "cannot be created");
     const hid_t root = file.get();
     h5::writeAttr(root, "schema_version", recordschema::kVersion, w);
@@ -193,6 +198,11 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     createLogs(root);
     h5::check(H5Fflush(root, H5F_SCOPE_GLOBAL), w, "cannot be flushed");
     h5::check(H5Fstart_swmr_write(root), w, "cannot start SWMR writing");
+    std::error_code ec;
+    std::filesystem::rename(partial, path, ec);
+    if (ec)
+        throw RecordError(path + ": cannot be created (renaming " + partial + ": " +
+                          ec.message() + ")");
 }
 
 void RecordWriter::Impl::createUpdating(hid_t root) {
