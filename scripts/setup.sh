@@ -14,6 +14,7 @@ packages=(
   libeigen3-dev libboost-dev libboost-system-dev libhdf5-dev hdf5-tools nlohmann-json3-dev
   libbenchmark-dev xvfb xauth
   fonts-wqy-microhei  # Chinese glyphs for the zh_CN console and its screenshots
+  clang libclang-rt-14-dev  # the libFuzzer targets (tests/fuzz), run by ctest when present
 )
 # The real OpenSees 3.8 + OpenFresco 2.8 the pairing tests run (../shared/tools/opensees, present
 # in CI, absent on a user's machine): its runtime libraries.
