@@ -10,7 +10,8 @@ namespace hsmu::comms {
 
 const char* ControllerCommandLine::usage() {
     return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR [--insecure-plaintext]] "
-           "[--pace realtime|fast] [--token-file F] [--state-file FILE | --no-state-file] [--quiet]\n"
+           "[--pace realtime|fast] [--token-file F] [--state-file FILE | --no-state-file] "
+           "[--quiet]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "  --config FILE   the console's test configuration (JSON) or a preset name\n"

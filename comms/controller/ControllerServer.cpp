@@ -1,7 +1,7 @@
 #include "comms/controller/ControllerServer.h"
 
-#include "comms/controller/ControllerSession.h"
 #include "comms/LogText.h"
+#include "comms/controller/ControllerSession.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
@@ -36,7 +36,7 @@ constexpr std::size_t kMaxPending = 16;
 /// address's failures: wrong guesses from the same host or NAT never keep the console out.
 constexpr int kMaxTokenFailures = 5;
 constexpr auto kTokenWindow = std::chrono::seconds(10);
-constexpr double kLateRefusal = 1.0; // [s]
+constexpr double kLateRefusal = 1.0;                   // [s]
 constexpr auto kSpin = std::chrono::microseconds(100); // real-time pace: see waitTick()
 }
 
@@ -142,8 +142,8 @@ struct ControllerServer::Impl final : SessionHost {
         return false;
     }
 
-    std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello,
-                                  HelloAckMsg& ack, double& delay) override {
+    std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello, HelloAckMsg& ack,
+                                  double& delay) override {
         auto refuse = [&](ErrorCode c, std::string why) {
             ++stats.sessionsRefused;
             log("refused " + s.peer() + ": " + why);
@@ -168,8 +168,8 @@ struct ControllerServer::Impl final : SessionHost {
             if (stations[i]->name() == hello.element)
                 index = static_cast<int>(i);
         if (index < 0 || stations.empty())
-            return refuse(ErrorCode::UnknownElement,
-                          "this controller has no specimen named '" + logText(hello.element, 64) + "'");
+            return refuse(ErrorCode::UnknownElement, "this controller has no specimen named '" +
+                                                         logText(hello.element, 64) + "'");
         if (hasOwner && owner != hello.sessionId && ownerConnected())
             return refuse(ErrorCode::Busy,
                           "another console session is running a test on this controller "

@@ -1,9 +1,9 @@
 #include "core/config/ConfigLoader.h"
-#include "core/config/NumericalSite.h"
-#include "core/config/UpdatingConfig.h"
 #include "core/config/ConfigUnits.h"
 #include "core/config/JsonNesting.h"
+#include "core/config/NumericalSite.h"
 #include "core/config/RthsConfig.h"
+#include "core/config/UpdatingConfig.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"

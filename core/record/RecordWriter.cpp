@@ -10,9 +10,9 @@
 #include "core/record/RecordSchema.h"
 
 #include <chrono>
-#include <filesystem>
 #include <cmath>
 #include <ctime>
+#include <filesystem>
 
 namespace hsmu {
 
@@ -201,8 +201,8 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     std::error_code ec;
     std::filesystem::rename(partial, path, ec);
     if (ec)
-        throw RecordError(path + ": cannot be created (renaming " + partial + ": " +
-                          ec.message() + ")");
+        throw RecordError(path + ": cannot be created (renaming " + partial + ": " + ec.message() +
+                          ")");
 }
 
 void RecordWriter::Impl::createUpdating(hid_t root) {

@@ -26,8 +26,8 @@ std::optional<std::string> readSecretFile(const std::string& path, std::string& 
     }
     std::string secret;
     std::getline(in, secret);
-    while (!secret.empty() && (secret.back() == '\r' || secret.back() == ' ' ||
-                               secret.back() == '\t'))
+    while (!secret.empty() &&
+           (secret.back() == '\r' || secret.back() == ' ' || secret.back() == '\t'))
         secret.pop_back();
     if (secret.empty() || secret.size() > 1024) {
         error = path + ": the token file's first line must hold a token of 1..1024 bytes";

@@ -1,8 +1,8 @@
 #include "gui/cli/RunOptions.h"
 
+#include "core/util/SecretFile.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/OverrideOptions.h"
-#include "core/util/SecretFile.h"
 
 #include <QCommandLineParser>
 #include <QTextStream>
@@ -49,8 +49,8 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
         QStringLiteral("mode"));
     p.addOption(outOpt);
     overrides.addTo(p);
-    p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, tokenFileOpt, reconnectOpt,
-                  approvalOpt});
+    p.addOptions(
+        {unstableOpt, plotsOpt, controllerOpt, tokenOpt, tokenFileOpt, reconnectOpt, approvalOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed;
     const QStringList pos = p.positionalArguments();

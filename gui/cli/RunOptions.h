@@ -1,7 +1,8 @@
 #pragma once
 // RunOptions: the arguments of `hsmu run` (see RunCommand.h and docs/cli.md):
 //   CONFIG --out DIR [--ground-motion FILE] [--scale S] [--dt DT] [--duration T]
-//   [--allow-unstable] [--plots] [--controller builtin|tcp://|simapp://|generictcp://HOST:PORT] [--token-file F]
+//   [--allow-unstable] [--plots] [--controller builtin|tcp://|simapp://|generictcp://HOST:PORT]
+//   [--token-file F]
 //   [--reconnect N] [--approval manual|approveAll|rejectAll]
 // Thread rules: plain data; parse() on the main thread.
 

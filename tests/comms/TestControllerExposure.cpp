@@ -89,8 +89,8 @@ private slots:
     }
 
     void openFrescoWarnsBeyondLoopback() {
-        ControllerProcess ctl({"--config", m_config, "--pace", "fast", "--protocol", "simapp",
-                               "--bind", "0.0.0.0"});
+        ControllerProcess ctl(
+            {"--config", m_config, "--pace", "fast", "--protocol", "simapp", "--bind", "0.0.0.0"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         ctl.stop();
         QVERIFY2(ctl.log().contains("warning") && ctl.log().contains("no security") &&
@@ -99,9 +99,8 @@ private slots:
     }
 
     void tokenFileReadableByOthersIsRefused() {
-        for (const auto mode :
-             {QFile::ReadOwner | QFile::WriteOwner | QFile::ReadOther,
-              QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup}) {
+        for (const auto mode : {QFile::ReadOwner | QFile::WriteOwner | QFile::ReadOther,
+                                QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup}) {
             const QString path = tokenFile("open-token", mode);
             const auto [code, out] = runToExit(
                 {"--config", m_config, "--port", "0", "--pace", "fast", "--token-file", path});

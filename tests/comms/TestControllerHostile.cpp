@@ -12,8 +12,8 @@
 
 #include <QDeadlineTimer>
 #include <QDir>
-#include <QProcess>
 #include <QFile>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 

@@ -100,14 +100,14 @@ private slots:
             RawPeer p;
             QVERIFY2(p.socket.connect("127.0.0.1", ctl.port(), kWait, p.error), p.error.c_str());
             p.socket.close(); // no header
-            RawPeer q; // the server is free again once the first is refused
+            RawPeer q;        // the server is free again once the first is refused
             QVERIFY2(q.socket.connect("127.0.0.1", ctl.port(), kWait, q.error), q.error.c_str());
             QVERIFY(q.send(header({1, 0, 0, 0, 0, 1, 0, 0, 1, 0, 256})));
             QVERIFY(q.send(frame({6.0}, 256)));
             QVERIFY2(q.receive(256), q.error.c_str());
             ctl.stop();
-            QVERIFY2(ctl.log().contains(QRegularExpression(
-                         "refused 127\\.0\\.0\\.1:[0-9]+: no sizes header")),
+            QVERIFY2(ctl.log().contains(
+                         QRegularExpression("refused 127\\.0\\.0\\.1:[0-9]+: no sizes header")),
                      qPrintable(ctl.log()));
         }
     }

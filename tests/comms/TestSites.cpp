@@ -14,8 +14,8 @@
 #include "ControllerProcess.h"
 #include "LinkFixture.h"
 
-#include <QTemporaryDir>
 #include <QFile>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>

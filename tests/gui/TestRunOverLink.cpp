@@ -7,9 +7,9 @@
 
 #include <QDeadlineTimer>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include <QFile>
 #include <QtTest>
 
 #include <cmath>
