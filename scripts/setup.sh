@@ -15,6 +15,7 @@ packages=(
   libbenchmark-dev xvfb xauth
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module hsmu (docs/python.md)
   fonts-wqy-microhei  # Chinese glyphs for the zh_CN console and its screenshots
+  clang libclang-rt-14-dev  # the libFuzzer targets (tests/fuzz), run by ctest when present
 )
 # The real OpenSees 3.8 + OpenFresco 2.8 the pairing tests run (../shared/tools/opensees, present
 # in CI, absent on a user's machine): its runtime libraries.

@@ -1273,8 +1273,16 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Write PNG plots.</translation>
     </message>
     <message>
-        <source>Shared secret for the controller.</source>
-        <translation>Shared secret for the controller.</translation>
+        <source>File whose first line is the controller's shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</source>
+        <translation>File whose first line is the controller's shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</translation>
+    </message>
+    <message>
+        <source>--token is not accepted: arguments show in ps; put the token in a file (--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN</source>
+        <translation>--token is not accepted: arguments show in ps; put the token in a file (--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file: %1</translation>
     </message>
     <message>
         <source>After a lost link or a timeout, resume (and reconnect) up to N times before giving up (default 0: hold and exit 2).</source>

@@ -1273,8 +1273,16 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Escribe gráficas PNG.</translation>
     </message>
     <message>
-        <source>Shared secret for the controller.</source>
-        <translation>Secreto compartido con el controlador.</translation>
+        <source>File whose first line is the controller's shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</source>
+        <translation>Archivo cuya primera línea es el secreto compartido con el controlador (legible solo por usted; si no, la variable de entorno HSMU_CONTROLLER_TOKEN).</translation>
+    </message>
+    <message>
+        <source>--token is not accepted: arguments show in ps; put the token in a file (--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN</source>
+        <translation>--token no se acepta: los argumentos se ven en ps; ponga el token en un archivo (--token-file ARCHIVO) o en la variable de entorno HSMU_CONTROLLER_TOKEN</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file: %1</translation>
     </message>
     <message>
         <source>After a lost link or a timeout, resume (and reconnect) up to N times before giving up (default 0: hold and exit 2).</source>

@@ -1273,8 +1273,16 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>输出 PNG 图表。</translation>
     </message>
     <message>
-        <source>Shared secret for the controller.</source>
-        <translation>与控制器共享的密钥。</translation>
+        <source>File whose first line is the controller's shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</source>
+        <translation>首行为与控制器共享密钥的文件（仅限本人可读；否则使用环境变量 HSMU_CONTROLLER_TOKEN）。</translation>
+    </message>
+    <message>
+        <source>--token is not accepted: arguments show in ps; put the token in a file (--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN</source>
+        <translation>不接受 --token：命令行参数在 ps 中可见；请将令牌放入文件（--token-file 文件）或环境变量 HSMU_CONTROLLER_TOKEN</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file：%1</translation>
     </message>
     <message>
         <source>After a lost link or a timeout, resume (and reconnect) up to N times before giving up (default 0: hold and exit 2).</source>

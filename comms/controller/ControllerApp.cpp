@@ -2,6 +2,7 @@
 
 #include "comms/controller/ControllerSettings.h"
 #include "core/config/ConfigLoader.h"
+#include "core/util/SecretFile.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -16,22 +17,17 @@ ControllerApp::~ControllerApp() = default;
 
 namespace {
 
-/// The token: the first line of tokenFile, else HSMU_CONTROLLER_TOKEN, else "" (none).
+/// The token: the first line of tokenFile (readSecretFile), else HSMU_CONTROLLER_TOKEN, else
+/// "" (none).
 bool readToken(const std::string& tokenFile, std::string& token, std::string& error) {
     token.clear();
     if (!tokenFile.empty()) {
-        std::ifstream in(tokenFile);
-        if (!in) {
-            error = tokenFile + ": cannot read the token file (--token-file)";
+        const auto secret = readSecretFile(tokenFile, error);
+        if (!secret) {
+            error += " (--token-file)";
             return false;
         }
-        std::getline(in, token);
-        while (!token.empty() && (token.back() == '\r' || token.back() == ' '))
-            token.pop_back();
-        if (token.empty()) {
-            error = tokenFile + ": the token file's first line is empty (--token-file)";
-            return false;
-        }
+        token = *secret;
         return true;
     }
     if (const char* env = std::getenv("HSMU_CONTROLLER_TOKEN"))
@@ -115,6 +111,32 @@ bool ControllerApp::start(std::string& error) {
                          "%s; --no-state-file, or delete it, for a fresh specimen)\n",
                          st->name().c_str(), static_cast<unsigned long long>(st->committedSteps()),
                          m_cmd.state.c_str());
+    const bool exposed = !ControllerCommandLine::isLoopback(m_cmd.bind);
+    if (exposed && protocol == "native" && !m_cmd.insecurePlaintext) {
+        m_usageRefused = true;
+        error = "--bind " + m_cmd.bind +
+                " is not a loopback address, and the native protocol is plaintext: the token "
+                "and every command would cross the network in clear, readable and forgeable on "
+                "the path. This build has no TLS: keep --bind 127.0.0.1 and tunnel the port "
+                "(stunnel or ssh -L; docs/security.md), or pass --insecure-plaintext to take "
+                "that risk on a network you trust";
+        return false;
+    }
+    if (exposed && protocol == "native")
+        std::fprintf(stderr,
+                     "hsmu-controller: --insecure-plaintext: the native protocol runs in clear "
+                     "on %s (token and commands readable and forgeable on the path)%s\n",
+                     m_cmd.bind.c_str(),
+                     token.empty() ? "; and no token: anyone who reaches the port can command "
+                                     "the specimen"
+                                   : "");
+    if (exposed && protocol != "native")
+        std::fprintf(stderr,
+                     "hsmu-controller: warning: the OpenFresco protocols carry no security at "
+                     "all (no token, no encryption) and %s is not a loopback address: anyone "
+                     "who reaches the port can command the specimen; listen on 127.0.0.1 and "
+                     "tunnel it (docs/security.md)\n",
+                     m_cmd.bind.c_str());
     const std::size_t count = stations.size();
     std::string what;
     if (protocol != "native") {

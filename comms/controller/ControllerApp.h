@@ -29,8 +29,12 @@ public:
     /// Serve until SIGINT / SIGTERM; returns the process exit code.
     int run();
     std::uint16_t port() const;
+    /// After a failed start(): whether it was the command line's fault (exit code 2), e.g. a
+    /// non-loopback --bind for the plaintext native protocol without --insecure-plaintext.
+    bool usageRefused() const { return m_usageRefused; }
 
 private:
+    bool m_usageRefused = false;
     ControllerCommandLine m_cmd;
     std::unique_ptr<StateJournal> m_journal;
     std::unique_ptr<ControllerServer> m_server;

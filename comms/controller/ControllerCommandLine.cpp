@@ -1,5 +1,7 @@
 #include "comms/controller/ControllerCommandLine.h"
 
+#include <boost/asio/ip/address.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
@@ -7,15 +9,21 @@
 namespace hsmu::comms {
 
 const char* ControllerCommandLine::usage() {
-    return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR] "
-           "[--pace realtime|fast] [--token-file F] [--state-file FILE | --no-state-file] [--quiet]\n"
+    return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR [--insecure-plaintext]] "
+           "[--pace realtime|fast] [--token-file F] [--state-file FILE | --no-state-file] "
+           "[--quiet]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "  --config FILE   the console's test configuration (JSON) or a preset name\n"
            "                  (e.g. paper-condition-3); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
            "  --port PORT     TCP port, 0 = any free port (printed on stdout)\n"
-           "  --bind ADDR     address to listen on (default 127.0.0.1)\n"
+           "  --bind ADDR     address to listen on (default 127.0.0.1); the native protocol\n"
+           "                  is plaintext: a non-loopback address is refused unless\n"
+           "                  --insecure-plaintext (docs/security.md: tunnel it instead)\n"
+           "  --insecure-plaintext\n"
+           "                  accept a non-loopback --bind for the plaintext native\n"
+           "                  protocol (the token and commands cross the network in clear)\n"
            "  --pace P        realtime (wall clock, default) or fast (simulated clock)\n"
            "  --token-file F  file holding the shared secret the console's hello must carry\n"
            "                  (or the environment variable HSMU_CONTROLLER_TOKEN; never an\n"
@@ -107,6 +115,8 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
         } else if (a == "--bind") {
             if (!value(c.bind))
                 return std::nullopt;
+        } else if (a == "--insecure-plaintext") {
+            c.insecurePlaintext = true;
         } else if (a == "--token") {
             error = "--token is not accepted: arguments show in ps; put the token in a file "
                     "(--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN";
@@ -203,6 +213,17 @@ std::string ControllerCommandLine::resolveConfig(const std::string& configOrPres
         if (fs::exists(d / file, ec))
             return (d / file).string();
     return configOrPreset; // the loader's error names it
+}
+
+bool ControllerCommandLine::isLoopback(const std::string& address) {
+    boost::system::error_code ec;
+    const auto a = boost::asio::ip::make_address(address, ec);
+    if (ec)
+        return false;
+    if (a.is_v6() && a.to_v6().is_v4_mapped())
+        return boost::asio::ip::make_address_v4(boost::asio::ip::v4_mapped, a.to_v6())
+            .is_loopback();
+    return a.is_loopback();
 }
 
 } // namespace hsmu::comms

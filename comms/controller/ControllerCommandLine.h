@@ -7,7 +7,10 @@
 //                   [--realtime-priority P]
 //
 // --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
-// --bind defaults to 127.0.0.1: exposing the controller is an explicit choice.
+// --bind defaults to 127.0.0.1: exposing the controller is an explicit choice. The native
+// protocol is plaintext: on a non-loopback address it is refused (ControllerApp, exit 2)
+// unless --insecure-plaintext takes the risk; the OpenFresco protocols warn there
+// (docs/security.md).
 // The token comes from --token-file (its first line) or HSMU_CONTROLLER_TOKEN, never from an
 // argument (ps shows arguments to every user); --token is refused with that sentence.
 // The state file (StateJournal: a restarted controller continues every specimen) is kept by
@@ -29,6 +32,7 @@ struct ControllerCommandLine {
     std::uint16_t port = 0;
     bool fast = false; ///< --pace fast: simulated clock (as fast as possible)
     std::string tokenFile; ///< --token-file: the token is its first line
+    bool insecurePlaintext = false; ///< native protocol in clear on a non-loopback address
     std::string state;        ///< --state-file (or --state): the journal; "" = default or none
     bool noStateFile = false; ///< --no-state-file: no journal at all
     bool quiet = false;
@@ -43,6 +47,9 @@ struct ControllerCommandLine {
     static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,
                                                       std::string& error);
     static const char* usage();
+    /// Whether address is a loopback address (127.0.0.0/8, ::1, ::ffff:127.x); false for a
+    /// text that is not an IP address.
+    static bool isLoopback(const std::string& address);
     /// A preset name (no '/', no such file) -> PREFIX/share/hsmu/presets/NAME.json next to
     /// the installed program, else the source tree's resources/presets/NAME.json; otherwise
     /// returned unchanged. parse() applies it to --config.

@@ -1,11 +1,13 @@
 #include "comms/controller/ControllerServer.h"
 
+#include "comms/LogText.h"
 #include "comms/controller/ControllerSession.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/signal_set.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -28,10 +30,13 @@ namespace {
 /// is closed for the newcomer, so idle strangers can never lock out a token holder (each
 /// must send its hello within 5 s anyway). Admitted connections are not counted.
 constexpr std::size_t kMaxPending = 16;
-/// Failed tokens: at most kMaxTokenFailures per peer address in kTokenWindow; past that the
-/// address's hellos are refused without comparing the token until the window has passed.
+/// Failed tokens: past kMaxTokenFailures per peer address in kTokenWindow, each further wrong
+/// token is refused only after kLateRefusal (the connection held meanwhile), so guessing is
+/// slow; the token is always compared, and the right one is admitted at once and clears the
+/// address's failures: wrong guesses from the same host or NAT never keep the console out.
 constexpr int kMaxTokenFailures = 5;
 constexpr auto kTokenWindow = std::chrono::seconds(10);
+constexpr double kLateRefusal = 1.0;                   // [s]
 constexpr auto kSpin = std::chrono::microseconds(100); // real-time pace: see waitTick()
 }
 
@@ -101,6 +106,14 @@ struct ControllerServer::Impl final : SessionHost {
         }
     }
 
+    /// Compares in a time that does not depend on where the texts first differ.
+    static bool sameSecret(const std::string& a, const std::string& b) {
+        unsigned char diff = a.size() == b.size() ? 0 : 1;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            diff |= static_cast<unsigned char>(a[i] ^ b[i % std::max<std::size_t>(b.size(), 1)]);
+        return diff == 0 && !b.empty();
+    }
+
     static std::string addressOf(const std::string& peer) {
         const auto colon = peer.rfind(':');
         return colon == std::string::npos ? peer : peer.substr(0, colon);
@@ -129,8 +142,8 @@ struct ControllerServer::Impl final : SessionHost {
         return false;
     }
 
-    std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello,
-                                  HelloAckMsg& ack) override {
+    std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello, HelloAckMsg& ack,
+                                  double& delay) override {
         auto refuse = [&](ErrorCode c, std::string why) {
             ++stats.sessionsRefused;
             log("refused " + s.peer() + ": " + why);
@@ -138,22 +151,25 @@ struct ControllerServer::Impl final : SessionHost {
         };
         if (!opt.token.empty()) {
             const std::string address = addressOf(s.peer());
-            if (tokenLocked(address))
-                return refuse(ErrorCode::Unauthorized,
-                              "too many wrong tokens from " + address + "; wait " +
-                                  std::to_string(kTokenWindow.count()) + " s");
-            if (hello.token != opt.token) {
+            if (!sameSecret(hello.token, opt.token)) {
+                const bool locked = tokenLocked(address);
                 tokenFailures[address].push_back(Clock::now());
-                return refuse(ErrorCode::Unauthorized, "wrong token");
+                if (!locked)
+                    return refuse(ErrorCode::Unauthorized, "wrong token");
+                delay = kLateRefusal;
+                return refuse(ErrorCode::Unauthorized,
+                              "wrong token; too many wrong tokens from " + address +
+                                  ": each further one is refused after 1 s");
             }
+            tokenFailures.erase(address);
         }
         int index = hello.element.empty() ? 0 : -1;
         for (std::size_t i = 0; i < stations.size() && index < 0; ++i)
             if (stations[i]->name() == hello.element)
                 index = static_cast<int>(i);
         if (index < 0 || stations.empty())
-            return refuse(ErrorCode::UnknownElement,
-                          "this controller has no specimen named '" + hello.element + "'");
+            return refuse(ErrorCode::UnknownElement, "this controller has no specimen named '" +
+                                                         logText(hello.element, 64) + "'");
         if (hasOwner && owner != hello.sessionId && ownerConnected())
             return refuse(ErrorCode::Busy,
                           "another console session is running a test on this controller "

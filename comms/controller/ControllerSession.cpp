@@ -122,8 +122,9 @@ void ControllerSession::onFrame(const Frame& f) {
             return;
         }
         HelloAckMsg ack;
-        if (auto refusal = m_host.admit(*this, *hello, ack)) {
-            refuse(*refusal);
+        double delay = 0.0;
+        if (auto refusal = m_host.admit(*this, *hello, ack, delay)) {
+            refuseLater(*refusal, delay);
             return;
         }
         m_admitted = true;
@@ -178,6 +179,24 @@ void ControllerSession::refuse(const ErrorMsg& e) {
     m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
         if (!ec)
             self->close();
+    });
+}
+
+void ControllerSession::refuseLater(const ErrorMsg& e, double delay) {
+    if (delay <= 0.0) {
+        refuse(e);
+        return;
+    }
+    if (m_closed || m_closeAfterWrite)
+        return;
+    m_closeAfterWrite = true; // drain the input, stop the idle timer's verdicts
+    m_idle.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(delay)));
+    m_idle.async_wait([self = shared_from_this(), e](const boost::system::error_code& ec) {
+        if (ec || self->m_closed)
+            return;
+        self->m_closeAfterWrite = false;
+        self->refuse(e);
     });
 }
 

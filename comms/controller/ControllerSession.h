@@ -35,8 +35,9 @@ class SessionHost {
 public:
     virtual ~SessionHost() = default;
     /// Admit a hello: fill ack, or return the refusal (the session sends it and closes).
+    /// delay [s]: how long the session waits before it sends the refusal (0: at once).
     virtual std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello,
-                                          HelloAckMsg& ack) = 0;
+                                          HelloAckMsg& ack, double& delay) = 0;
     /// A frame of an admitted session (not Hello, Heartbeat or Bye); the reply, if any.
     virtual std::optional<Message> handle(ControllerSession& s, const Message& m) = 0;
     /// The connection is gone (called once).
@@ -56,6 +57,8 @@ public:
     void send(const Message& m);
     /// Send a final error frame, then close.
     void refuse(const ErrorMsg& e);
+    /// The same after delay [s]; the input is drained, not decoded, meanwhile.
+    void refuseLater(const ErrorMsg& e, double delay);
     /// Close now (pending writes are dropped).
     void close();
 

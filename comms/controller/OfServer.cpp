@@ -1,5 +1,7 @@
 #include "comms/controller/OfServer.h"
 
+#include "comms/LogText.h"
+
 #include "comms/openfresco/OfFrame.h"
 #include "comms/openfresco/OfSocket.h"
 
@@ -19,6 +21,7 @@ namespace {
 
 constexpr double kHeaderTimeout = 10.0; // [s] from connect to the sizes header
 constexpr double kWriteTimeout = 10.0;  // [s] for a reply
+constexpr long kLoggedInitLines = 16;   // GenericTCP init lines logged per session
 
 volatile std::sig_atomic_t g_signalled = 0;
 
@@ -162,7 +165,7 @@ void OfServer::serve(OfSocket& socket) {
     const std::string peer = socket.peer(); // "" once the socket is closed
     if (!acceptHeader(socket, why)) {
         ++m_stats.sessionsRefused;
-        log("refused " + socket.peer() + ": " + why);
+        log("refused " + peer + ": " + why);
         refuse(socket);
         return;
     }
@@ -191,18 +194,27 @@ void OfServer::serve(OfSocket& socket) {
     const bool generic = m_opt.protocol == OfProtocol::GenericTcp;
     bool framesStarted = false;
     bool trialSeen = false; // until the first trial, a getDaqResponse is the console's probe
+    long initLines = 0;
+    const auto countInitLines = [&] {
+        if (initLines > kLoggedInitLines)
+            log(std::to_string(initLines) + " init lines in this session");
+    };
     for (;;) {
         // Sessions may idle between steps for as long as the client computes; a vanished
         // peer is a closed socket (or TCP keep-alive), a stop request cancels the read.
         if (generic && !framesStarted) {
             if (!socket.read(buffer.data(), 8, 0.0, why))
                 break;
-            const bool isFrame = startsWithAction(buffer.data());
+            const bool isFrame = startsWithCode(buffer.data()); // an unknown code too
             const std::size_t total = isFrame ? frameBytes : kInitLineBytes;
             if (total > 8 && !socket.read(buffer.data() + 8, total - 8, 0.0, why))
                 break;
             if (!isFrame) {
-                log("init line: " + decodeInitLine(buffer.data()));
+                // The client's text, escaped and cut, and only the first lines (issue 26, D2).
+                if (++initLines <= kLoggedInitLines)
+                    log("init line: " + logText(decodeInitLine(buffer.data())));
+                else if (initLines == kLoggedInitLines + 1)
+                    log("further init lines not logged (their count is, at the session's end)");
                 continue;
             }
             framesStarted = true;
@@ -213,7 +225,10 @@ void OfServer::serve(OfSocket& socket) {
         decodeFrame(buffer.data(), m_sizes.dataSize, frame);
         const auto action = actionOf(frame[0]);
         if (!action) {
-            log("unknown action code " + std::to_string(frame[0]) + "; session closed");
+            char code[32];
+            std::snprintf(code, sizeof code, "%g", frame[0]);
+            countInitLines();
+            log(std::string("unknown action code ") + code + "; session closed");
             return;
         }
         reply.clear();
@@ -276,6 +291,7 @@ void OfServer::serve(OfSocket& socket) {
             }
         }
     }
+    countInitLines();
     if (m_replaced)
         why = peer + " " + idleText();
     log(socket.closedByPeer() ? "session ended: " + why : "session closed: " + why);
@@ -413,7 +429,7 @@ void OfServer::refuse(OfSocket& socket) {
     for (bool framesStarted = false;;) {
         if (!socket.read(buffer.data(), 8, kRefusedIdle, why))
             break;
-        const bool isFrame = startsWithAction(buffer.data());
+        const bool isFrame = startsWithCode(buffer.data());
         if (!isFrame && (!generic || framesStarted))
             break; // not a frame of these sizes: the stream cannot be followed
         const std::size_t total = isFrame ? frameBytes : kInitLineBytes;

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     hsmu::comms::ControllerApp app(*cmd);
     if (!app.start(error)) {
         std::fprintf(stderr, "hsmu-controller: %s\n", error.c_str());
-        return 1;
+        return app.usageRefused() ? 2 : 1;
     }
     return app.run();
 }

@@ -292,7 +292,11 @@ ControlResult TcpControl::recoverCommit(const std::string& why) {
         if (i > 0)
             std::this_thread::sleep_for(std::chrono::duration<double>(m_opt.reconnectDelay));
         if (ControlResult h = handshake(false); !h.ok) {
-            last = h;
+            last = ControlResult::fault(
+                "link to " + where() + ": the commit of step " + std::to_string(m_committed + 1) +
+                " is in doubt (sent, never acknowledged: the controller may have made it, or may "
+                "still make it when it wakes; the console's records end at step " +
+                std::to_string(m_committed) + "); first: " + why + "; then: " + h.reason);
             if (!m_connectFailed)
                 break;
             continue;

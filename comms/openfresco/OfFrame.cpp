@@ -111,4 +111,10 @@ bool startsWithAction(const std::uint8_t* first8) {
     return actionOf(code).has_value();
 }
 
+bool startsWithCode(const std::uint8_t* first8) {
+    double code;
+    std::memcpy(&code, first8, sizeof code);
+    return code != 0.0 && std::abs(code) < 2147483648.0 && code == std::trunc(code);
+}
+
 } // namespace hsmu::comms::of

@@ -65,5 +65,10 @@ std::string decodeInitLine(const std::uint8_t* bytes);
 /// True when the first 8 bytes of a message are a double holding a valid action code: a data
 /// frame, not an init line (text never starts with the bytes of such a double).
 bool startsWithAction(const std::uint8_t* first8);
+/// True when the first 8 bytes of a message are a double holding a whole, nonzero number of
+/// magnitude below 2^31, known code or not: a data frame (an unknown code is refused as such),
+/// never an init line. A line's text starts with a non-NUL byte, which as the lowest byte of
+/// a double makes it either fractional or >= 2^52; an empty line is all zeros (0.0).
+bool startsWithCode(const std::uint8_t* first8);
 
 } // namespace hsmu::comms::of

@@ -31,6 +31,14 @@ FrameDecoder::Status FrameDecoder::next(Frame& out) {
         const FrameHeader h = readHeader(m_buffer.data() + m_start);
         if (CodecError e = checkHeader(h); !e.ok)
             return fail(std::move(e));
+        if (m_checkSequence && !m_lastSequence && h.sequence != 1u)
+            return fail(CodecError::fail(ErrorCode::ProtocolViolation,
+                                         "sequence number " + std::to_string(h.sequence) +
+                                             " on the first frame (expected 1)"));
+        if (m_checkSequence && m_lastSequence && *m_lastSequence == 0xFFFFFFFFu)
+            return fail(CodecError::fail(ErrorCode::ProtocolViolation,
+                                         "sequence numbers used up (2^32 - 1 frames): "
+                                         "reconnect"));
         if (m_checkSequence && m_lastSequence && h.sequence != *m_lastSequence + 1u)
             return fail(CodecError::fail(ErrorCode::ProtocolViolation,
                                          "sequence number " + std::to_string(h.sequence) +

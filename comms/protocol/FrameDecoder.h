@@ -8,7 +8,8 @@
 // After the first error the decoder stays failed (the connection is to be closed) and
 // next() keeps returning Status::Error.
 // Sequence numbers: when checkSequence is on, every frame must carry the previous one's
-// number + 1 (the first may carry any); a gap is a ProtocolViolation.
+// number + 1 and the first must carry 1 (docs/protocol.md); a gap, another first number or a
+// frame after 0xFFFFFFFF (no wrap to 0) is a ProtocolViolation.
 // Thread rules: one thread at a time.
 
 #include "comms/protocol/FrameCodec.h"

@@ -1,8 +1,9 @@
 #include "core/config/ConfigLoader.h"
-#include "core/config/NumericalSite.h"
-#include "core/config/UpdatingConfig.h"
 #include "core/config/ConfigUnits.h"
+#include "core/config/JsonNesting.h"
+#include "core/config/NumericalSite.h"
 #include "core/config/RthsConfig.h"
+#include "core/config/UpdatingConfig.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/hysteresis/LawFactory.h"
@@ -332,6 +333,13 @@ TestConfig loadConfigFile(const std::string& path)
     if (!in)
         throw ConfigError(path + ": cannot open the configuration file");
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (const auto at = firstTooDeep(text, limits::kMaxJsonDepth))
+        throw ConfigError(
+            path + " line " +
+            std::to_string(1 + std::count(text.begin(),
+                                          text.begin() + static_cast<std::ptrdiff_t>(*at), '\n')) +
+            ": arrays and objects nested deeper than " + std::to_string(limits::kMaxJsonDepth) +
+            " levels");
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);

@@ -1,4 +1,5 @@
 #include "core/config/SiteConfig.h"
+#include "core/util/SecretFile.h"
 
 #include "core/config/JsonCursor.h"
 #include "core/config/TestConfig.h"
@@ -23,15 +24,11 @@ std::optional<double> seconds(const JsonCursor& c, const char* key) {
 }
 
 std::string readToken(const JsonCursor& c, const std::string& path) {
-    std::ifstream in(path);
-    if (!in)
-        c.fail("tokenFile", "a readable file holding the site's token (cannot open " + path + ")");
-    std::string token((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    while (!token.empty() && (token.back() == '\n' || token.back() == '\r' || token.back() == ' '))
-        token.pop_back();
-    if (token.empty() || token.size() > 1024)
-        c.fail("tokenFile", "a token of 1..1024 bytes (" + path + ")");
-    return token;
+    std::string error;
+    const auto token = readSecretFile(path, error);
+    if (!token)
+        c.fail("tokenFile", error);
+    return *token;
 }
 
 } // namespace

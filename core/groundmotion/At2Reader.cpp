@@ -3,6 +3,7 @@
 #include "core/groundmotion/GroundMotionText.h"
 #include "core/util/InputLimits.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -235,7 +236,12 @@ GroundMotion readAt2(const std::filesystem::path& path, std::optional<Accelerati
     motion.name = name;
     motion.source = file.source;
     motion.dt = header.dt;
-    motion.acceleration.reserve(npts);
+    // The header's count is not trusted for the allocation: a few bytes of header may claim
+    // 10^9 points (a fuzzer's finding, issue 26). Each value takes at least 2 bytes of text.
+    std::size_t dataBytes = 0;
+    for (std::size_t index = kHeaderLines; index < lines.size(); ++index)
+        dataBytes += lines[index].size() + 1;
+    motion.acceleration.reserve(std::min(npts, dataBytes / 2 + 1));
     std::vector<double> values;
     for (std::size_t index = kHeaderLines; index < lines.size(); ++index) {
         const int lineNumber = static_cast<int>(index + 1);

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <filesystem>
 
 namespace hsmu {
 
@@ -127,7 +128,11 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         long(recordschema::chunkRowsFor(int(widest), int(sizeof(double)))) * widest * 8);
     h5::check(H5Pset_cache(fapl.get(), 0, 521, chunkBytes * 3 / 2 + 1, 1.0), w,
               "cannot size the chunk cache");
-    file = h5::check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), w,
+    // Created under a temporary name in the same folder and renamed (atomically) once its
+    // header is on disk: a file at `path` always reads, even after a kill -9 at any moment
+    // (issue 26, D10). The open handle follows the rename.
+    const std::string partial = path + ".partial";
+    file = h5::check(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), w,
                      "cannot be created");
     const hid_t root = file.get();
     h5::writeAttr(root, "schema_version", recordschema::kVersion, w);
@@ -225,6 +230,11 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     createLogs(root);
     h5::check(H5Fflush(root, H5F_SCOPE_GLOBAL), w, "cannot be flushed");
     h5::check(H5Fstart_swmr_write(root), w, "cannot start SWMR writing");
+    std::error_code ec;
+    std::filesystem::rename(partial, path, ec);
+    if (ec)
+        throw RecordError(path + ": cannot be created (renaming " + partial + ": " + ec.message() +
+                          ")");
 }
 
 void RecordWriter::Impl::createUpdating(hid_t root) {

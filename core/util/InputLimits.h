@@ -17,6 +17,9 @@ inline constexpr double kMaxDuration = 86'400.0;
 /// Longest actuator delay and lag time constant [s].
 inline constexpr double kMaxActuatorDelay = 1.0;
 inline constexpr double kMaxActuatorTimeConstant = 10.0;
+/// Deepest nesting of arrays and objects in a JSON configuration (a real one nests < 10;
+/// deeper input could overflow a recursive walk's stack).
+inline constexpr int kMaxJsonDepth = 64;
 /// Largest ground-motion or CSV file read [bytes] (64 MiB).
 inline constexpr std::uint64_t kMaxTextFileBytes = 64ull << 20;
 

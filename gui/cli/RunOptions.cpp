@@ -1,5 +1,6 @@
 #include "gui/cli/RunOptions.h"
 
+#include "core/util/SecretFile.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/OverrideOptions.h"
 
@@ -27,8 +28,15 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
            "controller.protocol, native by default), simapp://HOST:PORT (an OpenFresco SimApp "
            "server) or generictcp://HOST:PORT (a server for OpenFresco's GenericTCP)."),
         QStringLiteral("address"), QStringLiteral("builtin"));
-    const QCommandLineOption tokenOpt(
-        QStringLiteral("token"), tr("Shared secret for the controller."), QStringLiteral("token"));
+    // The token never comes from an argument (ps shows arguments to every user): --token is
+    // kept, hidden, only to refuse it with the way that works (issue 26, D4).
+    QCommandLineOption tokenOpt(QStringLiteral("token"), QString(), QStringLiteral("token"));
+    tokenOpt.setFlags(QCommandLineOption::HiddenFromHelp);
+    const QCommandLineOption tokenFileOpt(
+        QStringLiteral("token-file"),
+        tr("File whose first line is the controller's shared secret (readable by you only; "
+           "else the environment variable HSMU_CONTROLLER_TOKEN)."),
+        QStringLiteral("file"));
     const QCommandLineOption reconnectOpt(
         QStringLiteral("reconnect"),
         tr("After a lost link or a timeout, resume (and reconnect) up to N times before giving "
@@ -51,8 +59,8 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
         QStringLiteral("level"), QStringLiteral("0"));
     p.addOption(outOpt);
     overrides.addTo(p);
-    p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, reconnectOpt, approvalOpt,
-                  csvOpt, compressOpt});
+    p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, tokenFileOpt, reconnectOpt,
+                  approvalOpt, csvOpt, compressOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed;
     const QStringList pos = p.positionalArguments();
@@ -72,7 +80,17 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
     if (!address)
         return tr("--controller: %1").arg(QString::fromStdString(error));
     options.controller = *address;
-    options.token = p.value(tokenOpt);
+    if (p.isSet(tokenOpt))
+        return tr("--token is not accepted: arguments show in ps; put the token in a file "
+                  "(--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN");
+    if (p.isSet(tokenFileOpt)) {
+        const auto secret = readSecretFile(p.value(tokenFileOpt).toStdString(), error);
+        if (!secret)
+            return tr("--token-file: %1").arg(QString::fromStdString(error));
+        options.token = QString::fromStdString(*secret);
+    } else {
+        options.token = qEnvironmentVariable("HSMU_CONTROLLER_TOKEN");
+    }
     bool ok = false;
     options.reconnect = p.value(reconnectOpt).toInt(&ok);
     if (!ok || options.reconnect < 0)

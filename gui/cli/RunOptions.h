@@ -1,9 +1,9 @@
 #pragma once
 // RunOptions: the arguments of `hsmu run` (see RunCommand.h and docs/cli.md):
 //   CONFIG --out DIR [--ground-motion FILE] [--scale S] [--dt DT] [--duration T]
-//   [--allow-unstable] [--plots] [--controller builtin|tcp://|simapp://|generictcp://HOST:PORT] [--token T]
-//   [--reconnect N] [--approval manual|approveAll|rejectAll] [--csv auto|all|none]
-//   [--compress LEVEL]
+//   [--allow-unstable] [--plots] [--controller builtin|tcp://|simapp://|generictcp://HOST:PORT]
+//   [--token-file F] [--reconnect N] [--approval manual|approveAll|rejectAll]
+//   [--csv auto|all|none] [--compress LEVEL]
 // Thread rules: plain data; parse() on the main thread.
 
 #include "comms/LinkAddress.h"

@@ -12,6 +12,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 
+#include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -140,6 +141,7 @@ private slots:
         // The token comes from a file (never argv, which ps shows).
         const QString tokenFile = m_dir.filePath("token.txt");
         std::ofstream(tokenFile.toStdString()) << "open sesame\n";
+        QFile::setPermissions(tokenFile, QFile::ReadOwner | QFile::WriteOwner); // 0600
         ControllerProcess ctl({"--config", QString::fromStdString(m_config), "--pace", "fast",
                                "--token-file", tokenFile, "--quiet"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));

@@ -39,7 +39,8 @@ constexpr double kIdle = 0.5; // [s] the host's idle timeout
 struct Host final : SessionHost {
     bool isClosed = false;
     std::vector<std::string> drops;
-    std::optional<ErrorMsg> admit(ControllerSession&, const HelloMsg&, HelloAckMsg&) override {
+    std::optional<ErrorMsg> admit(ControllerSession&, const HelloMsg&, HelloAckMsg&,
+                                  double&) override {
         return std::nullopt;
     }
     std::optional<Message> handle(ControllerSession&, const Message&) override {

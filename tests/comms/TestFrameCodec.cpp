@@ -200,6 +200,25 @@ private slots:
         QCOMPARE(d.error().code, ErrorCode::ProtocolViolation);
     }
 
+    // D6 (issue 26): a connection's first frame carries sequence 1 (docs/protocol.md), and
+    // the sequence never wraps from 0xFFFFFFFF to 0.
+    void firstSequenceMustBeOne() {
+        for (const std::uint32_t first : {0u, 2u, 5u, 0xFFFFFFFFu}) {
+            std::vector<std::uint8_t> b;
+            encodeFrame(HeartbeatMsg{1}, first, b);
+            FrameDecoder d;
+            QCOMPARE(decodeAll(d, b), FrameDecoder::Status::Error);
+            QCOMPARE(d.error().code, ErrorCode::ProtocolViolation);
+            QVERIFY2(d.error().reason.find("first frame") != std::string::npos,
+                     d.error().reason.c_str());
+        }
+        std::vector<std::uint8_t> ok;
+        encodeFrame(HeartbeatMsg{1}, 1, ok);
+        encodeFrame(HeartbeatMsg{2}, 2, ok);
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, ok), FrameDecoder::Status::NeedMore);
+    }
+
     void errorIsSticky() {
         FrameDecoder d;
         QCOMPARE(decodeAll(d, header(0, 1, 4, 1, 16)), FrameDecoder::Status::Error);

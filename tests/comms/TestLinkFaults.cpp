@@ -4,6 +4,7 @@
 // and the result equal to the uninterrupted (in-process) run. A controller restarted without
 // its state file is refused: resuming would be a jump.
 #include "comms/link/ControlFactory.h"
+#include "comms/link/TcpControl.h"
 
 #include "ControllerProcess.h"
 #include "LinkFixture.h"
@@ -11,6 +12,8 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <csignal>
 
 using namespace hsmu;
 using namespace hsmu::comms;
@@ -108,6 +111,36 @@ private slots:
         QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
         ctl.stop();
         QVERIFY(ctl.log().contains("continues after step 120"));
+    }
+
+    // D8 (issue 26): the controller stopped (SIGSTOP) after the step's measurement, before
+    // its commit: the commit is sent but never acknowledged, and the reconnect's hello gets no
+    // answer. The fault must say that this commit is in doubt (the controller may run it when
+    // it wakes: the record ends a step before) and name the first cause, not only the hello.
+    void stoppedControllerLeavesTheCommitInDoubt() {
+        ControllerProcess ctl({"--config", QString::fromStdString(m_config), "--pace", "fast"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        TcpControlOptions o;
+        o.connectTimeout = 1.0;
+        o.stepDeadline = 1.0;
+        o.silenceTimeout = 1.0;
+        o.reconnectAttempts = 1;
+        TcpControl control("127.0.0.1", ctl.port(), m_cfg.elements[0].name,
+                           m_cfg.elements[0].limits, o);
+        QVERIFY(control.prepare(m_cfg.analysis.dt).ok);
+        QVERIFY(control.setTarget(0.001).ok);
+        ControlMeasurement m;
+        QVERIFY(control.measure(m).ok);
+        QVERIFY(::kill(static_cast<pid_t>(ctl.pid()), SIGSTOP) == 0);
+        const ControlResult r = control.commit();
+        ::kill(static_cast<pid_t>(ctl.pid()), SIGCONT);
+        QVERIFY(!r.ok);
+        QVERIFY2(r.reason.find("commit of step 1 is in doubt") != std::string::npos &&
+                     r.reason.find("records end at step 0") != std::string::npos &&
+                     r.reason.find("first: ") != std::string::npos &&
+                     r.reason.find("then: ") != std::string::npos,
+                 r.reason.c_str());
+        QCOMPARE(control.committedSteps(), std::uint64_t(0));
     }
 
     void restartWithoutTheStateFileIsNotAJump() {

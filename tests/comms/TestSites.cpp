@@ -14,6 +14,7 @@
 #include "ControllerProcess.h"
 #include "LinkFixture.h"
 
+#include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -119,6 +120,19 @@ private slots:
         QVERIFY(refused([](auto& j) { j["sites"][0]["tokenFile"] = "/nonexistent/t"; },
                         "tokenFile"));
         QVERIFY(refused([](auto& j) { j["sites"][0]["colour"] = 1; }, "colour"));
+        // A token file that other users can read is refused (issue 26, D3); 0600 is read.
+        QTemporaryDir tokens;
+        const std::string open = tokens.filePath("open").toStdString();
+        std::ofstream(open) << "lab-token\n";
+        QFile::setPermissions(QString::fromStdString(open),
+                              QFile::ReadOwner | QFile::WriteOwner | QFile::ReadOther);
+        QVERIFY(refused([&](auto& j) { j["sites"][0]["tokenFile"] = open; },
+                        "readable by other users (mode 0604); a secret others can read is no "
+                        "secret: chmod 600"));
+        QFile::setPermissions(QString::fromStdString(open), QFile::ReadOwner | QFile::WriteOwner);
+        nlohmann::json withToken = twoLabs(1.0);
+        withToken["sites"][0]["tokenFile"] = open;
+        QCOMPARE(parseConfig(withToken, "ok.json").sites[0].token, std::string("lab-token"));
         // An address comms cannot parse is refused when the links are built, naming the site.
         nlohmann::json j = twoLabs(1.0);
         j["sites"][1]["address"] = "tcp://127.0.0.1:99999";

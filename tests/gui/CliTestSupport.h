@@ -20,8 +20,16 @@ struct Result {
     QString out, err;
 };
 
-inline Result hsmu(const QStringList& args, int timeoutMs = 120000) {
+/// env: variables added to the test's own environment for this run.
+inline Result hsmu(const QStringList& args, int timeoutMs = 120000,
+                   const QList<QPair<QString, QString>>& env = {}) {
     QProcess p;
+    if (!env.isEmpty()) {
+        QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
+        for (const auto& [name, value] : env)
+            e.insert(name, value);
+        p.setProcessEnvironment(e);
+    }
     p.start(QStringLiteral(HSMU_EXE), args);
     Result r;
     if (!p.waitForFinished(timeoutMs)) {

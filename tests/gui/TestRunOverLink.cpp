@@ -7,6 +7,7 @@
 
 #include <QDeadlineTimer>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -139,6 +140,54 @@ private slots:
                      r.err.contains(QStringLiteral("127.0.0.1:1")),
                  qPrintable(r.err));
         QVERIFY2(timer.elapsed() < 30000, qPrintable(QString::number(timer.elapsed())));
+    }
+
+    // D4 (issue 26): the console's token, like the controller's, never comes from an argument
+    // (ps shows arguments to every user): --token is refused; --token-file (mode 0600) or
+    // HSMU_CONTROLLER_TOKEN carry it.
+    void tokenComesFromAFileOrTheEnvironment() {
+        QTemporaryDir dir;
+        const QString tokenFile = dir.filePath(QStringLiteral("token"));
+        QFile f(tokenFile);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("lab-secret-7f3a\n");
+        f.close();
+        QFile::setPermissions(tokenFile, QFile::ReadOwner | QFile::WriteOwner);
+        Controller controller(controllerArgs(kConfig, QStringLiteral("fast")) +
+                              QStringList{QStringLiteral("--token-file"), tokenFile});
+        QVERIFY2(controller.start(), qPrintable(controller.log()));
+        const QString address = QStringLiteral("tcp://127.0.0.1:%1").arg(controller.port());
+        const auto run = [&](const QStringList& extra, const QString& out,
+                             const QList<QPair<QString, QString>>& env = {}) {
+            return hsmu(QStringList{QStringLiteral("run"), kConfig, QStringLiteral("--controller"),
+                                    address, QStringLiteral("--duration"), QStringLiteral("0.2"),
+                                    QStringLiteral("--out"), dir.filePath(out)} +
+                            extra,
+                        120000, env);
+        };
+        const Result argv = run({QStringLiteral("--token"), QStringLiteral("lab-secret-7f3a")},
+                                QStringLiteral("argv"));
+        QVERIFY2(argv.exitCode == 1 && argv.err.contains(QStringLiteral("--token-file")) &&
+                     argv.err.contains(QStringLiteral("HSMU_CONTROLLER_TOKEN")) &&
+                     argv.err.contains(QStringLiteral("ps")),
+                 qPrintable(report(argv)));
+        const Result file =
+            run({QStringLiteral("--token-file"), tokenFile}, QStringLiteral("file"));
+        QVERIFY2(file.exitCode == 0, qPrintable(report(file) + controller.log()));
+        const Result env =
+            run({}, QStringLiteral("env"),
+                {{QStringLiteral("HSMU_CONTROLLER_TOKEN"), QStringLiteral("lab-secret-7f3a")}});
+        QVERIFY2(env.exitCode == 0, qPrintable(report(env) + controller.log()));
+        const Result wrong =
+            run({}, QStringLiteral("wrong"),
+                {{QStringLiteral("HSMU_CONTROLLER_TOKEN"), QStringLiteral("guess")}});
+        QVERIFY2(wrong.exitCode == 1 && wrong.err.contains(QStringLiteral("wrong token")),
+                 qPrintable(report(wrong)));
+        QFile::setPermissions(tokenFile, QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup);
+        const Result open =
+            run({QStringLiteral("--token-file"), tokenFile}, QStringLiteral("open"));
+        QVERIFY2(open.exitCode == 1 && open.err.contains(QStringLiteral("chmod 600")),
+                 qPrintable(report(open)));
     }
 
     void linkRunEqualsBuiltinRun() {

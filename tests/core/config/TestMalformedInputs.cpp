@@ -116,6 +116,19 @@ private slots:
             j["groundMotion"] = {{"file", "/dev/zero"}, {"format", "single"}, {"dt", 0.01}};
         }) << "zero,not a regular file";
         QTest::newRow("binary") << QString("{\"name\": \"\x01\x02\x7f\"") << "bad.json";
+        // D1 (issue 26): nesting deep enough to overflow a recursive walk's stack.
+        QTest::newRow("2,000,000 nested arrays")
+            << QString::fromStdString("{\"nest\": " + std::string(2'000'000, '[') +
+                                      std::string(2'000'000, ']') + "}")
+            << "bad.json line 1,nested deeper than 64";
+        {
+            std::string objects;
+            for (int i = 0; i < 200'000; ++i)
+                objects += "{\"a\": ";
+            objects += "1" + std::string(200'000, '}');
+            QTest::newRow("200,000 nested objects")
+                << QString::fromStdString(objects) << "bad.json line 1,nested deeper than 64";
+        }
         QTest::newRow("integer as float") << edit([](json& j) {
             j["structure"]["elements"][0]["specimen"]["seed"] = 1.5;
         }) << "bad.json,specimen.seed,expected an integer";

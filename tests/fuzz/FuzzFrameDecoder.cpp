@@ -3,14 +3,7 @@
 // decoder, and every decoded frame is re-encoded and decoded again: it must give the same
 // message. Any crash, sanitizer report, unbounded buffer or mismatch is a finding.
 //
-// Build and run (clang; only the three protocol sources are needed), either with CMake
-//   (-DCMAKE_CXX_COMPILER=clang++ -DHSMU_BUILD_FUZZERS=ON, target fuzz_frame_decoder) or:
-//   clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -I. -o fuzz_frames
-//       comms/protocol/Protocol.cpp comms/protocol/FrameCodec.cpp
-//       comms/protocol/FrameDecoder.cpp tests/comms/fuzz/FuzzFrameDecoder.cpp
-//   (one command, from the repository root)
-//   mkdir -p /tmp/fuzz-corpus
-//   ./fuzz_frames -max_total_time=600 -max_len=9000 -use_value_profile=1 /tmp/fuzz-corpus
+// Built by tests/fuzz/CMakeLists.txt (clang + libFuzzer); run: scripts/fuzz.sh (docs/security.md).
 #include "comms/protocol/FrameDecoder.h"
 
 #include <cstdlib>
@@ -34,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (st != FrameDecoder::Status::Frame)
                 break;
             std::vector<std::uint8_t> again;
-            encodeFrame(f.message, f.sequence, again);
+            encodeFrame(f.message, 1, again); // a fresh decoder's first frame carries 1
             FrameDecoder d2;
             d2.append(again.data(), again.size());
             Frame g;

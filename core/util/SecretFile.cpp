@@ -1,0 +1,39 @@
+#include "core/util/SecretFile.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sys/stat.h>
+
+namespace hsmu {
+
+std::optional<std::string> readSecretFile(const std::string& path, std::string& error) {
+    std::ifstream in(path);
+    struct stat st {};
+    if (!in || ::stat(path.c_str(), &st) != 0) {
+        error = path + ": cannot read the token file";
+        return std::nullopt;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        error = path + ": the token file is not a regular file";
+        return std::nullopt;
+    }
+    if ((st.st_mode & 077) != 0) {
+        char mode[8];
+        std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+        error = path + ": the token file is readable by other users (mode " + mode +
+                "); a secret others can read is no secret: chmod 600 " + path;
+        return std::nullopt;
+    }
+    std::string secret;
+    std::getline(in, secret);
+    while (!secret.empty() &&
+           (secret.back() == '\r' || secret.back() == ' ' || secret.back() == '\t'))
+        secret.pop_back();
+    if (secret.empty() || secret.size() > 1024) {
+        error = path + ": the token file's first line must hold a token of 1..1024 bytes";
+        return std::nullopt;
+    }
+    return secret;
+}
+
+} // namespace hsmu

@@ -1,0 +1,17 @@
+#pragma once
+// SecretFile: reads a shared secret (a link token) from a file, the one way every program
+// here takes one (hsmu-controller --token-file, hsmu run --token-file, a site's tokenFile).
+// The secret is the file's first line without trailing CR and blanks, 1..1024 bytes. Like
+// ssh with its keys, a file that other users can read or write (any group or other
+// permission bit) is refused with the command that fixes it (issue 26, D3): a secret that
+// others can read is no secret. No Qt; thread rules: none.
+
+#include <optional>
+#include <string>
+
+namespace hsmu {
+
+/// The secret of path, or nullopt with a sentence naming path in error.
+std::optional<std::string> readSecretFile(const std::string& path, std::string& error);
+
+} // namespace hsmu
