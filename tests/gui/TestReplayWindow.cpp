@@ -21,6 +21,7 @@
 #include <QAction>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -238,7 +239,9 @@ private slots:
         for (int p = 0; p < int(plots.size()); ++p) {
             const QCPGraph* g = plots[std::size_t(p)]->overlayGraph(curve);
             QVERIFY(g);
-            QVERIFY(plots[std::size_t(p)]->legend->hasItemWithPlottable(g));
+            // Named in the panel's note under the plots, not in a third legend row (issue 25
+            // item 17, reidentifiedCurveKeepsEveryPlotReadable).
+            QVERIFY(!plots[std::size_t(p)]->legend->hasItemWithPlottable(g));
             QCOMPARE(g->data()->size(), n - 1); // rows 1 .. N-1: row 0 is no measurement
             QCOMPARE(g->data()->at(0)->key, d.time[1]);
             for (int k = 0; k < n - 1; ++k) { // same settings, same history
@@ -250,6 +253,46 @@ private slots:
             QCOMPARE(g->pen().color() == plots[std::size_t(p)]->estimateGraph()->pen().color(),
                      false);
         }
+    }
+
+    // Issue 25 item 17: after Re-identify the k0 plot shrank to a strip and its legend was cut
+    // (a third entry, "re-identified (UKF)", wrapped the legend into rows under a small plot).
+    // In a 1280x720 window every parameter plot keeps its data area, a shown legend lies
+    // whole inside its plot, and the overlaid curve is named once, under the plots.
+    void reidentifiedCurveKeepsEveryPlotReadable() {
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(m_record, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        w->resize(1280, 720);
+        w->show();
+        QVERIFY(QTest::qWaitForWindowExposed(w.get()));
+        QSignalSpy done(w.get(), &ReplayWindow::reidentified);
+        QSignalSpy failed(w.get(), &ReplayWindow::reidentificationFailed);
+        w->reidentify(QString(), QString());
+        QTRY_COMPARE_WITH_TIMEOUT(done.count() + failed.count(), 1, 60000);
+        QVERIFY2(failed.isEmpty(), failed.isEmpty() ? "" : qPrintable(failed[0][0].toString()));
+        QCoreApplication::processEvents();
+        const auto& plots = w->panel().parameterPlots();
+        QVERIFY(plots.size() >= 2);
+        int tallest = 0;
+        for (ParameterPlot* p : plots) {
+            p->replot();
+            tallest = std::max(tallest, p->axisRect()->rect().height());
+        }
+        QVERIFY(tallest >= 20);
+        for (ParameterPlot* p : plots) {
+            const int h = p->axisRect()->rect().height();
+            QVERIFY2(4 * h >= 3 * tallest, qPrintable(QStringLiteral("%1: data area %2 px tall, "
+                                                                     "the tallest %3 px")
+                                                          .arg(p->objectName()).arg(h).arg(tallest)));
+            if (p->legend->visible())
+                QVERIFY2(p->rect().contains(p->legend->outerRect()),
+                         qPrintable(p->objectName() + QStringLiteral(": legend cut")));
+        }
+        auto* note = w->findChild<QLabel*>(QStringLiteral("overlayNote"));
+        QVERIFY(note && note->isVisible());
+        QVERIFY2(note->text().contains(done[0][0].toString().toHtmlEscaped()),
+                 qPrintable(note->text()));
     }
 
     void nelderMeadReidentificationAddsItsCurves() {
