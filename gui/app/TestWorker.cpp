@@ -410,11 +410,14 @@ void TestWorker::runChunk() {
         return;
     const TestSession::Progress p = m_session->advance(kChunkMs * 1e-3);
     publishAlarms();
+    const bool moving = p.status == TestSession::Status::Advanced ||
+                        p.status == TestSession::Status::Waiting;
+    if (m_reconnecting && moving && test().state() != HybridTest::State::Holding)
+        // The policy's reconnect worked (stepping, or waiting for the pace): running, and why.
+        setState(RunState::Running,
+                 tr("link restored: the test resumed after an automatic reconnect"));
     switch (p.status) {
     case TestSession::Status::Advanced:
-        if (m_reconnecting) // the policy's reconnect worked: running again, and why
-            setState(RunState::Running, tr("link restored: the test resumed after an automatic "
-                                           "reconnect"));
         emitProgress(false);
         schedule(0);
         return;

@@ -187,11 +187,22 @@ int PlotStyle::labelRoom(const QCustomPlot& plot, const QCPAxis& axis) {
     // but not past the plot's edges.
     const QRect r = plot.axisRect()->rect();
     if (axis.orientation() == Qt::Vertical) {
-        // Not up into the title row (es: "Error de ajuste [-]" ran over "Error de ajuste del
-        // inspector") nor down into a legend row: the axis rect's own cell.
+        // Up into the title row only beside the title's text (es: "Error de ajuste [-]" ran
+        // over "Error de ajuste del inspector"), never down into a legend row.
         const QRect cell = plot.axisRect()->outerRect();
+        int top = 0, bottom = plot.height();
+        if (const QCPTextElement* title = titleOf(plot)) {
+            const int half = QFontMetrics(title->font()).horizontalAdvance(title->text()) / 2;
+            const int centre = title->outerRect().center().x();
+            const bool beside = axis.axisType() == QCPAxis::atLeft ? centre - half > r.left()
+                                                                   : centre + half < r.right();
+            if (!beside)
+                top = cell.top();
+        }
+        if (plot.legend->visible() && plot.legend->layout() == plot.plotLayout())
+            bottom = cell.bottom();
         const int c = r.center().y();
-        return 2 * std::min(c - cell.top(), cell.bottom() - c);
+        return 2 * std::min(c - top, bottom - c);
     }
     const int c = r.center().x();
     return 2 * std::min(c, plot.width() - c);

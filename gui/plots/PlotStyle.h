@@ -21,9 +21,9 @@ public:
     /// An axis' whole label: apply()'s plots cut a label longer than its axis with "..." at
     /// each replot (the full labels in the plot's tool tip); this gives the label as set.
     static QString axisLabel(const QCustomPlot& plot, const QCPAxis& axis);
-    /// The room [px] a label of axis has along it: centred on the axis, up to the plot's edges
-    /// (horizontal) or to the edges of the axis rect's cell, below the title row and above a
-    /// legend row (vertical).
+    /// The room [px] a label of axis has along it: centred on the axis, up to the plot's edges;
+    /// a vertical label enters the title row only where the title's text is not, and never a
+    /// legend row under the axis rect.
     static int labelRoom(const QCustomPlot& plot, const QCPAxis& axis);
     /// Set (or create) the title row above the axis rect.
     static void setTitle(QCustomPlot& plot, const QString& title);

@@ -7,6 +7,8 @@
 //      its threshold, no threshold field without updating, ranges reset by another preset
 //   17 no clipped text: the safety-limit headers fit their columns (broken into lines), a
 //      plot's y label stays out of its title row (es: fit error), in en, es and zh_CN
+//   15 the Sites box shows each site's whole address (two labs on one host differ only in
+//      the port), en, es, zh_CN
 //   18 a one-column ground-motion file (values only) is asked for its own sample step, apart
 //      from the integration step, and plotted with it
 
@@ -33,6 +35,7 @@
 #include <QTableWidget>
 #include <QLineEdit>
 #include <QScreen>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSettings>
 #include <QStandardPaths>
@@ -149,11 +152,22 @@ private slots:
             15000);
         QCOMPARE(c.state(), RunState::Holding);
         QVERIFY2(lab.start(lab.port()), qPrintable(lab.log()));
-        QTRY_VERIFY_WITH_TIMEOUT(c.state() == RunState::Running && states.back().second.contains(
-                                                                       QStringLiteral("restored")),
-                                 30000);
+        auto restored = [&states] {
+            for (const auto& [s, m] : states)
+                if (s == RunState::Running && m.contains(QStringLiteral("restored")))
+                    return true;
+            return false;
+        };
+        auto history = [&states] {
+            QStringList out;
+            for (const auto& [s, m] : states)
+                out << describe(s) + QStringLiteral(": ") + m;
+            return out.join(QStringLiteral(" | "));
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(restored(), qPrintable(history() + lab.log()), 30000);
         const qint64 resumedAt = c.recordsDelivered();
-        QTRY_VERIFY_WITH_TIMEOUT(c.recordsDelivered() > resumedAt + 20, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            c.recordsDelivered() > resumedAt + 20 || c.state() == RunState::Finished, 10000);
         int automatic = 0;
         for (const Alarm& a : alarms) {
             QVERIFY2(a.kind != AlarmKind::OperatorHold, a.message.c_str());
@@ -303,12 +317,51 @@ private slots:
                 continue;
             const int c = p->axisRect()->rect().center().y();
             const int half = QFontMetrics(p->yAxis->labelFont()).horizontalAdvance(label) / 2;
-            if (c - half < title->outerRect().bottom())
+            // The label's column (left of the data area) and the title's text side by side:
+            // no overlap whatever their heights.
+            const int titleHalf = QFontMetrics(title->font()).horizontalAdvance(title->text()) / 2;
+            const bool besideTitle = title->outerRect().center().x() - titleHalf > p->axisRect()->rect().left();
+            if (!besideTitle && c - half < title->outerRect().bottom())
                 problems << QStringLiteral("%1: y label '%2' reaches up to %3 px, the title ends at %4")
                                 .arg(p->objectName(), label)
                                 .arg(c - half)
                                 .arg(title->outerRect().bottom());
         }
+        QVERIFY2(problems.isEmpty(), qPrintable(language + QStringLiteral(": ") +
+                                                problems.join(QStringLiteral("; "))));
+    }
+
+    void siteAddressesAreWhole_data() { textsAreNotClipped_data(); }
+    // Item 15: the Sites box cut both addresses to "tcp://127.0.0.1:51..." (ports hidden).
+    void siteAddressesAreWhole() {
+        QFETCH(QString, language);
+        QVERIFY(Translations::install(*QCoreApplication::instance(), language) ||
+                language == QLatin1String("en"));
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-bridge-two-labs")));
+        QCoreApplication::processEvents();
+        auto* sites = window.findChild<QTableWidget*>(QStringLiteral("sitesTable"));
+        QVERIFY(sites && sites->isVisible());
+        QVERIFY(sites->rowCount() >= 2);
+        const QFontMetrics fm(sites->font());
+        QStringList problems;
+        for (int row = 0; row < sites->rowCount(); ++row) {
+            const QString address = sites->item(row, 1)->text();
+            // The item view's text margin each side (QCommonStyle: focus frame margin + 1).
+            const int margin =
+                2 * (sites->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, sites) + 1);
+            const int need = fm.horizontalAdvance(address) + margin;
+            if (need > sites->columnWidth(1))
+                problems << QStringLiteral("'%1' needs %2 px, its column has %3")
+                                .arg(address).arg(need).arg(sites->columnWidth(1));
+        }
+        // The other columns stay in view beside it (no sideways scrolling).
+        if (sites->horizontalScrollBar()->maximum() > 0)
+            problems << QStringLiteral("the table scrolls sideways by %1 px")
+                            .arg(sites->horizontalScrollBar()->maximum());
         QVERIFY2(problems.isEmpty(), qPrintable(language + QStringLiteral(": ") +
                                                 problems.join(QStringLiteral("; "))));
     }
