@@ -377,6 +377,7 @@ void fitSingleSample(QCustomPlot& plot) {
                                           : QCPRange(keys.lower - 0.5, keys.lower + 0.5);
         plot.xAxis->setRange(span.contains(keys.lower) ? span
                                                        : QCPRange(keys.lower - 0.5, keys.lower + 0.5));
+        plot.xAxis->setTickLabels(x.isValid()); // nothing to scale by: no made-up numbers
     }
     const QCPRange values = dataSpan(plot, false, found);
     if (found && !(values.size() > 0.0)) {
@@ -388,6 +389,7 @@ void fitSingleSample(QCustomPlot& plot) {
         } else {
             const double half = lo == 0.0 ? 1.0 : 0.5 * std::abs(lo);
             plot.yAxis->setRange(lo - half, lo + half);
+            plot.yAxis->setTickLabels(false); // one value, no reference: nothing to scale by
         }
     }
 }

@@ -34,7 +34,8 @@ public:
     /// horizontal lines (a threshold alone: 0 to the threshold, with a 25 % margin); an axis
     /// with no reference shows no numbers until data arrive. A single sample (one time, or one
     /// value) is not centred in a span of QCustomPlot's choosing (-3..3 s): time goes over the
-    /// setEmptyXRange() span, a flat value over its reference lines.
+    /// setEmptyXRange() span, a flat value over its reference lines (an axis with neither
+    /// shows no numbers).
     static void rescaleWithMargin(QCustomPlot& plot);
     /// The x span an empty plot shows, e.g. a time axis over the loaded test, 0 to T [s];
     /// lower >= upper (or NaN): none.

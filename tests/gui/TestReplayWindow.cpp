@@ -255,6 +255,40 @@ private slots:
         }
     }
 
+    // Issue 25 item 16: at step 0 (one row) the time plots showed -3 to 3 s (QCustomPlot
+    // centres a span of its own on a single sample) and a flat 0 with crammed made-up ticks.
+    // They span the record (0 to its last time) and show no numbers for a flat value.
+    void firstRowShowsTheRecordsTimeSpan() {
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(m_record, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        w->resize(1280, 720);
+        w->show();
+        QVERIFY(QTest::qWaitForWindowExposed(w.get()));
+        w->seek(1);
+        QCOMPARE(w->rowsShown(), 1);
+        w->panel().refreshNow();
+        const QCPGraph* record = w->panel().groundMotion().graph(0);
+        QVERIFY(record->dataCount() > 100);
+        const double end = (record->data()->constEnd() - 1)->key;
+        QVERIFY(std::abs(end - kDuration) < 0.05);
+        for (QCustomPlot* p : std::initializer_list<QCustomPlot*>{
+                 &w->panel().forceHistory(), &w->panel().displacementHistory(),
+                 &w->panel().fitError(), w->panel().parameterPlots().front()}) {
+            QVERIFY2(std::abs(p->xAxis->range().lower) < 1e-9 &&
+                         std::abs(p->xAxis->range().upper - end) < 1e-9,
+                     qPrintable(QStringLiteral("%1: %2..%3 s").arg(p->objectName())
+                                    .arg(p->xAxis->range().lower).arg(p->xAxis->range().upper)));
+        }
+        // The force at step 0 is one value (0): nothing to scale the axis by.
+        QVERIFY(!w->panel().forceHistory().yAxis->tickLabels());
+        // The fit error (one value) spans 0 and its threshold.
+        HistoryPlot& fit = w->panel().fitError();
+        QVERIFY(std::isfinite(fit.threshold()));
+        QVERIFY(fit.yAxis->range().contains(fit.threshold()) && fit.yAxis->range().contains(0.0));
+        QVERIFY(fit.yAxis->range().size() < 3.0 * fit.threshold());
+    }
+
     // Issue 25 item 17: after Re-identify the k0 plot shrank to a strip and its legend was cut
     // (a third entry, "re-identified (UKF)", wrapped the legend into rows under a small plot).
     // In a 1280x720 window every parameter plot keeps its data area, a shown legend lies
