@@ -336,13 +336,15 @@ void showReferences(QCustomPlot& plot) {
     plot.yAxis2->setTickLabels(false);
 }
 
-// The span of the visible data along x (keys) or along the left y axis (values).
-QCPRange dataSpan(QCustomPlot& plot, bool keys, bool& found) {
+// The span of the visible data along x (keys) or along a y axis (values: the left one unless
+// `values` names another).
+QCPRange dataSpan(QCustomPlot& plot, bool keys, bool& found, const QCPAxis* values = nullptr) {
     QCPRange out;
     found = false;
+    const QCPAxis* axis = values ? values : plot.yAxis;
     for (int i = 0; i < plot.plottableCount(); ++i) {
         QCPAbstractPlottable* p = plot.plottable(i);
-        if (!p->visible() || (!keys && p->valueAxis() != plot.yAxis))
+        if (!p->visible() || (!keys && p->valueAxis() != axis))
             continue;
         bool ok = false;
         const QCPRange r = keys ? p->getKeyRange(ok) : p->getValueRange(ok);
@@ -390,6 +392,16 @@ void fitSingleSample(QCustomPlot& plot) {
             const double half = lo == 0.0 ? 1.0 : 0.5 * std::abs(lo);
             plot.yAxis->setRange(lo - half, lo + half);
             plot.yAxis->setTickLabels(false); // one value, no reference: nothing to scale by
+        }
+    }
+    if (plot.yAxis2->visible()) { // e.g. the held ticks beside the tracking: one value, no scale
+        const QCPRange right = dataSpan(plot, false, found, plot.yAxis2);
+        if (!found) // no finite value yet (a control that reports no held ticks): no numbers
+            plot.yAxis2->setTickLabels(false);
+        else if (!(right.size() > 0.0)) {
+            const double half = right.lower == 0.0 ? 1.0 : 0.5 * std::abs(right.lower);
+            plot.yAxis2->setRange(right.lower - half, right.lower + half);
+            plot.yAxis2->setTickLabels(false);
         }
     }
 }

@@ -280,8 +280,12 @@ private slots:
                      qPrintable(QStringLiteral("%1: %2..%3 s").arg(p->objectName())
                                     .arg(p->xAxis->range().lower).arg(p->xAxis->range().upper)));
         }
-        // The force at step 0 is one value (0): nothing to scale the axis by.
+        // The force at step 0 is one value (0): nothing to scale the axis by; nor the held
+        // ticks beside the tracking (none reported yet: QCustomPlot's 0..5 was shown).
         QVERIFY(!w->panel().forceHistory().yAxis->tickLabels());
+        HistoryPlot& tracking = w->panel().tracking();
+        QVERIFY(tracking.yAxis2->visible());
+        QVERIFY(!tracking.yAxis2->tickLabels());
         // The fit error (one value) spans 0 and its threshold.
         HistoryPlot& fit = w->panel().fitError();
         QVERIFY(std::isfinite(fit.threshold()));
