@@ -11,6 +11,8 @@ void ConfigOverrides::applyTo(TestConfig& cfg) const {
         cfg.groundMotion.units.clear();
         cfg.groundMotion.dt = 0.0;
     }
+    if (recordDt)
+        cfg.groundMotion.dt = *recordDt;
     if (scale)
         cfg.groundMotion.scale = *scale;
     if (dt)

@@ -4,6 +4,10 @@
 <context>
     <name>AlarmText</name>
     <message>
+        <source>test resumed after an automatic reconnect</source>
+        <translation>test resumed after an automatic reconnect</translation>
+    </message>
+    <message>
         <source>operator hold</source>
         <translation>operator hold</translation>
     </message>
@@ -648,6 +652,10 @@
 <context>
     <name>ConsoleCommand</name>
     <message>
+        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
+        <translation>The record&apos;s own sample step [s] (a one-column file of values needs it).</translation>
+    </message>
+    <message>
         <source>Load a preset or configuration and start it.</source>
         <translation>Load a preset or configuration and start it.</translation>
     </message>
@@ -872,6 +880,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>OverrideOptions</name>
+    <message>
+        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
+        <translation>The record&apos;s own sample step [s] (a one-column file of values needs it).</translation>
+    </message>
     <message>
         <source>Ground-motion record file.</source>
         <translation>Ground-motion record file.</translation>
@@ -1709,10 +1721,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Force history</translation>
     </message>
     <message>
-        <source>Force</source>
-        <translation>Force</translation>
-    </message>
-    <message>
         <source>Moment history</source>
         <translation>Moment history</translation>
     </message>
@@ -1772,14 +1780,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>hsmu::gui::HysteresisPlot</name>
     <message>
-        <source>Deformation</source>
-        <translation>Deformation</translation>
-    </message>
-    <message>
-        <source>Force</source>
-        <translation>Force</translation>
-    </message>
-    <message>
         <source>%1 (specimen, measured)</source>
         <translation>%1 (specimen, measured)</translation>
     </message>
@@ -1819,6 +1819,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>hsmu::gui::LivePlotsPanel</name>
     <message>
+        <source>Dashed: %1</source>
+        <translation>Dashed: %1</translation>
+    </message>
+    <message>
         <source>PNG image (*.png)</source>
         <translation>PNG image (*.png)</translation>
     </message>
@@ -1853,6 +1857,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>hsmu::gui::MainWindow</name>
+    <message>
+        <source>Enter the record&apos;s sample step below the file.</source>
+        <translation>Enter the record&apos;s sample step below the file.</translation>
+    </message>
     <message>
         <source>HSMU Console</source>
         <translation>HSMU Console</translation>
@@ -2742,6 +2750,18 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::SetupPanel</name>
     <message>
+        <source>Record&apos;s sample step [s]:</source>
+        <translation>Record&apos;s sample step [s]:</translation>
+    </message>
+    <message>
+        <source>The time between the record&apos;s samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</source>
+        <translation>The time between the record&apos;s samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</translation>
+    </message>
+    <message>
+        <source>from the file</source>
+        <translation>from the file</translation>
+    </message>
+    <message>
         <source>No configuration loaded: choose a preset or open a file.</source>
         <translation>No configuration loaded: choose a preset or open a file.</translation>
     </message>
@@ -3043,6 +3063,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
+    <message>
+        <source>link restored: the test resumed after an automatic reconnect</source>
+        <translation>link restored: the test resumed after an automatic reconnect</translation>
+    </message>
     <message>
         <source>emergency hold by the operator</source>
         <translation>emergency hold by the operator</translation>

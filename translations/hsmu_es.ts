@@ -4,6 +4,10 @@
 <context>
     <name>AlarmText</name>
     <message>
+        <source>test resumed after an automatic reconnect</source>
+        <translation>ensayo reanudado tras una reconexión automática</translation>
+    </message>
+    <message>
         <source>operator hold</source>
         <translation>detención por el operador</translation>
     </message>
@@ -648,6 +652,10 @@
 <context>
     <name>ConsoleCommand</name>
     <message>
+        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
+        <translation>Paso de muestreo propio del registro [s] (lo necesita un archivo de una sola columna de valores).</translation>
+    </message>
+    <message>
         <source>HSMU Console: hybrid simulation with online model updating.
 Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --law ... (see hsmu run --help, hsmu compare --help, docs/cli.md).</source>
         <translation>HSMU Console: simulación híbrida con actualización del modelo en línea.
@@ -872,6 +880,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>OverrideOptions</name>
+    <message>
+        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
+        <translation>Paso de muestreo propio del registro [s] (lo necesita un archivo de una sola columna de valores).</translation>
+    </message>
     <message>
         <source>Ground-motion record file.</source>
         <translation>Archivo del registro de movimiento del suelo.</translation>
@@ -1709,10 +1721,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Historia de fuerza</translation>
     </message>
     <message>
-        <source>Force</source>
-        <translation>Fuerza</translation>
-    </message>
-    <message>
         <source>Moment history</source>
         <translation>Historia de momento</translation>
     </message>
@@ -1772,14 +1780,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>hsmu::gui::HysteresisPlot</name>
     <message>
-        <source>Deformation</source>
-        <translation>Deformación</translation>
-    </message>
-    <message>
-        <source>Force</source>
-        <translation>Fuerza</translation>
-    </message>
-    <message>
         <source>%1 (specimen, measured)</source>
         <translation>%1 (probeta, medido)</translation>
     </message>
@@ -1819,6 +1819,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>hsmu::gui::LivePlotsPanel</name>
     <message>
+        <source>Dashed: %1</source>
+        <translation>Discontinua: %1</translation>
+    </message>
+    <message>
         <source>PNG image (*.png)</source>
         <translation>Imagen PNG (*.png)</translation>
     </message>
@@ -1853,6 +1857,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>hsmu::gui::MainWindow</name>
+    <message>
+        <source>Enter the record&apos;s sample step below the file.</source>
+        <translation>Indique el paso de muestreo del registro debajo del archivo.</translation>
+    </message>
     <message>
         <source>HSMU Console</source>
         <translation>HSMU Console</translation>
@@ -2742,6 +2750,18 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 <context>
     <name>hsmu::gui::SetupPanel</name>
     <message>
+        <source>Record&apos;s sample step [s]:</source>
+        <translation>Paso de muestreo del registro [s]:</translation>
+    </message>
+    <message>
+        <source>The time between the record&apos;s samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</source>
+        <translation>El tiempo entre las muestras del registro. Un archivo solo de valores de aceleración (una columna) lo necesita; una cabecera AT2 o una columna de tiempo dan el suyo. No es el paso de integración dt.</translation>
+    </message>
+    <message>
+        <source>from the file</source>
+        <translation>del archivo</translation>
+    </message>
+    <message>
         <source>No configuration loaded: choose a preset or open a file.</source>
         <translation>Ninguna configuración cargada: elija un preajuste o abra un archivo.</translation>
     </message>
@@ -3043,6 +3063,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
+    <message>
+        <source>link restored: the test resumed after an automatic reconnect</source>
+        <translation>enlace restablecido: el ensayo se reanudó tras una reconexión automática</translation>
+    </message>
     <message>
         <source>emergency hold by the operator</source>
         <translation>retención de emergencia por el operador</translation>

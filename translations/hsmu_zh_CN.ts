@@ -4,6 +4,10 @@
 <context>
     <name>AlarmText</name>
     <message>
+        <source>test resumed after an automatic reconnect</source>
+        <translation>自动重连后试验继续</translation>
+    </message>
+    <message>
         <source>operator hold</source>
         <translation>操作员暂停</translation>
     </message>
@@ -648,6 +652,10 @@
 <context>
     <name>ConsoleCommand</name>
     <message>
+        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
+        <translation>记录本身的采样步长 [s]（仅含一列数值的文件需要它）。</translation>
+    </message>
+    <message>
         <source>HSMU Console: hybrid simulation with online model updating.
 Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --law ... (see hsmu run --help, hsmu compare --help, docs/cli.md).</source>
         <translation>HSMU Console：带在线模型更新的混合试验。
@@ -872,6 +880,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>OverrideOptions</name>
+    <message>
+        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
+        <translation>记录本身的采样步长 [s]（仅含一列数值的文件需要它）。</translation>
+    </message>
     <message>
         <source>Ground-motion record file.</source>
         <translation>地震动记录文件。</translation>
@@ -1708,10 +1720,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>力时程</translation>
     </message>
     <message>
-        <source>Force</source>
-        <translation>力</translation>
-    </message>
-    <message>
         <source>Moment history</source>
         <translation>弯矩时程</translation>
     </message>
@@ -1771,14 +1779,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>hsmu::gui::HysteresisPlot</name>
     <message>
-        <source>Deformation</source>
-        <translation>变形</translation>
-    </message>
-    <message>
-        <source>Force</source>
-        <translation>力</translation>
-    </message>
-    <message>
         <source>%1 (specimen, measured)</source>
         <translation>%1（试件，实测）</translation>
     </message>
@@ -1818,6 +1818,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>hsmu::gui::LivePlotsPanel</name>
     <message>
+        <source>Dashed: %1</source>
+        <translation>虚线：%1</translation>
+    </message>
+    <message>
         <source>PNG image (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
     </message>
@@ -1852,6 +1856,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 </context>
 <context>
     <name>hsmu::gui::MainWindow</name>
+    <message>
+        <source>Enter the record&apos;s sample step below the file.</source>
+        <translation>请在文件下方输入记录的采样步长。</translation>
+    </message>
     <message>
         <source>HSMU Console</source>
         <translation>HSMU Console</translation>
@@ -2739,6 +2747,18 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::SetupPanel</name>
     <message>
+        <source>Record&apos;s sample step [s]:</source>
+        <translation>记录采样步长 [s]：</translation>
+    </message>
+    <message>
+        <source>The time between the record&apos;s samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</source>
+        <translation>记录相邻采样之间的时间。仅含加速度数值（一列）的文件需要它；AT2 文件头或时间列自带步长。它不是积分步长 dt。</translation>
+    </message>
+    <message>
+        <source>from the file</source>
+        <translation>取自文件</translation>
+    </message>
+    <message>
         <source>No configuration loaded: choose a preset or open a file.</source>
         <translation>未加载配置：请选择预设或打开文件。</translation>
     </message>
@@ -3040,6 +3060,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::TestWorker</name>
+    <message>
+        <source>link restored: the test resumed after an automatic reconnect</source>
+        <translation>链路已恢复：试验在自动重连后继续</translation>
+    </message>
     <message>
         <source>emergency hold by the operator</source>
         <translation>操作员触发紧急保持</translation>

@@ -1,4 +1,5 @@
 #include "core/experiment/HybridTest.h"
+#include "core/util/ReasonText.h"
 #include "core/util/InputLimits.h"
 
 #include "core/experimental/ExperimentalElement.h"
@@ -252,14 +253,18 @@ void HybridTest::hold(const std::string& reason)
     enterHold(AlarmKind::OperatorHold, reason.empty() ? "operator hold" : reason);
 }
 
-void HybridTest::resume()
+void HybridTest::resume(ResumeCause cause)
 {
     if (m_state != State::Holding)
         return;
     takeEmergency(); // an emergency hold raised while held is answered by this resume
     for (ExperimentalElement* x : m_specimens)
         x->control().resume();
-    raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed", "test-resumed", {});
+    if (cause == ResumeCause::Reconnect)
+        raise(AlarmSeverity::Info, AlarmKind::ControlFault,
+              reasonText("test-resumed-reconnect"), "test-resumed-reconnect", {});
+    else
+        raise(AlarmSeverity::Info, AlarmKind::OperatorHold, "test resumed", "test-resumed", {});
     m_state = State::Running;
     updateSites();
 }

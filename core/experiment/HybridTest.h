@@ -69,7 +69,12 @@ public:
     /// Operator's emergency hold between steps.
     void hold(const std::string& reason);
     /// Leave a hold; the held step is retried by the next step().
-    void resume();
+    /// Who leaves a hold, as the record tells it: the operator (Resume) or the session's
+    /// reconnect policy after a link fault (TestSession, ReconnectPolicy).
+    enum class ResumeCause { Operator, Reconnect };
+    /// Leave a hold; the alarm says who: Operator: OperatorHold "test resumed"; Reconnect: an
+    /// Info ControlFault "test resumed after an automatic reconnect".
+    void resume(ResumeCause cause = ResumeCause::Operator);
     /// Out of band, thread-safe (any thread, any time; returns after at most a short bounded
     /// send per control): every experimental element's control gets
     /// ExperimentalControl::emergencyHold(reason) now, a step blocked on a link returns

@@ -187,7 +187,7 @@ std::optional<TestSession::Progress> TestSession::reconnectIfDue() {
             return Progress{Status::Waiting, left};
         m_retryAt.reset();
         m_stepAtResume = m_test->currentStep();
-        m_test->resume(); // reconnects (the control's own attempts)
+        m_test->resume(HybridTest::ResumeCause::Reconnect); // the control's own attempts
         restartPacing();
         return std::nullopt;
     }

@@ -49,6 +49,7 @@ constexpr Template kTemplates[] = {
     {"synthetic-motion", "synthetic Kanai-Tajimi (seed %1)"},
     // Alarms of the test and its inspector (Alarm::code is the same code).
     {"test-held", "test held: %1"},
+    {"test-resumed-reconnect", "test resumed after an automatic reconnect"},
     {"test-resumed", "test resumed"},
     {"fit-error", "model error %1 % above the threshold %2 %"},
     {"fracture", "sudden strength loss: measured force %1 short of the model's by %2"},

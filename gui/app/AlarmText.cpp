@@ -258,6 +258,8 @@ QString AlarmText::translate(const std::string& code, const QStringList& a) {
     // Alarms of the test and its inspector.
     if (is("test-held", 1))
         return tr("test held: %1").arg(reason(a[0]));
+    if (is("test-resumed-reconnect", 0))
+        return tr("test resumed after an automatic reconnect");
     if (is("test-resumed", 0))
         return tr("test resumed");
     if (is("fit-error", 2))

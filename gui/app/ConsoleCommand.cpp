@@ -5,6 +5,7 @@
 #include "gui/app/TestController.h"
 #include "gui/app/WindowScreenshot.h"
 #include "gui/cli/ConsoleStreams.h"
+#include "gui/cli/OverrideOptions.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -34,6 +35,10 @@ int ConsoleCommand::exec(const QStringList& arguments) {
                                       QStringLiteral("config"));
     const QCommandLineOption gmOpt(QStringLiteral("ground-motion"),
                                    tr("Ground-motion record file."), QStringLiteral("file"));
+    const QCommandLineOption recordDtOpt(
+        QStringLiteral("record-dt"),
+        tr("The record's own sample step [s] (a one-column file of values needs it)."),
+        QStringLiteral("dt"));
     const QCommandLineOption speedOpt(QStringLiteral("speed"),
                                       tr("Test time per wall time (0: as fast as possible)."),
                                       QStringLiteral("factor"));
@@ -47,7 +52,7 @@ int ConsoleCommand::exec(const QStringList& arguments) {
         QStringLiteral("controller"),
         tr("Actuator controller: builtin (the default) or tcp://HOST:PORT."),
         QStringLiteral("address"), QStringLiteral("builtin"));
-    p.addOptions({startOpt, gmOpt, speedOpt, shotOpt, shotAfterOpt, controllerOpt});
+    p.addOptions({startOpt, gmOpt, recordDtOpt, speedOpt, shotOpt, shotAfterOpt, controllerOpt});
     if (!p.parse(arguments))
         return fail(p.errorText());
     if (p.isSet(QStringLiteral("help"))) {
@@ -81,6 +86,8 @@ int ConsoleCommand::exec(const QStringList& arguments) {
 
     ConfigOverrides overrides;
     overrides.groundMotionFile = p.value(gmOpt);
+    if (auto e = OverrideOptions::number(p, recordDtOpt, overrides.recordDt, true))
+        return fail(*e);
     MainWindow window(overrides);
     window.setSpeed(speed);
     if (p.isSet(controllerOpt))

@@ -21,6 +21,7 @@
 #include "gui/app/TestWorker.h"
 #include "gui/app/WheelGuard.h"
 #include "gui/plots/LivePlotsPanel.h"
+#include "core/util/ReasonText.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -277,8 +278,10 @@ void MainWindow::previewGroundMotion() {
         m_setup->setGroundMotionStatus(QString());
         return;
     }
-    m_setup->setGroundMotionStatus(
-        tr("This ground motion cannot be used: %1").arg(AlarmText::reason(error)));
+    QString status = tr("This ground motion cannot be used: %1").arg(AlarmText::reason(error));
+    if (error.contains(QString::fromStdString(reasonText("single-column-needs-dt"))))
+        status += QLatin1Char(' ') + tr("Enter the record's sample step below the file.");
+    m_setup->setGroundMotionStatus(status);
     m_alarms->addMessage(
         [error] { return tr("ground motion not usable: %1").arg(AlarmText::reason(error)); },
         AlarmSeverity::Warning);

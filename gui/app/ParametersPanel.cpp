@@ -51,6 +51,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
 
     auto* thresholdRow = new QHBoxLayout;
     auto* thresholdLabel = new QLabel(this);
+    m_thresholdLabel = thresholdLabel;
     thresholdRow->addWidget(thresholdLabel);
     thresholdRow->addWidget(m_threshold);
     thresholdRow->addStretch(1);
@@ -64,6 +65,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     note->setStyleSheet(QStringLiteral("color: palette(mid);"));
     layout->addWidget(note);
     setEditable(false);
+    showThreshold();
     LiveText::bind(this, [this, thresholdLabel, note] {
         m_threshold->setToolTip(tr("Normalized RMS fit error above which the inspector "
                                    "requests an update; effective on the next step"));
@@ -84,6 +86,13 @@ void ParametersPanel::setSnapshot(const UpdatingSnapshot& s) {
         const QSignalBlocker block(m_threshold);
         m_threshold->setValue(s.fitThreshold);
     }
+    showThreshold();
+}
+
+void ParametersPanel::showThreshold() {
+    // Without updating there is no threshold: no field showing its minimum (0.001) as one.
+    m_threshold->setVisible(m_snapshot.enabled);
+    m_thresholdLabel->setVisible(m_snapshot.enabled);
 }
 
 void ParametersPanel::showSummary() {

@@ -35,11 +35,14 @@ signals:
 
 private:
     void showSummary();
+    /// The threshold field only while the test updates its model.
+    void showThreshold();
     UpdatingSnapshot m_snapshot; ///< the last one shown
     ParameterTableModel* m_model = nullptr;
     QTableView* m_table = nullptr;
     QLabel* m_summary = nullptr;
     QDoubleSpinBox* m_threshold = nullptr;
+    QLabel* m_thresholdLabel = nullptr;
 };
 
 } // namespace hsmu::gui

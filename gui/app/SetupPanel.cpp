@@ -20,6 +20,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -84,6 +85,8 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     m_limits->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_limits->setMaximumHeight(110);
     connect(m_limits, &QTableWidget::itemChanged, this, &SetupPanel::markDirty);
+    connect(m_limits->horizontalHeader(), &QHeaderView::sectionResized, this,
+            &SetupPanel::fitLimitHeaders);
     lv->addWidget(m_limits);
     body->addWidget(limitsBox);
     body->addWidget(buildUpdatingGroup());
@@ -94,15 +97,16 @@ SetupPanel::SetupPanel(QWidget* parent) : QWidget(parent) {
     body->addWidget(m_apply);
     m_body->hide();
     layout->addStretch(1);
-    m_inputs << m_groundMotion << m_scale << m_dt << m_duration << m_integrator << m_alpha
+    m_inputs << m_groundMotion << m_recordDt << m_scale << m_dt << m_duration << m_integrator << m_alpha
              << m_controllerKind << m_host << m_port << m_token << m_limits << m_updating << m_threshold;
     setEditable(true);
     m_apply->setEnabled(false);
     LiveText::bind(this, [this, limitsBox] {
         showName();
         limitsBox->setTitle(tr("Safety limits (0 = none; the specimen's units)"));
-        m_limits->setHorizontalHeaderLabels(
-            {tr("Specimen"), tr("Max |d|"), tr("Max |F|"), tr("Max |Δd| per step")});
+        m_limitHeaders = {tr("Specimen"), tr("Max |d|"), tr("Max |F|"), tr("Max |Δd| per step")};
+        m_limits->setHorizontalHeaderLabels(m_limitHeaders);
+        fitLimitHeaders();
         m_apply->setText(tr("Apply (reload the test)"));
     });
 }
@@ -133,6 +137,15 @@ QWidget* SetupPanel::buildRunGroup() {
             emit groundMotionChosen();
         }
     });
+    m_recordDt = spin(box, 0.0, 1.0, 5, QStringLiteral(" s"));
+    m_recordDt->setObjectName(QStringLiteral("recordTimeStep"));
+    form->addRow(new QLabel(box), m_recordDt);
+    connect(m_recordDt, &QDoubleSpinBox::editingFinished, this, [this] {
+        if (m_recordDt->property("checked").toDouble() != m_recordDt->value()) {
+            m_recordDt->setProperty("checked", m_recordDt->value());
+            emit groundMotionChosen(); // a one-column file refused for want of it: check again
+        }
+    });
     m_scale = spin(box, 0.0, 100.0, 3, QString());
     m_scale->setObjectName(QStringLiteral("groundMotionScale"));
     form->addRow(new QLabel(box), m_scale);
@@ -151,6 +164,12 @@ QWidget* SetupPanel::buildRunGroup() {
         box->setTitle(tr("Run"));
         browse->setText(tr("Browse..."));
         gmLabel->setText(tr("Ground motion file:"));
+        m_recordDt->setSpecialValueText(tr("from the file"));
+        m_recordDt->setToolTip(
+            tr("The time between the record's samples. A file of acceleration values only (one "
+               "column) needs it; an AT2 header or a time column gives its own. Not the "
+               "integration step dt."));
+        setLabel(form, m_recordDt, tr("Record's sample step [s]:"));
         setLabel(form, m_scale, tr("Scale [-]:"));
         setLabel(form, m_dt, tr("Time step dt [s]:"));
         m_duration->setSpecialValueText(tr("whole record"));
@@ -165,7 +184,7 @@ QWidget* SetupPanel::buildRunGroup() {
         markDirty();
     });
     connect(m_groundMotion, &QLineEdit::textEdited, this, &SetupPanel::markDirty);
-    for (QDoubleSpinBox* s : {m_scale, m_dt, m_duration, m_alpha})
+    for (QDoubleSpinBox* s : {m_recordDt, m_scale, m_dt, m_duration, m_alpha})
         connect(s, &QDoubleSpinBox::valueChanged, this, &SetupPanel::markDirty);
     return box;
 }
@@ -268,6 +287,32 @@ QWidget* SetupPanel::buildUpdatingGroup() {
     return box;
 }
 
+void SetupPanel::fitLimitHeaders() {
+    // A header wider than its column ("Max |Δd| per ste") is broken at spaces into lines that
+    // fit; the header grows to hold them. The whole text is also the tool tip.
+    QHeaderView* header = m_limits->horizontalHeader();
+    const QFontMetrics fm(header->font());
+    const int margin = 2 * header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 4;
+    for (int c = 0; c < m_limitHeaders.size() && c < m_limits->columnCount(); ++c) {
+        const int room = header->sectionSize(c) - margin;
+        QStringList lines;
+        for (const QString& word : m_limitHeaders[c].split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+            const QString joined = lines.isEmpty() ? word : lines.back() + QLatin1Char(' ') + word;
+            if (!lines.isEmpty() && fm.horizontalAdvance(joined) <= room)
+                lines.back() = joined;
+            else
+                lines << word;
+        }
+        QTableWidgetItem* item = m_limits->horizontalHeaderItem(c);
+        if (!item)
+            continue;
+        const QString text = lines.join(QLatin1Char('\n'));
+        if (item->text() != text)
+            item->setText(text);
+        item->setToolTip(m_limitHeaders[c]);
+    }
+}
+
 void SetupPanel::setGroundMotionStatus(const QString& error) {
     m_groundMotionStatus->setText(error);
     m_groundMotionStatus->setToolTip(error);
@@ -352,6 +397,8 @@ void SetupPanel::setConfig(const TestConfig& cfg) {
         m_body->show();
         setGroundMotionStatus(QString());
         m_groundMotion->clear();
+        m_recordDt->setValue(cfg.groundMotion.dt);
+        m_recordDt->setProperty("checked", m_recordDt->value());
         m_scale->setValue(cfg.groundMotion.scale);
         m_dt->setValue(cfg.analysis.dt);
         m_duration->setValue(std::max(0.0, cfg.analysis.duration));
@@ -399,6 +446,7 @@ std::optional<TestConfig> SetupPanel::edited(QString* error) const {
     TestConfig cfg = m_base;
     ConfigOverrides o;
     o.groundMotionFile = m_groundMotion->text().trimmed();
+    o.recordDt = m_recordDt->value();
     o.scale = m_scale->value();
     o.dt = m_dt->value();
     o.duration = m_duration->value();

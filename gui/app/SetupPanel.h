@@ -1,6 +1,7 @@
 #pragma once
 // SetupPanel: the test's setup as the operator may change it before a start: ground motion
-// file and scale [-], integration step dt [s], duration [s] (0 = the whole record), the
+// file, the record's own sample step [s] (0 = from the file; a one-column file needs it) and
+// scale [-], integration step dt [s], duration [s] (0 = the whole record), the
 // controller (built-in virtual lab or hsmu-controller at tcp://host:port), each specimen's
 // safety limits (0 = no limit; the specimen's units), the integrator (explicit Newmark or
 // alpha-OS with its alpha) and the updating settings (on/off, inspector threshold; when
@@ -11,6 +12,7 @@
 #include "comms/LinkAddress.h"
 #include "core/config/TestConfig.h"
 
+#include <QStringList>
 #include <QWidget>
 
 #include <memory>
@@ -80,6 +82,8 @@ private:
     QWidget* buildUpdatingGroup();
     void markDirty();
     void browseGroundMotion();
+    /// The safety-limit headers broken into lines that fit their columns.
+    void fitLimitHeaders();
 
     TestConfig m_base;
     bool m_loaded = false;
@@ -91,6 +95,7 @@ private:
     QWidget* m_body = nullptr;
     QLabel* m_groundMotionStatus = nullptr;
     QLineEdit* m_groundMotion = nullptr;
+    QDoubleSpinBox* m_recordDt = nullptr; ///< the record's sample step [s]; 0 = the file's
     QDoubleSpinBox* m_scale = nullptr;
     QDoubleSpinBox* m_dt = nullptr;
     QDoubleSpinBox* m_duration = nullptr;
@@ -105,6 +110,7 @@ private:
     QDoubleSpinBox* m_threshold = nullptr;
     QPushButton* m_apply = nullptr;
     QList<QWidget*> m_inputs;
+    QStringList m_limitHeaders; ///< the whole header texts (current language)
 };
 
 } // namespace hsmu::gui

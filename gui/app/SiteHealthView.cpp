@@ -22,9 +22,12 @@ SiteHealthView::SiteHealthView(QWidget* parent) : QGroupBox(parent) {
     m_table->setObjectName(QStringLiteral("sitesTable"));
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    // The address whole: two labs on one host differ only in the port ("tcp://127.0.0.1:51..."
+    // hid it); the other columns share the rest.
+    m_table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setMaximumHeight(130);
-    // A cut address keeps its port ("tcp://...:5101"): the sites stay distinguishable.
+    // Were an address ever cut, it keeps its port ("tcp://...:5101").
     m_table->setTextElideMode(Qt::ElideMiddle);
     layout->addWidget(m_table);
     m_poll = new SitePoll(500, this);

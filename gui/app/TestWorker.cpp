@@ -54,7 +54,10 @@ TestWorker::TestWorker(std::unique_ptr<HybridTest> test, std::shared_ptr<RecordB
     m_session->addObserver(this);
     m_session->onReconnect = [this](const TestSession::Reconnect& r) {
         publishAlarms();
-        emit stateChanged(RunState::Running,
+        // Held on a link fault, the policy reconnecting: the console shows "holding" (not
+        // "running" at 0 steps/s) until a step is taken again (runChunk).
+        m_reconnecting = true;
+        emit stateChanged(RunState::Holding,
                           tr("link fault (%1): reconnecting in %2 s (attempt %3 of %4)")
                               .arg(QString::fromStdString(r.reason))
                               .arg(r.delay, 0, 'f', 1)
@@ -165,8 +168,8 @@ void TestWorker::resume() {
         m_session->resume();
     else if (m_state != RunState::Paused)
         return;
-    logEvent(OperatorEvent::kResume, m_state == RunState::Holding ? "holding" : "paused",
-             "running");
+    logEvent(OperatorEvent::kResume,
+             m_state == RunState::Holding || m_reconnecting ? "holding" : "paused", "running");
     publishAlarms();
     restartPacing();
     setState(RunState::Running);
@@ -407,6 +410,12 @@ void TestWorker::runChunk() {
         return;
     const TestSession::Progress p = m_session->advance(kChunkMs * 1e-3);
     publishAlarms();
+    const bool moving = p.status == TestSession::Status::Advanced ||
+                        p.status == TestSession::Status::Waiting;
+    if (m_reconnecting && moving && test().state() != HybridTest::State::Holding)
+        // The policy's reconnect worked (stepping, or waiting for the pace): running, and why.
+        setState(RunState::Running,
+                 tr("link restored: the test resumed after an automatic reconnect"));
     switch (p.status) {
     case TestSession::Status::Advanced:
         emitProgress(false);
@@ -429,6 +438,7 @@ void TestWorker::runChunk() {
 
 void TestWorker::setState(RunState state, const QString& message) {
     m_state = state;
+    m_reconnecting = false;
     if (state == RunState::Finished || state == RunState::Stopped || state == RunState::Failed) {
         m_session->finish();
         m_flushTimer->stop();

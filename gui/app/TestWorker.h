@@ -16,7 +16,10 @@
 // folder) is created only when the test is armed and its first step is driven, so a test that
 // is loaded, prepared or cancelled at the pre-flight leaves no folder behind; notes and events
 // from before are written then with their own step and time. After a lost link the session
-// resumes (reconnects) up to kReconnectAttempts times with a doubling backoff (0.5 s to 8 s).
+// resumes (reconnects) up to kReconnectAttempts times with a doubling backoff (0.5 s to 8 s);
+// meanwhile the state shown is Holding ("link fault ...: reconnecting in ..."), Running again
+// with "link restored ..." once a step is taken (the record says the reconnect resumed it,
+// not the operator).
 // Arming: start() and singleStep() arm the test (the console calls them only after the
 // pre-flight was confirmed, confirmPreflight()); an emergency hold before arming holds
 // nothing and leaves the test Ready and unarmed (the pre-flight must be confirmed again), so
@@ -150,6 +153,8 @@ private:
     QTimer* m_flushTimer = nullptr; ///< TestSession::tick() while paused or held
     bool m_armed = false;
     RunState m_state = RunState::Ready;
+    /// The session's reconnect policy is at work (m_state stays Running; shown as Holding).
+    bool m_reconnecting = false;
     bool m_scheduled = false;
     QElapsedTimer m_progressTimer;
     int m_progressStep = 0;

@@ -9,12 +9,15 @@ namespace hsmu::gui {
 OverrideOptions::OverrideOptions()
     : m_groundMotion(QStringLiteral("ground-motion"), tr("Ground-motion record file."),
                      QStringLiteral("file")),
+      m_recordDt(QStringLiteral("record-dt"),
+                 tr("The record's own sample step [s] (a one-column file of values needs it)."),
+                 QStringLiteral("dt")),
       m_scale(QStringLiteral("scale"), tr("Ground-motion scale factor."), QStringLiteral("s")),
       m_dt(QStringLiteral("dt"), tr("Integration step [s]."), QStringLiteral("dt")),
       m_duration(QStringLiteral("duration"), tr("Test duration [s]."), QStringLiteral("t")) {}
 
 void OverrideOptions::addTo(QCommandLineParser& p) const {
-    p.addOptions({m_groundMotion, m_scale, m_dt, m_duration});
+    p.addOptions({m_groundMotion, m_recordDt, m_scale, m_dt, m_duration});
 }
 
 std::optional<QString> OverrideOptions::number(const QCommandLineParser& p,
@@ -35,6 +38,8 @@ std::optional<QString> OverrideOptions::number(const QCommandLineParser& p,
 std::optional<QString> OverrideOptions::read(const QCommandLineParser& p,
                                              ConfigOverrides& overrides) const {
     overrides.groundMotionFile = p.value(m_groundMotion);
+    if (auto e = number(p, m_recordDt, overrides.recordDt, true))
+        return e;
     if (auto e = number(p, m_scale, overrides.scale, false))
         return e;
     if (auto e = number(p, m_dt, overrides.dt, true))

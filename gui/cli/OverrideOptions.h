@@ -2,6 +2,7 @@
 // OverrideOptions: the command-line options shared by `hsmu run` and `hsmu compare` that
 // change the configuration before it is built (ConfigOverrides):
 //   --ground-motion FILE   a record file (format and units detected)
+//   --record-dt DT         the record's own sample step [s], > 0: needed by a one-column file
 //   --scale S              ground-motion scale factor [-]
 //   --dt DT                integration step [s], > 0
 //   --duration T           test duration [s], > 0
@@ -23,7 +24,7 @@ class OverrideOptions {
 public:
     OverrideOptions();
 
-    /// Add the four options to p.
+    /// Add the five options to p.
     void addTo(QCommandLineParser& p) const;
     /// Read them from a parsed p into overrides; a message if a number is malformed.
     std::optional<QString> read(const QCommandLineParser& p, ConfigOverrides& overrides) const;
@@ -34,7 +35,7 @@ public:
                                          std::optional<double>& target, bool positive);
 
 private:
-    QCommandLineOption m_groundMotion, m_scale, m_dt, m_duration;
+    QCommandLineOption m_groundMotion, m_recordDt, m_scale, m_dt, m_duration;
 };
 
 } // namespace hsmu::gui

@@ -103,7 +103,7 @@ void HistoryPlot::showForces(const RunLayout& layout, const std::vector<int>& el
     }
     setChannels(QString(), QString(), std::move(channels));
     if (elements.empty()) {
-        setTexts([this] { relabel(tr("Force history"), tr("Force"), {}); });
+        setTexts([this] { relabel(tr("Force history"), QString(), {}); }); // no unit known
         return;
     }
     const ElementUnits& units = layout.elements[std::size_t(elements.front())].units;

@@ -15,9 +15,9 @@ HysteresisPlot::HysteresisPlot(QWidget* parent) : QCustomPlot(parent) {
 }
 
 void HysteresisPlot::retranslate() {
-    if (m_texts.empty()) {
-        xAxis->setLabel(tr("Deformation"));
-        yAxis->setLabel(tr("Force"));
+    if (m_texts.empty()) { // no element (no test loaded): no quantity without its unit
+        xAxis->setLabel(QString());
+        yAxis->setLabel(QString());
     }
     for (const auto& texts : m_texts)
         texts();

@@ -1,6 +1,7 @@
 #include "gui/plots/LivePlotsPanel.h"
 
 #include "core/config/TestFactory.h"
+#include "gui/app/LiveText.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 #include "gui/plots/ParameterPlot.h"
@@ -12,6 +13,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
+#include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSplitter>
@@ -26,6 +28,7 @@ namespace hsmu::gui {
 namespace {
 
 constexpr int kParameterColumns = 4;
+constexpr int kNoteRow = 99; // below every row of parameter plots
 constexpr int kSmallPlotWidth = 160;  // [px] minimum, so the panel fits a 1280 x 800 window
 constexpr int kSmallPlotHeight = 110; // [px]
 
@@ -77,6 +80,12 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     m_parameterGrid->setSpacing(2);
     m_fitError = makePlot<HistoryPlot>(m_parameterArea, "fitErrorPlot");
     m_parameterGrid->addWidget(m_fitError, 0, 0);
+    m_overlayNote = new QLabel(m_parameterArea);
+    m_overlayNote->setObjectName(QStringLiteral("overlayNote"));
+    m_overlayNote->setWordWrap(true);
+    m_overlayNote->hide();
+    m_parameterGrid->addWidget(m_overlayNote, kNoteRow, 0, 1, kParameterColumns);
+    LiveText::bind(m_overlayNote, [this] { showOverlayNote(); });
     m_fitError->yAxis->ticker()->setTickCount(3);
     vertical->addWidget(top);
     vertical->addWidget(m_parameterArea);
@@ -115,7 +124,19 @@ void LivePlotsPanel::configure(const RunLayout& layout, const PlotReferences& re
     rebuildParameterPlots(layout, references);
     m_parameterArea->setVisible(m_hasUpdating);
     clearData();
-    refresh();
+    // Another test: the last one's zoom and time span go (autoscale on, no time span known).
+    for (QCustomPlot* p : allPlots()) {
+        PlotStyle::setEmptyXRange(*p, qQNaN(), qQNaN());
+        PlotTools::attach(*p)->setAutoscale(true);
+    }
+    refreshNow();
+}
+
+std::vector<QCustomPlot*> LivePlotsPanel::allPlots() const {
+    std::vector<QCustomPlot*> out{m_hysteresis, m_force, m_displacement, m_ground, m_tracking,
+                                  m_fitError};
+    out.insert(out.end(), m_parameters.begin(), m_parameters.end());
+    return out;
 }
 
 void LivePlotsPanel::configure(const RunLayout& layout, const TestConfig& cfg) {
@@ -153,6 +174,13 @@ void LivePlotsPanel::setGroundMotion(const QVector<double>& time,
     m_ground->showGroundMotion(time, acceleration);
     m_fixedGroundMotion = true;
     m_ground->refresh();
+    // Before the first steps the time axes span the test: 0 to the record's (cut) end.
+    std::vector<QCustomPlot*> timed{m_force, m_displacement, m_tracking, m_fitError};
+    timed.insert(timed.end(), m_parameters.begin(), m_parameters.end());
+    for (QCustomPlot* p : timed)
+        PlotStyle::setEmptyXRange(*p, 0.0, time.isEmpty() ? qQNaN() : time.back());
+    if (m_rows <= 1)
+        refreshNow();
 }
 
 bool LivePlotsPanel::overlayParameterHistory(const QString& curveName, const QString& parameter,
@@ -162,9 +190,26 @@ bool LivePlotsPanel::overlayParameterHistory(const QString& curveName, const QSt
         if (p->parameterName() == parameter) {
             p->setOverlay(curveName, time, values);
             p->refresh();
+            if (!m_overlays.contains(curveName))
+                m_overlays << curveName;
+            showOverlayNote();
             return true;
         }
     return false;
+}
+
+void LivePlotsPanel::showOverlayNote() {
+    QStringList parts;
+    for (const QString& name : m_overlays) {
+        const QCPGraph* g =
+            m_parameters.empty() ? nullptr : m_parameters.front()->overlayGraph(name);
+        const QString colour = g ? g->pen().color().name() : QStringLiteral("#000000");
+        parts << QStringLiteral("<span style=\"color:%1\"><b>- - -</b></span> %2")
+                     .arg(colour, name.toHtmlEscaped());
+    }
+    m_overlayNote->setText(parts.isEmpty() ? QString()
+                                           : tr("Dashed: %1").arg(parts.join(QStringLiteral(", "))));
+    m_overlayNote->setVisible(!parts.isEmpty());
 }
 
 bool LivePlotsPanel::setParameterBounds(const QString& parameter, double lower, double upper) {
@@ -182,6 +227,8 @@ void LivePlotsPanel::rebuildParameterPlots(const RunLayout& layout,
     for (ParameterPlot* p : m_parameters)
         delete p;
     m_parameters.clear();
+    m_overlays.clear();
+    showOverlayNote();
     if (!layout.updating)
         return;
     const auto& names = layout.updating->parameters;

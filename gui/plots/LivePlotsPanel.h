@@ -10,7 +10,9 @@
 //                  and (right axis) the ticks its controller held (HistoryPlot::showTracking)
 //   fit error      the inspector's normalized RMS error with its threshold line (updating)
 //   parameters     one small ParameterPlot per identified parameter: estimate, ± 2 sigma
-//                  band, identification bounds (updating)
+//                  band, identification bounds (updating); overlaid histories (a replay's
+//                  re-identification) are named in one note under them, not in a legend row
+//                  that would squeeze a small plot to a strip
 // Feeding (the PlotJuggler way): appendRecords() only appends; refresh() asks for one redraw
 // of every plot. The owner calls refresh() once per coalesced batch (~30 Hz), never per step.
 // Redraws are also budgeted: after a redraw that took c ms, the next one waits at least
@@ -34,6 +36,7 @@
 
 class QCustomPlot;
 class QGridLayout;
+class QLabel;
 class QMenu;
 class QTimer;
 
@@ -73,7 +76,8 @@ public:
     /// what it showed.
     bool showGroundMotionOf(const TestConfig& cfg, QString* error = nullptr);
     /// Show this whole ground-motion record (time [s], acceleration [m/s^2]) instead of the
-    /// rows' ground acceleration; the time cursor marks the latest row.
+    /// rows' ground acceleration; the time cursor marks the latest row. The other time plots
+    /// span 0 to its last time while they have no data (or one row).
     void setGroundMotion(const QVector<double>& time, const QVector<double>& acceleration);
 
     /// Append rows (oldest first) to every plot; no replot.
@@ -118,7 +122,11 @@ private:
     void exportPlotWithDialog(QCustomPlot* plot);
     void exportAllWithDialog();
     void rebuildParameterPlots(const RunLayout& layout, const PlotReferences& references);
+    /// The note naming the overlaid parameter histories (hidden without).
+    void showOverlayNote();
     std::vector<QCustomPlot*> visiblePlots() const;
+    /// Every plot, shown or not (the parameter plots last).
+    std::vector<QCustomPlot*> allPlots() const;
 
     HysteresisPlot* m_hysteresis = nullptr;
     HistoryPlot* m_force = nullptr;
@@ -128,6 +136,8 @@ private:
     HistoryPlot* m_fitError = nullptr;
     QWidget* m_parameterArea = nullptr;
     QGridLayout* m_parameterGrid = nullptr;
+    QLabel* m_overlayNote = nullptr; ///< names the overlaid curves (dashed), hidden without
+    QStringList m_overlays;          ///< the overlaid curves' names, in the order added
     std::vector<ParameterPlot*> m_parameters;
     bool m_fixedGroundMotion = false;
     bool m_hasSpecimen = false;

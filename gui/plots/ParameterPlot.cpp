@@ -134,6 +134,7 @@ void ParameterPlot::setOverlay(const QString& name, const QVector<double>& time,
         pen.setStyle(Qt::DashLine);
         g->setPen(pen);
         g->setName(name);
+        g->removeFromLegend(); // named by the owner's note (LivePlotsPanel): no third legend row
         m_overlays.push_back(g);
     }
     g->setData(time, values, true);

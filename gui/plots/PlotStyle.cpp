@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace hsmu::gui {
 
@@ -186,8 +187,22 @@ int PlotStyle::labelRoom(const QCustomPlot& plot, const QCPAxis& axis) {
     // but not past the plot's edges.
     const QRect r = plot.axisRect()->rect();
     if (axis.orientation() == Qt::Vertical) {
+        // Up into the title row only beside the title's text (es: "Error de ajuste [-]" ran
+        // over "Error de ajuste del inspector"), never down into a legend row.
+        const QRect cell = plot.axisRect()->outerRect();
+        int top = 0, bottom = plot.height();
+        if (const QCPTextElement* title = titleOf(plot)) {
+            const int half = QFontMetrics(title->font()).horizontalAdvance(title->text()) / 2;
+            const int centre = title->outerRect().center().x();
+            const bool beside = axis.axisType() == QCPAxis::atLeft ? centre - half > r.left()
+                                                                   : centre + half < r.right();
+            if (!beside)
+                top = cell.top();
+        }
+        if (plot.legend->visible() && plot.legend->layout() == plot.plotLayout())
+            bottom = cell.bottom();
         const int c = r.center().y();
-        return 2 * std::min(c, plot.height() - c);
+        return 2 * std::min(c - top, bottom - c);
     }
     const int c = r.center().x();
     return 2 * std::min(c, plot.width() - c);
@@ -282,9 +297,125 @@ void PlotStyle::setTitle(QCustomPlot& plot, const QString& title) {
     });
 }
 
+bool PlotStyle::hasData(const QCustomPlot& plot) {
+    for (int i = 0; i < plot.plottableCount(); ++i) {
+        QCPAbstractPlottable* p = const_cast<QCustomPlot&>(plot).plottable(i); // no const getter
+        if (p->visible() && p->interface1D() && p->interface1D()->dataCount() > 0)
+            return true;
+    }
+    return false;
+}
+
+void PlotStyle::setEmptyXRange(QCustomPlot& plot, double lower, double upper) {
+    plot.setProperty("hsmuEmptyX", upper > lower ? QVariant(QPointF(lower, upper)) : QVariant());
+}
+
+namespace {
+// Before the first point: the references, not QCustomPlot's 0..5 (issue 25 item 16).
+void showReferences(QCustomPlot& plot) {
+    const QVariant x = plot.property("hsmuEmptyX");
+    plot.xAxis->setRange(x.isValid() ? QCPRange(x.toPointF().x(), x.toPointF().y())
+                                     : QCPRange(0.0, 1.0));
+    plot.xAxis->setTickLabels(x.isValid());
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int i = 0; i < plot.itemCount(); ++i) {
+        const auto* line = qobject_cast<QCPItemStraightLine*>(plot.item(i));
+        if (line && line->visible() && line->point1->coords().y() == line->point2->coords().y()) {
+            lo = std::min(lo, line->point1->coords().y());
+            hi = std::max(hi, line->point1->coords().y());
+        }
+    }
+    const bool known = std::isfinite(lo);
+    if (known && lo == hi) { // a threshold alone: from 0 to it
+        lo = std::min(lo, 0.0);
+        hi = std::max(hi, 0.0);
+    }
+    const double span = known && hi > lo ? hi - lo : 1.0;
+    plot.yAxis->setRange(known ? QCPRange(lo - 0.25 * span, hi + 0.25 * span) : QCPRange(-1, 1));
+    plot.yAxis->setTickLabels(known);
+    plot.yAxis2->setTickLabels(false);
+}
+
+// The span of the visible data along x (keys) or along a y axis (values: the left one unless
+// `values` names another).
+QCPRange dataSpan(QCustomPlot& plot, bool keys, bool& found, const QCPAxis* values = nullptr) {
+    QCPRange out;
+    found = false;
+    const QCPAxis* axis = values ? values : plot.yAxis;
+    for (int i = 0; i < plot.plottableCount(); ++i) {
+        QCPAbstractPlottable* p = plot.plottable(i);
+        if (!p->visible() || (!keys && p->valueAxis() != axis))
+            continue;
+        bool ok = false;
+        const QCPRange r = keys ? p->getKeyRange(ok) : p->getValueRange(ok);
+        if (!ok)
+            continue;
+        out = found ? QCPRange(std::min(out.lower, r.lower), std::max(out.upper, r.upper)) : r;
+        found = true;
+    }
+    return out;
+}
+
+// The horizontal reference lines' y values (thresholds, bounds) widen [lo, hi].
+void includeLines(const QCustomPlot& plot, double& lo, double& hi) {
+    for (int i = 0; i < plot.itemCount(); ++i) {
+        const auto* line = qobject_cast<QCPItemStraightLine*>(plot.item(i));
+        if (line && line->visible() && line->point1->coords().y() == line->point2->coords().y()) {
+            lo = std::min(lo, line->point1->coords().y());
+            hi = std::max(hi, line->point1->coords().y());
+        }
+    }
+}
+
+// A single sample (the first row, a replay at step 0): QCustomPlot centres a span of its own
+// on it (-3..3 s). Time goes over the test's span when it is known; a flat value over its
+// reference lines, else +-1 (or +-50 %) around it.
+void fitSingleSample(QCustomPlot& plot) {
+    bool found = false;
+    const QCPRange keys = dataSpan(plot, true, found);
+    if (found && !(keys.size() > 0.0)) {
+        const QVariant x = plot.property("hsmuEmptyX");
+        const QCPRange span = x.isValid() ? QCPRange(x.toPointF().x(), x.toPointF().y())
+                                          : QCPRange(keys.lower - 0.5, keys.lower + 0.5);
+        plot.xAxis->setRange(span.contains(keys.lower) ? span
+                                                       : QCPRange(keys.lower - 0.5, keys.lower + 0.5));
+        plot.xAxis->setTickLabels(x.isValid()); // nothing to scale by: no made-up numbers
+    }
+    const QCPRange values = dataSpan(plot, false, found);
+    if (found && !(values.size() > 0.0)) {
+        double lo = values.lower, hi = values.upper;
+        includeLines(plot, lo, hi);
+        if (hi > lo) {
+            const double pad = 0.25 * (hi - lo);
+            plot.yAxis->setRange(lo - pad, hi + pad);
+        } else {
+            const double half = lo == 0.0 ? 1.0 : 0.5 * std::abs(lo);
+            plot.yAxis->setRange(lo - half, lo + half);
+            plot.yAxis->setTickLabels(false); // one value, no reference: nothing to scale by
+        }
+    }
+    if (plot.yAxis2->visible()) { // e.g. the held ticks beside the tracking: one value, no scale
+        const QCPRange right = dataSpan(plot, false, found, plot.yAxis2);
+        if (!found) // no finite value yet (a control that reports no held ticks): no numbers
+            plot.yAxis2->setTickLabels(false);
+        else if (!(right.size() > 0.0)) {
+            const double half = right.lower == 0.0 ? 1.0 : 0.5 * std::abs(right.lower);
+            plot.yAxis2->setRange(right.lower - half, right.lower + half);
+            plot.yAxis2->setTickLabels(false);
+        }
+    }
+}
+} // namespace
+
 void PlotStyle::rescaleWithMargin(QCustomPlot& plot) {
     if (!PlotTools::autoscale(plot))
         return; // the operator's zoom / pinned window stays
+    if (!hasData(plot)) {
+        showReferences(plot);
+        return;
+    }
+    for (QCPAxis* axis : {plot.xAxis, plot.yAxis, plot.yAxis2})
+        axis->setTickLabels(true);
     plot.rescaleAxes(true); // visible channels only
     padRange(plot.xAxis);
     padRange(plot.yAxis);
@@ -294,6 +425,7 @@ void PlotStyle::rescaleWithMargin(QCustomPlot& plot) {
         if (line && line->visible() && line->point1->coords().y() == line->point2->coords().y())
             includeInRange(*plot.yAxis, line->point1->coords().y());
     }
+    fitSingleSample(plot);
 }
 
 QCPItemStraightLine* PlotStyle::addLine(QCustomPlot& plot, Qt::Orientation orientation,

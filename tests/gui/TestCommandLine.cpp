@@ -67,6 +67,42 @@ private slots:
         QVERIFY(QFile::exists(dir.filePath(QStringLiteral("out/hysteresis.png"))));
     }
 
+    // Issue 25 item 18: a valid one-column record (values only) was refused for want of its
+    // own sample step, with no way to give it. --record-dt gives it; the integration step
+    // (--dt, 0.01 s) is a different thing. 51 values: 0.5 s at 0.01 s, 1.0 s at 0.02 s, so
+    // the whole-record run takes 50 or 100 steps of 0.01 s.
+    void oneColumnRecordTakesItsOwnSampleStep() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString values = dir.filePath(QStringLiteral("values.txt"));
+        {
+            QFile f(values);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+            for (int i = 0; i <= 50; ++i)
+                f.write(QByteArray::number(0.002 * i) + '\n');
+        }
+        const QStringList base{QStringLiteral("run"), QStringLiteral("sdof-bouc-wen"),
+                               QStringLiteral("--ground-motion"), values, QStringLiteral("--dt"),
+                               QStringLiteral("0.01")};
+        Result r = hsmu(base + QStringList{QStringLiteral("--out"), dir.filePath("a")});
+        QVERIFY2(r.exitCode == 1, qPrintable(report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("values.txt")) &&
+                     r.err.contains(QStringLiteral("needs the time step")),
+                 qPrintable(r.err));
+        r = hsmu(base + QStringList{QStringLiteral("--record-dt"), QStringLiteral("-1"),
+                                    QStringLiteral("--out"), dir.filePath("b")});
+        QVERIFY2(r.exitCode != 0 && r.err.contains(QStringLiteral("--record-dt")),
+                 qPrintable(report(r)));
+        for (const auto& [recordDt, steps] :
+             {std::pair{QStringLiteral("0.01"), 50}, std::pair{QStringLiteral("0.02"), 100}}) {
+            r = hsmu(base + QStringList{QStringLiteral("--record-dt"), recordDt,
+                                        QStringLiteral("--out"), dir.filePath("c" + recordDt)});
+            QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+            const QString expected = QStringLiteral("steps: %1 of %1").arg(steps);
+            QVERIFY2(r.out.contains(expected), qPrintable(expected + QStringLiteral("\n") + r.out));
+        }
+    }
+
     void runPresetWritesOutputsAndPlots() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());

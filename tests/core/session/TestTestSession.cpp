@@ -123,6 +123,40 @@ private slots:
         QCOMPARE(int(a.u.size()), 101);
     }
 
+    // Issue 25 item 12: an automatic reconnect was logged as the operator's ("test resumed",
+    // kind OperatorHold). Who resumed is told truthfully: the policy's resumes are link events
+    // (ControlFault, "test resumed after an automatic reconnect"); only resume() is the
+    // operator's.
+    void automaticResumeIsNotTheOperators() {
+        int resumes = 0;
+        SessionOptions o;
+        o.reconnect = {2, 0.0, 0.0};
+        TestSession s(sdof({10, 40}, &resumes), o);
+        QVERIFY(s.prepare());
+        QCOMPARE(s.runToEnd(), TestSession::Status::Finished);
+        QCOMPARE(resumes, 2);
+        int automatic = 0;
+        for (const Alarm& a : s.test().alarms()) {
+            QVERIFY2(a.kind != AlarmKind::OperatorHold, a.message.c_str());
+            if (a.code == "test-resumed-reconnect") {
+                ++automatic;
+                QCOMPARE(a.kind, AlarmKind::ControlFault);
+                QCOMPARE(a.severity, AlarmSeverity::Info);
+                QCOMPARE(a.message, std::string("test resumed after an automatic reconnect"));
+            }
+        }
+        QCOMPARE(automatic, 2);
+        // The operator's own hold and resume stay the operator's.
+        TestSession manual(sdof({}, &resumes), o);
+        QVERIFY(manual.prepare());
+        manual.advance(0.0);
+        manual.hold("operator hold");
+        manual.resume();
+        const Alarm& last = manual.test().alarms().back();
+        QCOMPARE(last.kind, AlarmKind::OperatorHold);
+        QCOMPARE(last.code, std::string("test-resumed"));
+    }
+
     // Faults in a row beyond the policy: the test stays held, the attempts are counted.
     void givesUpAfterTheAttempts() {
         int resumes = 0;
