@@ -3,7 +3,8 @@
 // identified online to the noise, and on the shared Gill RC column (QSKIP where
 // ../shared/data is absent) `hsmu replay --import` with the pinching model and the default
 // online method (the UKF) ends within 1.25 x the pinching calibration's NRMSE
-// (docs/validation.md, pinching table) without a divergence.
+// (docs/validation.md, pinching table) without a divergence; the HDRB bearing is
+// test_updating_pinchingukf_hdrb (TestPinchingUkfHdrb.cpp).
 
 #include "core/config/JsonCursor.h"
 #include "tests/support/IdentifierByName.h"
@@ -12,15 +13,14 @@
 #include "core/updating/PinchingUkfIdentifier.h"
 #include "core/updating/PinchingUkfJobs.h"
 #include "core/updating/RobustUkfIdentifier.h"
+#include "PinchingUkfOnRecords.h"
 #include "../identification/SyntheticHistory.h"
 
 #include <QtTest>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 using namespace hsmu;
 
@@ -44,33 +44,6 @@ BoucWenPinchingParameters truth() {
     p.boucWen.deltaEta = 0.01;
     p.pinching = {0.7, 0.5, 0.1, 0.3, 0.0, 0.5};
     return p;
-}
-
-bool readRecord(const std::string& path, SpecimenHistory& h) {
-    std::ifstream in(path);
-    std::string line;
-    double t = 0.0;
-    while (in && std::getline(in, line)) {
-        if (line.empty() || line[0] == '#')
-            continue;
-        std::istringstream s(line);
-        double a, u, f;
-        if (!(s >> a >> u >> f))
-            return false;
-        h.time.push_back(t);
-        t += 0.01;
-        h.deformation.push_back(u);
-        h.force.push_back(f);
-    }
-    h.source = path;
-    return h.size() > 0;
-}
-
-int count(const std::vector<std::string>& messages, const char* what) {
-    int n = 0;
-    for (const std::string& m : messages)
-        n += m.find(what) != std::string::npos;
-    return n;
 }
 
 } // namespace
@@ -291,53 +264,9 @@ private slots:
     /// default online method.
     void onlineWithinAQuarterOfTheCalibration() {
         QFETCH(QString, file);
-        onlineWithinAQuarterOf(file);
+        test::onlineWithinAQuarterOf(file);
     }
 
-    /// The same on the HDRB bearing (26,379 samples; its own CTest test,
-    /// test_updating_pinchingukf_hdrb): the anchors run on the worker within their budget.
-    /// Against the pinching calibration's NRMSE on this record, 0.1071 (asserted by
-    /// test_identification_real_pinching_hdrb; not recomputed here: about 30 s of CPU).
-    void onlineOnTheHdrbBearing() {
-        if (!qEnvironmentVariableIsSet("HSMU_PINCHING_HDRB"))
-            QSKIP("run by test_updating_pinchingukf_hdrb (HSMU_PINCHING_HDRB=1)");
-        onlineWithinAQuarterOf(QString(HSMU_SHARED_DATA_DIR) +
-                                   "/hysteresis/isolator-hdrb-gallardo2023/hdrb_test.txt",
-                               0.1071);
-    }
-
-private:
-    /// calibration: the pinching calibration's NRMSE on the record when known (else computed).
-    void onlineWithinAQuarterOf(const QString& file, std::optional<double> calibration = {}) {
-        SpecimenHistory h;
-        if (!readRecord(file.toStdString(), h))
-            QSKIP(qPrintable("shared record absent: " + file));
-        const nlohmann::json config = {{"model", {{"law", "boucWenPinching"}}}};
-        IdentificationSettings s = withOverride(defaultIdentificationSettings(), config, "test");
-        QCOMPARE(s.updating.method, std::string("ukf"));
-        s.calibrate = !calibration.has_value();
-        const OfflineIdentificationResult r = identifyOffline(h, s);
-        QVERIFY(calibration || (r.calibration && r.calibration->ok));
-        const double best = calibration ? *calibration : r.calibration->nrmse;
-        const int divergences = count(r.messages, "diverging");
-        qInfo("%s, pinching: calibration NRMSE %.4f, online pinching UKF final NRMSE %.4f "
-              "(%.3fx), %d anchors, %d divergences, zetaS %.3f",
-              qPrintable(QFileInfo(file).fileName()), best, r.finalNrmse, r.finalNrmse / best, count(r.messages, "anchor"), divergences,
-              r.finalEstimate.at("zetaS"));
-        if (qEnvironmentVariableIsSet("HSMU_VERBOSE")) {
-            for (const std::string& m : r.messages)
-                qInfo("  %s", m.c_str());
-            for (const auto& [name, v] : r.finalEstimate)
-                qInfo("  online %s = %.5g (calibration %.5g)", name.c_str(), v,
-                      r.calibration && r.calibration->parameters.count(name)
-                          ? r.calibration->parameters.at(name)
-                          : NAN);
-        }
-        QCOMPARE(r.method, std::string("UKF (pinching)"));
-        QVERIFY2(r.finalNrmse <= 1.25 * best,
-                 qPrintable(QString("online NRMSE %1 > 1.25 x %2").arg(r.finalNrmse).arg(best)));
-        QCOMPARE(divergences, 0);
-    }
 };
 
 QTEST_APPLESS_MAIN(TestPinchingUkf)
