@@ -3251,8 +3251,8 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>deadline misses: %1 (worst %2 us late)</translation>
     </message>
     <message>
-        <source>outputs: %1/steps.csv, %1/summary.json</source>
-        <translation>outputs: %1/steps.csv, %1/summary.json</translation>
+        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
+        <translation>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</translation>
     </message>
     <message>
         <source>hsmu rths: %1</source>

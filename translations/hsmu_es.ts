@@ -3251,8 +3251,8 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>plazos incumplidos: %1 (el peor con %2 us de retraso)</translation>
     </message>
     <message>
-        <source>outputs: %1/steps.csv, %1/summary.json</source>
-        <translation>salidas: %1/steps.csv, %1/summary.json</translation>
+        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
+        <translation>salidas: %1/record.h5, %1/steps.csv, %1/summary.json</translation>
     </message>
     <message>
         <source>hsmu rths: %1</source>

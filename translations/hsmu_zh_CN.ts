@@ -3248,8 +3248,8 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>错过截止时间：%1 次（最差迟到 %2 us）</translation>
     </message>
     <message>
-        <source>outputs: %1/steps.csv, %1/summary.json</source>
-        <translation>输出：%1/steps.csv、%1/summary.json</translation>
+        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
+        <translation>输出：%1/record.h5、%1/steps.csv、%1/summary.json</translation>
     </message>
     <message>
         <source>hsmu rths: %1</source>

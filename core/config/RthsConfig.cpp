@@ -185,6 +185,7 @@ RthsConfig parseRthsConfig(const nlohmann::json& document, const std::string& fi
     root.requireObject();
     RthsConfig out;
     out.name = root.string("name", "RTHS");
+    out.raw = document;
     const JsonCursor r = root.child("rths");
     r.allowOnly({"rate", "structure", "plant", "limits", "sensors", "controller", "compensation",
                  "forceDelay", "groundMotion", "holdAfterMisses"});

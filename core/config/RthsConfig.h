@@ -27,6 +27,7 @@ struct RthsConfig {
     double groundMotionScale = 1.0;
     std::string groundMotionUnit = "m/s^2";
     int holdAfterMisses = 10;     ///< deadline misses (real-time pace) before the test holds; 0: never
+    nlohmann::json raw;           ///< the whole document as given (the record keeps it)
     /// The partition of `reference` with the plant's specimen (me, ce, ke) at specimenDof.
     rths::Partition partition() const;
 };

@@ -52,7 +52,8 @@ double loopDelay(const RthsSettings& s, double f)
 }
 
 RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
-                const RthsSettings& settings, TickGate* gate, double duration)
+                const RthsSettings& settings, TickGate* gate, double duration,
+                TickObserver* observer)
 {
     RthsLoop loop(partition, groundMotion, settings);
     const double h = loop.period();
@@ -66,6 +67,9 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
         v->reserve(std::size_t(n));
     std::vector<Eigen::VectorXd> hybrid;
     hybrid.reserve(std::size_t(n));
+    // The reference before the loop (cheap: RK4 of the linear structure), so that each tick
+    // can be recorded with it as it happens.
+    const Eigen::MatrixXd reference = referenceResponse(partition.reference, groundMotion, h, n);
     for (long k = 0; k < n; ++k) {
         if (gate && !gate->admit(k, gateHold))
             break;
@@ -79,6 +83,8 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
         run.measured.push_back(t.measured);
         run.force.push_back(t.force);
         hybrid.push_back(t.floors);
+        if (observer)
+            observer->onTick(k, t, reference.row(k));
         run.peakForce = std::max(run.peakForce, std::abs(loop.plant().force()));
         run.peakStroke = std::max(run.peakStroke, std::abs(loop.plant().displacement()));
         run.peakVelocity = std::max(run.peakVelocity, std::abs(loop.plant().velocity()));
@@ -90,7 +96,7 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
     run.hybrid.resize(m, floors);
     for (long k = 0; k < m; ++k)
         run.hybrid.row(k) = hybrid[std::size_t(k)].transpose();
-    run.reference = referenceResponse(partition.reference, groundMotion, h, m);
+    run.reference = reference.topRows(m);
     if (m < 2)
         return run;
     const auto col = [](const Eigen::MatrixXd& a, int i) {

@@ -44,10 +44,22 @@ public:
     virtual void done(long k) = 0;
 };
 
+/// Receives every tick of runRths as it is sampled (the run's HDF5 record: RthsRecord.h), on
+/// the loop's thread, after the gate's done(): its cost is outside the tick's deadline.
+class TickObserver {
+public:
+    virtual ~TickObserver() = default;
+    /// Tick k: what it produced, and the reference structure's floors at the same time [m].
+    virtual void onTick(long k, const RthsTick& tick,
+                        const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) = 0;
+};
+
 /// Run a whole record (its duration, at settings.rate) and evaluate it; with a gate, each tick
-/// waits for admit() and reports done(). duration > 0 stops earlier [s].
+/// waits for admit() and reports done(); with an observer, each tick is handed to it as it is
+/// sampled (so a record on disk holds every tick up to a crash). duration > 0 stops earlier [s].
 RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
-                const RthsSettings& settings, TickGate* gate = nullptr, double duration = 0.0);
+                const RthsSettings& settings, TickGate* gate = nullptr, double duration = 0.0,
+                TickObserver* observer = nullptr);
 
 /// Command (before the lead) to measured displacement of the discrete loop at omega [rad/s]:
 /// Lead(z) C(z) Gd / (1 + C(z) Gd), z = e^{j omega h}, Gd ~ G(j omega) e^{-j omega h / 2} (ZOH).

@@ -4,6 +4,8 @@
 #include "core/config/RthsConfig.h"
 #include "core/groundmotion/AccelerationUnit.h"
 #include "core/groundmotion/GroundMotionReader.h"
+#include "core/record/RecordWriter.h"
+#include "core/rths/RthsRecord.h"
 #include "core/rths/RthsReport.h"
 #include "gui/cli/ConsoleStreams.h"
 
@@ -130,6 +132,11 @@ int RthsCommand::exec(const QStringList& arguments)
 
         if (!QDir().mkpath(p.value(outOpt)))
             return fail(tr("%1: cannot create the output folder").arg(p.value(outOpt)));
+        const QString dir = p.value(outOpt);
+        const auto floors = int(part.reference.m.rows());
+        RecordStart start{cfg.raw.dump(), cfg.name, {}, 1.0 / s.rate};
+        RecordWriter record((dir + QStringLiteral("/record.h5")).toStdString(), rths::rthsLayout(floors), start);
+        rths::RthsRecordFeed feed(record, ag, floors);
         rths::RthsRun run;
         comms::MonotonicClock clock;
         comms::RealtimePacer pacer(clock, 1.0 / s.rate, cfg.holdAfterMisses);
@@ -138,15 +145,24 @@ int RthsCommand::exec(const QStringList& arguments)
             std::thread loop([&] {
                 if (p.isSet(prioOpt))
                     priority = comms::enterRealtimePriority(80);
-                run = rths::runRths(part, ag, s, &pacer, duration);
+                run = rths::runRths(part, ag, s, &pacer, duration, &feed);
             });
             loop.join();
             if (!priority.empty())
                 ConsoleStreams::err() << tr("hsmu rths: real-time priority not taken (%1); the loop ran at normal priority").arg(QString::fromStdString(priority)) << Qt::endl;
         } else {
-            run = rths::runRths(part, ag, s, nullptr, duration);
+            run = rths::runRths(part, ag, s, nullptr, duration, &feed);
         }
-        const QString dir = p.value(outOpt);
+        if (!run.hold.empty()) {
+            // A deadline-miss hold is the pacer's; any other is a limit of the plant or command.
+            const bool deadline = pace == QLatin1String("realtime") && cfg.holdAfterMisses > 0 &&
+                                  pacer.misses() >= cfg.holdAfterMisses;
+            const auto last = run.time.empty() ? 0 : int(run.time.size()) - 1;
+            record.writeAlarms({Alarm(run.time.empty() ? 0.0 : run.time.back(), last, AlarmSeverity::Critical,
+                                      deadline ? AlarmKind::ControlFault : AlarmKind::LimitExceeded, run.hold)});
+        }
+        if (!record.finish())
+            return fail(QString::fromStdString(record.error()));
         rths::writeRthsSteps((dir + QStringLiteral("/steps.csv")).toStdString(), run);
         nlohmann::json summary = rths::rthsSummary(run, s, pre);
         summary["name"] = cfg.name;
@@ -165,7 +181,7 @@ int RthsCommand::exec(const QStringList& arguments)
                    .arg(run.frequency.frequency, 0, 'f', 2).arg(run.trackingIndicator, 0, 'g', 3) << Qt::endl;
         if (pace == QLatin1String("realtime"))
             out << tr("deadline misses: %1 (worst %2 us late)").arg(pacer.misses()).arg(pacer.worstLateness() * 1e6, 0, 'f', 1) << Qt::endl;
-        out << tr("outputs: %1/steps.csv, %1/summary.json").arg(dir) << Qt::endl;
+        out << tr("outputs: %1/record.h5, %1/steps.csv, %1/summary.json").arg(dir) << Qt::endl;
         if (!run.hold.empty()) {
             ConsoleStreams::err() << tr("hsmu rths: %1").arg(QString::fromStdString(run.hold)) << Qt::endl;
             return 2;

@@ -1,0 +1,51 @@
+#include "core/rths/RthsRecord.h"
+
+#include <limits>
+
+namespace hsmu::rths {
+
+RunLayout rthsLayout(int floors)
+{
+    RunLayout layout;
+    for (int i = 1; i <= floors; ++i)
+        layout.dofNames.push_back("floor " + std::to_string(i));
+    for (int i = 1; i <= floors; ++i)
+        layout.dofNames.push_back("reference floor " + std::to_string(i));
+    ElementInfo specimen;
+    specimen.name = "specimen";
+    specimen.type = "servoHydraulic";
+    specimen.experimental = true;
+    specimen.nonlinear = false;
+    specimen.units = ElementUnits{"m", "N"};
+    layout.elements.push_back(specimen);
+    return layout;
+}
+
+RthsRecordFeed::RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors)
+    : m_sink(sink), m_ag(groundMotion), m_floors(floors)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    m_row.u = Eigen::VectorXd::Zero(2 * floors);
+    m_row.v = Eigen::VectorXd::Constant(2 * floors, nan);
+    m_row.a = m_row.v;
+    m_row.elements.resize(1);
+}
+
+void RthsRecordFeed::onTick(long k, const RthsTick& tick,
+                            const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference)
+{
+    m_row.step = int(k);
+    m_row.time = tick.time;
+    m_row.groundAcceleration = m_ag.at(tick.time);
+    m_row.u.head(m_floors) = tick.floors;
+    m_row.u.tail(m_floors) = reference.transpose();
+    ElementSample& e = m_row.elements.front();
+    e.deformation = tick.measured;
+    e.force = tick.force;
+    e.commanded = tick.desired;
+    e.actuator.commanded = tick.command;
+    e.actuator.measured = tick.measured;
+    m_sink.onStep(m_row);
+}
+
+} // namespace hsmu::rths

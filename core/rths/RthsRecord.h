@@ -1,0 +1,38 @@
+#pragma once
+// RthsRecord: an RTHS run as a run record (docs/rths.md, "Outputs"; schema docs/recording.md),
+// so that `hsmu export`, the console's replay and `hsmu.Record` read it like any test. Each
+// loop tick is one row (step k = tick k, time k h [s]):
+//   /dofs/u        the hybrid floors 1..n ("floor i") [m], then the reference structure's
+//                  floors ("reference floor i") [m]; /dofs/v and /dofs/a are NaN (the loop
+//                  keeps no per-floor velocity or acceleration in its outputs)
+//   /elements      one experimental element "specimen" (type "servoHydraulic", m and N):
+//                  deformation = measured xm, force = measured fm, commanded = desired y;
+//                  /elements/actuator: commanded = x* after compensation, measured = xm
+//   /steps/ground_acceleration  the record at t [m/s^2]
+// Ticks reach the record through RecordWriter (batched, on its own thread) as they happen.
+
+#include "core/experiment/StepRecord.h"
+#include "core/groundmotion/GroundMotion.h"
+#include "core/output/RunLayout.h"
+#include "core/rths/RthsBenchmark.h"
+
+namespace hsmu::rths {
+
+/// The record's layout for a partition with `floors` floors.
+RunLayout rthsLayout(int floors);
+
+/// Turns ticks into StepRecords for a StepObserver (a RecordWriter). No allocation per tick.
+class RthsRecordFeed final : public TickObserver {
+public:
+    RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors);
+    void onTick(long k, const RthsTick& tick,
+                const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) override;
+
+private:
+    StepObserver& m_sink;
+    const GroundMotion& m_ag;
+    int m_floors;
+    StepRecord m_row;
+};
+
+} // namespace hsmu::rths
