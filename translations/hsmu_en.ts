@@ -1372,6 +1372,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>  peak force:</translation>
     </message>
     <message>
+        <source>  tracking of %1 (commanded against measured): J1 %2 ms, J2 %3 %, J3 %4 %</source>
+        <translation>  tracking of %1 (commanded against measured): J1 %2 ms, J2 %3 %, J3 %4 %</translation>
+    </message>
+    <message>
         <source>  alarms: none</source>
         <translation>  alarms: none</translation>
     </message>

@@ -1372,6 +1372,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>  fuerza máxima:</translation>
     </message>
     <message>
+        <source>  tracking of %1 (commanded against measured): J1 %2 ms, J2 %3 %, J3 %4 %</source>
+        <translation>  seguimiento de %1 (ordenado frente a medido): J1 %2 ms, J2 %3 %, J3 %4 %</translation>
+    </message>
+    <message>
         <source>  alarms: none</source>
         <translation>  alarmas: ninguna</translation>
     </message>

@@ -13,7 +13,8 @@ void keepPeak(double& peak, double value) {
 
 RunStatistics::RunStatistics(RunLayout layout)
     : m_layout(std::move(layout)), m_peakU(m_layout.dofNames.size(), 0.0),
-      m_peakForce(m_layout.elements.size(), 0.0), m_peakDeformation(m_layout.elements.size(), 0.0) {
+      m_peakForce(m_layout.elements.size(), 0.0), m_peakDeformation(m_layout.elements.size(), 0.0),
+      m_commanded(m_layout.elements.size()), m_measured(m_layout.elements.size()) {
 }
 
 void RunStatistics::onStep(const StepRecord& record) {
@@ -25,6 +26,12 @@ void RunStatistics::onStep(const StepRecord& record) {
     for (std::size_t i = 0; i < m_peakForce.size() && i < record.elements.size(); ++i) {
         keepPeak(m_peakForce[i], record.elements[i].force);
         keepPeak(m_peakDeformation[i], record.elements[i].deformation);
+        const ElementSample& e = record.elements[i];
+        if (record.step > 0 && m_layout.elements[i].experimental && std::isfinite(e.commanded) &&
+            std::isfinite(e.deformation)) {
+            m_commanded[i].push_back(e.commanded);
+            m_measured[i].push_back(e.deformation);
+        }
     }
 }
 

@@ -3,7 +3,9 @@
 // the last record (final state) and peak absolute values over every committed step:
 //   displacement per DOF [m], force and deformation per element (the element's units,
 //   measured for a specimen), ground acceleration [m/s^2].
-// Non-finite values are ignored for the peaks.
+// Non-finite values are ignored for the peaks. For each specimen (an experimental element) it
+// also keeps the commanded and measured deformation of every step after the initial state, for
+// the tracking criteria of the summary (core/rths/TrackingMetrics.h: J1-J3, M5, M6).
 //
 // Thread rules: onStep() runs on the test's thread; read the results once the test stopped
 // stepping (or on that thread).
@@ -30,6 +32,10 @@ public:
     const std::vector<double>& peakForce() const { return m_peakForce; }
     const std::vector<double>& peakDeformation() const { return m_peakDeformation; }
     double peakGroundAcceleration() const { return m_peakAg; }
+    /// Element i's commanded / measured deformation from step 1 on (its units); empty for a
+    /// numerical element.
+    const std::vector<double>& commanded(std::size_t i) const { return m_commanded[i]; }
+    const std::vector<double>& measured(std::size_t i) const { return m_measured[i]; }
 
 private:
     RunLayout m_layout;
@@ -37,6 +43,7 @@ private:
     StepRecord m_last;
     std::vector<double> m_peakU, m_peakForce, m_peakDeformation;
     double m_peakAg = 0.0;
+    std::vector<std::vector<double>> m_commanded, m_measured;
 };
 
 } // namespace hsmu

@@ -1,9 +1,12 @@
 #include "core/output/RunSummary.h"
 
+#include "core/rths/TrackingMetrics.h"
+
 #include "core/integration/Integrator.h"
 #include "core/output/RunStatistics.h"
 #include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
+#include "core/rths/TrackingMetrics.h"
 
 #include <cmath>
 #include <fstream>
@@ -111,9 +114,26 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     j["alarms"] = alarms;
     const auto reason = holdReason(test);
     j["hold_reason"] = reason ? nlohmann::json(*reason) : nlohmann::json(nullptr);
+    nlohmann::json tracking = nlohmann::json::object();
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
+        if (stats.commanded(i).size() >= 2)
+            tracking[layout.elements[i].name] = trackingJson(
+                rths::trackingReport(stats.commanded(i), stats.measured(i), test.dt()),
+                layout.elements[i].units.deformation);
+    j["tracking"] = tracking;
     if (const ModelUpdater* updater = test.updater())
         j["updating"] = updatingBlock(*updater, last);
     return j;
+}
+
+nlohmann::json trackingJson(const rths::TrackingReport& r, const std::string& unit) {
+    return {{"J1_ms", number(r.j1)},
+            {"J2_percent", number(r.j2)},
+            {"J3_percent", number(r.j3)},
+            {"frequency_evaluation", {{"amplitude", number(r.frequency.amplitude)},
+                                      {"delay_ms", number(r.frequency.delay)},
+                                      {"frequency_Hz", number(r.frequency.frequency)}}},
+            {"tracking_indicator", withUnit(r.indicator, unit + "^2")}};
 }
 
 void writeSummaryJson(const std::string& path, const HybridTest& test, const RunStatistics& stats,

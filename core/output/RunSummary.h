@@ -9,6 +9,10 @@
 //   peak_deformation {element: {value, unit}},
 //   alarms [{time_s, step, severity, kind, message}] (the updating alarms included),
 //   hold_reason (string or null),
+//   tracking {specimen: {J1_ms, J2_percent, J3_percent, frequency_evaluation {amplitude,
+//     delay_ms, frequency_Hz}, tracking_indicator {value, unit}}}: each specimen's commanded
+//     against measured deformation over the committed steps (docs/rths.md, "Tracking
+//     metrics"; sampled at dt, so J1 resolves a step's fraction by its parabola only),
 //   updating (only when the test runs online model updating):
 //     {specimen, method, parameters {name: final value}, standard_deviations {name: value},
 //      applied_updates, pending_proposals, final_fit_error}
@@ -26,6 +30,9 @@ namespace hsmu {
 
 class HybridTest;
 class RunStatistics;
+namespace rths {
+struct TrackingReport;
+}
 
 struct RunInfo {
     std::string configName; ///< TestConfig::name
@@ -36,6 +43,9 @@ struct RunInfo {
 /// The reason the test is holding (the last critical alarm's message without a leading
 /// "test held: "), if it is holding.
 std::optional<std::string> holdReason(const HybridTest& test);
+
+/// One specimen's tracking block (summary.json "tracking", compare.json); unit: its deformation's.
+nlohmann::json trackingJson(const rths::TrackingReport& report, const std::string& unit);
 
 nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats,
                               const RunInfo& info);

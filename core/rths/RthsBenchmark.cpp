@@ -104,9 +104,10 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
     };
     const int j = partition.specimen.dof;
     auto& c = run.criteria.j;
-    c[0] = delayByCorrelation(run.desired, run.measured, h);
-    c[1] = normalizedRmsError(run.desired, run.measured);
-    c[2] = peakError(run.desired, run.measured);
+    const TrackingReport tracking = trackingReport(run.desired, run.measured, h);
+    c[0] = tracking.j1;
+    c[1] = tracking.j2;
+    c[2] = tracking.j3;
     c[3] = normalizedRmsError(col(run.reference, j), run.measured);
     c[4] = peakError(col(run.reference, j), run.measured);
     // J6..J9: the two numerical floors after the specimen's (the benchmark's floors 2 and 3).
@@ -118,8 +119,8 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
         c[7 + slot] = peakError(col(run.reference, i), col(run.hybrid, i));
         ++slot;
     }
-    run.frequency = frequencyEvaluationIndex(run.desired, run.measured, h);
-    run.trackingIndicator = trackingIndicator(run.desired, run.measured);
+    run.frequency = tracking.frequency;
+    run.trackingIndicator = tracking.indicator;
     return run;
 }
 

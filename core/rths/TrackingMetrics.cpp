@@ -112,4 +112,17 @@ double trackingIndicator(const std::vector<double>& y, const std::vector<double>
     return a;
 }
 
+TrackingReport trackingReport(const std::vector<double>& y, const std::vector<double>& xm, double h)
+{
+    TrackingReport r;
+    if (y.size() < 2 || xm.size() != y.size())
+        return r;
+    r.j1 = delayByCorrelation(y, xm, h);
+    r.j2 = normalizedRmsError(y, xm);
+    r.j3 = peakError(y, xm);
+    r.frequency = frequencyEvaluationIndex(y, xm, h);
+    r.indicator = trackingIndicator(y, xm);
+    return r;
+}
+
 } // namespace hsmu::rths

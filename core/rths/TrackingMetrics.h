@@ -38,6 +38,15 @@ FrequencyEvaluation frequencyEvaluationIndex(const std::vector<double>& y,
 /// M6 over the whole history [m^2].
 double trackingIndicator(const std::vector<double>& y, const std::vector<double>& xm);
 
+/// What a run's summary reports of one actuator's tracking (M1, M2, M3, M5, M6): y desired,
+/// xm measured, sampled at h [s]; `hsmu rths`, `hsmu run` and `hsmu compare` alike.
+struct TrackingReport {
+    double j1 = 0.0, j2 = 0.0, j3 = 0.0; ///< [ms], [%], [%]
+    FrequencyEvaluation frequency;
+    double indicator = 0.0;              ///< [unit of y squared]
+};
+TrackingReport trackingReport(const std::vector<double>& y, const std::vector<double>& xm, double h);
+
 /// J1..J9 of a run (index 0 = J1).
 struct BenchmarkCriteria {
     double j[9] = {};

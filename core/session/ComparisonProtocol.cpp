@@ -4,6 +4,7 @@
 #include "core/config/TestFactory.h"
 #include "core/structure/Structure.h"
 #include "core/experiment/HybridTest.h"
+#include "core/output/RunStatistics.h"
 #include "core/session/TestSession.h"
 #include "core/updating/ModelUpdater.h"
 
@@ -79,10 +80,12 @@ ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
         options.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt, name};
     }
     (void)index;
+    RunStatistics stats(RunLayout::of(test->structure()));
     TestSession session(std::move(test), options);
     const HybridTest& t = session.test();
     Collector collector(run, e, d);
     session.addObserver(&collector);
+    session.addObserver(&stats);
     if (!session.openRecord())
         throw ConfigError(session.lastError());
     if (!session.prepare())
@@ -98,6 +101,14 @@ ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
         }
     });
     session.removeObserver(&collector);
+    session.removeObserver(&stats);
+    const RunLayout& layout = stats.layout();
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
+        if (stats.commanded(i).size() >= 2) {
+            run.tracking.emplace_back(layout.elements[i].name,
+                                      rths::trackingReport(stats.commanded(i), stats.measured(i), t.dt()));
+            run.trackingUnits.push_back(layout.elements[i].units.deformation);
+        }
     if (!session.finish())
         run.recordError = session.lastError();
     run.steps = t.currentStep();

@@ -11,6 +11,7 @@
 // displacement:  NRMSE = RMS(x - x_ref) / RMS(x_ref),  peak error = max |x - x_ref|.
 
 #include "core/config/TestConfig.h"
+#include "core/rths/TrackingMetrics.h"
 
 #include <functional>
 #include <map>
@@ -39,6 +40,10 @@ struct ComparisonRun {
     int steps = 0;
     std::string finalState;
     std::vector<std::string> alarms; ///< "t = ... s: message"
+    /// Each specimen's tracking, commanded against measured (core/rths/TrackingMetrics.h), and
+    /// its deformation unit; specimens in the structure's order.
+    std::vector<std::pair<std::string, rths::TrackingReport>> tracking;
+    std::vector<std::string> trackingUnits;
     std::string recordError;         ///< why its record could not be written ("" = fine)
 };
 

@@ -1,5 +1,7 @@
 #include "core/session/ComparisonSummary.h"
 
+#include "core/output/RunSummary.h"
+
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -62,6 +64,12 @@ nlohmann::json makeComparisonSummary(const ComparisonResult& r, const TestConfig
     j["runs"] = {{"initial", metricJson(r.initialMetric, r.initial)},
                  {"updated", metricJson(r.updatedMetric, r.updated)}};
     j["reference"] = {{"steps", r.reference.steps}, {"final_state", r.reference.finalState}};
+    for (const ComparisonRun* run : {&r.reference, &r.initial, &r.updated}) {
+        nlohmann::json tracking = nlohmann::json::object();
+        for (std::size_t i = 0; i < run->tracking.size(); ++i)
+            tracking[run->tracking[i].first] = trackingJson(run->tracking[i].second, run->trackingUnits[i]);
+        (run == &r.reference ? j["reference"] : j["runs"][run->name])["tracking"] = tracking;
+    }
     j["parameters"] = u.parameterNames;
     j["final_parameters"] = lastOf(u.parameterNames, u.parameters);
     j["final_standard_deviations"] = lastOf(u.parameterNames, u.stddev);

@@ -5,6 +5,8 @@
 //   runs {initial, updated}: {force_nrmse [-], force_peak_error [force_unit],
 //        displacement_nrmse [-], displacement_peak_error [m], steps, final_state},
 //   reference {steps, final_state},
+//   runs.initial.tracking, runs.updated.tracking, reference.tracking: {specimen: as
+//     summary.json's "tracking" (RunSummary.h), commanded against measured deformation},
 //   parameters [names, the identifier's order],
 //   final_parameters {name: value}, final_standard_deviations {name: value}
 //     (the updated run's last estimate, the law's own units: normalized for Bouc-Wen),

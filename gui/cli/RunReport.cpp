@@ -3,6 +3,7 @@
 #include "core/output/RunStatistics.h"
 #include "core/output/RunSummary.h"
 #include "core/experiment/HybridTest.h"
+#include "core/rths/TrackingMetrics.h"
 #include "gui/plots/PlotSelection.h"
 
 #include <QDir>
@@ -81,6 +82,14 @@ void RunReport::print(QTextStream& out, const HybridTest& test, const RunStatist
             << QString::fromStdString(layout.elements[i].units.force) << '\n';
     }
     more(elements.size(), layout.elements.size());
+    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
+        if (stats.commanded(i).size() < 2)
+            continue;
+        const rths::TrackingReport t = rths::trackingReport(stats.commanded(i), stats.measured(i), test.dt());
+        out << tr("  tracking of %1 (commanded against measured): J1 %2 ms, J2 %3 %, J3 %4 %")
+                   .arg(QString::fromStdString(layout.elements[i].name), num(t.j1, 3), num(t.j2, 3), num(t.j3, 3))
+            << '\n';
+    }
     printUpdating(out, test, layout, stats.last());
     if (test.alarms().empty())
         out << tr("  alarms: none") << '\n';

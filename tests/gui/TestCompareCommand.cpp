@@ -46,7 +46,14 @@ private slots:
                          qPrintable(run + QLatin1Char('.') + k));
             }
             QCOMPARE(m.value(QStringLiteral("final_state")).toString(), QStringLiteral("finished"));
+            // Issue 23 item 5: each run's specimens' tracking (the ideal virtual actuator: exact).
+            const QJsonObject t = m.value(QStringLiteral("tracking")).toObject();
+            QCOMPARE(t.keys(), QStringList{QStringLiteral("Element 1")});
+            QCOMPARE(t.value(QStringLiteral("Element 1")).toObject().value(QStringLiteral("J2_percent")).toDouble(), 0.0);
         }
+        // The reference run has the compared element as a specimen too.
+        QCOMPARE(j.value(QStringLiteral("reference")).toObject().value(QStringLiteral("tracking")).toObject().keys(),
+                 (QStringList{QStringLiteral("Element 1"), QStringLiteral("Element 2")}));
         const double initial =
             runs.value(QStringLiteral("initial")).toObject().value(keys[0]).toDouble();
         const double updated =
