@@ -1,5 +1,7 @@
 #include "core/updating/Inspector.h"
 
+#include "core/rths/TrackingMetrics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -176,40 +178,14 @@ void Inspector::trackingIndices()
     const std::size_t n = m_cmd.size();
     if (n < 4)
         return;
-    // Contiguous copies: the lag loop below reads the windows ~n^2 / 4 times.
+    // The RTHS criteria (core/rths/TrackingMetrics.h, M1-M3) over the window: one definition
+    // for the live inspector, `hsmu run`'s summary and `hsmu rths`. J1 searches lags up to a
+    // quarter of the window.
     m_cmdBuf.assign(m_cmd.begin(), m_cmd.end());
     m_measBuf.assign(m_meas.begin(), m_meas.end());
-    const double* cmd = m_cmdBuf.data();
-    const double* meas = m_measBuf.data();
-    double se = 0.0, sc = 0.0, pe = 0.0, pc = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double e = meas[i] - cmd[i];
-        se += e * e;
-        sc += cmd[i] * cmd[i];
-        pe = std::max(pe, std::abs(e));
-        pc = std::max(pc, std::abs(cmd[i]));
-    }
-    m_tracking.j2 = sc > 0.0 ? std::sqrt(se / sc) : 0.0;
-    m_tracking.j3 = pc > 0.0 ? pe / pc : 0.0;
-    // J1: the lag (measured behind commanded) maximizing the normalized cross-correlation of
-    // the overlapping parts, up to a quarter of the window.
-    const std::size_t maxLag = n / 4;
-    double best = -INFINITY;
-    std::size_t bestLag = 0;
-    for (std::size_t lag = 0; lag <= maxLag; ++lag) {
-        double c = 0.0, mm = 0.0, cc = 0.0;
-        for (std::size_t i = lag; i < n; ++i) {
-            c += meas[i] * cmd[i - lag];
-            mm += meas[i] * meas[i];
-            cc += cmd[i - lag] * cmd[i - lag];
-        }
-        c = mm > 0.0 && cc > 0.0 ? c / std::sqrt(mm * cc) : 0.0;
-        if (c > best) {
-            best = c;
-            bestLag = lag;
-        }
-    }
-    m_tracking.j1 = double(bestLag) * m_dt;
+    m_tracking.j1 = rths::delayByCorrelation(m_cmdBuf, m_measBuf, m_dt, int(n / 4)) * 1e-3;
+    m_tracking.j2 = rths::normalizedRmsError(m_cmdBuf, m_measBuf) * 1e-2;
+    m_tracking.j3 = rths::peakError(m_cmdBuf, m_measBuf) * 1e-2;
 }
 
 } // namespace hsmu

@@ -185,7 +185,9 @@ private slots:
             const double m = i >= delaySteps ? cmd(i - delaySteps) : 0.0;
             at.observe(input(i, dt, 1.0, 1.0, m, c), alarms);
         }
-        QVERIFY2(std::abs(at.tracking().j1 - delaySteps * dt) < 1e-12,
+        // J1: the correlation's peak refined by a parabola (a sine's peak is not a parabola):
+        // within 2 % of a step of the delay.
+        QVERIFY2(std::abs(at.tracking().j1 - delaySteps * dt) < 0.02 * dt,
                  qPrintable(QString::number(at.tracking().j1)));
         // J2 of a pure delay tau on a sine: sqrt(2 - 2 cos(w tau)) (RMS ratio), w = pi.
         const double expectedJ2 = std::sqrt(2 - 2 * std::cos(M_PI * delaySteps * dt));
