@@ -1,0 +1,250 @@
+#include "core/experimental/setup/PlanarActuatorSetup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace hsmu {
+
+namespace {
+constexpr int kMaxNewton = 30;
+constexpr double kRankTolerance = 1e-9;   // smallest / largest singular value, columns normalized
+constexpr double kLengthTolerance = 1e-9; // current actuator length / rest length
+} // namespace
+
+bool parseActuatorSide(const std::string& word, bool& right) {
+    if (word == "left" || word == "l") {
+        right = false;
+        return true;
+    }
+    if (word == "right" || word == "r") {
+        right = true;
+        return true;
+    }
+    return false;
+}
+
+PlanarActuatorSetup::PlanarActuatorSetup(std::string typeName,
+                                         std::vector<PlanarActuator> actuators,
+                                         SetupGeometry geometry, double phiLocXDeg,
+                                         std::vector<int> controlledDofs)
+    : m_typeName(std::move(typeName)), m_actuators(std::move(actuators)), m_geometry(geometry),
+      m_controlled(std::move(controlledDofs)) {
+    for (const PlanarActuator& a : m_actuators)
+        m_La.push_back((a.attach - a.base).norm());
+    const double phi = phiLocXDeg * std::numbers::pi / 180.0;
+    m_cphi = std::cos(phi);
+    m_sphi = std::sin(phi);
+    for (int k = 0; k < 3; ++k)
+        if (std::find(m_controlled.begin(), m_controlled.end(), k) == m_controlled.end())
+            m_given.push_back(k);
+}
+
+Eigen::Vector3d PlanarActuatorSetup::toSetupFrame(const Eigen::VectorXd& d) const {
+    return {m_cphi * d(0) - m_sphi * d(1), m_sphi * d(0) + m_cphi * d(1), d(2)};
+}
+
+Eigen::Vector3d PlanarActuatorSetup::toElementFrame(const Eigen::Vector3d& dl) const {
+    return {m_cphi * dl(0) + m_sphi * dl(1), -m_sphi * dl(0) + m_cphi * dl(1), dl(2)};
+}
+
+bool PlanarActuatorSetup::stroke(int i, const Eigen::Vector3d& dl, double& s) const {
+    const PlanarActuator& a = m_actuators[i];
+    if (m_geometry == SetupGeometry::Linear) {
+        const Eigen::Vector2d e = (a.attach - a.base) / m_La[i];
+        s = e.x() * (dl(0) - dl(2) * a.attach.y()) + e.y() * (dl(1) + dl(2) * a.attach.x());
+        return true;
+    }
+    const double c = std::cos(dl(2)), sn = std::sin(dl(2));
+    const double rx = dl(0) + c * a.attach.x() - sn * a.attach.y() - a.base.x();
+    const double ry = dl(1) + sn * a.attach.x() + c * a.attach.y() - a.base.y();
+    const double len = std::hypot(rx, ry);
+    s = len - m_La[i];
+    return len > kLengthTolerance * m_La[i];
+}
+
+void PlanarActuatorSetup::rowAt(int i, const Eigen::Vector3d& dl, double* row) const {
+    const PlanarActuator& a = m_actuators[i];
+    const double th = m_geometry == SetupGeometry::Linear ? 0.0 : dl(2);
+    const double c = std::cos(th), sn = std::sin(th);
+    double nx = 0, ny = 0;
+    if (m_geometry == SetupGeometry::Linear) {
+        nx = (a.attach.x() - a.base.x()) / m_La[i];
+        ny = (a.attach.y() - a.base.y()) / m_La[i];
+    } else {
+        const double rx = dl(0) + c * a.attach.x() - sn * a.attach.y() - a.base.x();
+        const double ry = dl(1) + sn * a.attach.x() + c * a.attach.y() - a.base.y();
+        const double len = std::hypot(rx, ry);
+        nx = rx / len;
+        ny = ry / len;
+    }
+    // d/dtheta of R(theta) a
+    const double dpx = -sn * a.attach.x() - c * a.attach.y();
+    const double dpy = c * a.attach.x() - sn * a.attach.y();
+    row[0] = nx;
+    row[1] = ny;
+    row[2] = nx * dpx + ny * dpy;
+}
+
+SetupResult PlanarActuatorSetup::strokes(const Eigen::VectorXd& d, Eigen::VectorXd& s) const {
+    if (d.size() != 3)
+        return SetupResult::fault(m_typeName +
+                                  ": 3 basic displacements (u, v, theta) wanted, got " +
+                                  std::to_string(d.size()));
+    const Eigen::Vector3d dl = toSetupFrame(d);
+    s.resize(actuatorCount());
+    for (int i = 0; i < actuatorCount(); ++i)
+        if (!stroke(i, dl, s(i)))
+            return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
+                                      " would shrink to zero length at the commanded motion");
+    return SetupResult::success();
+}
+
+SetupResult PlanarActuatorSetup::jacobianLocal(const Eigen::Vector3d& dl,
+                                               Eigen::MatrixXd& J) const {
+    J.resize(actuatorCount(), 3);
+    for (int i = 0; i < actuatorCount(); ++i) {
+        double len = 0;
+        if (m_geometry == SetupGeometry::Exact && !stroke(i, dl, len))
+            return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
+                                      " has zero length at the commanded motion");
+        double row[3];
+        rowAt(i, dl, row);
+        J(i, 0) = row[0];
+        J(i, 1) = row[1];
+        J(i, 2) = row[2];
+    }
+    return SetupResult::success();
+}
+
+SetupResult PlanarActuatorSetup::jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const {
+    if (d.size() != 3)
+        return SetupResult::fault(m_typeName +
+                                  ": 3 basic displacements (u, v, theta) wanted, got " +
+                                  std::to_string(d.size()));
+    if (SetupResult r = jacobianLocal(toSetupFrame(d), J); !r.ok)
+        return r;
+    // chain rule through (u, v)_setup = R(phi) (u, v)_element
+    for (int i = 0; i < J.rows(); ++i) {
+        const double jx = J(i, 0), jy = J(i, 1);
+        J(i, 0) = jx * m_cphi + jy * m_sphi;
+        J(i, 1) = -jx * m_sphi + jy * m_cphi;
+    }
+    return SetupResult::success();
+}
+
+std::string PlanarActuatorSetup::singularity(const Eigen::MatrixXd& Jc) {
+    Eigen::MatrixXd n = Jc;
+    for (int k = 0; k < n.cols(); ++k) {
+        const double norm = n.col(k).norm();
+        if (norm == 0.0)
+            return "no actuator acts on basic DOF column " + std::to_string(k + 1);
+        n.col(k) /= norm;
+    }
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(n);
+    const auto& sv = svd.singularValues();
+    if (sv(sv.size() - 1) <= kRankTolerance * sv(0)) {
+        std::ostringstream os;
+        os << "the actuators cannot fix the controlled DOFs (parallel or coincident; singular "
+              "value "
+              "ratio "
+           << sv(sv.size() - 1) / sv(0) << ")";
+        return os.str();
+    }
+    return {};
+}
+
+std::string PlanarActuatorSetup::restSingularity() const {
+    Eigen::MatrixXd J0(actuatorCount(), 3);
+    for (int i = 0; i < actuatorCount(); ++i) {
+        if (!(m_La[i] > 0.0))
+            return "actuator " + std::to_string(i + 1) +
+                   " has zero length (attachment on its base)";
+        const PlanarActuator& a = m_actuators[i];
+        const Eigen::Vector2d e = (a.attach - a.base) / m_La[i];
+        J0(i, 0) = e.x();
+        J0(i, 1) = e.y();
+        J0(i, 2) = -e.x() * a.attach.y() + e.y() * a.attach.x();
+    }
+    Eigen::MatrixXd Jc(actuatorCount(), static_cast<int>(m_controlled.size()));
+    for (int k = 0; k < Jc.cols(); ++k)
+        Jc.col(k) = J0.col(m_controlled[k]);
+    return singularity(Jc);
+}
+
+SetupResult PlanarActuatorSetup::basicDisplacements(const Eigen::VectorXd& s,
+                                                    const Eigen::VectorXd& given,
+                                                    Eigen::VectorXd& d) const {
+    const int m = actuatorCount();
+    if (s.size() != m || given.size() != 3)
+        return SetupResult::fault(m_typeName + ": " + std::to_string(m) +
+                                  " strokes and 3 given basic displacements wanted, got " +
+                                  std::to_string(s.size()) + " and " +
+                                  std::to_string(given.size()));
+    Eigen::Vector3d dl = toSetupFrame(given);
+    Eigen::MatrixXd J(m, 3), Jc(m, m);
+    Eigen::VectorXd r(m), s0(m);
+    auto solveStep = [&](const Eigen::Vector3d& at, bool linear) -> SetupResult {
+        if (linear) {
+            for (int i = 0; i < m; ++i) {
+                double row[3];
+                const PlanarActuator& a = m_actuators[i];
+                const Eigen::Vector2d e = (a.attach - a.base) / m_La[i];
+                row[0] = e.x();
+                row[1] = e.y();
+                row[2] = -e.x() * a.attach.y() + e.y() * a.attach.x();
+                for (int k = 0; k < 3; ++k)
+                    J(i, k) = row[k];
+            }
+        } else if (SetupResult q = jacobianLocal(at, J); !q.ok) {
+            return q;
+        }
+        for (int k = 0; k < m; ++k)
+            Jc.col(k) = J.col(m_controlled[k]);
+        if (std::string why = singularity(Jc); !why.empty())
+            return SetupResult::fault(m_typeName +
+                                      ": measured strokes at a singular geometry: " + why);
+        return SetupResult::success();
+    };
+    // Linear solution (the exact formulation's start): J0_c d_c = s - J0_g d_g.
+    if (SetupResult q = solveStep(dl, true); !q.ok)
+        return q;
+    Eigen::VectorXd rhs = s;
+    for (int g : m_given)
+        rhs -= J.col(g) * dl(g);
+    const Eigen::VectorXd dc = Jc.fullPivLu().solve(rhs);
+    for (int k = 0; k < m; ++k)
+        dl(m_controlled[k]) = dc(k);
+    if (m_geometry == SetupGeometry::Exact) {
+        double maxLa = 0;
+        for (double La : m_La)
+            maxLa = std::max(maxLa, La);
+        bool converged = false;
+        for (int it = 0; it < kMaxNewton && !converged; ++it) {
+            for (int i = 0; i < m; ++i) {
+                if (!stroke(i, dl, s0(i)))
+                    return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
+                                              " reaches zero length solving the measured strokes");
+                r(i) = s(i) - s0(i);
+            }
+            if (r.cwiseAbs().maxCoeff() <= 1e-13 * maxLa) {
+                converged = true;
+                break;
+            }
+            if (SetupResult q = solveStep(dl, false); !q.ok)
+                return q;
+            const Eigen::VectorXd step = Jc.fullPivLu().solve(r);
+            for (int k = 0; k < m; ++k)
+                dl(m_controlled[k]) += step(k);
+        }
+        if (!converged)
+            return SetupResult::fault(m_typeName +
+                                      ": the measured strokes have no geometric solution (Newton "
+                                      "did not converge in 30 iterations)");
+    }
+    d = toElementFrame(dl);
+    return SetupResult::success();
+}
+
+} // namespace hsmu

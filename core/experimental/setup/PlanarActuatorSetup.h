@@ -1,0 +1,83 @@
+#pragma once
+// PlanarActuatorSetup: the 2D family of OpenFresco's multi-actuator setups (TwoActuators2d,
+// ThreeActuators2d, ThreeActuatorsJntOff2d, InvertedVBrace2d, InvertedVBraceJntOff2d,
+// ChevronBrace2d). A rigid loading beam (platform) carries the element's control point; each
+// actuator is a straight pin-ended link from a fixed base point to an attachment point on the
+// platform (docs/setups.md, "The planar family").
+//
+// Basic DOFs d = (u, v, theta): the control point's displacement along local x and y [m] and
+// the platform's rotation [rad], counter-clockwise positive. With phiLocX (OpenFresco's
+// -phiLocX, [deg]) the element's (u, v) are first rotated into the setup's frame:
+// (u, v)_setup = R(phiLocX) (u, v)_element.
+// Actuator i: attachment a_i and base b_i in the setup frame at rest, relative to the control
+// point [m]; rest length La_i = |a_i - b_i|; unit rest direction e_i = (a_i - b_i) / La_i.
+//   exact (-nlGeom):  s_i = |(u, v) + R(theta) a_i - b_i| - La_i                  (eq. S1)
+//   linear:           s_i = e_i . (u - theta a_iy, v + theta a_ix)                 (eq. S1L)
+// Jacobian row i (exact): [n_x, n_y, n . R'(theta) a_i], n the current unit direction (eq. S2);
+// linear: the exact row at d = 0. Forces q = J^T f (ExperimentalSetup.h, eq. S3).
+// Measured displacements: the linear formulation solves J0_c d_c = s - J0_g d_g; the exact one
+// runs Newton on s(d) = s from the linear solution, to |residual| <= 1e-13 max La (eq. S4).
+// Singular geometry (actuators that cannot fix the controlled DOFs, e.g. parallel and
+// coincident) is refused by the setups' create() at configuration time, and at run time by
+// strokes()/basicDisplacements() with a SetupResult naming the setup.
+
+#include "core/experimental/setup/ExperimentalSetup.h"
+
+#include <vector>
+
+namespace hsmu {
+
+struct PlanarActuator {
+    Eigen::Vector2d attach; ///< [m] attachment on the platform, setup frame, from the control point
+    Eigen::Vector2d base;   ///< [m] fixed end, same frame
+};
+
+enum class SetupGeometry {
+    Linear, ///< small displacements (OpenFresco's default)
+    Exact   ///< large displacements, exact geometry (OpenFresco's -nlGeom)
+};
+
+class PlanarActuatorSetup : public ExperimentalSetup {
+public:
+    /// controlledDofs: the basic DOFs the actuators fix (size == actuators.size(), indices into
+    /// (u, v, theta)); the others are taken as given by basicDisplacements().
+    /// Preconditions (checked by the setups' create()): |a_i - b_i| > 0; the controlled
+    /// columns of J0 have full rank.
+    PlanarActuatorSetup(std::string typeName, std::vector<PlanarActuator> actuators,
+                        SetupGeometry geometry, double phiLocXDeg, std::vector<int> controlledDofs);
+
+    std::string typeName() const override { return m_typeName; }
+    int basicSize() const override { return 3; }
+    int actuatorCount() const override { return static_cast<int>(m_actuators.size()); }
+    SetupGeometry geometry() const { return m_geometry; }
+    const std::vector<PlanarActuator>& actuators() const { return m_actuators; }
+
+    SetupResult strokes(const Eigen::VectorXd& d, Eigen::VectorXd& s) const override;
+    SetupResult jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const override;
+    SetupResult basicDisplacements(const Eigen::VectorXd& s, const Eigen::VectorXd& given,
+                                   Eigen::VectorXd& d) const override;
+
+    /// "" when the controlled DOFs are fixed by the actuators at rest, else why not (used by
+    /// the setups' create() after their own parameter checks).
+    std::string restSingularity() const;
+
+private:
+    Eigen::Vector3d toSetupFrame(const Eigen::VectorXd& d) const;
+    Eigen::Vector3d toElementFrame(const Eigen::Vector3d& dl) const;
+    bool stroke(int i, const Eigen::Vector3d& dl, double& s) const;
+    void rowAt(int i, const Eigen::Vector3d& dl, double* row) const; // setup frame
+    SetupResult jacobianLocal(const Eigen::Vector3d& dl, Eigen::MatrixXd& J) const;
+    static std::string singularity(const Eigen::MatrixXd& Jc);
+
+    std::string m_typeName;
+    std::vector<PlanarActuator> m_actuators;
+    std::vector<double> m_La;
+    SetupGeometry m_geometry;
+    double m_cphi = 1.0, m_sphi = 0.0;
+    std::vector<int> m_controlled, m_given;
+};
+
+/// Parses OpenFresco's actuator position word ("left"/"l", "right"/"r"); false otherwise.
+bool parseActuatorSide(const std::string& word, bool& right);
+
+} // namespace hsmu
