@@ -1,0 +1,377 @@
+// The setups against the real OpenFresco 2.8 (../shared/tools/opensees; QSKIP with the reason
+// where it is absent). Each case drives one `expSetup` with `expControl SimUniaxialMaterials`
+// through a basic-displacement history (u up to 0.08 m, v up to 0.03 m, theta up to 0.3 rad;
+// OpenFrescoSetupRun.h) and drives HSMU's setup with the same history and the same virtual
+// actuators:
+// - strokes: HSMU's strokes(d) against OpenFresco's actuator commands;
+// - measured basic displacements: HSMU's basicDisplacements(OpenFresco's actuator
+//   displacements) against OpenFresco's element daqDisp;
+// - basic forces: HSMU's basicForces(those, OpenFresco's actuator forces) against OpenFresco's
+//   element daqForce; the elastic actuators' forces are also checked as k s;
+// each to 1e-10 of the peak of its component. Where OpenFresco departs from exact geometry
+// (docs/setups.md, "Differences from OpenFresco") HSMU is checked against the exact statics
+// computed here from the deformed positions (cross products, independent of the Jacobian) and
+// OpenFresco's value against the departure the issue describes, to the same tolerance.
+
+#include "OpenFrescoSetupRun.h"
+#include "SetupCatalog.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace hsmu;
+
+namespace {
+
+struct Case {
+    QString label;
+    QString tcl; ///< expSetup line(s); setup 1 on control 1
+    std::function<std::unique_ptr<ExperimentalSetup>(std::string&)> make;
+    std::vector<double> k; ///< elastic actuator stiffnesses [N/m]; empty: Steel01 actuators
+    bool withV = true;     ///< the history moves v (TwoActuators2d: no, OpenFresco ignores v)
+    /// OpenFresco's basic force predicted from HSMU's exact one (departures); null: equal.
+    std::function<Eigen::Vector3d(const Eigen::Vector3d& q, const Eigen::VectorXd& s,
+                                  const Eigen::VectorXd& f, const Eigen::Vector3d& d)>
+        departure;
+    /// basic DOFs no actuator drives: OpenFresco reports 0 for their measured displacement,
+    /// HSMU the given (trial) one
+    std::vector<int> undriven = {};
+};
+
+// OpenFresco's twoNodeLink adds its own correction kInit (trial - measured) to the setup's
+// basic forces (element, not setup; kInit as OpenFrescoSetupRun.h's -initStif).
+constexpr double kInit = 1e6;
+
+std::vector<std::array<double, 3>> history(bool withV) {
+    std::vector<std::array<double, 3>> h;
+    const int n = 24;
+    for (int k = 1; k <= n; ++k) {
+        const double t = double(k) / n;
+        h.push_back({0.08 * std::sin(2 * std::numbers::pi * 1.3 * t),
+                     withV ? 0.03 * std::sin(2 * std::numbers::pi * 0.7 * t + 0.4) : 0.0,
+                     0.3 * std::sin(2 * std::numbers::pi * t + 0.2)});
+    }
+    return h;
+}
+
+// TwoActuators2d -nlGeom with the actuators left: OpenFresco's moment takes the vertical force
+// component of actuator 2 with the wrong sign (a term f2 n_y L sin(theta), third order), and
+// both sides report no v force where actuator 2's vertical component f2 n_y acts.
+Eigen::Vector3d twoLeftDeparture(const Eigen::Vector3d& q, const Eigen::VectorXd& s,
+                                 const Eigen::VectorXd& f, const Eigen::Vector3d& d, double La2,
+                                 double L, bool left) {
+    const double th = d(2);
+    const double rx = d(0) - L * std::sin(th) + (left ? La2 : -La2);
+    const double ry = L * std::cos(th) - L;
+    (void)s;
+    const double ny = ry / std::hypot(rx, ry);
+    Eigen::Vector3d of = q;
+    of(1) = 0.0;
+    if (left)
+        of(2) = q(2) + 2.0 * f(1) * ny * L * std::sin(th);
+    return of;
+}
+
+// ThreeActuators2d -nlGeom -posAct1 right: OpenFresco takes La2 where La3 belongs in the
+// horizontal actuator's vertical force component: fy1 off by f1 (La3 - La2) / length1, which
+// enters q_v and, with arm L2 cos(theta), q_theta.
+Eigen::Vector3d threeRightDeparture(const Eigen::Vector3d& q, const Eigen::VectorXd& s,
+                                    const Eigen::VectorXd& f, const Eigen::Vector3d& d) {
+    const auto p = setupcatalog::three(SetupGeometry::Exact, true);
+    const double dfy = f(0) * (p.La3 - p.La2) / (p.La1 + s(0));
+    return {q(0), q(1) + dfy, q(2) + dfy * p.L2 * std::cos(d(2))};
+}
+
+// Exact statics from positions: q = sum f_i (n_i, (R a_i) x n_i), n_i the unit vector from
+// base to the deformed attachment (docs/setups.md, eq. S3 written as forces and moments).
+Eigen::Vector3d statics(const PlanarActuatorSetup& setup, const Eigen::Vector3d& d,
+                        const Eigen::VectorXd& f) {
+    Eigen::Vector3d q = Eigen::Vector3d::Zero();
+    const double c = std::cos(d(2)), sn = std::sin(d(2));
+    for (int i = 0; i < setup.actuatorCount(); ++i) {
+        const PlanarActuator& a = setup.actuators()[i];
+        const Eigen::Vector2d ra(c * a.attach.x() - sn * a.attach.y(),
+                                 sn * a.attach.x() + c * a.attach.y());
+        const Eigen::Vector2d n = (Eigen::Vector2d(d(0), d(1)) + ra - a.base).normalized();
+        q += f(i) * Eigen::Vector3d(n.x(), n.y(), ra.x() * n.y() - ra.y() * n.x());
+    }
+    return q;
+}
+
+std::vector<Case> cases() {
+    using G = SetupGeometry;
+    std::vector<Case> out;
+    const QStringList side = {"left", "right"};
+    for (G g : {G::Linear, G::Exact}) {
+        const QString nl = g == G::Exact ? " -nlGeom" : "";
+        for (bool right : {false, true}) {
+            const auto two = setupcatalog::two(g, right);
+            Case c2{QString("TwoActuators2d%1 %2").arg(nl, side[right]),
+                    QString("expSetup TwoActuators2d 1 -control 1 %1 %2 %3%4 -posAct %5")
+                        .arg(two.La1)
+                        .arg(two.La2)
+                        .arg(two.L)
+                        .arg(nl, side[right]),
+                    [=](std::string& e) {
+                        return std::unique_ptr<ExperimentalSetup>(makeTwoActuators2d(two, e));
+                    },
+                    {2.0e7, 3.0e7},
+                    false,
+                    nullptr,
+                    {1}};
+            if (g == G::Exact)
+                c2.departure = [=](const Eigen::Vector3d& q, const Eigen::VectorXd& s,
+                                   const Eigen::VectorXd& f, const Eigen::Vector3d& d) {
+                    return twoLeftDeparture(q, s, f, d, two.La2, two.L, !right);
+                };
+            out.push_back(c2);
+            const auto three = setupcatalog::three(g, right);
+            Case c3{QString("ThreeActuators2d%1 %2").arg(nl, side[right]),
+                    QString("expSetup ThreeActuators2d 1 -control 1 %1 %2 %3 %4 %5%6 -posAct1 %7")
+                        .arg(three.La1)
+                        .arg(three.La2)
+                        .arg(three.La3)
+                        .arg(three.L1)
+                        .arg(three.L2)
+                        .arg(nl, side[right]),
+                    [=](std::string& e) {
+                        return std::unique_ptr<ExperimentalSetup>(makeThreeActuators2d(three, e));
+                    },
+                    {2.0e7, 3.0e7, 2.5e7},
+                    true,
+                    nullptr};
+            if (g == G::Exact && right)
+                c3.departure = threeRightDeparture;
+            out.push_back(c3);
+            const auto jo = setupcatalog::jntOff(g, right);
+            out.push_back(
+                {QString("ThreeActuatorsJntOff2d%1 %2").arg(nl, side[right]),
+                 QString("expSetup ThreeActuatorsJntOff2d 1 -control 1 %1 %2 %3 %4 %5 %6 %7 %8 "
+                         "%9%10 -posAct1 %11")
+                     .arg(jo.La1)
+                     .arg(jo.La2)
+                     .arg(jo.La3)
+                     .arg(jo.L1)
+                     .arg(jo.L2)
+                     .arg(jo.L3)
+                     .arg(jo.L4)
+                     .arg(jo.L5)
+                     .arg(jo.L6)
+                     .arg(nl, side[right]),
+                 [=](std::string& e) {
+                     return std::unique_ptr<ExperimentalSetup>(makeThreeActuatorsJntOff2d(jo, e));
+                 },
+                 {2.0e7, 3.0e7, 2.5e7},
+                 true,
+                 nullptr});
+        }
+        const auto rot = setupcatalog::three(g, false, -20.0);
+        out.push_back({QString("ThreeActuators2d%1 -phiLocX -20").arg(nl),
+                       QString("expSetup ThreeActuators2d 1 -control 1 %1 %2 %3 %4 %5%6 "
+                               "-phiLocX -20")
+                           .arg(rot.La1)
+                           .arg(rot.La2)
+                           .arg(rot.La3)
+                           .arg(rot.L1)
+                           .arg(rot.L2)
+                           .arg(nl),
+                       [=](std::string& e) {
+                           return std::unique_ptr<ExperimentalSetup>(makeThreeActuators2d(rot, e));
+                       },
+                       {},
+                       true,
+                       nullptr}); // Steel01 actuators
+    }
+    out.push_back({"OneActuator dir 2 of 3",
+                   "expSetup OneActuator 1 -control 1 2 -sizeTrialOut 3 3",
+                   [](std::string& e) {
+                       return std::unique_ptr<ExperimentalSetup>(OneActuator::create(2, 3, e));
+                   },
+                   {4.0e7},
+                   true,
+                   nullptr,
+                   {0, 2}});
+    out.push_back(
+        {"NoTransformation dirs 3 1 of 3",
+         "expSetup NoTransformation 1 -control 1 -dir 3 1 -sizeTrialOut 3 3",
+         [](std::string& e) {
+             return std::unique_ptr<ExperimentalSetup>(NoTransformation::create({3, 1}, 3, e));
+         },
+         {4.0e7, 5.0e6},
+         true,
+         nullptr,
+         {1}});
+    out.push_back({"Aggregator (OneActuator 1 of 1, NoTransformation 2 1 of 2)",
+                   "expSetup OneActuator 11 1 -sizeTrialOut 1 1\n"
+                   "expSetup NoTransformation 12 -dir 2 1 -sizeTrialOut 2 2\n"
+                   "expSetup Aggregator 1 -control 1 -setup 11 12 -sizeTrialOut 3 3",
+                   [](std::string& e) -> std::unique_ptr<ExperimentalSetup> {
+                       std::vector<std::unique_ptr<ExperimentalSetup>> parts;
+                       parts.push_back(OneActuator::create(1, 1, e));
+                       parts.push_back(NoTransformation::create({2, 1}, 2, e));
+                       return Aggregator::create(std::move(parts), e);
+                   },
+                   {4.0e7, 5.0e6, 3.0e6},
+                   true,
+                   nullptr});
+    return out;
+}
+
+double columnPeak(const ofsetup::Table& t, std::size_t col) {
+    double p = 0.0;
+    for (const auto& row : t)
+        p = std::max(p, std::abs(row.at(col)));
+    return p;
+}
+
+} // namespace
+
+class TestSetupsOpenFresco : public QObject {
+    Q_OBJECT
+private slots:
+    void againstOpenFresco_data();
+    void againstOpenFresco();
+    void lowerCaseNlGeomIsIgnoredByOpenFresco();
+};
+
+void TestSetupsOpenFresco::againstOpenFresco_data() {
+    QTest::addColumn<int>("index");
+    const auto all = cases();
+    for (int i = 0; i < static_cast<int>(all.size()); ++i)
+        QTest::newRow(all[i].label.toUtf8().constData()) << i;
+}
+
+void TestSetupsOpenFresco::againstOpenFresco() {
+    if (!opensees::available())
+        QSKIP(qPrintable(opensees::reason()));
+    QFETCH(int, index);
+    const Case c = cases()[index];
+    std::string error;
+    const auto setup = c.make(error);
+    QVERIFY2(setup, error.c_str());
+    const int m = setup->actuatorCount();
+    QStringList materials;
+    for (int i = 0; i < m; ++i)
+        materials
+            << (c.k.empty()
+                    ? QString("uniaxialMaterial Steel01 %1 %2 %3 0.02")
+                          .arg(i + 1)
+                          .arg(4.0e5)
+                          .arg(2.0e7)
+                    : QString("uniaxialMaterial Elastic %1 %2").arg(i + 1).arg(c.k[i], 0, 'g', 17));
+    QTemporaryDir dir;
+    const auto h = history(c.withV);
+    const ofsetup::Run of = ofsetup::run(dir.path(), c.tcl, materials, h);
+    QVERIFY2(of.ran, qPrintable(of.output.right(2000)));
+
+    const double tol = 1e-10;
+    std::vector<double> peakS(m), peakD(3), peakQ(3);
+    for (int i = 0; i < m; ++i)
+        peakS[i] = columnPeak(of.actuatorCommand, i);
+    for (int j = 0; j < 3; ++j) {
+        peakD[j] = std::max(columnPeak(of.basicDisp, j), 1e-3);
+        peakQ[j] = std::max(columnPeak(of.basicForce, j), 1e-6 * columnPeak(of.actuatorForce, 0));
+    }
+    double worstS = 0, worstD = 0, worstQ = 0;
+    Eigen::Vector3d departure = Eigen::Vector3d::Zero(); // max |OpenFresco - exact| [N, N m]
+    Eigen::Vector3d peakExact = Eigen::Vector3d::Zero(); // max |exact|
+    const auto* planar = dynamic_cast<const PlanarActuatorSetup*>(setup.get());
+    for (std::size_t k = 0; k < h.size(); ++k) {
+        const Eigen::Vector3d d(h[k][0], h[k][1], h[k][2]);
+        for (int j = 0; j < 3; ++j)
+            QVERIFY(std::abs(of.trial[k][j] - d(j)) <= 1e-15); // OpenFresco got this history
+        Eigen::VectorXd s, sOf(m), fOf(m), dMeas, q;
+        QVERIFY(setup->strokes(d, s).ok);
+        for (int i = 0; i < m; ++i) {
+            sOf(i) = of.actuatorDisp[k][i];
+            fOf(i) = of.actuatorForce[k][i];
+            worstS = std::max(worstS, std::abs(s(i) - of.actuatorCommand[k][i]) / peakS[i]);
+            if (!c.k.empty()) // the same virtual actuators
+                QVERIFY(std::abs(fOf(i) - c.k[i] * sOf(i)) <= 1e-12 * c.k[i] * peakS[i]);
+        }
+        const SetupResult r = setup->basicDisplacements(sOf, d, dMeas);
+        QVERIFY2(r.ok, r.reason.c_str());
+        QVERIFY(setup->basicForces(dMeas, fOf, q).ok);
+        Eigen::Vector3d expected = q;
+        if (c.departure) {
+            // HSMU against exact statics, OpenFresco against the departure
+            const Eigen::Vector3d exact = statics(*planar, dMeas, fOf);
+            for (int j = 0; j < 3; ++j)
+                QVERIFY2(
+                    std::abs(q(j) - exact(j)) <= tol * peakQ[j],
+                    qPrintable(
+                        QString("step %1 q%2 %3 exact %4").arg(k).arg(j).arg(q(j)).arg(exact(j))));
+            expected = c.departure(q, sOf, fOf, dMeas);
+            for (int j = 0; j < 3; ++j) {
+                departure(j) = std::max(departure(j), std::abs(expected(j) - q(j)));
+                peakExact(j) = std::max(peakExact(j), std::abs(q(j)));
+            }
+        }
+        Eigen::Vector3d dOf = dMeas;
+        for (int j : c.undriven)
+            dOf(j) = 0.0;
+        expected += kInit * (d - dOf);
+        for (int j = 0; j < 3; ++j) {
+            worstD = std::max(worstD, std::abs(dOf(j) - of.basicDisp[k][j]) / peakD[j]);
+            worstQ = std::max(worstQ, std::abs(expected(j) - of.basicForce[k][j]) / peakQ[j]);
+        }
+    }
+    qInfo("%s: worst / peak: strokes %.3g, basic displacements %.3g, basic forces %.3g",
+          qPrintable(c.label), worstS, worstD, worstQ);
+    if (c.departure) {
+        qInfo("  OpenFresco departs from exact statics by up to %.4g N, %.4g N, %.4g N m (peaks of "
+              "the exact basic forces %.4g N, %.4g N, %.4g N m)",
+              departure(0), departure(1), departure(2), peakExact(0), peakExact(1), peakExact(2));
+        // the departure is real, not round-off
+        QVERIFY(departure.maxCoeff() > 1e-3 * peakExact.maxCoeff());
+    }
+    QVERIFY2(worstS <= tol, qPrintable(QString("strokes off by %1 of the peak").arg(worstS)));
+    QVERIFY2(worstD <= tol, qPrintable(QString("basic displacements off by %1").arg(worstD)));
+    QVERIFY2(worstQ <= tol, qPrintable(QString("basic forces off by %1").arg(worstQ)));
+}
+
+void TestSetupsOpenFresco::lowerCaseNlGeomIsIgnoredByOpenFresco() {
+    // OpenFresco parses options by exact string: "-nlgeom" is silently ignored and the setup
+    // stays linear. HSMU's setups take the geometry as an enum; the configuration (issue 24,
+    // later) must reject unknown words. Asserted here so the documented departure stays true.
+    if (!opensees::available())
+        QSKIP(qPrintable(opensees::reason()));
+    const auto p = setupcatalog::three(SetupGeometry::Linear, false);
+    QTemporaryDir dir;
+    const auto h = history(true);
+    const ofsetup::Run of =
+        ofsetup::run(dir.path(),
+                     QString("expSetup ThreeActuators2d 1 -control 1 %1 %2 %3 %4 %5 -nlgeom")
+                         .arg(p.La1)
+                         .arg(p.La2)
+                         .arg(p.La3)
+                         .arg(p.L1)
+                         .arg(p.L2),
+                     {"uniaxialMaterial Elastic 1 2e7", "uniaxialMaterial Elastic 2 2e7",
+                      "uniaxialMaterial Elastic 3 2e7"},
+                     h);
+    QVERIFY2(of.ran, qPrintable(of.output.right(2000)));
+    std::string e;
+    const auto linear = makeThreeActuators2d(p, e);
+    auto exactParams = p;
+    exactParams.geometry = SetupGeometry::Exact;
+    const auto exact = makeThreeActuators2d(exactParams, e);
+    double offLinear = 0, offExact = 0;
+    for (std::size_t k = 0; k < h.size(); ++k) {
+        Eigen::VectorXd sl, se;
+        QVERIFY(linear->strokes(Eigen::Vector3d(h[k][0], h[k][1], h[k][2]), sl).ok);
+        QVERIFY(exact->strokes(Eigen::Vector3d(h[k][0], h[k][1], h[k][2]), se).ok);
+        for (int i = 0; i < 3; ++i) {
+            offLinear = std::max(offLinear, std::abs(sl(i) - of.actuatorCommand[k][i]));
+            offExact = std::max(offExact, std::abs(se(i) - of.actuatorCommand[k][i]));
+        }
+    }
+    QVERIFY(offLinear <= 1e-15);
+    QVERIFY(offExact > 1e-3); // 0.3 rad makes the exact strokes differ by millimetres
+}
+
+QTEST_APPLESS_MAIN(TestSetupsOpenFresco)
+#include "TestSetupsOpenFresco.moc"
