@@ -50,9 +50,9 @@ public:
     virtual SetupResult basicDisplacements(const Eigen::VectorXd& s, const Eigen::VectorXd& given,
                                            Eigen::VectorXd& d) const = 0;
     /// Measured: actuator forces f (m) at basic displacements d (n) -> basic forces
-    /// q = J(d)^T f (n) (eq. S3).
-    SetupResult basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
-                            Eigen::VectorXd& q) const;
+    /// q = J(d)^T f (n) (eq. S3). Setups may override it with a faster form of the same.
+    virtual SetupResult basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
+                                    Eigen::VectorXd& q) const;
 };
 
 } // namespace hsmu

@@ -39,6 +39,14 @@ PlanarActuatorSetup::PlanarActuatorSetup(std::string typeName,
     for (int k = 0; k < 3; ++k)
         if (std::find(m_controlled.begin(), m_controlled.end(), k) == m_controlled.end())
             m_given.push_back(k);
+    m_J0.setZero(static_cast<int>(m_actuators.size()), 3);
+    for (int i = 0; i < m_J0.rows(); ++i) {
+        if (!(m_La[i] > 0.0))
+            continue; // refused by restSingularity()
+        const PlanarActuator& a = m_actuators[i];
+        const Eigen::Vector2d e = (a.attach - a.base) / m_La[i];
+        m_J0.row(i) << e.x(), e.y(), -e.x() * a.attach.y() + e.y() * a.attach.x();
+    }
 }
 
 Eigen::Vector3d PlanarActuatorSetup::toSetupFrame(const Eigen::VectorXd& d) const {
@@ -101,12 +109,15 @@ SetupResult PlanarActuatorSetup::strokes(const Eigen::VectorXd& d, Eigen::Vector
     return SetupResult::success();
 }
 
-SetupResult PlanarActuatorSetup::jacobianLocal(const Eigen::Vector3d& dl,
-                                               Eigen::MatrixXd& J) const {
+SetupResult PlanarActuatorSetup::jacobianLocal(const Eigen::Vector3d& dl, Rows& J) const {
+    if (m_geometry == SetupGeometry::Linear) {
+        J = m_J0;
+        return SetupResult::success();
+    }
     J.resize(actuatorCount(), 3);
     for (int i = 0; i < actuatorCount(); ++i) {
         double len = 0;
-        if (m_geometry == SetupGeometry::Exact && !stroke(i, dl, len))
+        if (!stroke(i, dl, len))
             return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
                                       " has zero length at the commanded motion");
         double row[3];
@@ -118,13 +129,33 @@ SetupResult PlanarActuatorSetup::jacobianLocal(const Eigen::Vector3d& dl,
     return SetupResult::success();
 }
 
+PlanarActuatorSetup::Square PlanarActuatorSetup::controlledColumns(const Rows& J) const {
+    Square Jc(J.rows(), static_cast<int>(m_controlled.size()));
+    for (int k = 0; k < Jc.cols(); ++k)
+        Jc.col(k) = J.col(m_controlled[k]);
+    return Jc;
+}
+
+double PlanarActuatorSetup::normalizedVolume(const Square& Jc) {
+    Square n = Jc;
+    for (int k = 0; k < n.cols(); ++k) {
+        const double norm = n.col(k).norm();
+        if (norm == 0.0)
+            return 0.0;
+        n.col(k) /= norm;
+    }
+    return std::abs(n.determinant());
+}
+
 SetupResult PlanarActuatorSetup::jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const {
     if (d.size() != 3)
         return SetupResult::fault(m_typeName +
                                   ": 3 basic displacements (u, v, theta) wanted, got " +
                                   std::to_string(d.size()));
-    if (SetupResult r = jacobianLocal(toSetupFrame(d), J); !r.ok)
+    Rows Jl;
+    if (SetupResult r = jacobianLocal(toSetupFrame(d), Jl); !r.ok)
         return r;
+    J = Jl;
     // chain rule through (u, v)_setup = R(phi) (u, v)_element
     for (int i = 0; i < J.rows(); ++i) {
         const double jx = J(i, 0), jy = J(i, 1);
@@ -156,21 +187,13 @@ std::string PlanarActuatorSetup::singularity(const Eigen::MatrixXd& Jc) {
 }
 
 std::string PlanarActuatorSetup::restSingularity() const {
-    Eigen::MatrixXd J0(actuatorCount(), 3);
-    for (int i = 0; i < actuatorCount(); ++i) {
+    if (actuatorCount() > 3 || actuatorCount() != static_cast<int>(m_controlled.size()))
+        return "one actuator per controlled basic DOF wanted (at most 3)";
+    for (int i = 0; i < actuatorCount(); ++i)
         if (!(m_La[i] > 0.0))
             return "actuator " + std::to_string(i + 1) +
                    " has zero length (attachment on its base)";
-        const PlanarActuator& a = m_actuators[i];
-        const Eigen::Vector2d e = (a.attach - a.base) / m_La[i];
-        J0(i, 0) = e.x();
-        J0(i, 1) = e.y();
-        J0(i, 2) = -e.x() * a.attach.y() + e.y() * a.attach.x();
-    }
-    Eigen::MatrixXd Jc(actuatorCount(), static_cast<int>(m_controlled.size()));
-    for (int k = 0; k < Jc.cols(); ++k)
-        Jc.col(k) = J0.col(m_controlled[k]);
-    return singularity(Jc);
+    return singularity(controlledColumns(m_J0));
 }
 
 SetupResult PlanarActuatorSetup::basicDisplacements(const Eigen::VectorXd& s,
@@ -183,67 +206,87 @@ SetupResult PlanarActuatorSetup::basicDisplacements(const Eigen::VectorXd& s,
                                   std::to_string(s.size()) + " and " +
                                   std::to_string(given.size()));
     Eigen::Vector3d dl = toSetupFrame(given);
-    Eigen::MatrixXd J(m, 3), Jc(m, m);
-    Eigen::VectorXd r(m), s0(m);
-    auto solveStep = [&](const Eigen::Vector3d& at, bool linear) -> SetupResult {
-        if (linear) {
-            for (int i = 0; i < m; ++i) {
-                double row[3];
-                const PlanarActuator& a = m_actuators[i];
-                const Eigen::Vector2d e = (a.attach - a.base) / m_La[i];
-                row[0] = e.x();
-                row[1] = e.y();
-                row[2] = -e.x() * a.attach.y() + e.y() * a.attach.x();
-                for (int k = 0; k < 3; ++k)
-                    J(i, k) = row[k];
-            }
-        } else if (SetupResult q = jacobianLocal(at, J); !q.ok) {
+    const Eigen::Vector3d start = dl;
+    // Linear solution: J0_c d_c = s - J0_g d_g (S4).
+    auto linear = [&](Eigen::Vector3d& at) -> SetupResult {
+        Small rhs = s, x(m);
+        for (int g : m_given)
+            rhs -= m_J0.col(g) * at(g);
+        if (SetupResult q = solveControlled(m_J0, rhs, x); !q.ok)
             return q;
-        }
         for (int k = 0; k < m; ++k)
-            Jc.col(k) = J.col(m_controlled[k]);
-        if (std::string why = singularity(Jc); !why.empty())
-            return SetupResult::fault(m_typeName +
-                                      ": measured strokes at a singular geometry: " + why);
+            at(m_controlled[k]) = x(k);
         return SetupResult::success();
     };
-    // Linear solution (the exact formulation's start): J0_c d_c = s - J0_g d_g.
-    if (SetupResult q = solveStep(dl, true); !q.ok)
-        return q;
-    Eigen::VectorXd rhs = s;
-    for (int g : m_given)
-        rhs -= J.col(g) * dl(g);
-    const Eigen::VectorXd dc = Jc.fullPivLu().solve(rhs);
-    for (int k = 0; k < m; ++k)
-        dl(m_controlled[k]) = dc(k);
-    if (m_geometry == SetupGeometry::Exact) {
-        double maxLa = 0;
-        for (double La : m_La)
-            maxLa = std::max(maxLa, La);
-        bool converged = false;
-        for (int it = 0; it < kMaxNewton && !converged; ++it) {
-            for (int i = 0; i < m; ++i) {
-                if (!stroke(i, dl, s0(i)))
-                    return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
-                                              " reaches zero length solving the measured strokes");
-                r(i) = s(i) - s0(i);
-            }
-            if (r.cwiseAbs().maxCoeff() <= 1e-13 * maxLa) {
-                converged = true;
-                break;
-            }
-            if (SetupResult q = solveStep(dl, false); !q.ok)
-                return q;
-            const Eigen::VectorXd step = Jc.fullPivLu().solve(r);
-            for (int k = 0; k < m; ++k)
-                dl(m_controlled[k]) += step(k);
+    if (m_geometry == SetupGeometry::Linear) {
+        if (SetupResult q = linear(dl); !q.ok)
+            return q;
+    } else {
+        // Newton from the given (trial) displacements, where the measurement nearly always is;
+        // from the linear solution when that fails.
+        SetupResult q = newton(s, dl);
+        if (!q.ok) {
+            dl = start;
+            if (SetupResult l = linear(dl); !l.ok)
+                return l;
+            q = newton(s, dl);
         }
-        if (!converged)
-            return SetupResult::fault(m_typeName +
-                                      ": the measured strokes have no geometric solution (Newton "
-                                      "did not converge in 30 iterations)");
+        if (!q.ok)
+            return q;
     }
     d = toElementFrame(dl);
+    return SetupResult::success();
+}
+
+SetupResult PlanarActuatorSetup::solveControlled(const Rows& J, const Small& rhs, Small& x) const {
+    const Square Jc = controlledColumns(J);
+    if (normalizedVolume(Jc) <= kRankTolerance)
+        return SetupResult::fault(m_typeName +
+                                  ": measured strokes at a singular geometry: " + singularity(Jc));
+    x = Jc.partialPivLu().solve(rhs);
+    return SetupResult::success();
+}
+
+SetupResult PlanarActuatorSetup::newton(const Eigen::VectorXd& s, Eigen::Vector3d& dl) const {
+    const int m = actuatorCount();
+    double maxLa = 0;
+    for (double La : m_La)
+        maxLa = std::max(maxLa, La);
+    Rows J;
+    Small r(m), x(m);
+    for (int it = 0; it < kMaxNewton; ++it) {
+        for (int i = 0; i < m; ++i) {
+            double si = 0;
+            if (!stroke(i, dl, si))
+                return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
+                                          " reaches zero length solving the measured strokes");
+            r(i) = s(i) - si;
+        }
+        if (r.cwiseAbs().maxCoeff() <= 1e-13 * maxLa)
+            return SetupResult::success();
+        if (SetupResult q = jacobianLocal(dl, J); !q.ok)
+            return q;
+        if (SetupResult q = solveControlled(J, r, x); !q.ok)
+            return q;
+        for (int k = 0; k < m; ++k)
+            dl(m_controlled[k]) += x(k);
+    }
+    return SetupResult::fault(m_typeName + ": the measured strokes have no geometric solution "
+                                           "(Newton did not converge in 30 iterations)");
+}
+
+SetupResult PlanarActuatorSetup::basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
+                                             Eigen::VectorXd& q) const {
+    if (d.size() != 3 || f.size() != actuatorCount())
+        return SetupResult::fault(m_typeName + ": 3 basic displacements and " +
+                                  std::to_string(actuatorCount()) + " actuator forces wanted");
+    Rows J;
+    if (SetupResult r = jacobianLocal(toSetupFrame(d), J); !r.ok)
+        return r;
+    const Eigen::Vector3d ql = J.transpose() * f; // setup frame (S3)
+    // back to the element frame: q_element = R(phi)^T q_setup
+    q.resize(3);
+    q << m_cphi * ql(0) + m_sphi * ql(1), -m_sphi * ql(0) + m_cphi * ql(1), ql(2);
     return SetupResult::success();
 }
 

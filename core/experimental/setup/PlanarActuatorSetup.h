@@ -16,7 +16,8 @@
 // Jacobian row i (exact): [n_x, n_y, n . R'(theta) a_i], n the current unit direction (eq. S2);
 // linear: the exact row at d = 0. Forces q = J^T f (ExperimentalSetup.h, eq. S3).
 // Measured displacements: the linear formulation solves J0_c d_c = s - J0_g d_g; the exact one
-// runs Newton on s(d) = s from the linear solution, to |residual| <= 1e-13 max La (eq. S4).
+// runs Newton on s(d) = s from the given (trial) displacements, and from the linear solution
+// when that fails, to |residual| <= 1e-13 max La (eq. S4).
 // Singular geometry (actuators that cannot fix the controlled DOFs, e.g. parallel and
 // coincident) is refused by the setups' create() at configuration time, and at run time by
 // strokes()/basicDisplacements() with a SetupResult naming the setup.
@@ -56,18 +57,32 @@ public:
     SetupResult jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const override;
     SetupResult basicDisplacements(const Eigen::VectorXd& s, const Eigen::VectorXd& given,
                                    Eigen::VectorXd& d) const override;
+    /// q = J(d)^T f without heap allocation (the measured path runs every step).
+    SetupResult basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
+                            Eigen::VectorXd& q) const override;
 
     /// "" when the controlled DOFs are fixed by the actuators at rest, else why not (used by
     /// the setups' create() after their own parameter checks).
     std::string restSingularity() const;
 
 private:
+    // at most 3 actuators (one per basic DOF): fixed-capacity matrices, no heap
+    using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 3, 3>;
+    using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+    using Small = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+
     Eigen::Vector3d toSetupFrame(const Eigen::VectorXd& d) const;
     Eigen::Vector3d toElementFrame(const Eigen::Vector3d& dl) const;
     bool stroke(int i, const Eigen::Vector3d& dl, double& s) const;
     void rowAt(int i, const Eigen::Vector3d& dl, double* row) const; // setup frame
-    SetupResult jacobianLocal(const Eigen::Vector3d& dl, Eigen::MatrixXd& J) const;
+    SetupResult jacobianLocal(const Eigen::Vector3d& dl, Rows& J) const;
+    Square controlledColumns(const Rows& J) const;
+    SetupResult solveControlled(const Rows& J, const Small& rhs, Small& x) const;
+    /// S4's Newton iteration from dl (setup frame) on the controlled DOFs.
+    SetupResult newton(const Eigen::VectorXd& s, Eigen::Vector3d& dl) const;
     static std::string singularity(const Eigen::MatrixXd& Jc);
+    /// |det| of Jc with unit columns: 1 for orthogonal columns, 0 when singular (square Jc).
+    static double normalizedVolume(const Square& Jc);
 
     std::string m_typeName;
     std::vector<PlanarActuator> m_actuators;
@@ -75,6 +90,7 @@ private:
     SetupGeometry m_geometry;
     double m_cphi = 1.0, m_sphi = 0.0;
     std::vector<int> m_controlled, m_given;
+    Rows m_J0; // the Jacobian at rest (S1L), setup frame
 };
 
 /// Parses OpenFresco's actuator position word ("left"/"l", "right"/"r"); false otherwise.

@@ -104,6 +104,11 @@ void TestExperimentalSetups::everySetup() {
         QVERIFY2(r.ok, r.reason.c_str());
         QVERIFY2((back - d).cwiseAbs().maxCoeff() <= 1e-12,
                  qPrintable(QString("round trip error %1").arg((back - d).cwiseAbs().maxCoeff())));
+        if (m == n) { // every DOF fixed by the actuators: no given value needed, from rest too
+            const SetupResult r0 = setup->basicDisplacements(s, Eigen::VectorXd::Zero(n), back);
+            QVERIFY2(r0.ok, r0.reason.c_str());
+            QVERIFY((back - d).cwiseAbs().maxCoeff() <= 1e-12);
+        }
 
         // virtual work with ds from the strokes themselves (central difference)
         Eigen::VectorXd f(m), dd(n);
