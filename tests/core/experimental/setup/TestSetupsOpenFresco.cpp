@@ -235,6 +235,7 @@ private slots:
     void againstOpenFresco_data();
     void againstOpenFresco();
     void lowerCaseNlGeomIsIgnoredByOpenFresco();
+    void twoActuatorsNlGeomIgnoresV();
 };
 
 void TestSetupsOpenFresco::againstOpenFresco_data() {
@@ -371,6 +372,43 @@ void TestSetupsOpenFresco::lowerCaseNlGeomIsIgnoredByOpenFresco() {
     }
     QVERIFY(offLinear <= 1e-15);
     QVERIFY(offExact > 1e-3); // 0.3 rad makes the exact strokes differ by millimetres
+}
+
+void TestSetupsOpenFresco::twoActuatorsNlGeomIgnoresV() {
+    // docs/setups.md, difference 3: with v != 0 OpenFresco commands s1 = u (La1 unused) and
+    // leaves v out of actuator 2's stroke; HSMU keeps both (S1). Both asserted to 1e-15 m.
+    if (!opensees::available())
+        QSKIP(qPrintable(opensees::reason()));
+    const auto p = setupcatalog::two(SetupGeometry::Exact, false);
+    QTemporaryDir dir;
+    const auto h = history(true);
+    const ofsetup::Run of =
+        ofsetup::run(dir.path(),
+                     QString("expSetup TwoActuators2d 1 -control 1 %1 %2 %3 -nlGeom")
+                         .arg(p.La1)
+                         .arg(p.La2)
+                         .arg(p.L),
+                     {"uniaxialMaterial Elastic 1 2e7", "uniaxialMaterial Elastic 2 3e7"}, h);
+    QVERIFY2(of.ran, qPrintable(of.output.right(2000)));
+    std::string e;
+    const auto setup = makeTwoActuators2d(p, e);
+    double largest = 0;
+    for (std::size_t k = 0; k < h.size(); ++k) {
+        const double u = h[k][0], v = h[k][1], th = h[k][2];
+        QVERIFY(std::abs(of.actuatorCommand[k][0] - u) <= 1e-15);
+        const double ofS2 =
+            std::hypot(u - p.L * std::sin(th) + p.La2, p.L * std::cos(th) - p.L) - p.La2;
+        QVERIFY(std::abs(of.actuatorCommand[k][1] - ofS2) <= 1e-15);
+        Eigen::VectorXd s;
+        QVERIFY(setup->strokes(Eigen::Vector3d(u, v, th), s).ok);
+        QVERIFY(std::abs(s(0) - (std::hypot(u + p.La1, v) - p.La1)) <= 1e-15);
+        QVERIFY(std::abs(s(1) -
+                         (std::hypot(u - p.L * std::sin(th) + p.La2, p.L * std::cos(th) - p.L + v) -
+                          p.La2)) <= 1e-15);
+        largest = std::max(largest, std::abs(s(0) - of.actuatorCommand[k][0]));
+    }
+    qInfo("largest actuator-1 difference (v up to 0.03 m): %.3g m", largest);
+    QVERIFY(largest > 1e-4); // v^2 / (2 La1) = 0.3 mm at v = 0.03 m
 }
 
 QTEST_APPLESS_MAIN(TestSetupsOpenFresco)
