@@ -4,6 +4,7 @@
 // specimen [m]. Shared by the closed-form tests and the OpenFresco comparison.
 
 #include "core/experimental/setup/Aggregator.h"
+#include "core/experimental/setup/FourActuators3d.h"
 #include "core/experimental/setup/NoTransformation.h"
 #include "core/experimental/setup/PlanarSetups.h"
 
@@ -59,6 +60,22 @@ inline hsmu::ThreeActuatorsJntOff2dParams jntOff(hsmu::SetupGeometry g, bool rig
     return p;
 }
 
+inline hsmu::FourActuators3dParams four(hsmu::SetupGeometry g, double phi = 0.0) {
+    hsmu::FourActuators3dParams p;
+    p.L1 = 1.2;
+    p.L2 = 1.3;
+    p.L3 = 1.1;
+    p.L4 = 1.4;
+    p.a1 = 0.3;
+    p.a2 = 0.35;
+    p.a3 = 0.25;
+    p.a4 = 0.4;
+    p.h = 0.8;
+    p.geometry = g;
+    p.phiLocX = phi;
+    return p;
+}
+
 inline std::vector<Case> all() {
     using hsmu::SetupGeometry;
     std::vector<Case> cases;
@@ -99,6 +116,12 @@ inline std::vector<Case> all() {
                              return std::unique_ptr<hsmu::ExperimentalSetup>(
                                  hsmu::makeThreeActuators2d(three(g, false, -20.0), e));
                          }});
+        for (double phi : {0.0, 25.0})
+            cases.push_back({"FourActuators3d" + geo + " phiLocX " + std::to_string(int(phi)),
+                             [=](std::string& e) {
+                                 return std::unique_ptr<hsmu::ExperimentalSetup>(
+                                     hsmu::FourActuators3d::create(four(g, phi), e));
+                             }});
         cases.push_back({"Aggregator (OneActuator + ThreeActuators2d" + geo + ")",
                          [=](std::string& e) -> std::unique_ptr<hsmu::ExperimentalSetup> {
                              std::vector<std::unique_ptr<hsmu::ExperimentalSetup>> parts;

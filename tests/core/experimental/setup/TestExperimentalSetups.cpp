@@ -67,6 +67,7 @@ private slots:
     void twoActuatorsClosedForms();
     void threeActuatorsClosedForms();
     void jointOffsetClosedForms();
+    void fourActuatorsClosedForms();
     void noTransformationPicksAndScatters();
     void aggregatorIsBlockDiagonal();
     void singularGeometryIsRefused();
@@ -229,6 +230,45 @@ void TestExperimentalSetups::jointOffsetClosedForms() {
     QVERIFY(std::abs(sr(0) - (std::hypot(p.La1 + a * (1 - c), a * sn) - p.La1)) <= 1e-15);
 }
 
+void TestExperimentalSetups::fourActuatorsClosedForms() {
+    const auto p = setupcatalog::four(SetupGeometry::Exact);
+    std::string e;
+    auto ex = FourActuators3d::create(p, e);
+    QVERIFY2(ex, e.c_str());
+    // OpenFresco's mapping: ux = -d(1), uy = -d(3), phix = -d(4), phiy = -d(2)
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(6);
+    d(1) = -0.05; // ux = 0.05: the x actuators follow it, the y actuators swing
+    Eigen::VectorXd s = strokesOf(*ex, d);
+    QVERIFY(std::abs(s(0) - 0.05) <= 1e-15);
+    QVERIFY(std::abs(s(2) - 0.05) <= 1e-15);
+    QVERIFY(std::abs(s(1) - (std::hypot(0.05, p.L2) - p.L2)) <= 1e-15);
+    QVERIFY(std::abs(s(3) - (std::hypot(0.05, p.L4) - p.L4)) <= 1e-15);
+    // phiy = 0.3 about the control point: R a = (ax c + az s, ay, -ax s + az c)
+    d.setZero();
+    const double phi = 0.3, c = std::cos(phi), sn = std::sin(phi);
+    d(2) = -phi;
+    s = strokesOf(*ex, d);
+    const double s1 = std::hypot(p.a1 * (1 - c) + p.L1, p.a1 * sn) - p.L1;
+    const double s3 =
+        std::hypot(-p.a3 * c + p.h * sn + p.a3 + p.L3, p.a3 * sn + p.h * c - p.h) - p.L3;
+    QVERIFY(std::abs(s(0) - s1) <= 1e-15);
+    QVERIFY(std::abs(s(2) - s3) <= 1e-15);
+    // linear: s = (ux, uy, ux + h phiy, uy - h phix)
+    auto lin = FourActuators3d::create(setupcatalog::four(SetupGeometry::Linear), e);
+    QVERIFY(lin);
+    d << 0.0, -0.01, -0.02, -0.03, -0.04, 0.0; // ux 0.01, uy 0.03, phix 0.04, phiy 0.02
+    s = strokesOf(*lin, d);
+    QVERIFY(std::abs(s(0) - 0.01) <= 1e-15);
+    QVERIFY(std::abs(s(1) - 0.03) <= 1e-15);
+    QVERIFY(std::abs(s(2) - (0.01 + p.h * 0.02)) <= 1e-15);
+    QVERIFY(std::abs(s(3) - (0.03 - p.h * 0.04)) <= 1e-15);
+    // no actuator on d(0) (axial) and d(5) (twist): zero force there
+    Eigen::VectorXd q;
+    QVERIFY(ex->basicForces(d, Eigen::Vector4d(1e5, -2e5, 3e5, 4e5), q).ok);
+    QCOMPARE(q(0), 0.0);
+    QCOMPARE(q(5), 0.0);
+}
+
 void TestExperimentalSetups::noTransformationPicksAndScatters() {
     std::string e;
     auto nt = NoTransformation::create({3, 1}, 4, e);
@@ -298,6 +338,14 @@ void TestExperimentalSetups::singularGeometryIsRefused() {
     jo.La3 = std::numeric_limits<double>::quiet_NaN();
     QVERIFY(!makeInvertedVBraceJntOff2d(jo, e));
     QVERIFY2(contains("InvertedVBraceJntOff2d", "La3"), e.c_str());
+    FourActuators3dParams four = setupcatalog::four(SetupGeometry::Exact);
+    four.h = 0.0;
+    QVERIFY(!FourActuators3d::create(four, e));
+    QVERIFY2(contains("FourActuators3d", "h = 0"), e.c_str());
+    four = setupcatalog::four(SetupGeometry::Exact);
+    four.L3 = -1.0;
+    QVERIFY(!FourActuators3d::create(four, e));
+    QVERIFY2(contains("FourActuators3d", "L3"), e.c_str());
     QVERIFY(!NoTransformation::create({2, 2}, 3, e));
     QVERIFY2(contains("NoTransformation", "dir 2"), e.c_str());
     QVERIFY(!OneActuator::create(4, 3, e));
