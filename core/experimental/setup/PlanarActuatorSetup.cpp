@@ -57,42 +57,40 @@ Eigen::Vector3d PlanarActuatorSetup::toElementFrame(const Eigen::Vector3d& dl) c
     return {m_cphi * dl(0) + m_sphi * dl(1), -m_sphi * dl(0) + m_cphi * dl(1), dl(2)};
 }
 
-bool PlanarActuatorSetup::stroke(int i, const Eigen::Vector3d& dl, double& s) const {
+PlanarActuatorSetup::Pose PlanarActuatorSetup::pose(const Eigen::Vector3d& dl) const {
+    if (m_geometry == SetupGeometry::Linear)
+        return {dl(0), dl(1), dl(2), 1.0, 0.0};
+    return {dl(0), dl(1), dl(2), std::cos(dl(2)), std::sin(dl(2))};
+}
+
+bool PlanarActuatorSetup::stroke(int i, const Pose& p, double& s) const {
     const PlanarActuator& a = m_actuators[i];
     if (m_geometry == SetupGeometry::Linear) {
-        const Eigen::Vector2d e = (a.attach - a.base) / m_La[i];
-        s = e.x() * (dl(0) - dl(2) * a.attach.y()) + e.y() * (dl(1) + dl(2) * a.attach.x());
+        s = m_J0(i, 0) * p.u + m_J0(i, 1) * p.v + m_J0(i, 2) * p.theta; // S1L
         return true;
     }
-    const double c = std::cos(dl(2)), sn = std::sin(dl(2));
-    const double rx = dl(0) + c * a.attach.x() - sn * a.attach.y() - a.base.x();
-    const double ry = dl(1) + sn * a.attach.x() + c * a.attach.y() - a.base.y();
-    const double len = std::hypot(rx, ry);
+    const double rx = p.u + p.c * a.attach.x() - p.s * a.attach.y() - a.base.x();
+    const double ry = p.v + p.s * a.attach.x() + p.c * a.attach.y() - a.base.y();
+    const double len = std::sqrt(rx * rx + ry * ry);
     s = len - m_La[i];
     return len > kLengthTolerance * m_La[i];
 }
 
-void PlanarActuatorSetup::rowAt(int i, const Eigen::Vector3d& dl, double* row) const {
+bool PlanarActuatorSetup::rowAt(int i, const Pose& p, double* row) const {
     const PlanarActuator& a = m_actuators[i];
-    const double th = m_geometry == SetupGeometry::Linear ? 0.0 : dl(2);
-    const double c = std::cos(th), sn = std::sin(th);
-    double nx = 0, ny = 0;
-    if (m_geometry == SetupGeometry::Linear) {
-        nx = (a.attach.x() - a.base.x()) / m_La[i];
-        ny = (a.attach.y() - a.base.y()) / m_La[i];
-    } else {
-        const double rx = dl(0) + c * a.attach.x() - sn * a.attach.y() - a.base.x();
-        const double ry = dl(1) + sn * a.attach.x() + c * a.attach.y() - a.base.y();
-        const double len = std::hypot(rx, ry);
-        nx = rx / len;
-        ny = ry / len;
-    }
+    const double rx = p.u + p.c * a.attach.x() - p.s * a.attach.y() - a.base.x();
+    const double ry = p.v + p.s * a.attach.x() + p.c * a.attach.y() - a.base.y();
+    const double len = std::sqrt(rx * rx + ry * ry);
+    if (!(len > kLengthTolerance * m_La[i]))
+        return false;
+    const double nx = rx / len, ny = ry / len;
     // d/dtheta of R(theta) a
-    const double dpx = -sn * a.attach.x() - c * a.attach.y();
-    const double dpy = c * a.attach.x() - sn * a.attach.y();
+    const double dpx = -p.s * a.attach.x() - p.c * a.attach.y();
+    const double dpy = p.c * a.attach.x() - p.s * a.attach.y();
     row[0] = nx;
     row[1] = ny;
     row[2] = nx * dpx + ny * dpy;
+    return true;
 }
 
 SetupResult PlanarActuatorSetup::strokes(const Eigen::VectorXd& d, Eigen::VectorXd& s) const {
@@ -100,10 +98,10 @@ SetupResult PlanarActuatorSetup::strokes(const Eigen::VectorXd& d, Eigen::Vector
         return SetupResult::fault(m_typeName +
                                   ": 3 basic displacements (u, v, theta) wanted, got " +
                                   std::to_string(d.size()));
-    const Eigen::Vector3d dl = toSetupFrame(d);
+    const Pose p = pose(toSetupFrame(d));
     s.resize(actuatorCount());
     for (int i = 0; i < actuatorCount(); ++i)
-        if (!stroke(i, dl, s(i)))
+        if (!stroke(i, p, s(i)))
             return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
                                       " would shrink to zero length at the commanded motion");
     return SetupResult::success();
@@ -114,14 +112,13 @@ SetupResult PlanarActuatorSetup::jacobianLocal(const Eigen::Vector3d& dl, Rows& 
         J = m_J0;
         return SetupResult::success();
     }
+    const Pose p = pose(dl);
     J.resize(actuatorCount(), 3);
     for (int i = 0; i < actuatorCount(); ++i) {
-        double len = 0;
-        if (!stroke(i, dl, len))
+        double row[3];
+        if (!rowAt(i, p, row))
             return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
                                       " has zero length at the commanded motion");
-        double row[3];
-        rowAt(i, dl, row);
         J(i, 0) = row[0];
         J(i, 1) = row[1];
         J(i, 2) = row[2];
@@ -255,9 +252,10 @@ SetupResult PlanarActuatorSetup::newton(const Eigen::VectorXd& s, Eigen::Vector3
     Rows J;
     Small r(m), x(m);
     for (int it = 0; it < kMaxNewton; ++it) {
+        const Pose p = pose(dl);
         for (int i = 0; i < m; ++i) {
             double si = 0;
-            if (!stroke(i, dl, si))
+            if (!stroke(i, p, si))
                 return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
                                           " reaches zero length solving the measured strokes");
             r(i) = s(i) - si;

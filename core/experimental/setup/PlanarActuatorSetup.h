@@ -73,8 +73,12 @@ private:
 
     Eigen::Vector3d toSetupFrame(const Eigen::VectorXd& d) const;
     Eigen::Vector3d toElementFrame(const Eigen::Vector3d& dl) const;
-    bool stroke(int i, const Eigen::Vector3d& dl, double& s) const;
-    void rowAt(int i, const Eigen::Vector3d& dl, double* row) const; // setup frame
+    struct Pose {
+        double u, v, theta, c, s; ///< setup frame; c, s of theta (exact) or 1, 0 (linear)
+    };
+    Pose pose(const Eigen::Vector3d& dl) const;
+    bool stroke(int i, const Pose& p, double& s) const;  // false: zero length (exact)
+    bool rowAt(int i, const Pose& p, double* row) const; // exact row of S2; false: zero length
     SetupResult jacobianLocal(const Eigen::Vector3d& dl, Rows& J) const;
     Square controlledColumns(const Rows& J) const;
     SetupResult solveControlled(const Rows& J, const Small& rhs, Small& x) const;
