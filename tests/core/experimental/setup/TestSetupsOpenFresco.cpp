@@ -15,6 +15,7 @@
 
 #include "OpenFrescoSetupCases.h"
 #include "OpenFrescoSetupRun.h"
+#include "core/experimental/setup/SetupScript.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -62,6 +63,10 @@ void TestSetupsOpenFresco::againstOpenFresco() {
     const auto setup = c.make(error);
     QVERIFY2(setup, error.c_str());
     const int m = setup->actuatorCount();
+    // the very line OpenFresco runs, read by HSMU (SetupScript.h), gives the same setup
+    SetupsByTag parsed;
+    QVERIFY2(parseSetupScript(c.tcl.toStdString(), parsed, error), error.c_str());
+    QVERIFY(parsed.count(1) && parsed.at(1)->typeName() == setup->typeName());
     QStringList materials;
     for (int i = 0; i < m; ++i)
         materials
@@ -94,6 +99,9 @@ void TestSetupsOpenFresco::againstOpenFresco() {
             QVERIFY(std::abs(of.trial[k][j] - d(j)) <= 1e-15); // OpenFresco got this history
         Eigen::VectorXd s, sOf(m), fOf(m), dMeas, q;
         QVERIFY(setup->strokes(d, s).ok);
+        Eigen::VectorXd sParsed;
+        QVERIFY(parsed.at(1)->strokes(d, sParsed).ok);
+        QVERIFY(sParsed == s);
         for (int i = 0; i < m; ++i) {
             sOf(i) = of.actuatorDisp[k][i];
             fOf(i) = of.actuatorForce[k][i];
