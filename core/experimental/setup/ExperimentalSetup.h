@@ -12,8 +12,9 @@
 //
 // Force transformation: by virtual work, q . dd = f . ds for every admissible dd, so the
 // basic forces are q = J(d)^T f with J = ds/dd (docs/setups.md, eq. S3). Setups whose actuators
-// fix fewer DOFs than the element has (TwoActuators2d, OneActuator, NoTransformation) take the
-// remaining basic displacements from a given vector (the trial's) when they recover d.
+// fix fewer DOFs than the element has (TwoActuators2d, FourActuators3d, OneActuator,
+// NoTransformation) take the remaining basic displacements from a given vector (the trial's)
+// when they recover d; the exact setups also start their Newton iteration there.
 // No call throws or aborts: a fault returns a SetupResult naming the setup and the cause.
 // Thread rules: const methods are reentrant (no mutable state).
 
