@@ -5,7 +5,7 @@
 #include "core/groundmotion/AccelerationUnit.h"
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/record/RecordWriter.h"
-#include "core/rths/RthsRecord.h"
+#include "core/record/RthsRecord.h"
 #include "core/rths/RthsReport.h"
 #include "gui/cli/ConsoleStreams.h"
 

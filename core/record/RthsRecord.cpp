@@ -1,4 +1,4 @@
-#include "core/rths/RthsRecord.h"
+#include "core/record/RthsRecord.h"
 
 #include <limits>
 
