@@ -81,6 +81,8 @@ IdentificationSettings settingsOf(const SpecimenHistory& h, const std::optional<
             throw py::type_error("model: expected a dict of initial parameters");
         if (law)
             m["law"] = *law;
+        else if (!m.contains("law")) // model alone: the default law's initial parameters
+            m["law"] = defaultIdentificationSettings().model.law;
         override["model"] = m;
     }
     if (!updating.is_none())
