@@ -8,6 +8,7 @@ GIL over), while this thread appends ticks to the same list. Ticks found between
 the last progress dict were appended while the worker was inside the engine: a call that kept
 the GIL between its callbacks would leave none there. Only counts are compared, never times.
 """
+import itertools
 import os
 import signal
 import threading
@@ -130,3 +131,20 @@ def test_ctrl_c_stops_a_long_call_and_the_module_stays_usable(history, call):
     again = hsmu.calibrate(t[short], d[short], f[short])
     assert again["model"] == reference["model"] and again["nrmse"] == reference["nrmse"]
     assert hsmu.run(PRESET)["status"] == "finished"
+
+
+def test_the_measure_sees_a_call_that_keeps_the_gil():
+    """The control: C code that keeps the GIL between two progress entries (list.extend over
+    a C iterator: an entry, 3*10^7 items filtered out, an entry) leaves no tick between them,
+    so the ticks found above come from the engine letting the GIL go."""
+    first, last = {"phase": "first"}, {"phase": "last"}
+
+    def holds_the_gil(progress):
+        target = progress.__self__  # the list whose append is the progress callback
+        target.extend(itertools.chain([first], filter(None, itertools.repeat(0, 30_000_000)),
+                                      [last]))
+        return None
+
+    _, progress, ticks = ticks_inside(holds_the_gil)
+    assert progress == [first, last]
+    assert ticks == 0
