@@ -125,8 +125,8 @@ def test_ctrl_c_stops_a_long_call_and_the_module_stays_usable(history, call):
             hsmu.identify(t, d, f, method="ukf", progress=progress)
     # stopped at its next check: the call never reached its end
     assert "done" not in phases
-    if call == "identify":  # online progress every 64 samples: it stopped early
-        assert len(phases) < len(t) // 64 // 2
+    if call == "identify":  # online progress every 64 samples: it stopped within the pass
+        assert phases.count("online") < len(t) // 64
     # nothing left behind: the same calls give the same results, a run runs
     again = hsmu.calibrate(t[short], d[short], f[short])
     assert again["model"] == reference["model"] and again["nrmse"] == reference["nrmse"]
