@@ -144,29 +144,29 @@ py::dict run(py::handle config, py::handle groundMotion, py::handle scale, py::h
     session.addObserver(&table);
     TestSession::Status status = TestSession::Status::Failed;
     bool interrupted = false;
-    std::string cannotStart;
+    bool started = false;
     {
         py::gil_scoped_release release; // connecting to a controller takes its time
-        try {
-            headless->prepare();
-        } catch (const std::runtime_error& e) {
-            cannotStart = e.what();
-        }
+        started = headless->prepare();
     }
-    if (!cannotStart.empty()) {
+    if (!started) {
         session.removeObserver(&table);
-        throw py::value_error(cannotStart);
+        throw py::value_error("the test cannot start: " + headless->lastError());
     }
     interrupted = runInterruptible([&] { status = headless->runToEnd(); },
                                    [&] { session.emergencyHold("SIGINT received"); }, false);
     session.removeObserver(&table);
-    std::vector<std::string> errors;
+    HeadlessRun::Failures failed;
     {
         py::gil_scoped_release release;
-        errors = headless->finish();
+        failed = headless->finish();
     }
-    if (!errors.empty())
-        throw py::value_error(errors.front());
+    if (!failed.record.empty())
+        throw py::value_error(failed.record);
+    if (!failed.stepsCsv.empty())
+        throw py::value_error(failed.stepsCsv + ": write failed");
+    if (!failed.summary.empty())
+        throw py::value_error(failed.summary);
 
     py::dict result;
     result["status"] = statusName(status);

@@ -66,9 +66,8 @@ HeadlessRun::~HeadlessRun() {
         m_session.removeObserver(m_csv.get());
 }
 
-void HeadlessRun::prepare() {
-    if (!m_session.prepare())
-        throw std::runtime_error("the test cannot start: " + m_session.lastError());
+bool HeadlessRun::prepare() {
+    return m_session.prepare();
 }
 
 TestSession::Status HeadlessRun::runToEnd() {
@@ -79,23 +78,23 @@ TestSession::Status HeadlessRun::runToEnd() {
     return status;
 }
 
-std::vector<std::string> HeadlessRun::finish() {
-    std::vector<std::string> errors;
+HeadlessRun::Failures HeadlessRun::finish() {
+    Failures failed;
     if (m_csv)
         m_session.removeObserver(m_csv.get());
     if (!m_session.finish())
-        errors.push_back(m_session.lastError());
+        failed.record = m_session.lastError();
     if (m_csv && !m_csv->finish())
-        errors.push_back(m_csv->path() + ": write failed");
+        failed.stepsCsv = m_csv->path();
     if (!m_options.outDir.empty()) {
         try {
             writeSummaryJson(inFolder(m_options.outDir, "summary.json"), m_session.test(), m_stats,
                              m_info);
         } catch (const std::exception& e) {
-            errors.push_back(e.what());
+            failed.summary = e.what();
         }
     }
-    return errors;
+    return failed;
 }
 
 } // namespace hsmu

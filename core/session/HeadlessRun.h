@@ -17,7 +17,6 @@
 
 #include <memory>
 #include <string>
-#include <vector>
 
 namespace hsmu {
 
@@ -36,8 +35,8 @@ struct HeadlessOptions {
 class HeadlessRun {
 public:
     /// Creates the folder and steps.csv and opens the record. Throws std::runtime_error with
-    /// the message the front ends print ("DIR: cannot create the output directory", the
-    /// file that cannot be written, the record's error).
+    /// the message to print ("DIR: cannot create the output directory", steps.csv that cannot
+    /// be opened, the record's error). `hsmu run` creates the folder first itself (its words).
     HeadlessRun(const TestConfig& cfg, std::unique_ptr<HybridTest> test, HeadlessOptions options);
     ~HeadlessRun();
     HeadlessRun(const HeadlessRun&) = delete;
@@ -50,14 +49,20 @@ public:
     /// The row width when steps.csv was left out for it (Csv::Auto); 0 otherwise.
     std::size_t csvSkippedColumns() const { return m_csvSkipped; }
 
-    /// TestSession::prepare (connects the links). Throws std::runtime_error
-    /// "the test cannot start: ...".
-    void prepare();
+    /// TestSession::prepare (connects the links); false with the reason in lastError(). The
+    /// front ends say "the test cannot start: REASON".
+    bool prepare();
+    const std::string& lastError() const { return m_session.lastError(); }
     /// TestSession::runToEnd, timing it (RunInfo::wallTimeS).
     TestSession::Status runToEnd();
-    /// Closes the record and steps.csv and writes summary.json (with an out folder). Returns
-    /// the errors, each a sentence naming its file; empty when everything was written.
-    std::vector<std::string> finish();
+    /// What finish() could not write; every field empty when everything was written.
+    struct Failures {
+        std::string record;   ///< the record's error (TestSession::finish), a sentence
+        std::string stepsCsv; ///< the path of a steps.csv that could not be written
+        std::string summary;  ///< the summary.json error, a sentence naming the file
+    };
+    /// Closes the record and steps.csv and writes summary.json (with an out folder).
+    Failures finish();
     /// The run's configuration name and file and its wall time (after runToEnd).
     const RunInfo& info() const { return m_info; }
     /// The folder ("" for none).

@@ -91,6 +91,8 @@ int RunCommand::exec(const QStringList& arguments) {
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
+    if (!QDir().mkpath(options.outDir))
+        return fail(tr("%1: cannot create the output directory").arg(options.outDir));
     HeadlessOptions headless;
     headless.outDir = options.outDir.toStdString();
     headless.csv = options.csv == QLatin1String("none")  ? HeadlessOptions::Csv::None
@@ -137,11 +139,9 @@ int RunCommand::exec(const QStringList& arguments) {
     // SIGINT / SIGTERM from here on hold every site out of band (even mid-step); the
     // session never resumes an operator hold.
     SignalHold signalHold(*run);
-    try {
-        headlessRun->prepare();
-    } catch (const std::exception& e) {
-        return fail(QString::fromStdString(e.what()));
-    }
+    if (!headlessRun->prepare())
+        return fail(
+            tr("the test cannot start: %1").arg(QString::fromStdString(headlessRun->lastError())));
 
     Progress progress(*run);
     session.addObserver(&progress);
@@ -161,8 +161,13 @@ int RunCommand::exec(const QStringList& arguments) {
                      .arg(QString::fromLatin1(testStateName(run->state())))
               << Qt::endl;
     }
-    for (const std::string& error : headlessRun->finish())
-        code = fail(QString::fromStdString(error));
+    const HeadlessRun::Failures failed = headlessRun->finish();
+    if (!failed.record.empty())
+        code = fail(QString::fromStdString(failed.record));
+    if (!failed.stepsCsv.empty())
+        code = fail(tr("%1: write failed").arg(QString::fromStdString(failed.stepsCsv)));
+    if (!failed.summary.empty())
+        code = fail(QString::fromStdString(failed.summary));
     if (options.plots) {
         if (!CliPlots::installed().run)
             code = fail(tr("--plots: this program cannot draw (run it through hsmu)"));
