@@ -5,11 +5,13 @@
       ns per sample, to set beside `hsmu_bench --benchmark_filter=bmBoucWenStep` (target:
       within 1.2x of it);
   a 10^5-row record (paper-condition-3 run for 1000 s) opened with hsmu.Record and every
-      dataset read into arrays (target: <= 0.2 s).
+      dataset read into arrays (target: <= 0.2 s): the median wall time of --repeat reads and
+      the load average around them (the machine may be shared: say so with the figure).
 
 Run: PYTHONPATH=build/python /usr/bin/python3 benchmarks/bench_python.py [--repeat 5]
 """
 import argparse
+import os
 import tempfile
 import time
 
@@ -27,6 +29,26 @@ def best_of(repeat, work):
         times.append(time.perf_counter() - start)
         cpu.append(time.process_time() - start_cpu)
     return min(times), float(np.median(times)), min(cpu)
+
+
+def wall_of(repeat, work):
+    """Every wall time [s], and the median CPU time of the process and of its children [s]
+    (RecordReader first reads the file in a child process, RecordProbe)."""
+    walls, cpu, children = [], [], []
+    for _ in range(repeat):
+        before, start = os.times(), time.perf_counter()
+        work()
+        walls.append(time.perf_counter() - start)
+        after = os.times()
+        cpu.append(after.user + after.system - before.user - before.system)
+        children.append(after.children_user + after.children_system -
+                        before.children_user - before.children_system)
+    return walls, float(np.median(cpu)), float(np.median(children))
+
+
+def load():
+    """The load averages over 1, 5 and 15 minutes (as `uptime` prints them)."""
+    return ", ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
 def main():
@@ -67,10 +89,15 @@ def main():
             data = rec.data
             assert len(data["time"]) == rows
 
-        best, median, cpu = best_of(args.repeat, read)
+        read()  # the file in the page cache, as after the run that wrote it
+        load_before = load()
+        walls, cpu, children = wall_of(args.repeat, read)
         columns = len(hsmu.Record(path).names)
-        print(f"hsmu.Record + .data, {rows} rows x {columns} datasets: best {best:.3f} s, "
-              f"median {median:.3f} s, CPU {cpu:.3f} s")
+        print(f"hsmu.Record + .data, {rows} rows x {columns} datasets: wall median of "
+              f"{len(walls)} {float(np.median(walls)):.3f} s (each: "
+              f"{', '.join(f'{w:.3f}' for w in walls)}), best {min(walls):.3f} s; CPU median "
+              f"{cpu:.3f} s + {children:.3f} s in the probe child; load average before "
+              f"{load_before}, after {load()}")
         best, median, cpu = best_of(args.repeat, lambda: hsmu.Record(path))
         print(f"  of which hsmu.Record(path) (the reader): best {best:.3f} s, CPU {cpu:.3f} s")
 

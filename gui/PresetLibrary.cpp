@@ -1,7 +1,7 @@
 #include "gui/PresetLibrary.h"
 
 #include "core/config/ConfigLoader.h"
-#include "core/config/ShearBuilding.h"
+#include "core/config/PresetCatalog.h"
 
 #include <QDir>
 #include <QFile>
@@ -27,19 +27,25 @@ void ensureResources() {
     (void)done;
 }
 
-TestConfig parsePreset(const QString& id) {
-    QFile f(PresetLibrary::resourcePath(id));
-    if (!f.open(QIODevice::ReadOnly))
-        throw ConfigError("preset " + id.toStdString() + ": cannot be read");
-    const QByteArray bytes = f.readAll();
-    const std::string source = "preset " + id.toStdString();
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(bytes.constBegin(), bytes.constEnd());
-    } catch (const nlohmann::json::exception& e) {
-        throw ConfigError(source + ": " + e.what());
-    }
-    return parseConfig(doc, source);
+/// The embedded presets as the core rule's catalog (core/config/PresetCatalog.h).
+PresetCatalog embedded() {
+    PresetCatalog c;
+    c.ids = [] {
+        std::vector<std::string> ids;
+        for (const PresetLibrary::Preset& p : PresetLibrary::presets())
+            ids.push_back(p.id.toStdString());
+        return ids;
+    };
+    c.text = [](const std::string& id) -> std::optional<std::string> {
+        const QString path = PresetLibrary::resourcePath(QString::fromStdString(id));
+        if (path.isEmpty())
+            return std::nullopt;
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly))
+            throw ConfigError("preset " + id + ": cannot be read");
+        return f.readAll().toStdString();
+    };
+    return c;
 }
 
 } // namespace
@@ -61,7 +67,8 @@ QList<PresetLibrary::Preset> PresetLibrary::presets() {
         const QString id = QFileInfo(file).completeBaseName();
         QString title = id;
         try {
-            title = QString::fromStdString(parsePreset(id).name);
+            title = QString::fromStdString(
+                parsePreset(id.toStdString(), *embedded().text(id.toStdString())).name);
         } catch (const std::exception&) {
             // keep the id as the title; loading it will report the error
         }
@@ -72,23 +79,7 @@ QList<PresetLibrary::Preset> PresetLibrary::presets() {
 }
 
 TestConfig PresetLibrary::load(const QString& nameOrPath) {
-    if (QFileInfo(nameOrPath).isFile())
-        return loadConfigFile(nameOrPath.toStdString());
-    if (!resourcePath(nameOrPath).isEmpty())
-        return parsePreset(nameOrPath);
-    if (auto spec = parseShearBuildingName(nameOrPath.toStdString()))
-        return parseConfig(shearBuildingConfig(*spec), "preset " + nameOrPath.toStdString());
-    const bool looksLikePath = nameOrPath.contains(QLatin1Char('/')) ||
-                               nameOrPath.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive);
-    if (looksLikePath)
-        return loadConfigFile(nameOrPath.toStdString());
-    QStringList ids;
-    for (const Preset& p : presets())
-        ids << p.id;
-    throw ConfigError(nameOrPath.toStdString() +
-                      ": neither a configuration file nor a preset (presets: " +
-                      ids.join(QStringLiteral(", ")).toStdString() +
-                      ", and the generated shear-building-<N>[-elastic][-mass-damped])");
+    return loadConfigOrPreset(nameOrPath.toStdString(), embedded());
 }
 
 } // namespace hsmu::gui

@@ -1,10 +1,8 @@
 #pragma once
 // PresetLibrary: the test configurations embedded in the binary (resources/hsmu.qrc,
-// ":/presets/<name>.json") and the rule that turns a command-line CONFIG into a TestConfig:
-// an existing file is read from disk; otherwise a preset name ("paper-condition-3") is looked
-// up among the embedded presets; then the generated family "shear-building-<N>[-elastic]
-// [-mass-damped]" (core/config/ShearBuilding.h); otherwise the name is read as a path (and
-// fails naming it).
+// ":/presets/<name>.json"), as the catalog of the one CONFIG rule of every front end
+// (core/config/PresetCatalog.h: an existing file, else an embedded preset, else the generated
+// shear-building family, else a path that fails naming it).
 // Thread rules: any thread (read-only resources).
 
 #include "core/config/TestConfig.h"

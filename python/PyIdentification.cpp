@@ -14,6 +14,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <atomic>
+#include <chrono>
+#include <memory>
 #include <optional>
 
 namespace py = pybind11;
@@ -79,6 +81,8 @@ IdentificationSettings settingsOf(const SpecimenHistory& h, const std::optional<
             throw py::type_error("model: expected a dict of initial parameters");
         if (law)
             m["law"] = *law;
+        else if (!m.contains("law")) // model alone: the default law's initial parameters
+            m["law"] = defaultIdentificationSettings().model.law;
         override["model"] = m;
     }
     if (!updating.is_none())
@@ -110,7 +114,23 @@ OfflineIdentificationResult identify(const SpecimenHistory& h, IdentificationSet
         };
     }
     OfflineIdentificationResult r;
-    runInterruptible([&] { r = identifyOffline(h, s, tell); }, [&] { cancel = true; });
+    runInterruptible(
+        [&] {
+            const auto started = std::chrono::steady_clock::now();
+            r = identifyOffline(h, s, tell);
+            if (tell) { // the end, so that a progress bar reaches 100 %
+                OfflineProgress p;
+                p.phase = "done";
+                p.samplesDone = p.samples = h.size();
+                p.refits = r.refits;
+                p.rejected = r.estimatorWarnings;
+                p.elapsedSeconds =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started)
+                        .count();
+                tell(p);
+            }
+        },
+        [&] { cancel = true; });
     return r;
 }
 
@@ -199,7 +219,12 @@ py::dict identifyRecord(const std::filesystem::path& path, const std::string& me
                         const std::string& specimen, py::handle model, py::handle updating,
                         py::handle progress) {
     const std::string source = path.string();
-    RecordReader reader(source);
+    std::unique_ptr<RecordReader> opened;
+    {
+        py::gil_scoped_release release;
+        opened = std::make_unique<RecordReader>(source);
+    }
+    const RecordReader& reader = *opened;
     const TestConfig cfg =
         parseConfig(nlohmann::json::parse(reader.data().meta.configuration), source);
     IdentificationSettings s = identificationSettingsFrom(cfg, specimen);
@@ -223,7 +248,11 @@ py::dict readMeasured(const std::filesystem::path& path, py::handle units, py::h
         o.units = unitsOf(units);
     if (!columns.is_none())
         o.columns = parseMeasuredDataColumns(columns.cast<std::string>());
-    const SpecimenHistory h = readMeasuredDataCsv(path.string(), o);
+    SpecimenHistory h;
+    {
+        py::gil_scoped_release release;
+        h = readMeasuredDataCsv(path.string(), o);
+    }
     py::dict out;
     const auto n = std::size_t(h.size());
     for (const auto& [key, v] :
@@ -262,7 +291,8 @@ Returns a dict shaped like summary.json's "calibration": "parameters" {name: {"v
 "units" (of the data and of each parameter; Bouc-Wen's are normalised by uRef / fRef).
 progress: None or a callable given a dict {"phase", "samples_done", "samples", "refits",
 "rejected", "elapsed_s"} (from a worker thread, with the GIL held) before each phase and
-every 64 samples of an online pass; an exception it raises ends the call with it.
+every 64 samples of an online pass, and once with phase "done" at the end; an exception it
+raises ends the call with it.
 The GIL is released; Ctrl+C stops the calibration and raises KeyboardInterrupt.
 Raises ValueError for bad arrays or units (the messages of `hsmu replay`), TypeError for a
 wrong dtype.)doc");

@@ -1,5 +1,6 @@
 #include "python/PyRecord.h"
 
+#include "core/record/RecordColumns.h"
 #include "core/record/RecordReader.h"
 #include "python/PyArrays.h"
 #include "python/PyJson.h"
@@ -17,78 +18,13 @@ namespace hsmu::python {
 
 namespace {
 
-/// One per-step column: its name and unit as `hsmu export --csv` writes them, and its values.
-struct Column {
-    std::string name, unit;
-    std::function<double(const RecordData&, Eigen::Index)> value;
-};
-
-std::vector<Column> columnsOf(const RecordData& r) {
-    std::vector<Column> c;
-    const auto matrixColumn = [&c](std::string name, std::string unit,
-                                   const Eigen::MatrixXd RecordData::*m, Eigen::Index j) {
-        c.push_back({std::move(name), std::move(unit),
-                     [m, j](const RecordData& d, Eigen::Index i) { return (d.*m)(i, j); }});
-    };
-    c.push_back({"step", "", [](const RecordData& d, Eigen::Index i) {
-                     return double(d.steps[std::size_t(i)]);
-                 }});
-    c.push_back({"time", "s", [](const RecordData& d, Eigen::Index i) { return d.time[i]; }});
-    c.push_back({"ground_acceleration", "m/s^2",
-                 [](const RecordData& d, Eigen::Index i) { return d.groundAcceleration[i]; }});
-    const std::tuple<const char*, const char*, const Eigen::MatrixXd RecordData::*> dofs[] = {
-        {"u", "m", &RecordData::u}, {"v", "m/s", &RecordData::v}, {"a", "m/s^2", &RecordData::a}};
-    for (const auto& [kind, unit, m] : dofs)
-        for (std::size_t j = 0; j < r.layout.dofNames.size(); ++j)
-            matrixColumn(std::string(kind) + " " + r.layout.dofNames[j], unit, m, Eigen::Index(j));
-    for (std::size_t j = 0; j < r.layout.elements.size(); ++j) {
-        const ElementInfo& e = r.layout.elements[j];
-        const auto k = Eigen::Index(j);
-        matrixColumn(e.name + " deformation", e.units.deformation, &RecordData::deformation, k);
-        matrixColumn(e.name + " force", e.units.force, &RecordData::force, k);
-        matrixColumn(e.name + " commanded", e.units.deformation, &RecordData::commanded, k);
-        if (e.experimental &&
-            r.actuatorCommanded.cols() == Eigen::Index(r.layout.elements.size())) {
-            matrixColumn(e.name + " actuator commanded", e.units.deformation,
-                         &RecordData::actuatorCommanded, k);
-            matrixColumn(e.name + " actuator measured", e.units.deformation,
-                         &RecordData::actuatorMeasured, k);
-            matrixColumn(e.name + " held ticks", "-", &RecordData::heldTicks, k);
-            matrixColumn(e.name + " flags", "-", &RecordData::actuatorFlags, k);
-        }
-    }
-    for (Eigen::Index j = 0; j < r.siteRoundTrip.cols(); ++j)
-        matrixColumn((std::size_t(j) < r.layout.sites.size() ? r.layout.sites[std::size_t(j)]
-                                                             : "site " + std::to_string(j + 1)) +
-                         " round trip",
-                     "s", &RecordData::siteRoundTrip, j);
-    if (r.layout.updating) {
-        const UpdatingInfo& info = *r.layout.updating;
-        for (std::size_t j = 0; j < info.parameters.size(); ++j)
-            matrixColumn(info.parameters[j], "-", &RecordData::parameters, Eigen::Index(j));
-        for (std::size_t j = 0; j < info.parameters.size(); ++j)
-            matrixColumn("stddev " + info.parameters[j], "-", &RecordData::stddev, Eigen::Index(j));
-        c.push_back({"auxiliary_force", info.units.force,
-                     [](const RecordData& d, Eigen::Index i) { return d.auxiliaryForce[i]; }});
-        c.push_back(
-            {"fit_error", "-", [](const RecordData& d, Eigen::Index i) { return d.fitError[i]; }});
-        const std::pair<const char*, const std::vector<int> RecordData::*> counts[] = {
-            {"applied_updates", &RecordData::appliedUpdates},
-            {"updates_this_step", &RecordData::updatesThisStep},
-            {"pending_proposals", &RecordData::pendingProposals}};
-        for (const auto& [name, v] : counts)
-            c.push_back({name, "-", [v](const RecordData& d, Eigen::Index i) {
-                             return double((d.*v)[std::size_t(i)]);
-                         }});
-        if (r.tracking.rows() == r.rows() && r.rows() > 0) {
-            matrixColumn("tracking_j1", "s", &RecordData::tracking, 0);
-            matrixColumn("tracking_j2", "-", &RecordData::tracking, 1);
-            matrixColumn("tracking_j3", "-", &RecordData::tracking, 2);
-            c.push_back({"update_requested", "-", [](const RecordData& d, Eigen::Index i) {
-                             return double(d.updateRequested[std::size_t(i)]);
-                         }});
-        }
-    }
+/// Every per-step dataset once: step, time, then the columns of `hsmu export --csv`'s tables
+/// (core/record/RecordColumns.h), with their names and units.
+std::vector<RecordColumn> columnsOf(const RecordData& r) {
+    std::vector<RecordColumn> c{stepColumn(), timeColumn()};
+    for (RecordTable& table : recordTables(r))
+        for (RecordColumn& column : table.columns)
+            c.push_back(std::move(column));
     return c;
 }
 
@@ -104,25 +40,26 @@ public:
 
     std::vector<std::string> names() const {
         std::vector<std::string> out;
-        for (const Column& c : m_columns)
+        for (const RecordColumn& c : m_columns)
             out.push_back(c.name);
         return out;
     }
 
     py::dict units() const {
         py::dict out;
-        for (const Column& c : m_columns)
+        for (const RecordColumn& c : m_columns)
             out[py::str(c.name)] = c.unit;
         return out;
     }
 
     RealArray column(const std::string& name) const {
-        for (const Column& c : m_columns) {
+        for (const RecordColumn& c : m_columns) {
             if (c.name != name)
                 continue;
             const auto n = std::size_t(d().rows());
             RealArray a = newVector(n);
             double* out = a.mutable_data();
+            py::gil_scoped_release release; // the values are the reader's, not Python's
             for (std::size_t i = 0; i < n; ++i)
                 out[i] = c.value(d(), Eigen::Index(i));
             return a;
@@ -133,7 +70,7 @@ public:
 
     py::dict data() const {
         py::dict out;
-        for (const Column& c : m_columns)
+        for (const RecordColumn& c : m_columns)
             out[py::str(c.name)] = column(c.name);
         return out;
     }
@@ -253,7 +190,7 @@ public:
 
 private:
     std::unique_ptr<RecordReader> m_reader;
-    std::vector<Column> m_columns;
+    std::vector<RecordColumn> m_columns;
 };
 
 } // namespace

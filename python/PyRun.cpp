@@ -2,14 +2,12 @@
 
 #include "comms/link/ControlFactory.h"
 #include "core/config/ConfigLoader.h"
-#include "core/config/ShearBuilding.h"
+#include "core/config/PresetCatalog.h"
 #include "core/config/TestFactory.h"
 #include "core/experiment/HybridTest.h"
-#include "core/output/RunLayout.h"
-#include "core/output/RunStatistics.h"
-#include "core/output/RunSummary.h"
 #include "core/output/StepCsvWriter.h"
-#include "core/session/TestSession.h"
+#include "core/session/HeadlessRun.h"
+#include "core/util/SecretFile.h"
 #include "python/PyArrays.h"
 #include "python/PyInterrupt.h"
 #include "python/PyJson.h"
@@ -17,9 +15,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
-#include <fstream>
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -28,63 +24,23 @@ namespace hsmu::python {
 
 namespace {
 
-/// Where the presets are: beside an installed module (PREFIX/lib/python3/dist-packages ->
-/// PREFIX/share/hsmu/presets), else the source tree's (a build-tree module).
-std::vector<fs::path> presetDirs() {
-    std::vector<fs::path> dirs;
+std::string fspath(py::handle path) {
+    return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
+}
+
+/// The presets of `hsmu run`, as folders: beside an installed module
+/// (PREFIX/lib/python3/dist-packages -> PREFIX/share/hsmu/presets), else the source tree's.
+PresetCatalog presets() {
     const fs::path module = py::module_::import("hsmu").attr("__file__").cast<std::string>();
-    dirs.push_back(module.parent_path() / "../../../share/hsmu/presets");
-    dirs.push_back(fs::path(HSMU_SOURCE_PRESETS));
-    return dirs;
+    return presetFolders(
+        {(module.parent_path() / "../../../share/hsmu/presets").string(), HSMU_SOURCE_PRESETS});
 }
 
-std::vector<std::string> presetNames() {
-    std::vector<std::string> names;
-    for (const fs::path& dir : presetDirs()) {
-        std::error_code ec;
-        for (const auto& entry : fs::directory_iterator(dir, ec))
-            if (entry.path().extension() == ".json")
-                names.push_back(entry.path().stem().string());
-        if (!names.empty())
-            break;
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-/// The rule of `hsmu run CONFIG` (gui/PresetLibrary.h): an existing file; else a preset name
-/// (read with the source name "preset <id>", as the program's embedded copy); else the
-/// generated shear-building family; else a path, which fails naming it.
+/// The rule of `hsmu run CONFIG` (core/config/PresetCatalog.h), or a dict.
 TestConfig loadConfig(py::handle config) {
     if (py::isinstance<py::dict>(config))
         return parseConfig(toJson(config, "config"), "config (dict)");
-    const std::string name = py::str(py::module_::import("os").attr("fspath")(config));
-    if (fs::is_regular_file(name))
-        return loadConfigFile(name);
-    if (name.find('/') == std::string::npos) {
-        for (const fs::path& dir : presetDirs()) {
-            const fs::path file = dir / (name + ".json");
-            if (!fs::is_regular_file(file))
-                continue;
-            std::ifstream in(file);
-            nlohmann::json doc;
-            try {
-                doc = nlohmann::json::parse(in);
-            } catch (const nlohmann::json::exception& e) {
-                throw ConfigError("preset " + name + ": " + e.what());
-            }
-            return parseConfig(doc, "preset " + name);
-        }
-        if (auto spec = parseShearBuildingName(name))
-            return parseConfig(shearBuildingConfig(*spec), "preset " + name);
-    }
-    if (name.find('/') != std::string::npos || name.ends_with(".json"))
-        return loadConfigFile(name);
-    std::string ids;
-    for (const auto& id : presetNames())
-        ids += (ids.empty() ? "" : ", ") + id;
-    throw ConfigError(name + ": neither a configuration file nor a preset (presets: " + ids +
-                      ", and the generated shear-building-<N>[-elastic][-mass-damped])");
+    return loadConfigOrPreset(fspath(config), presets());
 }
 
 /// Every committed step's StepCsvWriter values, and the caller's progress every 1 %.
@@ -142,75 +98,75 @@ const char* statusName(TestSession::Status s) {
     }
 }
 
+/// The link of `hsmu run --controller ADDRESS --token-file F` (docs/security.md).
+ControlFactory controlFactory(const TestConfig& cfg, const std::string& controller,
+                              py::handle tokenFile) {
+    std::string error;
+    const auto address = comms::LinkAddress::parse(controller, &error);
+    if (!address)
+        throw py::value_error("controller: " + error);
+    const auto token = linkToken(tokenFile.is_none() ? std::string() : fspath(tokenFile), error);
+    if (!token)
+        throw py::value_error("token_file: " + error);
+    comms::TcpControlOptions options;
+    options.token = *token;
+    return comms::makeControlFactory(*address, options, cfg);
+}
+
 py::dict run(py::handle config, py::handle groundMotion, py::handle scale, py::handle out,
-             py::handle progress) {
+             py::handle progress, const std::string& controller, py::handle tokenFile,
+             int reconnect) {
     TestConfig cfg = loadConfig(config);
     if (!groundMotion.is_none()) { // as --ground-motion FILE (gui/ConfigOverrides)
-        cfg.groundMotion.file =
-            fs::absolute(
-                py::str(py::module_::import("os").attr("fspath")(groundMotion)).cast<std::string>())
-                .string();
+        cfg.groundMotion.file = fs::absolute(fspath(groundMotion)).string();
         cfg.groundMotion.format = "auto";
         cfg.groundMotion.units.clear();
         cfg.groundMotion.dt = 0.0;
     }
     if (!scale.is_none())
         cfg.groundMotion.scale = scale.cast<double>();
+    if (reconnect < 0)
+        throw py::value_error("reconnect: expected a whole number >= 0, found " +
+                              std::to_string(reconnect));
+    HeadlessOptions options;
+    options.outDir = out.is_none() ? std::string() : fspath(out);
+    options.reconnect.attempts = reconnect;
     std::unique_ptr<HybridTest> test =
-        buildHybridTest(cfg, comms::makeControlFactory(comms::LinkAddress{}, {}, cfg));
-    const RunLayout layout = RunLayout::of(*test);
-
-    std::optional<fs::path> dir;
-    if (!out.is_none()) {
-        dir = fs::path(py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>());
-        std::error_code ec;
-        fs::create_directories(*dir, ec);
-        if (!fs::is_directory(*dir))
-            throw py::value_error(dir->string() + ": cannot create the output directory");
+        buildHybridTest(cfg, controlFactory(cfg, controller, tokenFile));
+    std::unique_ptr<HeadlessRun> headless;
+    try {
+        headless = std::make_unique<HeadlessRun>(cfg, std::move(test), options);
+    } catch (const std::runtime_error& e) { // the folder, steps.csv, the record
+        throw py::value_error(e.what());
     }
-    std::unique_ptr<StepCsvWriter> csv;
-    if (dir && StepCsvWriter::columnCount(layout) <= StepCsvWriter::kMaxColumns)
-        csv = std::make_unique<StepCsvWriter>((*dir / "steps.csv").string(), layout);
-    SessionOptions options;
-    if (dir)
-        options.recordPath = (*dir / "record.h5").string();
-    options.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
-    const int total = test->totalSteps();
-    TestSession session(std::move(test), options);
-    if (!session.openRecord())
-        throw py::value_error(session.lastError());
-    RunStatistics stats(layout);
-    StepTable table(layout, total, progress);
-    if (csv)
-        session.addObserver(csv.get());
-    session.addObserver(&stats);
+    TestSession& session = headless->session();
+    StepTable table(headless->layout(), session.test().totalSteps(), progress);
     session.addObserver(&table);
-    if (!session.prepare())
-        throw py::value_error("the test cannot start: " + session.lastError());
-
     TestSession::Status status = TestSession::Status::Failed;
-    const auto started = std::chrono::steady_clock::now();
-    const bool interrupted =
-        runInterruptible([&] { status = session.runToEnd(); },
-                         [&] { session.emergencyHold("SIGINT received"); }, false);
-    RunInfo info;
-    info.configName = cfg.name;
-    info.configFile = cfg.sourcePath;
-    info.wallTimeS =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    bool interrupted = false;
+    bool started = false;
+    {
+        py::gil_scoped_release release; // connecting to a controller takes its time
+        started = headless->prepare();
+    }
+    if (!started) {
+        session.removeObserver(&table);
+        throw py::value_error("the test cannot start: " + headless->lastError());
+    }
+    interrupted = runInterruptible([&] { status = headless->runToEnd(); },
+                                   [&] { session.emergencyHold("SIGINT received"); }, false);
     session.removeObserver(&table);
-    session.removeObserver(&stats);
-    if (csv)
-        session.removeObserver(csv.get());
-    std::string error;
-    if (!session.finish())
-        error = session.lastError();
-    if (csv && !csv->finish())
-        error = csv->path() + ": write failed";
-    if (dir)
-        writeSummaryJson((*dir / "summary.json").string(), session.test(), stats, info);
-    if (!error.empty())
-        throw py::value_error(error);
+    HeadlessRun::Failures failed;
+    {
+        py::gil_scoped_release release;
+        failed = headless->finish();
+    }
+    if (!failed.record.empty())
+        throw py::value_error(failed.record);
+    if (!failed.stepsCsv.empty())
+        throw py::value_error(failed.stepsCsv + ": write failed");
+    if (!failed.summary.empty())
+        throw py::value_error(failed.summary);
 
     py::dict result;
     result["status"] = statusName(status);
@@ -218,25 +174,31 @@ py::dict run(py::handle config, py::handle groundMotion, py::handle scale, py::h
     const auto reason = holdReason(session.test());
     result["hold_reason"] = reason ? py::object(py::str(*reason)) : py::object(py::none());
     result["steps"] = table.arrays();
-    result["summary"] = toPython(makeRunSummary(session.test(), stats, info));
+    result["summary"] =
+        toPython(makeRunSummary(session.test(), headless->statistics(), headless->info()));
     result["configuration"] = toPython(cfg.raw);
-    result["out"] = dir ? py::object(py::str(dir->string())) : py::object(py::none());
+    result["out"] =
+        options.outDir.empty() ? py::object(py::none()) : py::object(py::str(options.outDir));
     return result;
 }
 
 } // namespace
 
 void bindRun(py::module_& m) {
-    m.def("presets", &presetNames, "The preset names hsmu.run accepts (as `hsmu run` does).");
+    m.def(
+        "presets", [] { return presets().ids(); },
+        "The preset names hsmu.run accepts (as `hsmu run` does).");
     m.def(
         "load_config", [](py::handle c) { return toPython(loadConfig(c).raw); }, py::arg("config"),
         "A configuration (preset name, path or dict) checked as `hsmu run` checks it, as a "
         "dict in its JSON shape. ValueError naming the file and field at fault.");
     m.def("run", &run, py::arg("config"), py::kw_only(), py::arg("ground_motion") = py::none(),
           py::arg("scale") = py::none(), py::arg("out") = py::none(),
-          py::arg("progress") = py::none(),
-          R"doc(Run a hybrid test headless on the built-in virtual specimens, as `hsmu run CONFIG
-[--ground-motion FILE] [--scale S] [--out DIR]` does (the same session and stepping loop).
+          py::arg("progress") = py::none(), py::arg("controller") = "builtin",
+          py::arg("token_file") = py::none(), py::arg("reconnect") = 0,
+          R"doc(Run a hybrid test headless, as `hsmu run CONFIG [--ground-motion FILE]
+[--scale S] [--out DIR] [--controller ADDRESS] [--token-file F] [--reconnect N]` does (the same
+set-up, session and stepping loop: core/session/HeadlessRun).
 
 config: a preset name (hsmu.presets(), or shear-building-<N>[-elastic][-mass-damped]), a
 configuration file, or a dict in the configuration's JSON shape (docs/configuration.md).
@@ -244,14 +206,26 @@ ground_motion: a record file replacing the configuration's; scale: its factor.
 out: a folder for record.h5, steps.csv and summary.json as `hsmu run --out` writes them;
 None writes nothing. progress: None or a callable given {"step", "total_steps", "time_s"}
 about every 1 % (from the run's thread, with the GIL held).
+controller: "builtin" (the in-process virtual specimens, the default) or the address of an
+actuator controller, "tcp://HOST:PORT" (hsmu-controller or a lab controller), "simapp://..."
+or "generictcp://..." (docs/cli.md); the configuration's sites still apply. token_file: the
+file holding the controller's token (chmod 600), else the environment variable
+HSMU_CONTROLLER_TOKEN (docs/security.md). reconnect: automatic resumes after a link fault,
+as --reconnect N (0: a lost controller holds the test).
 
 Returns a dict: "status" ("finished", "held", "failed"), "interrupted" (Ctrl+C),
-"hold_reason", "steps" ({column: float64 array}, one row per committed step, the columns of
-steps.csv with their units in the names: time_s, ag_m_s2, <dof>_u_m, ..., at full
-precision), "summary" (summary.json's content), "configuration" (dict), "out".
-The GIL is released while the test runs. Ctrl+C is an emergency hold: every site holds, the
-run ends cleanly with its record and summary written, and "status" is "held".
-Raises ValueError naming the file and field for a bad configuration.)doc");
+"hold_reason" (None, or the reason `hsmu run` prints in "test held at t = ... s (step N):
+REASON", e.g. a lost controller), "steps" ({column: float64 array}, one row per committed
+step, the columns of steps.csv with their units in the names: time_s, ag_m_s2, <dof>_u_m,
+..., at full precision), "summary" (summary.json's content), "configuration" (dict), "out".
+A held run (a lost controller, a limit, Ctrl+C) returns normally, with every committed step
+kept and the record and summary written, as `hsmu run` exits 2 with them.
+The GIL is released while the test connects, runs and writes its files. Ctrl+C is an
+emergency hold: every site holds, the run ends cleanly with its record and summary written,
+and "status" is "held".
+Raises ValueError naming the file and field for a bad configuration, a bad controller address
+or token file, or a controller that cannot be reached ("the test cannot start: ...", as `hsmu
+run` exits 1).)doc");
 }
 
 } // namespace hsmu::python

@@ -5,8 +5,8 @@
 #include "core/util/SecretFile.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 namespace hsmu::comms {
@@ -17,21 +17,14 @@ ControllerApp::~ControllerApp() = default;
 
 namespace {
 
-/// The token: the first line of tokenFile (readSecretFile), else HSMU_CONTROLLER_TOKEN, else
-/// "" (none).
+/// The token (linkToken: --token-file, else HSMU_CONTROLLER_TOKEN, else none).
 bool readToken(const std::string& tokenFile, std::string& token, std::string& error) {
-    token.clear();
-    if (!tokenFile.empty()) {
-        const auto secret = readSecretFile(tokenFile, error);
-        if (!secret) {
-            error += " (--token-file)";
-            return false;
-        }
-        token = *secret;
-        return true;
+    const auto secret = linkToken(tokenFile, error);
+    if (!secret) {
+        error += " (--token-file)";
+        return false;
     }
-    if (const char* env = std::getenv("HSMU_CONTROLLER_TOKEN"))
-        token = env;
+    token = *secret;
     return true;
 }
 
@@ -59,8 +52,8 @@ bool ControllerApp::start(std::string& error) {
         if (!m_cmd.state.empty()) {
             m_journal = std::make_unique<StateJournal>();
             std::error_code ec; // the default folder may not exist yet
-            std::filesystem::create_directories(
-                std::filesystem::path(m_cmd.state).parent_path(), ec);
+            std::filesystem::create_directories(std::filesystem::path(m_cmd.state).parent_path(),
+                                                ec);
             if (!m_cmd.quiet)
                 std::fprintf(stderr, "hsmu-controller: state file %s\n", m_cmd.state.c_str());
         }

@@ -1,5 +1,7 @@
 #include "comms/controller/ControllerCommandLine.h"
 
+#include "core/config/PresetCatalog.h"
+
 #include <boost/asio/ip/address.hpp>
 
 #include <cstdlib>
@@ -171,8 +173,7 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
     return c;
 }
 
-std::string ControllerCommandLine::defaultStateFile(const std::string& config,
-                                                   std::uint16_t port) {
+std::string ControllerCommandLine::defaultStateFile(const std::string& config, std::uint16_t port) {
     namespace fs = std::filesystem;
     fs::path base;
     const char* xdg = std::getenv("XDG_STATE_HOME");
@@ -186,8 +187,7 @@ std::string ControllerCommandLine::defaultStateFile(const std::string& config,
     std::string stem = fs::path(config).stem().string();
     if (stem.empty())
         stem = "controller";
-    return (base / "hsmu" / "controller" / (stem + "-" + std::to_string(port) + ".state"))
-        .string();
+    return (base / "hsmu" / "controller" / (stem + "-" + std::to_string(port) + ".state")).string();
 }
 
 std::string ControllerCommandLine::stateFile() const {
@@ -201,17 +201,15 @@ std::string ControllerCommandLine::resolveConfig(const std::string& configOrPres
     std::error_code ec;
     if (fs::exists(configOrPreset, ec) || configOrPreset.find('/') != std::string::npos)
         return configOrPreset;
-    const std::string file = configOrPreset + ".json";
-    std::vector<fs::path> dirs;
+    std::vector<std::string> dirs;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (!ec) // installed: PREFIX/bin/hsmu-controller -> PREFIX/share/hsmu/presets
-        dirs.push_back(exe.parent_path().parent_path() / "share" / "hsmu" / "presets");
+        dirs.push_back((exe.parent_path().parent_path() / "share" / "hsmu" / "presets").string());
 #ifdef HSMU_PRESET_SOURCE_DIR
     dirs.emplace_back(HSMU_PRESET_SOURCE_DIR); // a build tree
 #endif
-    for (const fs::path& d : dirs)
-        if (fs::exists(d / file, ec))
-            return (d / file).string();
+    if (auto file = presetFile(configOrPreset, dirs))
+        return *file;
     return configOrPreset; // the loader's error names it
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/record/CsvFile.h"
 #include "core/record/CsvText.h"
+#include "core/record/RecordColumns.h"
 #include "core/record/RecordData.h"
 #include "core/util/Units.h"
 
@@ -22,7 +23,8 @@ class UnitMap {
 public:
     explicit UnitMap(const ExportUnits& u) {
         const auto pick = [](const std::string& text, units::Dimension d) {
-            return text.empty() ? units::Unit{units::baseSymbol(d), d, 1.0} : *units::parse(text, d);
+            return text.empty() ? units::Unit{units::baseSymbol(d), d, 1.0}
+                                : *units::parse(text, d);
         };
         m_length = pick(u.length, units::Dimension::Length);
         m_force = pick(u.force, units::Dimension::Force);
@@ -67,171 +69,33 @@ std::string number(double v) {
     return csvtext::number(v);
 }
 
-std::vector<std::string> stepAndTime(const RecordData& r, Eigen::Index i, const UnitMap& u) {
-    return {std::to_string(r.steps[std::size_t(i)]), u.number(r.time[i], "s")};
-}
-
-void writeSteps(const RecordData& r, const std::filesystem::path& dir,
+/// One table of RecordColumns (core/record/RecordColumns.h): step, time, then its columns.
+void writeTable(const RecordData& r, const RecordTable& table, const std::filesystem::path& dir,
                 std::vector<std::string>& written, const UnitMap& u) {
-    CsvFile f((dir / "steps.csv").string(), written);
-    f.column("step", "");
-    f.column("time", u.symbol("s"));
-    f.column("ground_acceleration", u.symbol("m/s^2"));
+    CsvFile f((dir / table.file).string(), written);
+    const RecordColumn step = stepColumn(), time = timeColumn();
+    std::vector<const RecordColumn*> columns{&step, &time};
+    for (const RecordColumn& c : table.columns)
+        columns.push_back(&c);
+    for (const RecordColumn* c : columns)
+        f.column(c->name, u.symbol(c->unit));
     f.endHeader();
+    std::vector<std::string> row;
     for (Eigen::Index i = 0; i < r.rows(); ++i) {
-        auto row = stepAndTime(r, i, u);
-        row.push_back(u.number(r.groundAcceleration[i], "m/s^2"));
-        f.line(row);
-    }
-    f.close();
-}
-
-void writeDofs(const RecordData& r, const std::filesystem::path& dir,
-               std::vector<std::string>& written, const UnitMap& u) {
-    CsvFile f((dir / "dofs.csv").string(), written);
-    f.column("step", "");
-    f.column("time", u.symbol("s"));
-    const std::pair<const char*, const char*> kinds[] = {{"u", "m"}, {"v", "m/s"}, {"a", "m/s^2"}};
-    for (const auto& [kind, unit] : kinds)
-        for (const auto& name : r.layout.dofNames)
-            f.column(std::string(kind) + " " + name, u.symbol(unit));
-    f.endHeader();
-    const std::pair<const Eigen::MatrixXd*, const char*> matrices[] = {
-        {&r.u, "m"}, {&r.v, "m/s"}, {&r.a, "m/s^2"}};
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
-        auto row = stepAndTime(r, i, u);
-        for (const auto& [m, unit] : matrices)
-            for (Eigen::Index j = 0; j < m->cols(); ++j)
-                row.push_back(u.number((*m)(i, j), unit));
-        f.line(row);
-    }
-    f.close();
-}
-
-void writeElements(const RecordData& r, const std::filesystem::path& dir,
-                   std::vector<std::string>& written, const UnitMap& u) {
-    CsvFile f((dir / "elements.csv").string(), written);
-    f.column("step", "");
-    f.column("time", u.symbol("s"));
-    for (const ElementInfo& e : r.layout.elements) {
-        f.column(e.name + " deformation", u.symbol(e.units.deformation));
-        f.column(e.name + " force", u.symbol(e.units.force));
-        f.column(e.name + " commanded", u.symbol(e.units.deformation));
-    }
-    f.endHeader();
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
-        auto row = stepAndTime(r, i, u);
-        for (Eigen::Index j = 0; j < Eigen::Index(r.layout.elements.size()); ++j) {
-            const ElementUnits& eu = r.layout.elements[std::size_t(j)].units;
-            row.push_back(u.number(r.deformation(i, j), eu.deformation));
-            row.push_back(u.number(r.force(i, j), eu.force));
-            row.push_back(u.number(r.commanded(i, j), eu.deformation));
+        row.clear();
+        for (const RecordColumn* c : columns) {
+            const double v = c->value(r, i);
+            row.push_back(c->integer ? std::to_string(static_cast<long long>(v))
+                                     : u.number(v, c->unit));
         }
         f.line(row);
     }
     f.close();
 }
 
-/// actuators.csv: the actuator channels of every specimen (records that have them).
-void writeActuators(const RecordData& r, const std::filesystem::path& dir,
-                    std::vector<std::string>& written, const UnitMap& u) {
-    const Eigen::Index n = Eigen::Index(r.layout.elements.size());
-    if (r.actuatorCommanded.rows() != r.rows() || r.actuatorCommanded.cols() != n ||
-        std::none_of(r.layout.elements.begin(), r.layout.elements.end(),
-                     [](const ElementInfo& e) { return e.experimental; }))
-        return;
-    CsvFile f((dir / "actuators.csv").string(), written);
-    f.column("step", "");
-    f.column("time", u.symbol("s"));
-    for (const ElementInfo& e : r.layout.elements) {
-        if (!e.experimental)
-            continue;
-        f.column(e.name + " actuator commanded", u.symbol(e.units.deformation));
-        f.column(e.name + " actuator measured", u.symbol(e.units.deformation));
-        f.column(e.name + " held ticks", "-");
-        f.column(e.name + " flags", "-");
-    }
-    f.endHeader();
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
-        auto row = stepAndTime(r, i, u);
-        for (Eigen::Index j = 0; j < n; ++j) {
-            const ElementInfo& e = r.layout.elements[std::size_t(j)];
-            if (!e.experimental)
-                continue;
-            row.push_back(u.number(r.actuatorCommanded(i, j), e.units.deformation));
-            row.push_back(u.number(r.actuatorMeasured(i, j), e.units.deformation));
-            row.push_back(number(r.heldTicks(i, j)));
-            row.push_back(number(r.actuatorFlags(i, j)));
-        }
-        f.line(row);
-    }
-    f.close();
-}
-
-void writeSites(const RecordData& r, const std::filesystem::path& dir,
-                std::vector<std::string>& written, const UnitMap& u) {
-    const auto n = r.siteRoundTrip.cols();
-    if (n == 0 || r.siteRoundTrip.rows() != r.rows())
-        return;
-    CsvFile f((dir / "sites.csv").string(), written);
-    f.column("step", "");
-    f.column("time", u.symbol("s"));
-    for (Eigen::Index j = 0; j < n; ++j)
-        f.column((std::size_t(j) < r.layout.sites.size() ? r.layout.sites[std::size_t(j)]
-                                                         : "site " + std::to_string(j + 1)) +
-                     " round trip",
-                 u.symbol("s"));
-    f.endHeader();
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
-        auto row = stepAndTime(r, i, u);
-        for (Eigen::Index j = 0; j < n; ++j)
-            row.push_back(u.number(r.siteRoundTrip(i, j), "s"));
-        f.line(row);
-    }
-    f.close();
-}
-
-void writeUpdating(const RecordData& r, const std::filesystem::path& dir,
-                   std::vector<std::string>& written, const UnitMap& u) {
+void writeUpdateEvents(const RecordData& r, const std::filesystem::path& dir,
+                       std::vector<std::string>& written, const UnitMap& u) {
     const UpdatingInfo& info = *r.layout.updating;
-    const bool v2 = r.tracking.rows() == r.rows() && r.rows() > 0;
-    CsvFile f((dir / "updating.csv").string(), written);
-    f.column("step", "");
-    f.column("time", u.symbol("s"));
-    for (const auto& p : info.parameters)
-        f.column(p, "-");
-    for (const auto& p : info.parameters)
-        f.column("stddev " + p, "-");
-    f.column("auxiliary_force", u.symbol(info.units.force));
-    for (const char* name :
-         {"fit_error", "applied_updates", "updates_this_step", "pending_proposals"})
-        f.column(name, "-");
-    if (v2) {
-        f.column("tracking_j1", u.symbol("s"));
-        f.column("tracking_j2", "-");
-        f.column("tracking_j3", "-");
-        f.column("update_requested", "-");
-    }
-    f.endHeader();
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
-        auto row = stepAndTime(r, i, u);
-        for (const Eigen::MatrixXd* m : {&r.parameters, &r.stddev})
-            for (Eigen::Index j = 0; j < m->cols(); ++j)
-                row.push_back(number((*m)(i, j)));
-        row.push_back(u.number(r.auxiliaryForce[i], info.units.force));
-        row.push_back(number(r.fitError[i]));
-        for (const std::vector<int>* v :
-             {&r.appliedUpdates, &r.updatesThisStep, &r.pendingProposals})
-            row.push_back(std::to_string((*v)[std::size_t(i)]));
-        if (v2) {
-            for (Eigen::Index j = 0; j < r.tracking.cols(); ++j)
-                row.push_back(j == 0 ? u.number(r.tracking(i, j), "s") : number(r.tracking(i, j)));
-            row.push_back(std::to_string(r.updateRequested[std::size_t(i)]));
-        }
-        f.line(row);
-    }
-    f.close();
-
     CsvFile e((dir / "update_events.csv").string(), written);
     e.column("step", "");
     e.column("time", u.symbol("s"));
@@ -289,7 +153,8 @@ ExportUnits parseExportUnits(const std::string& text) {
     while (std::getline(s, part, ',')) {
         const auto eq = part.find('=');
         const std::string key = trim(part.substr(0, eq));
-        const std::string value = eq == std::string::npos ? std::string() : trim(part.substr(eq + 1));
+        const std::string value =
+            eq == std::string::npos ? std::string() : trim(part.substr(eq + 1));
         const struct {
             const char* key;
             std::string ExportUnits::*field;
@@ -304,7 +169,8 @@ ExportUnits parseExportUnits(const std::string& text) {
         if (k == std::end(keys) || value.empty())
             throw std::invalid_argument("--units: expected KEY=UNIT pairs separated by commas "
                                         "with KEY one of length, force, rotation, moment, time "
-                                        "(e.g. length=in,force=kip), found '" + part + "'");
+                                        "(e.g. length=in,force=kip), found '" +
+                                        part + "'");
         if (!units::parse(value, k->dimension))
             throw std::invalid_argument("--units: unknown " + key + " unit '" + value +
                                         "' (expected " + units::accepted(k->dimension) + ")");
@@ -318,13 +184,10 @@ std::vector<std::string> exportRecordCsv(const RecordData& record, const std::st
     const std::filesystem::path d(dir);
     const UnitMap u(units);
     std::vector<std::string> written;
-    writeSteps(record, d, written, u);
-    writeDofs(record, d, written, u);
-    writeElements(record, d, written, u);
-    writeActuators(record, d, written, u);
-    writeSites(record, d, written, u);
+    for (const RecordTable& table : recordTables(record))
+        writeTable(record, table, d, written, u);
     if (record.layout.updating)
-        writeUpdating(record, d, written, u);
+        writeUpdateEvents(record, d, written, u);
     writeLogs(record, d, written, u);
     return written;
 }

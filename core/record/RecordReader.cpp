@@ -69,10 +69,11 @@ struct RecordReader::Impl {
     Column tracking, requested; // schema 2
     Column siteRoundTrip;       // /sites, when the test had experimental elements
     Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
-    Column eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal, noteTime, noteStep, noteText;
+    Column eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal, noteTime,
+        noteStep, noteText;
     Column actCmd, actMeasured, actTicks, actFlags; // /elements/actuator, when present
     bool actuator = false;
-    bool v2 = false; // schema 2 datasets present
+    bool v2 = false;                        // schema 2 datasets present
     std::vector<std::string> decisionCodes; // /updating/events/decision "codes" (if present)
 
     void open();
@@ -84,6 +85,8 @@ struct RecordReader::Impl {
     void readNewEvents();
     void readNewNotes();
     std::vector<Column*> logColumns();
+    /// SWMR: re-read every dataset's extent from the file (H5Drefresh).
+    void refreshDatasets();
 };
 
 void RecordReader::Impl::open() {
@@ -128,6 +131,17 @@ std::vector<Column*> RecordReader::Impl::stepColumns() {
     if (!data.layout.sites.empty())
         c.push_back(&siteRoundTrip);
     return c;
+}
+
+void RecordReader::Impl::refreshDatasets() {
+    if (!swmr)
+        return;
+    auto columns = stepColumns();
+    for (Column* c : logColumns())
+        columns.push_back(c);
+    for (Column* c : columns)
+        h5::check(H5Drefresh(c->dset.get()), path,
+                  "damaged or truncated record (cannot refresh " + c->name + ")");
 }
 
 std::vector<Column*> RecordReader::Impl::logColumns() {
@@ -208,8 +222,8 @@ void RecordReader::Impl::readMetadata() {
     a = column("/dofs/a", nDof);
     cmd = column("/elements/commanded", nElem);
     if (H5Lexists(root, "sites", H5P_DEFAULT) > 0) {
-        const h5::Id g = h5::check(H5Gopen2(root, "sites", H5P_DEFAULT), w,
-                                   "damaged record (no group /sites)");
+        const h5::Id g =
+            h5::check(H5Gopen2(root, "sites", H5P_DEFAULT), w, "damaged record (no group /sites)");
         layout.sites = h5::readStringsAttr(g.get(), "names", w);
         siteRoundTrip = column("/sites/round_trip", int(layout.sites.size()));
     }
@@ -460,6 +474,9 @@ RecordReader::RecordReader(const std::string& path) : m_d(std::make_unique<Impl>
     const h5::QuietErrors quiet;
     m_d->open();
     m_d->readMetadata();
+    // HDF5 shares a file already open in this process (an earlier reader of a record being
+    // written): its datasets' cached extents are that reader's, so refresh them first.
+    m_d->refreshDatasets();
     m_d->readNewRows();
     m_d->readNewAlarms();
     m_d->readNewEvents();
@@ -480,14 +497,7 @@ bool RecordReader::swmr() const {
 
 int RecordReader::refresh() {
     const h5::QuietErrors quiet;
-    if (m_d->swmr) {
-        auto columns = m_d->stepColumns();
-        for (Column* c : m_d->logColumns())
-            columns.push_back(c);
-        for (Column* c : columns)
-            h5::check(H5Drefresh(c->dset.get()), m_d->path,
-                      "damaged or truncated record (cannot refresh " + c->name + ")");
-    }
+    m_d->refreshDatasets();
     const int added = m_d->readNewRows();
     m_d->readNewAlarms();
     m_d->readNewEvents();

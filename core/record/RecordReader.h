@@ -5,7 +5,9 @@
 // The file is opened in SWMR read mode when its format allows, so a record that a running
 // test (another process) is still writing can be read; refresh() then picks up the rows
 // flushed since. The row count N is the smallest row count over the per-step datasets, so a
-// read racing the writer's flush never returns half a row.
+// read racing the writer's flush never returns half a row. A second reader of a file that an
+// earlier reader in the same process still holds open reads what is on disk when it opens
+// (HDF5 shares the open file; the extents are refreshed first), like the first after refresh().
 //
 // Errors (RecordError, the message starts with the path), never a crash:
 //   "FILE: cannot be opened (no such file)"

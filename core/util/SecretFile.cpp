@@ -1,6 +1,7 @@
 #include "core/util/SecretFile.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sys/stat.h>
 
@@ -34,6 +35,13 @@ std::optional<std::string> readSecretFile(const std::string& path, std::string& 
         return std::nullopt;
     }
     return secret;
+}
+
+std::optional<std::string> linkToken(const std::string& tokenFile, std::string& error) {
+    if (!tokenFile.empty())
+        return readSecretFile(tokenFile, error);
+    const char* env = std::getenv("HSMU_CONTROLLER_TOKEN");
+    return std::string(env ? env : "");
 }
 
 } // namespace hsmu

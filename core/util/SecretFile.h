@@ -14,4 +14,9 @@ namespace hsmu {
 /// The secret of path, or nullopt with a sentence naming path in error.
 std::optional<std::string> readSecretFile(const std::string& path, std::string& error);
 
+/// A link's token as every program takes it (docs/security.md): the secret of tokenFile when
+/// one is named, else the environment variable HSMU_CONTROLLER_TOKEN, else "" (none). nullopt
+/// with readSecretFile's sentence in error when the named file is refused.
+std::optional<std::string> linkToken(const std::string& tokenFile, std::string& error);
+
 } // namespace hsmu

@@ -2,12 +2,8 @@
 
 #include "comms/link/ControlFactory.h"
 #include "core/config/TestFactory.h"
-#include "core/output/RunStatistics.h"
-#include "core/output/RunSummary.h"
-#include "core/output/StepCsvWriter.h"
-#include "core/record/RecordWriter.h"
 #include "core/experiment/HybridTest.h"
-#include "core/session/TestSession.h"
+#include "core/session/HeadlessRun.h"
 #include "gui/PresetLibrary.h"
 #include "gui/cli/CliPlots.h"
 #include "gui/cli/ConsoleStreams.h"
@@ -97,42 +93,30 @@ int RunCommand::exec(const QStringList& arguments) {
     }
     if (!QDir().mkpath(options.outDir))
         return fail(tr("%1: cannot create the output directory").arg(options.outDir));
-    const QDir dir(options.outDir);
-
-    const RunLayout layout = RunLayout::of(*test);
-    std::unique_ptr<StepCsvWriter> csv;
-    const std::size_t csvColumns = StepCsvWriter::columnCount(layout);
-    if (options.csv == QLatin1String("none")) {
-        // steps.csv not wanted: record.h5 holds every column
-    } else if (csvColumns > StepCsvWriter::kMaxColumns && options.csv != QLatin1String("all")) {
+    HeadlessOptions headless;
+    headless.outDir = options.outDir.toStdString();
+    headless.csv = options.csv == QLatin1String("none")  ? HeadlessOptions::Csv::None
+                   : options.csv == QLatin1String("all") ? HeadlessOptions::Csv::All
+                                                         : HeadlessOptions::Csv::Auto;
+    headless.reconnect.attempts = options.reconnect;
+    headless.deflate = options.deflate;
+    // Folder, steps.csv, the HDF5 record (docs/recording.md, flushed at least twice a second),
+    // statistics and summary.json: core/session/HeadlessRun, as hsmu.run in Python.
+    std::unique_ptr<HeadlessRun> headlessRun;
+    try {
+        headlessRun = std::make_unique<HeadlessRun>(cfg, std::move(test), headless);
+    } catch (const std::exception& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    if (const std::size_t columns = headlessRun->csvSkippedColumns())
         err() << tr("hsmu run: steps.csv not written (%1 columns); record.h5 holds every "
                     "column (hsmu export writes CSV from it)")
-                     .arg(csvColumns)
+                     .arg(columns)
               << Qt::endl;
-    } else {
-        try {
-            csv = std::make_unique<StepCsvWriter>(
-                dir.filePath(QStringLiteral("steps.csv")).toStdString(), layout);
-        } catch (const std::exception& e) {
-            return fail(QString::fromStdString(e.what()));
-        }
-    }
-    // Every run writes its HDF5 record (docs/recording.md), flushed at least twice a second;
-    // stepping, record and the --reconnect policy are the session's (core/session).
-    SessionOptions sessionOptions;
-    sessionOptions.reconnect.attempts = options.reconnect;
-    sessionOptions.recordPath = dir.filePath(QStringLiteral("record.h5")).toStdString();
-    sessionOptions.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
-    sessionOptions.recordStart.deflate = options.deflate;
-    TestSession session(std::move(test), sessionOptions);
+    TestSession& session = headlessRun->session();
     HybridTest* const run = &session.test();
-    if (!session.openRecord())
-        return fail(QString::fromStdString(session.lastError()));
-    RunStatistics stats(layout);
+    const RunLayout& layout = headlessRun->layout();
     RecordCollector records;
-    if (csv)
-        session.addObserver(csv.get());
-    session.addObserver(&stats);
     if (options.plots)
         session.addObserver(&records);
     session.onReconnect = [run](const TestSession::Reconnect& r) {
@@ -155,20 +139,14 @@ int RunCommand::exec(const QStringList& arguments) {
     // SIGINT / SIGTERM from here on hold every site out of band (even mid-step); the
     // session never resumes an operator hold.
     SignalHold signalHold(*run);
-    if (!session.prepare())
+    if (!headlessRun->prepare())
         return fail(
-            tr("the test cannot start: %1").arg(QString::fromStdString(session.lastError())));
+            tr("the test cannot start: %1").arg(QString::fromStdString(headlessRun->lastError())));
 
-    QElapsedTimer wall;
-    wall.start();
     Progress progress(*run);
     session.addObserver(&progress);
-    const TestSession::Status result = session.runToEnd();
+    const TestSession::Status result = headlessRun->runToEnd();
     session.removeObserver(&progress);
-    RunInfo info;
-    info.configName = cfg.name;
-    info.configFile = cfg.sourcePath;
-    info.wallTimeS = wall.nsecsElapsed() * 1e-9;
 
     int code = result == TestSession::Status::Finished ? 0 : 1;
     if (result == TestSession::Status::Held) {
@@ -183,27 +161,23 @@ int RunCommand::exec(const QStringList& arguments) {
                      .arg(QString::fromLatin1(testStateName(run->state())))
               << Qt::endl;
     }
-    if (csv)
-        session.removeObserver(csv.get());
-    if (!session.finish())
-        code = fail(QString::fromStdString(session.lastError()));
-    if (csv && !csv->finish())
-        code = fail(tr("%1: write failed").arg(QString::fromStdString(csv->path())));
-    try {
-        writeSummaryJson(dir.filePath(QStringLiteral("summary.json")).toStdString(), *run, stats,
-                         info);
-    } catch (const std::exception& e) {
-        code = fail(QString::fromStdString(e.what()));
-    }
+    const HeadlessRun::Failures failed = headlessRun->finish();
+    if (!failed.record.empty())
+        code = fail(QString::fromStdString(failed.record));
+    if (!failed.stepsCsv.empty())
+        code = fail(tr("%1: write failed").arg(QString::fromStdString(failed.stepsCsv)));
+    if (!failed.summary.empty())
+        code = fail(QString::fromStdString(failed.summary));
     if (options.plots) {
         if (!CliPlots::installed().run)
             code = fail(tr("--plots: this program cannot draw (run it through hsmu)"));
         else
-            for (const QString& f :
-                 CliPlots::installed().run(dir.path(), layout, records.records(), cfg))
+            for (const QString& f : CliPlots::installed().run(QDir(options.outDir).path(), layout,
+                                                              records.records(), cfg))
                 code = fail(tr("%1: the plot could not be written").arg(f));
     }
-    RunReport::print(ConsoleStreams::out(), *run, stats, info, dir.path());
+    RunReport::print(ConsoleStreams::out(), *run, headlessRun->statistics(), headlessRun->info(),
+                     QDir(options.outDir).path());
     return code;
 }
 

@@ -83,14 +83,10 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
     if (p.isSet(tokenOpt))
         return tr("--token is not accepted: arguments show in ps; put the token in a file "
                   "(--token-file FILE) or in the environment variable HSMU_CONTROLLER_TOKEN");
-    if (p.isSet(tokenFileOpt)) {
-        const auto secret = readSecretFile(p.value(tokenFileOpt).toStdString(), error);
-        if (!secret)
-            return tr("--token-file: %1").arg(QString::fromStdString(error));
-        options.token = QString::fromStdString(*secret);
-    } else {
-        options.token = qEnvironmentVariable("HSMU_CONTROLLER_TOKEN");
-    }
+    const auto token = linkToken(p.value(tokenFileOpt).toStdString(), error);
+    if (!token)
+        return tr("--token-file: %1").arg(QString::fromStdString(error));
+    options.token = QString::fromStdString(*token);
     bool ok = false;
     options.reconnect = p.value(reconnectOpt).toInt(&ok);
     if (!ok || options.reconnect < 0)
