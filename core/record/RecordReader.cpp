@@ -87,6 +87,9 @@ struct RecordReader::Impl {
     std::vector<Column*> logColumns();
     /// SWMR: re-read every dataset's extent from the file (H5Drefresh).
     void refreshDatasets();
+    /// Walk every dataset's chunk index (no chunk is read): the file's metadata a read
+    /// traverses; a chunk past the end of the file is damage.
+    void walkChunkIndexes();
 };
 
 void RecordReader::Impl::open() {
@@ -449,11 +452,37 @@ void RecordReader::Impl::readNewNotes() {
         data.notes.push_back({t[i], s[i], text[i]});
 }
 
+void RecordReader::Impl::walkChunkIndexes() {
+    hsize_t fileSize = 0;
+    if (H5Fget_filesize(file.get(), &fileSize) < 0)
+        throw RecordError(path + ": damaged record (its size cannot be read)");
+    std::vector<Column*> all = stepColumns();
+    for (Column* c : logColumns())
+        all.push_back(c);
+    for (Column* c : all) {
+        const std::string what = "damaged or truncated record (the chunk index of " + c->name;
+        hsize_t chunks = 0;
+        const h5::Id space(H5Dget_space(c->dset.get()));
+        if (!space.valid() || H5Dget_num_chunks(c->dset.get(), space.get(), &chunks) < 0)
+            throw RecordError(path + ": " + what + " cannot be read)");
+        for (hsize_t i = 0; i < chunks; ++i) {
+            haddr_t address = HADDR_UNDEF;
+            hsize_t size = 0;
+            if (H5Dget_chunk_info(c->dset.get(), space.get(), i, nullptr, nullptr, &address, &size) < 0)
+                throw RecordError(path + ": " + what + " cannot be read)");
+            if (address == HADDR_UNDEF || address + size > fileSize)
+                throw RecordError(path + ": " + what + " points past the end of the file)");
+        }
+    }
+}
+
 RecordReader::RecordReader(const std::string& path) : m_d(std::make_unique<Impl>()) {
     m_d->path = path;
     {
-        // First a complete read in a child process with a deadline: a damaged file must fail
-        // within kRecordOpenDeadline, never hang this process inside HDF5.
+        // First a walk of the file's metadata in a child process with a deadline (every
+        // object, attribute and chunk index; the logs' few rows read): a damaged file must fail
+        // within kRecordOpenDeadline, never hang this process inside HDF5. The chunks' data is
+        // then read here, each under its Fletcher32 checksum (a damaged chunk fails, no hang).
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec))
             throw RecordError(path + ": cannot be opened (no such file)");
@@ -463,7 +492,7 @@ RecordReader::RecordReader(const std::string& path) : m_d(std::make_unique<Impl>
             const h5::QuietErrors quiet;
             d.open();
             d.readMetadata();
-            d.readNewRows();
+            d.walkChunkIndexes();
             d.readNewAlarms();
             d.readNewEvents();
             d.readNewNotes();
