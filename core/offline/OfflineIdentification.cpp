@@ -13,6 +13,7 @@
 #include "core/updating/NelderMeadIdentifier.h"
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -75,8 +76,10 @@ double nrmseOf(const std::string& law, const std::map<std::string, double>& valu
 
 /// The calibration over the whole history, and the verdict.
 void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
-                    OfflineIdentificationResult& r) {
+                    OfflineIdentificationResult& r,
+                    const std::function<void(int done, int total)>& progress) {
     CalibrationRequest request;
+    request.progress = progress;
     request.law = s.model.law;
     request.uRef = s.updating.modelURef;
     request.fRef = s.updating.modelFRef;
@@ -115,6 +118,21 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     OfflinePartial partial; // where a cancel finds the work (its estimate set by the pass)
     partial.samples = history.size();
     partial.method = "calibration"; // until the online pass names its method
+    const auto notify = [&](const char* phase, int minimized, int minimizations) {
+        if (!progress)
+            return;
+        OfflineProgress p;
+        p.samplesDone = partial.samplesDone;
+        p.samples = history.size();
+        p.refits = partial.refits;
+        p.rejected = partial.rejected;
+        p.phase = phase;
+        p.minimizationsDone = minimized;
+        p.minimizations = minimizations;
+        p.elapsedSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        progress(p);
+    };
     const auto tell = [&](std::size_t done, int refits, int rejected, const char* phase) {
         partial.samplesDone = done;
         partial.refits = refits;
@@ -122,21 +140,13 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
         partial.phase = phase;
         if (settings.cancel && settings.cancel->load())
             throw OfflineCancelled(partial);
-        if (!progress)
-            return;
-        OfflineProgress p;
-        p.samplesDone = done;
-        p.samples = history.size();
-        p.refits = refits;
-        p.rejected = rejected;
-        p.phase = phase;
-        p.elapsedSeconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        progress(p);
+        notify(phase, 0, 0);
     };
     const auto calibrateWholeOrCancel = [&](OfflineIdentificationResult& r) {
         try {
-            calibrateWhole(history, settings, r);
+            calibrateWhole(history, settings, r, [&](int done, int total) {
+                notify("calibration", done, total); // the calibration checks the cancel itself
+            });
         } catch (const OfflineCancelled&) {
             throw OfflineCancelled(partial); // with what the pass before it reached
         }

@@ -83,6 +83,9 @@ struct OfflineProgress {
     int rejected = 0;             ///< rejected identification steps so far
     double elapsedSeconds = 0.0;  ///< wall time since the start [s]
     const char* phase = "online"; ///< "online", "final fit" or "calibration"
+    /// The calibration's minimizations (its starts, then its polishes) done and in all, when
+    /// the call comes from inside the calibration (else 0 and 0).
+    int minimizationsDone = 0, minimizations = 0;
 };
 using OfflineProgressCallback = std::function<void(const OfflineProgress&)>;
 
@@ -114,7 +117,8 @@ private:
 };
 
 /// progress (may be empty) is called on the calling thread every 64 samples of the online
-/// pass and before the final fit and the calibration.
+/// pass, before the final fit and the calibration, and after each of the calibration's
+/// minimizations (a pinching calibration runs two calibrations: the plain law's, then its own).
 OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
                                             const IdentificationSettings& settings,
                                             const OfflineProgressCallback& progress = {});

@@ -234,6 +234,55 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
     out << ReplayCommand::tr("  outputs: %1").arg(QDir::toNativeSeparators(dir)) << Qt::endl;
 }
 
+/// Progress on stderr once the work has run for 3 s, then every 5 s, and at once when a phase
+/// starts after that (docs/cli.md).
+class ProgressPrinter {
+public:
+    void print(const OfflineProgress& p) {
+        if (p.elapsedSeconds < m_lastElapsed) // --method all: the next method's own clock
+            m_nextReport = std::min(m_nextReport, 3.0);
+        m_lastElapsed = p.elapsedSeconds;
+        const bool newPhase = m_phase != p.phase;
+        m_phase = p.phase;
+        if (p.elapsedSeconds < m_nextReport && !(newPhase && p.elapsedSeconds >= 3.0))
+            return;
+        m_nextReport = p.elapsedSeconds + 5.0;
+        const QString elapsed = QString::number(p.elapsedSeconds, 'f', 0);
+        QTextStream& err = ConsoleStreams::err();
+        if (m_phase == "online" && p.samplesDone > 0) {
+            const double left =
+                p.elapsedSeconds * double(p.samples - p.samplesDone) / double(p.samplesDone);
+            err << ReplayCommand::tr("hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s "
+                                     "elapsed, about %6 s left")
+                       .arg(p.samplesDone)
+                       .arg(p.samples)
+                       .arg(p.refits)
+                       .arg(p.rejected)
+                       .arg(elapsed)
+                       .arg(QString::number(left, 'f', 0))
+                << Qt::endl;
+        } else if (m_phase == "calibration" && p.minimizations > 0) {
+            err << ReplayCommand::tr("hsmu replay: calibrating over the whole history "
+                                     "(minimization %1 of %2, %3 s elapsed)")
+                       .arg(p.minimizationsDone)
+                       .arg(p.minimizations)
+                       .arg(elapsed)
+                << Qt::endl;
+        } else {
+            err << ReplayCommand::tr("hsmu replay: %1 (%2 s elapsed)")
+                       .arg(m_phase == "calibration"
+                                ? ReplayCommand::tr("calibrating over the whole history")
+                                : ReplayCommand::tr("final fit over the whole history"))
+                       .arg(elapsed)
+                << Qt::endl;
+        }
+    }
+
+private:
+    double m_nextReport = 3.0, m_lastElapsed = 0.0;
+    std::string m_phase;
+};
+
 /// The identification (or, with --method all, the comparison), its files and its table.
 int identifyAndReport(const ReplayOptions& o, const SpecimenHistory& history,
                       const IdentificationSettings& settings,
@@ -329,37 +378,9 @@ int ReplayCommand::exec(const QStringList& arguments) {
     if (!QDir().mkpath(o.outDir))
         return fail(tr("%1: cannot create the output directory").arg(o.outDir));
     try {
-        // Progress on stderr once the work has run for a few seconds, then every 5 s.
-        double nextReport = 3.0, lastElapsed = 0.0;
-        const auto progress = [&nextReport, &lastElapsed](const OfflineProgress& p) {
-            if (p.elapsedSeconds < lastElapsed) // --method all: the next method's own clock
-                nextReport = std::min(nextReport, 3.0);
-            lastElapsed = p.elapsedSeconds;
-            if (p.elapsedSeconds < nextReport)
-                return;
-            nextReport = p.elapsedSeconds + 5.0;
-            QTextStream& err = ConsoleStreams::err();
-            if (std::string_view(p.phase) == "online" && p.samplesDone > 0) {
-                const double left = p.elapsedSeconds * double(p.samples - p.samplesDone) /
-                                    double(p.samplesDone);
-                err << tr("hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, "
-                          "about %6 s left")
-                           .arg(p.samplesDone)
-                           .arg(p.samples)
-                           .arg(p.refits)
-                           .arg(p.rejected)
-                           .arg(QString::number(p.elapsedSeconds, 'f', 0))
-                           .arg(QString::number(left, 'f', 0))
-                    << Qt::endl;
-            } else {
-                err << tr("hsmu replay: %1 (%2 s elapsed)")
-                           .arg(std::string_view(p.phase) == "calibration"
-                                    ? tr("calibrating over the whole history")
-                                    : tr("final fit over the whole history"))
-                           .arg(QString::number(p.elapsedSeconds, 'f', 0))
-                    << Qt::endl;
-                nextReport = p.elapsedSeconds; // the next phase is told at once
-            }
+        ProgressPrinter printer;
+        const OfflineProgressCallback progress = [&printer](const OfflineProgress& p) {
+            printer.print(p);
         };
         // SIGINT / SIGTERM cancel the work at its next check; a partial summary follows.
         std::atomic<bool> cancel{false};
