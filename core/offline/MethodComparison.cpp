@@ -81,7 +81,7 @@ std::vector<std::string> onBoundsOf(const SpecimenHistory& h, const Identificati
 std::string ratioText(double x) {
     std::ostringstream m;
     m.setf(std::ios::fixed);
-    m.precision(2);
+    m.precision(3);
     m << x;
     return m.str();
 }

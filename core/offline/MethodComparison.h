@@ -19,7 +19,7 @@
 //   verdict       "recommended" for the cheapest method (CPU) whose NRMSE is within 5 % of
 //                 the best (or within 0.005 of it: 0.5 % of the RMS force, where ratios of
 //                 near-zero NRMSEs mean nothing); else "best fit", "within 5 % of the best"
-//                 (the same test) or "X.XX x the best";
+//                 (the same test) or "X.XXX x the best";
 //                 "; worse than its initial model" and "; N rejected samples" appended when
 //                 so; "failed: why" for a method that cannot run (e.g. the UKF on a bilinear
 //                 model) or threw
