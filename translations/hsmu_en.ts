@@ -1089,10 +1089,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--columns applies to --import only</translation>
     </message>
     <message>
-        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
-        <translation>ukf, nelder-mead or calibration (only the whole-history fit).</translation>
-    </message>
-    <message>
         <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
         <translation>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</translation>
     </message>
@@ -1151,6 +1147,42 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>final fit over the whole history</source>
         <translation>final fit over the whole history</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead, calibration (only the whole-history fit) or all (the three, compared in one table).</source>
+        <translation>ukf, nelder-mead, calibration (only the whole-history fit) or all (the three, compared in one table).</translation>
+    </message>
+    <message>
+        <source>hsmu replay: calibrating over the whole history (minimization %1 of %2, %3 s elapsed)</source>
+        <translation>hsmu replay: calibrating over the whole history (minimization %1 of %2, %3 s elapsed)</translation>
+    </message>
+    <message>
+        <source>%1 identification of %2 interrupted (%3) during the %4: %5 / %6 samples done, %7 refits, %8 rejected</source>
+        <translation>%1 identification of %2 interrupted (%3) during the %4: %5 / %6 samples done, %7 refits, %8 rejected</translation>
+    </message>
+    <message>
+        <source>online pass</source>
+        <translation>online pass</translation>
+    </message>
+    <message>
+        <source>calibration</source>
+        <translation>calibration</translation>
+    </message>
+    <message>
+        <source>final fit</source>
+        <translation>final fit</translation>
+    </message>
+    <message>
+        <source>  no estimate yet</source>
+        <translation>  no estimate yet</translation>
+    </message>
+    <message>
+        <source>  parameters after sample %1:</source>
+        <translation>  parameters after sample %1:</translation>
+    </message>
+    <message>
+        <source>  partial summary: %1</source>
+        <translation>  partial summary: %1</translation>
     </message>
 </context>
 <context>
@@ -3261,6 +3293,53 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>hsmu rths: %1</source>
         <translation>hsmu rths: %1</translation>
+    </message>
+</context>
+<context>
+    <name>MethodComparisonTable</name>
+    <message>
+        <source>Method comparison on %1: %2 samples</source>
+        <translation>Method comparison on %1: %2 samples</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>method</translation>
+    </message>
+    <message>
+        <source>NRMSE [%]</source>
+        <translation>NRMSE [%]</translation>
+    </message>
+    <message>
+        <source>CPU [s]</source>
+        <translation>CPU [s]</translation>
+    </message>
+    <message>
+        <source>on bounds</source>
+        <translation>on bounds</translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation>rejected</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>verdict</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
+        <translation>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  verdict: %1</translation>
+    </message>
+    <message>
+        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
+        <translation>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</translation>
     </message>
 </context>
 </TS>

@@ -1089,10 +1089,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--columns solo se aplica a --import</translation>
     </message>
     <message>
-        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
-        <translation>ukf, nelder-mead o calibration (solo el ajuste de toda la historia).</translation>
-    </message>
-    <message>
         <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
         <translation>  calibración sobre toda la historia (%1 puntos de partida, %2 s): NRMSE %3 %</translation>
     </message>
@@ -1151,6 +1147,42 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>final fit over the whole history</source>
         <translation>ajuste final sobre toda la historia</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead, calibration (only the whole-history fit) or all (the three, compared in one table).</source>
+        <translation>ukf, nelder-mead, calibration (solo el ajuste de toda la historia) o all (los tres, comparados en una tabla).</translation>
+    </message>
+    <message>
+        <source>hsmu replay: calibrating over the whole history (minimization %1 of %2, %3 s elapsed)</source>
+        <translation>hsmu replay: calibrando sobre toda la historia (minimización %1 de %2, %3 s transcurridos)</translation>
+    </message>
+    <message>
+        <source>%1 identification of %2 interrupted (%3) during the %4: %5 / %6 samples done, %7 refits, %8 rejected</source>
+        <translation>identificación %1 de %2 interrumpida (%3) durante %4: %5 / %6 muestras hechas, %7 reajustes, %8 rechazadas</translation>
+    </message>
+    <message>
+        <source>online pass</source>
+        <translation>la pasada en línea</translation>
+    </message>
+    <message>
+        <source>calibration</source>
+        <translation>la calibración</translation>
+    </message>
+    <message>
+        <source>final fit</source>
+        <translation>el ajuste final</translation>
+    </message>
+    <message>
+        <source>  no estimate yet</source>
+        <translation>  aún sin estimación</translation>
+    </message>
+    <message>
+        <source>  parameters after sample %1:</source>
+        <translation>  parámetros tras la muestra %1:</translation>
+    </message>
+    <message>
+        <source>  partial summary: %1</source>
+        <translation>  resumen parcial: %1</translation>
     </message>
 </context>
 <context>
@@ -3261,6 +3293,53 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>hsmu rths: %1</source>
         <translation>hsmu rths: %1</translation>
+    </message>
+</context>
+<context>
+    <name>MethodComparisonTable</name>
+    <message>
+        <source>Method comparison on %1: %2 samples</source>
+        <translation>Comparación de métodos en %1: %2 muestras</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>método</translation>
+    </message>
+    <message>
+        <source>NRMSE [%]</source>
+        <translation>NRMSE [%]</translation>
+    </message>
+    <message>
+        <source>CPU [s]</source>
+        <translation>CPU [s]</translation>
+    </message>
+    <message>
+        <source>on bounds</source>
+        <translation>en los límites</translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation>rechazadas</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>veredicto</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
+        <translation>  recomendado: %1 (el más barato dentro del 5 % del mejor NRMSE)</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  veredicto: %1</translation>
+    </message>
+    <message>
+        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
+        <translation>  salidas: %1 (comparison.csv, summary.json; los archivos de cada método en calibration/, ukf/, nelder-mead/)</translation>
     </message>
 </context>
 </TS>

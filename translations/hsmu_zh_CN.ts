@@ -1089,10 +1089,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--columns 仅适用于 --import</translation>
     </message>
     <message>
-        <source>ukf, nelder-mead or calibration (only the whole-history fit).</source>
-        <translation>ukf、nelder-mead 或 calibration（仅对整个历程拟合）。</translation>
-    </message>
-    <message>
         <source>  calibration over the whole history (%1 starts, %2 s): NRMSE %3 %</source>
         <translation>  整个历程上的标定（%1 个初始点，%2 s）：NRMSE %3 %</translation>
     </message>
@@ -1151,6 +1147,42 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>final fit over the whole history</source>
         <translation>对整个历史进行最终拟合</translation>
+    </message>
+    <message>
+        <source>ukf, nelder-mead, calibration (only the whole-history fit) or all (the three, compared in one table).</source>
+        <translation>ukf、nelder-mead、calibration（仅对整个历程拟合）或 all（三者，在一张表中比较）。</translation>
+    </message>
+    <message>
+        <source>hsmu replay: calibrating over the whole history (minimization %1 of %2, %3 s elapsed)</source>
+        <translation>hsmu replay：正在对整个历程进行标定（第 %1 次最小化，共 %2 次，已用 %3 s）</translation>
+    </message>
+    <message>
+        <source>%1 identification of %2 interrupted (%3) during the %4: %5 / %6 samples done, %7 refits, %8 rejected</source>
+        <translation>%2 的 %1 识别在%4期间被中断（%3）：已完成 %5 / %6 个样本，%7 次重新拟合，%8 次拒绝</translation>
+    </message>
+    <message>
+        <source>online pass</source>
+        <translation>在线处理</translation>
+    </message>
+    <message>
+        <source>calibration</source>
+        <translation>标定</translation>
+    </message>
+    <message>
+        <source>final fit</source>
+        <translation>最终拟合</translation>
+    </message>
+    <message>
+        <source>  no estimate yet</source>
+        <translation>  尚无估计</translation>
+    </message>
+    <message>
+        <source>  parameters after sample %1:</source>
+        <translation>  第 %1 个样本后的参数：</translation>
+    </message>
+    <message>
+        <source>  partial summary: %1</source>
+        <translation>  部分摘要：%1</translation>
     </message>
 </context>
 <context>
@@ -3258,6 +3290,53 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>hsmu rths: %1</source>
         <translation>hsmu rths：%1</translation>
+    </message>
+</context>
+<context>
+    <name>MethodComparisonTable</name>
+    <message>
+        <source>Method comparison on %1: %2 samples</source>
+        <translation>方法比较：%1，%2 个样本</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>NRMSE [%]</source>
+        <translation>NRMSE [%]</translation>
+    </message>
+    <message>
+        <source>CPU [s]</source>
+        <translation>CPU [s]</translation>
+    </message>
+    <message>
+        <source>on bounds</source>
+        <translation>位于边界</translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation>拒绝</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
+        <translation>  推荐：%1（NRMSE 在最佳值 5 % 以内的最省时方法）</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  结论：%1</translation>
+    </message>
+    <message>
+        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
+        <translation>  输出：%1（comparison.csv、summary.json；各方法自己的文件在 calibration/、ukf/、nelder-mead/ 中）</translation>
     </message>
 </context>
 </TS>

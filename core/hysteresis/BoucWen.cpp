@@ -125,6 +125,36 @@ bool integrateSplit(const BoucWenParameters& p, BoucWenState& state, double dx, 
            integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps);
 }
 
+// The unloading branch's bound (issue 29): on an unloading increment (dx z0 < 0) with
+// gamma > beta, Eq. 2 moves z towards 0 only while |z|^n (gamma - beta) nu(e) < A(e), i.e.
+// |z| < z1(e) = (A(e) / (nu(e) (gamma - beta)))^(1/n). From beyond z1(e0) the continuous law
+// runs away as the deformation reverses (|z| grows, e falls, up to a blow-up in finite
+// deformation); where that leaves the iterates' bound no step exists, for Newton or the
+// bracketed solve. Such a state is never reached by the law's own trajectory with beta > 0
+// (loading stops at the ultimate z(e) < z1(e)); it is reached when the parameters change
+// under a state (a UKF sigma point with a larger deltaNu or gamma - beta than the state was
+// integrated with) or with beta < 0 (where the ultimate z exceeds z1). z1 itself is an
+// equilibrium of the unloading branch (dz/dx = 0 there, z would stay), so the state is
+// returned to zr(e0) = (A(e0) / (2 nu(e0) (gamma - beta)))^(1/n) = 2^(-1/n) z1(e0), where the
+// unloading rate dz/dx is half the elastic one A / eta; e0 is kept (the return is not a
+// motion of x and dissipates nothing). False when the state is not beyond z1 or zr is
+// undefined (A(e0) or nu(e0) not positive).
+bool returnedToUnloadingBound(const BoucWenParameters& p, const BoucWenState& from, double dx,
+                              BoucWenState& returned) {
+    const double psi = p.gamma - p.beta; // gamma + beta sgn(dx z0) on unloading
+    if (!(dx * from.z < 0.0) || !(psi > 0.0))
+        return false;
+    const Degradation d = degradationAt(p, from.e);
+    if (!(d.a > 0.0) || !(d.nu > 0.0))
+        return false;
+    const double z1 = std::pow(d.a / (d.nu * psi), 1.0 / p.n);
+    const double zr = std::pow(0.5 * d.a / (d.nu * psi), 1.0 / p.n);
+    if (!std::isfinite(zr) || !(std::abs(from.z) > z1))
+        return false;
+    returned = {std::copysign(zr, from.z), from.e};
+    return true;
+}
+
 // integrateState() for parameters known to be admissible.
 BoucWenIncrement integrateAdmissible(const BoucWenParameters& p, const BoucWenState& from,
                                      double dx, int maxSubdivisions) {
@@ -145,10 +175,21 @@ BoucWenIncrement integrateAdmissible(const BoucWenParameters& p, const BoucWenSt
     StepLimits limits(p, from);
     BoucWenState end = from;
     int subSteps = 0;
-    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, subSteps)) {
-        return {LawStatus::NoConvergence, from, 0.0, 0};
+    if (integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, subSteps)) {
+        return {LawStatus::Ok, end, 0.0, subSteps};
     }
-    return {LawStatus::Ok, end, 0.0, subSteps};
+    // Only where the plain integration failed (so every step that succeeded is unchanged):
+    // an unloading from beyond the unloading branch's bound starts from that bound.
+    BoucWenState returned;
+    if (returnedToUnloadingBound(p, from, dx, returned)) {
+        StepLimits returnedLimits(p, returned);
+        end = returned;
+        subSteps = 0;
+        if (integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), returnedLimits, subSteps)) {
+            return {LawStatus::Ok, end, 0.0, subSteps};
+        }
+    }
+    return {LawStatus::NoConvergence, from, 0.0, 0};
 }
 
 } // namespace

@@ -27,7 +27,11 @@
 // last level whose Newton solve fails (with n < 1 Newton cycles at the cusp of |z|^n at z = 0)
 // is solved bracketed: the root nearest z0 in the direction of -r(z0), bracketed by doubling
 // steps from z0 within the iterates' bound, then bisected to the Newton tolerance (issue 29;
-// only ever where the law failed before, so a step that succeeded is unchanged). Failure is
+// only ever where the law failed before, so a step that succeeded is unchanged). An unloading
+// increment (dx z0 < 0, gamma > beta) that still fails from beyond the unloading branch's bound
+// z1(e0) = (A / (nu (gamma - beta)))^(1/n), where Eq. 2 itself runs away (a UKF sigma point's
+// parameters under a state, or beta < 0), is integrated from |z| = 2^(-1/n) z1(e0) instead
+// (e0 kept; docs/hysteresis-laws.md; BoucWen.cpp, returnedToUnloadingBound). Failure is
 // reported as LawStatus::NoConvergence and leaves the committed state untouched.
 // Accuracy: first order in the step (about 4e-4 of the peak force with 20000 points per
 // +-8-yield cycle; 2e-2 with 400 points).

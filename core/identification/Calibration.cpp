@@ -216,6 +216,13 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     };
     LevenbergMarquardtSettings globalSettings = spec.global, localSettings = spec.local;
     globalSettings.cancel = localSettings.cancel = spec.cancel;
+    const int minimizations =
+        int(starts.size()) + int(std::min(starts.size(), std::size_t(std::max(spec.polished, 1))));
+    int minimized = 0;
+    const auto tell = [&] {
+        if (spec.progress)
+            spec.progress(++minimized, minimizations);
+    };
     std::vector<Candidate> candidates;
     for (const Eigen::VectorXd& x0 : starts) {
         if (cancelled()) {
@@ -228,6 +235,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
         out.residualEvaluations += r.residualEvaluations;
         if (std::isfinite(r.cost))
             candidates.push_back({r.x, r.cost});
+        tell();
     }
     if (candidates.empty())
         return done("the law could not replay the history from any start");
@@ -258,6 +266,7 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
         out.residualEvaluations += r.residualEvaluations;
         if (r.cost < best.cost)
             best = std::move(r);
+        tell();
     }
     if (cancelled()) {
         out.cancelled = true;

@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 
 #include <atomic>
+#include <functional>
 
 #include <limits>
 #include <map>
@@ -72,6 +73,10 @@ struct CalibrationSpec {
     /// Set by another thread: the calibration stops before its next Levenberg-Marquardt
     /// iteration or start and returns not ok, `cancelled`. May be null.
     const std::atomic<bool>* cancel = nullptr;
+    /// Called on the calling thread after each start of the global phase and each polish,
+    /// with how many of the two phases' minimizations are done and their total (a long
+    /// calibration's progress, `hsmu replay`). May be empty.
+    std::function<void(int done, int total)> progress;
 };
 
 struct CalibrationResult {

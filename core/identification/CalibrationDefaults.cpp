@@ -226,6 +226,7 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
     spec.window = request.window;
     spec.reducedSamples = request.reducedSamples;
     spec.cancel = request.cancel;
+    spec.progress = request.progress;
     spec.polishSamples = request.polishSamples;
     if (request.localIterations > 0)
         spec.local.maxIterations = request.localIterations;

@@ -48,6 +48,7 @@ struct CalibrationRequest {
     std::size_t polishSamples = 0;       ///< CalibrationSpec::polishSamples (0: whole history)
     int localIterations = 0;             ///< the local phase's iteration budget (0: default)
     const std::atomic<bool>* cancel = nullptr; ///< CalibrationSpec::cancel
+    std::function<void(int done, int total)> progress; ///< CalibrationSpec::progress
     std::vector<double> time; ///< the samples' times [s] (CalibrationSpec::time; mrDamper)
 };
 

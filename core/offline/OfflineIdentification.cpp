@@ -13,6 +13,7 @@
 #include "core/updating/NelderMeadIdentifier.h"
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -75,8 +76,10 @@ double nrmseOf(const std::string& law, const std::map<std::string, double>& valu
 
 /// The calibration over the whole history, and the verdict.
 void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
-                    OfflineIdentificationResult& r) {
+                    OfflineIdentificationResult& r,
+                    const std::function<void(int done, int total)>& progress) {
     CalibrationRequest request;
+    request.progress = progress;
     request.law = s.model.law;
     request.uRef = s.updating.modelURef;
     request.fRef = s.updating.modelFRef;
@@ -112,26 +115,47 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     if (const std::string why = history.problem(); !why.empty())
         throw std::invalid_argument(history.source + ": " + why);
     const auto started = std::chrono::steady_clock::now();
-    const auto tell = [&](std::size_t done, int refits, int rejected, const char* phase) {
-        if (settings.cancel && settings.cancel->load())
-            throw OfflineCancelled();
+    OfflinePartial partial; // where a cancel finds the work (its estimate set by the pass)
+    partial.samples = history.size();
+    partial.method = "calibration"; // until the online pass names its method
+    const auto notify = [&](const char* phase, int minimized, int minimizations) {
         if (!progress)
             return;
         OfflineProgress p;
-        p.samplesDone = done;
+        p.samplesDone = partial.samplesDone;
         p.samples = history.size();
-        p.refits = refits;
-        p.rejected = rejected;
+        p.refits = partial.refits;
+        p.rejected = partial.rejected;
         p.phase = phase;
+        p.minimizationsDone = minimized;
+        p.minimizations = minimizations;
         p.elapsedSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         progress(p);
+    };
+    const auto tell = [&](std::size_t done, int refits, int rejected, const char* phase) {
+        partial.samplesDone = done;
+        partial.refits = refits;
+        partial.rejected = rejected;
+        partial.phase = phase;
+        if (settings.cancel && settings.cancel->load())
+            throw OfflineCancelled(partial);
+        notify(phase, 0, 0);
+    };
+    const auto calibrateWholeOrCancel = [&](OfflineIdentificationResult& r) {
+        try {
+            calibrateWhole(history, settings, r, [&](int done, int total) {
+                notify("calibration", done, total); // the calibration checks the cancel itself
+            });
+        } catch (const OfflineCancelled&) {
+            throw OfflineCancelled(partial); // with what the pass before it reached
+        }
     };
     if (!settings.online) {
         OfflineIdentificationResult r;
         r.method = "calibration";
         tell(0, 0, 0, "calibration");
-        calibrateWhole(history, settings, r);
+        calibrateWholeOrCancel(r);
         if (!r.calibration || !r.calibration->ok)
             throw std::invalid_argument("calibration of " + history.source + " failed: " +
                                         (r.messages.empty() ? "" : r.messages.back()));
@@ -177,6 +201,8 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     OfflineIdentificationResult r;
     r.method = id.methodName();
     r.parameterNames = id.layout().names();
+    partial.parameterNames = r.parameterNames;
+    partial.method = r.method;
     for (std::size_t j = 0; j < r.parameterNames.size(); ++j)
         r.initial[r.parameterNames[j]] = id.estimate()[j];
     const Eigen::Index n = history.size(), p = Eigen::Index(r.parameterNames.size());
@@ -207,10 +233,13 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
         const bool refitting = settings.updating.method == "nelderMead";
         if (refitting && k > 0 && r.parameters.row(k) != r.parameters.row(k - 1))
             ++r.refits; // a Nelder-Mead estimate changes only by an accepted fit
-        if ((k + 1) % 64 == 0)
+        if ((k + 1) % 64 == 0) {
+            partial.estimate = rowValues(r.parameterNames, r.parameters, k);
             tell(std::size_t(k) + 1, r.refits, r.estimatorWarnings, "online");
+        }
     }
     r.finalEstimate = rowValues(r.parameterNames, r.parameters, n - 1);
+    partial.estimate = r.finalEstimate;
     r.finalStddev = rowValues(r.parameterNames, r.stddev, n - 1);
     for (const auto& [name, v] : r.finalEstimate)
         all[name] = v;
@@ -252,7 +281,7 @@ OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
     }
     if (settings.calibrate) {
         tell(history.size(), r.refits, r.estimatorWarnings, "calibration");
-        calibrateWhole(history, settings, r);
+        calibrateWholeOrCancel(r);
     }
     return r;
 }

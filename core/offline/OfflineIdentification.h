@@ -83,17 +83,42 @@ struct OfflineProgress {
     int rejected = 0;             ///< rejected identification steps so far
     double elapsedSeconds = 0.0;  ///< wall time since the start [s]
     const char* phase = "online"; ///< "online", "final fit" or "calibration"
+    /// The calibration's minimizations (its starts, then its polishes) done and in all, when
+    /// the call comes from inside the calibration (else 0 and 0).
+    int minimizationsDone = 0, minimizations = 0;
 };
 using OfflineProgressCallback = std::function<void(const OfflineProgress&)>;
 
-/// Thrown by identifyOffline when settings.cancel was set (nothing is returned).
+/// Where an identification was when it was cancelled (`hsmu replay` interrupted: its partial
+/// summary, docs/cli.md).
+struct OfflinePartial {
+    std::string method;                      ///< as OfflineIdentificationResult::method
+    std::string phase = "online";            ///< "online", "final fit" or "calibration"
+    std::size_t samplesDone = 0;             ///< samples identified before the cancel
+    std::size_t samples = 0;                 ///< of the history
+    int refits = 0;                          ///< Nelder-Mead fits accepted so far
+    int rejected = 0;                        ///< rejected identification steps so far
+    std::vector<std::string> parameterNames; ///< the method's parameters (empty: none yet)
+    ParameterValues estimate; ///< after sample samplesDone - 1 (empty before the online pass
+                              ///< reached it, and for a cancelled calibration)
+};
+
+/// Thrown by identifyOffline when settings.cancel was set (nothing is returned but where it
+/// was: partial()). The online pass checks every 64 samples, the calibration between its
+/// iterations.
 class OfflineCancelled : public std::runtime_error {
 public:
-    OfflineCancelled() : std::runtime_error("the identification was cancelled") {}
+    explicit OfflineCancelled(OfflinePartial partial = {})
+        : std::runtime_error("the identification was cancelled"), m_partial(std::move(partial)) {}
+    const OfflinePartial& partial() const { return m_partial; }
+
+private:
+    OfflinePartial m_partial;
 };
 
 /// progress (may be empty) is called on the calling thread every 64 samples of the online
-/// pass and before the final fit and the calibration.
+/// pass, before the final fit and the calibration, and after each of the calibration's
+/// minimizations (a pinching calibration runs two calibrations: the plain law's, then its own).
 OfflineIdentificationResult identifyOffline(const SpecimenHistory& history,
                                             const IdentificationSettings& settings,
                                             const OfflineProgressCallback& progress = {});

@@ -43,6 +43,16 @@ void writeCsv(const std::string& path, const SpecimenHistory& h, const std::stri
 
 } // namespace
 
+void writeJsonFile(const std::string& path, const nlohmann::json& j,
+                   std::vector<std::string>& written) {
+    std::ofstream out(path);
+    out << j.dump(2) << '\n';
+    out.close();
+    if (!out)
+        throw std::runtime_error(path + ": cannot be written");
+    written.push_back(path);
+}
+
 std::string parameterUnit(const std::string& law, const std::string& name,
                           const std::string& deformationUnits, const std::string& forceUnits) {
     if (name == "uRef")
@@ -139,13 +149,36 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
     if (result.calibration && result.calibration->ok)
         j["calibration"] = calibrationJson(*result.calibration);
     j["verdict"] = result.verdict;
-    const std::string path = (d / "summary.json").string();
-    std::ofstream out(path);
-    out << j.dump(2) << '\n';
-    out.close();
-    if (!out)
-        throw std::runtime_error(path + ": cannot be written");
-    written.push_back(path);
+    writeJsonFile((d / "summary.json").string(), j, written);
+    return written;
+}
+
+std::vector<std::string> writeInterruptedReport(const std::string& dir,
+                                                const SpecimenHistory& history,
+                                                const IdentificationSettings& settings,
+                                                const OfflinePartial& partial,
+                                                const std::string& reason) {
+    std::vector<std::string> written;
+    nlohmann::json j;
+    j["source"] = history.source;
+    j["specimen"] = settings.specimen;
+    j["method"] = partial.method;
+    j["samples"] = history.size();
+    j["units"] = {{"deformation", history.deformationUnits}, {"force", history.forceUnits}};
+    j["interrupted"] = reason;
+    j["phase"] = partial.phase;
+    j["samplesDone"] = partial.samplesDone;
+    j["refits"] = partial.refits;
+    j["estimatorWarnings"] = partial.rejected;
+    nlohmann::json units = nlohmann::json::object(), params = nlohmann::json::object();
+    for (const auto& [name, v] : partial.estimate) {
+        units[name] =
+            parameterUnit(settings.model.law, name, history.deformationUnits, history.forceUnits);
+        params[name] = {{"current", v}};
+    }
+    j["parameterUnits"] = units;
+    j["parameters"] = params;
+    writeJsonFile((std::filesystem::path(dir) / "summary.json").string(), j, written);
     return written;
 }
 

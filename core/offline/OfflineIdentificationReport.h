@@ -37,6 +37,11 @@ namespace hsmu {
 /// file and for the Python module's hsmu.calibrate.
 nlohmann::json calibrationJson(const CalibrationResult& c);
 
+/// j written (indented) to path, appended to `written`; std::runtime_error naming the file
+/// when it cannot be written.
+void writeJsonFile(const std::string& path, const nlohmann::json& j,
+                   std::vector<std::string>& written);
+
 /// The unit of a law's parameter as the tables and files state it: uRef in the deformation's
 /// unit, fRef in the force's; "-" for the Bouc-Wen laws' normalized parameters; the bilinear
 /// law's k0 in force / deformation, fy in force, b "-"; the elastic law's k in force /
@@ -50,5 +55,16 @@ std::vector<std::string> writeIdentificationReport(const std::string& dir,
                                                    const IdentificationSettings& settings,
                                                    const OfflineIdentificationResult& result,
                                                    const ParameterValues& online = {});
+
+/// The partial summary of an interrupted identification (`hsmu replay` sent SIGINT /
+/// SIGTERM; docs/cli.md): DIR/summary.json with { "source", "specimen", "method", "samples",
+/// "units", "interrupted": reason, "phase", "samplesDone", "refits", "estimatorWarnings",
+/// "parameterUnits", "parameters": { NAME: {"current"} } (the estimate after the last sample
+/// done; empty when none) }. Returns the paths written (DIR must exist).
+std::vector<std::string> writeInterruptedReport(const std::string& dir,
+                                                const SpecimenHistory& history,
+                                                const IdentificationSettings& settings,
+                                                const OfflinePartial& partial,
+                                                const std::string& reason);
 
 } // namespace hsmu

@@ -23,19 +23,6 @@ std::vector<double> startOf(const CalibrationSpec& spec, const BoucWenPinchingPa
     return s;
 }
 
-/// Whether p's fitted parameters lie in the spec's box. An anchor or estimate carried into new
-/// scales (beta, gamma scale with uRef^n...) can leave it; the UKF must not start outside the
-/// box it is given (its sigma points are clamped there and it diverges at once).
-bool insideBox(const CalibrationSpec& spec, const BoucWenPinchingParameters& p) {
-    for (const auto& b : spec.fitted)
-        if (const int j = pinchingUkfParameterIndex(b.name); j >= 0) {
-            const double v = PinchingUkf::field(p, j);
-            if (!(v >= b.lower && v <= b.upper))
-                return false;
-        }
-    return true;
-}
-
 BoucWenPinchingParameters fromCalibration(BoucWenPinchingParameters p, const CalibrationResult& r) {
     for (int j = 0; j < kPinchingUkfParameters; ++j)
         if (const auto it = r.parameters.find(pinchingUkfParameterNames()[std::size_t(j)]);

@@ -3,6 +3,7 @@
 #include "core/identification/Calibration.h"
 #include "core/identification/CalibrationDefaults.h"
 #include "core/identification/HistoryScales.h"
+#include "core/identification/PinchingUkf.h"
 
 #include <algorithm>
 #include <chrono>
@@ -109,7 +110,35 @@ bool movedBy(double a, double b, double factor) {
     return a > factor * b || b > factor * a;
 }
 
+/// insideBox() with valueOf(name) the value of the fitted parameter `name` (NaN: not checked).
+template <class ValueOf>
+bool insideBoxOf(const CalibrationSpec& spec, ValueOf valueOf) {
+    for (const auto& b : spec.fitted) {
+        const double v = valueOf(b.name);
+        if (!std::isnan(v) && !(v >= b.lower && v <= b.upper))
+            return false;
+    }
+    return true;
+}
+
 } // namespace
+
+bool insideBox(const CalibrationSpec& spec, const BoucWenParameters& p) {
+    return insideBoxOf(spec, [&](const std::string& name) {
+        BoucWenParameters q = p;
+        for (BoucWenUkfIndex i : kRobustUkfParameters)
+            if (name == boucWenUkfIndexName(i))
+                return robustUkfField(q, i);
+        return std::nan("");
+    });
+}
+
+bool insideBox(const CalibrationSpec& spec, const BoucWenPinchingParameters& p) {
+    return insideBoxOf(spec, [&](const std::string& name) {
+        const int j = pinchingUkfParameterIndex(name);
+        return j >= 0 ? PinchingUkf::field(p, j) : std::nan("");
+    });
+}
 
 BoucWenParameters rescaled(const BoucWenParameters& p, double uRef, double fRef) {
     const double s = p.uRef / uRef, c = p.fRef / fRef;
@@ -227,11 +256,12 @@ AnchorJobResult anchorJob(const AnchorJobInput& in, const std::atomic<bool>* can
         const double sff = sumOfSquares(in.f);
         double bestSse = std::numeric_limits<double>::infinity(), sse = 0.0;
         BoucWenState state;
-        if (estimate && replayHistory(in.u, in.f, *estimate, state, sse))
+        if (estimate && insideBox(spec, *estimate) &&
+            replayHistory(in.u, in.f, *estimate, state, sse))
             out.best = *estimate, out.state = state, bestSse = sse;
         if (cal.ok) {
             const BoucWenParameters p = fromCalibration(in.initial, cal);
-            if (replayHistory(in.u, in.f, p, state, sse) && sse < bestSse)
+            if (insideBox(spec, p) && replayHistory(in.u, in.f, p, state, sse) && sse < bestSse)
                 out.best = p, out.state = state, bestSse = sse;
         }
         if (!std::isfinite(bestSse)) {

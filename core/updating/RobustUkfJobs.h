@@ -28,6 +28,8 @@
 
 namespace hsmu {
 
+struct CalibrationSpec;
+
 /// The seven parameters the robust UKF identifies, in the filter's state order.
 inline constexpr BoucWenUkfIndex kRobustUkfParameters[] = {
     BoucWenUkfIndex::K0, BoucWenUkfIndex::Alpha,   BoucWenUkfIndex::Beta,    BoucWenUkfIndex::Gamma,
@@ -94,6 +96,14 @@ bool replayHistory(const std::vector<double>& u, const std::vector<double>& f,
 bool replayHistory(const std::vector<double>& u, const std::vector<double>& f,
                    const BoucWenPinchingParameters& p, BoucWenState& state,
                    double& squaredErrors);
+
+/// Whether the values of p for the parameters `spec` fits lie in its box [lower, upper] (one
+/// check for the robust and the pinching UKF's anchor jobs). An anchor or estimate carried
+/// into new scales (rescaled(): beta, gamma scale with (uRef ratio)^-n ...) can leave the box;
+/// the UKF must not start outside the box its sigma points are clamped to (it diverges at
+/// once). Fitted names p has no UKF parameter for are not checked.
+bool insideBox(const CalibrationSpec& spec, const BoucWenParameters& p);
+bool insideBox(const CalibrationSpec& spec, const BoucWenPinchingParameters& p);
 
 /// The same physical pinching model in the scales (uRef, fRef): the Bouc-Wen part as
 /// rescaled(); with s = p.uRef / uRef and c = p.fRef / fRef, z scales by s and e by c s, so

@@ -2,16 +2,21 @@
 
 #include "core/config/ConfigLoader.h"
 #include "core/offline/MeasuredDataCsv.h"
+#include "core/offline/MethodComparison.h"
 #include "core/offline/OfflineIdentification.h"
 #include "core/offline/OfflineIdentificationReport.h"
 #include "core/record/RecordReader.h"
 #include "gui/cli/ConsoleStreams.h"
+#include "gui/cli/MethodComparisonTable.h"
+#include "gui/cli/SignalHold.h"
 #include "gui/replay/Reidentification.h"
 
 #include <QCommandLineParser>
 #include <QDir>
 #include <QTextStream>
 
+#include <algorithm>
+#include <atomic>
 #include <optional>
 #include <string_view>
 
@@ -56,7 +61,8 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
                           "columns, e.g. 1,2,3; other columns are ignored."),
         QStringLiteral("t,d,f"));
     const QCommandLineOption methodOpt(QStringLiteral("method"),
-                                       ReplayCommand::tr("ukf, nelder-mead or calibration (only the whole-history fit)."),
+                                       ReplayCommand::tr("ukf, nelder-mead, calibration (only the whole-history fit) or all "
+                          "(the three, compared in one table)."),
                                        QStringLiteral("method"));
     const QCommandLineOption configOpt(
         QStringLiteral("config"),
@@ -228,6 +234,113 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
     out << ReplayCommand::tr("  outputs: %1").arg(QDir::toNativeSeparators(dir)) << Qt::endl;
 }
 
+/// Progress on stderr once the work has run for 3 s, then every 5 s, and at once when a phase
+/// starts after that (docs/cli.md).
+class ProgressPrinter {
+public:
+    void print(const OfflineProgress& p) {
+        if (p.elapsedSeconds < m_lastElapsed) // --method all: the next method's own clock
+            m_nextReport = std::min(m_nextReport, 3.0);
+        m_lastElapsed = p.elapsedSeconds;
+        const bool newPhase = m_phase != p.phase;
+        m_phase = p.phase;
+        if (p.elapsedSeconds < m_nextReport && !(newPhase && p.elapsedSeconds >= 3.0))
+            return;
+        m_nextReport = p.elapsedSeconds + 5.0;
+        const QString elapsed = QString::number(p.elapsedSeconds, 'f', 0);
+        QTextStream& err = ConsoleStreams::err();
+        if (m_phase == "online" && p.samplesDone > 0) {
+            const double left =
+                p.elapsedSeconds * double(p.samples - p.samplesDone) / double(p.samplesDone);
+            err << ReplayCommand::tr("hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s "
+                                     "elapsed, about %6 s left")
+                       .arg(p.samplesDone)
+                       .arg(p.samples)
+                       .arg(p.refits)
+                       .arg(p.rejected)
+                       .arg(elapsed)
+                       .arg(QString::number(left, 'f', 0))
+                << Qt::endl;
+        } else if (m_phase == "calibration" && p.minimizations > 0) {
+            err << ReplayCommand::tr("hsmu replay: calibrating over the whole history "
+                                     "(minimization %1 of %2, %3 s elapsed)")
+                       .arg(p.minimizationsDone)
+                       .arg(p.minimizations)
+                       .arg(elapsed)
+                << Qt::endl;
+        } else {
+            err << ReplayCommand::tr("hsmu replay: %1 (%2 s elapsed)")
+                       .arg(m_phase == "calibration"
+                                ? ReplayCommand::tr("calibrating over the whole history")
+                                : ReplayCommand::tr("final fit over the whole history"))
+                       .arg(elapsed)
+                << Qt::endl;
+        }
+    }
+
+private:
+    double m_nextReport = 3.0, m_lastElapsed = 0.0;
+    std::string m_phase;
+};
+
+/// The identification (or, with --method all, the comparison), its files and its table.
+int identifyAndReport(const ReplayOptions& o, const SpecimenHistory& history,
+                      const IdentificationSettings& settings,
+                      const std::optional<RecordReader>& reader,
+                      const OfflineProgressCallback& progress) {
+    if (o.method == QLatin1String("all")) {
+        const MethodComparison c = compareMethods(history, settings, progress);
+        writeMethodComparison(o.outDir.toStdString(), history, c);
+        ConsoleStreams::out() << MethodComparisonTable::format(c, history, o.outDir) << Qt::flush;
+        return 0;
+    }
+    const OfflineIdentificationResult r = identifyOffline(history, settings, progress);
+    ParameterValues online;
+    if (reader)
+        online = onlineEstimate(reader->data(), settings.specimen, r.method);
+    writeIdentificationReport(o.outDir.toStdString(), history, settings, r, online);
+    printTable(history, settings, r, online, o.outDir);
+    return 0;
+}
+
+/// The partial summary of an interrupted identification (writeInterruptedReport's figures).
+void printInterrupted(const SpecimenHistory& h, const IdentificationSettings& s,
+                      const OfflinePartial& p, const std::string& reason, const QString& dir) {
+    QTextStream& out = ConsoleStreams::out();
+    out << ReplayCommand::tr("%1 identification of %2 interrupted (%3) during the %4: %5 / %6 "
+                             "samples done, %7 refits, %8 rejected")
+               .arg(QString::fromStdString(p.method), QString::fromStdString(h.source),
+                    QString::fromStdString(reason),
+                    p.phase == "online"        ? ReplayCommand::tr("online pass")
+                    : p.phase == "calibration" ? ReplayCommand::tr("calibration")
+                                               : ReplayCommand::tr("final fit"))
+               .arg(p.samplesDone)
+               .arg(p.samples)
+               .arg(p.refits)
+               .arg(p.rejected)
+        << Qt::endl;
+    if (p.estimate.empty())
+        out << ReplayCommand::tr("  no estimate yet") << Qt::endl;
+    else
+        out << ReplayCommand::tr("  parameters after sample %1:").arg(p.samplesDone) << Qt::endl;
+    for (const std::string& name : p.parameterNames) { // the method's order
+        const auto it = p.estimate.find(name);
+        if (it == p.estimate.end())
+            continue;
+        const double v = it->second;
+        out << QStringLiteral("  %1 %2 %3")
+                   .arg(QString::fromStdString(name), -10)
+                   .arg(QString::fromStdString(
+                            parameterUnit(s.model.law, name, h.deformationUnits, h.forceUnits)),
+                        -8)
+                   .arg(num(v), 12)
+            << Qt::endl;
+    }
+    out << ReplayCommand::tr("  partial summary: %1")
+               .arg(QDir::toNativeSeparators(dir + QStringLiteral("/summary.json")))
+        << Qt::endl;
+}
+
 } // namespace
 
 int ReplayCommand::exec(const QStringList& arguments) {
@@ -236,7 +349,6 @@ int ReplayCommand::exec(const QStringList& arguments) {
         return error->isEmpty() ? 0 : fail(*error);
     SpecimenHistory history;
     IdentificationSettings settings;
-    ParameterValues online;
     std::optional<RecordReader> reader;
     try {
         if (!o.import.isEmpty()) {
@@ -256,7 +368,8 @@ int ReplayCommand::exec(const QStringList& arguments) {
             settings = identificationSettingsFrom(cfg, o.specimen.toStdString());
             history = historyFromRecord(d, settings.specimen, o.record.toStdString());
         }
-        settings = withOverrides(settings, o.config, o.method);
+        const bool all = o.method == QLatin1String("all"); // each method set per row
+        settings = withOverrides(settings, o.config, all ? QString() : o.method);
         settings.online = !(o.method == QLatin1String("calibration") ||
                             (o.method.isEmpty() && calibrationOnlyByDefault(settings)));
     } catch (const std::exception& e) {
@@ -265,44 +378,29 @@ int ReplayCommand::exec(const QStringList& arguments) {
     if (!QDir().mkpath(o.outDir))
         return fail(tr("%1: cannot create the output directory").arg(o.outDir));
     try {
-        // Progress on stderr once the work has run for a few seconds, then every 5 s.
-        double nextReport = 3.0;
-        const auto progress = [&nextReport](const OfflineProgress& p) {
-            if (p.elapsedSeconds < nextReport)
-                return;
-            nextReport = p.elapsedSeconds + 5.0;
-            QTextStream& err = ConsoleStreams::err();
-            if (std::string_view(p.phase) == "online" && p.samplesDone > 0) {
-                const double left = p.elapsedSeconds * double(p.samples - p.samplesDone) /
-                                    double(p.samplesDone);
-                err << tr("hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, "
-                          "about %6 s left")
-                           .arg(p.samplesDone)
-                           .arg(p.samples)
-                           .arg(p.refits)
-                           .arg(p.rejected)
-                           .arg(QString::number(p.elapsedSeconds, 'f', 0))
-                           .arg(QString::number(left, 'f', 0))
-                    << Qt::endl;
-            } else {
-                err << tr("hsmu replay: %1 (%2 s elapsed)")
-                           .arg(std::string_view(p.phase) == "calibration"
-                                    ? tr("calibrating over the whole history")
-                                    : tr("final fit over the whole history"))
-                           .arg(QString::number(p.elapsedSeconds, 'f', 0))
-                    << Qt::endl;
-                nextReport = p.elapsedSeconds; // the next phase is told at once
-            }
+        ProgressPrinter printer;
+        const OfflineProgressCallback progress = [&printer](const OfflineProgress& p) {
+            printer.print(p);
         };
-        const OfflineIdentificationResult r = identifyOffline(history, settings, progress);
-        if (reader)
-            online = onlineEstimate(reader->data(), settings.specimen, r.method);
-        writeIdentificationReport(o.outDir.toStdString(), history, settings, r, online);
-        printTable(history, settings, r, online, o.outDir);
+        // SIGINT / SIGTERM cancel the work at its next check; a partial summary follows.
+        std::atomic<bool> cancel{false};
+        std::string interruption;
+        SignalHold signalCancel([&](const std::string& why) {
+            interruption = why; // before the flag: read after the cancel is seen
+            cancel.store(true);
+        });
+        settings.cancel = &cancel;
+        try {
+            return identifyAndReport(o, history, settings, reader, progress);
+        } catch (const OfflineCancelled& c) {
+            writeInterruptedReport(o.outDir.toStdString(), history, settings, c.partial(),
+                                   interruption);
+            printInterrupted(history, settings, c.partial(), interruption, o.outDir);
+            return 2;
+        }
     } catch (const std::exception& e) {
         return fail(QString::fromStdString(e.what()));
     }
-    return 0;
 }
 
 } // namespace hsmu::gui

@@ -5,9 +5,12 @@
 // sends the hold to every site at once even while the run loop is blocked in a step. The run
 // then ends as held (exit code 2) with its record, CSV and summary written. A second signal
 // while the first is handled changes nothing; the destructor restores the previous handlers.
+// The other constructor calls any action instead (`hsmu replay`: it sets the identification's
+// cancel flag), on the watcher thread.
 // Thread rules: construct and destroy on the run loop's thread; one instance at a time.
 
 #include <atomic>
+#include <functional>
 #include <string>
 #include <thread>
 
@@ -20,6 +23,8 @@ namespace hsmu::gui {
 class SignalHold {
 public:
     explicit SignalHold(HybridTest& test);
+    /// action("SIGINT received" / "SIGTERM received") once, on the watcher thread.
+    explicit SignalHold(std::function<void(const std::string& reason)> action);
     ~SignalHold();
     SignalHold(const SignalHold&) = delete;
     SignalHold& operator=(const SignalHold&) = delete;
@@ -31,7 +36,7 @@ public:
 
 private:
     void watch();
-    HybridTest& m_test;
+    std::function<void(const std::string&)> m_onSignal;
     int m_pipe[2] = {-1, -1};
     std::atomic<int> m_signal{0};
     std::thread m_watcher;

@@ -7,18 +7,26 @@
 // - imported CSVs: a good one identifies (Nelder-Mead, with a settings override); a malformed
 //   one and a file that is not a record are clear errors (exit 1); (replay without --identify
 //   opens the replay window: TestReplayWindow);
-// - lab units: export --units and import --columns round trip, and their errors.
+// - lab units: export --units and import --columns round trip, and their errors;
+// - --method all on the Gill column (../shared/data; QSKIP where absent): the table's and
+//   comparison's NRMSEs equal those of the three single-method runs;
+// - an interrupted replay (SIGINT once its progress line is on stderr) ends with exit code 2
+//   and a partial summary (samples done, the parameters at that point).
 
 #include "CliTestSupport.h"
 
+#include "core/hysteresis/BoucWen.h"
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/record/RecordReader.h"
 
 #include <QJsonArray>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
+
+#include <signal.h>
 
 using namespace clitest;
 
@@ -51,6 +59,8 @@ private slots:
     void pinchingModelIsCalibratedByDefault();
     void errorsAreClear();
     void labUnitsOutAndBackIn();
+    void methodAllEqualsTheSingleRuns();
+    void interruptedReplayWritesAPartialSummary();
 
 private:
     QTemporaryDir m_dir;
@@ -302,6 +312,108 @@ void TestReplayCommand::labUnitsOutAndBackIn() {
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("--columns applies to --import only")),
              qPrintable(r.err));
+}
+
+void TestReplayCommand::methodAllEqualsTheSingleRuns() {
+    const QString data = QStringLiteral(HSMU_SHARED_DATA_DIR) +
+                         QStringLiteral("/rc-column-gill1979/rc_column_force_disp.txt");
+    if (!QFile::exists(data))
+        QSKIP("shared record absent (a fresh machine has no ../shared/data)");
+    const QString out = path(m_dir, "gill-all");
+    const Result r = clitest::hsmu({QStringLiteral("replay"), QStringLiteral("--import"), data,
+                                    QStringLiteral("--method"), QStringLiteral("all"),
+                                    QStringLiteral("--out"), out},
+                                   600000);
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    qInfo("%s", qPrintable(r.out));
+    QVERIFY2(r.out.contains(QStringLiteral("recommended: ")), qPrintable(r.out));
+    const QJsonArray rows = readJson(out + QStringLiteral("/summary.json"))
+                                .value(QStringLiteral("comparison"))
+                                .toArray();
+    QCOMPARE(rows.size(), 3);
+    const QStringList csv = readLines(out + QStringLiteral("/comparison.csv"));
+    QCOMPARE(csv.size(), 4);
+    for (int i = 0; i < 3; ++i) {
+        const QJsonObject row = rows[i].toObject();
+        const QString method = row.value(QStringLiteral("method")).toString();
+        QVERIFY(row.value(QStringLiteral("ok")).toBool());
+        const QString single = path(m_dir, qPrintable(QStringLiteral("gill-") + method));
+        const Result one = clitest::hsmu({QStringLiteral("replay"), QStringLiteral("--import"),
+                                          data, QStringLiteral("--method"), method,
+                                          QStringLiteral("--out"), single},
+                                         600000);
+        QVERIFY2(one.exitCode == 0, qPrintable(report(one)));
+        const double expected = readJson(single + QStringLiteral("/summary.json"))
+                                    .value(QStringLiteral("finalNrmse"))
+                                    .toDouble();
+        QCOMPARE(row.value(QStringLiteral("nrmse")).toDouble(), expected);
+        // the CSV row and the printed table (in %, two decimals) say the same
+        QCOMPARE(csv[i + 1].section(QLatin1Char(','), 1, 1).toDouble(), expected);
+        const QString percent = QString::number(100.0 * expected, 'f', 2);
+        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("\\n  %1 +%2 ")
+                                                       .arg(method, QRegularExpression::escape(percent)))),
+                 qPrintable(method + QStringLiteral(" ") + percent));
+        QVERIFY(QFile::exists(out + QLatin1Char('/') + method + QStringLiteral("/summary.json")));
+    }
+}
+
+void TestReplayCommand::interruptedReplayWritesAPartialSummary() {
+    // A long synthetic Bouc-Wen record (mm, kN): 200,000 samples of growing cycles, long
+    // enough for the progress line (after 3 s of work) on any machine.
+    hsmu::BoucWenParameters bw;
+    bw.k0 = 2.0;
+    bw.alpha = 0.05;
+    bw.beta = 0.6;
+    bw.gamma = 0.4;
+    hsmu::BoucWen law(bw);
+    QByteArray csv = "time [s], deformation [mm], force [kN]\n";
+    const int samples = 200000;
+    for (int k = 1; k <= samples; ++k) {
+        const double t = 0.01 * k;
+        const double u = 4.0 * (0.2 + 0.8 * double(k) / samples) * std::sin(2.0 * M_PI * t);
+        QCOMPARE(law.setTrialDeformation(u), hsmu::LawStatus::Ok);
+        law.commit();
+        csv += QByteArray::number(t, 'g', 10) + ", " + QByteArray::number(u, 'g', 10) + ", " +
+               QByteArray::number(law.committedForce(), 'g', 10) + "\n";
+    }
+    const QString data = path(m_dir, "long.csv");
+    writeText(data, csv);
+    const QString out = path(m_dir, "interrupted");
+    QProcess p;
+    p.setReadChannel(QProcess::StandardError);
+    p.start(QStringLiteral(HSMU_EXE), {QStringLiteral("replay"), QStringLiteral("--import"), data,
+                                       QStringLiteral("--out"), out});
+    QVERIFY(p.waitForStarted());
+    QByteArray err;
+    while (!err.contains("hsmu replay: ")) { // synchronised on the progress line
+        if (!p.waitForReadyRead(600000))
+            QFAIL(qPrintable(QStringLiteral("no progress line; stderr: ") + QString::fromUtf8(err)));
+        err += p.readAllStandardError();
+    }
+    QCOMPARE(::kill(pid_t(p.processId()), SIGINT), 0);
+    QVERIFY(p.waitForFinished(600000));
+    const QString stdoutText = QString::fromUtf8(p.readAllStandardOutput());
+    err += p.readAllStandardError();
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(p.exitCode() == 2, qPrintable(stdoutText + QString::fromUtf8(err)));
+    QVERIFY2(stdoutText.contains(QStringLiteral("interrupted (SIGINT received)")),
+             qPrintable(stdoutText));
+    const QJsonObject summary = readJson(out + QStringLiteral("/summary.json"));
+    QCOMPARE(summary.value(QStringLiteral("interrupted")).toString(),
+             QStringLiteral("SIGINT received"));
+    QCOMPARE(summary.value(QStringLiteral("samples")).toInt(), samples);
+    const int done = summary.value(QStringLiteral("samplesDone")).toInt();
+    QVERIFY2(done > 0 && done < samples, qPrintable(QString::number(done)));
+    QCOMPARE(summary.value(QStringLiteral("phase")).toString(), QStringLiteral("online"));
+    const QJsonObject parameters = summary.value(QStringLiteral("parameters")).toObject();
+    QVERIFY(parameters.contains(QStringLiteral("k0")));
+    const double k0 = parameters.value(QStringLiteral("k0"))
+                          .toObject()
+                          .value(QStringLiteral("current"))
+                          .toDouble();
+    QVERIFY(std::isfinite(k0) && k0 > 0.0);
+    QVERIFY2(stdoutText.contains(QStringLiteral("parameters after sample %1:").arg(done)),
+             qPrintable(stdoutText));
 }
 
 QTEST_GUILESS_MAIN(TestReplayCommand)

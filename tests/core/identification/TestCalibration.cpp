@@ -104,9 +104,20 @@ private slots:
         BoucWen truth(p);
         const std::vector<double> u = cyclic(0.04, 6, 300);
         const std::vector<double> f = forcesOf(truth, u);
-        const CalibrationResult r = calibrateHistory(u, f, CalibrationRequest{});
+        // Its progress (hsmu replay's calibration lines): one call per minimization, counted
+        // up to the total of the starts and the polishes.
+        std::vector<std::pair<int, int>> calls;
+        CalibrationRequest request;
+        request.progress = [&calls](int done, int total) { calls.emplace_back(done, total); };
+        const CalibrationResult r = calibrateHistory(u, f, request);
         QVERIFY2(r.ok, r.reason.c_str());
         QVERIFY2(r.nrmse < 1e-5, qPrintable(QString::number(r.nrmse)));
+        const CalibrationSpec spec = defaultCalibrationSpec(request, deriveHistoryScales(u, f));
+        const int total = int(spec.starts.size()) + spec.polished;
+        QVERIFY(!calls.empty() && int(calls.size()) % total == 0); // once, or twice (a re-run)
+        for (std::size_t k = 0; k < calls.size(); ++k)
+            QCOMPARE(calls[k], std::make_pair(int(k) % total + 1, total));
+        QCOMPARE(r.startsTried, int(calls.size()) / total * int(spec.starts.size()));
         // Back to physical units: stiffness k0 fRef / uRef, alpha and n are scale-free.
         const auto& q = r.parameters;
         const double k0 = q.at("k0") * q.at("fRef") / q.at("uRef");

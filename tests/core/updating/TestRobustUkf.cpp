@@ -259,6 +259,43 @@ private slots:
         QVERIFY(std::abs(s.z - b.committedState().z) < 1e-6 * std::abs(s.z) + 1e-9);
         QVERIFY(std::abs(s.e - b.committedState().e) < 1e-6 * std::abs(s.e) + 1e-9);
     }
+
+    /// An estimate carried into new scales is taken as the anchor only inside the calibration's
+    /// box (the check PinchingUkfJobs makes, one function: insideBox()): beta and gamma scale
+    /// with (uRef ratio)^-n, so an estimate inside the box in its own scales can leave it in the
+    /// anchor's; the UKF then starts outside the box its sigma points are clamped to. Here the
+    /// estimate replays the history exactly (its own force) with beta 25 at uRef = 1, outside
+    /// the default box [-20, 20]; before the check the anchor took it.
+    void anchorStaysInsideTheUkfBoxWhenTheScalesMove() {
+        BoucWenParameters p = truth();
+        p.uRef = p.fRef = 1.0;
+        p.n = 1.0;
+        p.beta = 25.0; // outside the box [-20, 20] at uRef = 1
+        p.gamma = -19.0;
+        const History h = history(p, 400, 100, 0.5 / BoucWen::ultimateZ(p));
+        AnchorJobInput in;
+        in.u = h.u;
+        in.f = h.f;
+        in.uRef = 1.0;
+        in.fRef = 1.0;
+        in.estimate = rescaled(p, 0.25, 1.0); // beta 6.25 there, 25 again at uRef = 1
+        in.initial = truth();
+        in.global = false;
+        const AnchorJobResult r = anchorJob(in);
+        QVERIFY2(r.ok, r.reason.c_str());
+        BoucWenParameters best = r.best;
+        for (BoucWenUkfIndex i : kRobustUkfParameters) {
+            const double v = robustUkfField(best, i);
+            const auto& b = r.box[std::size_t(i)];
+            QVERIFY2(v >= b.lower && v <= b.upper,
+                     qPrintable(QString("%1 = %2 outside [%3, %4]")
+                                    .arg(boucWenUkfIndexName(i))
+                                    .arg(v)
+                                    .arg(b.lower)
+                                    .arg(b.upper)));
+        }
+        QVERIFY2(r.nrmse < 0.2, qPrintable(QString::number(r.nrmse))); // still a fit, from inside
+    }
 };
 
 QTEST_APPLESS_MAIN(TestRobustUkf)
