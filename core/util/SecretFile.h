@@ -14,4 +14,9 @@ namespace hsmu {
 /// The secret of path, or nullopt with a sentence naming path in error.
 std::optional<std::string> readSecretFile(const std::string& path, std::string& error);
 
+/// The same rule for any private file (a TLS key: what = "the TLS key file"): true when path
+/// is a regular file that only its owner may read or write; otherwise false with a sentence
+/// naming path and what in error (the chmod that fixes it).
+bool checkPrivateFile(const std::string& path, const std::string& what, std::string& error);
+
 } // namespace hsmu

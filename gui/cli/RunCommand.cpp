@@ -124,6 +124,7 @@ int RunCommand::exec(const QStringList& arguments) {
     sessionOptions.recordPath = dir.filePath(QStringLiteral("record.h5")).toStdString();
     sessionOptions.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
     sessionOptions.recordStart.deflate = options.deflate;
+    sessionOptions.recordStart.siteSecurity = comms::siteSecurity(options.controller, cfg);
     TestSession session(std::move(test), sessionOptions);
     HybridTest* const run = &session.test();
     if (!session.openRecord())
@@ -148,9 +149,10 @@ int RunCommand::exec(const QStringList& arguments) {
     };
 
     if (options.controller.kind != comms::LinkAddress::Kind::Builtin)
-        err() << tr("hsmu run: connecting to %1 (%2 protocol)")
+        err() << tr("hsmu run: connecting to %1 (%2 protocol, %3)")
                      .arg(QString::fromStdString(options.controller.toString()),
-                          QString::fromStdString(comms::linkProtocol(options.controller, cfg.link)))
+                          QString::fromStdString(comms::linkProtocol(options.controller, cfg.link)),
+                          QString::fromStdString(options.controller.security()))
               << Qt::endl;
     // SIGINT / SIGTERM from here on hold every site out of band (even mid-step); the
     // session never resumes an operator hold.
