@@ -70,11 +70,11 @@ private slots:
         QVERIFY2(plain.start(), qPrintable(plain.log()));
         QVERIFY2(tls.start(), qPrintable(tls.log()));
         const QString a = m_dir.filePath("tcp"), b = m_dir.filePath("tls");
-        const Result ra = hsmu({"run", config, "--controller",
+        const Result ra = clitest::hsmu({"run", config, "--controller",
                                 QStringLiteral("tcp://127.0.0.1:%1").arg(plain.port()), "--out", a});
         QVERIFY2(ra.exitCode == 0, qPrintable(report(ra) + plain.log()));
         const QString address = QStringLiteral("tls://127.0.0.1:%1").arg(tls.port());
-        const Result rb = hsmu({"run", config, "--controller", address, "--out", b});
+        const Result rb = clitest::hsmu({"run", config, "--controller", address, "--out", b});
         QVERIFY2(rb.exitCode == 0, qPrintable(report(rb) + tls.log()));
         QVERIFY2(rb.err.contains(address + " (native protocol, tls)"), qPrintable(rb.err));
 
@@ -106,10 +106,10 @@ private slots:
         };
         const QString a = m_dir.filePath("labs-tcp"), b = m_dir.filePath("labs-tls");
         const Result ra =
-            hsmu({"run", pointed("tcp", plainD.port(), plainC.port(), "labs-tcp.json"), "--out", a});
+            clitest::hsmu({"run", pointed("tcp", plainD.port(), plainC.port(), "labs-tcp.json"), "--out", a});
         QVERIFY2(ra.exitCode == 0, qPrintable(report(ra) + plainD.log() + plainC.log()));
         const Result rb =
-            hsmu({"run", pointed("tls", tlsD.port(), tlsC.port(), "labs-tls.json"), "--out", b});
+            clitest::hsmu({"run", pointed("tls", tlsD.port(), tlsC.port(), "labs-tls.json"), "--out", b});
         QVERIFY2(rb.exitCode == 0, qPrintable(report(rb) + tlsD.log() + tlsC.log()));
 
         const QByteArray x = fileBytes(a + "/steps.csv"), y = fileBytes(b + "/steps.csv");
