@@ -26,11 +26,13 @@ const std::pair<TlsSpec, TlsSpec>* certificates() {
         const std::string d = dir, tool = "bash " HSMU_SOURCE_DIR "/scripts/hsmu-certs.sh ";
         const std::string quiet = " > /dev/null";
         if (std::system((tool + "init-ca " + d + "/ca" + quiet).c_str()) != 0 ||
-            std::system((tool + "issue controller --ca " + d + "/ca --ip 127.0.0.1 --out " + d +
-                         quiet).c_str()) != 0 ||
+            std::system(
+                (tool + "issue controller --ca " + d + "/ca --ip 127.0.0.1 --out " + d + quiet)
+                    .c_str()) != 0 ||
             std::system((tool + "issue console --ca " + d + "/ca --out " + d + quiet).c_str()) != 0)
             return false;
-        for (auto [spec, name] : {std::pair{&specs.first, "controller"}, {&specs.second, "console"}}) {
+        for (auto [spec, name] :
+             {std::pair{&specs.first, "controller"}, {&specs.second, "console"}}) {
             spec->ca = d + "/ca/ca.pem";
             spec->certificate = d + "/" + name + ".pem";
             spec->key = d + "/" + name + ".key";

@@ -5,8 +5,7 @@
 namespace hsmu::comms {
 
 ByteStream::ByteStream(tcp::socket socket, const TlsContext& context, const std::string& host)
-    : m_tls(std::make_unique<TlsStream>(std::move(socket), *context.ssl)),
-      m_context(context.ssl) {
+    : m_tls(std::make_unique<TlsStream>(std::move(socket), *context.ssl)), m_context(context.ssl) {
     boost::system::error_code ec;
     if (!host.empty()) {
         boost::asio::ip::make_address(host, ec);

@@ -68,8 +68,7 @@ private:
 /// The first bytes of a TLS handshake record (what a TLS client sends first): a plaintext
 /// end that receives them talks to a TLS peer.
 inline bool looksLikeTls(const std::uint8_t* bytes, std::size_t n) {
-    return n >= 3 && (bytes[0] == 0x16 || bytes[0] == 0x15) && bytes[1] == 0x03 &&
-           bytes[2] <= 0x04;
+    return n >= 3 && (bytes[0] == 0x16 || bytes[0] == 0x15) && bytes[1] == 0x03 && bytes[2] <= 0x04;
 }
 
 } // namespace hsmu::comms

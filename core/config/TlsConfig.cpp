@@ -104,8 +104,8 @@ TlsSpec parseTlsSpec(const JsonCursor& c, const std::string& baseDir) {
     }
     std::string error;
     if (!checkTlsSpec(s, error))
-        c.fail(s.certificate.empty() ? "certificate"
-               : s.key.empty()       ? "key"
+        c.fail(s.certificate.empty()            ? "certificate"
+               : s.key.empty()                  ? "key"
                : s.ca.empty() && s.pins.empty() ? "ca"
                                                 : "key",
                error);

@@ -24,9 +24,9 @@ namespace hsmu {
 class JsonCursor;
 
 struct TlsSpec {
-    std::string ca;          ///< CA certificate(s), PEM; "" = trust pins only
-    std::string certificate; ///< this end's certificate chain, PEM
-    std::string key;         ///< this end's private key, PEM (mode 0600 or stricter)
+    std::string ca;                ///< CA certificate(s), PEM; "" = trust pins only
+    std::string certificate;       ///< this end's certificate chain, PEM
+    std::string key;               ///< this end's private key, PEM (mode 0600 or stricter)
     std::vector<std::string> pins; ///< SHA-256 fingerprints, 64 lower-case hex digits
     std::string pinsFile;    ///< more pins, one a line ("" = none; hsmu-controller --tls-pins)
     std::string revokedFile; ///< fingerprints refused even under the CA, one a line ("" = none)

@@ -95,8 +95,8 @@ class TestTlsRefusals : public QObject {
     QString m_config, m_token;
 
     QStringList args(bool tls = true) const {
-        QStringList a{"--config", m_config, "--pace", "fast", "--token-file", m_token,
-                      "--no-state-file"};
+        QStringList a{"--config",     m_config, "--pace",         "fast",
+                      "--token-file", m_token,  "--no-state-file"};
         return tls ? a + m_tls.controllerArgs() : a;
     }
 
@@ -195,19 +195,20 @@ private slots:
         LinkClientOptions o;
         o.tls = m_tls.console();
         LinkClient admitted(o);
-        const Attempt before = helloOver("127.0.0.1", ctl.port(), m_tls.console(), kToken,
-                                         &admitted);
+        const Attempt before =
+            helloOver("127.0.0.1", ctl.port(), m_tls.console(), kToken, &admitted);
         QVERIFY2(before.admitted, qPrintable(before.error + "\n" + ctl.log()));
         QString fp;
         QVERIFY2(TlsFixture::certs({"fingerprint", m_tls.cert("console")}, &fp), qPrintable(fp));
         {
             std::ofstream revoked(m_tls.path("revoked.txt").toStdString());
-            revoked << "# the console's certificate, lost with its laptop\n" << fp.toStdString()
-                    << "\n";
+            revoked << "# the console's certificate, lost with its laptop\n"
+                    << fp.toStdString() << "\n";
         }
         QCOMPARE(::kill(pid_t(ctl.pid()), SIGHUP), 0);
-        QTRY_VERIFY2_WITH_TIMEOUT(ctl.log().contains("SIGHUP: TLS files reloaded (0 pins, 1 revoked)"),
-                                  qPrintable(ctl.log()), 20000);
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            ctl.log().contains("SIGHUP: TLS files reloaded (0 pins, 1 revoked)"),
+            qPrintable(ctl.log()), 20000);
         // The admitted session with that certificate is closed with the reason ...
         std::string e;
         const auto m = admitted.receive(kWait, e);
@@ -278,7 +279,8 @@ private slots:
         a[a.indexOf("--tls-key") + 1] = key;
         QProcess p;
         p.setProcessChannelMode(QProcess::MergedChannels);
-        p.start(QStringLiteral(HSMU_CONTROLLER_EXE), a << "--port" << "0");
+        p.start(QStringLiteral(HSMU_CONTROLLER_EXE), a << "--port"
+                                                       << "0");
         QVERIFY(p.waitForFinished(20000));
         const QString out = QString::fromUtf8(p.readAll());
         QCOMPARE(p.exitCode(), 2);
@@ -292,7 +294,8 @@ private slots:
     }
 
     void nonLoopbackWithTlsStartsWithoutInsecurePlaintext() {
-        ControllerProcess ctl(args() << "--bind" << "0.0.0.0");
+        ControllerProcess ctl(args() << "--bind"
+                                     << "0.0.0.0");
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const Attempt a = helloOver("127.0.0.1", ctl.port(), m_tls.console());
         QVERIFY2(a.admitted, qPrintable(a.error + "\n" + ctl.log()));

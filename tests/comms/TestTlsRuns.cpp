@@ -70,8 +70,9 @@ private slots:
         QVERIFY2(plain.start(), qPrintable(plain.log()));
         QVERIFY2(tls.start(), qPrintable(tls.log()));
         const QString a = m_dir.filePath("tcp"), b = m_dir.filePath("tls");
-        const Result ra = clitest::hsmu({"run", config, "--controller",
-                                QStringLiteral("tcp://127.0.0.1:%1").arg(plain.port()), "--out", a});
+        const Result ra =
+            clitest::hsmu({"run", config, "--controller",
+                           QStringLiteral("tcp://127.0.0.1:%1").arg(plain.port()), "--out", a});
         QVERIFY2(ra.exitCode == 0, qPrintable(report(ra) + plain.log()));
         const QString address = QStringLiteral("tls://127.0.0.1:%1").arg(tls.port());
         const Result rb = clitest::hsmu({"run", config, "--controller", address, "--out", b});
@@ -79,7 +80,7 @@ private slots:
         QVERIFY2(rb.err.contains(address + " (native protocol, tls)"), qPrintable(rb.err));
 
         const QByteArray x = fileBytes(a + "/steps.csv"), y = fileBytes(b + "/steps.csv");
-        QCOMPARE(x.count('\n'), 202); // header + steps 0..200
+        QCOMPARE(x.count('\n'), 202);    // header + steps 0..200
         QVERIFY(x.contains("param_k0")); // updating ran on both
         QVERIFY2(x == y, "steps.csv over TLS differs from the plaintext run's");
         QCOMPARE(siteSecurity(a), std::vector<std::string>{"plaintext-loopback"});
@@ -100,16 +101,16 @@ private slots:
         auto pointed = [&](const char* scheme, quint16 d, quint16 c, const QString& name) {
             nlohmann::json k = j;
             for (auto& site : k["sites"])
-                site["address"] = std::string(scheme) + "://127.0.0.1:" +
-                                  std::to_string(site["name"] == "Lab D" ? d : c);
+                site["address"] = std::string(scheme) +
+                                  "://127.0.0.1:" + std::to_string(site["name"] == "Lab D" ? d : c);
             return write(k, name);
         };
         const QString a = m_dir.filePath("labs-tcp"), b = m_dir.filePath("labs-tls");
-        const Result ra =
-            clitest::hsmu({"run", pointed("tcp", plainD.port(), plainC.port(), "labs-tcp.json"), "--out", a});
+        const Result ra = clitest::hsmu(
+            {"run", pointed("tcp", plainD.port(), plainC.port(), "labs-tcp.json"), "--out", a});
         QVERIFY2(ra.exitCode == 0, qPrintable(report(ra) + plainD.log() + plainC.log()));
-        const Result rb =
-            clitest::hsmu({"run", pointed("tls", tlsD.port(), tlsC.port(), "labs-tls.json"), "--out", b});
+        const Result rb = clitest::hsmu(
+            {"run", pointed("tls", tlsD.port(), tlsC.port(), "labs-tls.json"), "--out", b});
         QVERIFY2(rb.exitCode == 0, qPrintable(report(rb) + tlsD.log() + tlsC.log()));
 
         const QByteArray x = fileBytes(a + "/steps.csv"), y = fileBytes(b + "/steps.csv");

@@ -70,7 +70,7 @@ public:
 
     /// hsmu-controller's TLS options: its certificate, the lab CA, the revoked list.
     QStringList controllerArgs() const {
-        return {"--tls-certificate", cert("controller"), "--tls-key",    key("controller"),
+        return {"--tls-certificate", cert("controller"), "--tls-key",     key("controller"),
                 "--tls-ca",          path("ca/ca.pem"),  "--tls-revoked", path("revoked.txt")};
     }
 

@@ -65,7 +65,8 @@ private slots:
         QVERIFY(!normalizeFingerprint(std::string(65, 'a')));
         QVERIFY(!normalizeFingerprint(std::string(63, 'a') + "g"));
         const std::string list = m_dir.filePath("pins.txt").toStdString();
-        std::ofstream(list) << "# lab D\n" << kPin << "  # its controller\n\n"
+        std::ofstream(list) << "# lab D\n"
+                            << kPin << "  # its controller\n\n"
                             << std::string(64, 'c') << "\n";
         std::vector<std::string> pins;
         std::string error;
@@ -79,7 +80,9 @@ private slots:
 
     void blockResolvedAgainstTheConfigurationFolder() {
         nlohmann::json j = preset();
-        j["tls"] = {{"ca", "ca.pem"}, {"certificate", "console.pem"}, {"key", "console.key"},
+        j["tls"] = {{"ca", "ca.pem"},
+                    {"certificate", "console.pem"},
+                    {"key", "console.key"},
                     {"pins", {kPin}}};
         TestConfig cfg;
         QCOMPARE(load(j, &cfg), std::string());
@@ -97,14 +100,17 @@ private slots:
             {{{"ca", "ca.pem"}, {"key", "console.key"}}, "tls.certificate"},
             {{{"ca", "ca.pem"}, {"certificate", "console.pem"}}, "tls.key"},
             {{{"certificate", "console.pem"}, {"key", "console.key"}}, "a CA or pinned"},
-            {{{"ca", "ca.pem"}, {"certificate", "console.pem"}, {"key", "open.key"}},
-             "chmod 600"},
+            {{{"ca", "ca.pem"}, {"certificate", "console.pem"}, {"key", "open.key"}}, "chmod 600"},
             {{{"ca", "missing.pem"}, {"certificate", "console.pem"}, {"key", "console.key"}},
              "cannot read"},
-            {{{"ca", "ca.pem"}, {"certificate", "console.pem"}, {"key", "console.key"},
+            {{{"ca", "ca.pem"},
+              {"certificate", "console.pem"},
+              {"key", "console.key"},
               {"pins", {"12:34"}}},
              "tls.pins"},
-            {{{"ca", "ca.pem"}, {"certificate", "console.pem"}, {"key", "console.key"},
+            {{{"ca", "ca.pem"},
+              {"certificate", "console.pem"},
+              {"key", "console.key"},
               {"password", "x"}},
              "password"},
         };
