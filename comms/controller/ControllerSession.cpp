@@ -59,7 +59,8 @@ void ControllerSession::start() {
 }
 
 void ControllerSession::handshake() {
-    m_stream->asyncHandshake(true, [self = shared_from_this()](const boost::system::error_code& ec) {
+    auto self = shared_from_this();
+    m_stream->asyncHandshake(true, [self](const boost::system::error_code& ec) {
         if (self->m_closed)
             return;
         if (ec) {

@@ -223,9 +223,9 @@ bool LinkClient::connect(const std::string& host, std::uint16_t port, double tim
     }
     asio::post(d->io, [this, st, host, port, where, tls] {
         tcp::socket socket(d->io);
-        st->conn = std::make_shared<Conn>(tls.ssl ? std::make_unique<ByteStream>(
-                                                        std::move(socket), tls, host)
-                                                  : std::make_unique<ByteStream>(std::move(socket)));
+        auto stream = tls.ssl ? std::make_unique<ByteStream>(std::move(socket), tls, host)
+                              : std::make_unique<ByteStream>(std::move(socket));
+        st->conn = std::make_shared<Conn>(std::move(stream));
         st->resolver = std::make_shared<tcp::resolver>(d->io);
         auto finish = [st](std::string e) {
             std::lock_guard lock(st->mu);
@@ -274,19 +274,22 @@ bool LinkClient::connect(const std::string& host, std::uint16_t port, double tim
                             install();
                             return;
                         }
-                        st->conn->stream->asyncHandshake(
-                            false, [st, where, finish, install](const boost::system::error_code& ec3) {
-                                if (!ec3) {
-                                    install();
-                                    return;
-                                }
-                                const std::string& v = st->conn->stream->verifyFailure();
-                                finish("TLS handshake with " + where + " failed: " +
-                                       tlsFailureText(ec3, v.empty() ? "" : "the controller's certificate: " + v) +
-                                       (v.empty() ? "; is the controller listening without TLS "
-                                                    "(tcp:// for a plaintext controller)?"
-                                                  : ""));
-                            });
+                        auto handshaken = [st, where, finish,
+                                           install](const boost::system::error_code& ec3) {
+                            if (!ec3) {
+                                install();
+                                return;
+                            }
+                            const std::string& v = st->conn->stream->verifyFailure();
+                            finish("TLS handshake with " + where + " failed: " +
+                                   tlsFailureText(ec3, v.empty() ? ""
+                                                                 : "the controller's certificate: " +
+                                                                       v) +
+                                   (v.empty() ? "; is the controller listening without TLS "
+                                                "(tcp:// for a plaintext controller)?"
+                                              : ""));
+                        };
+                        st->conn->stream->asyncHandshake(false, handshaken);
                     });
             });
     });
