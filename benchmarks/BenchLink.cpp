@@ -20,6 +20,7 @@
 //                          thread is blocked on a site that read its target and went silent
 //                          (tests/comms/SilentSite.h): time until the Hold frame has arrived
 //                          at the site; median and max in the counters (target <= 50 ms)
+//   BM_TargetRoundTripTls, BM_RealTimeDeadlinesTls: the same over tls:// (BenchLinkTls.cpp)
 //   BM_RealTimeDeadlines   the real-time pace for HSMU_BENCH_REALTIME_SECONDS seconds (default
 //                          skipped): deadline misses of the 1024 Hz loop (target 0);
 //                          HSMU_BENCH_REALTIME_PRIORITY=P runs the loop under SCHED_FIFO P
@@ -34,6 +35,7 @@
 #include "core/experiment/HybridTest.h"
 
 #include "../tests/comms/SilentSite.h"
+#include "LinkBenchSupport.h"
 
 #include <benchmark/benchmark.h>
 
@@ -49,51 +51,6 @@ using namespace hsmu;
 using namespace hsmu::comms;
 
 namespace {
-
-TestConfig condition3(double duration) {
-    std::ifstream in(std::string(HSMU_SOURCE_DIR) + "/resources/presets/paper-condition-3.json");
-    nlohmann::json j = nlohmann::json::parse(in);
-    j["analysis"]["duration"] = duration;
-    return parseConfig(j, "paper-condition-3.json");
-}
-
-/// A controller serving the preset's specimen on 127.0.0.1:<any port>, on its own thread.
-class LocalController {
-public:
-    /// specimen: the element served (default: the preset's); replyDelay [s]: the site's added
-    /// latency (ControllerServerOptions::replyDelay).
-    explicit LocalController(bool realTime, const ElementSpec* specimen = nullptr,
-                             double replyDelay = 0.0) {
-        const TestConfig cfg = condition3(10.0);
-        std::vector<std::unique_ptr<SpecimenStation>> st;
-        st.push_back(std::make_unique<SpecimenStation>(
-            0, specimen ? *specimen : cfg.elements[0], ControllerSettings{},
-            realTime ? SpecimenStation::Pace::RealTime : SpecimenStation::Pace::Fast, nullptr));
-        ControllerServerOptions o;
-        o.realTime = realTime;
-        o.replyDelay = replyDelay;
-        if (const char* prio = std::getenv("HSMU_BENCH_REALTIME_PRIORITY"))
-            o.realTimePriority = std::atoi(prio); // SCHED_FIFO for the controller's loop
-        o.quiet = true;
-        m_server = std::make_unique<ControllerServer>(o, std::move(st));
-        std::string error;
-        if (!m_server->listen(error))
-            std::fprintf(stderr, "%s\n", error.c_str());
-        m_thread = std::thread([this] { m_server->run(); });
-    }
-    ~LocalController() { stop(); }
-    std::uint16_t port() const { return m_server->port(); }
-    ControllerStatistics stop() {
-        m_server->stop();
-        if (m_thread.joinable())
-            m_thread.join();
-        return m_server->statistics();
-    }
-
-private:
-    std::unique_ptr<ControllerServer> m_server;
-    std::thread m_thread;
-};
 
 /// hsmu-controller's SimApp element server for the preset's specimen, on its own thread.
 class LocalSimAppServer {
@@ -123,43 +80,10 @@ private:
     std::thread m_thread;
 };
 
-double percentile(std::vector<double> v, double p) {
-    if (v.empty())
-        return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(p * double(v.size() - 1))];
-}
-
 void BM_TargetRoundTrip(benchmark::State& state) {
     LocalController ctl(false);
     LinkClient link;
-    std::string e;
-    if (!link.connect("127.0.0.1", ctl.port(), 10.0, e) || !link.send(HelloMsg{1, 1, "", ""}, e) ||
-        !link.receive(10.0, e) || !link.send(ConfigureMsg{0.01}, e) || !link.receive(10.0, e)) {
-        state.SkipWithError(e.c_str());
-        return;
-    }
-    std::vector<double> rtt;
-    std::uint64_t n = 0;
-    for (auto _ : state) {
-        ++n;
-        const double d = 1e-3 * std::sin(0.01 * double(n));
-        const auto t0 = std::chrono::steady_clock::now();
-        link.send(TargetMsg{n, d}, e);
-        const auto m = link.receive(10.0, e);
-        const auto t1 = std::chrono::steady_clock::now();
-        const double s = std::chrono::duration<double>(t1 - t0).count();
-        state.SetIterationTime(s);
-        rtt.push_back(s);
-        if (!m || !std::holds_alternative<MeasurementMsg>(*m)) {
-            state.SkipWithError("no measurement");
-            return;
-        }
-        link.send(CommitMsg{n}, e);
-        link.receive(10.0, e);
-    }
-    state.counters["median_us"] = percentile(rtt, 0.5) * 1e6;
-    state.counters["p99_us"] = percentile(rtt, 0.99) * 1e6;
+    targetRoundTrips(state, link, ctl.port());
 }
 BENCHMARK(BM_TargetRoundTrip)->UseManualTime()->Iterations(20000)->Unit(benchmark::kMicrosecond);
 
@@ -543,36 +467,7 @@ void BM_OpenSeesGenericTcp(benchmark::State& state) {
 BENCHMARK(BM_OpenSeesGenericTcp)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_RealTimeDeadlines(benchmark::State& state) {
-    const char* env = std::getenv("HSMU_BENCH_REALTIME_SECONDS");
-    const double seconds = env ? std::atof(env) : 0.0;
-    if (!(seconds > 0.0)) {
-        state.SkipWithError("set HSMU_BENCH_REALTIME_SECONDS=60 to run the real-time pace");
-        return;
-    }
-    for (auto _ : state) {
-        LocalController ctl(true);
-        TcpControl c("127.0.0.1", ctl.port(), "", {}, TcpControlOptions{});
-        if (!c.prepare(0.01).ok) {
-            state.SkipWithError("prepare failed");
-            return;
-        }
-        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-        long n = 0;
-        while (std::chrono::steady_clock::now() < end) {
-            ++n;
-            ControlMeasurement m;
-            if (!c.setTarget(1e-3 * std::sin(0.01 * double(n))).ok || !c.measure(m).ok ||
-                !c.commit().ok) {
-                state.SkipWithError("step failed");
-                return;
-            }
-        }
-        const ControllerStatistics s = ctl.stop();
-        state.counters["steps"] = double(n);
-        state.counters["ticks"] = double(s.ticks);
-        state.counters["deadline_misses"] = double(s.deadlineMisses);
-        state.counters["max_lateness_us"] = s.maxLateness * 1e6;
-    }
+    realTimeDeadlines(state, nullptr);
 }
 BENCHMARK(BM_RealTimeDeadlines)->Iterations(1)->Unit(benchmark::kSecond);
 

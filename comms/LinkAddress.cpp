@@ -1,5 +1,7 @@
 #include "comms/LinkAddress.h"
 
+#include <boost/asio/ip/address.hpp>
+
 #include <charconv>
 
 namespace hsmu::comms {
@@ -9,7 +11,7 @@ std::optional<LinkAddress> fail(std::string* error, const std::string& text, con
     if (error)
         *error = "controller address '" + text + "': " + why +
                  " (expected 'builtin', 'tcp://HOST:PORT', 'simapp://HOST:PORT', "
-                 "'generictcp://HOST:PORT' or 'adapter://HOST:PORT')";
+                 "'generictcp://HOST:PORT', 'adapter://HOST:PORT' or 'tls://HOST:PORT')";
     return std::nullopt;
 }
 } // namespace
@@ -20,7 +22,8 @@ std::optional<LinkAddress> LinkAddress::parse(const std::string& text, std::stri
     const std::pair<const char*, Kind> schemes[] = {{"tcp://", Kind::Tcp},
                                                     {"simapp://", Kind::SimApp},
                                                     {"generictcp://", Kind::GenericTcp},
-                                                    {"adapter://", Kind::Adapter}};
+                                                    {"adapter://", Kind::Adapter},
+                                                    {"tls://", Kind::Tls}};
     std::string rest;
     Kind kind = Kind::Builtin;
     for (const auto& [scheme, k] : schemes)
@@ -67,8 +70,29 @@ std::string LinkAddress::toString() const {
     const char* scheme = kind == Kind::SimApp       ? "simapp://"
                          : kind == Kind::GenericTcp ? "generictcp://"
                          : kind == Kind::Adapter    ? "adapter://"
+                         : kind == Kind::Tls        ? "tls://"
                                                     : "tcp://";
     return scheme + (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+}
+
+bool isLoopbackAddress(const std::string& address) {
+    boost::system::error_code ec;
+    const auto a = boost::asio::ip::make_address(address, ec);
+    if (ec)
+        return false;
+    if (a.is_v6() && a.to_v6().is_v4_mapped())
+        return boost::asio::ip::make_address_v4(boost::asio::ip::v4_mapped, a.to_v6())
+            .is_loopback();
+    return a.is_loopback();
+}
+
+std::string LinkAddress::security() const {
+    if (kind == Kind::Builtin)
+        return "builtin";
+    if (kind == Kind::Tls)
+        return "tls";
+    return host == "localhost" || isLoopbackAddress(host) ? "plaintext-loopback"
+                                                          : "insecure-plaintext";
 }
 
 } // namespace hsmu::comms

@@ -131,6 +131,11 @@ py::dict run(py::handle config, py::handle groundMotion, py::handle scale, py::h
     HeadlessOptions options;
     options.outDir = out.is_none() ? std::string() : fspath(out);
     options.reconnect.attempts = reconnect;
+    {
+        std::string ignored;
+        if (const auto address = comms::LinkAddress::parse(controller, &ignored))
+            options.siteSecurity = comms::siteSecurity(*address, cfg);
+    }
     std::unique_ptr<HybridTest> test =
         buildHybridTest(cfg, controlFactory(cfg, controller, tokenFile));
     std::unique_ptr<HeadlessRun> headless;

@@ -12,6 +12,7 @@ packages=(
   qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev libqt6opengl6-dev
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libboost-dev libboost-system-dev libhdf5-dev hdf5-tools nlohmann-json3-dev
+  libssl-dev openssl  # tls:// links (OpenSSL 3) and scripts/hsmu-certs.sh
   libbenchmark-dev xvfb xauth
   python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module hsmu (docs/python.md)
   fonts-wqy-microhei  # Chinese glyphs for the zh_CN console and its screenshots

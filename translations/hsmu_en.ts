@@ -1274,8 +1274,8 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>hsmu run: --approval ignored: the configuration has no updating</translation>
     </message>
     <message>
-        <source>hsmu run: connecting to %1 (%2 protocol)</source>
-        <translation>hsmu run: connecting to %1 (%2 protocol)</translation>
+        <source>hsmu run: connecting to %1 (%2 protocol, %3)</source>
+        <translation>hsmu run: connecting to %1 (%2 protocol, %3)</translation>
     </message>
     <message>
         <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
@@ -2982,6 +2982,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>OpenSees adapter element (numerical substructure)</source>
         <translation>OpenSees adapter element (numerical substructure)</translation>
+    </message>
+    <message>
+        <source>hsmu-controller over TLS (the configuration's tls block)</source>
+        <translation>hsmu-controller over TLS (the configuration's tls block)</translation>
     </message>
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test's steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>

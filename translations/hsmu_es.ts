@@ -1274,8 +1274,8 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1: no se pudo escribir la gráfica</translation>
     </message>
     <message>
-        <source>hsmu run: connecting to %1 (%2 protocol)</source>
-        <translation>hsmu run: conectando con %1 (protocolo %2)</translation>
+        <source>hsmu run: connecting to %1 (%2 protocol, %3)</source>
+        <translation>hsmu run: conectando con %1 (protocolo %2, %3)</translation>
     </message>
     <message>
         <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
@@ -2982,6 +2982,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>OpenSees adapter element (numerical substructure)</source>
         <translation>elemento adapter de OpenSees (subestructura numérica)</translation>
+    </message>
+    <message>
+        <source>hsmu-controller over TLS (the configuration's tls block)</source>
+        <translation>hsmu-controller por TLS (el bloque tls de la configuración)</translation>
     </message>
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>

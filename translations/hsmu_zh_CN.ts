@@ -1274,8 +1274,8 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1：无法写出图表</translation>
     </message>
     <message>
-        <source>hsmu run: connecting to %1 (%2 protocol)</source>
-        <translation>hsmu run：正在连接 %1（%2 协议）</translation>
+        <source>hsmu run: connecting to %1 (%2 protocol, %3)</source>
+        <translation>hsmu run：正在连接 %1（%2 协议，%3）</translation>
     </message>
     <message>
         <source>hsmu run: steps.csv not written (%1 columns); record.h5 holds every column (hsmu export writes CSV from it)</source>
@@ -2979,6 +2979,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>OpenSees adapter element (numerical substructure)</source>
         <translation>OpenSees adapter 单元（数值子结构）</translation>
+    </message>
+    <message>
+        <source>hsmu-controller over TLS (the configuration's tls block)</source>
+        <translation>通过 TLS 连接 hsmu-controller（配置中的 tls 块）</translation>
     </message>
     <message>
         <source>OpenSees listens: start the model with its `element adapter ... PORT` first (its analyze must have at least the test&apos;s steps). A step is final once the next one is sent: after a hold the test cannot repeat it.</source>

@@ -105,17 +105,34 @@ bool ControllerApp::start(std::string& error) {
                          st->name().c_str(), static_cast<unsigned long long>(st->committedSteps()),
                          m_cmd.state.c_str());
     const bool exposed = !ControllerCommandLine::isLoopback(m_cmd.bind);
-    if (exposed && protocol == "native" && !m_cmd.insecurePlaintext) {
+    if (m_cmd.tls && protocol != "native") {
         m_usageRefused = true;
-        error = "--bind " + m_cmd.bind +
-                " is not a loopback address, and the native protocol is plaintext: the token "
-                "and every command would cross the network in clear, readable and forgeable on "
-                "the path. This build has no TLS: keep --bind 127.0.0.1 and tunnel the port "
-                "(stunnel or ssh -L; docs/security.md), or pass --insecure-plaintext to take "
-                "that risk on a network you trust";
+        error = "--tls-* options apply to the native protocol only (the OpenFresco protocols "
+                "carry no security: tunnel them, docs/security.md)";
         return false;
     }
-    if (exposed && protocol == "native")
+    if (m_cmd.tls && m_cmd.insecurePlaintext) {
+        m_usageRefused = true;
+        error = "--insecure-plaintext contradicts the --tls-* options: choose one";
+        return false;
+    }
+    if (m_cmd.tls && !checkTlsSpec(*m_cmd.tls, error)) {
+        m_usageRefused = true;
+        error = "--tls-*: " + error;
+        return false;
+    }
+    if (exposed && protocol == "native" && !m_cmd.tls && !m_cmd.insecurePlaintext) {
+        m_usageRefused = true;
+        error = "--bind " + m_cmd.bind +
+                " is not a loopback address, and without TLS the native protocol is plaintext: "
+                "the token and every command would cross the network in clear, readable and "
+                "forgeable on the path. Use TLS (--tls-certificate F --tls-key F --tls-ca F; "
+                "scripts/hsmu-certs.sh makes them; docs/security.md), or keep --bind 127.0.0.1 "
+                "and tunnel the port, or pass --insecure-plaintext to take that risk on a "
+                "network you trust";
+        return false;
+    }
+    if (exposed && protocol == "native" && !m_cmd.tls)
         std::fprintf(stderr,
                      "hsmu-controller: --insecure-plaintext: the native protocol runs in clear "
                      "on %s (token and commands readable and forgeable on the path)%s\n",
@@ -163,6 +180,7 @@ bool ControllerApp::start(std::string& error) {
         o.bind = m_cmd.bind;
         o.port = m_cmd.port;
         o.token = token;
+        o.tls = m_cmd.tls;
         o.idleTimeout = settings.idleTimeout;
         o.rate = settings.rate;
         o.realTime = !m_cmd.fast;
@@ -172,6 +190,10 @@ bool ControllerApp::start(std::string& error) {
         m_server = std::make_unique<ControllerServer>(o, std::move(stations));
         if (!m_server->listen(error))
             return false;
+        if (m_cmd.tls)
+            what = std::string("TLS 1.3, client certificates from ") +
+                   (m_cmd.tls->ca.empty() ? "the pins" : m_cmd.tls->ca) +
+                   (token.empty() ? "" : " and the token") + ", ";
     }
     std::printf("hsmu-controller: listening on %s:%u (%s%s pace, %zu specimen%s: %s)\n",
                 m_cmd.bind.c_str(), unsigned(port()), what.c_str(),

@@ -1,5 +1,6 @@
 #include "comms/controller/ControllerCommandLine.h"
 
+#include "comms/LinkAddress.h"
 #include "core/config/PresetCatalog.h"
 
 #include <boost/asio/ip/address.hpp>
@@ -14,18 +15,27 @@ const char* ControllerCommandLine::usage() {
     return "usage: hsmu-controller --config FILE --port PORT [--bind ADDR [--insecure-plaintext]] "
            "[--pace realtime|fast] [--token-file F] [--state-file FILE | --no-state-file] "
            "[--quiet]\n"
+           "                       [--tls-certificate F --tls-key F (--tls-ca F | --tls-pins F) "
+           "[--tls-revoked F]]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "  --config FILE   the console's test configuration (JSON) or a preset name\n"
            "                  (e.g. paper-condition-3); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
            "  --port PORT     TCP port, 0 = any free port (printed on stdout)\n"
-           "  --bind ADDR     address to listen on (default 127.0.0.1); the native protocol\n"
-           "                  is plaintext: a non-loopback address is refused unless\n"
-           "                  --insecure-plaintext (docs/security.md: tunnel it instead)\n"
+           "  --bind ADDR     address to listen on (default 127.0.0.1); without TLS the\n"
+           "                  native protocol is plaintext: a non-loopback address is refused\n"
+           "                  unless --tls-certificate or --insecure-plaintext\n"
            "  --insecure-plaintext\n"
            "                  accept a non-loopback --bind for the plaintext native\n"
            "                  protocol (the token and commands cross the network in clear)\n"
+           "  --tls-certificate F, --tls-key F\n"
+           "                  native protocol in TLS 1.3 (tls://): this controller's\n"
+           "                  certificate and key (PEM; the key readable by its owner only)\n"
+           "  --tls-ca F      clients must show a certificate this CA signed ...\n"
+           "  --tls-pins F    ... or one whose SHA-256 fingerprint F lists (one a line)\n"
+           "  --tls-revoked F fingerprints refused even under the CA (one a line); SIGHUP\n"
+           "                  re-reads every TLS file (docs/security.md)\n"
            "  --pace P        realtime (wall clock, default) or fast (simulated clock)\n"
            "  --token-file F  file holding the shared secret the console's hello must carry\n"
            "                  (or the environment variable HSMU_CONTROLLER_TOKEN; never an\n"
@@ -116,6 +126,17 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
                 return std::nullopt;
         } else if (a == "--bind") {
             if (!value(c.bind))
+                return std::nullopt;
+        } else if (a == "--tls-certificate" || a == "--tls-key" || a == "--tls-ca" ||
+                   a == "--tls-pins" || a == "--tls-revoked") {
+            if (!c.tls)
+                c.tls.emplace();
+            std::string& field = a == "--tls-certificate" ? c.tls->certificate
+                                 : a == "--tls-key"       ? c.tls->key
+                                 : a == "--tls-ca"        ? c.tls->ca
+                                 : a == "--tls-pins"      ? c.tls->pinsFile
+                                                          : c.tls->revokedFile;
+            if (!value(field))
                 return std::nullopt;
         } else if (a == "--insecure-plaintext") {
             c.insecurePlaintext = true;
@@ -214,14 +235,7 @@ std::string ControllerCommandLine::resolveConfig(const std::string& configOrPres
 }
 
 bool ControllerCommandLine::isLoopback(const std::string& address) {
-    boost::system::error_code ec;
-    const auto a = boost::asio::ip::make_address(address, ec);
-    if (ec)
-        return false;
-    if (a.is_v6() && a.to_v6().is_v4_mapped())
-        return boost::asio::ip::make_address_v4(boost::asio::ip::v4_mapped, a.to_v6())
-            .is_loopback();
-    return a.is_loopback();
+    return isLoopbackAddress(address);
 }
 
 } // namespace hsmu::comms

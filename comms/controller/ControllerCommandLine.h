@@ -4,13 +4,15 @@
 //   hsmu-controller --config FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]
 //                   [--token-file F] [--state-file FILE | --no-state-file] [--quiet]
 //                   [--protocol native|simapp|generictcp] [--data-size N] [--simapp-site]
-//                   [--realtime-priority P]
+//                   [--realtime-priority P] [--tls-certificate F --tls-key F --tls-ca F
+//                   --tls-pins F --tls-revoked F]
 //
 // --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
-// --bind defaults to 127.0.0.1: exposing the controller is an explicit choice. The native
-// protocol is plaintext: on a non-loopback address it is refused (ControllerApp, exit 2)
-// unless --insecure-plaintext takes the risk; the OpenFresco protocols warn there
-// (docs/security.md).
+// --bind defaults to 127.0.0.1: exposing the controller is an explicit choice. The --tls-*
+// options (the names of the console's "tls" block, core/config/TlsConfig.h) make the native
+// protocol TLS 1.3 with client certificates. Without them it is plaintext: on a non-loopback
+// address it is refused (ControllerApp, exit 2) unless --insecure-plaintext takes the risk;
+// the OpenFresco protocols warn there (docs/security.md).
 // The token comes from --token-file (its first line) or HSMU_CONTROLLER_TOKEN, never from an
 // argument (ps shows arguments to every user); --token is refused with that sentence.
 // The state file (StateJournal: a restarted controller continues every specimen) is kept by
@@ -18,6 +20,8 @@
 // otherwise, on a fixed port, it is defaultStateFile():
 // $XDG_STATE_HOME/hsmu/controller/<config>-<port>.state ($XDG_STATE_HOME defaults to
 // ~/.local/state; docs/cli.md). --port 0 has no default (a restart would listen elsewhere).
+
+#include "core/config/TlsConfig.h"
 
 #include <cstdint>
 #include <optional>
@@ -33,6 +37,7 @@ struct ControllerCommandLine {
     bool fast = false; ///< --pace fast: simulated clock (as fast as possible)
     std::string tokenFile; ///< --token-file: the token is its first line
     bool insecurePlaintext = false; ///< native protocol in clear on a non-loopback address
+    std::optional<TlsSpec> tls;     ///< any --tls-* option given: the native protocol in TLS
     std::string state;        ///< --state-file (or --state): the journal; "" = default or none
     bool noStateFile = false; ///< --no-state-file: no journal at all
     bool quiet = false;

@@ -2,6 +2,7 @@
 
 #include "comms/LogText.h"
 #include "comms/controller/ControllerSession.h"
+#include "comms/tls/TlsContext.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
@@ -46,6 +47,8 @@ struct ControllerServer::Impl final : SessionHost {
     asio::io_context io{1};
     asio::ip::tcp::acceptor acceptor{io};
     asio::signal_set signals{io};
+    asio::signal_set hangup{io}; // SIGHUP: reload the TLS files
+    TlsContext tls;              // the listener's; replaced by a reload
     asio::steady_timer ticker{io};
     std::set<std::shared_ptr<ControllerSession>> sessions;
     std::deque<std::weak_ptr<ControllerSession>> pending; // accepted, not admitted, oldest first
@@ -75,7 +78,9 @@ struct ControllerServer::Impl final : SessionHost {
                 if (ec == asio::error::operation_aborted)
                     return;
                 if (!ec) {
-                    auto s = std::make_shared<ControllerSession>(std::move(socket), *this);
+                    auto stream = tls.ssl ? std::make_unique<ByteStream>(std::move(socket), tls, "")
+                                          : std::make_unique<ByteStream>(std::move(socket));
+                    auto s = std::make_shared<ControllerSession>(std::move(stream), *this);
                     sessions.insert(s);
                     pending.push_back(s);
                     s->start();
@@ -83,6 +88,35 @@ struct ControllerServer::Impl final : SessionHost {
                 }
                 accept();
             });
+    }
+
+    bool reloadTls(std::string& error) {
+        if (!opt.tls)
+            return true;
+        TlsContext fresh = makeTlsContext(*opt.tls, TlsRole::Server, error);
+        if (!fresh.ssl)
+            return false;
+        tls = std::move(fresh);
+        for (const auto& s : std::set<std::shared_ptr<ControllerSession>>(sessions))
+            if (tls.policy->revoked.count(s->peerFingerprint())) {
+                log("closing " + s->peer() + ": its certificate is now revoked");
+                s->refuse({ErrorCode::Unauthorized, "the client certificate is revoked"});
+            }
+        return true;
+    }
+
+    void waitHangup() {
+        hangup.async_wait([this](const boost::system::error_code& ec, int) {
+            if (ec)
+                return;
+            std::string error;
+            if (reloadTls(error))
+                log("SIGHUP: TLS files reloaded (" + std::to_string(tls.policy->pins.size()) +
+                    " pins, " + std::to_string(tls.policy->revoked.size()) + " revoked)");
+            else
+                log("SIGHUP: TLS reload refused, the previous files stay: " + error);
+            waitHangup();
+        });
     }
 
     void prunePending() {
@@ -320,7 +354,13 @@ ControllerServer::ControllerServer(const ControllerServerOptions& options,
 
 ControllerServer::~ControllerServer() = default;
 
+bool ControllerServer::reloadTls(std::string& error) {
+    return d->reloadTls(error);
+}
+
 bool ControllerServer::listen(std::string& error) {
+    if (d->opt.tls && !d->reloadTls(error))
+        return false;
     boost::system::error_code ec;
     const auto address = asio::ip::make_address(d->opt.bind, ec);
     if (ec) {
@@ -357,6 +397,10 @@ void ControllerServer::run() {
         if (!ec)
             stop();
     });
+    if (d->opt.tls) {
+        d->hangup.add(SIGHUP);
+        d->waitHangup();
+    }
     if (d->opt.realTime && d->opt.realTimePriority > 0) {
         sched_param sp{};
         sp.sched_priority = d->opt.realTimePriority;
@@ -375,6 +419,7 @@ void ControllerServer::stop() {
         d->acceptor.close(ec);
         d->ticker.cancel();
         d->signals.cancel();
+        d->hangup.cancel();
         for (const auto& s : std::set<std::shared_ptr<ControllerSession>>(d->sessions)) {
             s->send(ByeMsg{"controller shutting down"});
             s->close();

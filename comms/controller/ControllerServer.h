@@ -7,12 +7,20 @@
 // steady-clock timer that wakes 100 us before each tick and spins to it (ticks that come due
 // while the thread was busy are run at once; each tick run more than one period late counts
 // as a deadline miss), optionally under SCHED_FIFO (realTimePriority).
+// With options.tls the port speaks TLS 1.3 only, with mutual authentication: every client must
+// show a certificate its CA signed or whose fingerprint is pinned, not revoked
+// (comms/tls/PeerPolicy.h); the token is then a second factor. SIGHUP re-reads the TLS files
+// (certificate, key, CA, pins, revoked list): connections from then on use them, and admitted
+// sessions whose certificate is now revoked are closed; a reload that fails keeps the old
+// ones and says why (docs/security.md, "Rotation and revocation").
 // Thread rules: construct, listen() and run() on one thread; stop() from any thread.
 
 #include "comms/controller/SpecimenStation.h"
+#include "core/config/TlsConfig.h"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +30,7 @@ struct ControllerServerOptions {
     std::string bind = "127.0.0.1";
     std::uint16_t port = 0; ///< 0: any free port (see port() after listen())
     std::string token;      ///< "" accepts any hello
+    std::optional<TlsSpec> tls; ///< TLS 1.3 with client certificates; nullopt: plaintext
     double idleTimeout = 10.0;
     double rate = 1024.0; ///< loop rate [Hz] (real-time pace)
     bool realTime = true;
@@ -55,6 +64,9 @@ public:
     /// Bind and listen; false with a sentence in error.
     bool listen(std::string& error);
     std::uint16_t port() const;
+    /// Re-read the TLS files now (what SIGHUP does); false with the reason in error (the old
+    /// ones stay). True without TLS.
+    bool reloadTls(std::string& error);
     /// Serve until stop(), SIGINT or SIGTERM.
     void run();
     void stop();

@@ -2,6 +2,8 @@
 
 #include <boost/asio/write.hpp>
 
+#include <openssl/ssl.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,18 +19,91 @@ constexpr double kHelloTimeout = 5.0; // [s]
 constexpr auto kRefusalGrace = std::chrono::seconds(2);
 }
 
-ControllerSession::ControllerSession(asio::ip::tcp::socket socket, SessionHost& host)
-    : m_socket(std::move(socket)), m_idle(m_socket.get_executor()), m_host(host) {
+ControllerSession::ControllerSession(std::unique_ptr<ByteStream> stream, SessionHost& host)
+    : m_stream(std::move(stream)), m_idle(m_stream->socket().get_executor()), m_host(host) {
     boost::system::error_code ec;
-    m_socket.set_option(asio::ip::tcp::no_delay(true), ec);
-    const auto ep = m_socket.remote_endpoint(ec);
+    m_stream->socket().set_option(asio::ip::tcp::no_delay(true), ec);
+    const auto ep = m_stream->socket().remote_endpoint(ec);
     m_peer = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
 }
 
 void ControllerSession::start() {
     m_lastActivity = std::chrono::steady_clock::now();
-    armIdle(kHelloTimeout);
-    read();
+    armIdle(kHelloTimeout); // the TLS handshake counts against the hello's time
+    if (!m_stream->tls()) {
+        read();
+        return;
+    }
+    // Look at the first bytes before TLS takes them: a plaintext client is told in its own
+    // framing that this port speaks TLS.
+    m_stream->socket().async_wait(
+        asio::ip::tcp::socket::wait_read,
+        [self = shared_from_this()](const boost::system::error_code& ec) {
+            if (self->m_closed)
+                return;
+            if (ec) {
+                self->close();
+                return;
+            }
+            std::array<std::uint8_t, 3> head{};
+            boost::system::error_code e;
+            const std::size_t n = self->m_stream->socket().receive(
+                asio::buffer(head), asio::ip::tcp::socket::message_peek, e);
+            if (!e && n > 0 && head[0] != 0x16)
+                self->refusePlaintextOnTls();
+            else if (!e && n > 0)
+                self->handshake();
+            else
+                self->close();
+        });
+}
+
+void ControllerSession::handshake() {
+    auto self = shared_from_this();
+    m_stream->asyncHandshake(true, [self](const boost::system::error_code& ec) {
+        if (self->m_closed)
+            return;
+        if (ec) {
+            const std::string& v = self->m_stream->verifyFailure();
+            self->m_host.dropped(*self,
+                                 "TLS handshake failed: " +
+                                     tlsFailureText(ec, v.empty() ? "" : "its certificate: " + v));
+            self->close();
+            return;
+        }
+        self->m_secured = true;
+        if (X509* cert = SSL_get1_peer_certificate(self->m_stream->nativeHandle())) {
+            self->m_fingerprint = certificateFingerprint(cert);
+            X509_free(cert);
+        }
+        self->read();
+    });
+}
+
+void ControllerSession::refusePlaintextOnTls() {
+    // The Error frame goes out on the TCP socket itself, in the client's plaintext framing.
+    const std::string why = "this controller speaks TLS on this port: connect with "
+                            "tls://HOST:PORT and a client certificate (docs/security.md)";
+    m_host.dropped(*this, "a plaintext client on the TLS port (told to use tls://)");
+    auto bytes = std::make_shared<std::vector<std::uint8_t>>();
+    encodeFrame(ErrorMsg{ErrorCode::Unauthorized, why}, m_sequence++, *bytes);
+    m_closeAfterWrite = true;
+    m_idle.expires_after(kRefusalGrace);
+    m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
+        if (!ec)
+            self->close();
+    });
+    asio::async_write(m_stream->socket(), asio::buffer(*bytes),
+                      [self = shared_from_this(), bytes](const boost::system::error_code& ec,
+                                                         std::size_t) {
+                          if (self->m_closed)
+                              return;
+                          if (ec) {
+                              self->close();
+                              return;
+                          }
+                          self->m_stream->shutdownSend();
+                      });
 }
 
 void ControllerSession::armIdle(double seconds) {
@@ -68,12 +143,16 @@ void ControllerSession::waitIdle() {
         const std::string why = self->m_admitted ? "no frame for " + std::to_string(s) + " s"
                                                  : "no hello within " + std::to_string(s) + " s";
         self->m_host.dropped(*self, why);
+        if (self->m_stream->tls() && !self->m_secured) {
+            self->close(); // no TLS session to say it in
+            return;
+        }
         self->refuse({ErrorCode::Timeout, why});
     });
 }
 
 void ControllerSession::read() {
-    m_socket.async_read_some(asio::buffer(m_readBuffer), [self = shared_from_this()](
+    m_stream->asyncReadSome(asio::buffer(m_readBuffer), [self = shared_from_this()](
                                                              const boost::system::error_code& ec,
                                                              std::size_t n) {
         if (self->m_closed)
@@ -84,6 +163,15 @@ void ControllerSession::read() {
         }
         // After a refusal the input is drained, not decoded, until the peer closes: closing
         // with unread input would send a reset that can destroy the error frame in flight.
+        if (!self->m_received && !self->m_stream->tls() &&
+            looksLikeTls(self->m_readBuffer.data(), n)) {
+            // A frame would only confuse its handshake: close, and say why here.
+            self->m_host.dropped(*self, "a TLS client on a plaintext port (this controller "
+                                        "was started without --tls-certificate)");
+            self->close();
+            return;
+        }
+        self->m_received = true;
         if (!self->m_closeAfterWrite) {
             self->m_decoder.append(self->m_readBuffer.data(), n);
             Frame f;
@@ -202,8 +290,7 @@ void ControllerSession::refuseLater(const ErrorMsg& e, double delay) {
 
 void ControllerSession::finish() {
     // All written: half-close, and give the peer a moment to read and close its side.
-    boost::system::error_code ec;
-    m_socket.shutdown(asio::ip::tcp::socket::shutdown_send, ec);
+    m_stream->shutdownSend();
     m_idle.expires_after(kRefusalGrace);
     m_idle.async_wait([self = shared_from_this()](const boost::system::error_code& e) {
         if (!e)
@@ -216,8 +303,8 @@ void ControllerSession::write() {
         return;
     m_writing = true;
     m_writeStarted = std::chrono::steady_clock::now();
-    asio::async_write(
-        m_socket, asio::buffer(m_writes.front()),
+    m_stream->asyncWrite(
+        asio::buffer(m_writes.front()),
         [self = shared_from_this()](const boost::system::error_code& ec, std::size_t) {
             self->m_writing = false;
             if (self->m_closed)
@@ -239,10 +326,8 @@ void ControllerSession::close() {
     if (m_closed)
         return;
     m_closed = true;
-    boost::system::error_code ec;
     m_idle.cancel();
-    m_socket.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
-    m_socket.close(ec);
+    m_stream->close();
     m_writes.clear();
     m_queuedBytes = 0;
     m_host.closed(*this);

@@ -2,7 +2,10 @@
 // ControllerSession: one console connection to hsmu-controller (internal to the controller:
 // this header includes Asio and is not part of any public API).
 //
-// Life: accepted -> Hello within 5 s (else Error(Timeout), close) -> admitted by the host
+// Life: accepted -> (TLS listener: the TLS 1.3 handshake, the client's certificate verified;
+// a client whose first bytes are not a TLS handshake gets a plaintext Error frame saying the
+// port speaks TLS; plaintext listener: a client whose first bytes are a TLS handshake is
+// closed with a log line) -> Hello within 5 s (else Error(Timeout), close) -> admitted by the host
 // (token, version, element, one console session at a time) -> frames are handed to the host
 // and its replies sent back; Heartbeat is echoed here; silence past the idle timeout, a
 // malformed frame or Bye closes it. A frame that must close the connection (Error with a
@@ -15,6 +18,7 @@
 // Thread rules: the controller's single io thread.
 
 #include "comms/protocol/FrameDecoder.h"
+#include "comms/tls/ByteStream.h"
 
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -52,7 +56,8 @@ public:
     /// [bytes] the send queue's cap (a few thousand frames: far more than any console lags).
     static constexpr std::size_t kMaxQueuedBytes = 256 * 1024;
 
-    ControllerSession(boost::asio::ip::tcp::socket socket, SessionHost& host);
+    /// stream: plain TCP, or TLS whose handshake start() performs (under the hello timeout).
+    ControllerSession(std::unique_ptr<ByteStream> stream, SessionHost& host);
     void start();
     void send(const Message& m);
     /// Send a final error frame, then close.
@@ -67,8 +72,13 @@ public:
     int station() const { return m_station; }
     void setStation(int index) { m_station = index; }
     const std::string& peer() const { return m_peer; }
+    /// TLS: the SHA-256 fingerprint of the client's certificate ("" before the handshake or
+    /// in plaintext).
+    const std::string& peerFingerprint() const { return m_fingerprint; }
 
 private:
+    void handshake();
+    void refusePlaintextOnTls();
     void read();
     void onFrame(const Frame& f);
     void write();
@@ -76,7 +86,7 @@ private:
     void armIdle(double seconds);
     void waitIdle();
 
-    boost::asio::ip::tcp::socket m_socket;
+    std::unique_ptr<ByteStream> m_stream;
     boost::asio::steady_timer m_idle;
     SessionHost& m_host;
     FrameDecoder m_decoder;
@@ -91,6 +101,9 @@ private:
     std::uint64_t m_sessionId = 0;
     int m_station = -1;
     std::string m_peer;
+    std::string m_fingerprint;
+    bool m_received = false; ///< any byte decoded yet (plaintext: the TLS check)
+    bool m_secured = false;  ///< TLS: the handshake is done (frames may be written)
     std::chrono::steady_clock::time_point m_lastActivity; ///< last frame received
     std::chrono::steady_clock::time_point m_writeStarted; ///< the pending write's start
     double m_idleSeconds = 5.0;

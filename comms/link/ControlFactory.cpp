@@ -20,6 +20,16 @@ std::uint64_t newSessionId() {
     return id == 0 ? 1 : id;
 }
 
+std::vector<std::pair<std::string, std::string>> siteSecurity(const LinkAddress& address,
+                                                              const TestConfig& cfg) {
+    std::vector<std::pair<std::string, std::string>> out{{kDefaultSiteName, address.security()}};
+    for (const SiteSpec& site : cfg.sites) {
+        const auto a = LinkAddress::parse(site.address);
+        out.emplace_back(site.name, a ? a->security() : std::string("unknown"));
+    }
+    return out;
+}
+
 std::string linkProtocol(const LinkAddress& address, const LinkSpec& link) {
     switch (address.kind) {
     case LinkAddress::Kind::Builtin:
@@ -30,6 +40,8 @@ std::string linkProtocol(const LinkAddress& address, const LinkSpec& link) {
         return "generictcp";
     case LinkAddress::Kind::Adapter:
         return "adapter";
+    case LinkAddress::Kind::Tls:
+        return "native";
     case LinkAddress::Kind::Tcp:
         break;
     }
@@ -75,6 +87,8 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
     TcpControlOptions o = options;
     if (o.sessionId == 0)
         o.sessionId = newSessionId();
+    if (address.kind == LinkAddress::Kind::Tls) // no tls block: connecting says what is missing
+        o.tls = link.tls.value_or(TlsSpec{});
     return [address, o](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
         return std::make_unique<TcpControl>(address.host, address.port, spec.name, spec.limits, o);
     };

@@ -40,6 +40,12 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
 /// the in-process specimens).
 std::string linkProtocol(const LinkAddress& address, const LinkSpec& link);
 
+/// How each site's link is protected (site name -> LinkAddress::security()): the
+/// configuration's sites, and kDefaultSiteName for address (the front end's --controller), for
+/// the record (RecordStart::siteSecurity, docs/recording.md).
+std::vector<std::pair<std::string, std::string>> siteSecurity(const LinkAddress& address,
+                                                              const TestConfig& cfg);
+
 /// A random non-zero 64-bit session id.
 std::uint64_t newSessionId();
 

@@ -1,6 +1,7 @@
 #include "comms/link/LinkClient.h"
 
 #include "comms/protocol/FrameDecoder.h"
+#include "comms/tls/ByteStream.h"
 
 #include <boost/asio/connect.hpp>
 #include <boost/asio/executor_work_guard.hpp>
@@ -36,8 +37,9 @@ std::string secondsText(double s) {
 }
 
 struct Conn {
-    explicit Conn(asio::io_context& io) : socket(io) {}
-    tcp::socket socket;
+    explicit Conn(std::unique_ptr<ByteStream> s) : stream(std::move(s)) {}
+    std::unique_ptr<ByteStream> stream;
+    bool received = false; // any byte yet
     FrameDecoder decoder;
     std::array<std::uint8_t, 8192> buffer{};
     std::deque<std::vector<std::uint8_t>> writes;
@@ -99,9 +101,7 @@ struct LinkClient::Impl {
         if (c->closed)
             return;
         c->closed = true;
-        boost::system::error_code ec;
-        c->socket.shutdown(tcp::socket::shutdown_both, ec);
-        c->socket.close(ec);
+        c->stream->close();
         if (conn != c)
             return;
         conn.reset();
@@ -113,15 +113,20 @@ struct LinkClient::Impl {
     }
 
     void read(const std::shared_ptr<Conn>& c) {
-        c->socket.async_read_some(
+        c->stream->asyncReadSome(
             asio::buffer(c->buffer), [this, c](const boost::system::error_code& ec, std::size_t n) {
                 if (c->closed)
                     return;
                 if (ec) {
-                    fail(c, ec == asio::error::eof ? "the controller closed the connection"
-                                                   : "connection lost: " + ec.message());
+                    fail(c, readFailure(*c->stream, ec));
                     return;
                 }
+                if (!c->received && !c->stream->tls() && looksLikeTls(c->buffer.data(), n)) {
+                    fail(c, "the controller speaks TLS on this port: connect with "
+                            "tls://HOST:PORT and the configuration's tls block");
+                    return;
+                }
+                c->received = true;
                 lastReceived = Clock::now();
                 c->decoder.append(c->buffer.data(), n);
                 Frame f;
@@ -148,7 +153,7 @@ struct LinkClient::Impl {
         if (c->writing || c->writes.empty() || c->closed)
             return;
         c->writing = true;
-        asio::async_write(c->socket, asio::buffer(c->writes.front()),
+        c->stream->asyncWrite(asio::buffer(c->writes.front()),
                           [this, c](const boost::system::error_code& ec, std::size_t) {
                               c->writing = false;
                               if (c->closed)
@@ -170,6 +175,16 @@ struct LinkClient::Impl {
         conn->writes.push_back(std::move(bytes));
         lastSent = Clock::now();
         write(conn);
+    }
+
+    static std::string readFailure(const ByteStream& s, const boost::system::error_code& ec) {
+        if (ec == asio::error::eof || ec == asio::ssl::error::stream_truncated)
+            return "the controller closed the connection";
+        if (ec.category() == asio::error::get_ssl_category())
+            return "the controller ended the TLS session: " +
+                   tlsFailureText(ec, s.verifyFailure()) +
+                   " (it refuses this console's certificate: see its log)";
+        return "connection lost: " + ec.message();
     }
 
     void armHeartbeat() {
@@ -198,8 +213,19 @@ bool LinkClient::connect(const std::string& host, std::uint16_t port, double tim
     close();
     auto st = std::make_shared<ConnectState>();
     const std::string where = host + ":" + std::to_string(port);
-    asio::post(d->io, [this, st, host, port, where] {
-        st->conn = std::make_shared<Conn>(d->io);
+    TlsContext tls;
+    if (d->opt.tls) {
+        tls = makeTlsContext(*d->opt.tls, TlsRole::Client, error);
+        if (!tls.ssl) {
+            error = "tls://" + where + ": " + error;
+            return false;
+        }
+    }
+    asio::post(d->io, [this, st, host, port, where, tls] {
+        tcp::socket socket(d->io);
+        auto stream = tls.ssl ? std::make_unique<ByteStream>(std::move(socket), tls, host)
+                              : std::make_unique<ByteStream>(std::move(socket));
+        st->conn = std::make_shared<Conn>(std::move(stream));
         st->resolver = std::make_shared<tcp::resolver>(d->io);
         auto finish = [st](std::string e) {
             std::lock_guard lock(st->mu);
@@ -207,42 +233,64 @@ bool LinkClient::connect(const std::string& host, std::uint16_t port, double tim
             st->error = std::move(e);
             st->cv.notify_all();
         };
+        // Connected (and, over TLS, handshaken): the link is this connection from now on.
+        auto install = [this, st] {
+            std::lock_guard lock(st->mu);
+            if (st->cancelled) {
+                st->conn->stream->close();
+                return;
+            }
+            d->conn = st->conn;
+            d->lastReceived = d->lastSent = Clock::now();
+            {
+                std::lock_guard lock2(d->mu);
+                d->inbox.clear();
+                d->open = true;
+                d->reason.clear();
+            }
+            d->read(d->conn);
+            st->done = true;
+            st->cv.notify_all();
+        };
         st->resolver->async_resolve(
             host, std::to_string(port),
-            [this, st, where, finish](const boost::system::error_code& ec,
-                                      tcp::resolver::results_type results) {
+            [st, where, finish, install](const boost::system::error_code& ec,
+                                         tcp::resolver::results_type results) {
                 if (ec) {
                     finish("cannot resolve " + where + ": " + ec.message());
                     return;
                 }
-                asio::async_connect(st->conn->socket, results,
-                                    [this, st, where, finish](const boost::system::error_code& ec2,
-                                                              const tcp::endpoint&) {
-                                        if (ec2) {
-                                            finish("cannot connect to " + where + ": " +
-                                                   ec2.message());
-                                            return;
-                                        }
-                                        std::lock_guard lock(st->mu);
-                                        if (st->cancelled) {
-                                            boost::system::error_code ignore;
-                                            st->conn->socket.close(ignore);
-                                            return;
-                                        }
-                                        boost::system::error_code ignore;
-                                        st->conn->socket.set_option(tcp::no_delay(true), ignore);
-                                        d->conn = st->conn;
-                                        d->lastReceived = d->lastSent = Clock::now();
-                                        {
-                                            std::lock_guard lock2(d->mu);
-                                            d->inbox.clear();
-                                            d->open = true;
-                                            d->reason.clear();
-                                        }
-                                        d->read(d->conn);
-                                        st->done = true;
-                                        st->cv.notify_all();
-                                    });
+                asio::async_connect(
+                    st->conn->stream->socket(), results,
+                    [st, where, finish, install](const boost::system::error_code& ec2,
+                                                 const tcp::endpoint&) {
+                        if (ec2) {
+                            finish("cannot connect to " + where + ": " + ec2.message());
+                            return;
+                        }
+                        boost::system::error_code ignore;
+                        st->conn->stream->socket().set_option(tcp::no_delay(true), ignore);
+                        if (!st->conn->stream->tls()) {
+                            install();
+                            return;
+                        }
+                        auto handshaken = [st, where, finish,
+                                           install](const boost::system::error_code& ec3) {
+                            if (!ec3) {
+                                install();
+                                return;
+                            }
+                            const std::string& v = st->conn->stream->verifyFailure();
+                            finish("TLS handshake with " + where + " failed: " +
+                                   tlsFailureText(ec3, v.empty() ? ""
+                                                                 : "the controller's certificate: " +
+                                                                       v) +
+                                   (v.empty() ? "; is the controller listening without TLS "
+                                                "(tcp:// for a plaintext controller)?"
+                                              : ""));
+                        };
+                        st->conn->stream->asyncHandshake(false, handshaken);
+                    });
             });
     });
     std::unique_lock lock(st->mu);
@@ -254,7 +302,7 @@ bool LinkClient::connect(const std::string& host, std::uint16_t port, double tim
             if (st->resolver)
                 st->resolver->cancel();
             if (st->conn)
-                st->conn->socket.close(ignore);
+                st->conn->stream->close();
         });
         error = "no connection to " + where + " within " + secondsText(timeout);
         return false;

@@ -5,7 +5,9 @@
 // sends a Heartbeat whenever nothing was sent for heartbeatInterval, swallows the
 // controller's heartbeats, and declares the link lost after silenceTimeout without any frame.
 // TCP_NODELAY is on. Sequence numbers are assigned here (1, 2, ... per connection) and checked
-// on what arrives.
+// on what arrives. With options.tls the connection is TLS 1.3 (docs/security.md): connect()
+// also completes the handshake (the controller's certificate verified against the CA or the
+// pins, and against host); the frames and timeouts are the same.
 //
 // Thread rules: connect / close / receive from one thread at a time (the test worker);
 // send() and interrupt() from any thread (they only lock a mutex and post to the io thread:
@@ -13,6 +15,7 @@
 // private. No call blocks longer than its timeout.
 
 #include "comms/protocol/Messages.h"
+#include "core/config/TlsConfig.h"
 
 #include <chrono>
 #include <cstdint>
@@ -26,6 +29,8 @@ namespace hsmu::comms {
 struct LinkClientOptions {
     double heartbeatInterval = 0.25; ///< [s]
     double silenceTimeout = 5.0;     ///< [s] without any frame: the link is lost
+    /// Certificates for a TLS link (tls://); nullopt: plain TCP.
+    std::optional<TlsSpec> tls;
 };
 
 class LinkClient {

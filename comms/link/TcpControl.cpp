@@ -30,7 +30,7 @@ bool closesConnection(ErrorCode c) {
 TcpControl::TcpControl(std::string host, std::uint16_t port, std::string element,
                        const SafetyLimits& limits, const TcpControlOptions& options)
     : m_link(std::make_unique<LinkClient>(
-          LinkClientOptions{options.heartbeatInterval, options.silenceTimeout})),
+          LinkClientOptions{options.heartbeatInterval, options.silenceTimeout, options.tls})),
       m_host(std::move(host)), m_port(port), m_element(std::move(element)), m_limits(limits),
       m_opt(options) {}
 
@@ -44,11 +44,12 @@ TcpControl::~TcpControl() {
 
 std::string TcpControl::where() const {
     const bool v6 = m_host.find(':') != std::string::npos;
-    return "tcp://" + (v6 ? "[" + m_host + "]" : m_host) + ":" + std::to_string(m_port);
+    return (m_opt.tls ? "tls://" : "tcp://") + (v6 ? "[" + m_host + "]" : m_host) + ":" +
+           std::to_string(m_port);
 }
 
 std::string TcpControl::description() const {
-    return "TCP link " + where() + " to " +
+    return (m_opt.tls ? "TLS link " : "TCP link ") + where() + " to " +
            (m_controllerDescription.empty() ? "specimen '" + m_element + "'"
                                             : m_controllerDescription);
 }

@@ -57,6 +57,8 @@ struct TcpControlOptions {
     double reconnectDelay = 0.5;     ///< [s] between attempts
     bool freshSpecimen = false;      ///< prepare(): reset a specimen that has history
     std::uint64_t sessionId = 0;     ///< 0: makeControlFactory draws one per test
+    /// A tls:// link's certificates (LinkClientOptions::tls); nullopt: plain TCP.
+    std::optional<TlsSpec> tls;
 };
 
 class TcpControl final : public ExperimentalControl {

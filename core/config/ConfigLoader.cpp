@@ -202,7 +202,7 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
     // "controller": the link fields here (LinkConfig); the rest is hsmu-controller's
     // (comms/controller/ControllerSettings.h).
     root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis",
-                    "controller", "sites", "updating"});
+                    "controller", "sites", "updating", "tls"});
     TestConfig cfg;
     cfg.sourcePath = sourceName;
     cfg.raw = document;

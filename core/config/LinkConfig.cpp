@@ -24,11 +24,14 @@ std::array<int, 5> parseSizes(const JsonCursor& c, std::array<int, 5> sizes) {
 } // namespace
 
 LinkSpec parseLinkSpec(const JsonCursor& root, const std::string& baseDir) {
+    LinkSpec s;
+    if (root.has("tls"))
+        s.tls = parseTlsSpec(root.child("tls"), baseDir);
     if (!root.has("controller"))
-        return LinkSpec{};
+        return s;
     const JsonCursor c = root.child("controller");
     c.requireObject();
-    return parseLinkFields(c, baseDir, LinkSpec{});
+    return parseLinkFields(c, baseDir, s);
 }
 
 LinkSpec parseLinkFields(const JsonCursor& c, const std::string& baseDir, LinkSpec s) {

@@ -5,6 +5,8 @@
 // comms builds the link. The section's other fields (rate, stepDuration, ...) belong to
 // hsmu-controller (comms/controller/ControllerSettings.h) and are ignored here.
 
+#include "core/config/TlsConfig.h"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -33,12 +35,15 @@ struct LinkSpec {
     /// controller.connectTimeout / controller.stepDeadline [s], when the configuration sets
     /// them (in (0, 600]); otherwise the link's own options (LinkTimeouts defaults) apply.
     std::optional<double> connectTimeout, stepDeadline;
+    /// The configuration's "tls" block (TlsConfig.h), or a site's own: certificates for a
+    /// tls://HOST:PORT link. Absent: such a link cannot connect (the error says why).
+    std::optional<TlsSpec> tls;
 };
 
 /// The names of the protocol field's values, for messages.
 inline constexpr const char* kLinkProtocols = "native, simapp or generictcp";
 
-/// Read the link fields of root.controller (defaults when absent). baseDir resolves a relative
+/// Read the link fields of root.controller (defaults when absent) and root.tls. baseDir resolves a relative
 /// initFile. Throws ConfigError naming the field.
 LinkSpec parseLinkSpec(const JsonCursor& root, const std::string& baseDir);
 /// The link fields (protocol, dataSize, ctrlSizes, daqSizes, initFile) of the object at c,

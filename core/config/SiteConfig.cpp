@@ -46,7 +46,7 @@ std::vector<SiteSpec> parseSites(const JsonCursor& root, const std::string& base
         const JsonCursor c = list.at(i);
         c.requireObject();
         c.allowOnly({"name", "address", "elements", "protocol", "dataSize", "ctrlSizes",
-                     "daqSizes", "initFile", "tokenFile", "connectTimeout", "stepDeadline"});
+                     "daqSizes", "initFile", "tokenFile", "connectTimeout", "stepDeadline", "tls"});
         SiteSpec s;
         s.name = c.string("name");
         if (s.name.empty() || s.name.size() > 64)
@@ -63,6 +63,8 @@ std::vector<SiteSpec> parseSites(const JsonCursor& root, const std::string& base
                               "generictcp://HOST:PORT or adapter://HOST:PORT, found '" +
                                   s.address + "'");
         s.link = parseLinkFields(c, baseDir, defaults);
+        if (c.has("tls")) // the site's own certificates instead of the top-level block
+            s.link.tls = parseTlsSpec(c.child("tls"), baseDir);
         if (c.has("tokenFile")) {
             std::filesystem::path p = c.string("tokenFile");
             if (p.is_relative() && !baseDir.empty())

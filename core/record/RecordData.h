@@ -29,6 +29,9 @@ struct RecordMetadata {
     /// How the writer evaluated the UKF's sigma points, e.g. "UKF sigma points: libmvec AVX2
     /// vector pow" (BoucWen::fastBatchMathName()); "" in records written before it was kept.
     std::string numerics;
+    /// /sites' `security`, one per layout.sites ("tls", "plaintext-loopback",
+    /// "insecure-plaintext", "builtin"); empty in records written before it was kept.
+    std::vector<std::string> siteSecurity;
 };
 
 /// A parameter update applied to a target element (/updating/events).

@@ -228,6 +228,8 @@ void RecordReader::Impl::readMetadata() {
         const h5::Id g =
             h5::check(H5Gopen2(root, "sites", H5P_DEFAULT), w, "damaged record (no group /sites)");
         layout.sites = h5::readStringsAttr(g.get(), "names", w);
+        if (h5::hasAttr(g.get(), "security"))
+            m.siteSecurity = h5::readStringsAttr(g.get(), "security", w);
         siteRoundTrip = column("/sites/round_trip", int(layout.sites.size()));
     }
     actuator = H5Lexists(root, "/elements/actuator", H5P_DEFAULT) > 0;

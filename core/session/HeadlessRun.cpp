@@ -34,6 +34,7 @@ SessionOptions sessionOptions(const TestConfig& cfg, const HeadlessOptions& o) {
     s.recordPath = inFolder(o.outDir, "record.h5");
     s.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
     s.recordStart.deflate = o.deflate;
+    s.recordStart.siteSecurity = o.siteSecurity;
     return s;
 }
 

@@ -17,6 +17,8 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hsmu {
 
@@ -30,6 +32,9 @@ struct HeadlessOptions {
     enum class Csv { Auto, All, None } csv = Csv::Auto;
     ReconnectPolicy reconnect; ///< `--reconnect N` (SessionOptions)
     int deflate = 0;           ///< the record's deflate level (RecordStart::deflate)
+    /// Each site's link security for the record (RecordStart::siteSecurity; comms'
+    /// siteSecurity() of the controller address and the configuration).
+    std::vector<std::pair<std::string, std::string>> siteSecurity;
 };
 
 class HeadlessRun {

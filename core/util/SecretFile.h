@@ -19,4 +19,9 @@ std::optional<std::string> readSecretFile(const std::string& path, std::string& 
 /// with readSecretFile's sentence in error when the named file is refused.
 std::optional<std::string> linkToken(const std::string& tokenFile, std::string& error);
 
+/// The same rule for any private file (a TLS key: what = "the TLS key file"): true when path
+/// is a regular file that only its owner may read or write; otherwise false with a sentence
+/// naming path and what in error (the chmod that fixes it).
+bool checkPrivateFile(const std::string& path, const std::string& what, std::string& error);
+
 } // namespace hsmu

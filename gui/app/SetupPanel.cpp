@@ -201,7 +201,7 @@ QWidget* SetupPanel::buildControllerGroup() {
     // OpenFresco's protocols (docs/openfresco.md); dataSize and sizes come from the
     // configuration's controller section. adapter: OpenSees' adapter element (OpenSees
     // listens on HOST:PORT; a numerical substructure in an OpenSees model).
-    for (const char* scheme : {"builtin", "tcp", "simapp", "generictcp", "adapter"})
+    for (const char* scheme : {"builtin", "tcp", "simapp", "generictcp", "adapter", "tls"})
         m_controllerKind->addItem(QString(), QString::fromLatin1(scheme));
     m_host = new QLineEdit(QStringLiteral("127.0.0.1"), box);
     m_host->setObjectName(QStringLiteral("controllerHost"));
@@ -242,7 +242,8 @@ QWidget* SetupPanel::buildControllerGroup() {
         const QString kinds[] = {tr("built-in virtual lab"), tr("hsmu-controller over TCP"),
                                  tr("OpenFresco SimApp site"),
                                  tr("OpenFresco GenericTCP controller"),
-                                 tr("OpenSees adapter element (numerical substructure)")};
+                                 tr("OpenSees adapter element (numerical substructure)"),
+                                 tr("hsmu-controller over TLS (the configuration's tls block)")};
         for (int i = 0; i < m_controllerKind->count(); ++i) {
             m_controllerKind->setItemText(i, kinds[i]);
             m_controllerKind->setItemData(i, kinds[i], Qt::ToolTipRole);
@@ -350,7 +351,8 @@ void SetupPanel::enableLinkFields() {
     m_host->setEnabled(remote && m_editable);
     m_port->setEnabled(remote && m_editable);
     // Only hsmu-controller asks for a token; OpenFresco's and OpenSees' peers know none.
-    m_token->setEnabled(scheme == QStringLiteral("tcp") && m_editable);
+    m_token->setEnabled((scheme == QStringLiteral("tcp") || scheme == QStringLiteral("tls")) &&
+                        m_editable);
 }
 
 void SetupPanel::showLinkNote() {
@@ -508,6 +510,7 @@ void SetupPanel::setControllerAddress(const QString& address) {
                            : a->kind == Kind::SimApp     ? QStringLiteral("simapp")
                            : a->kind == Kind::GenericTcp ? QStringLiteral("generictcp")
                            : a->kind == Kind::Adapter    ? QStringLiteral("adapter")
+                           : a->kind == Kind::Tls        ? QStringLiteral("tls")
                                                          : QStringLiteral("builtin");
     m_controllerKind->setCurrentIndex(m_controllerKind->findData(scheme));
     if (a->kind != Kind::Builtin) {

@@ -100,6 +100,7 @@ int RunCommand::exec(const QStringList& arguments) {
                                                          : HeadlessOptions::Csv::Auto;
     headless.reconnect.attempts = options.reconnect;
     headless.deflate = options.deflate;
+    headless.siteSecurity = comms::siteSecurity(options.controller, cfg);
     // Folder, steps.csv, the HDF5 record (docs/recording.md, flushed at least twice a second),
     // statistics and summary.json: core/session/HeadlessRun, as hsmu.run in Python.
     std::unique_ptr<HeadlessRun> headlessRun;
@@ -132,9 +133,10 @@ int RunCommand::exec(const QStringList& arguments) {
     };
 
     if (options.controller.kind != comms::LinkAddress::Kind::Builtin)
-        err() << tr("hsmu run: connecting to %1 (%2 protocol)")
+        err() << tr("hsmu run: connecting to %1 (%2 protocol, %3)")
                      .arg(QString::fromStdString(options.controller.toString()),
-                          QString::fromStdString(comms::linkProtocol(options.controller, cfg.link)))
+                          QString::fromStdString(comms::linkProtocol(options.controller, cfg.link)),
+                          QString::fromStdString(options.controller.security()))
               << Qt::endl;
     // SIGINT / SIGTERM from here on hold every site out of band (even mid-step); the
     // session never resumes an operator hold.

@@ -52,5 +52,5 @@ public:
     hsmu::comms::LinkClient& link() { return m_link; }
 
 private:
-    hsmu::comms::LinkClient m_link{hsmu::comms::LinkClientOptions{0.25, 60.0}};
+    hsmu::comms::LinkClient m_link{hsmu::comms::LinkClientOptions{0.25, 60.0, std::nullopt}};
 };

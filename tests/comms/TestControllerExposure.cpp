@@ -1,5 +1,6 @@
-// hsmu-controller beyond loopback (issue 26, D3 and "safe defaults"): the native protocol is
-// plaintext, so a non-loopback --bind is refused (exit 2, with the reason) unless
+// hsmu-controller beyond loopback (issue 26, D3 and "safe defaults"): without TLS the native
+// protocol is plaintext, so a non-loopback --bind is refused (exit 2, with the reason and TLS
+// named as the way out; tests/comms/TestTlsRefusals.cpp starts one with TLS) unless
 // --insecure-plaintext says the risk is taken, which is then said at start; the OpenFresco
 // protocols (which carry no security at all) warn on a non-loopback address; a token file
 // that other users can read is refused. Real processes throughout.
@@ -59,7 +60,8 @@ private slots:
                 runToExit({"--config", m_config, "--port", "0", "--pace", "fast", "--bind", bind});
             QVERIFY2(code == 2, qPrintable(QString::number(code) + ": " + out));
             QVERIFY2(out.contains("not a loopback address") && out.contains("plaintext") &&
-                         out.contains("--insecure-plaintext"),
+                         out.contains("--insecure-plaintext") &&
+                         out.contains("Use TLS (--tls-certificate"),
                      qPrintable(out));
             QVERIFY2(!out.contains("listening on"), qPrintable(out));
         }

@@ -83,7 +83,7 @@ public:
         m_connected = ::connect(m_client, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
         asio::ip::tcp::socket s = m_acceptor.accept();
         s.set_option(asio::socket_base::send_buffer_size(4096));
-        m_session = std::make_shared<ControllerSession>(std::move(s), host);
+        m_session = std::make_shared<ControllerSession>(std::make_unique<ByteStream>(std::move(s)), host);
         m_session->start();
     }
     ~Pair() {

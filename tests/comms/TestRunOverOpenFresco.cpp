@@ -56,7 +56,7 @@ private slots:
                                address, QStringLiteral("--duration"), QStringLiteral("2"),
                                QStringLiteral("--out"), linked});
         QVERIFY2(b.exitCode == 0, qPrintable(report(b) + controller.log()));
-        QVERIFY2(b.err.contains(QStringLiteral("(simapp protocol)")) &&
+        QVERIFY2(b.err.contains(QStringLiteral("(simapp protocol, plaintext-loopback)")) &&
                      b.err.contains(QStringLiteral("dataSize 256")),
                  qPrintable(b.err));
 
