@@ -182,8 +182,8 @@ ControlResult TcpControl::sendReset() {
     return ControlResult::success();
 }
 
-std::optional<SpecimenHistory> TcpControl::specimenHistory() const {
-    return SpecimenHistory{m_committed, m_lastCommittedTarget};
+std::optional<PriorLoading> TcpControl::priorLoading() const {
+    return PriorLoading{m_committed, m_lastCommittedTarget};
 }
 
 ControlResult TcpControl::freshSpecimen() {

@@ -85,7 +85,7 @@ public:
     void emergencyHold(const std::string& reason) override;
     /// The specimen's committed steps and last committed target as its controller reported
     /// them in the hello-ack (0 after a reset).
-    std::optional<SpecimenHistory> specimenHistory() const override;
+    std::optional<PriorLoading> priorLoading() const override;
     /// Reset (docs/protocol.md): hsmu-controller gives a new virtual specimen at step 0; a
     /// controller of a real rig refuses it (the fault names its answer). Nothing is sent when
     /// the specimen has no committed steps.

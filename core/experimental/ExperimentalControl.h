@@ -35,7 +35,7 @@ struct ActuatorChannels {
 /// What a specimen carries from earlier tests (a controller that keeps its specimens between
 /// console sessions: hsmu-controller, docs/protocol.md "Reset"; docs/console.md, "A specimen
 /// loaded by an earlier test"). Deformation in the specimen's units.
-struct SpecimenHistory {
+struct PriorLoading {
     std::uint64_t committedSteps = 0; ///< steps committed before this test
     double lastDeformation = 0.0;     ///< target of the last of them (where it stands)
 };
@@ -86,7 +86,7 @@ public:
     /// After prepare(), before the first step: what the specimen carries from earlier tests;
     /// nullopt when the control
     /// always starts from a virgin specimen (the in-process virtual specimen, OpenFresco).
-    virtual std::optional<SpecimenHistory> specimenHistory() const { return std::nullopt; }
+    virtual std::optional<PriorLoading> priorLoading() const { return std::nullopt; }
     /// After prepare(), before the first target: ask the lab for a virgin specimen (committed
     /// steps 0). A control or lab that cannot give one returns a fault naming why (a rig's
     /// specimen is replaced by hand at the controller).

@@ -32,7 +32,7 @@ PreflightReport preflightOf(const HybridTest& test, bool allowUnstable) {
         s.limits = x->limits();
         s.measuredDeformation = x->measurement().deformation;
         s.measuredForce = x->measurement().force;
-        if (const auto h = x->control().specimenHistory(); h && h->committedSteps > 0) {
+        if (const auto h = x->control().priorLoading(); h && h->committedSteps > 0) {
             // Nothing was measured yet: it stands where its last committed step left it.
             s.committedSteps = h->committedSteps;
             s.lastDeformation = h->lastDeformation;

@@ -31,7 +31,7 @@ struct SpecimenPreflight {
     SafetyLimits limits;
     double measuredDeformation = 0.0; ///< after prepare(); a loaded specimen: lastDeformation
     double measuredForce = 0.0;       ///< after prepare(); NaN: not measured yet (loaded)
-    /// Loaded by an earlier test (ExperimentalControl::specimenHistory(); docs/console.md,
+    /// Loaded by an earlier test (ExperimentalControl::priorLoading(); docs/console.md,
     /// "A specimen loaded by an earlier test"): its committed steps and last deformation.
     std::uint64_t committedSteps = 0;
     double lastDeformation = 0.0;

@@ -133,7 +133,7 @@ void TestWorker::chooseLoadedSpecimens(bool fresh) {
         return;
     for (const auto& e : test().structure().elements()) {
         auto* x = dynamic_cast<ExperimentalElement*>(e.get());
-        const auto h = x ? x->control().specimenHistory() : std::nullopt;
+        const auto h = x ? x->control().priorLoading() : std::nullopt;
         if (!h || h->committedSteps == 0)
             continue;
         const std::string loaded =

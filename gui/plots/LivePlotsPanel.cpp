@@ -91,7 +91,7 @@ template <typename Plot> Plot* makePlot(QWidget* parent, const char* name) {
 LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     auto* vertical = new QSplitter(Qt::Vertical, this);
     auto* top = new QSplitter(Qt::Horizontal, vertical);
-    m_hysteresis = makePlot<HysteresisPlot>(top, "hysteresisPlot");
+    m_hysteresis = makePlot<HysteresisPlot>(nullptr, "hysteresisPlot"); // into its box below
     QWidget* hysteresisBox =
         underPicker(top, m_hysteresisPicker, m_hysteresis, "hysteresisElement");
     auto* histories = new QWidget(top);

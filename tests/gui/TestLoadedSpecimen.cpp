@@ -49,12 +49,12 @@ using namespace hsmu::gui;
 namespace {
 
 // The controller's own count, asked as any console would (a session of its own).
-SpecimenHistory controllerHistory(quint16 port) {
+PriorLoading controllerHistory(quint16 port) {
     comms::TcpControl probe("127.0.0.1", port, "Spring", {}, comms::TcpControlOptions{});
     const ControlResult r = probe.prepare(0.01);
     if (!r.ok)
         qFatal("probe: %s", r.reason.c_str());
-    return *probe.specimenHistory();
+    return *probe.priorLoading();
 }
 
 QString clipped(const QLabel* l) {
