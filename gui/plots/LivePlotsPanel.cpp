@@ -356,7 +356,6 @@ void LivePlotsPanel::appendRecords(const std::vector<StepRecord>& rows) {
             p->appendRecords(rows);
     }
     m_rows += qint64(rows.size());
-    m_history.reserve(m_history.size() + rows.size());
     for (const StepRecord& r : rows)
         m_history.push_back(slim(r));
 }

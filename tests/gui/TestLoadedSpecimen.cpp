@@ -85,7 +85,8 @@ std::vector<StepRecord> firstTest(quint16 port, int minRows) {
     if (!QTest::qWaitFor([&] { return int(rows.size()) > minRows; }, 30000))
         return {};
     c.stop();
-    QTest::qWaitFor([&] { return c.state() == RunState::Stopped; }, 20000);
+    if (!QTest::qWaitFor([&] { return c.state() == RunState::Stopped; }, 20000))
+        return {};
     return rows;
 }
 
@@ -108,7 +109,8 @@ class TestLoadedSpecimen : public QObject {
         window.startTest();
         if (!QTest::qWaitFor([&] { return window.preflightDialog() != nullptr; }, 15000))
             return nullptr;
-        QTest::qWaitFor([&] { return window.preflightDialog()->isVisible(); }, 5000);
+        if (!QTest::qWaitFor([&] { return window.preflightDialog()->isVisible(); }, 5000))
+            return nullptr;
         return window.preflightDialog();
     }
 

@@ -249,6 +249,44 @@ private slots:
         QCOMPARE(tp.elementName(), QStringLiteral("Bearing D"));
         QCOMPARE(fp.elementName(), QStringLiteral("Bearing D"));
     }
+
+    // The pickers' words fit at 1280x720 in every language (the label and the element names).
+    void pickersAreNotClipped_data() {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("es") << QStringLiteral("es");
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN");
+    }
+    void pickersAreNotClipped() {
+        QFETCH(QString, language);
+        QVERIFY(Translations::install(*QCoreApplication::instance(), language));
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.loadConfiguration(QStringLiteral("paper-bridge-two-labs")));
+        QCoreApplication::processEvents();
+        auto* panel = window.findChild<LivePlotsPanel*>();
+        QStringList problems;
+        for (PlotElementPicker* p :
+             {&panel->hysteresisPicker(), &panel->forcePicker(), &panel->trackingPicker()}) {
+            if (!p->isVisible()) {
+                problems << p->objectName() + QStringLiteral(" hidden");
+                continue;
+            }
+            for (const QLabel* l : p->findChildren<QLabel*>())
+                if (l->width() + 1 < l->sizeHint().width())
+                    problems << QStringLiteral("'%1': %2 px, needs %3")
+                                    .arg(l->text()).arg(l->width()).arg(l->sizeHint().width());
+            const QComboBox* box = p->comboBox();
+            if (box->width() + 1 < box->sizeHint().width())
+                problems << QStringLiteral("%1's list: %2 px, needs %3")
+                                .arg(p->objectName()).arg(box->width()).arg(box->sizeHint().width());
+        }
+        Translations::install(*QCoreApplication::instance(), QStringLiteral("en"));
+        QVERIFY2(problems.isEmpty(), qPrintable(language + QStringLiteral(": ") +
+                                                problems.join(QStringLiteral("; "))));
+    }
 };
 
 int main(int argc, char** argv) {
