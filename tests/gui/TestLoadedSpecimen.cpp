@@ -38,6 +38,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -48,13 +49,13 @@ using namespace hsmu::gui;
 
 namespace {
 
-// The controller's own count, asked as any console would (a session of its own).
-PriorLoading controllerHistory(quint16 port) {
+// The controller's own count, asked as any console would (a session of its own); nullopt
+// while the controller still counts the last console's session (its bye is on the way: busy).
+std::optional<PriorLoading> askController(quint16 port) {
     comms::TcpControl probe("127.0.0.1", port, "Spring", {}, comms::TcpControlOptions{});
-    const ControlResult r = probe.prepare(0.01);
-    if (!r.ok)
-        qFatal("probe: %s", r.reason.c_str());
-    return *probe.priorLoading();
+    if (!probe.prepare(0.01).ok)
+        return std::nullopt;
+    return probe.priorLoading();
 }
 
 QString clipped(const QLabel* l) {
@@ -114,6 +115,14 @@ class TestLoadedSpecimen : public QObject {
         return window.preflightDialog();
     }
 
+    // A click as the operator makes it: the checks scroll, so the choice is brought into view.
+    static void click(PreflightDialog* d, QAbstractButton* b) {
+        d->findChild<QScrollArea*>(QStringLiteral("preflightScroll"))->ensureWidgetVisible(b);
+        QCoreApplication::processEvents();
+        // On the indicator: a radio button takes clicks on its circle and text only.
+        QTest::mouseClick(b, Qt::LeftButton, {}, QPoint(8, b->height() / 2));
+    }
+
     static QString measuredD(PreflightDialog* d) {
         auto* table = d->findChild<QTableWidget*>(QStringLiteral("preflightSpecimens"));
         return table && table->item(0, 4) ? table->item(0, 4)->text() : QString();
@@ -121,7 +130,8 @@ class TestLoadedSpecimen : public QObject {
 
     static QStringList notes(const QString& record) {
         QStringList out;
-        for (const RecordNote& n : RecordReader(record.toStdString()).data().notes)
+        const RecordData data = RecordReader(record.toStdString()).data(); // a copy: the reader goes
+        for (const RecordNote& n : data.notes)
             out << QString::fromStdString(n.text);
         return out;
     }
@@ -174,7 +184,7 @@ private slots:
         QVERIFY(!d->startButton()->isEnabled());
         QVERIFY(d->continueChoice() && d->freshChoice() && d->freshChoice()->isEnabled());
         QCOMPARE(d->specimenChoice(), PreflightDialog::SpecimenChoice::None);
-        QTest::mouseClick(d->continueChoice(), Qt::LeftButton);
+        click(d, d->continueChoice());
         QCOMPARE(d->specimenChoice(), PreflightDialog::SpecimenChoice::Continue);
         QVERIFY(d->startButton()->isEnabled());
         QTest::mouseClick(d->startButton(), Qt::LeftButton);
@@ -183,21 +193,26 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(c2.recordsDelivered() > 50, 20000);
         c2.stop();
         QTRY_COMPARE_WITH_TIMEOUT(c2.state(), RunState::Stopped, 20000);
-        const QString expectedOld = QStringLiteral("Spring: %1 committed steps, last deformation %2 m")
-                                        .arg(n)
-                                        .arg(QString::number(dLast, 'g', 6));
-        const QStringList recorded = notes(c2.recordPath());
-        QVERIFY2(recorded.filter(QStringLiteral("action=loaded-specimen; old=") + expectedOld +
-                                 QStringLiteral("; new=continue;"))
-                         .size() == 1,
-                 qPrintable(recorded.join(QLatin1Char('\n'))));
         const QString events =
             second->findChild<AlarmList*>()->rowsText(QLatin1Char('\t'), false);
         QVERIFY2(events.contains(QStringLiteral("the operator continues on it")), qPrintable(events));
-        const int secondSteps = int(RecordReader(c2.recordPath().toStdString()).data().steps.back());
-        second.reset();
+        const QString record2 = c2.recordPath();
+        second.reset(); // the record closed: read it whole
+        const QString expectedOld = QStringLiteral("Spring: %1 committed steps, last deformation %2 m")
+                                        .arg(n)
+                                        .arg(QString::number(dLast, 'g', 6));
+        const QStringList recorded = notes(record2);
+        const QString recordedText =
+            record2 + QStringLiteral(": ") + recorded.join(QLatin1Char('\n'));
+        QVERIFY2(recorded.filter(QStringLiteral("action=loaded-specimen; old=") + expectedOld +
+                                 QStringLiteral("; new=continue;"))
+                         .size() == 1,
+                 qPrintable(recordedText + QStringLiteral(" / expected ") + expectedOld));
+        const int secondSteps = int(RecordReader(record2.toStdString()).data().steps.back());
         // The same specimen went on: its count is both tests'.
-        QCOMPARE(controllerHistory(lab.port()).committedSteps, n + std::uint64_t(secondSteps));
+        std::optional<PriorLoading> asked;
+        QTRY_VERIFY_WITH_TIMEOUT((asked = askController(lab.port())).has_value(), 10000);
+        QCOMPARE(asked->committedSteps, n + std::uint64_t(secondSteps));
 
         // 3: a fresh specimen: reset at the controller, the check again, then a virgin start.
         ConsoleSettings::setRecordDirectory(records.path());
@@ -207,7 +222,7 @@ private slots:
         QVERIFY(d);
         QVERIFY(d->findChild<QGroupBox*>(QStringLiteral("loadedSpecimen")));
         QVERIFY(!d->startButton()->isEnabled());
-        QTest::mouseClick(d->freshChoice(), Qt::LeftButton);
+        click(d, d->freshChoice());
         QVERIFY(d->startButton()->isEnabled()); // nothing starts from it: the reset, then again
         QCOMPARE(d->startButton()->text(), QStringLiteral("Reset the specimen"));
         QPointer<PreflightDialog> old(d);
@@ -220,7 +235,8 @@ private slots:
         QVERIFY2(!d->findChild<QGroupBox*>(QStringLiteral("loadedSpecimen")),
                  "the reset specimen is still shown as loaded");
         QCOMPARE(measuredD(d), QStringLiteral("0 m"));
-        QCOMPARE(controllerHistory(lab.port()).committedSteps, std::uint64_t(0));
+        // (asked by the console's own session: its pre-flight report after the reset)
+        QCOMPARE(third->controller().preflight()->specimens.at(0).committedSteps, std::uint64_t(0));
         QVERIFY(!d->startButton()->isEnabled());
         d->zeroConfirmation()->setChecked(true);
         QTest::mouseClick(d->startButton(), Qt::LeftButton);
@@ -229,17 +245,21 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(c3.recordsDelivered() > 50, 20000);
         c3.stop();
         QTRY_COMPARE_WITH_TIMEOUT(c3.state(), RunState::Stopped, 20000);
-        const QStringList recorded3 = notes(c3.recordPath());
+        const QString record3 = c3.recordPath();
+        third.reset(); // the record closed: read it whole
+        const QStringList recorded3 = notes(record3);
+        const QString recordedText3 = recorded3.join(QLatin1Char('\n'));
         QVERIFY2(recorded3.filter(QStringLiteral("action=loaded-specimen; old=Spring: %1 committed "
                                                  "steps")
                                       .arg(n + std::uint64_t(secondSteps)))
                          .filter(QStringLiteral("; new=fresh;"))
                          .size() == 1,
-                 qPrintable(recorded3.join(QLatin1Char('\n'))));
-        const int thirdSteps = int(RecordReader(c3.recordPath().toStdString()).data().steps.back());
-        third.reset();
+                 qPrintable(recordedText3));
+        const int thirdSteps = int(RecordReader(record3.toStdString()).data().steps.back());
         // The controller counts this test's steps only: a virgin specimen at its first step.
-        QCOMPARE(controllerHistory(lab.port()).committedSteps, std::uint64_t(thirdSteps));
+        asked.reset();
+        QTRY_VERIFY_WITH_TIMEOUT((asked = askController(lab.port())).has_value(), 10000);
+        QCOMPARE(asked->committedSteps, std::uint64_t(thirdSteps));
     }
 
     // 4: a controller that refused a fresh specimen (a rig: replaced by hand) leaves only
