@@ -3338,11 +3338,4 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>The element this plot shows</translation>
     </message>
 </context>
-<context>
-    <name>hsmu::gui::HysteresisPlot</name>
-    <message>
-        <source>Hysteresis of %1 and its numerical twins</source>
-        <translation>Hysteresis of %1 and its numerical twins</translation>
-    </message>
-</context>
 </TS>

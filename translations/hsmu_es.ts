@@ -3338,11 +3338,4 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>El elemento que muestra este gráfico</translation>
     </message>
 </context>
-<context>
-    <name>hsmu::gui::HysteresisPlot</name>
-    <message>
-        <source>Hysteresis of %1 and its numerical twins</source>
-        <translation>Histéresis de %1 y sus gemelos numéricos</translation>
-    </message>
-</context>
 </TS>

@@ -3335,11 +3335,4 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>此图显示的单元</translation>
     </message>
 </context>
-<context>
-    <name>hsmu::gui::HysteresisPlot</name>
-    <message>
-        <source>Hysteresis of %1 and its numerical twins</source>
-        <translation>%1 及其数值孪生单元的滞回曲线</translation>
-    </message>
-</context>
 </TS>

@@ -89,11 +89,9 @@ void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int
         const QString name = QString::fromStdString(first.name);
         const QString deformation = QString::fromStdString(first.units.deformation);
         const QString force = QString::fromStdString(first.units.force);
-        const bool one = elements.size() == 1;
-        m_texts.push_back([this, name, deformation, force, one] {
-            setAxes(one ? tr("Hysteresis of %1").arg(name)
-                        : tr("Hysteresis of %1 and its numerical twins").arg(name),
-                    deformation, force);
+        // Named after the element shown first (its twins are named in the legend).
+        m_texts.push_back([this, name, deformation, force] {
+            setAxes(tr("Hysteresis of %1").arg(name), deformation, force);
         });
     }
     retranslate();

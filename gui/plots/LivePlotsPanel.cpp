@@ -107,6 +107,8 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     grid->addWidget(m_ground, 1, 0);
     grid->addWidget(underPicker(histories, m_trackingPicker, m_tracking, "trackingElement"), 1,
                     1);
+    grid->setColumnStretch(0, 1); // a picker above a plot never widens its column
+    grid->setColumnStretch(1, 1);
     top->addWidget(hysteresisBox);
     top->addWidget(histories);
     top->setStretchFactor(0, 2);

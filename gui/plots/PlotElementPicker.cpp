@@ -17,6 +17,8 @@ PlotElementPicker::PlotElementPicker(QWidget* parent) : QWidget(parent) {
     m_label = new QLabel(this);
     m_combo = new QComboBox(this);
     m_combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // The plot under it sets the width: the row may be cut at its right end, never widen it.
+    setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_label->setBuddy(m_combo);
     row->addWidget(m_label);
     row->addWidget(m_combo);

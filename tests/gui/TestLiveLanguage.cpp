@@ -205,11 +205,8 @@ private slots:
             HysteresisPlot& loop = plots->hysteresis();
             const QString loopTitle = title(loop);
             const QString shown = plots->hysteresisPicker().elementName();
-            QVERIFY2(loopTitle == catalogue("hsmu::gui::HysteresisPlot",
-                                            "Hysteresis of %1 and its numerical twins")
-                                      .arg(shown) ||
-                         loopTitle == catalogue("hsmu::gui::HysteresisPlot", "Hysteresis of %1")
-                                          .arg(shown),
+            QVERIFY2(loopTitle ==
+                         catalogue("hsmu::gui::HysteresisPlot", "Hysteresis of %1").arg(shown),
                      qPrintable(code + QStringLiteral(": ") + loopTitle));
             const QString rotation =
                 catalogue("hsmu::gui::HysteresisPlot", "Rotation [%1]").section('%', 0, 0);
