@@ -3293,6 +3293,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>Reset the specimen</source>
         <translation>Reiniciar la probeta</translation>
     </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>Continuar la movería unos %1 %2 en el primer paso, más que el límite de incremento %3 %2: el controlador retendría el ensayo. Elija una probeta nueva o lleve la probeta al reposo en el controlador.</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::MainWindow</name>

@@ -3290,6 +3290,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>Reset the specimen</source>
         <translation>重置试件</translation>
     </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>继续将使其在第一步移动约 %1 %2，超过增量限值 %3 %2：控制器会保持（暂停）试验。请选择新试件，或在控制器处使试件回到静止位置。</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::MainWindow</name>

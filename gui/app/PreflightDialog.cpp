@@ -196,6 +196,7 @@ QWidget* PreflightDialog::loadedSpecimenBox(const PreflightReport& report) {
     box->setStyleSheet(QStringLiteral("QGroupBox { color: #8a4b00; background: #fff3cd; }"));
     auto* v = new QVBoxLayout(box);
     bool freshPossible = true;
+    bool continuePossible = true;
     for (const SpecimenPreflight& s : report.specimens) {
         if (!s.loaded())
             continue;
@@ -210,6 +211,18 @@ QWidget* PreflightDialog::loadedSpecimenBox(const PreflightReport& report) {
             box);
         line->setObjectName(QStringLiteral("loadedSpecimenLine"));
         v->addWidget(line);
+        if (s.continueExceedsIncrement()) {
+            continuePossible = false;
+            auto* jump = new QLabel(
+                tr("Continuing would move it by about %1 %2 at the first step, more than the "
+                   "increment limit %3 %2: the controller would hold the test. Choose a fresh "
+                   "specimen, or bring the specimen back to rest at the controller.")
+                    .arg(QString::number(std::abs(s.lastDeformation), 'g', 4), unit,
+                         QString::number(s.limits.maxIncrement, 'g', 4)),
+                box);
+            jump->setObjectName(QStringLiteral("continueExceedsIncrement"));
+            v->addWidget(jump);
+        }
         if (!s.freshRefused.empty()) {
             freshPossible = false;
             auto* refused = new QLabel(
@@ -232,6 +245,7 @@ QWidget* PreflightDialog::loadedSpecimenBox(const PreflightReport& report) {
     m_fresh = new QRadioButton(tr("Fresh specimen"), box);
     m_fresh->setObjectName(QStringLiteral("freshSpecimen"));
     m_fresh->setEnabled(freshPossible);
+    m_continue->setEnabled(continuePossible);
     v->addWidget(m_continue);
     v->addWidget(m_fresh);
     connect(m_continue, &QRadioButton::toggled, this, &PreflightDialog::updateStart);

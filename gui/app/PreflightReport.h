@@ -13,6 +13,7 @@
 
 #include <QMetaType>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -39,6 +40,13 @@ struct SpecimenPreflight {
     std::string freshRefused;
 
     bool loaded() const { return committedSteps > 0; }
+    /// Continuing would send a first target about |lastDeformation| away from where the
+    /// specimen stands (this test starts from rest): more than the increment limit, which the
+    /// controller refuses (interlock) before the first step is taken.
+    bool continueExceedsIncrement() const {
+        const double limit = limits.maxIncrement;
+        return loaded() && std::isfinite(limit) && limit > 0.0 && std::abs(lastDeformation) > limit;
+    }
 };
 
 struct PreflightReport {

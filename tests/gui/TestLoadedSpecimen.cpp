@@ -314,6 +314,38 @@ private slots:
         QCOMPARE(table->item(0, 4)->text(), QStringLiteral("-0.0125 m"));
         QVERIFY(!table->item(0, 5)->text().contains(QStringLiteral("nan")));
     }
+
+    // Continuing where the first target would jump past the increment limit (this test starts
+    // from rest; seen in a real window: the controller's interlock held Bearing D at step 1,
+    // |d - d_last| = 0.0204 > 0.02) is not offered: a fresh specimen is.
+    void continueBeyondTheIncrementLimitIsNotOffered() {
+        PreflightReport report;
+        report.integrator = "explicitNewmark";
+        report.dt = 0.005;
+        report.totalSteps = 1200;
+        report.stability.stable = true;
+        report.pga = 3.0;
+        SpecimenPreflight s;
+        s.element = "Bearing D";
+        s.deformationUnit = "m";
+        s.forceUnit = "kN";
+        s.limits.maxIncrement = 0.02;
+        s.committedSteps = 1200;
+        s.lastDeformation = 0.0204;
+        s.measuredDeformation = s.lastDeformation;
+        report.specimens.push_back(s);
+        PreflightDialog d(report);
+        QVERIFY(d.findChild<QLabel*>(QStringLiteral("continueExceedsIncrement")));
+        QVERIFY(!d.continueChoice()->isEnabled());
+        QVERIFY(d.freshChoice()->isEnabled());
+        d.zeroConfirmation()->setChecked(true);
+        QVERIFY(!d.startButton()->isEnabled());
+        // Within the limit (0.0196 m back to rest) it is offered.
+        report.specimens[0].lastDeformation = -0.0196;
+        PreflightDialog within(report);
+        QVERIFY(!within.findChild<QLabel*>(QStringLiteral("continueExceedsIncrement")));
+        QVERIFY(within.continueChoice()->isEnabled());
+    }
 };
 
 int main(int argc, char** argv) {
