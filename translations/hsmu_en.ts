@@ -1844,10 +1844,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Hysteresis of %1</translation>
     </message>
     <message>
-        <source>Hysteresis: specimen and numerical twins</source>
-        <translation>Hysteresis: specimen and numerical twins</translation>
-    </message>
-    <message>
         <source>auxiliary model (%1)</source>
         <translation>auxiliary model (%1)</translation>
     </message>
@@ -3344,6 +3340,93 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
         <translation>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PreflightDialog</name>
+    <message>
+        <source>not measured</source>
+        <translation>not measured</translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
+        <translation>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</translation>
+    </message>
+    <message>
+        <source>Specimen loaded by an earlier test</source>
+        <translation>Specimen loaded by an earlier test</translation>
+    </message>
+    <message>
+        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
+        <translation>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</translation>
+    </message>
+    <message>
+        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
+        <translation>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</translation>
+    </message>
+    <message>
+        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
+        <translation>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</translation>
+    </message>
+    <message>
+        <source>Continue on the loaded specimen</source>
+        <translation>Continue on the loaded specimen</translation>
+    </message>
+    <message>
+        <source>Fresh specimen</source>
+        <translation>Fresh specimen</translation>
+    </message>
+    <message>
+        <source>Reset the specimen</source>
+        <translation>Reset the specimen</translation>
+    </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::MainWindow</name>
+    <message>
+        <source>asking the controller for a fresh specimen...</source>
+        <translation>asking the controller for a fresh specimen...</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorEvent</name>
+    <message>
+        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
+        <translation>%1 (%L2 committed steps, last deformation %3 %4)</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
+        <translation>specimen loaded by an earlier test: %1; the operator continues on it</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
+        <translation>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
+        <translation>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::TestWorker</name>
+    <message>
+        <source>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</source>
+        <translation>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PlotElementPicker</name>
+    <message>
+        <source>Element:</source>
+        <translation>Element:</translation>
+    </message>
+    <message>
+        <source>The element this plot shows</source>
+        <translation>The element this plot shows</translation>
     </message>
 </context>
 </TS>

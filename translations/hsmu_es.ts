@@ -1828,10 +1828,6 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Histéresis de %1</translation>
     </message>
     <message>
-        <source>Hysteresis: specimen and numerical twins</source>
-        <translation>Histéresis: probeta y gemelos numéricos</translation>
-    </message>
-    <message>
         <source>Rotation [%1]</source>
         <translation>Rotación [%1]</translation>
     </message>
@@ -3344,6 +3340,93 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
         <translation>  salidas: %1 (comparison.csv, summary.json; los archivos de cada método en calibration/, ukf/, nelder-mead/)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PreflightDialog</name>
+    <message>
+        <source>not measured</source>
+        <translation>sin medir</translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
+        <translation>d y F medidos: lo que la probeta informó tras preparar el enlace, antes de enviar ningún objetivo; para una probeta cargada por un ensayo anterior, d es su última deformación confirmada y F se mide en el primer paso.</translation>
+    </message>
+    <message>
+        <source>Specimen loaded by an earlier test</source>
+        <translation>Probeta cargada por un ensayo anterior</translation>
+    </message>
+    <message>
+        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
+        <translation>%1 tiene %L2 pasos confirmados de un ensayo anterior; su última deformación confirmada es %3 %4. Este ensayo parte del reposo: su primer objetivo mueve la probeta desde allí.</translation>
+    </message>
+    <message>
+        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
+        <translation>Su controlador rechazó una probeta nueva (%1): sustituya la probeta en el controlador y reinicie el controlador sin su archivo de estado, o continúe con la probeta cargada.</translation>
+    </message>
+    <message>
+        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
+        <translation>Elija: continuar con la probeta cargada (su daño forma parte de este ensayo) o una probeta nueva (su controlador la reinicia al paso 0 y luego se muestra de nuevo esta verificación).</translation>
+    </message>
+    <message>
+        <source>Continue on the loaded specimen</source>
+        <translation>Continuar con la probeta cargada</translation>
+    </message>
+    <message>
+        <source>Fresh specimen</source>
+        <translation>Probeta nueva</translation>
+    </message>
+    <message>
+        <source>Reset the specimen</source>
+        <translation>Reiniciar la probeta</translation>
+    </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>Continuar la movería unos %1 %2 en el primer paso, más que el límite de incremento %3 %2: el controlador retendría el ensayo. Elija una probeta nueva o lleve la probeta al reposo en el controlador.</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::MainWindow</name>
+    <message>
+        <source>asking the controller for a fresh specimen...</source>
+        <translation>solicitando al controlador una probeta nueva...</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorEvent</name>
+    <message>
+        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
+        <translation>%1 (%L2 pasos confirmados, última deformación %3 %4)</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
+        <translation>probeta cargada por un ensayo anterior: %1; el operador continúa con ella</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
+        <translation>probeta cargada por un ensayo anterior: %1; el operador eligió una probeta nueva, su controlador la reinició al paso 0</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
+        <translation>probeta cargada por un ensayo anterior: %1; el operador eligió una probeta nueva, su controlador la rechazó (nada cambió)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::TestWorker</name>
+    <message>
+        <source>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</source>
+        <translation>el controlador de %1 rechazó una probeta nueva: %2; sustituya la probeta en el controlador o continúe con la probeta cargada</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PlotElementPicker</name>
+    <message>
+        <source>Element:</source>
+        <translation>Elemento:</translation>
+    </message>
+    <message>
+        <source>The element this plot shows</source>
+        <translation>El elemento que muestra este gráfico</translation>
     </message>
 </context>
 </TS>

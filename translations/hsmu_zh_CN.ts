@@ -1827,10 +1827,6 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>%1 的滞回曲线</translation>
     </message>
     <message>
-        <source>Hysteresis: specimen and numerical twins</source>
-        <translation>滞回曲线：试件及其数值孪生模型</translation>
-    </message>
-    <message>
         <source>Rotation [%1]</source>
         <translation>转角 [%1]</translation>
     </message>
@@ -3341,6 +3337,93 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
         <translation>  输出：%1（comparison.csv、summary.json；各方法自己的文件在 calibration/、ukf/、nelder-mead/ 中）</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PreflightDialog</name>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
+        <translation>实测 d 和 F：链路准备好后、发送任何目标之前试件报告的值；对于已被先前试验加载的试件，d 是其最后一个已提交步的变形，F 在第一步测量。</translation>
+    </message>
+    <message>
+        <source>Specimen loaded by an earlier test</source>
+        <translation>试件已被先前的试验加载</translation>
+    </message>
+    <message>
+        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
+        <translation>%1 已有先前试验的 %L2 个已提交步；其最后一个已提交步的变形为 %3 %4。本试验从静止开始：第一个目标将使试件从该位置移动。</translation>
+    </message>
+    <message>
+        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
+        <translation>其控制器拒绝了新试件（%1）：请在控制器处更换试件，并在不带状态文件的情况下重启控制器，或在已加载的试件上继续。</translation>
+    </message>
+    <message>
+        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
+        <translation>请选择：在已加载的试件上继续（其损伤计入本试验），或使用新试件（其控制器将其重置到第 0 步，然后再次显示本检查）。</translation>
+    </message>
+    <message>
+        <source>Continue on the loaded specimen</source>
+        <translation>在已加载的试件上继续</translation>
+    </message>
+    <message>
+        <source>Fresh specimen</source>
+        <translation>新试件</translation>
+    </message>
+    <message>
+        <source>Reset the specimen</source>
+        <translation>重置试件</translation>
+    </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>继续将使其在第一步移动约 %1 %2，超过增量限值 %3 %2：控制器会保持（暂停）试验。请选择新试件，或在控制器处使试件回到静止位置。</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::MainWindow</name>
+    <message>
+        <source>asking the controller for a fresh specimen...</source>
+        <translation>正在向控制器请求新试件...</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorEvent</name>
+    <message>
+        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
+        <translation>%1（%L2 个已提交步，最后变形 %3 %4）</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
+        <translation>试件已被先前的试验加载：%1；操作员在其上继续</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
+        <translation>试件已被先前的试验加载：%1；操作员选择了新试件，其控制器已将其重置到第 0 步</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
+        <translation>试件已被先前的试验加载：%1；操作员选择了新试件，其控制器拒绝（未作任何更改）</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::TestWorker</name>
+    <message>
+        <source>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</source>
+        <translation>%1 的控制器拒绝了新试件：%2；请在控制器处更换试件，或在已加载的试件上继续</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::PlotElementPicker</name>
+    <message>
+        <source>Element:</source>
+        <translation>单元：</translation>
+    </message>
+    <message>
+        <source>The element this plot shows</source>
+        <translation>此图显示的单元</translation>
     </message>
 </context>
 </TS>

@@ -133,13 +133,11 @@ ControlResult TcpControl::handshake(bool initial) {
     m_controllerCommitted = ack->committedSteps;
     if (initial) {
         m_committed = ack->committedSteps;
+        m_lastCommittedTarget = ack->lastCommittedTarget;
         bool held = ack->holding;
         if (m_committed > 0 && m_opt.freshSpecimen) {
-            if (!m_link->send(ResetMsg{}, error))
-                return linkFault(error);
-            if (ControlResult r = await(MessageType::Reset, m_opt.stepDeadline); !r.ok)
+            if (ControlResult r = sendReset(); !r.ok)
                 return r;
-            m_committed = 0;
             held = false; // a new specimen
         }
         if (held) {
@@ -170,6 +168,33 @@ ControlResult TcpControl::handshake(bool initial) {
         return r;
     m_linkError.clear();
     return ControlResult::success();
+}
+
+ControlResult TcpControl::sendReset() {
+    std::string error;
+    if (!m_link->send(ResetMsg{}, error))
+        return linkFault(error);
+    if (ControlResult r = await(MessageType::Reset, m_opt.stepDeadline); !r.ok)
+        return r;
+    m_committed = 0;
+    m_controllerCommitted = 0;
+    m_lastCommittedTarget = 0.0;
+    m_measured = false;
+    return ControlResult::success();
+}
+
+std::optional<PriorLoading> TcpControl::priorLoading() const {
+    return PriorLoading{m_committed, m_lastCommittedTarget};
+}
+
+ControlResult TcpControl::freshSpecimen() {
+    if (emergency())
+        return ControlResult::fault(where() + ": " + emergencyText());
+    if (!m_link->isOpen())
+        return ControlResult::fault("link to " + where() + " is down (" + m_linkError + ")");
+    if (m_committed == 0)
+        return ControlResult::success(); // virgin already
+    return sendReset();
 }
 
 ControlResult TcpControl::reconnect() {

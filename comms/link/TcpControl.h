@@ -85,6 +85,13 @@ public:
     double replyLatency() const override { return m_latency; }
     /// Any thread: Hold frame posted at once, the worker's wait interrupted (see the header).
     void emergencyHold(const std::string& reason) override;
+    /// The specimen's committed steps and last committed target as its controller reported
+    /// them in the hello-ack (0 after a reset).
+    std::optional<PriorLoading> priorLoading() const override;
+    /// Reset (docs/protocol.md): hsmu-controller gives a new virtual specimen at step 0; a
+    /// controller of a real rig refuses it (the fault names its answer). Nothing is sent when
+    /// the specimen has no committed steps.
+    ControlResult freshSpecimen() override;
     /// commanded, measured (deformation), held ticks and flags of the last measurement frame.
     std::optional<ActuatorChannels> actuatorChannels() const override;
 
@@ -105,6 +112,8 @@ private:
     ControlResult linkFault(const std::string& what);
     ControlResult recoverCommit(const std::string& why);
     ControlResult refused(const ErrorMsg& e);
+    /// Reset, its acknowledgement, then step count 0.
+    ControlResult sendReset();
     /// A receive that failed: the emergency hold's fault (link kept) or a link fault.
     ControlResult noReply(const std::string& what, const std::string& error);
     bool emergency() const { return m_emergency.load(std::memory_order_acquire); }
@@ -129,6 +138,7 @@ private:
     int m_reconnects = 0;
     bool m_connectFailed = false;
     std::uint64_t m_controllerCommitted = 0; // as of the last hello-ack
+    double m_lastCommittedTarget = 0.0;      // as of the first hello-ack (or 0 after a reset)
     double m_sentTarget = 0.0;
     bool m_commitSent = false;
     std::chrono::steady_clock::time_point m_targetSentAt{};

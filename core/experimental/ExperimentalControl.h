@@ -32,6 +32,14 @@ struct ActuatorChannels {
     std::int64_t flags = -1;     ///< native protocol flags (bit 0 fractured, bit 1 replayed); -1: none
 };
 
+/// What a specimen carries from earlier tests (a controller that keeps its specimens between
+/// console sessions: hsmu-controller, docs/protocol.md "Reset"; docs/console.md, "A specimen
+/// loaded by an earlier test"). Deformation in the specimen's units.
+struct PriorLoading {
+    std::uint64_t committedSteps = 0; ///< steps committed before this test
+    double lastDeformation = 0.0;     ///< target of the last of them (where it stands)
+};
+
 struct ControlResult {
     bool ok = true;
     std::string reason; ///< why, when !ok
@@ -75,6 +83,16 @@ public:
     /// Default: nothing, for controls whose calls never block (the in-process virtual
     /// specimen): the test holds them at its next step boundary (HybridTest::emergencyHold).
     virtual void emergencyHold(const std::string& reason) { (void)reason; }
+    /// After prepare(), before the first step: what the specimen carries from earlier tests;
+    /// nullopt when the control
+    /// always starts from a virgin specimen (the in-process virtual specimen, OpenFresco).
+    virtual std::optional<PriorLoading> priorLoading() const { return std::nullopt; }
+    /// After prepare(), before the first target: ask the lab for a virgin specimen (committed
+    /// steps 0). A control or lab that cannot give one returns a fault naming why (a rig's
+    /// specimen is replaced by hand at the controller).
+    virtual ControlResult freshSpecimen() {
+        return ControlResult::fault("this control cannot replace its specimen: " + description());
+    }
     /// The actuator channels of the last measurement; nullopt when the control has none.
     virtual std::optional<ActuatorChannels> actuatorChannels() const { return std::nullopt; }
 };

@@ -397,6 +397,7 @@ void MainWindow::showPreflight(const PreflightReport& report) {
     m_preflight->addAction(m_controls->emergencyHoldAction()); // alive over the modal dialog
     connect(m_preflight, &QDialog::finished, this, [this, current, name](int result) {
         const RunRequest request = m_pendingRun;
+        const PreflightDialog::SpecimenChoice choice = m_preflight->specimenChoice();
         m_pendingRun = RunRequest::None;
         m_preflight = nullptr;
         if (result != QDialog::Accepted || request == RunRequest::None) {
@@ -404,6 +405,15 @@ void MainWindow::showPreflight(const PreflightReport& report) {
                                  AlarmSeverity::Info);
             return;
         }
+        if (choice == PreflightDialog::SpecimenChoice::Fresh) {
+            // Nothing starts: the controllers reset, the check comes again (preflightReady).
+            m_pendingRun = request;
+            m_controller->chooseLoadedSpecimens(true);
+            m_status->showMessage(tr("asking the controller for a fresh specimen..."), 5000);
+            return;
+        }
+        if (choice == PreflightDialog::SpecimenChoice::Continue)
+            m_controller->chooseLoadedSpecimens(false); // an event per loaded specimen
         ConsoleSettings::setLastRun(name, current);
         m_controller->confirmPreflight(); // an event in the record and the list
         request == RunRequest::Start ? m_controller->start() : m_controller->singleStep();

@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QRegularExpression>
 
 #include <cstring>
 
@@ -24,6 +25,30 @@ QString policyText(const QString& value) {
     const QString rest = value.section(QLatin1Char(' '), 1);
     const QString text = PendingUpdatesPanel::describe(*policy);
     return rest.isEmpty() ? text : text + QLatin1Char(' ') + rest;
+}
+// kLoadedSpecimen: "<element>: <N> committed steps, last deformation <d> <unit>" in words.
+QString loadedSpecimenText(const QString& old, const QString& choice) {
+    static const QRegularExpression form(
+        QStringLiteral("^(.*): (\\d+) committed steps, last deformation (\\S+) ?(.*)$"));
+    const QRegularExpressionMatch m = form.match(old);
+    const QString specimen =
+        m.hasMatch() ? OperatorEvent::tr("%1 (%L2 committed steps, last deformation %3 %4)")
+                           .arg(m.captured(1))
+                           .arg(m.captured(2).toULongLong())
+                           .arg(m.captured(3), m.captured(4))
+                           .trimmed()
+                     : old;
+    if (choice == QLatin1String("continue"))
+        return OperatorEvent::tr("specimen loaded by an earlier test: %1; the operator continues "
+                                 "on it")
+            .arg(specimen);
+    if (choice == QLatin1String("fresh"))
+        return OperatorEvent::tr("specimen loaded by an earlier test: %1; the operator chose a "
+                                 "fresh specimen, its controller reset it to step 0")
+            .arg(specimen);
+    return OperatorEvent::tr("specimen loaded by an earlier test: %1; the operator chose a fresh "
+                             "specimen, its controller refused (nothing changed)")
+        .arg(specimen);
 }
 } // namespace
 
@@ -105,6 +130,8 @@ QString OperatorEvent::describe() const {
         what = tr("fit-error threshold changed: %1 -> %2").arg(o, n);
     else if (is(action, kPolicy))
         what = tr("updating policy changed: %1 -> %2").arg(policyText(o), policyText(n));
+    else if (is(action, kLoadedSpecimen))
+        what = loadedSpecimenText(o, n);
     else if (is(action, kNote))
         what = tr("note recorded: %1").arg(n);
     else

@@ -1,7 +1,7 @@
 #pragma once
 // OperatorEvent: one operator action on a test (pre-flight confirmation, start, pause, single
 // step, resume, hold, stop, approve / reject an update, bounds, lock, fit-error threshold,
-// updating policy), stamped by the test worker with the committed step, the test time [s] and
+// updating policy, the choice for a specimen loaded by an earlier test), stamped by the test worker with the committed step, the test time [s] and
 // the wall time (UTC), with the value before and after.
 // The record keeps it language-neutral as an operator note (/notes, docs/recording.md):
 //   "operator-event action=<key>; old=<value>; new=<value>; wall=<yyyy-MM-ddTHH:mm:ss.zzzZ>"
@@ -38,6 +38,10 @@ public:
     static constexpr const char* kLock = "lock";
     static constexpr const char* kThreshold = "fit-threshold";
     static constexpr const char* kPolicy = "updating-policy";
+    /// The choice for a specimen loaded by an earlier test (pre-flight): old "<element>: <N>
+    /// committed steps, last deformation <d> <unit>", new "continue", "fresh" (its controller
+    /// reset it to step 0) or "fresh-refused" (the controller refused; nothing changed).
+    static constexpr const char* kLoadedSpecimen = "loaded-specimen";
     /// An operator note (newValue: its text): shown in the event list; the record keeps the
     /// note itself in /notes, not as an operator-event row.
     static constexpr const char* kNote = "note";

@@ -10,6 +10,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QScreen>
 #include <QScrollArea>
 #include <QGuiApplication>
@@ -127,19 +128,28 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
                                 limit(s.limits.maxForce, f),
                                 limit(s.limits.maxIncrement, d),
                                 withUnit(QString::number(s.measuredDeformation, 'g', 4), d),
-                                withUnit(QString::number(s.measuredForce, 'g', 4), f)};
+                                std::isfinite(s.measuredForce)
+                                    ? withUnit(QString::number(s.measuredForce, 'g', 4), f)
+                                    : tr("not measured")};
         for (int c = 0; c < cells.size(); ++c)
             table->setItem(i, c, new QTableWidgetItem(cells[c]));
     }
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     sv->addWidget(table);
-    auto* note = new QLabel(tr("Measured d and F: what the specimen reported after the link "
-                               "was prepared, before any target was sent."),
-                            specimens);
+    auto* note = new QLabel(
+        report.hasLoadedSpecimen()
+            ? tr("Measured d and F: what the specimen reported after the link was prepared, "
+                 "before any target was sent; for a specimen loaded by an earlier test, d is "
+                 "its last committed deformation and F is measured at the first step.")
+            : tr("Measured d and F: what the specimen reported after the link was prepared, "
+                 "before any target was sent."),
+        specimens);
     note->setWordWrap(true);
     sv->addWidget(note);
     layout->addWidget(specimens, 1);
 
+    if (report.hasLoadedSpecimen())
+        layout->addWidget(loadedSpecimenBox(report));
     if (!warnings.isEmpty()) {
         auto* flagged = new QLabel(tr("Please check:") + QStringLiteral("\n• ") +
                                        warnings.join(QStringLiteral("\n• ")),
@@ -180,8 +190,87 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
     resize(size);
 }
 
+QWidget* PreflightDialog::loadedSpecimenBox(const PreflightReport& report) {
+    auto* box = new QGroupBox(tr("Specimen loaded by an earlier test"), this);
+    box->setObjectName(QStringLiteral("loadedSpecimen"));
+    box->setStyleSheet(QStringLiteral("QGroupBox { color: #8a4b00; background: #fff3cd; }"));
+    auto* v = new QVBoxLayout(box);
+    bool freshPossible = true;
+    bool continuePossible = true;
+    for (const SpecimenPreflight& s : report.specimens) {
+        if (!s.loaded())
+            continue;
+        const QString unit = QString::fromStdString(s.deformationUnit);
+        auto* line = new QLabel(
+            tr("%1 has %L2 committed steps from an earlier test; its last committed "
+               "deformation is %3 %4. This test starts from rest: its first target moves the "
+               "specimen from there.")
+                .arg(QString::fromStdString(s.element))
+                .arg(qulonglong(s.committedSteps))
+                .arg(QString::number(s.lastDeformation, 'g', 4), unit),
+            box);
+        line->setObjectName(QStringLiteral("loadedSpecimenLine"));
+        v->addWidget(line);
+        if (s.continueExceedsIncrement()) {
+            continuePossible = false;
+            auto* jump = new QLabel(
+                tr("Continuing would move it by about %1 %2 at the first step, more than the "
+                   "increment limit %3 %2: the controller would hold the test. Choose a fresh "
+                   "specimen, or bring the specimen back to rest at the controller.")
+                    .arg(QString::number(std::abs(s.lastDeformation), 'g', 4), unit,
+                         QString::number(s.limits.maxIncrement, 'g', 4)),
+                box);
+            jump->setObjectName(QStringLiteral("continueExceedsIncrement"));
+            v->addWidget(jump);
+        }
+        if (!s.freshRefused.empty()) {
+            freshPossible = false;
+            auto* refused = new QLabel(
+                tr("Its controller refused a fresh specimen (%1): replace the specimen at the "
+                   "controller and restart the controller without its state file, or continue "
+                   "on the loaded specimen.")
+                    .arg(AlarmText::reason(QString::fromStdString(s.freshRefused))),
+                box);
+            refused->setObjectName(QStringLiteral("freshRefused"));
+            v->addWidget(refused);
+        }
+    }
+    auto* explain = new QLabel(tr("Choose: continue on the loaded specimen (its damage is part "
+                                  "of this test), or a fresh specimen (its controller resets "
+                                  "it to step 0, then this check is shown again)."),
+                               box);
+    v->addWidget(explain);
+    m_continue = new QRadioButton(tr("Continue on the loaded specimen"), box);
+    m_continue->setObjectName(QStringLiteral("continueLoadedSpecimen"));
+    m_fresh = new QRadioButton(tr("Fresh specimen"), box);
+    m_fresh->setObjectName(QStringLiteral("freshSpecimen"));
+    m_fresh->setEnabled(freshPossible);
+    m_continue->setEnabled(continuePossible);
+    v->addWidget(m_continue);
+    v->addWidget(m_fresh);
+    connect(m_continue, &QRadioButton::toggled, this, &PreflightDialog::updateStart);
+    connect(m_fresh, &QRadioButton::toggled, this, &PreflightDialog::updateStart);
+    return box;
+}
+
+PreflightDialog::SpecimenChoice PreflightDialog::specimenChoice() const {
+    if (m_fresh && m_fresh->isChecked())
+        return SpecimenChoice::Fresh;
+    if (m_continue && m_continue->isChecked())
+        return SpecimenChoice::Continue;
+    return SpecimenChoice::None;
+}
+
 void PreflightDialog::updateStart() {
-    m_start->setEnabled(m_zero->isChecked() && m_report.startable());
+    const SpecimenChoice choice = specimenChoice();
+    if (choice == SpecimenChoice::Fresh) { // nothing starts: reset, then this check again
+        m_start->setText(tr("Reset the specimen"));
+        m_start->setEnabled(true);
+        return;
+    }
+    m_start->setText(tr("Start test"));
+    const bool chosen = !m_report.hasLoadedSpecimen() || choice == SpecimenChoice::Continue;
+    m_start->setEnabled(m_zero->isChecked() && m_report.startable() && chosen);
 }
 
 } // namespace hsmu::gui

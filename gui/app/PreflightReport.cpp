@@ -6,6 +6,8 @@
 #include "core/structure/Structure.h"
 #include "core/experiment/HybridTest.h"
 
+#include <limits>
+
 namespace hsmu::gui {
 
 PreflightReport preflightOf(const HybridTest& test, bool allowUnstable) {
@@ -30,6 +32,13 @@ PreflightReport preflightOf(const HybridTest& test, bool allowUnstable) {
         s.limits = x->limits();
         s.measuredDeformation = x->measurement().deformation;
         s.measuredForce = x->measurement().force;
+        if (const auto h = x->control().priorLoading(); h && h->committedSteps > 0) {
+            // Nothing was measured yet: it stands where its last committed step left it.
+            s.committedSteps = h->committedSteps;
+            s.lastDeformation = h->lastDeformation;
+            s.measuredDeformation = h->lastDeformation;
+            s.measuredForce = std::numeric_limits<double>::quiet_NaN();
+        }
         r.specimens.push_back(s);
     }
     return r;

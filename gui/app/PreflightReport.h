@@ -3,7 +3,8 @@
 // control asks before its first step): the integrator and its stability check
 // (docs/method.md, Hybrid simulation: explicit Newmark needs omega_max dt <= 2), the ground motion,
 // and per specimen its control, its safety limits and the values measured after the control was
-// prepared (the zero the test starts from). Units: the specimen's (rad and kN m for a
+// prepared (the zero the test starts from), or, for a specimen loaded by an earlier test, its
+// committed steps and last deformation. Units: the specimen's (rad and kN m for a
 // rotational spring, m and kN for a lateral one); s; m/s^2.
 // Thread rules: plain data; preflightOf() on the thread that runs the test, after prepare().
 
@@ -12,6 +13,8 @@
 
 #include <QMetaType>
 
+#include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,8 +30,23 @@ struct SpecimenPreflight {
     std::string deformationUnit; ///< e.g. "rad"
     std::string forceUnit;       ///< e.g. "kN m"
     SafetyLimits limits;
-    double measuredDeformation = 0.0; ///< after prepare()
-    double measuredForce = 0.0;       ///< after prepare()
+    double measuredDeformation = 0.0; ///< after prepare(); a loaded specimen: lastDeformation
+    double measuredForce = 0.0;       ///< after prepare(); NaN: not measured yet (loaded)
+    /// Loaded by an earlier test (ExperimentalControl::priorLoading(); docs/console.md,
+    /// "A specimen loaded by an earlier test"): its committed steps and last deformation.
+    std::uint64_t committedSteps = 0;
+    double lastDeformation = 0.0;
+    /// Why its controller refused a fresh specimen ("" = not asked, or it gave one).
+    std::string freshRefused;
+
+    bool loaded() const { return committedSteps > 0; }
+    /// Continuing would send a first target about |lastDeformation| away from where the
+    /// specimen stands (this test starts from rest): more than the increment limit, which the
+    /// controller refuses (interlock) before the first step is taken.
+    bool continueExceedsIncrement() const {
+        const double limit = limits.maxIncrement;
+        return loaded() && std::isfinite(limit) && limit > 0.0 && std::abs(lastDeformation) > limit;
+    }
 };
 
 struct PreflightReport {
@@ -43,6 +61,13 @@ struct PreflightReport {
 
     /// The test may start once the operator confirms (stable, or forced by the configuration).
     bool startable() const { return stability.stable || allowUnstable; }
+    /// Some specimen was loaded by an earlier test: the operator chooses continue or fresh.
+    bool hasLoadedSpecimen() const {
+        for (const SpecimenPreflight& s : specimens)
+            if (s.loaded())
+                return true;
+        return false;
+    }
 };
 
 /// Copy the report out of a prepared test.

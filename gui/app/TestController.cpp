@@ -146,6 +146,9 @@ void TestController::prepare() {
 void TestController::confirmPreflight() {
     onWorker([](TestWorker* w) { w->confirmPreflight(); });
 }
+void TestController::chooseLoadedSpecimens(bool fresh) {
+    onWorker([fresh](TestWorker* w) { w->chooseLoadedSpecimens(fresh); });
+}
 void TestController::skipPreflight() {
     onWorker([](TestWorker* w) { w->skipPreflight(); });
 }

@@ -82,6 +82,10 @@ public slots:
     void prepare();
     /// Record that the operator confirmed the pre-flight check (call before start()).
     void confirmPreflight();
+    /// The operator's choice at the pre-flight for specimens loaded by an earlier test:
+    /// continue on them, or fresh ones (their controllers reset them; the pre-flight is
+    /// reported again). TestWorker::chooseLoadedSpecimens().
+    void chooseLoadedSpecimens(bool fresh);
     /// Record that the test starts without the pre-flight dialog (hsmu --start).
     void skipPreflight();
     /// Arm and start stepping (prepares first if needed, without a pre-flight report).

@@ -4,6 +4,9 @@
 #include "core/output/RunSummary.h"
 #include "core/session/TestSession.h"
 #include "core/experiment/HybridTest.h"
+#include "core/experimental/ExperimentalElement.h"
+#include "core/output/ElementUnits.h"
+#include "core/structure/Structure.h"
 #include "core/updating/ModelUpdater.h"
 #include "gui/app/RecordBuffer.h"
 
@@ -114,7 +117,46 @@ bool TestWorker::ensurePrepared() {
 void TestWorker::prepare() {
     if (m_state != RunState::Ready || !ensurePrepared())
         return;
-    emit preflightReady(preflightOf(test(), m_allowUnstable));
+    emit preflightReady(preflightReport());
+}
+
+PreflightReport TestWorker::preflightReport() {
+    PreflightReport r = preflightOf(test(), m_allowUnstable);
+    for (SpecimenPreflight& s : r.specimens)
+        if (const auto it = m_freshRefused.find(s.element); it != m_freshRefused.end() && s.loaded())
+            s.freshRefused = it->second;
+    return r;
+}
+
+void TestWorker::chooseLoadedSpecimens(bool fresh) {
+    if (m_state != RunState::Ready || m_armed || !m_session->prepared())
+        return;
+    for (const auto& e : test().structure().elements()) {
+        auto* x = dynamic_cast<ExperimentalElement*>(e.get());
+        const auto h = x ? x->control().priorLoading() : std::nullopt;
+        if (!h || h->committedSteps == 0)
+            continue;
+        const std::string loaded =
+            x->name() + ": " + std::to_string(h->committedSteps) +
+            " committed steps, last deformation " + QString::number(h->lastDeformation, 'g', 6).toStdString() +
+            " " + elementUnits(x->typeName()).deformation;
+        if (!fresh) {
+            logEvent(OperatorEvent::kLoadedSpecimen, loaded, "continue");
+            continue;
+        }
+        const ControlResult r = x->control().freshSpecimen();
+        logEvent(OperatorEvent::kLoadedSpecimen, loaded, r.ok ? "fresh" : "fresh-refused");
+        if (r.ok) {
+            m_freshRefused.erase(x->name());
+        } else {
+            m_freshRefused[x->name()] = r.reason;
+            refuse(QT_TR_NOOP("the controller of %1 refused a fresh specimen: %2; replace the "
+                              "specimen at the controller, or continue on the loaded specimen"),
+                   {QString::fromStdString(x->name()), QString::fromStdString(r.reason)});
+        }
+    }
+    if (fresh)
+        emit preflightReady(preflightReport());
 }
 
 void TestWorker::confirmPreflight() {

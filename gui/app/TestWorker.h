@@ -49,7 +49,9 @@
 #include <QObject>
 #include <QTimer>
 
+#include <map>
 #include <memory>
+#include <string>
 
 namespace hsmu::gui {
 
@@ -82,6 +84,12 @@ public slots:
     /// The test starts without the pre-flight dialog (hsmu --start: the command line is the
     /// operator's confirmation); recorded as an event.
     void skipPreflight();
+    /// The operator's choice for the specimens an earlier test loaded (pre-flight; docs/
+    /// console.md): continue on them, or ask their controllers for fresh ones
+    /// (ExperimentalControl::freshSpecimen()). An event per loaded specimen (kLoadedSpecimen);
+    /// a refusal is also reported (commandRefused). After `fresh` the pre-flight is reported
+    /// again (preflightReady), the refusals named in it.
+    void chooseLoadedSpecimens(bool fresh);
     /// Prepare if needed, arm and start stepping; Failed if it cannot start.
     void start();
     void pause();
@@ -130,6 +138,8 @@ signals:
 
 private:
     bool ensurePrepared();
+    /// preflightOf() with the controllers' refusals of a fresh specimen.
+    PreflightReport preflightReport();
     /// Open the record before the first driven step (idempotent); false: Failed, no step.
     bool openRecord();
     HybridTest& test() { return m_session->test(); }
@@ -149,6 +159,7 @@ private:
     std::unique_ptr<TestSession> m_session;
     std::shared_ptr<RecordBuffer> m_buffer;
     bool m_allowUnstable = false;
+    std::map<std::string, std::string> m_freshRefused; ///< element -> the controller's refusal
     QString m_recordPath;
     QTimer* m_flushTimer = nullptr; ///< TestSession::tick() while paused or held
     bool m_armed = false;

@@ -24,32 +24,47 @@ void HysteresisPlot::retranslate() {
     replot(QCustomPlot::rpQueuedReplot);
 }
 
-std::vector<int> HysteresisPlot::specimenWithTwins(const RunLayout& layout) {
-    int specimen = -1;
+int HysteresisPlot::defaultElement(const RunLayout& layout) {
     // The identified specimen first: its loop is the one the auxiliary model and the
     // Parameters dock describe (two labs: Bearing D, not the first specimen, Bearing C).
-    for (std::size_t i = 0; i < layout.elements.size() && specimen < 0 && layout.updating; ++i)
+    for (std::size_t i = 0; i < layout.elements.size() && layout.updating; ++i)
         if (layout.elements[i].experimental && layout.elements[i].name == layout.updating->specimen)
-            specimen = int(i);
-    for (std::size_t i = 0; i < layout.elements.size() && specimen < 0; ++i)
+            return int(i);
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
         if (layout.elements[i].experimental)
-            specimen = int(i);
-    for (std::size_t i = 0; i < layout.elements.size() && specimen < 0; ++i)
+            return int(i);
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
         if (layout.elements[i].nonlinear)
-            specimen = int(i);
-    if (specimen < 0)
+            return int(i);
+    return -1;
+}
+
+std::vector<int> HysteresisPlot::loopElements(const RunLayout& layout) {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
+        if (layout.elements[i].experimental || layout.elements[i].nonlinear)
+            out.push_back(int(i));
+    return out;
+}
+
+std::vector<int> HysteresisPlot::withTwins(const RunLayout& layout, int element) {
+    if (element < 0 || std::size_t(element) >= layout.elements.size())
         return {};
+    const ElementInfo& shown = layout.elements[std::size_t(element)];
     std::vector<int> twins;
-    const std::string& type = layout.elements[std::size_t(specimen)].type;
-    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
+    for (std::size_t i = 0; i < layout.elements.size() && shown.experimental; ++i) {
         const ElementInfo& e = layout.elements[i];
-        if (int(i) != specimen && e.nonlinear && !e.experimental && e.type == type)
+        if (int(i) != element && e.nonlinear && !e.experimental && e.type == shown.type)
             twins.push_back(int(i));
     }
-    std::vector<int> out{specimen};
+    std::vector<int> out{element};
     for (int i : spreadSubset(twins, kMaxPlottedElements - 1)) // many twins: a spread few
         out.push_back(i);
     return out;
+}
+
+std::vector<int> HysteresisPlot::specimenWithTwins(const RunLayout& layout) {
+    return withTwins(layout, defaultElement(layout));
 }
 
 void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int>& elements) {
@@ -74,11 +89,9 @@ void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int
         const QString name = QString::fromStdString(first.name);
         const QString deformation = QString::fromStdString(first.units.deformation);
         const QString force = QString::fromStdString(first.units.force);
-        const bool one = elements.size() == 1;
-        m_texts.push_back([this, name, deformation, force, one] {
-            setAxes(one ? tr("Hysteresis of %1").arg(name)
-                        : tr("Hysteresis: specimen and numerical twins"),
-                    deformation, force);
+        // Named after the element shown first (its twins are named in the legend).
+        m_texts.push_back([this, name, deformation, force] {
+            setAxes(tr("Hysteresis of %1").arg(name), deformation, force);
         });
     }
     retranslate();

@@ -22,8 +22,15 @@ class HysteresisPlot : public QCustomPlot {
 public:
     explicit HysteresisPlot(QWidget* parent = nullptr);
 
-    /// Elements to show: the specimen (first experimental element, else the first nonlinear
-    /// one) followed by the numerical nonlinear elements of the same type. Empty if none.
+    /// The element shown by default: the specimen the updating identifies, else the first
+    /// experimental element, else the first nonlinear one; -1 if none.
+    static int defaultElement(const RunLayout& layout);
+    /// The elements that have a loop to show (experimental or nonlinear), in layout order.
+    static std::vector<int> loopElements(const RunLayout& layout);
+    /// `element` followed, for a specimen, by the numerical nonlinear elements of its type (a
+    /// spread few). Empty if element < 0.
+    static std::vector<int> withTwins(const RunLayout& layout, int element);
+    /// withTwins(layout, defaultElement(layout)).
     static std::vector<int> specimenWithTwins(const RunLayout& layout);
 
     /// Replace the curves by one per element index in `elements` (indices into layout).

@@ -5,6 +5,7 @@
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 #include "gui/plots/ParameterPlot.h"
+#include "gui/plots/PlotElementPicker.h"
 #include "gui/plots/PlotExporter.h"
 #include "gui/plots/PlotStyle.h"
 #include "gui/plots/PlotTools.h"
@@ -43,6 +44,41 @@ int specimenOf(const RunLayout& layout) {
     return -1;
 }
 
+std::vector<int> specimensOf(const RunLayout& layout) {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < layout.elements.size(); ++i)
+        if (layout.elements[i].experimental)
+            out.push_back(int(i));
+    return out;
+}
+
+// A plot under its element picker (the header row, hidden with a single choice).
+QWidget* underPicker(QWidget* parent, PlotElementPicker*& picker, QCustomPlot* plot,
+                     const char* name) {
+    auto* box = new QWidget(parent);
+    auto* v = new QVBoxLayout(box);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->setSpacing(0);
+    picker = new PlotElementPicker(box);
+    picker->setObjectName(QString::fromLatin1(name));
+    plot->setParent(box);
+    v->addWidget(picker);
+    v->addWidget(plot, 1);
+    return box;
+}
+
+// Only the rows' time and element samples (and the auxiliary force) are kept: a picked
+// element's whole history can be drawn again without the DOF vectors.
+StepRecord slim(const StepRecord& r) {
+    StepRecord s;
+    s.step = r.step;
+    s.time = r.time;
+    s.elements = r.elements;
+    s.hasUpdating = r.hasUpdating;
+    s.updating.auxiliaryForce = r.updating.auxiliaryForce;
+    return s;
+}
+
 template <typename Plot> Plot* makePlot(QWidget* parent, const char* name) {
     auto* plot = new Plot(parent);
     plot->setObjectName(QString::fromLatin1(name));
@@ -55,7 +91,9 @@ template <typename Plot> Plot* makePlot(QWidget* parent, const char* name) {
 LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     auto* vertical = new QSplitter(Qt::Vertical, this);
     auto* top = new QSplitter(Qt::Horizontal, vertical);
-    m_hysteresis = makePlot<HysteresisPlot>(top, "hysteresisPlot");
+    m_hysteresis = makePlot<HysteresisPlot>(nullptr, "hysteresisPlot"); // into its box below
+    QWidget* hysteresisBox =
+        underPicker(top, m_hysteresisPicker, m_hysteresis, "hysteresisElement");
     auto* histories = new QWidget(top);
     auto* grid = new QGridLayout(histories);
     grid->setContentsMargins(0, 0, 0, 0);
@@ -64,11 +102,14 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     m_displacement = makePlot<HistoryPlot>(histories, "displacementPlot");
     m_ground = makePlot<HistoryPlot>(histories, "groundMotionPlot");
     m_tracking = makePlot<HistoryPlot>(histories, "trackingPlot");
-    grid->addWidget(m_force, 0, 0);
+    grid->addWidget(underPicker(histories, m_forcePicker, m_force, "forceElement"), 0, 0);
     grid->addWidget(m_displacement, 0, 1);
     grid->addWidget(m_ground, 1, 0);
-    grid->addWidget(m_tracking, 1, 1);
-    top->addWidget(m_hysteresis);
+    grid->addWidget(underPicker(histories, m_trackingPicker, m_tracking, "trackingElement"), 1,
+                    1);
+    grid->setColumnStretch(0, 1); // a picker above a plot never widens its column
+    grid->setColumnStretch(1, 1);
+    top->addWidget(hysteresisBox);
     top->addWidget(histories);
     top->setStretchFactor(0, 2);
     top->setStretchFactor(1, 3);
@@ -100,6 +141,12 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     for (QCustomPlot* p : std::initializer_list<QCustomPlot*>{m_hysteresis, m_force, m_displacement,
                                                               m_ground, m_tracking, m_fitError})
         enableExportMenu(p);
+    connect(m_hysteresisPicker, &PlotElementPicker::elementPicked, this,
+            [this](int e) { showPicked(*m_hysteresis, [this, e] { showHysteresisOf(e); }); });
+    connect(m_forcePicker, &PlotElementPicker::elementPicked, this,
+            [this](int e) { showPicked(*m_force, [this, e] { showForceOf(e); }); });
+    connect(m_trackingPicker, &PlotElementPicker::elementPicked, this,
+            [this](int e) { showPicked(*m_tracking, [this, e] { showTrackingOf(e); }); });
     m_redrawTimer = new QTimer(this);
     m_redrawTimer->setSingleShot(true);
     connect(m_redrawTimer, &QTimer::timeout, this, &LivePlotsPanel::refreshNow);
@@ -107,17 +154,20 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
 }
 
 void LivePlotsPanel::configure(const RunLayout& layout, const PlotReferences& references) {
-    const std::vector<int> loop = HysteresisPlot::specimenWithTwins(layout);
-    m_hysteresis->showElements(layout, loop);
-    m_hysteresis->addAuxiliaryModel(layout);
-    m_force->showForces(layout, loop);
+    m_layout = layout;
+    // Each per-element plot keeps the operator's pick while its element exists; by default
+    // it shows the element the Parameters dock identifies.
+    const std::vector<int> loops = HysteresisPlot::loopElements(layout);
+    const int loopDefault = HysteresisPlot::defaultElement(layout);
+    showHysteresisOf(m_hysteresisPicker->setChoices(layout, loops, loopDefault));
+    showForceOf(m_forcePicker->setChoices(layout, loops, loopDefault));
     m_displacement->showDisplacements(layout);
     m_ground->showGroundAcceleration();
     m_fixedGroundMotion = false;
-    const int specimen = specimenOf(layout);
+    const int specimen = m_trackingPicker->setChoices(layout, specimensOf(layout), specimenOf(layout));
     m_hasSpecimen = specimen >= 0;
     if (m_hasSpecimen)
-        m_tracking->showTracking(layout, specimen);
+        showTrackingOf(specimen);
     m_tracking->setVisible(m_hasSpecimen);
     m_hasUpdating = layout.updating.has_value();
     m_fitError->showFitError(m_hasUpdating ? references.fitThreshold : qQNaN());
@@ -130,6 +180,49 @@ void LivePlotsPanel::configure(const RunLayout& layout, const PlotReferences& re
         PlotTools::attach(*p)->setAutoscale(true);
     }
     refreshNow();
+}
+
+void LivePlotsPanel::showHysteresisOf(int element) {
+    m_hysteresis->showElements(m_layout, HysteresisPlot::withTwins(m_layout, element));
+    const bool identified = element >= 0 && m_layout.updating &&
+                            m_layout.elements[std::size_t(element)].name == m_layout.updating->specimen;
+    if (identified) // the auxiliary model describes the identified specimen only
+        m_hysteresis->addAuxiliaryModel(m_layout);
+    nameSubject(*m_hysteresis, *m_hysteresisPicker);
+}
+
+void LivePlotsPanel::showForceOf(int element) {
+    m_force->showForces(m_layout, HysteresisPlot::withTwins(m_layout, element));
+    nameSubject(*m_force, *m_forcePicker);
+}
+
+void LivePlotsPanel::showTrackingOf(int element) {
+    if (element >= 0)
+        m_tracking->showTracking(m_layout, element);
+    nameSubject(*m_tracking, *m_trackingPicker);
+}
+
+void LivePlotsPanel::nameSubject(QCustomPlot& plot, const PlotElementPicker& picker) {
+    // With a choice the read-out names the element shown (the title does too).
+    PlotTools::attach(plot)->setSubject(picker.isVisibleTo(this) ? picker.elementName()
+                                                                 : QString());
+}
+
+void LivePlotsPanel::showPicked(QCustomPlot& plot, const std::function<void()>& show) {
+    PlotTools* tools = PlotTools::attach(plot);
+    tools->hideReadout(); // it described the other element
+    show();
+    // The new element's whole history, from the rows kept so far.
+    if (auto* h = qobject_cast<HysteresisPlot*>(&plot)) {
+        h->clearData();
+        h->appendRecords(m_history);
+    } else if (auto* g = qobject_cast<HistoryPlot*>(&plot)) {
+        g->clearData();
+        g->appendRecords(m_history);
+    }
+    tools->setAutoscale(true); // another element: its own ranges
+    PlotStyle::rescaleWithMargin(plot);
+    plot.replot(QCustomPlot::rpRefreshHint);
 }
 
 std::vector<QCustomPlot*> LivePlotsPanel::allPlots() const {
@@ -265,6 +358,8 @@ void LivePlotsPanel::appendRecords(const std::vector<StepRecord>& rows) {
             p->appendRecords(rows);
     }
     m_rows += qint64(rows.size());
+    for (const StepRecord& r : rows)
+        m_history.push_back(slim(r));
 }
 
 void LivePlotsPanel::clearData() {
@@ -285,6 +380,7 @@ void LivePlotsPanel::clearData() {
     for (ParameterPlot* p : m_parameters)
         p->clearData();
     m_rows = 0;
+    m_history.clear();
 }
 
 std::vector<QCustomPlot*> LivePlotsPanel::visiblePlots() const {

@@ -3,6 +3,10 @@
 // window's centre and the replay window:
 //   hysteresis     the specimen's measured loop, the auxiliary model and each numerical twin
 //                  (HysteresisPlot::specimenWithTwins) overlaid
+// The hysteresis, force and tracking plots each have an element picker in their header
+// (PlotElementPicker, shown when there is a choice): by default the element the Parameters
+// dock identifies; the operator's pick is kept across configure() while its element exists,
+// and drawn from the first step (the rows' element samples are kept for that).
 //   force          force / moment history of the specimen and its twins
 //   displacement   every DOF's displacement history [m]
 //   ground motion  the ground acceleration [m/s^2] with a time cursor at the latest row
@@ -32,6 +36,8 @@
 #include <QVector>
 #include <QWidget>
 
+#include <functional>
+
 #include <vector>
 
 class QCustomPlot;
@@ -48,6 +54,7 @@ namespace hsmu::gui {
 
 class HistoryPlot;
 class HysteresisPlot;
+class PlotElementPicker;
 class ParameterPlot;
 
 class LivePlotsPanel : public QWidget {
@@ -109,6 +116,10 @@ public:
     HistoryPlot& groundMotion() const { return *m_ground; }
     HistoryPlot& tracking() const { return *m_tracking; }
     HistoryPlot& fitError() const { return *m_fitError; }
+    /// The element pickers of the hysteresis, force and tracking plots.
+    PlotElementPicker& hysteresisPicker() const { return *m_hysteresisPicker; }
+    PlotElementPicker& forcePicker() const { return *m_forcePicker; }
+    PlotElementPicker& trackingPicker() const { return *m_trackingPicker; }
     /// Rows appended since configure() / clearData().
     qint64 rowsShown() const { return m_rows; }
 
@@ -118,6 +129,14 @@ public:
 
 private:
     void enableExportMenu(QCustomPlot* plot);
+    /// Show element (index into m_layout) with its twins / its tracking channels.
+    void showHysteresisOf(int element);
+    void showForceOf(int element);
+    void showTrackingOf(int element);
+    /// The read-out names the picked element when there is a choice.
+    void nameSubject(QCustomPlot& plot, const PlotElementPicker& picker);
+    /// After a pick: show(), then the picked element's whole history from m_history.
+    void showPicked(QCustomPlot& plot, const std::function<void()>& show);
     void addExportActions(QCustomPlot* plot, QMenu* menu);
     void exportPlotWithDialog(QCustomPlot* plot);
     void exportAllWithDialog();
@@ -128,6 +147,13 @@ private:
     /// Every plot, shown or not (the parameter plots last).
     std::vector<QCustomPlot*> allPlots() const;
 
+    RunLayout m_layout;
+    /// The rows so far, slimmed to time and element samples (~60 B per element per step), so
+    /// that a picked element is drawn from the first step.
+    std::vector<StepRecord> m_history;
+    PlotElementPicker* m_hysteresisPicker = nullptr;
+    PlotElementPicker* m_forcePicker = nullptr;
+    PlotElementPicker* m_trackingPicker = nullptr;
     HysteresisPlot* m_hysteresis = nullptr;
     HistoryPlot* m_force = nullptr;
     HistoryPlot* m_displacement = nullptr;

@@ -89,6 +89,8 @@ void PlotTools::setChannelVisible(int i, bool visible) {
 
 QString PlotTools::readout(double x, double y) const {
     QStringList lines{tr("x = %1, y = %2").arg(num(x), num(y))};
+    if (!m_subject.isEmpty())
+        lines.prepend(m_subject);
     for (int i = 0; i < m_plot.graphCount(); ++i) {
         const QCPGraph* g = m_plot.graph(i);
         if (!g->visible() || g->data()->isEmpty())

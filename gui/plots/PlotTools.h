@@ -4,7 +4,8 @@
 //                    each visible time-history graph, its value at that x (nearest sample), in
 //                    a framed box on a white background at the top right of the data area,
 //                    kept inside the plot (long lines shortened in the middle); it goes when
-//                    the pointer leaves the plot or the plot's data are cleared
+//                    the pointer leaves the plot or the plot's data are cleared; a plot of
+//                    a picked element names it first (setSubject())
 //   zoom / pan       wheel zooms, drag pans; either turns autoscale off
 //   autoscale        on: each refresh fits the data (PlotStyle::rescaleWithMargin); off: the
 //                    operator's window stays (a time window can be pinned); double-click or
@@ -41,6 +42,10 @@ public:
     void setAutoscale(bool on);
     /// Show or hide plottable i (a channel).
     void setChannelVisible(int i, bool visible);
+    /// What the plot shows, e.g. the element a per-element plot is picked to ("" = the
+    /// title says it all); the read-out's first line names it.
+    void setSubject(const QString& subject) { m_subject = subject; }
+    const QString& subject() const { return m_subject; }
     /// The read-out for plot coordinates (x, y) (what the cursor label shows).
     QString readout(double x, double y) const;
     /// The cursor label's text ("" while the mouse is not over the plot).
@@ -73,6 +78,7 @@ private:
     bool m_autoscale = true;
     QLabel* m_label = nullptr;
     QString m_readout; ///< the whole text (the box may show it shortened)
+    QString m_subject;
 };
 
 } // namespace hsmu::gui
