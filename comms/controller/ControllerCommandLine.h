@@ -5,7 +5,12 @@
 //                   [--token-file F] [--state-file FILE | --no-state-file] [--quiet]
 //                   [--protocol native|simapp|generictcp] [--data-size N] [--simapp-site]
 //                   [--realtime-priority P]
+//   hsmu-controller --rths FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]
+//                   [--token-file F] [--realtime-priority P] [--monitor-loss hold|continue]
 //
+// --rths runs the whole RTHS loop on the controller (RthsServer; docs/rths.md) instead of
+// serving specimens; --config is then not needed and there is no state file.
+
 // --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
 // --bind defaults to 127.0.0.1: exposing the controller is an explicit choice. The native
 // protocol is plaintext: on a non-loopback address it is refused (ControllerApp, exit 2)
@@ -42,6 +47,8 @@ struct ControllerCommandLine {
     bool siteServer = false; ///< SimApp: behave as a site server (no replies to 12-15)
     int realTimePriority = 0; ///< native, real-time pace: SCHED_FIFO priority 1..99; 0 = normal
     double replyDelay = 0.0;  ///< --reply-delay MS, in seconds (native; tests and benchmarks)
+    std::string rths;         ///< --rths FILE|PRESET: the RTHS loop's configuration
+    bool monitorLossHolds = true; ///< --monitor-loss hold (default) | continue (RTHS)
 
     /// nullopt with a sentence in error when the arguments are wrong.
     static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,

@@ -103,8 +103,7 @@ int RthsCommand::exec(const QStringList& arguments)
             return fail(tr("--seed, --scale and --duration take numbers"));
         s.sensors.seed = std::uint64_t(seed);
         // The feedforward is fitted to the nominal plant (a lab knows only its model of it).
-        if (s.compensation.fitToLoop)
-            rths::fitFeedforward([&](double w) { return rths::closedLoopResponse(s, w); }, 0.2, 6.0, s.compensation);
+        rths::fitToNominalLoop(s);
         if (p.isSet(perturbOpt)) {
             double ps = 0.0;
             if (!number(perturbOpt, ps))
