@@ -30,7 +30,10 @@ void onSignal(int sig) {
 
 } // namespace
 
-SignalHold::SignalHold(HybridTest& test) : m_test(test) {
+SignalHold::SignalHold(HybridTest& test)
+    : SignalHold([&test](const std::string& why) { test.emergencyHold(why); }) {}
+
+SignalHold::SignalHold(std::function<void(const std::string&)> hold) : m_hold(std::move(hold)) {
     if (::pipe2(m_pipe, O_CLOEXEC | O_NONBLOCK) != 0)
         return; // no out-of-band hold: the default handlers stay
     g_writeFd.store(m_pipe[1]);
@@ -77,7 +80,7 @@ void SignalHold::watch() {
             return; // the destructor
         int expected = 0;
         if (m_signal.compare_exchange_strong(expected, int(b)))
-            m_test.emergencyHold(signalName() + " received");
+            m_hold(signalName() + " received");
     }
 }
 

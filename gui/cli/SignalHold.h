@@ -5,9 +5,12 @@
 // sends the hold to every site at once even while the run loop is blocked in a step. The run
 // then ends as held (exit code 2) with its record, CSV and summary written. A second signal
 // while the first is handled changes nothing; the destructor restores the previous handlers.
+// The other form takes the hold as an action (`hsmu rths --controller`: a hold frame to the
+// controller that runs the RTHS loop), called once on the watcher thread with the sentence.
 // Thread rules: construct and destroy on the run loop's thread; one instance at a time.
 
 #include <atomic>
+#include <functional>
 #include <string>
 #include <thread>
 
@@ -20,6 +23,7 @@ namespace hsmu::gui {
 class SignalHold {
 public:
     explicit SignalHold(HybridTest& test);
+    explicit SignalHold(std::function<void(const std::string&)> hold);
     ~SignalHold();
     SignalHold(const SignalHold&) = delete;
     SignalHold& operator=(const SignalHold&) = delete;
@@ -31,7 +35,7 @@ public:
 
 private:
     void watch();
-    HybridTest& m_test;
+    std::function<void(const std::string&)> m_hold;
     int m_pipe[2] = {-1, -1};
     std::atomic<int> m_signal{0};
     std::thread m_watcher;
