@@ -3294,6 +3294,78 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>hsmu rths: %1</source>
         <translation>hsmu rths: %1</translation>
     </message>
+    <message>
+        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
+        <translation>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>File whose first line is the controller&apos;s shared secret.</source>
+        <translation>File whose first line is the controller&apos;s shared secret.</translation>
+    </message>
+    <message>
+        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
+        <translation>With --controller: one telemetry frame every N ticks (default: about 128 per second).</translation>
+    </message>
+    <message>
+        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
+        <translation>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller: %1</translation>
+    </message>
+    <message>
+        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file: %1</translation>
+    </message>
+    <message>
+        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
+        <translation>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1/telemetry.csv: cannot be written</source>
+        <translation>%1/telemetry.csv: cannot be written</translation>
+    </message>
+    <message>
+        <source>cannot reach the controller %1:%2: %3</source>
+        <translation>cannot reach the controller %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the controller refused the monitor: %1</source>
+        <translation>the controller refused the monitor: %1</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>controller: %1</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
+        <translation>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</translation>
+    </message>
+    <message>
+        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
+        <translation>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</translation>
+    </message>
+    <message>
+        <source>the controller: %1</source>
+        <translation>the controller: %1</translation>
+    </message>
+    <message>
+        <source>%1 ticks on the controller; %2</source>
+        <translation>%1 ticks on the controller; %2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
+        <translation>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</translation>
+    </message>
+    <message>
+        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
+        <translation>outputs: %1/telemetry.csv, %1/summary.json</translation>
+    </message>
 </context>
 <context>
     <name>MethodComparisonTable</name>

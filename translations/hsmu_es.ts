@@ -3294,6 +3294,78 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>hsmu rths: %1</source>
         <translation>hsmu rths: %1</translation>
     </message>
+    <message>
+        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
+        <translation>Supervisar el lazo que ejecuta hsmu-controller --rths en tcp://HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>File whose first line is the controller&apos;s shared secret.</source>
+        <translation>Archivo cuya primera línea es el secreto compartido del controlador.</translation>
+    </message>
+    <message>
+        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
+        <translation>Con --controller: una trama de telemetría cada N ciclos (por defecto: unas 128 por segundo).</translation>
+    </message>
+    <message>
+        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
+        <translation>--%1 no se aplica con --controller: el controlador ejecuta el lazo de su propia copia de la configuración</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller: %1</translation>
+    </message>
+    <message>
+        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>--controller: un lazo RTHS se supervisa mediante tcp://HOST:PORT (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file: %1</translation>
+    </message>
+    <message>
+        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
+        <translation>--telemetry-every: se esperaba un número entero &gt;= 1, se obtuvo &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1/telemetry.csv: cannot be written</source>
+        <translation>%1/telemetry.csv: no se puede escribir</translation>
+    </message>
+    <message>
+        <source>cannot reach the controller %1:%2: %3</source>
+        <translation>no se puede alcanzar el controlador %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the controller refused the monitor: %1</source>
+        <translation>el controlador rechazó el monitor: %1</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>controlador: %1</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
+        <translation>se perdió el enlace con el controlador: %1 (el controlador detiene el lazo según su política --monitor-loss); %2 tramas de telemetría en %3/telemetry.csv</translation>
+    </message>
+    <message>
+        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
+        <translation>t = %1 s: deseado %2 mm, medido %3 mm, %4 plazos incumplidos</translation>
+    </message>
+    <message>
+        <source>the controller: %1</source>
+        <translation>el controlador: %1</translation>
+    </message>
+    <message>
+        <source>%1 ticks on the controller; %2</source>
+        <translation>%1 ciclos en el controlador; %2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
+        <translation>plazos incumplidos: %1 (el peor con %2 us de retraso); telemetría: %3 recibidas, %4 descartadas</translation>
+    </message>
+    <message>
+        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
+        <translation>salidas: %1/telemetry.csv, %1/summary.json</translation>
+    </message>
 </context>
 <context>
     <name>MethodComparisonTable</name>

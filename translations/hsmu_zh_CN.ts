@@ -3291,6 +3291,78 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>hsmu rths: %1</source>
         <translation>hsmu rths：%1</translation>
     </message>
+    <message>
+        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
+        <translation>监视 hsmu-controller --rths 在 tcp://HOST:PORT 上运行的回路。</translation>
+    </message>
+    <message>
+        <source>File whose first line is the controller&apos;s shared secret.</source>
+        <translation>文件，其第一行为控制器的共享密钥。</translation>
+    </message>
+    <message>
+        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
+        <translation>与 --controller 一起使用：每 N 个周期一帧遥测数据（默认：约每秒 128 帧）。</translation>
+    </message>
+    <message>
+        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
+        <translation>--%1 不适用于 --controller：控制器按其自己的配置副本运行回路</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller：%1</translation>
+    </message>
+    <message>
+        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>--controller：RTHS 回路通过 tcp://HOST:PORT 监视（hsmu-controller --rths）</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file：%1</translation>
+    </message>
+    <message>
+        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
+        <translation>--telemetry-every：应为 &gt;= 1 的整数，得到 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1/telemetry.csv: cannot be written</source>
+        <translation>%1/telemetry.csv：无法写入</translation>
+    </message>
+    <message>
+        <source>cannot reach the controller %1:%2: %3</source>
+        <translation>无法连接控制器 %1:%2：%3</translation>
+    </message>
+    <message>
+        <source>the controller refused the monitor: %1</source>
+        <translation>控制器拒绝了监视端：%1</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>控制器：%1</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
+        <translation>与控制器的连接已断开：%1（控制器按其 --monitor-loss 策略保持回路）；%2 帧遥测数据在 %3/telemetry.csv 中</translation>
+    </message>
+    <message>
+        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
+        <translation>t = %1 s：期望 %2 mm，测量 %3 mm，%4 次错过截止时间</translation>
+    </message>
+    <message>
+        <source>the controller: %1</source>
+        <translation>控制器：%1</translation>
+    </message>
+    <message>
+        <source>%1 ticks on the controller; %2</source>
+        <translation>控制器上 %1 个周期；%2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
+        <translation>错过截止时间：%1 次（最差延迟 %2 us）；遥测：收到 %3 帧，丢弃 %4 帧</translation>
+    </message>
+    <message>
+        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
+        <translation>输出：%1/telemetry.csv，%1/summary.json</translation>
+    </message>
 </context>
 <context>
     <name>MethodComparisonTable</name>

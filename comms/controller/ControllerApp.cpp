@@ -2,6 +2,8 @@
 
 #include "comms/controller/ControllerSettings.h"
 #include "core/config/ConfigLoader.h"
+#include "core/config/RthsConfig.h"
+#include "core/rths/RthsReport.h"
 #include "core/util/SecretFile.h"
 
 #include <cstdio>
@@ -30,11 +32,58 @@ bool readToken(const std::string& tokenFile, std::string& token, std::string& er
 
 } // namespace
 
+bool ControllerApp::startRths(const std::string& token, std::string& error) {
+    if (!ControllerCommandLine::isLoopback(m_cmd.bind) && !m_cmd.insecurePlaintext) {
+        m_usageRefused = true;
+        error = "--bind " + m_cmd.bind +
+                " is not a loopback address, and the native protocol is plaintext: keep --bind "
+                "127.0.0.1 and tunnel the port (docs/security.md), or pass --insecure-plaintext";
+        return false;
+    }
+    RthsJob job;
+    try {
+        const RthsConfig cfg = loadRthsConfig(m_cmd.rths);
+        job.name = cfg.name;
+        job.settings = cfg.settings;
+        rths::fitToNominalLoop(job.settings);
+        job.partition = cfg.partition();
+        job.groundMotion = loadRthsGroundMotion(cfg, "", cfg.groundMotionScale);
+        job.holdAfterMisses = cfg.holdAfterMisses;
+        const rths::Preflight pre = rths::preflight(job.partition, job.settings);
+        std::fprintf(stderr, "hsmu-controller: pre-flight: %s\n", pre.message.c_str());
+        if (pre.refused) {
+            error = "refused in pre-flight: " + pre.message;
+            return false;
+        }
+    } catch (const std::exception& e) { // ConfigError, ground-motion errors
+        error = e.what();
+        return false;
+    }
+    RthsServerOptions o;
+    o.bind = m_cmd.bind;
+    o.port = m_cmd.port;
+    o.token = token;
+    o.realTime = !m_cmd.fast;
+    o.realTimePriority = m_cmd.realTimePriority;
+    o.quiet = m_cmd.quiet;
+    o.holdOnMonitorLoss = m_cmd.monitorLossHolds;
+    m_rthsServer = std::make_unique<RthsServer>(o, std::move(job));
+    if (!m_rthsServer->listen(error))
+        return false;
+    std::printf("hsmu-controller: listening on %s:%u (%s, %s pace)\n", m_cmd.bind.c_str(),
+                unsigned(port()), m_rthsServer->describe().c_str(),
+                m_cmd.fast ? "fast" : "real-time");
+    std::fflush(stdout);
+    return true;
+}
+
 bool ControllerApp::start(std::string& error) {
     std::vector<std::unique_ptr<SpecimenStation>> stations;
     std::string token;
     if (!readToken(m_cmd.tokenFile, token, error))
         return false;
+    if (!m_cmd.rths.empty())
+        return startRths(token, error);
     ControllerSettings settings;
     std::string protocol = m_cmd.protocol;
     int dataSize = m_cmd.dataSize;
@@ -203,10 +252,19 @@ bool ControllerApp::start(std::string& error) {
 }
 
 std::uint16_t ControllerApp::port() const {
-    return m_server ? m_server->port() : m_ofServer ? m_ofServer->port() : 0;
+    return m_server       ? m_server->port()
+           : m_ofServer   ? m_ofServer->port()
+           : m_rthsServer ? m_rthsServer->port()
+                          : 0;
 }
 
 int ControllerApp::run() {
+    if (m_rthsServer) {
+        m_rthsServer->run();
+        std::printf("hsmu-controller: stopped\n");
+        std::fflush(stdout);
+        return 0;
+    }
     if (m_ofServer)
         m_ofServer->run();
     else

@@ -8,11 +8,15 @@
 //   "hsmu-controller: listening on 127.0.0.1:PORT (fast pace, 1 specimen: Element 1)"
 //   "hsmu-controller: listening on 127.0.0.1:PORT (simapp element server, dataSize 256, fast
 //    pace, 1 specimen: Element 1)"
-// and the loop statistics on stdout when stopped; errors on stderr.
+// and the loop statistics on stdout when stopped; errors on stderr. With --rths, the RTHS loop
+// on the controller (RthsServer):
+//   "hsmu-controller: listening on 127.0.0.1:PORT (RTHS loop 'NAME', 1024 Hz, 3 s record,
+//    fast pace)")
 
 #include "comms/controller/ControllerCommandLine.h"
 #include "comms/controller/ControllerServer.h"
 #include "comms/controller/OfServer.h"
+#include "comms/controller/RthsServer.h"
 
 #include <memory>
 #include <string>
@@ -34,7 +38,9 @@ public:
     bool usageRefused() const { return m_usageRefused; }
 
 private:
+    bool startRths(const std::string& token, std::string& error);
     bool m_usageRefused = false;
+    std::unique_ptr<RthsServer> m_rthsServer;
     ControllerCommandLine m_cmd;
     std::unique_ptr<StateJournal> m_journal;
     std::unique_ptr<ControllerServer> m_server;

@@ -19,6 +19,14 @@ const char* ControllerCommandLine::usage() {
            "[--tls-revoked F]]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
+           "       hsmu-controller --rths FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]\n"
+           "                       [--token-file F] [--realtime-priority P] [--monitor-loss hold|continue]\n"
+           "  --rths FILE     run the whole RTHS loop of this RTHS configuration (or\n"
+           "                  rths-benchmark-case-1 .. -4) on the controller; a console\n"
+           "                  monitors it (`hsmu rths --controller`; docs/rths.md)\n"
+           "  --monitor-loss P\n"
+           "                  RTHS: when the monitor's link is lost during a run, hold the\n"
+           "                  loop (hold, default) or let it run on (continue)\n"
            "  --config FILE   the console's test configuration (JSON) or a preset name\n"
            "                  (e.g. paper-condition-3); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
@@ -121,6 +129,17 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
                 return std::nullopt;
             }
             c.replyDelay = ms * 1e-3;
+        } else if (a == "--rths") {
+            if (!value(c.rths))
+                return std::nullopt;
+        } else if (a == "--monitor-loss") {
+            if (!value(v))
+                return std::nullopt;
+            if (v != "hold" && v != "continue") {
+                error = "--monitor-loss: expected hold or continue, found '" + v + "'";
+                return std::nullopt;
+            }
+            c.monitorLossHolds = v == "hold";
         } else if (a == "--config") {
             if (!value(c.config))
                 return std::nullopt;
@@ -178,8 +197,12 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
     }
     if (c.help)
         return c;
-    if (c.config.empty()) {
-        error = "--config FILE is required";
+    if (!c.rths.empty() && !c.config.empty()) {
+        error = "--rths and --config exclude each other (an RTHS loop or specimens)";
+        return std::nullopt;
+    }
+    if (c.config.empty() && c.rths.empty()) {
+        error = "--config FILE (or --rths FILE) is required";
         return std::nullopt;
     }
     if (!havePort) {
@@ -190,7 +213,8 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
         error = "--no-state-file and --state-file " + c.state + " contradict each other";
         return std::nullopt;
     }
-    c.config = resolveConfig(c.config);
+    if (!c.config.empty())
+        c.config = resolveConfig(c.config);
     return c;
 }
 

@@ -6,7 +6,12 @@
 //                   [--protocol native|simapp|generictcp] [--data-size N] [--simapp-site]
 //                   [--realtime-priority P] [--tls-certificate F --tls-key F --tls-ca F
 //                   --tls-pins F --tls-revoked F]
+//   hsmu-controller --rths FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]
+//                   [--token-file F] [--realtime-priority P] [--monitor-loss hold|continue]
 //
+// --rths runs the whole RTHS loop on the controller (RthsServer; docs/rths.md) instead of
+// serving specimens; --config is then not needed and there is no state file.
+
 // --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
 // --bind defaults to 127.0.0.1: exposing the controller is an explicit choice. The --tls-*
 // options (the names of the console's "tls" block, core/config/TlsConfig.h) make the native
@@ -47,6 +52,8 @@ struct ControllerCommandLine {
     bool siteServer = false; ///< SimApp: behave as a site server (no replies to 12-15)
     int realTimePriority = 0; ///< native, real-time pace: SCHED_FIFO priority 1..99; 0 = normal
     double replyDelay = 0.0;  ///< --reply-delay MS, in seconds (native; tests and benchmarks)
+    std::string rths;         ///< --rths FILE|PRESET: the RTHS loop's configuration
+    bool monitorLossHolds = true; ///< --monitor-loss hold (default) | continue (RTHS)
 
     /// nullopt with a sentence in error when the arguments are wrong.
     static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,

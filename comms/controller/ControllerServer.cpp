@@ -2,6 +2,7 @@
 
 #include "comms/LogText.h"
 #include "comms/controller/ControllerSession.h"
+#include "comms/controller/SecretCompare.h"
 #include "comms/tls/TlsContext.h"
 
 #include <boost/asio/io_context.hpp>
@@ -138,14 +139,6 @@ struct ControllerServer::Impl final : SessionHost {
             }
             pending.pop_front();
         }
-    }
-
-    /// Compares in a time that does not depend on where the texts first differ.
-    static bool sameSecret(const std::string& a, const std::string& b) {
-        unsigned char diff = a.size() == b.size() ? 0 : 1;
-        for (std::size_t i = 0; i < a.size(); ++i)
-            diff |= static_cast<unsigned char>(a[i] ^ b[i % std::max<std::size_t>(b.size(), 1)]);
-        return diff == 0 && !b.empty();
     }
 
     static std::string addressOf(const std::string& peer) {

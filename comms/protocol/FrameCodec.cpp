@@ -116,6 +116,14 @@ Bounds boundsOf(MessageType t) {
         return {4, 2 + kStr};
     case MessageType::Bye:
         return {2, kStr};
+    case MessageType::RthsStart:
+        return {12, 12};
+    case MessageType::EmergencyHold:
+        return {2, kStr};
+    case MessageType::Telemetry:
+        return {75, 73 + kStr};
+    case MessageType::RthsEnd:
+        return {170, 168 + kStr};
     }
     return {0, 0};
 }
@@ -169,6 +177,34 @@ struct Encoder {
         w.str(m.reason);
     }
     void operator()(const ByeMsg& m) { w.str(m.reason); }
+    void operator()(const RthsStartMsg& m) {
+        w.u32(m.decimation);
+        w.f64(m.duration);
+    }
+    void operator()(const EmergencyHoldMsg& m) { w.str(m.reason); }
+    void operator()(const TelemetryMsg& m) {
+        w.u64(m.tick);
+        for (double v : {m.time, m.desired, m.command, m.measured, m.force})
+            w.f64(v);
+        w.u64(m.misses);
+        w.f64(m.worstLateness);
+        w.u64(m.dropped);
+        w.u8(m.holding ? 1 : 0);
+        w.str(m.holdReason);
+    }
+    void operator()(const RthsEndMsg& m) {
+        w.u64(m.ticks);
+        for (double v : m.j)
+            w.f64(v);
+        w.u64(m.misses);
+        w.f64(m.worstLateness);
+        w.u64(m.telemetrySent);
+        w.u64(m.telemetryDropped);
+        for (double v : {m.peakForce, m.peakStroke, m.peakVelocity, m.trackingIndicator,
+                         m.frequencyAmplitude, m.frequencyDelay, m.frequency})
+            w.f64(v);
+        w.str(m.hold);
+    }
 };
 
 bool decodeInto(MessageType t, Reader& r, Message& out) {
@@ -260,6 +296,49 @@ bool decodeInto(MessageType t, Reader& r, Message& out) {
     case MessageType::Bye: {
         ByeMsg m;
         if (!r.str(m.reason))
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::RthsStart: {
+        RthsStartMsg m;
+        if (!r.u32(m.decimation) || !r.f64(m.duration))
+            return false;
+        out = m;
+        return true;
+    }
+    case MessageType::EmergencyHold: {
+        EmergencyHoldMsg m;
+        if (!r.str(m.reason))
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::Telemetry: {
+        TelemetryMsg m;
+        if (!r.u64(m.tick) || !r.f64(m.time) || !r.f64(m.desired) || !r.f64(m.command) ||
+            !r.f64(m.measured) || !r.f64(m.force) || !r.u64(m.misses) ||
+            !r.f64(m.worstLateness) || !r.u64(m.dropped) || !r.boolean(m.holding) ||
+            !r.str(m.holdReason))
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::RthsEnd: {
+        RthsEndMsg m;
+        if (!r.u64(m.ticks))
+            return false;
+        for (double& v : m.j)
+            if (!r.f64(v))
+                return false;
+        if (!r.u64(m.misses) || !r.f64(m.worstLateness) || !r.u64(m.telemetrySent) ||
+            !r.u64(m.telemetryDropped))
+            return false;
+        for (double* v : {&m.peakForce, &m.peakStroke, &m.peakVelocity, &m.trackingIndicator,
+                          &m.frequencyAmplitude, &m.frequencyDelay, &m.frequency})
+            if (!r.f64(*v))
+                return false;
+        if (!r.str(m.hold))
             return false;
         out = std::move(m);
         return true;

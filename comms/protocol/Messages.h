@@ -86,9 +86,51 @@ struct ByeMsg { // payload: str
     std::string reason;
 };
 
+// The controller-side RTHS loop (docs/protocol.md, "RTHS monitoring"; docs/rths.md). A Hold
+// (8) from the monitor holds the loop too; lengths [m], forces [N], times [s] (SI: the RTHS
+// loop's units, not a specimen's).
+
+struct RthsStartMsg {              // payload: u32 f64
+    std::uint32_t decimation = 0;  ///< one telemetry frame every this many ticks; 0: the
+                                   ///< controller's default (about 128 frames per second)
+    double duration = 0.0;         ///< stop after this many seconds; 0: the whole record
+};
+
+struct EmergencyHoldMsg { // payload: str
+    std::string reason;
+};
+
+struct TelemetryMsg {             // payload: u64 f64 x 5 u64 f64 u64 u8 str
+    std::uint64_t tick = 0;       ///< k: the loop's tick (t = k h)
+    double time = 0.0;            ///< [s]
+    double desired = 0.0;         ///< the numerical substructure's displacement y [m]
+    double command = 0.0;         ///< x* after compensation [m]
+    double measured = 0.0;        ///< xm [m]
+    double force = 0.0;           ///< fm [N]
+    std::uint64_t misses = 0;     ///< deadline misses so far
+    double worstLateness = 0.0;   ///< [s]
+    std::uint64_t dropped = 0;    ///< telemetry frames dropped so far (a slow monitor)
+    bool holding = false;         ///< a hold was asked for or the loop stopped on one
+    std::string holdReason;
+};
+
+struct RthsEndMsg {                      // payload: u64 f64 x 9 u64 f64 u64 u64 f64 x 7 str
+    std::uint64_t ticks = 0;             ///< ticks run (sampled)
+    double j[9] = {};                    ///< J1 [ms], J2..J9 [%] (RthsBenchmark.h)
+    std::uint64_t misses = 0;            ///< deadline misses
+    double worstLateness = 0.0;          ///< [s]
+    std::uint64_t telemetrySent = 0;     ///< frames queued for the monitor
+    std::uint64_t telemetryDropped = 0;  ///< frames dropped (queue full or no monitor)
+    double peakForce = 0.0, peakStroke = 0.0, peakVelocity = 0.0; ///< [N], [m], [m/s]
+    double trackingIndicator = 0.0;      ///< [m^2]
+    double frequencyAmplitude = 0.0, frequencyDelay = 0.0, frequency = 0.0; ///< -, [ms], [Hz]
+    std::string hold;                    ///< why the run stopped early; "" when it ran out
+};
+
 using Message =
     std::variant<HelloMsg, HelloAckMsg, ConfigureMsg, TargetMsg, MeasurementMsg, CommitMsg, AckMsg,
-                 HoldMsg, ResumeMsg, ResetMsg, HeartbeatMsg, ErrorMsg, ByeMsg>;
+                 HoldMsg, ResumeMsg, ResetMsg, HeartbeatMsg, ErrorMsg, ByeMsg, RthsStartMsg,
+                 EmergencyHoldMsg, TelemetryMsg, RthsEndMsg>;
 
 /// The header type of a message.
 MessageType messageTypeOf(const Message& m);

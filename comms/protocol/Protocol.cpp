@@ -32,6 +32,14 @@ const char* messageTypeName(MessageType type) {
         return "error";
     case MessageType::Bye:
         return "bye";
+    case MessageType::RthsStart:
+        return "rths-start";
+    case MessageType::EmergencyHold:
+        return "emergency-hold";
+    case MessageType::Telemetry:
+        return "telemetry";
+    case MessageType::RthsEnd:
+        return "rths-end";
     }
     return "unknown";
 }
@@ -70,13 +78,14 @@ const char* errorCodeName(ErrorCode code) {
 
 bool isKnownMessageType(std::uint16_t type) {
     return type >= static_cast<std::uint16_t>(MessageType::Hello) &&
-           type <= static_cast<std::uint16_t>(MessageType::Bye);
+           type <= static_cast<std::uint16_t>(MessageType::RthsEnd);
 }
 
 MessageType messageTypeOf(const Message& m) {
-    // The variant's alternatives are in the order of the MessageType values 1..13.
-    static_assert(std::variant_size_v<Message> == 13);
+    // The variant's alternatives are in the order of the MessageType values 1..17.
+    static_assert(std::variant_size_v<Message> == 17);
     static_assert(std::is_same_v<std::variant_alternative_t<12, Message>, ByeMsg>);
+    static_assert(std::is_same_v<std::variant_alternative_t<16, Message>, RthsEndMsg>);
     return static_cast<MessageType>(m.index() + 1);
 }
 

@@ -41,6 +41,12 @@ enum class MessageType : std::uint16_t {
     Heartbeat = 11,  ///< either way; the controller echoes the console's nonce
     Error = 12,      ///< either way: code and reason text
     Bye = 13,        ///< either way: orderly close, no reply
+    // The controller-side RTHS loop (hsmu-controller --rths; docs/rths.md, "The loop on the
+    // controller"). Older peers refuse these as unknown types (malformed), as any new type.
+    RthsStart = 14,     ///< monitor -> controller: start the loop (telemetry decimation, duration)
+    EmergencyHold = 15, ///< monitor -> controller: hold the loop before its next tick, at once
+    Telemetry = 16,     ///< controller -> monitor: one decimated tick of the running loop
+    RthsEnd = 17,       ///< controller -> monitor: the run's end and its summary (J1..J9, ...)
 };
 
 /// Error frame codes. "Closes" means the sender closes the connection after the frame.

@@ -1,7 +1,9 @@
 #include "core/config/RthsConfig.h"
 
 #include "core/groundmotion/AccelerationUnit.h"
+#include "core/groundmotion/GroundMotionReader.h"
 
+#include <filesystem>
 #include <fstream>
 #include <regex>
 
@@ -263,6 +265,18 @@ std::optional<nlohmann::json> rthsBenchmarkDocument(const std::string& name)
           {"forceDelay", 1},
           {"groundMotion",
            {{"file", "../shared/data/rths-benchmark/elcentro_benchmark.txt"}, {"scale", 0.4}, {"unit", "m/s^2"}}}}}};
+}
+
+GroundMotion loadRthsGroundMotion(const RthsConfig& cfg, const std::string& file, double scale)
+{
+    const std::string path = file.empty() ? cfg.groundMotionFile : file;
+    if (path.empty())
+        throw std::runtime_error("no ground motion: the configuration names no rths.groundMotion.file");
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        throw std::runtime_error(path + ": the ground-motion record does not exist");
+    const auto unit = parseAccelerationUnit(cfg.groundMotionUnit); // checked by the parser
+    return readGroundMotion(path, GroundMotionFormat::Auto, unit).scaled(scale);
 }
 
 } // namespace hsmu

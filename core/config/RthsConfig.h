@@ -6,6 +6,7 @@
 // controller). Every error is a ConfigError naming the file and the field.
 
 #include "core/config/JsonCursor.h"
+#include "core/groundmotion/GroundMotion.h"
 #include "core/rths/Partition.h"
 #include "core/rths/RthsLoop.h"
 #include "core/rths/ServoActuator.h"
@@ -45,6 +46,9 @@ void parseServoActuator(const JsonCursor& c, rths::ServoActuatorSettings& out);
 RthsConfig parseRthsConfig(const nlohmann::json& document, const std::string& file);
 /// Read and parse a configuration file.
 RthsConfig loadRthsConfig(const std::string& path);
+/// The run's ground motion: file ("" = the configuration's) in the configuration's unit, times
+/// scale [m/s^2]. Throws std::runtime_error naming the file when it is missing or unreadable.
+GroundMotion loadRthsGroundMotion(const RthsConfig& cfg, const std::string& file, double scale);
 /// The generated benchmark configuration's JSON for "rths-benchmark-case-N", nullopt for
 /// another name.
 std::optional<nlohmann::json> rthsBenchmarkDocument(const std::string& name);

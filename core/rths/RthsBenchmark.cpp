@@ -24,6 +24,12 @@ RthsSettings defaultCompensation(const PlantParameters& nominal)
     return s;
 }
 
+void fitToNominalLoop(RthsSettings& s)
+{
+    if (s.compensation.fitToLoop)
+        fitFeedforward([&](double w) { return closedLoopResponse(s, w); }, 0.2, 6.0, s.compensation);
+}
+
 Partition benchmarkPartition(int benchmarkCase, const PlantParameters& plant)
 {
     return partition(benchmarkReference(benchmarkCase), Specimen{0, plant.me, plant.ce, plant.ke});

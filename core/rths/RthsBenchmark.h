@@ -31,6 +31,10 @@ RthsSettings benchmarkSampleController();
 /// nominal loop over 0.2-6 Hz and re-fitted online to the plant it meets.
 RthsSettings defaultCompensation(const PlantParameters& nominal = {});
 
+/// When s.compensation.fitToLoop: fit the feedforward to the nominal loop of s over 0.2-6 Hz
+/// (a lab knows only its model of the plant); the one preparation every runner applies.
+void fitToNominalLoop(RthsSettings& s);
+
 /// The benchmark case's partition with the plant's specimen (me, ce, ke) at floor 1.
 Partition benchmarkPartition(int benchmarkCase, const PlantParameters& plant);
 

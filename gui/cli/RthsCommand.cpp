@@ -7,7 +7,10 @@
 #include "core/record/RecordWriter.h"
 #include "core/record/RthsRecord.h"
 #include "core/rths/RthsReport.h"
+#include "comms/LinkAddress.h"
+#include "core/util/SecretFile.h"
 #include "gui/cli/ConsoleStreams.h"
+#include "gui/cli/RthsRemote.h"
 
 #include <QCommandLineParser>
 #include <QDir>
@@ -55,6 +58,44 @@ bool applyCompensation(const QString& name, rths::RthsSettings& s)
     return true;
 }
 
+/// `--controller tcp://HOST:PORT`: the console monitors the loop hsmu-controller --rths runs.
+int monitorController(const QCommandLineParser& p, const RthsConfig& cfg, const rths::RthsSettings& s,
+                      double duration, const QCommandLineOption& controllerOpt,
+                      const QCommandLineOption& tokenFileOpt, const QCommandLineOption& everyOpt,
+                      const QCommandLineOption& outOpt)
+{
+    std::string error;
+    const auto address = comms::LinkAddress::parse(p.value(controllerOpt).toStdString(), &error);
+    if (!address)
+        return fail(RthsCommand::tr("--controller: %1").arg(QString::fromStdString(error)));
+    if (address->kind != comms::LinkAddress::Kind::Tcp)
+        return fail(RthsCommand::tr("--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)"));
+    RthsRemoteOptions o;
+    o.host = QString::fromStdString(address->host);
+    o.port = address->port;
+    o.duration = duration;
+    o.out = p.value(outOpt);
+    if (p.isSet(tokenFileOpt)) {
+        const auto secret = readSecretFile(p.value(tokenFileOpt).toStdString(), error);
+        if (!secret)
+            return fail(RthsCommand::tr("--token-file: %1").arg(QString::fromStdString(error)));
+        o.token = QString::fromStdString(*secret);
+    } else {
+        o.token = qEnvironmentVariable("HSMU_CONTROLLER_TOKEN");
+    }
+    if (p.isSet(everyOpt)) {
+        bool ok = false;
+        o.decimation = p.value(everyOpt).toUInt(&ok);
+        if (!ok || o.decimation == 0)
+            return fail(RthsCommand::tr("--telemetry-every: expected a whole number >= 1, got '%1'").arg(p.value(everyOpt)));
+    }
+    if (!QDir().mkpath(o.out))
+        return fail(RthsCommand::tr("%1: cannot create the output folder").arg(o.out));
+    const rths::Preflight pre = rths::preflight(cfg.partition(), s);
+    ConsoleStreams::out() << RthsCommand::tr("pre-flight: %1").arg(QString::fromStdString(pre.message)) << Qt::endl;
+    return runRthsOnController(cfg, s, pre, o);
+}
+
 } // namespace
 
 int RthsCommand::exec(const QStringList& arguments)
@@ -74,7 +115,10 @@ int RthsCommand::exec(const QStringList& arguments)
     const QCommandLineOption perturbOpt(QStringLiteral("perturb"), tr("Draw the plant from the benchmark's distributions with this seed."), QStringLiteral("seed"));
     const QCommandLineOption seedOpt(QStringLiteral("seed"), tr("Sensor noise seed."), QStringLiteral("n"));
     const QCommandLineOption noNoiseOpt(QStringLiteral("no-noise"), tr("Sensors without noise."));
-    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt});
+    const QCommandLineOption controllerOpt(QStringLiteral("controller"), tr("Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT."), QStringLiteral("address"));
+    const QCommandLineOption tokenFileOpt(QStringLiteral("token-file"), tr("File whose first line is the controller's shared secret."), QStringLiteral("file"));
+    const QCommandLineOption everyOpt(QStringLiteral("telemetry-every"), tr("With --controller: one telemetry frame every N ticks (default: about 128 per second)."), QStringLiteral("n"));
+    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed->isEmpty() ? 0 : fail(*parsed);
     const QStringList pos = p.positionalArguments();
@@ -91,6 +135,10 @@ int RthsCommand::exec(const QStringList& arguments)
             out = p.value(o).toDouble(&ok);
         return ok && std::isfinite(out);
     };
+    if (p.isSet(controllerOpt))
+        for (const QCommandLineOption* o : {&gmOpt, &scaleOpt, &paceOpt, &prioOpt, &compOpt, &perturbOpt, &seedOpt, &noNoiseOpt})
+            if (p.isSet(*o))
+                return fail(tr("--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration").arg(o->names().constFirst()));
     try {
         RthsConfig cfg = loadRthsConfig(pos.at(1).toStdString());
         auto& s = cfg.settings;
@@ -103,8 +151,7 @@ int RthsCommand::exec(const QStringList& arguments)
             return fail(tr("--seed, --scale and --duration take numbers"));
         s.sensors.seed = std::uint64_t(seed);
         // The feedforward is fitted to the nominal plant (a lab knows only its model of it).
-        if (s.compensation.fitToLoop)
-            rths::fitFeedforward([&](double w) { return rths::closedLoopResponse(s, w); }, 0.2, 6.0, s.compensation);
+        rths::fitToNominalLoop(s);
         if (p.isSet(perturbOpt)) {
             double ps = 0.0;
             if (!number(perturbOpt, ps))
@@ -112,6 +159,8 @@ int RthsCommand::exec(const QStringList& arguments)
             PortableRandom random{std::uint64_t(ps)};
             s.plant = rths::perturbedPlant(s.plant, random);
         }
+        if (p.isSet(controllerOpt))
+            return monitorController(p, cfg, s, duration, controllerOpt, tokenFileOpt, everyOpt, outOpt);
         const QString gmFile = p.isSet(gmOpt) ? p.value(gmOpt) : QString::fromStdString(cfg.groundMotionFile);
         if (gmFile.isEmpty())
             return fail(tr("no ground motion: give --ground-motion FILE"));

@@ -73,6 +73,16 @@ QString ControllerProcess::log() {
     return m_log;
 }
 
+bool ControllerProcess::waitForLog(const QString& text, int timeoutMs) {
+    QDeadlineTimer deadline(timeoutMs);
+    while (!log().contains(text)) {
+        if (deadline.hasExpired() || m_process.state() == QProcess::NotRunning)
+            return log().contains(text);
+        m_process.waitForReadyRead(200);
+    }
+    return true;
+}
+
 long ControllerProcess::rssKb(bool peak) const {
     QFile f(QStringLiteral("/proc/%1/status").arg(m_process.processId()));
     if (!f.open(QIODevice::ReadOnly))

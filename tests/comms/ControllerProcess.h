@@ -25,6 +25,8 @@ public:
     long rssKb(bool peak = false) const;
     /// Everything it wrote (stdout and stderr), for failure messages.
     QString log();
+    /// Wait (bounded by timeoutMs) until its output contains text; false if it did not.
+    bool waitForLog(const QString& text, int timeoutMs = 30000);
 
 private:
     QStringList m_args;

@@ -13,6 +13,8 @@ using namespace hsmu::comms;
 
 namespace {
 
+RthsEndMsg rthsEnd();
+
 std::vector<Message> samples() {
     const double inf = std::numeric_limits<double>::infinity();
     return {HelloMsg{1, 0x0123456789abcdefull, "s3cret", "Element 1"},
@@ -28,7 +30,32 @@ std::vector<Message> samples() {
             ResetMsg{},
             HeartbeatMsg{99},
             ErrorMsg{ErrorCode::Interlock, "target deformation |d| = 0.2 exceeds the limit 0.15"},
-            ByeMsg{"test finished"}};
+            ByeMsg{"test finished"},
+            RthsStartMsg{8, 2.5},
+            EmergencyHoldMsg{"operator: emergency stop"},
+            TelemetryMsg{1024, 1.0, 1e-3, 1.1e-3, 0.9e-3, -250.0, 3, 42e-6, 1, true,
+                         "console hold at tick 1024"},
+            rthsEnd()};
+}
+
+RthsEndMsg rthsEnd() {
+    RthsEndMsg m;
+    m.ticks = 3073;
+    for (int i = 0; i < 9; ++i)
+        m.j[i] = 0.5 * (i + 1) + 1e-13;
+    m.misses = 2;
+    m.worstLateness = 1.5e-4;
+    m.telemetrySent = 385;
+    m.telemetryDropped = 1;
+    m.peakForce = 812.5;
+    m.peakStroke = 2e-3;
+    m.peakVelocity = 0.03;
+    m.trackingIndicator = -1e-9;
+    m.frequencyAmplitude = 1.02;
+    m.frequencyDelay = 0.4;
+    m.frequency = 2.0;
+    m.hold = "emergency hold at tick 3072 (t = 3 s): test held";
+    return m;
 }
 
 std::vector<std::uint8_t> header(std::uint32_t magic, std::uint16_t version, std::uint16_t type,
@@ -56,7 +83,7 @@ class TestFrameCodec : public QObject {
 private slots:
     void roundTripEveryMessage() {
         const auto msgs = samples();
-        QCOMPARE(msgs.size(), std::size_t(13)); // one of each type
+        QCOMPARE(msgs.size(), std::size_t(17)); // one of each type
         std::vector<std::uint8_t> stream;
         for (std::size_t i = 0; i < msgs.size(); ++i)
             encodeFrame(msgs[i], std::uint32_t(i + 1), stream);
@@ -76,6 +103,19 @@ private slots:
         const auto& c = std::get<ConfigureMsg>(frames[2].message);
         QVERIFY(std::isinf(c.maxForce));
         QCOMPARE(std::get<HelloAckMsg>(frames[1].message).lastCommittedTarget, -0.0125);
+        // The RTHS frames' documented sizes (docs/protocol.md): telemetry 75 bytes + its
+        // reason, rths-end 170 + its hold, rths-start 12.
+        const auto payload = [](const Message& m) {
+            std::vector<std::uint8_t> b;
+            encodeFrame(m, 1, b);
+            return b.size() - kHeaderSize;
+        };
+        QCOMPARE(payload(RthsStartMsg{}), std::size_t(12));
+        QCOMPARE(payload(TelemetryMsg{}), std::size_t(75));
+        QCOMPARE(payload(RthsEndMsg{}), std::size_t(170));
+        const auto& end = std::get<RthsEndMsg>(frames[16].message);
+        QCOMPARE(end.j[8], 4.5 + 1e-13);
+        QCOMPARE(std::get<TelemetryMsg>(frames[15].message).force, -250.0);
     }
 
     void byteByByteChunking() {
@@ -155,7 +195,7 @@ private slots:
     }
 
     void unknownType() {
-        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(14), std::uint16_t(0xFFFF)}) {
+        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(18), std::uint16_t(0xFFFF)}) {
             FrameDecoder d;
             QCOMPARE(decodeAll(d, header(kFrameMagic, 1, t, 1, 0)), FrameDecoder::Status::Error);
             QCOMPARE(d.error().code, ErrorCode::Malformed);

@@ -1,0 +1,327 @@
+#include "comms/controller/RthsServer.h"
+
+#include "comms/controller/ControllerSession.h"
+#include "comms/controller/SecretCompare.h"
+#include "comms/rths/RthsMonitor.h"
+#include "core/rths/RthsBenchmark.h"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
+#include <boost/asio/signal_set.hpp>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace hsmu::comms {
+
+namespace asio = boost::asio;
+
+namespace {
+/// How often the io thread drains the telemetry ring and looks for the run's end.
+constexpr auto kPoll = std::chrono::milliseconds(2);
+}
+
+struct RthsServer::Impl final : SessionHost {
+    RthsServerOptions opt;
+    RthsJob job;
+    asio::io_context io{1};
+    asio::ip::tcp::acceptor acceptor{io};
+    asio::signal_set signals{io};
+    asio::steady_timer poll{io};
+    std::set<std::shared_ptr<ControllerSession>> sessions;
+    ControllerSession* monitor = nullptr;
+
+    // The run (one at a time).
+    MonotonicClock clock;
+    std::unique_ptr<RealtimePacer> pacer;
+    std::unique_ptr<MonitorGate> gate;
+    std::unique_ptr<TelemetryFeed> feed;
+    std::thread loop;
+    std::atomic<bool> finished{false};
+    bool running = false;
+    rths::RthsRun result;
+    std::string loopError, priorityRefusal;
+    std::string holdAsked;  ///< the hold's sentence as requested (io thread)
+    long undelivered = 0;   ///< samples taken from the ring with no monitor to send them to
+    long sent = 0;          ///< telemetry frames handed to the monitor's session
+    bool stopping = false;
+
+    Impl(const RthsServerOptions& o, RthsJob j) : opt(o), job(std::move(j)) {}
+
+    std::string describe() const {
+        std::ostringstream o;
+        o << "RTHS loop '" << job.name << "', " << job.settings.rate << " Hz, "
+          << job.groundMotion.duration() << " s record";
+        return o.str();
+    }
+
+    void log(const std::string& line) const {
+        if (!opt.quiet)
+            std::fprintf(stderr, "hsmu-controller: %s\n", line.c_str());
+    }
+
+    void accept() {
+        acceptor.async_accept(
+            [this](const boost::system::error_code& ec, asio::ip::tcp::socket socket) {
+                if (ec == asio::error::operation_aborted)
+                    return;
+                if (!ec) {
+                    auto s = std::make_shared<ControllerSession>(std::move(socket), *this);
+                    sessions.insert(s);
+                    s->start();
+                }
+                accept();
+            });
+    }
+
+    std::optional<ErrorMsg> admit(ControllerSession& s, const HelloMsg& hello, HelloAckMsg& ack,
+                                  double&) override {
+        if (!opt.token.empty() && !sameSecret(hello.token, opt.token)) {
+            log("refused " + s.peer() + ": wrong token");
+            return ErrorMsg{ErrorCode::Unauthorized, "wrong token"};
+        }
+        if (monitor) {
+            log("refused " + s.peer() + ": a monitor is connected");
+            return ErrorMsg{ErrorCode::Busy, "another console monitors this RTHS loop (one at a time)"};
+        }
+        monitor = &s;
+        ack.element = job.name;
+        ack.description = describe();
+        ack.holding = gate && gate->holdRequested();
+        ack.holdReason = holdAsked;
+        log("monitor " + s.peer() + (running ? " joins the running loop" : " connected"));
+        return std::nullopt;
+    }
+
+    std::optional<Message> handle(ControllerSession& s, const Message& m) override {
+        if (const auto* start = std::get_if<RthsStartMsg>(&m))
+            return startRun(*start);
+        if (const auto* h = std::get_if<HoldMsg>(&m)) {
+            requestHold("console hold (" + h->reason + ")");
+            return AckMsg{MessageType::Hold, 0};
+        }
+        if (const auto* e = std::get_if<EmergencyHoldMsg>(&m)) {
+            requestHold("emergency hold (" + e->reason + ")");
+            return AckMsg{MessageType::EmergencyHold, 0};
+        }
+        (void)s;
+        if (std::holds_alternative<ResumeMsg>(m))
+            return ErrorMsg{ErrorCode::ProtocolViolation,
+                            "an RTHS run does not resume after a hold: start a new run (rths-start)"};
+        return ErrorMsg{ErrorCode::ProtocolViolation, std::string("unexpected ") +
+                                                          messageTypeName(messageTypeOf(m)) +
+                                                          " on an RTHS controller"};
+    }
+
+    void requestHold(const std::string& why) {
+        if (!running) {
+            log(why + ": no run in progress");
+            return;
+        }
+        if (holdAsked.empty())
+            holdAsked = why;
+        gate->requestHold(why);
+        log(why + ": the loop holds before its next tick");
+    }
+
+    void closed(ControllerSession& s) override {
+        if (monitor == &s) {
+            monitor = nullptr;
+            if (running && !stopping) {
+                if (opt.holdOnMonitorLoss)
+                    requestHold("monitor link lost (" + s.peer() + ")");
+                else
+                    log("monitor link lost (" + s.peer() +
+                        "): the loop goes on (--monitor-loss continue)");
+            }
+        }
+        asio::post(io, [this, self = s.shared_from_this()] { sessions.erase(self); });
+    }
+
+    double idleTimeout() const override { return opt.idleTimeout; }
+    void dropped(ControllerSession& s, const std::string& why) override {
+        log("dropped " + s.peer() + ": " + why);
+    }
+
+    std::optional<Message> startRun(const RthsStartMsg& m) {
+        if (running)
+            return ErrorMsg{ErrorCode::ProtocolViolation, "an RTHS run is in progress"};
+        if (!(m.duration >= 0.0 && std::isfinite(m.duration)))
+            return ErrorMsg{ErrorCode::ProtocolViolation, "rths-start: the duration must be >= 0 s"};
+        const double h = 1.0 / job.settings.rate;
+        pacer = opt.realTime ? std::make_unique<RealtimePacer>(clock, h, job.holdAfterMisses) : nullptr;
+        gate = std::make_unique<MonitorGate>(pacer.get(), h);
+        const long every = m.decimation > 0 ? long(m.decimation) : defaultDecimation(job.settings.rate);
+        feed = std::make_unique<TelemetryFeed>(*gate, every);
+        finished = false;
+        running = true;
+        holdAsked.clear();
+        loopError.clear();
+        priorityRefusal.clear();
+        undelivered = sent = 0;
+        const double duration = m.duration;
+        loop = std::thread([this, duration] {
+            if (opt.realTime && opt.realTimePriority > 0)
+                priorityRefusal = enterRealtimePriority(opt.realTimePriority);
+            try {
+                result = rths::runRths(job.partition, job.groundMotion, job.settings, gate.get(),
+                                       duration, feed.get());
+            } catch (const std::exception& e) {
+                result = {};
+                loopError = e.what();
+            }
+            finished.store(true, std::memory_order_release);
+        });
+        std::ostringstream o;
+        o << "RTHS run started: " << job.settings.rate << " Hz, "
+          << (opt.realTime ? "real-time" : "fast") << " pace, telemetry every " << every
+          << " ticks";
+        log(o.str());
+        armPoll();
+        return AckMsg{MessageType::RthsStart, 0};
+    }
+
+    void armPoll() {
+        poll.expires_after(kPoll);
+        poll.async_wait([this](const boost::system::error_code& ec) {
+            if (ec)
+                return;
+            const bool done = finished.load(std::memory_order_acquire);
+            drain();
+            if (done)
+                endRun();
+            else
+                armPoll();
+        });
+    }
+
+    void drain() {
+        TelemetrySample t;
+        while (feed->pop(t)) {
+            if (!monitor) {
+                ++undelivered;
+                continue;
+            }
+            const bool holding = gate->holdRequested();
+            monitor->send(TelemetryMsg{std::uint64_t(t.tick), t.time, t.desired, t.command,
+                                       t.measured, t.force, std::uint64_t(t.misses),
+                                       t.worstLateness,
+                                       std::uint64_t(feed->dropped() + undelivered), holding,
+                                       holding ? holdAsked : std::string()});
+            ++sent;
+        }
+    }
+
+    void endRun() {
+        loop.join();
+        drain();
+        running = false;
+        if (!priorityRefusal.empty())
+            log("real-time priority not taken (" + priorityRefusal + "); the loop ran at normal priority");
+        RthsEndMsg end;
+        end.ticks = result.time.size();
+        for (int i = 0; i < 9; ++i)
+            end.j[i] = result.criteria.j[std::size_t(i)];
+        end.misses = std::uint64_t(pacer ? pacer->misses() : 0);
+        end.worstLateness = pacer ? pacer->worstLateness() : 0.0;
+        end.telemetrySent = std::uint64_t(sent);
+        end.telemetryDropped = std::uint64_t(feed->dropped() + undelivered);
+        end.peakForce = result.peakForce;
+        end.peakStroke = result.peakStroke;
+        end.peakVelocity = result.peakVelocity;
+        end.trackingIndicator = result.trackingIndicator;
+        end.frequencyAmplitude = result.frequency.amplitude;
+        end.frequencyDelay = result.frequency.delay;
+        end.frequency = result.frequency.frequency;
+        end.hold = loopError.empty() ? result.hold : "the loop failed: " + loopError;
+        std::ostringstream o;
+        o.precision(4);
+        o << "RTHS run ended after " << end.ticks << " ticks; J1 " << end.j[0] << " ms, J2 "
+          << end.j[1] << " %, J4 " << end.j[3] << " %; " << end.misses
+          << " deadline misses (worst " << end.worstLateness * 1e6 << " us); telemetry "
+          << sent << " sent, " << end.telemetryDropped << " dropped"
+          << (end.hold.empty() ? std::string() : "; " + end.hold);
+        log(o.str());
+        if (monitor)
+            monitor->send(end);
+    }
+};
+
+RthsServer::RthsServer(const RthsServerOptions& options, RthsJob job)
+    : d(std::make_unique<Impl>(options, std::move(job))) {}
+
+RthsServer::~RthsServer() {
+    if (d->loop.joinable()) {
+        d->stopping = true;
+        if (d->gate)
+            d->gate->requestHold("controller shutting down");
+        d->loop.join();
+    }
+}
+
+bool RthsServer::listen(std::string& error) {
+    boost::system::error_code ec;
+    const auto address = asio::ip::make_address(d->opt.bind, ec);
+    if (ec) {
+        error = "--bind: '" + d->opt.bind + "' is not an IP address";
+        return false;
+    }
+    const asio::ip::tcp::endpoint ep(address, d->opt.port);
+    d->acceptor.open(ep.protocol(), ec);
+    if (!ec)
+        d->acceptor.set_option(asio::socket_base::reuse_address(true), ec);
+    if (!ec)
+        d->acceptor.bind(ep, ec);
+    if (!ec)
+        d->acceptor.listen(asio::socket_base::max_listen_connections, ec);
+    if (ec) {
+        error = "cannot listen on " + d->opt.bind + ":" + std::to_string(d->opt.port) + ": " +
+                ec.message();
+        return false;
+    }
+    d->accept();
+    return true;
+}
+
+std::uint16_t RthsServer::port() const {
+    boost::system::error_code ec;
+    const auto ep = d->acceptor.local_endpoint(ec);
+    return ec ? 0 : ep.port();
+}
+
+std::string RthsServer::describe() const {
+    return d->describe();
+}
+
+void RthsServer::run() {
+    d->signals.add(SIGINT);
+    d->signals.add(SIGTERM);
+    d->signals.async_wait([this](const boost::system::error_code& ec, int) {
+        if (!ec)
+            stop();
+    });
+    d->io.run();
+}
+
+void RthsServer::stop() {
+    asio::post(d->io, [this] {
+        d->stopping = true;
+        if (d->running)
+            d->gate->requestHold("controller shutting down");
+        boost::system::error_code ec;
+        d->acceptor.close(ec);
+        d->poll.cancel();
+        d->signals.cancel();
+        for (const auto& s : std::set<std::shared_ptr<ControllerSession>>(d->sessions)) {
+            s->send(ByeMsg{"controller shutting down"});
+            s->close();
+        }
+        d->io.stop();
+    });
+}
+
+} // namespace hsmu::comms

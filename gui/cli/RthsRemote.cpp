@@ -1,0 +1,123 @@
+#include "gui/cli/RthsRemote.h"
+
+#include "comms/link/LinkClient.h"
+#include "gui/cli/ConsoleStreams.h"
+#include "gui/cli/RthsCommand.h"
+#include "gui/cli/SignalHold.h"
+
+#include <cstdio>
+#include <fstream>
+#include <random>
+
+namespace hsmu::gui {
+
+namespace {
+
+constexpr double kConnectTimeout = 10.0; ///< [s]
+constexpr double kFrameTimeout = 1.0;    ///< [s] one wait for a frame (the link's silence timeout judges loss)
+
+int fail(const QString& message) {
+    ConsoleStreams::err() << "hsmu rths: " << message << Qt::endl;
+    return 1;
+}
+
+/// The controller's end as the local run's summary (rthsSummary's keys), ticks from the end.
+nlohmann::json summaryOf(const comms::RthsEndMsg& end, const rths::RthsSettings& s,
+                         const rths::Preflight& pre) {
+    rths::RthsRun run;
+    for (int i = 0; i < 9; ++i)
+        run.criteria.j[std::size_t(i)] = end.j[i];
+    run.hold = end.hold;
+    run.peakForce = end.peakForce;
+    run.peakStroke = end.peakStroke;
+    run.peakVelocity = end.peakVelocity;
+    run.trackingIndicator = end.trackingIndicator;
+    run.frequency.amplitude = end.frequencyAmplitude;
+    run.frequency.delay = end.frequencyDelay;
+    run.frequency.frequency = end.frequency;
+    nlohmann::json j = rths::rthsSummary(run, s, pre);
+    j["ticks"] = end.ticks;
+    j["deadlineMisses"] = {{"count", end.misses}, {"worstLateness_us", end.worstLateness * 1e6}};
+    return j;
+}
+
+} // namespace
+
+int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
+                        const rths::Preflight& pre, const RthsRemoteOptions& o) {
+    const std::string dir = o.out.toStdString();
+    std::ofstream csv(dir + "/telemetry.csv");
+    if (!csv)
+        return fail(RthsCommand::tr("%1/telemetry.csv: cannot be written").arg(o.out));
+    csv << "tick,time_s,desired_m,command_m,measured_m,force_N,misses,worstLateness_us,dropped,holding\n";
+    comms::LinkClient link;
+    std::string error;
+    if (!link.connect(o.host.toStdString(), o.port, kConnectTimeout, error))
+        return fail(RthsCommand::tr("cannot reach the controller %1:%2: %3").arg(o.host).arg(o.port).arg(QString::fromStdString(error)));
+    const std::uint64_t session = std::random_device{}() | (std::uint64_t(std::random_device{}()) << 32);
+    link.send(comms::HelloMsg{comms::kProtocolVersion, session, o.token.toStdString(), {}}, error);
+    const auto ack = link.receive(kConnectTimeout, error);
+    if (!ack || !std::holds_alternative<comms::HelloAckMsg>(*ack)) {
+        const auto* e = ack ? std::get_if<comms::ErrorMsg>(&*ack) : nullptr;
+        return fail(RthsCommand::tr("the controller refused the monitor: %1").arg(QString::fromStdString(e ? e->reason : error)));
+    }
+    auto& out = ConsoleStreams::out();
+    out << RthsCommand::tr("controller: %1").arg(QString::fromStdString(std::get<comms::HelloAckMsg>(*ack).description)) << Qt::endl;
+    link.send(comms::RthsStartMsg{o.decimation, o.duration}, error);
+    SignalHold holdOnSignal([&link](const std::string& why) {
+        std::string e;
+        link.send(comms::HoldMsg{why + " by hsmu rths"}, e);
+    });
+    long frames = 0;
+    double lastPrinted = -1.0;
+    char row[512];
+    for (;;) {
+        const auto m = link.receive(kFrameTimeout, error);
+        if (!m && link.isOpen())
+            continue; // the controller evaluates the run (J1..J9) after its last tick: the link's
+                      // heartbeats, not this wait, say whether it is still there
+        if (!m)
+            return fail(RthsCommand::tr("the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv")
+                            .arg(QString::fromStdString(error)).arg(frames).arg(o.out));
+        if (const auto* t = std::get_if<comms::TelemetryMsg>(&*m)) {
+            ++frames;
+            std::snprintf(row, sizeof row, "%llu,%.17g,%.17g,%.17g,%.17g,%.17g,%llu,%.3f,%llu,%d\n",
+                          static_cast<unsigned long long>(t->tick), t->time, t->desired, t->command,
+                          t->measured, t->force, static_cast<unsigned long long>(t->misses),
+                          t->worstLateness * 1e6, static_cast<unsigned long long>(t->dropped),
+                          t->holding ? 1 : 0);
+            csv << row;
+            if (t->time >= lastPrinted + 1.0) {
+                lastPrinted = t->time;
+                out << RthsCommand::tr("t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses")
+                           .arg(t->time, 0, 'f', 2).arg(t->desired * 1e3, 0, 'f', 3)
+                           .arg(t->measured * 1e3, 0, 'f', 3).arg(t->misses) << Qt::endl;
+            }
+        } else if (const auto* e = std::get_if<comms::ErrorMsg>(&*m)) {
+            return fail(RthsCommand::tr("the controller: %1").arg(QString::fromStdString(e->reason)));
+        } else if (const auto* end = std::get_if<comms::RthsEndMsg>(&*m)) {
+            link.send(comms::ByeMsg{"run ended"}, error);
+            csv.close();
+            nlohmann::json summary = summaryOf(*end, s, pre);
+            summary["name"] = cfg.name;
+            summary["pace"] = "controller";
+            summary["controller"] = o.host.toStdString() + ":" + std::to_string(o.port);
+            summary["telemetry"] = {{"received", frames}, {"sent", end->telemetrySent}, {"dropped", end->telemetryDropped}};
+            std::ofstream(dir + "/summary.json") << summary.dump(2) << '\n';
+            QString table;
+            for (int i = 0; i < 9; ++i)
+                table += QStringLiteral("J%1 %2%3  ").arg(i + 1).arg(end->j[i], 0, 'f', 2).arg(i == 0 ? QStringLiteral(" ms") : QStringLiteral(" %"));
+            out << RthsCommand::tr("%1 ticks on the controller; %2").arg(end->ticks).arg(table) << Qt::endl;
+            out << RthsCommand::tr("deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped")
+                       .arg(end->misses).arg(end->worstLateness * 1e6, 0, 'f', 1).arg(frames).arg(end->telemetryDropped) << Qt::endl;
+            out << RthsCommand::tr("outputs: %1/telemetry.csv, %1/summary.json").arg(o.out) << Qt::endl;
+            if (!end->hold.empty()) {
+                ConsoleStreams::err() << RthsCommand::tr("hsmu rths: %1").arg(QString::fromStdString(end->hold)) << Qt::endl;
+                return 2;
+            }
+            return 0;
+        }
+    }
+}
+
+} // namespace hsmu::gui

@@ -1,0 +1,251 @@
+// hsmu-controller --rths (docs/rths.md, "The loop on the controller"): a real controller
+// process runs the RTHS loop; the test is its monitor over the native protocol (RawClient).
+// At the fast pace the controller's run equals core's runRths of the same configuration in
+// this process (the local `hsmu rths`): every telemetry frame's tick, desired, command,
+// measured and force, and the end's J1..J9 bit for bit (the same code, the same noise seed;
+// the protocol carries binary64). Telemetry: one frame every decimation ticks, none dropped.
+// Holds (hold, emergency hold, the monitor's link lost) hold the loop before a tick, the end
+// says so and carries the ticks before it; they are asked after the first telemetry frame,
+// on a 30 s record at the real-time pace (so the run is still going; nothing is timed).
+// A 2 s real-time run reports its deadline misses (printed, not asserted: the machine is
+// shared).
+#include "ControllerProcess.h"
+#include "RawClient.h"
+
+#include "core/config/RthsConfig.h"
+#include "core/rths/RthsBenchmark.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace hsmu;
+using namespace hsmu::comms;
+
+namespace {
+
+/// A 2 Hz sine of 0.8 m/s^2 over `seconds`, sampled at 100 Hz.
+QString writeSine(const QString& dir, double seconds) {
+    const QString path = dir + QStringLiteral("/sine.txt");
+    QFile f(path);
+    f.open(QIODevice::WriteOnly | QIODevice::Text);
+    QString text;
+    for (int i = 0; i <= int(std::lround(seconds * 100)); ++i) {
+        const double t = 0.01 * i;
+        text += QStringLiteral("%1 %2\n").arg(t, 0, 'g', 17).arg(0.8 * std::sin(2 * M_PI * 2.0 * t), 0, 'g', 17);
+    }
+    f.write(text.toUtf8());
+    return path;
+}
+
+QString writeConfig(const QString& dir, double seconds) {
+    const QString path = dir + QStringLiteral("/rths.json");
+    QFile f(path);
+    f.open(QIODevice::WriteOnly | QIODevice::Text);
+    f.write(QStringLiteral(R"({"name": "sine on case 1", "rths": {"rate": 1024,
+      "structure": {"benchmarkCase": 1, "specimenDof": 0},
+      "sensors": {"noise": true, "seed": 3},
+      "controller": {"kp": 2.0, "ki": 95.0},
+      "compensation": {"type": "ats", "lead": {"enabled": true}, "fitToLoop": true},
+      "holdAfterMisses": 0,
+      "groundMotion": {"file": "%1", "scale": 1.0, "unit": "m/s^2"}}})")
+                .arg(writeSine(dir, seconds)).toUtf8());
+    return path;
+}
+
+/// The local run: what `hsmu rths CONFIG` runs (RthsCommand: load, fitToNominalLoop, runRths).
+rths::RthsRun localRun(const QString& config) {
+    const RthsConfig cfg = loadRthsConfig(config.toStdString());
+    rths::RthsSettings s = cfg.settings;
+    rths::fitToNominalLoop(s);
+    return rths::runRths(cfg.partition(), loadRthsGroundMotion(cfg, "", cfg.groundMotionScale), s);
+}
+
+struct Monitored {
+    std::vector<TelemetryMsg> telemetry;
+    std::optional<RthsEndMsg> end;
+};
+
+/// Receive telemetry until rths-end (bounded); onFirst runs once, after the first frame.
+template <class OnFirst> Monitored monitor(RawClient& c, OnFirst onFirst) {
+    Monitored m;
+    for (int i = 0; i < 1000000 && !m.end; ++i) {
+        const auto msg = c.receive();
+        if (!msg)
+            break;
+        if (const auto* t = std::get_if<TelemetryMsg>(&*msg)) {
+            m.telemetry.push_back(*t);
+            if (m.telemetry.size() == 1)
+                onFirst();
+        } else if (const auto* e = std::get_if<RthsEndMsg>(&*msg)) {
+            m.end = *e;
+        }
+    }
+    return m;
+}
+
+bool startRun(RawClient& c, std::uint32_t decimation, double duration = 0.0) {
+    if (!c.hello(7) || !c.send(RthsStartMsg{decimation, duration}))
+        return false;
+    for (;;) { // the ack, possibly after telemetry already on its way
+        const auto m = c.receive();
+        if (!m)
+            return false;
+        if (const auto* a = std::get_if<AckMsg>(&*m))
+            return a->acked == MessageType::RthsStart;
+        if (!std::holds_alternative<TelemetryMsg>(*m))
+            return false;
+    }
+}
+
+/// Every telemetry frame equals the local run's tick, bit for bit.
+void sameTicks(const std::vector<TelemetryMsg>& tel, const rths::RthsRun& local) {
+    for (const TelemetryMsg& t : tel) {
+        const auto k = std::size_t(t.tick);
+        QVERIFY(k < local.time.size());
+        QCOMPARE(t.time, local.time[k]);
+        QVERIFY(t.desired == local.desired[k]);
+        QVERIFY(t.command == local.command[k]);
+        QVERIFY(t.measured == local.measured[k]);
+        QVERIFY(t.force == local.force[k]);
+    }
+}
+
+} // namespace
+
+class TestRthsController : public QObject {
+    Q_OBJECT
+private slots:
+    void fastPaceRunEqualsTheLocalRun() {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 3.0);
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("fast")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY2(startRun(c, 8), qPrintable(ctl.log()));
+        const Monitored m = monitor(c, [] {});
+        QVERIFY2(m.end.has_value(), qPrintable(ctl.log()));
+        const rths::RthsRun local = localRun(cfg);
+        QVERIFY(local.hold.empty());
+        QCOMPARE(m.end->hold, std::string());
+        QCOMPARE(m.end->ticks, std::uint64_t(local.time.size())); // 3 s at 1024 Hz: 3073
+        QCOMPARE(local.time.size(), std::size_t(3073));
+        for (int i = 0; i < 9; ++i)
+            QVERIFY2(m.end->j[i] == local.criteria.j[std::size_t(i)], qPrintable(QStringLiteral("J%1: %2 vs %3").arg(i + 1).arg(m.end->j[i], 0, 'g', 17).arg(local.criteria.j[std::size_t(i)], 0, 'g', 17)));
+        QVERIFY(m.end->peakStroke == local.peakStroke && m.end->peakForce == local.peakForce);
+        QVERIFY(m.end->trackingIndicator == local.trackingIndicator);
+        // One frame at every 8th tick (0, 8, ..., 3072): ceil(3073 / 8) = 385, none dropped.
+        QCOMPARE(m.telemetry.size(), std::size_t(385));
+        for (std::size_t i = 0; i < m.telemetry.size(); ++i)
+            QCOMPARE(m.telemetry[i].tick, std::uint64_t(8 * i));
+        QCOMPARE(m.end->telemetrySent, std::uint64_t(385));
+        QCOMPARE(m.end->telemetryDropped, std::uint64_t(0));
+        QCOMPARE(m.end->misses, std::uint64_t(0));
+        sameTicks(m.telemetry, local);
+        // A second run on the same controller is the same run again.
+        QVERIFY(c.send(RthsStartMsg{0, 1.0}));
+        const Monitored again = monitor(c, [] {});
+        QVERIFY(again.end.has_value());
+        QCOMPARE(again.end->ticks, std::uint64_t(1025));
+        QCOMPARE(again.telemetry.size(), std::size_t(129)); // default: 1024 / 128 = every 8th
+        sameTicks(again.telemetry, local);
+    }
+
+    void holdFromTheMonitorHoldsTheLoopAtATick() { holdAndCheck(false); }
+    void emergencyHoldHoldsTheLoopAtATick() { holdAndCheck(true); }
+
+    void aLostMonitorHoldsTheLoop() {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 30.0);
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("realtime")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY(startRun(c, 8));
+        QVERIFY(c.expect<TelemetryMsg>().has_value());
+        c.close();
+        QVERIFY2(ctl.waitForLog(QStringLiteral("RTHS run ended")), qPrintable(ctl.log()));
+        const QString log = ctl.log();
+        QVERIFY2(log.contains(QStringLiteral("monitor link lost")) &&
+                     log.contains(QStringLiteral("the loop holds before its next tick")),
+                 qPrintable(log));
+        const QRegularExpression ended(QStringLiteral("RTHS run ended after (\\d+) ticks;.*monitor link lost \\([^)]*\\) before tick (\\d+)"));
+        const auto match = ended.match(log);
+        QVERIFY2(match.hasMatch(), qPrintable(log));
+        QCOMPARE(match.captured(1).toLong(), match.captured(2).toLong());
+        QVERIFY(match.captured(1).toLong() < 30 * 1024);
+    }
+
+    void aLostMonitorCanBeLetGo() {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 3.0);
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("realtime"),
+                               QStringLiteral("--monitor-loss"), QStringLiteral("continue")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY(startRun(c, 8));
+        QVERIFY(c.expect<TelemetryMsg>().has_value());
+        c.close();
+        QVERIFY2(ctl.waitForLog(QStringLiteral("RTHS run ended")), qPrintable(ctl.log()));
+        const QString log = ctl.log();
+        QVERIFY2(log.contains(QStringLiteral("the loop goes on (--monitor-loss continue)")), qPrintable(log));
+        QVERIFY2(log.contains(QStringLiteral("RTHS run ended after 3073 ticks")), qPrintable(log));
+        QVERIFY(!log.contains(QStringLiteral("test held")));
+    }
+
+    void realtimeRunReportsItsDeadlineMisses() {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 2.0);
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("realtime"),
+                               QStringLiteral("--realtime-priority"), QStringLiteral("80")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY(startRun(c, 8));
+        const Monitored m = monitor(c, [] {});
+        QVERIFY2(m.end.has_value(), qPrintable(ctl.log()));
+        QCOMPARE(m.end->hold, std::string()); // holdAfterMisses 0: misses never hold this run
+        QCOMPARE(m.end->ticks, std::uint64_t(2049));
+        QCOMPARE(m.telemetry.size() + m.end->telemetryDropped, std::size_t(257));
+        const rths::RthsRun local = localRun(cfg);
+        sameTicks(m.telemetry, local); // the wall clock paces the same ticks
+        qInfo("real-time 2 s at 1024 Hz: %llu deadline misses, worst %.1f us late (%s)",
+              static_cast<unsigned long long>(m.end->misses), m.end->worstLateness * 1e6,
+              ctl.log().contains(QStringLiteral("priority not taken")) ? "normal priority" : "SCHED_FIFO 80");
+    }
+
+private:
+    void holdAndCheck(bool emergency) {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 30.0);
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("realtime")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY(startRun(c, 8));
+        const Monitored m = monitor(c, [&] {
+            if (emergency)
+                c.send(EmergencyHoldMsg{"operator"});
+            else
+                c.send(HoldMsg{"operator"});
+        });
+        QVERIFY2(m.end.has_value(), qPrintable(ctl.log()));
+        const std::string what = emergency ? "emergency hold (operator)" : "console hold (operator)";
+        QVERIFY2(m.end->hold.rfind(what + " before tick " + std::to_string(m.end->ticks) + " (t = ", 0) == 0,
+                 m.end->hold.c_str());
+        QVERIFY(m.end->hold.find("test held") != std::string::npos);
+        QVERIFY(m.end->ticks > m.telemetry.front().tick && m.end->ticks < 30 * 1024);
+        QVERIFY(!m.telemetry.empty());
+        for (const TelemetryMsg& t : m.telemetry)
+            QVERIFY(t.tick < m.end->ticks);
+        QVERIFY2(ctl.waitForLog(QString::fromStdString(what + ": the loop holds before its next tick")), qPrintable(ctl.log()));
+        // What ran before the hold is the local run's beginning.
+        sameTicks(m.telemetry, localRun(cfg));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRthsController)
+#include "TestRthsController.moc"
