@@ -16,6 +16,7 @@
 //       synchronization plot, TI = 1/4 sum (y[k] + y[k-1]) (xm[k] - xm[k-1])
 //       - (xm[k] + xm[k-1]) (y[k] - y[k-1]); positive while xm lags y; pi A^2 sin(phi) per cycle of y = A sin wt, xm lagging by phi [m^2] (M6)
 
+#include <cstddef>
 #include <vector>
 
 namespace hsmu::rths {
@@ -33,8 +34,11 @@ struct FrequencyEvaluation {
     double delay = 0.0;     ///< [ms]
     double frequency = 0.0; ///< energy-weighted mean frequency f_e [Hz]
 };
+/// M5 over the first fftFriendlyLength(size) samples (at most a few per mille left out).
 FrequencyEvaluation frequencyEvaluationIndex(const std::vector<double>& y,
                                              const std::vector<double>& xm, double h);
+/// The largest length <= size whose prime factors are 2, 3, 5, 7 (size itself below 2).
+std::size_t fftFriendlyLength(std::size_t size);
 /// M6 over the whole history [m^2].
 double trackingIndicator(const std::vector<double>& y, const std::vector<double>& xm);
 

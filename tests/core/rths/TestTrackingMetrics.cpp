@@ -61,6 +61,30 @@ private slots:
         QVERIFY(std::abs(fe.frequency - 4.0) < 1e-6);
     }
 
+    void frequencyEvaluationIndexOfAPrimeLengthUsesItsSmoothPrefix()
+    {
+        // 40,961 samples (a prime: Eigen's FFT would cost O(n^2)): the index is that of the
+        // first 40,960 = 2^13 5, the delay still found.
+        QCOMPARE(fftFriendlyLength(40961), std::size_t(40960));
+        QCOMPARE(fftFriendlyLength(3073), std::size_t(3072));
+        QCOMPARE(fftFriendlyLength(31160), std::size_t(31104)); // 2^7 3^5
+        QCOMPARE(fftFriendlyLength(1), std::size_t(1));
+        std::vector<double> y, xm;
+        sines(4.0, 3e-3, 0.9, 40, y, xm);
+        while (y.size() < 40961) {
+            y.push_back(y[y.size() - 4096]);
+            xm.push_back(xm[xm.size() - 4096]);
+        }
+        y.resize(40961);
+        xm.resize(40961);
+        const FrequencyEvaluation all = frequencyEvaluationIndex(y, xm, kH);
+        const std::vector<double> y0(y.begin(), y.end() - 1), x0(xm.begin(), xm.end() - 1);
+        const FrequencyEvaluation prefix = frequencyEvaluationIndex(y0, x0, kH);
+        QCOMPARE(all.delay, prefix.delay);
+        QCOMPARE(all.amplitude, prefix.amplitude);
+        QVERIFY(std::abs(all.delay - 3.0) < 0.01);
+    }
+
     void trackingIndicatorIsTheLoopArea()
     {
         // Per cycle pi A^2 sin(phi); positive for a lagging response, negative for a leading one.
