@@ -1,5 +1,6 @@
 #include "comms/controller/ControllerServer.h"
 
+#include "comms/ListenSocket.h"
 #include "comms/LogText.h"
 #include "comms/controller/ControllerSession.h"
 #include "comms/controller/SecretCompare.h"
@@ -354,25 +355,8 @@ bool ControllerServer::reloadTls(std::string& error) {
 bool ControllerServer::listen(std::string& error) {
     if (d->opt.tls && !d->reloadTls(error))
         return false;
-    boost::system::error_code ec;
-    const auto address = asio::ip::make_address(d->opt.bind, ec);
-    if (ec) {
-        error = "--bind: '" + d->opt.bind + "' is not an IP address";
+    if (!listenOn(d->acceptor, d->opt.bind, d->opt.port, error, "--bind: "))
         return false;
-    }
-    const asio::ip::tcp::endpoint ep(address, d->opt.port);
-    d->acceptor.open(ep.protocol(), ec);
-    if (!ec)
-        d->acceptor.set_option(asio::socket_base::reuse_address(true), ec);
-    if (!ec)
-        d->acceptor.bind(ep, ec);
-    if (!ec)
-        d->acceptor.listen(asio::socket_base::max_listen_connections, ec);
-    if (ec) {
-        error = "cannot listen on " + d->opt.bind + ":" + std::to_string(d->opt.port) + ": " +
-                ec.message();
-        return false;
-    }
     d->accept();
     return true;
 }

@@ -1,5 +1,7 @@
 #include "comms/openfresco/OfSocket.h"
 
+#include "comms/ListenSocket.h"
+
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -335,25 +337,7 @@ void OfListener::setCancel(std::function<bool()> cancelled) {
 }
 
 bool OfListener::listen(const std::string& bind, std::uint16_t port, std::string& error) {
-    boost::system::error_code ec;
-    const auto address = asio::ip::make_address(bind, ec);
-    if (ec) {
-        error = "'" + bind + "' is not an IP address";
-        return false;
-    }
-    const tcp::endpoint ep(address, port);
-    d->acceptor.open(ep.protocol(), ec);
-    if (!ec)
-        d->acceptor.set_option(asio::socket_base::reuse_address(true), ec);
-    if (!ec)
-        d->acceptor.bind(ep, ec);
-    if (!ec)
-        d->acceptor.listen(asio::socket_base::max_listen_connections, ec);
-    if (ec) {
-        error = "cannot listen on " + bind + ":" + std::to_string(port) + ": " + ec.message();
-        return false;
-    }
-    return true;
+    return listenOn(d->acceptor, bind, port, error);
 }
 
 std::uint16_t OfListener::port() const {
