@@ -3,6 +3,7 @@
 #include "comms/ListenSocket.h"
 #include "comms/controller/ControllerSession.h"
 #include "comms/controller/SecretCompare.h"
+#include "comms/tls/ByteStream.h"
 #include "comms/rths/RthsMonitor.h"
 #include "core/rths/RthsBenchmark.h"
 
@@ -71,7 +72,9 @@ struct RthsServer::Impl final : SessionHost {
                 if (ec == asio::error::operation_aborted)
                     return;
                 if (!ec) {
-                    auto s = std::make_shared<ControllerSession>(std::move(socket), *this);
+                    // Plain TCP: the RTHS monitor link has no TLS yet (docs/rths.md).
+                    auto s = std::make_shared<ControllerSession>(
+                        std::make_unique<ByteStream>(std::move(socket)), *this);
                     sessions.insert(s);
                     s->start();
                 }
