@@ -88,7 +88,8 @@ struct RecordReader::Impl {
     /// SWMR: re-read every dataset's extent from the file (H5Drefresh).
     void refreshDatasets();
     /// Walk every dataset's chunk index (no chunk is read): the file's metadata a read
-    /// traverses; a chunk past the end of the file is damage.
+    /// traverses (a chunk's address is not checked against the size on disk: a record being
+    /// written allocates chunks before their bytes reach the file).
     void walkChunkIndexes();
 };
 
@@ -455,9 +456,6 @@ void RecordReader::Impl::readNewNotes() {
 }
 
 void RecordReader::Impl::walkChunkIndexes() {
-    hsize_t fileSize = 0;
-    if (H5Fget_filesize(file.get(), &fileSize) < 0)
-        throw RecordError(path + ": damaged record (its size cannot be read)");
     std::vector<Column*> all = stepColumns();
     for (Column* c : logColumns())
         all.push_back(c);
@@ -472,8 +470,8 @@ void RecordReader::Impl::walkChunkIndexes() {
             hsize_t size = 0;
             if (H5Dget_chunk_info(c->dset.get(), space.get(), i, nullptr, nullptr, &address, &size) < 0)
                 throw RecordError(path + ": " + what + " cannot be read)");
-            if (address == HADDR_UNDEF || address + size > fileSize)
-                throw RecordError(path + ": " + what + " points past the end of the file)");
+            (void)address; // a live (SWMR) record's chunks may lie past the size on disk yet
+            (void)size;
         }
     }
 }

@@ -165,7 +165,8 @@ def test_ctrl_c_stops_a_calibration(column):
     with pytest.raises(KeyboardInterrupt):
         hsmu.calibrate(m["time"], m["deformation"], m["force"], units=m["units"],
                        progress=progress)
-    assert phases == ["calibration"]
+    # stopped inside the calibration (it reports "minimization i of N" as it goes): never "done"
+    assert phases and set(phases) == {"calibration"}
 
 
 def test_documented():

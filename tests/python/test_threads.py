@@ -64,7 +64,9 @@ def test_calibrate_releases_the_gil(history):
     t, d, f = history
     result, progress, ticks = ticks_inside(
         lambda p: hsmu.calibrate(t, d, f, law="boucWen", model=MODEL, progress=p))
-    assert [p["phase"] for p in progress] == ["calibration", "done"]
+    # the calibration reports each minimization ("calibration", repeated), then "done"
+    phases = [p["phase"] for p in progress]
+    assert [x for i, x in enumerate(phases) if i == 0 or phases[i - 1] != x] == ["calibration", "done"]
     assert ticks > 0, "no other Python thread ran while the calibration ran"
     # the calibration itself is not disturbed: the law it was generated with
     for name, value in TRUTH.items():
