@@ -18,6 +18,9 @@ PRESET = "paper-condition-3"
 HELD = re.compile(r"hsmu run: test held at t = (\S+) s \(step (\d+)\): (.*)")
 LOST = re.compile(r"^(.*: no measurement for step \d+: )"
                   r"(the controller closed the connection|connection lost: .+)$")
+# When the kill lands between two steps the link notices first and the next step finds it down
+# (the reason in brackets is empty today: a known gap, issue 26's notes).
+DOWN = re.compile(r"^(Element 1: link to \S+) is down \(.*\); resume to reconnect$")
 
 
 @pytest.fixture
@@ -147,9 +150,14 @@ def test_a_dropped_controller_holds_with_the_programs_reason(cli, controllers, t
     # or, when the killed controller had unread bytes (a heartbeat), an RST ("connection lost:
     # Connection reset by peer"), whichever front end runs.
     ours_said, theirs_said = LOST.match(result["hold_reason"]), LOST.match(cli_reason)
-    assert ours_said and theirs_said, (result["hold_reason"], cli_reason)
-    assert ours_said.group(1) == theirs_said.group(1).replace(theirs.address, ours.address)
-    assert theirs_said.group(1).startswith(f"Element 1: link to {theirs.address}: ")
+    if ours_said and theirs_said:
+        assert ours_said.group(1) == theirs_said.group(1).replace(theirs.address, ours.address)
+        assert theirs_said.group(1).startswith(f"Element 1: link to {theirs.address}: ")
+    else:  # one of them found the link already down: both name the element and its link
+        for reason, address in ((result["hold_reason"], ours.address), (cli_reason, theirs.address)):
+            said = LOST.match(reason) or DOWN.match(reason)
+            assert said and reason.startswith(f"Element 1: link to {address}"), \
+                (result["hold_reason"], cli_reason)
     # the same steps kept, in the record and the summary, as `hsmu run` keeps them
     n = len(result["steps"]["time_s"])
     assert n == cli_step + 1
