@@ -14,7 +14,16 @@ void keepPeak(double& peak, double value) {
 RunStatistics::RunStatistics(RunLayout layout)
     : m_layout(std::move(layout)), m_peakU(m_layout.dofNames.size(), 0.0),
       m_peakForce(m_layout.elements.size(), 0.0), m_peakDeformation(m_layout.elements.size(), 0.0),
-      m_commanded(m_layout.elements.size()), m_measured(m_layout.elements.size()) {
+      m_commanded(m_layout.elements.size()), m_measured(m_layout.elements.size()),
+      m_tracking(m_layout.elements.size()) {
+}
+
+const rths::TrackingReport* RunStatistics::tracking(std::size_t i, double dt) const {
+    if (m_commanded[i].size() < 2)
+        return nullptr;
+    if (!m_tracking[i])
+        m_tracking[i] = rths::trackingReport(m_commanded[i], m_measured[i], dt);
+    return &*m_tracking[i];
 }
 
 void RunStatistics::onStep(const StepRecord& record) {

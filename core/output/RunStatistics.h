@@ -12,6 +12,9 @@
 
 #include "core/output/RunLayout.h"
 #include "core/experiment/StepRecord.h"
+#include "core/rths/TrackingMetrics.h"
+
+#include <optional>
 
 #include <vector>
 
@@ -36,6 +39,10 @@ public:
     /// numerical element.
     const std::vector<double>& commanded(std::size_t i) const { return m_commanded[i]; }
     const std::vector<double>& measured(std::size_t i) const { return m_measured[i]; }
+    /// Element i's tracking (rths::trackingReport of the histories above, sampled at dt [s]),
+    /// computed once and kept; nullptr for an element with fewer than two samples. Call once
+    /// the test stopped stepping.
+    const rths::TrackingReport* tracking(std::size_t i, double dt) const;
 
 private:
     RunLayout m_layout;
@@ -44,6 +51,7 @@ private:
     std::vector<double> m_peakU, m_peakForce, m_peakDeformation;
     double m_peakAg = 0.0;
     std::vector<std::vector<double>> m_commanded, m_measured;
+    mutable std::vector<std::optional<rths::TrackingReport>> m_tracking;
 };
 
 } // namespace hsmu

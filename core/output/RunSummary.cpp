@@ -116,10 +116,8 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     j["hold_reason"] = reason ? nlohmann::json(*reason) : nlohmann::json(nullptr);
     nlohmann::json tracking = nlohmann::json::object();
     for (std::size_t i = 0; i < layout.elements.size(); ++i)
-        if (stats.commanded(i).size() >= 2)
-            tracking[layout.elements[i].name] = trackingJson(
-                rths::trackingReport(stats.commanded(i), stats.measured(i), test.dt()),
-                layout.elements[i].units.deformation);
+        if (const rths::TrackingReport* t = stats.tracking(i, test.dt()))
+            tracking[layout.elements[i].name] = trackingJson(*t, layout.elements[i].units.deformation);
     j["tracking"] = tracking;
     if (const ModelUpdater* updater = test.updater())
         j["updating"] = updatingBlock(*updater, last);

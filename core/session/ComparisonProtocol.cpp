@@ -104,9 +104,8 @@ ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
     session.removeObserver(&stats);
     const RunLayout& layout = stats.layout();
     for (std::size_t i = 0; i < layout.elements.size(); ++i)
-        if (stats.commanded(i).size() >= 2) {
-            run.tracking.emplace_back(layout.elements[i].name,
-                                      rths::trackingReport(stats.commanded(i), stats.measured(i), t.dt()));
+        if (const rths::TrackingReport* tracked = stats.tracking(i, t.dt())) {
+            run.tracking.emplace_back(layout.elements[i].name, *tracked);
             run.trackingUnits.push_back(layout.elements[i].units.deformation);
         }
     if (!session.finish())

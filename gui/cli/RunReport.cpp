@@ -83,9 +83,10 @@ void RunReport::print(QTextStream& out, const HybridTest& test, const RunStatist
     }
     more(elements.size(), layout.elements.size());
     for (std::size_t i = 0; i < layout.elements.size(); ++i) {
-        if (stats.commanded(i).size() < 2)
+        const rths::TrackingReport* tracked = stats.tracking(i, test.dt());
+        if (!tracked)
             continue;
-        const rths::TrackingReport t = rths::trackingReport(stats.commanded(i), stats.measured(i), test.dt());
+        const rths::TrackingReport& t = *tracked;
         out << tr("  tracking of %1 (commanded against measured): J1 %2 ms, J2 %3 %, J3 %4 %")
                    .arg(QString::fromStdString(layout.elements[i].name), num(t.j1, 3), num(t.j2, 3), num(t.j3, 3))
             << '\n';
