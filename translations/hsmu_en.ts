@@ -3211,6 +3211,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>Draw the plant from the benchmark's distributions with this seed.</translation>
     </message>
     <message>
+        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
+        <translation>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</translation>
+    </message>
+    <message>
+        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
+        <translation>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</translation>
+    </message>
+    <message>
         <source>Sensor noise seed.</source>
         <translation>Sensor noise seed.</translation>
     </message>

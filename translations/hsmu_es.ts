@@ -3211,6 +3211,14 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>Sortear la planta de las distribuciones del benchmark con esta semilla.</translation>
     </message>
     <message>
+        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
+        <translation>Con --pace realtime: espera activa durante los últimos N microsegundos antes de cada liberación (por defecto: un cuarto del periodo, como máximo 100; 0: solo dormir).</translation>
+    </message>
+    <message>
+        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
+        <translation>--spin-us: se esperaba de 0 hasta el periodo del lazo (%1 us), se obtuvo &apos;%2&apos;</translation>
+    </message>
+    <message>
         <source>Sensor noise seed.</source>
         <translation>Semilla del ruido de los sensores.</translation>
     </message>

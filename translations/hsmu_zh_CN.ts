@@ -3208,6 +3208,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>用此种子从基准问题的分布中抽取被控对象。</translation>
     </message>
     <message>
+        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
+        <translation>配合 --pace realtime：在每次释放前的最后 N 微秒内忙等待（默认：周期的四分之一，最多 100；0：仅休眠）。</translation>
+    </message>
+    <message>
+        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
+        <translation>--spin-us：应为 0 到环路周期（%1 us）之间，实际为 &apos;%2&apos;</translation>
+    </message>
+    <message>
         <source>Sensor noise seed.</source>
         <translation>传感器噪声种子。</translation>
     </message>

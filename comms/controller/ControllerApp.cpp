@@ -65,6 +65,7 @@ bool ControllerApp::startRths(const std::string& token, std::string& error) {
     o.token = token;
     o.realTime = !m_cmd.fast;
     o.realTimePriority = m_cmd.realTimePriority;
+    o.spinMicros = m_cmd.spinMicros;
     o.quiet = m_cmd.quiet;
     o.holdOnMonitorLoss = m_cmd.monitorLossHolds;
     m_rthsServer = std::make_unique<RthsServer>(o, std::move(job));

@@ -20,10 +20,13 @@ const char* ControllerCommandLine::usage() {
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "       hsmu-controller --rths FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]\n"
-           "                       [--token-file F] [--realtime-priority P] [--monitor-loss hold|continue]\n"
+           "                       [--token-file F] [--realtime-priority P] [--spin-us N] [--monitor-loss hold|continue]\n"
            "  --rths FILE     run the whole RTHS loop of this RTHS configuration (or\n"
            "                  rths-benchmark-case-1 .. -4) on the controller; a console\n"
            "                  monitors it (`hsmu rths --controller`; docs/rths.md)\n"
+           "  --spin-us N     RTHS, real-time pace: busy-wait the last N microseconds before\n"
+           "                  each tick's release instead of sleeping (0: sleep only; default a\n"
+           "                  quarter of the period, at most 100)\n"
            "  --monitor-loss P\n"
            "                  RTHS: when the monitor's link is lost during a run, hold the\n"
            "                  loop (hold, default) or let it run on (continue)\n"
@@ -119,6 +122,16 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
                 return std::nullopt;
             }
             c.realTimePriority = static_cast<int>(p);
+        } else if (a == "--spin-us") {
+            if (!value(v))
+                return std::nullopt;
+            char* end = nullptr;
+            const double us = std::strtod(v.c_str(), &end);
+            if (v.empty() || *end != '\0' || !(us >= 0.0 && us <= 1e6)) {
+                error = "--spin-us: expected 0..1000000 microseconds, found '" + v + "'";
+                return std::nullopt;
+            }
+            c.spinMicros = us;
         } else if (a == "--reply-delay") {
             if (!value(v))
                 return std::nullopt;

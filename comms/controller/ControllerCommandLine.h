@@ -51,6 +51,7 @@ struct ControllerCommandLine {
     int dataSize = 0;        ///< OpenFresco doubles per frame; 0 = controller.dataSize (256)
     bool siteServer = false; ///< SimApp: behave as a site server (no replies to 12-15)
     int realTimePriority = 0; ///< native, real-time pace: SCHED_FIFO priority 1..99; 0 = normal
+    double spinMicros = -1.0; ///< RTHS, real-time pace: busy-wait before each release [us]; < 0: default
     double replyDelay = 0.0;  ///< --reply-delay MS, in seconds (native; tests and benchmarks)
     std::string rths;         ///< --rths FILE|PRESET: the RTHS loop's configuration
     bool monitorLossHolds = true; ///< --monitor-loss hold (default) | continue (RTHS)

@@ -38,7 +38,8 @@ struct RthsServer::Impl final : SessionHost {
     ControllerSession* monitor = nullptr;
 
     // The run (one at a time).
-    MonotonicClock clock;
+    MonotonicClock monotonic;
+    std::unique_ptr<SpinningClock> clock;
     std::unique_ptr<RealtimePacer> pacer;
     std::unique_ptr<MonitorGate> gate;
     std::unique_ptr<TelemetryFeed> feed;
@@ -157,7 +158,13 @@ struct RthsServer::Impl final : SessionHost {
         if (!(m.duration >= 0.0 && std::isfinite(m.duration)))
             return ErrorMsg{ErrorCode::ProtocolViolation, "rths-start: the duration must be >= 0 s"};
         const double h = 1.0 / job.settings.rate;
-        pacer = opt.realTime ? std::make_unique<RealtimePacer>(clock, h, job.holdAfterMisses) : nullptr;
+        if (opt.realTime && opt.spinMicros >= h * 1e6)
+            return ErrorMsg{ErrorCode::ProtocolViolation,
+                            "rths-start: --spin-us must stay below the loop period"};
+        clock = std::make_unique<SpinningClock>(
+            monotonic, opt.spinMicros < 0.0 ? defaultSpinMargin(h)
+                                            : std::chrono::nanoseconds(std::int64_t(opt.spinMicros * 1e3)));
+        pacer = opt.realTime ? std::make_unique<RealtimePacer>(*clock, h, job.holdAfterMisses) : nullptr;
         gate = std::make_unique<MonitorGate>(pacer.get(), h);
         const long every = m.decimation > 0 ? long(m.decimation) : defaultDecimation(job.settings.rate);
         feed = std::make_unique<TelemetryFeed>(*gate, every);

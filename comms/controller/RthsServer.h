@@ -34,6 +34,7 @@ struct RthsServerOptions {
     double idleTimeout = 10.0; ///< [s] the monitor's silence before its link is dropped
     bool realTime = true;      ///< false: the fast (simulated) pace
     int realTimePriority = 0;  ///< SCHED_FIFO priority of the loop's thread (1..99); 0: normal
+    double spinMicros = -1.0;  ///< busy-wait before each release [us] (SpinningClock); 0: sleep; < 0: defaultSpinMargin
     bool quiet = false;
     bool holdOnMonitorLoss = true; ///< --monitor-loss hold (default) | continue
 };

@@ -6,6 +6,7 @@
 #include <sys/prctl.h>
 #include <time.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <sstream>
@@ -26,6 +27,27 @@ void MonotonicClock::sleepUntil(std::chrono::nanoseconds t)
     ts.tv_nsec = long(t.count() % 1000000000);
     while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
     }
+}
+
+SpinningClock::SpinningClock(PaceClock& inner, std::chrono::nanoseconds margin)
+    : m_inner(inner), m_margin(std::max(margin, std::chrono::nanoseconds(0)))
+{
+}
+
+void SpinningClock::sleepUntil(std::chrono::nanoseconds t)
+{
+    if (m_margin.count() == 0) {
+        m_inner.sleepUntil(t);
+        return;
+    }
+    m_inner.sleepUntil(t - m_margin);
+    while (m_inner.now() < t) {
+    }
+}
+
+std::chrono::nanoseconds defaultSpinMargin(double period)
+{
+    return std::chrono::nanoseconds(std::int64_t(std::min(100e-6, 0.25 * period) * 1e9));
 }
 
 RealtimePacer::RealtimePacer(PaceClock& clock, double period, int holdAfterMisses)

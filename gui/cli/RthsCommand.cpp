@@ -111,6 +111,7 @@ int RthsCommand::exec(const QStringList& arguments)
     const QCommandLineOption durationOpt(QStringLiteral("duration"), tr("Stop after T seconds."), QStringLiteral("seconds"));
     const QCommandLineOption paceOpt(QStringLiteral("pace"), tr("fast (simulated, default) or realtime (wall clock)."), QStringLiteral("pace"));
     const QCommandLineOption prioOpt(QStringLiteral("realtime-priority"), tr("Run the loop's thread under SCHED_FIFO (with --pace realtime)."));
+    const QCommandLineOption spinOpt(QStringLiteral("spin-us"), tr("With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only)."), QStringLiteral("us"));
     const QCommandLineOption compOpt(QStringLiteral("compensation"), tr("default, none, lead, polynomial, feedforward or ats."), QStringLiteral("type"));
     const QCommandLineOption perturbOpt(QStringLiteral("perturb"), tr("Draw the plant from the benchmark's distributions with this seed."), QStringLiteral("seed"));
     const QCommandLineOption seedOpt(QStringLiteral("seed"), tr("Sensor noise seed."), QStringLiteral("n"));
@@ -118,7 +119,7 @@ int RthsCommand::exec(const QStringList& arguments)
     const QCommandLineOption controllerOpt(QStringLiteral("controller"), tr("Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT."), QStringLiteral("address"));
     const QCommandLineOption tokenFileOpt(QStringLiteral("token-file"), tr("File whose first line is the controller's shared secret."), QStringLiteral("file"));
     const QCommandLineOption everyOpt(QStringLiteral("telemetry-every"), tr("With --controller: one telemetry frame every N ticks (default: about 128 per second)."), QStringLiteral("n"));
-    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt});
+    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, spinOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed->isEmpty() ? 0 : fail(*parsed);
     const QStringList pos = p.positionalArguments();
@@ -136,7 +137,7 @@ int RthsCommand::exec(const QStringList& arguments)
         return ok && std::isfinite(out);
     };
     if (p.isSet(controllerOpt))
-        for (const QCommandLineOption* o : {&gmOpt, &scaleOpt, &paceOpt, &prioOpt, &compOpt, &perturbOpt, &seedOpt, &noNoiseOpt})
+        for (const QCommandLineOption* o : {&gmOpt, &scaleOpt, &paceOpt, &prioOpt, &spinOpt, &compOpt, &perturbOpt, &seedOpt, &noNoiseOpt})
             if (p.isSet(*o))
                 return fail(tr("--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration").arg(o->names().constFirst()));
     try {
@@ -147,8 +148,11 @@ int RthsCommand::exec(const QStringList& arguments)
         if (p.isSet(noNoiseOpt))
             s.sensors.noise = false;
         double seed = double(s.sensors.seed), scale = cfg.groundMotionScale, duration = 0.0;
+        double spin = std::chrono::duration<double, std::micro>(comms::defaultSpinMargin(1.0 / s.rate)).count();
         if (!number(seedOpt, seed) || !number(scaleOpt, scale) || !number(durationOpt, duration))
             return fail(tr("--seed, --scale and --duration take numbers"));
+        if (!number(spinOpt, spin) || spin < 0.0 || spin >= 1e6 / s.rate)
+            return fail(tr("--spin-us: expected 0 up to the loop period (%1 us), got '%2'").arg(1e6 / s.rate, 0, 'f', 1).arg(p.value(spinOpt)));
         s.sensors.seed = std::uint64_t(seed);
         // The feedforward is fitted to the nominal plant (a lab knows only its model of it).
         rths::fitToNominalLoop(s);
@@ -187,7 +191,8 @@ int RthsCommand::exec(const QStringList& arguments)
         RecordWriter record((dir + QStringLiteral("/record.h5")).toStdString(), rths::rthsLayout(floors), start);
         rths::RthsRecordFeed feed(record, ag, floors);
         rths::RthsRun run;
-        comms::MonotonicClock clock;
+        comms::MonotonicClock monotonic;
+        comms::SpinningClock clock(monotonic, std::chrono::nanoseconds(std::int64_t(spin * 1e3)));
         comms::RealtimePacer pacer(clock, 1.0 / s.rate, cfg.holdAfterMisses);
         std::string priority;
         if (pace == QLatin1String("realtime")) {

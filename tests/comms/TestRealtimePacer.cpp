@@ -6,6 +6,8 @@
 
 #include <QtTest>
 
+#include <vector>
+
 using namespace hsmu;
 using namespace std::chrono;
 
@@ -44,6 +46,19 @@ private:
     comms::RealtimePacer& m_pacer;
     FakeClock& m_clock;
     long m_slowEvery;
+};
+
+// A clock whose every now() reads 1 us later (a busy-wait advances it); sleeps are recorded.
+class TickingClock final : public comms::PaceClock {
+public:
+    nanoseconds now() override { return m_now += microseconds(1); }
+    void sleepUntil(nanoseconds t) override
+    {
+        m_sleptUntil.push_back(t);
+        m_now = std::max(m_now, t);
+    }
+    std::vector<nanoseconds> m_sleptUntil;
+    nanoseconds m_now{0};
 };
 
 } // namespace
@@ -97,6 +112,28 @@ private slots:
         const nanoseconds expected = start + 999 * nanoseconds(244141) + microseconds(20);
         QVERIFY(std::abs((clock.now() - expected).count()) <= 1);
         QCOMPARE(pacer.misses(), 0L);
+    }
+
+    void theSpinningClockSleepsToTheMarginThenWaitsForTheRelease()
+    {
+        TickingClock inner;
+        comms::SpinningClock clock(inner, microseconds(60));
+        clock.sleepUntil(microseconds(1000));
+        QCOMPARE(inner.m_sleptUntil.size(), std::size_t(1));
+        QCOMPARE(inner.m_sleptUntil[0], microseconds(940)); // the release less the margin
+        QVERIFY(inner.m_now >= microseconds(1000));          // returned only at the release
+        QVERIFY(inner.m_now <= microseconds(1001));          // one now() past it at most
+        // A release already past: no sleep below the present, no wait.
+        const auto before = inner.m_now;
+        clock.sleepUntil(microseconds(500));
+        QVERIFY(inner.m_now - before <= microseconds(1));
+        // Margin 0: no busy-wait, the inner clock's sleep to the release alone.
+        TickingClock plain;
+        comms::SpinningClock sleeper(plain, nanoseconds(0));
+        sleeper.sleepUntil(microseconds(300));
+        QCOMPARE(plain.m_sleptUntil.size(), std::size_t(1));
+        QCOMPARE(plain.m_sleptUntil[0], microseconds(300));
+        QCOMPARE(plain.m_now, microseconds(300));
     }
 
     void aPacedBenchmarkRunHoldsOnItsMisses()
