@@ -102,7 +102,7 @@ IdentificationSettings withOverride(const IdentificationSettings& base,
     } else if (!method.empty()) {
         const std::string m = method == "nelder-mead" ? "nelderMead" : method;
         if (m != "ukf" && m != "nelderMead")
-            throw ConfigError("--method: expected ukf, nelder-mead or calibration, found '" +
+            throw ConfigError("--method: expected ukf, nelder-mead, calibration or all, found '" +
                               method + "'");
         section["method"] = m;
     }

@@ -265,7 +265,7 @@ void TestReplayCommand::errorsAreClear() {
                        QStringLiteral("--method"), QStringLiteral("simplex"),
                        QStringLiteral("--out"), path(m_dir, "x")});
     QCOMPARE(r.exitCode, 1);
-    QVERIFY2(r.err.contains(QStringLiteral("expected ukf, nelder-mead or calibration")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QStringLiteral("expected ukf, nelder-mead, calibration or all")), qPrintable(r.err));
 }
 
 void TestReplayCommand::labUnitsOutAndBackIn() {

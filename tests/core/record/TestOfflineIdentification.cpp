@@ -255,7 +255,7 @@ void TestOfflineIdentification::badSettingsAreClearErrors() {
         QFAIL("no error");
     } catch (const ConfigError& e) {
         QCOMPARE(std::string(e.what()),
-                 std::string("--method: expected ukf, nelder-mead or calibration, found 'simplex'"));
+                 std::string("--method: expected ukf, nelder-mead, calibration or all, found 'simplex'"));
     }
 }
 
