@@ -43,7 +43,7 @@ Alarm holdAlarm(const std::string& hold, double time, long tick)
                  operatorHold || emergency ? AlarmKind::OperatorHold
                  : deadline               ? AlarmKind::ControlFault
                                           : AlarmKind::LimitExceeded,
-                 "RTHS run held: " + hold);
+                 "RTHS run held: " + hold, "rths-held", {hold});
 }
 
 } // namespace
