@@ -1,5 +1,6 @@
 #include "core/rths/TrackingAlarms.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -15,16 +16,24 @@ std::string number(double v)
     return buf;
 }
 
-/// The level of value against (warning, critical); a raised level falls only below its own.
-int levelOf(double value, double warning, double critical)
+/// The level of value against (warning, critical), from the level held so far: a level is
+/// entered above its threshold and left only below (1 - kRearm) of it (no chatter of an index
+/// that hovers at a threshold).
+int levelOf(double value, double warning, double critical, int held)
 {
-    return value > critical ? 2 : value > warning ? 1 : 0;
+    const int entered = value > critical ? 2 : value > warning ? 1 : 0;
+    if (entered >= held)
+        return entered;
+    const double keep = 1.0 - TrackingAlarms::kRearm;
+    if (held == 2 && value > keep * critical)
+        return 2;
+    return value > keep * warning ? std::max(entered, 1) : entered;
 }
 
 void judgeOne(const char* code, const char* what, const char* unit, double value, double warning,
               double critical, int& level, const TrackingEstimate& e, std::vector<Alarm>& out)
 {
-    const int now = levelOf(value, warning, critical);
+    const int now = levelOf(value, warning, critical, level);
     if (now > level) {
         const bool crit = now == 2;
         const double limit = crit ? critical : warning;

@@ -2,9 +2,11 @@
 // TrackingAlarms: the live J1 (delay) and J2 (tracking error) of an RTHS run against the
 // operator's thresholds (docs/rths.md, "Live tracking"). Each index has a warning and a
 // critical level; an estimate past a level raises one alarm of that severity (kind
-// TrackingError, code "rths-j1" / "rths-j2", arguments value and limit) when the index rises
-// to it, once per excursion: nothing more while it stays there, and the index must fall below
-// the warning level before a warning is raised again (a critical one: below the critical level).
+// TrackingError, code "rths-j1-warning" / "-critical", "rths-j2-...", arguments value and
+// limit) when the index rises to it, once per excursion: nothing more while it stays there, and
+// it leaves a level only below (1 - kRearm) of its threshold, so an index hovering at a
+// threshold raises one alarm, not one per estimate (a warning again after the index fell below
+// 0.9 x warning; a critical one after it fell below 0.9 x critical).
 // Thresholds may change between estimates (effective at the next one).
 
 #include "core/rths/TrackingWindow.h"
@@ -27,6 +29,8 @@ std::string checkTrackingLimits(const TrackingLimits& limits);
 
 class TrackingAlarms {
 public:
+    static constexpr double kRearm = 0.1; ///< a level is left below (1 - kRearm) x its threshold [-]
+
     explicit TrackingAlarms(const TrackingLimits& limits = {});
     /// Throws std::invalid_argument when checkTrackingLimits fails (the old limits kept).
     void setLimits(const TrackingLimits& limits);

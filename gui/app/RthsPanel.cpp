@@ -89,7 +89,8 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_start = new QPushButton(this);
     m_hold = new QPushButton(this);
     m_emergency = new QPushButton(this);
-    m_emergency->setStyleSheet(QStringLiteral("QPushButton { color: white; background: #b00000; font-weight: bold; }"));
+    m_emergency->setStyleSheet(QStringLiteral("QPushButton { color: white; background: #b00000; font-weight: bold; }"
+                                              "QPushButton:disabled { color: #f0e0e0; background: #d8a8a8; }"));
     m_source->setObjectName(QStringLiteral("rthsSource"));
     m_file->setObjectName(QStringLiteral("rthsFile"));
     m_pace->setObjectName(QStringLiteral("rthsPace"));

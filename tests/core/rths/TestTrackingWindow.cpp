@@ -119,7 +119,8 @@ private slots:
     void alarmsRiseOncePerExcursion()
     {
         // J2 3, 6, 12, 12, 7, 3, 6 % against warning 5, critical 10: a warning at 6, a critical
-        // at 12, nothing while it stays or falls back to the warning band, a warning again at 6.
+        // at 12, nothing while it stays or falls back to the warning band (7 < 9: left), a
+        // warning again at 6 after 3 (< 4.5: left).
         TrackingAlarms alarms({100.0, 200.0, 5.0, 10.0});
         std::vector<std::vector<Alarm>> raised;
         for (double j2 : {3.0, 6.0, 12.0, 12.0, 7.0, 3.0, 6.0}) {
@@ -138,6 +139,28 @@ private slots:
         QCOMPARE(raised[2][0].code, std::string("rths-j2-critical"));
         QCOMPARE(raised[6][0].severity, AlarmSeverity::Warning);
         QCOMPARE(alarms.j2Level(), 1);
+    }
+
+    void anIndexHoveringAtAThresholdRaisesOneAlarm()
+    {
+        // J2 around the 10 % critical: 10.5, 9.5, 10.4, 9.1, 10.2 stay critical (left only below
+        // 9 %); 8.9 leaves it (to the warning band), 10.3 raises a second critical.
+        TrackingAlarms alarms({100.0, 200.0, 5.0, 10.0});
+        int critical = 0;
+        for (double j2 : {10.5, 9.5, 10.4, 9.1, 10.2, 8.9, 10.3}) {
+            std::vector<Alarm> out;
+            alarms.judge(at(0.0, j2), out);
+            for (const Alarm& a : out)
+                critical += a.severity == AlarmSeverity::Critical;
+            QVERIFY(out.size() <= 1);
+        }
+        QCOMPARE(critical, 2);
+        // The warning band the same way: 5.2 warns, 4.6 keeps it, 4.4 leaves it, 5.1 warns again.
+        TrackingAlarms w({100.0, 200.0, 5.0, 10.0});
+        std::vector<Alarm> out;
+        for (double j2 : {5.2, 4.6, 5.3, 4.4, 5.1})
+            w.judge(at(0.0, j2), out);
+        QCOMPARE(out.size(), std::size_t(2));
     }
 
     void aDelayStraightToCriticalRaisesOneAlarm()
