@@ -487,6 +487,10 @@
         <source>live tracking error J2 = %1 % over the critical threshold %2 %</source>
         <translation>live tracking error J2 = %1 % over the critical threshold %2 %</translation>
     </message>
+    <message>
+        <source>RTHS run not followed: %1</source>
+        <translation>RTHS run not followed: %1</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -3176,18 +3180,6 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>Cannot start the RTHS run: %1</translation>
     </message>
     <message>
-        <source>Running '%1' at %2 Hz (%3); pre-flight: %4</source>
-        <translation>Running '%1' at %2 Hz (%3); pre-flight: %4</translation>
-    </message>
-    <message>
-        <source>real time</source>
-        <translation>real time</translation>
-    </message>
-    <message>
-        <source>fast</source>
-        <translation>fast</translation>
-    </message>
-    <message>
         <source>RTHS run '%1' started</source>
         <translation>RTHS run '%1' started</translation>
     </message>
@@ -3243,6 +3235,42 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>Held after %1 ticks: %2</source>
         <translation>Held after %1 ticks: %2</translation>
     </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Controller:</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</source>
+        <translation>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</translation>
+    </message>
+    <message>
+        <source>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</source>
+        <translation>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</translation>
+    </message>
+    <message>
+        <source>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>real time; pre-flight: %1</source>
+        <translation>real time; pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>fast; pre-flight: %1</source>
+        <translation>fast; pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>on the controller %1:%2</source>
+        <translation>on the controller %1:%2</translation>
+    </message>
+    <message>
+        <source>Running '%1' at %2 Hz (%3)</source>
+        <translation>Running '%1' at %2 Hz (%3)</translation>
+    </message>
+    <message>
+        <source>The RTHS run could not be followed: %1</source>
+        <translation>The RTHS run could not be followed: %1</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3253,6 +3281,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>refused in pre-flight: %1</source>
         <translation>refused in pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>the controller's (%1:%2)</source>
+        <translation>the controller's (%1:%2)</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
+        <translation>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</translation>
     </message>
 </context>
 <context>

@@ -487,6 +487,10 @@
         <source>live tracking error J2 = %1 % over the critical threshold %2 %</source>
         <translation>error de seguimiento en vivo J2 = %1 % por encima del umbral crítico %2 %</translation>
     </message>
+    <message>
+        <source>RTHS run not followed: %1</source>
+        <translation>ensayo RTHS sin seguimiento: %1</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -3176,18 +3180,6 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>No se puede iniciar el ensayo RTHS: %1</translation>
     </message>
     <message>
-        <source>Running &apos;%1&apos; at %2 Hz (%3); pre-flight: %4</source>
-        <translation>Ejecutando &apos;%1&apos; a %2 Hz (%3); comprobación previa: %4</translation>
-    </message>
-    <message>
-        <source>real time</source>
-        <translation>tiempo real</translation>
-    </message>
-    <message>
-        <source>fast</source>
-        <translation>rápido</translation>
-    </message>
-    <message>
         <source>RTHS run &apos;%1&apos; started</source>
         <translation>ensayo RTHS &apos;%1&apos; iniciado</translation>
     </message>
@@ -3243,6 +3235,42 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>Held after %1 ticks: %2</source>
         <translation>Detenido tras %1 ciclos: %2</translation>
     </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Controlador:</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</source>
+        <translation>laboratorio virtual integrado, o tcp://HOST:PUERTO de hsmu-controller --rths</translation>
+    </message>
+    <message>
+        <source>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</source>
+        <translation>Vacío: el lazo se ejecuta en la consola. tcp://HOST:PUERTO: supervisar el lazo que ejecuta hsmu-controller --rths (su token de HSMU_CONTROLLER_TOKEN)</translation>
+    </message>
+    <message>
+        <source>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>controlador: un lazo RTHS se supervisa por tcp://HOST:PUERTO (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>real time; pre-flight: %1</source>
+        <translation>tiempo real; comprobación previa: %1</translation>
+    </message>
+    <message>
+        <source>fast; pre-flight: %1</source>
+        <translation>rápido; comprobación previa: %1</translation>
+    </message>
+    <message>
+        <source>on the controller %1:%2</source>
+        <translation>en el controlador %1:%2</translation>
+    </message>
+    <message>
+        <source>Running &apos;%1&apos; at %2 Hz (%3)</source>
+        <translation>Ejecutando &apos;%1&apos; a %2 Hz (%3)</translation>
+    </message>
+    <message>
+        <source>The RTHS run could not be followed: %1</source>
+        <translation>No se pudo seguir el ensayo RTHS: %1</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3253,6 +3281,14 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>refused in pre-flight: %1</source>
         <translation>rechazado en la comprobación previa: %1</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s (%1:%2)</source>
+        <translation>la del controlador (%1:%2)</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
+        <translation>se perdió el enlace con el controlador: %1 (el controlador detiene el lazo según su política --monitor-loss)</translation>
     </message>
 </context>
 <context>

@@ -487,6 +487,10 @@
         <source>live tracking error J2 = %1 % over the critical threshold %2 %</source>
         <translation>实时跟踪误差 J2 = %1 %，超过严重阈值 %2 %</translation>
     </message>
+    <message>
+        <source>RTHS run not followed: %1</source>
+        <translation>无法跟踪 RTHS 试验：%1</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -3173,18 +3177,6 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>无法开始 RTHS 试验：%1</translation>
     </message>
     <message>
-        <source>Running &apos;%1&apos; at %2 Hz (%3); pre-flight: %4</source>
-        <translation>正在运行 &apos;%1&apos;，%2 Hz（%3）；预检：%4</translation>
-    </message>
-    <message>
-        <source>real time</source>
-        <translation>实时</translation>
-    </message>
-    <message>
-        <source>fast</source>
-        <translation>快速</translation>
-    </message>
-    <message>
         <source>RTHS run &apos;%1&apos; started</source>
         <translation>RTHS 试验 &apos;%1&apos; 已开始</translation>
     </message>
@@ -3240,6 +3232,42 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>Held after %1 ticks: %2</source>
         <translation>%1 个周期后保持：%2</translation>
     </message>
+    <message>
+        <source>Controller:</source>
+        <translation>控制器：</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</source>
+        <translation>内置虚拟实验室，或 hsmu-controller --rths 的 tcp://主机:端口</translation>
+    </message>
+    <message>
+        <source>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</source>
+        <translation>留空：回路在控制台中运行。tcp://主机:端口：监视 hsmu-controller --rths 运行的回路（令牌取自 HSMU_CONTROLLER_TOKEN）</translation>
+    </message>
+    <message>
+        <source>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>控制器：RTHS 回路通过 tcp://主机:端口 监视（hsmu-controller --rths）</translation>
+    </message>
+    <message>
+        <source>real time; pre-flight: %1</source>
+        <translation>实时；预检：%1</translation>
+    </message>
+    <message>
+        <source>fast; pre-flight: %1</source>
+        <translation>快速；预检：%1</translation>
+    </message>
+    <message>
+        <source>on the controller %1:%2</source>
+        <translation>在控制器 %1:%2 上</translation>
+    </message>
+    <message>
+        <source>Running &apos;%1&apos; at %2 Hz (%3)</source>
+        <translation>正在运行 &apos;%1&apos;，%2 Hz（%3）</translation>
+    </message>
+    <message>
+        <source>The RTHS run could not be followed: %1</source>
+        <translation>无法跟踪该 RTHS 试验：%1</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3250,6 +3278,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>refused in pre-flight: %1</source>
         <translation>预检拒绝：%1</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s (%1:%2)</source>
+        <translation>由控制器执行（%1:%2）</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
+        <translation>与控制器的链路已断开：%1（控制器按其 --monitor-loss 策略保持回路）</translation>
     </message>
 </context>
 <context>

@@ -271,6 +271,8 @@ QString AlarmText::translate(const std::string& code, const QStringList& a) {
         return tr("identification step rejected: %1").arg(reason(a[0]));
     if (is("tracking", 2))
         return tr("actuator tracking error J2 = %1 % (delay J1 = %2 s)").arg(a[0], a[1]);
+    if (is("rths-not-followed", 1))
+        return tr("RTHS run not followed: %1").arg(reason(a[0]));
     if (is("rths-held", 1))
         return tr("RTHS run held: %1").arg(reason(a[0]));
     if (is("rths-j1-warning", 2))

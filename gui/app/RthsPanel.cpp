@@ -1,5 +1,6 @@
 #include "gui/app/RthsPanel.h"
 
+#include "comms/LinkAddress.h"
 #include "gui/app/AlarmList.h"
 #include "gui/plots/RthsPlots.h"
 
@@ -79,6 +80,11 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     form->addWidget(m_source, 0, 1);
     form->addWidget(m_file, 0, 2);
     form->addWidget(m_browse, 0, 3);
+    m_controllerLabel = new QLabel(this);
+    m_controller = new QLineEdit(this);
+    m_controller->setObjectName(QStringLiteral("rthsController"));
+    form->addWidget(m_controllerLabel, 2, 0);
+    form->addWidget(m_controller, 2, 1, 1, 3);
     form->addWidget(m_paceLabel, 1, 0);
     form->addWidget(m_pace, 1, 1);
     form->addWidget(m_durationLabel, 1, 2);
@@ -156,6 +162,7 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
         connect(b, &QDoubleSpinBox::valueChanged, this, &RthsPanel::onLimitsEdited);
     connect(m_session, &RthsSession::samples, this, &RthsPanel::onSamples);
     connect(m_session, &RthsSession::finished, this, &RthsPanel::onFinished);
+    connect(m_session, &RthsSession::failed, this, &RthsPanel::onFailed);
     setStatus([] { return tr("No RTHS run yet."); }, false);
     retranslateUi();
     showEstimate();
@@ -177,6 +184,9 @@ void RthsPanel::retranslateUi()
     m_source->setItemText(4, tr("Configuration file"));
     m_file->setPlaceholderText(tr("RTHS configuration (.json)"));
     m_browse->setToolTip(tr("Choose an RTHS configuration file"));
+    m_controllerLabel->setText(tr("Controller:"));
+    m_controller->setPlaceholderText(tr("built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths"));
+    m_controller->setToolTip(tr("Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)"));
     m_paceLabel->setText(tr("Pace:"));
     m_pace->setItemText(0, tr("Fast (simulated)"));
     m_pace->setItemText(1, tr("Real time"));
@@ -220,6 +230,7 @@ void RthsPanel::updateButtons()
     m_file->setEnabled(!going && file);
     m_browse->setEnabled(!going && file);
     m_pace->setEnabled(!going);
+    m_controller->setEnabled(!going);
     m_duration->setEnabled(!going);
 }
 
@@ -238,6 +249,16 @@ void RthsPanel::start()
         if (name.isEmpty())
             throw std::runtime_error(tr("choose an RTHS configuration file").toStdString());
         const RthsConfig cfg = loadRthsConfig(name.toStdString());
+        if (const QString address = m_controller->text().trimmed(); !address.isEmpty()) {
+            std::string error;
+            const auto a = comms::LinkAddress::parse(address.toStdString(), &error);
+            if (!a || a->kind != comms::LinkAddress::Kind::Tcp)
+                throw std::runtime_error(tr("controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)").toStdString() +
+                                         (error.empty() ? std::string() : " (" + error + ")"));
+            startRemoteRun(cfg, QString::fromStdString(a->host), a->port, qEnvironmentVariable("HSMU_CONTROLLER_TOKEN"),
+                           m_duration->value());
+            return;
+        }
         const GroundMotion ag = loadRthsGroundMotion(cfg, std::string(), cfg.groundMotionScale);
         startRun(cfg, ag, m_pace->currentIndex() == 1 ? RthsSession::Pace::RealTime : RthsSession::Pace::Fast,
                  m_duration->value());
@@ -256,24 +277,47 @@ bool RthsPanel::startRun(const RthsConfig& cfg, const GroundMotion& ag, RthsSess
         m_alarms->addMessage([error] { return tr("Cannot start the RTHS run: %1").arg(error); }, AlarmSeverity::Warning);
         return false;
     }
+    const QString pre = m_session->preflight();
+    const bool realTime = pace == RthsSession::Pace::RealTime;
+    began(QString::fromStdString(cfg.name), cfg.settings.rate,
+          realTime ? tr("real time; pre-flight: %1").arg(pre) : tr("fast; pre-flight: %1").arg(pre));
+    return true;
+}
+
+bool RthsPanel::startRemoteRun(const RthsConfig& cfg, const QString& host, quint16 port, const QString& token,
+                               double duration)
+{
+    QString error;
+    if (!m_session->startRemote(cfg, host, port, token, duration, &error)) {
+        setStatus([error] { return tr("Cannot start the RTHS run: %1").arg(error); }, true);
+        return false;
+    }
+    began(QString::fromStdString(cfg.name), cfg.settings.rate, tr("on the controller %1:%2").arg(host).arg(port));
+    return true;
+}
+
+void RthsPanel::began(const QString& name, double rate, const QString& where)
+{
     m_window = std::make_unique<rths::TrackingWindow>(m_session->samplePeriod(), windowSettings());
     m_alarmsLogic.reset();
     m_sync->clearData();
     m_history->clearData();
     m_lastTime = 0.0;
     m_lastTick = 0;
-    m_rate = cfg.settings.rate;
-    const QString name = QString::fromStdString(cfg.name), pre = m_session->preflight();
-    const double rate = cfg.settings.rate;
-    const bool realTime = pace == RthsSession::Pace::RealTime;
-    setStatus([name, rate, pre, realTime] {
-        return tr("Running '%1' at %2 Hz (%3); pre-flight: %4")
-            .arg(name).arg(rate).arg(realTime ? tr("real time") : tr("fast")).arg(pre);
-    }, false);
+    m_rate = rate;
+    setStatus([name, rate, where] { return tr("Running '%1' at %2 Hz (%3)").arg(name).arg(rate).arg(where); }, false);
     m_alarms->addMessage([name] { return tr("RTHS run '%1' started").arg(name); }, AlarmSeverity::Info);
     showEstimate();
     updateButtons();
-    return true;
+}
+
+void RthsPanel::onFailed(const QString& why)
+{
+    setStatus([why] { return tr("The RTHS run could not be followed: %1").arg(why); }, true);
+    m_alarms->addAlarm(Alarm(m_lastTime, int(m_lastTick), AlarmSeverity::Critical, AlarmKind::ControlFault,
+                             "RTHS run not followed: " + why.toStdString(), "rths-not-followed", {why.toStdString()}));
+    updateButtons();
+    emit runFinished(why);
 }
 
 void RthsPanel::hold()

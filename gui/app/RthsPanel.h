@@ -48,7 +48,12 @@ public:
     /// Start a run of cfg over ag [m/s^2] (what the Start button does after loading the chosen
     /// source); false with the reason shown (and listed as an alarm) when it cannot start.
     bool startRun(const RthsConfig& cfg, const GroundMotion& ag, RthsSession::Pace pace, double duration);
-    /// Load the chosen source (benchmark case or file) and start it.
+    /// Monitor the loop `hsmu-controller --rths` runs at host:port (the controller runs its own
+    /// copy of cfg; token: its hello's); what Start does with a tcp:// address in Controller.
+    bool startRemoteRun(const RthsConfig& cfg, const QString& host, quint16 port, const QString& token,
+                        double duration);
+    /// Load the chosen source (benchmark case or file) and start it (locally, or as the monitor
+    /// of the controller named in the Controller field; its token from HSMU_CONTROLLER_TOKEN).
     void start();
     void hold();
     void emergencyHold();
@@ -76,6 +81,9 @@ private:
     void onSamples(const std::vector<comms::TelemetrySample>& batch);
     void onFinished(const QString& hold, const rths::BenchmarkCriteria& criteria, long ticks);
     void onLimitsEdited();
+    void onFailed(const QString& why);
+    /// Clear the plots and estimates of the last run; the status says what runs.
+    void began(const QString& name, double rate, const QString& where);
     void showEstimate();
     void setStatus(std::function<QString()> render, bool bad);
     void updateButtons();
@@ -93,6 +101,8 @@ private:
     QComboBox* m_source = nullptr;
     QLineEdit* m_file = nullptr;
     QToolButton* m_browse = nullptr;
+    QLabel* m_controllerLabel = nullptr;
+    QLineEdit* m_controller = nullptr;
     QLabel* m_paceLabel = nullptr;
     QComboBox* m_pace = nullptr;
     QLabel* m_durationLabel = nullptr;

@@ -12,12 +12,14 @@
 
 #include "comms/rths/RthsMonitor.h"
 #include "core/config/RthsConfig.h"
+#include "gui/cli/RthsLink.h"
 
 #include <QObject>
 #include <QTimer>
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -36,6 +38,12 @@ public:
     /// [m/s^2]; duration > 0 stops after that many seconds. False with *error (pre-flight's
     /// refusal, a run already going) and nothing started.
     bool start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace, double duration, QString* error);
+    /// Monitor the loop `hsmu-controller --rths` runs at host:port instead (RthsLink, the
+    /// protocol of `hsmu rths --controller`; token: the hello's): the controller runs its own copy
+    /// of the configuration at its own pace; cfg gives the rate, so the samples' spacing. The
+    /// connection is made on the session's thread: a failure comes as failed().
+    bool startRemote(const RthsConfig& cfg, const QString& host, quint16 port, const QString& token,
+                     double duration, QString* error);
     /// From start() until finished() was emitted (GUI thread's view: the loop may have ended).
     bool running() const { return m_active; }
     /// The samples' spacing: decimation / rate [s].
@@ -50,6 +58,8 @@ signals:
     void samples(const std::vector<hsmu::comms::TelemetrySample>& batch);
     /// The run ended: hold is why it stopped early ("" when it ran out), with its J1..J9.
     void finished(const QString& hold, const hsmu::rths::BenchmarkCriteria& criteria, long ticks);
+    /// A monitored run could not be followed (refused, link lost): why.
+    void failed(const QString& why);
 
 private:
     class Backpressure;
@@ -70,6 +80,12 @@ private:
     double m_samplePeriod = 0.0;
     QString m_preflight;
     std::vector<comms::TelemetrySample> m_batch;
+    // Monitoring a controller's loop (startRemote): the link, and the frames of its thread.
+    std::unique_ptr<RthsLink> m_link;
+    std::mutex m_remoteMutex;
+    std::vector<comms::TelemetrySample> m_remoteSamples; // guarded by m_remoteMutex
+    std::string m_failure;                               // written by the thread until m_done
+    long m_ticks = 0;                                    // written by the thread until m_done
 };
 
 } // namespace hsmu::gui

@@ -4,7 +4,10 @@
 // delay / amplitude plot with one estimate every 0.1 s once the 1 s window is full, and a
 // threshold set low raises its alarm in the alarm list; Hold and Emergency hold hold the running
 // loop; a stroke limit the run exceeds holds it with the channel named in the panel and a
-// critical alarm.
+// critical alarm. As the monitor of a real `hsmu-controller --rths` (RthsLink, the protocol of
+// `hsmu rths --controller`): every telemetry frame reaches the plot and the end's J1 equals the
+// local runRths' bit for bit; Hold holds the controller's loop.
+#include "../comms/ControllerProcess.h"
 #include "core/config/RthsConfig.h"
 #include "core/rths/RthsBenchmark.h"
 #include "gui/app/AlarmList.h"
@@ -151,6 +154,52 @@ private slots:
         QVERIFY2(hold.contains(QStringLiteral("stroke")) && hold.contains(QStringLiteral("tick")), qPrintable(hold));
         QVERIFY(panel.statusText().contains(hold));
         QCOMPARE(rows(alarms, AlarmKind::LimitExceeded, AlarmSeverity::Critical), 1);
+    }
+
+    void monitorsTheControllersLoop()
+    {
+        QTemporaryDir dir;
+        const RthsConfig cfg = sineConfig(dir.path(), 3.0);
+        const QString path = dir.path() + QStringLiteral("/rths.json");
+        ControllerProcess ctl({QStringLiteral("--rths"), path, QStringLiteral("--pace"), QStringLiteral("fast")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        AlarmList alarms;
+        RthsPanel panel(&alarms);
+        QSignalSpy ended(&panel, &RthsPanel::runFinished);
+        QSignalSpy criteria(panel.session(), &RthsSession::finished);
+        QVERIFY(panel.startRemoteRun(cfg, QStringLiteral("127.0.0.1"), ctl.port(), QString(), 0.0));
+        QVERIFY(ended.wait(60000));
+        QCOMPARE(ended.at(0).at(0).toString(), QString());
+        QCOMPARE(criteria.size(), 1);
+        QCOMPARE(criteria.at(0).at(2).value<long>(), 3073L);
+        // One frame per tick at 1024 Hz (decimation 1), none dropped: all on the plot.
+        QCOMPARE(panel.synchronizationPlot()->points(), 3073);
+        QVERIFY(panel.historyPlot()->points() > 0);
+        rths::RthsSettings s = cfg.settings;
+        rths::fitToNominalLoop(s);
+        const rths::RthsRun local = rths::runRths(cfg.partition(), motionOf(cfg), s);
+        QVERIFY(criteria.at(0).at(1).value<rths::BenchmarkCriteria>().j[0] == local.criteria.j[0]);
+    }
+
+    void holdsTheControllersLoop()
+    {
+        QTemporaryDir dir;
+        const RthsConfig cfg = sineConfig(dir.path(), 30.0);
+        const QString path = dir.path() + QStringLiteral("/rths.json");
+        ControllerProcess ctl({QStringLiteral("--rths"), path, QStringLiteral("--pace"), QStringLiteral("realtime")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        AlarmList alarms;
+        RthsPanel panel(&alarms);
+        QSignalSpy batches(panel.session(), &RthsSession::samples);
+        QSignalSpy ended(&panel, &RthsPanel::runFinished);
+        QVERIFY(panel.startRemoteRun(cfg, QStringLiteral("127.0.0.1"), ctl.port(), QString(), 0.0));
+        QVERIFY(batches.wait(60000));
+        QTest::mouseClick(panel.findChild<QPushButton*>(QStringLiteral("rthsHold")), Qt::LeftButton);
+        QVERIFY(ended.wait(60000));
+        const QString hold = ended.at(0).at(0).toString();
+        QVERIFY2(hold.startsWith(QStringLiteral("console hold (operator at the console) before tick")), qPrintable(hold));
+        QVERIFY(panel.synchronizationPlot()->points() < 30 * 1024);
+        QVERIFY(panel.statusText().contains(hold));
     }
 
     void badInputIsRefusedWithAReason()
