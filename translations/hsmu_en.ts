@@ -467,6 +467,30 @@
         <source>the record holds no step</source>
         <translation>the record holds no step</translation>
     </message>
+    <message>
+        <source>RTHS run held: %1</source>
+        <translation>RTHS run held: %1</translation>
+    </message>
+    <message>
+        <source>live delay J1 = %1 ms over the warning threshold %2 ms</source>
+        <translation>live delay J1 = %1 ms over the warning threshold %2 ms</translation>
+    </message>
+    <message>
+        <source>live delay J1 = %1 ms over the critical threshold %2 ms</source>
+        <translation>live delay J1 = %1 ms over the critical threshold %2 ms</translation>
+    </message>
+    <message>
+        <source>live tracking error J2 = %1 % over the warning threshold %2 %</source>
+        <translation>live tracking error J2 = %1 % over the warning threshold %2 %</translation>
+    </message>
+    <message>
+        <source>live tracking error J2 = %1 % over the critical threshold %2 %</source>
+        <translation>live tracking error J2 = %1 % over the critical threshold %2 %</translation>
+    </message>
+    <message>
+        <source>RTHS run not followed: %1</source>
+        <translation>RTHS run not followed: %1</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -652,8 +676,8 @@
 <context>
     <name>ConsoleCommand</name>
     <message>
-        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
-        <translation>The record&apos;s own sample step [s] (a one-column file of values needs it).</translation>
+        <source>The record's own sample step [s] (a one-column file of values needs it).</source>
+        <translation>The record's own sample step [s] (a one-column file of values needs it).</translation>
     </message>
     <message>
         <source>Load a preset or configuration and start it.</source>
@@ -808,6 +832,53 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>MethodComparisonTable</name>
+    <message>
+        <source>Method comparison on %1: %2 samples</source>
+        <translation>Method comparison on %1: %2 samples</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>method</translation>
+    </message>
+    <message>
+        <source>NRMSE [%]</source>
+        <translation>NRMSE [%]</translation>
+    </message>
+    <message>
+        <source>CPU [s]</source>
+        <translation>CPU [s]</translation>
+    </message>
+    <message>
+        <source>on bounds</source>
+        <translation>on bounds</translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation>rejected</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>verdict</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
+        <translation>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  verdict: %1</translation>
+    </message>
+    <message>
+        <source>  outputs: %1 (comparison.csv, summary.json; each method's own files in calibration/, ukf/, nelder-mead/)</source>
+        <translation>  outputs: %1 (comparison.csv, summary.json; each method's own files in calibration/, ukf/, nelder-mead/)</translation>
+    </message>
+</context>
+<context>
     <name>OperatorEvent</name>
     <message>
         <source>pre-flight confirmed by the operator (zero offsets)</source>
@@ -877,12 +948,28 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>note recorded: %1</source>
         <translation>note recorded: %1</translation>
     </message>
+    <message>
+        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
+        <translation>%1 (%L2 committed steps, last deformation %3 %4)</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
+        <translation>specimen loaded by an earlier test: %1; the operator continues on it</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
+        <translation>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
+        <translation>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</translation>
+    </message>
 </context>
 <context>
     <name>OverrideOptions</name>
     <message>
-        <source>The record&apos;s own sample step [s] (a one-column file of values needs it).</source>
-        <translation>The record&apos;s own sample step [s] (a one-column file of values needs it).</translation>
+        <source>The record's own sample step [s] (a one-column file of values needs it).</source>
+        <translation>The record's own sample step [s] (a one-column file of values needs it).</translation>
     </message>
     <message>
         <source>Ground-motion record file.</source>
@@ -1237,6 +1324,217 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--screenshot-after: expected a number of seconds</source>
         <translation>--screenshot-after: expected a number of seconds</translation>
+    </message>
+</context>
+<context>
+    <name>RthsCommand</name>
+    <message>
+        <source>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</source>
+        <translation>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>The subcommand.</translation>
+    </message>
+    <message>
+        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
+        <translation>A configuration file or rths-benchmark-case-1 .. -4.</translation>
+    </message>
+    <message>
+        <source>Output folder.</source>
+        <translation>Output folder.</translation>
+    </message>
+    <message>
+        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
+        <translation>Ground-motion record (m/s^2 unless the configuration says).</translation>
+    </message>
+    <message>
+        <source>Scale of the record.</source>
+        <translation>Scale of the record.</translation>
+    </message>
+    <message>
+        <source>Stop after T seconds.</source>
+        <translation>Stop after T seconds.</translation>
+    </message>
+    <message>
+        <source>fast (simulated, default) or realtime (wall clock).</source>
+        <translation>fast (simulated, default) or realtime (wall clock).</translation>
+    </message>
+    <message>
+        <source>Run the loop's thread under SCHED_FIFO (with --pace realtime).</source>
+        <translation>Run the loop's thread under SCHED_FIFO (with --pace realtime).</translation>
+    </message>
+    <message>
+        <source>default, none, lead, polynomial, feedforward or ats.</source>
+        <translation>default, none, lead, polynomial, feedforward or ats.</translation>
+    </message>
+    <message>
+        <source>Draw the plant from the benchmark's distributions with this seed.</source>
+        <translation>Draw the plant from the benchmark's distributions with this seed.</translation>
+    </message>
+    <message>
+        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
+        <translation>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</translation>
+    </message>
+    <message>
+        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
+        <translation>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>Sensor noise seed.</source>
+        <translation>Sensor noise seed.</translation>
+    </message>
+    <message>
+        <source>Sensors without noise.</source>
+        <translation>Sensors without noise.</translation>
+    </message>
+    <message>
+        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
+        <translation>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>missing --out DIR</translation>
+    </message>
+    <message>
+        <source>--pace: expected fast or realtime, got '%1'</source>
+        <translation>--pace: expected fast or realtime, got '%1'</translation>
+    </message>
+    <message>
+        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got '%1'</source>
+        <translation>--compensation: expected default, none, lead, polynomial, feedforward or ats, got '%1'</translation>
+    </message>
+    <message>
+        <source>--seed, --scale and --duration take numbers</source>
+        <translation>--seed, --scale and --duration take numbers</translation>
+    </message>
+    <message>
+        <source>--perturb takes a seed</source>
+        <translation>--perturb takes a seed</translation>
+    </message>
+    <message>
+        <source>no ground motion: give --ground-motion FILE</source>
+        <translation>no ground motion: give --ground-motion FILE</translation>
+    </message>
+    <message>
+        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
+        <translation>%1: the ground-motion record does not exist (give --ground-motion FILE)</translation>
+    </message>
+    <message>
+        <source>%1: %2 Hz loop, compensation %3%4</source>
+        <translation>%1: %2 Hz loop, compensation %3%4</translation>
+    </message>
+    <message>
+        <source> + phase lead</source>
+        <translation> + phase lead</translation>
+    </message>
+    <message>
+        <source>pre-flight: %1</source>
+        <translation>pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>refused in pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output folder</source>
+        <translation>%1: cannot create the output folder</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
+        <translation>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</translation>
+    </message>
+    <message>
+        <source>%1 ticks (%2 s); %3</source>
+        <translation>%1 ticks (%2 s); %3</translation>
+    </message>
+    <message>
+        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
+        <translation>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late)</source>
+        <translation>deadline misses: %1 (worst %2 us late)</translation>
+    </message>
+    <message>
+        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
+        <translation>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</translation>
+    </message>
+    <message>
+        <source>hsmu rths: %1</source>
+        <translation>hsmu rths: %1</translation>
+    </message>
+    <message>
+        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
+        <translation>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>File whose first line is the controller's shared secret.</source>
+        <translation>File whose first line is the controller's shared secret.</translation>
+    </message>
+    <message>
+        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
+        <translation>With --controller: one telemetry frame every N ticks (default: about 128 per second).</translation>
+    </message>
+    <message>
+        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
+        <translation>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller: %1</translation>
+    </message>
+    <message>
+        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file: %1</translation>
+    </message>
+    <message>
+        <source>--telemetry-every: expected a whole number &gt;= 1, got '%1'</source>
+        <translation>--telemetry-every: expected a whole number &gt;= 1, got '%1'</translation>
+    </message>
+    <message>
+        <source>%1/telemetry.csv: cannot be written</source>
+        <translation>%1/telemetry.csv: cannot be written</translation>
+    </message>
+    <message>
+        <source>cannot reach the controller %1:%2: %3</source>
+        <translation>cannot reach the controller %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the controller refused the monitor: %1</source>
+        <translation>the controller refused the monitor: %1</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>controller: %1</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
+        <translation>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</translation>
+    </message>
+    <message>
+        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
+        <translation>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</translation>
+    </message>
+    <message>
+        <source>the controller: %1</source>
+        <translation>the controller: %1</translation>
+    </message>
+    <message>
+        <source>%1 ticks on the controller; %2</source>
+        <translation>%1 ticks on the controller; %2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
+        <translation>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</translation>
+    </message>
+    <message>
+        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
+        <translation>outputs: %1/telemetry.csv, %1/summary.json</translation>
     </message>
 </context>
 <context>
@@ -1890,8 +2188,8 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>hsmu::gui::MainWindow</name>
     <message>
-        <source>Enter the record&apos;s sample step below the file.</source>
-        <translation>Enter the record&apos;s sample step below the file.</translation>
+        <source>Enter the record's sample step below the file.</source>
+        <translation>Enter the record's sample step below the file.</translation>
     </message>
     <message>
         <source>HSMU Console</source>
@@ -2143,6 +2441,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</source>
         <translation>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</translation>
     </message>
+    <message>
+        <source>asking the controller for a fresh specimen...</source>
+        <translation>asking the controller for a fresh specimen...</translation>
+    </message>
+    <message>
+        <source>Real-time hybrid simulation</source>
+        <translation>Real-time hybrid simulation</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -2319,6 +2625,17 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     </message>
 </context>
 <context>
+    <name>hsmu::gui::PlotElementPicker</name>
+    <message>
+        <source>Element:</source>
+        <translation>Element:</translation>
+    </message>
+    <message>
+        <source>The element this plot shows</source>
+        <translation>The element this plot shows</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::PlotTools</name>
     <message>
         <source>x = %1, y = %2</source>
@@ -2478,6 +2795,46 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>alpha-OS</source>
         <translation>alpha-OS</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>not measured</translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
+        <translation>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</translation>
+    </message>
+    <message>
+        <source>Specimen loaded by an earlier test</source>
+        <translation>Specimen loaded by an earlier test</translation>
+    </message>
+    <message>
+        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
+        <translation>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</translation>
+    </message>
+    <message>
+        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
+        <translation>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</translation>
+    </message>
+    <message>
+        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
+        <translation>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</translation>
+    </message>
+    <message>
+        <source>Continue on the loaded specimen</source>
+        <translation>Continue on the loaded specimen</translation>
+    </message>
+    <message>
+        <source>Fresh specimen</source>
+        <translation>Fresh specimen</translation>
+    </message>
+    <message>
+        <source>Reset the specimen</source>
+        <translation>Reset the specimen</translation>
+    </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</translation>
     </message>
 </context>
 <context>
@@ -2729,6 +3086,220 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     </message>
 </context>
 <context>
+    <name>hsmu::gui::RthsPanel</name>
+    <message>
+        <source>No RTHS run yet.</source>
+        <translation>No RTHS run yet.</translation>
+    </message>
+    <message>
+        <source>Run:</source>
+        <translation>Run:</translation>
+    </message>
+    <message>
+        <source>Benchmark case %1</source>
+        <translation>Benchmark case %1</translation>
+    </message>
+    <message>
+        <source>Configuration file</source>
+        <translation>Configuration file</translation>
+    </message>
+    <message>
+        <source>RTHS configuration (.json)</source>
+        <translation>RTHS configuration (.json)</translation>
+    </message>
+    <message>
+        <source>Choose an RTHS configuration file</source>
+        <translation>Choose an RTHS configuration file</translation>
+    </message>
+    <message>
+        <source>Pace:</source>
+        <translation>Pace:</translation>
+    </message>
+    <message>
+        <source>Fast (simulated)</source>
+        <translation>Fast (simulated)</translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation>Real time</translation>
+    </message>
+    <message>
+        <source>Duration:</source>
+        <translation>Duration:</translation>
+    </message>
+    <message>
+        <source>whole record</source>
+        <translation>whole record</translation>
+    </message>
+    <message>
+        <source>Stop the run after this many seconds of test time (0: the whole record)</source>
+        <translation>Stop the run after this many seconds of test time (0: the whole record)</translation>
+    </message>
+    <message>
+        <source>Start RTHS</source>
+        <translation>Start RTHS</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Hold</translation>
+    </message>
+    <message>
+        <source>Hold the loop before its next tick (a held RTHS run restarts from rest)</source>
+        <translation>Hold the loop before its next tick (a held RTHS run restarts from rest)</translation>
+    </message>
+    <message>
+        <source>Emergency hold</source>
+        <translation>Emergency hold</translation>
+    </message>
+    <message>
+        <source>Live tracking</source>
+        <translation>Live tracking</translation>
+    </message>
+    <message>
+        <source>Warning above</source>
+        <translation>Warning above</translation>
+    </message>
+    <message>
+        <source>Critical above</source>
+        <translation>Critical above</translation>
+    </message>
+    <message>
+        <source>J1 delay</source>
+        <translation>J1 delay</translation>
+    </message>
+    <message>
+        <source>J2 tracking error</source>
+        <translation>J2 tracking error</translation>
+    </message>
+    <message>
+        <source>RTHS configuration</source>
+        <translation>RTHS configuration</translation>
+    </message>
+    <message>
+        <source>Configuration (*.json)</source>
+        <translation>Configuration (*.json)</translation>
+    </message>
+    <message>
+        <source>choose an RTHS configuration file</source>
+        <translation>choose an RTHS configuration file</translation>
+    </message>
+    <message>
+        <source>Cannot start the RTHS run: %1</source>
+        <translation>Cannot start the RTHS run: %1</translation>
+    </message>
+    <message>
+        <source>RTHS run '%1' started</source>
+        <translation>RTHS run '%1' started</translation>
+    </message>
+    <message>
+        <source>RTHS hold</source>
+        <translation>RTHS hold</translation>
+    </message>
+    <message>
+        <source>RTHS emergency hold</source>
+        <translation>RTHS emergency hold</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>Not applied: %1</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>-- ms</source>
+        <translation>-- ms</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>-- %</source>
+        <translation>-- %</translation>
+    </message>
+    <message>
+        <source>Amplitude error: %1 %</source>
+        <translation>Amplitude error: %1 %</translation>
+    </message>
+    <message>
+        <source>Amplitude error: -- %</source>
+        <translation>Amplitude error: -- %</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>Finished: %1 ticks (%2 s); whole run J1 %3 ms, J2 %4 %</source>
+        <translation>Finished: %1 ticks (%2 s); whole run J1 %3 ms, J2 %4 %</translation>
+    </message>
+    <message>
+        <source>RTHS run finished: %1 ticks</source>
+        <translation>RTHS run finished: %1 ticks</translation>
+    </message>
+    <message>
+        <source>Held after %1 ticks: %2</source>
+        <translation>Held after %1 ticks: %2</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Controller:</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</source>
+        <translation>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</translation>
+    </message>
+    <message>
+        <source>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</source>
+        <translation>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</translation>
+    </message>
+    <message>
+        <source>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>real time; pre-flight: %1</source>
+        <translation>real time; pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>fast; pre-flight: %1</source>
+        <translation>fast; pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>on the controller %1:%2</source>
+        <translation>on the controller %1:%2</translation>
+    </message>
+    <message>
+        <source>Running '%1' at %2 Hz (%3)</source>
+        <translation>Running '%1' at %2 Hz (%3)</translation>
+    </message>
+    <message>
+        <source>The RTHS run could not be followed: %1</source>
+        <translation>The RTHS run could not be followed: %1</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>an RTHS run is already going</source>
+        <translation>an RTHS run is already going</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>refused in pre-flight: %1</translation>
+    </message>
+    <message>
+        <source>the controller's (%1:%2)</source>
+        <translation>the controller's (%1:%2)</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
+        <translation>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::SettingsDialog</name>
     <message>
         <source>Settings</source>
@@ -2782,12 +3353,12 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::SetupPanel</name>
     <message>
-        <source>Record&apos;s sample step [s]:</source>
-        <translation>Record&apos;s sample step [s]:</translation>
+        <source>Record's sample step [s]:</source>
+        <translation>Record's sample step [s]:</translation>
     </message>
     <message>
-        <source>The time between the record&apos;s samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</source>
-        <translation>The time between the record&apos;s samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</translation>
+        <source>The time between the record's samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</source>
+        <translation>The time between the record's samples. A file of acceleration values only (one column) needs it; an AT2 header or a time column gives its own. Not the integration step dt.</translation>
     </message>
     <message>
         <source>from the file</source>
@@ -3071,6 +3642,25 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     </message>
 </context>
 <context>
+    <name>hsmu::gui::SynchronizationPlot</name>
+    <message>
+        <source>Synchronization: measured against desired</source>
+        <translation>Synchronization: measured against desired</translation>
+    </message>
+    <message>
+        <source>desired displacement y [mm]</source>
+        <translation>desired displacement y [mm]</translation>
+    </message>
+    <message>
+        <source>measured displacement xm [mm]</source>
+        <translation>measured displacement xm [mm]</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>measured</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::TestStatusBar</name>
     <message>
         <source>t = %1 s</source>
@@ -3163,350 +3753,28 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>update #%1 is no longer pending: #%2 replaced it</source>
         <translation>update #%1 is no longer pending: #%2 replaced it</translation>
     </message>
-</context>
-<context>
-    <name>RthsCommand</name>
-    <message>
-        <source>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</source>
-        <translation>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</translation>
-    </message>
-    <message>
-        <source>The subcommand.</source>
-        <translation>The subcommand.</translation>
-    </message>
-    <message>
-        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
-        <translation>A configuration file or rths-benchmark-case-1 .. -4.</translation>
-    </message>
-    <message>
-        <source>Output folder.</source>
-        <translation>Output folder.</translation>
-    </message>
-    <message>
-        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
-        <translation>Ground-motion record (m/s^2 unless the configuration says).</translation>
-    </message>
-    <message>
-        <source>Scale of the record.</source>
-        <translation>Scale of the record.</translation>
-    </message>
-    <message>
-        <source>Stop after T seconds.</source>
-        <translation>Stop after T seconds.</translation>
-    </message>
-    <message>
-        <source>fast (simulated, default) or realtime (wall clock).</source>
-        <translation>fast (simulated, default) or realtime (wall clock).</translation>
-    </message>
-    <message>
-        <source>Run the loop's thread under SCHED_FIFO (with --pace realtime).</source>
-        <translation>Run the loop's thread under SCHED_FIFO (with --pace realtime).</translation>
-    </message>
-    <message>
-        <source>default, none, lead, polynomial, feedforward or ats.</source>
-        <translation>default, none, lead, polynomial, feedforward or ats.</translation>
-    </message>
-    <message>
-        <source>Draw the plant from the benchmark's distributions with this seed.</source>
-        <translation>Draw the plant from the benchmark's distributions with this seed.</translation>
-    </message>
-    <message>
-        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
-        <translation>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</translation>
-    </message>
-    <message>
-        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
-        <translation>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</translation>
-    </message>
-    <message>
-        <source>Sensor noise seed.</source>
-        <translation>Sensor noise seed.</translation>
-    </message>
-    <message>
-        <source>Sensors without noise.</source>
-        <translation>Sensors without noise.</translation>
-    </message>
-    <message>
-        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
-        <translation>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</translation>
-    </message>
-    <message>
-        <source>missing --out DIR</source>
-        <translation>missing --out DIR</translation>
-    </message>
-    <message>
-        <source>--pace: expected fast or realtime, got '%1'</source>
-        <translation>--pace: expected fast or realtime, got '%1'</translation>
-    </message>
-    <message>
-        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got '%1'</source>
-        <translation>--compensation: expected default, none, lead, polynomial, feedforward or ats, got '%1'</translation>
-    </message>
-    <message>
-        <source>--seed, --scale and --duration take numbers</source>
-        <translation>--seed, --scale and --duration take numbers</translation>
-    </message>
-    <message>
-        <source>--perturb takes a seed</source>
-        <translation>--perturb takes a seed</translation>
-    </message>
-    <message>
-        <source>no ground motion: give --ground-motion FILE</source>
-        <translation>no ground motion: give --ground-motion FILE</translation>
-    </message>
-    <message>
-        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
-        <translation>%1: the ground-motion record does not exist (give --ground-motion FILE)</translation>
-    </message>
-    <message>
-        <source>%1: %2 Hz loop, compensation %3%4</source>
-        <translation>%1: %2 Hz loop, compensation %3%4</translation>
-    </message>
-    <message>
-        <source> + phase lead</source>
-        <translation> + phase lead</translation>
-    </message>
-    <message>
-        <source>pre-flight: %1</source>
-        <translation>pre-flight: %1</translation>
-    </message>
-    <message>
-        <source>refused in pre-flight: %1</source>
-        <translation>refused in pre-flight: %1</translation>
-    </message>
-    <message>
-        <source>%1: cannot create the output folder</source>
-        <translation>%1: cannot create the output folder</translation>
-    </message>
-    <message>
-        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
-        <translation>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</translation>
-    </message>
-    <message>
-        <source>%1 ticks (%2 s); %3</source>
-        <translation>%1 ticks (%2 s); %3</translation>
-    </message>
-    <message>
-        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
-        <translation>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</translation>
-    </message>
-    <message>
-        <source>deadline misses: %1 (worst %2 us late)</source>
-        <translation>deadline misses: %1 (worst %2 us late)</translation>
-    </message>
-    <message>
-        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
-        <translation>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</translation>
-    </message>
-    <message>
-        <source>hsmu rths: %1</source>
-        <translation>hsmu rths: %1</translation>
-    </message>
-    <message>
-        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
-        <translation>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</translation>
-    </message>
-    <message>
-        <source>File whose first line is the controller&apos;s shared secret.</source>
-        <translation>File whose first line is the controller&apos;s shared secret.</translation>
-    </message>
-    <message>
-        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
-        <translation>With --controller: one telemetry frame every N ticks (default: about 128 per second).</translation>
-    </message>
-    <message>
-        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
-        <translation>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</translation>
-    </message>
-    <message>
-        <source>--controller: %1</source>
-        <translation>--controller: %1</translation>
-    </message>
-    <message>
-        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
-        <translation>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</translation>
-    </message>
-    <message>
-        <source>--token-file: %1</source>
-        <translation>--token-file: %1</translation>
-    </message>
-    <message>
-        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
-        <translation>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>%1/telemetry.csv: cannot be written</source>
-        <translation>%1/telemetry.csv: cannot be written</translation>
-    </message>
-    <message>
-        <source>cannot reach the controller %1:%2: %3</source>
-        <translation>cannot reach the controller %1:%2: %3</translation>
-    </message>
-    <message>
-        <source>the controller refused the monitor: %1</source>
-        <translation>the controller refused the monitor: %1</translation>
-    </message>
-    <message>
-        <source>controller: %1</source>
-        <translation>controller: %1</translation>
-    </message>
-    <message>
-        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
-        <translation>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</translation>
-    </message>
-    <message>
-        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
-        <translation>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</translation>
-    </message>
-    <message>
-        <source>the controller: %1</source>
-        <translation>the controller: %1</translation>
-    </message>
-    <message>
-        <source>%1 ticks on the controller; %2</source>
-        <translation>%1 ticks on the controller; %2</translation>
-    </message>
-    <message>
-        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
-        <translation>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</translation>
-    </message>
-    <message>
-        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
-        <translation>outputs: %1/telemetry.csv, %1/summary.json</translation>
-    </message>
-</context>
-<context>
-    <name>MethodComparisonTable</name>
-    <message>
-        <source>Method comparison on %1: %2 samples</source>
-        <translation>Method comparison on %1: %2 samples</translation>
-    </message>
-    <message>
-        <source>method</source>
-        <translation>method</translation>
-    </message>
-    <message>
-        <source>NRMSE [%]</source>
-        <translation>NRMSE [%]</translation>
-    </message>
-    <message>
-        <source>CPU [s]</source>
-        <translation>CPU [s]</translation>
-    </message>
-    <message>
-        <source>on bounds</source>
-        <translation>on bounds</translation>
-    </message>
-    <message>
-        <source>rejected</source>
-        <translation>rejected</translation>
-    </message>
-    <message>
-        <source>verdict</source>
-        <translation>verdict</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>none</translation>
-    </message>
-    <message>
-        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
-        <translation>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</translation>
-    </message>
-    <message>
-        <source>  verdict: %1</source>
-        <translation>  verdict: %1</translation>
-    </message>
-    <message>
-        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
-        <translation>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::PreflightDialog</name>
-    <message>
-        <source>not measured</source>
-        <translation>not measured</translation>
-    </message>
-    <message>
-        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
-        <translation>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</translation>
-    </message>
-    <message>
-        <source>Specimen loaded by an earlier test</source>
-        <translation>Specimen loaded by an earlier test</translation>
-    </message>
-    <message>
-        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
-        <translation>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</translation>
-    </message>
-    <message>
-        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
-        <translation>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</translation>
-    </message>
-    <message>
-        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
-        <translation>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</translation>
-    </message>
-    <message>
-        <source>Continue on the loaded specimen</source>
-        <translation>Continue on the loaded specimen</translation>
-    </message>
-    <message>
-        <source>Fresh specimen</source>
-        <translation>Fresh specimen</translation>
-    </message>
-    <message>
-        <source>Reset the specimen</source>
-        <translation>Reset the specimen</translation>
-    </message>
-    <message>
-        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
-        <translation>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::MainWindow</name>
-    <message>
-        <source>asking the controller for a fresh specimen...</source>
-        <translation>asking the controller for a fresh specimen...</translation>
-    </message>
-</context>
-<context>
-    <name>OperatorEvent</name>
-    <message>
-        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
-        <translation>%1 (%L2 committed steps, last deformation %3 %4)</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
-        <translation>specimen loaded by an earlier test: %1; the operator continues on it</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
-        <translation>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
-        <translation>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::TestWorker</name>
     <message>
         <source>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</source>
         <translation>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</translation>
     </message>
 </context>
 <context>
-    <name>hsmu::gui::PlotElementPicker</name>
+    <name>hsmu::gui::TrackingHistoryPlot</name>
     <message>
-        <source>Element:</source>
-        <translation>Element:</translation>
+        <source>Delay and amplitude error (moving window)</source>
+        <translation>Delay and amplitude error (moving window)</translation>
     </message>
     <message>
-        <source>The element this plot shows</source>
-        <translation>The element this plot shows</translation>
+        <source>time [s]</source>
+        <translation>time [s]</translation>
+    </message>
+    <message>
+        <source>delay [ms]</source>
+        <translation>delay [ms]</translation>
+    </message>
+    <message>
+        <source>amplitude error [%]</source>
+        <translation>amplitude error [%]</translation>
     </message>
 </context>
 </TS>

@@ -467,6 +467,30 @@
         <source>the record holds no step</source>
         <translation>el registro no contiene ningún paso</translation>
     </message>
+    <message>
+        <source>RTHS run held: %1</source>
+        <translation>ensayo RTHS detenido: %1</translation>
+    </message>
+    <message>
+        <source>live delay J1 = %1 ms over the warning threshold %2 ms</source>
+        <translation>retardo en vivo J1 = %1 ms por encima del umbral de aviso %2 ms</translation>
+    </message>
+    <message>
+        <source>live delay J1 = %1 ms over the critical threshold %2 ms</source>
+        <translation>retardo en vivo J1 = %1 ms por encima del umbral crítico %2 ms</translation>
+    </message>
+    <message>
+        <source>live tracking error J2 = %1 % over the warning threshold %2 %</source>
+        <translation>error de seguimiento en vivo J2 = %1 % por encima del umbral de aviso %2 %</translation>
+    </message>
+    <message>
+        <source>live tracking error J2 = %1 % over the critical threshold %2 %</source>
+        <translation>error de seguimiento en vivo J2 = %1 % por encima del umbral crítico %2 %</translation>
+    </message>
+    <message>
+        <source>RTHS run not followed: %1</source>
+        <translation>ensayo RTHS sin seguimiento: %1</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -808,6 +832,53 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>MethodComparisonTable</name>
+    <message>
+        <source>Method comparison on %1: %2 samples</source>
+        <translation>Comparación de métodos en %1: %2 muestras</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>método</translation>
+    </message>
+    <message>
+        <source>NRMSE [%]</source>
+        <translation>NRMSE [%]</translation>
+    </message>
+    <message>
+        <source>CPU [s]</source>
+        <translation>CPU [s]</translation>
+    </message>
+    <message>
+        <source>on bounds</source>
+        <translation>en los límites</translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation>rechazadas</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>veredicto</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
+        <translation>  recomendado: %1 (el más barato dentro del 5 % del mejor NRMSE)</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  veredicto: %1</translation>
+    </message>
+    <message>
+        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
+        <translation>  salidas: %1 (comparison.csv, summary.json; los archivos de cada método en calibration/, ukf/, nelder-mead/)</translation>
+    </message>
+</context>
+<context>
     <name>OperatorEvent</name>
     <message>
         <source>pre-flight confirmed by the operator (zero offsets)</source>
@@ -876,6 +947,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>note recorded: %1</source>
         <translation>nota registrada: %1</translation>
+    </message>
+    <message>
+        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
+        <translation>%1 (%L2 pasos confirmados, última deformación %3 %4)</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
+        <translation>probeta cargada por un ensayo anterior: %1; el operador continúa con ella</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
+        <translation>probeta cargada por un ensayo anterior: %1; el operador eligió una probeta nueva, su controlador la reinició al paso 0</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
+        <translation>probeta cargada por un ensayo anterior: %1; el operador eligió una probeta nueva, su controlador la rechazó (nada cambió)</translation>
     </message>
 </context>
 <context>
@@ -1240,6 +1327,217 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>RthsCommand</name>
+    <message>
+        <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
+        <translation>Simulación híbrida en tiempo real con el actuador servohidráulico del laboratorio virtual.</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>El subcomando.</translation>
+    </message>
+    <message>
+        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
+        <translation>Un archivo de configuración o rths-benchmark-case-1 .. -4.</translation>
+    </message>
+    <message>
+        <source>Output folder.</source>
+        <translation>Carpeta de salida.</translation>
+    </message>
+    <message>
+        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
+        <translation>Registro sísmico (m/s^2 salvo que la configuración diga otra cosa).</translation>
+    </message>
+    <message>
+        <source>Scale of the record.</source>
+        <translation>Factor de escala del registro.</translation>
+    </message>
+    <message>
+        <source>Stop after T seconds.</source>
+        <translation>Detener tras T segundos.</translation>
+    </message>
+    <message>
+        <source>fast (simulated, default) or realtime (wall clock).</source>
+        <translation>fast (simulado, por defecto) o realtime (reloj real).</translation>
+    </message>
+    <message>
+        <source>Run the loop&apos;s thread under SCHED_FIFO (with --pace realtime).</source>
+        <translation>Ejecutar el hilo del lazo con SCHED_FIFO (con --pace realtime).</translation>
+    </message>
+    <message>
+        <source>default, none, lead, polynomial, feedforward or ats.</source>
+        <translation>default, none, lead, polynomial, feedforward o ats.</translation>
+    </message>
+    <message>
+        <source>Draw the plant from the benchmark&apos;s distributions with this seed.</source>
+        <translation>Sortear la planta de las distribuciones del benchmark con esta semilla.</translation>
+    </message>
+    <message>
+        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
+        <translation>Con --pace realtime: espera activa durante los últimos N microsegundos antes de cada liberación (por defecto: un cuarto del periodo, como máximo 100; 0: solo dormir).</translation>
+    </message>
+    <message>
+        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
+        <translation>--spin-us: se esperaba de 0 hasta el periodo del lazo (%1 us), se obtuvo &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>Sensor noise seed.</source>
+        <translation>Semilla del ruido de los sensores.</translation>
+    </message>
+    <message>
+        <source>Sensors without noise.</source>
+        <translation>Sensores sin ruido.</translation>
+    </message>
+    <message>
+        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
+        <translation>se esperaba un CONFIG (un archivo o rths-benchmark-case-1 .. -4)</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>falta --out DIR</translation>
+    </message>
+    <message>
+        <source>--pace: expected fast or realtime, got &apos;%1&apos;</source>
+        <translation>--pace: se esperaba fast o realtime, se recibió &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got &apos;%1&apos;</source>
+        <translation>--compensation: se esperaba default, none, lead, polynomial, feedforward o ats, se recibió &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--seed, --scale and --duration take numbers</source>
+        <translation>--seed, --scale y --duration requieren números</translation>
+    </message>
+    <message>
+        <source>--perturb takes a seed</source>
+        <translation>--perturb requiere una semilla</translation>
+    </message>
+    <message>
+        <source>no ground motion: give --ground-motion FILE</source>
+        <translation>no hay registro sísmico: indique --ground-motion ARCHIVO</translation>
+    </message>
+    <message>
+        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
+        <translation>%1: el registro sísmico no existe (indique --ground-motion ARCHIVO)</translation>
+    </message>
+    <message>
+        <source>%1: %2 Hz loop, compensation %3%4</source>
+        <translation>%1: lazo de %2 Hz, compensación %3%4</translation>
+    </message>
+    <message>
+        <source> + phase lead</source>
+        <translation> + adelanto de fase</translation>
+    </message>
+    <message>
+        <source>pre-flight: %1</source>
+        <translation>verificación previa: %1</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>rechazado en la verificación previa: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output folder</source>
+        <translation>%1: no se puede crear la carpeta de salida</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
+        <translation>hsmu rths: no se obtuvo la prioridad de tiempo real (%1); el lazo corrió con prioridad normal</translation>
+    </message>
+    <message>
+        <source>%1 ticks (%2 s); %3</source>
+        <translation>%1 ciclos (%2 s); %3</translation>
+    </message>
+    <message>
+        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
+        <translation>evaluación en frecuencia: amplitud %1, retardo %2 ms a %3 Hz; indicador de seguimiento %4 m^2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late)</source>
+        <translation>plazos incumplidos: %1 (el peor con %2 us de retraso)</translation>
+    </message>
+    <message>
+        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
+        <translation>salidas: %1/record.h5, %1/steps.csv, %1/summary.json</translation>
+    </message>
+    <message>
+        <source>hsmu rths: %1</source>
+        <translation>hsmu rths: %1</translation>
+    </message>
+    <message>
+        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
+        <translation>Supervisar el lazo que ejecuta hsmu-controller --rths en tcp://HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>File whose first line is the controller&apos;s shared secret.</source>
+        <translation>Archivo cuya primera línea es el secreto compartido del controlador.</translation>
+    </message>
+    <message>
+        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
+        <translation>Con --controller: una trama de telemetría cada N ciclos (por defecto: unas 128 por segundo).</translation>
+    </message>
+    <message>
+        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
+        <translation>--%1 no se aplica con --controller: el controlador ejecuta el lazo de su propia copia de la configuración</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller: %1</translation>
+    </message>
+    <message>
+        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>--controller: un lazo RTHS se supervisa mediante tcp://HOST:PORT (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file: %1</translation>
+    </message>
+    <message>
+        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
+        <translation>--telemetry-every: se esperaba un número entero &gt;= 1, se obtuvo &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1/telemetry.csv: cannot be written</source>
+        <translation>%1/telemetry.csv: no se puede escribir</translation>
+    </message>
+    <message>
+        <source>cannot reach the controller %1:%2: %3</source>
+        <translation>no se puede alcanzar el controlador %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the controller refused the monitor: %1</source>
+        <translation>el controlador rechazó el monitor: %1</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>controlador: %1</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
+        <translation>se perdió el enlace con el controlador: %1 (el controlador detiene el lazo según su política --monitor-loss); %2 tramas de telemetría en %3/telemetry.csv</translation>
+    </message>
+    <message>
+        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
+        <translation>t = %1 s: deseado %2 mm, medido %3 mm, %4 plazos incumplidos</translation>
+    </message>
+    <message>
+        <source>the controller: %1</source>
+        <translation>el controlador: %1</translation>
+    </message>
+    <message>
+        <source>%1 ticks on the controller; %2</source>
+        <translation>%1 ciclos en el controlador; %2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
+        <translation>plazos incumplidos: %1 (el peor con %2 us de retraso); telemetría: %3 recibidas, %4 descartadas</translation>
+    </message>
+    <message>
+        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
+        <translation>salidas: %1/telemetry.csv, %1/summary.json</translation>
+    </message>
+</context>
+<context>
     <name>RunCommand</name>
     <message>
         <source>%1 %  t = %2 s  %3 steps/s</source>
@@ -1317,7 +1615,7 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>Escribe gráficas PNG.</translation>
     </message>
     <message>
-        <source>File whose first line is the controller's shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</source>
+        <source>File whose first line is the controller&apos;s shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</source>
         <translation>Archivo cuya primera línea es el secreto compartido con el controlador (legible solo por usted; si no, la variable de entorno HSMU_CONTROLLER_TOKEN).</translation>
     </message>
     <message>
@@ -2143,6 +2441,14 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</source>
         <translation>La guía es docs/console.md del árbol de fuentes, instalada como share/doc/hsmu/console.md.</translation>
     </message>
+    <message>
+        <source>asking the controller for a fresh specimen...</source>
+        <translation>solicitando al controlador una probeta nueva...</translation>
+    </message>
+    <message>
+        <source>Real-time hybrid simulation</source>
+        <translation>Simulación híbrida en tiempo real</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -2319,6 +2625,17 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     </message>
 </context>
 <context>
+    <name>hsmu::gui::PlotElementPicker</name>
+    <message>
+        <source>Element:</source>
+        <translation>Elemento:</translation>
+    </message>
+    <message>
+        <source>The element this plot shows</source>
+        <translation>El elemento que muestra este gráfico</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::PlotTools</name>
     <message>
         <source>x = %1, y = %2</source>
@@ -2478,6 +2795,46 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>alpha-OS</source>
         <translation>alpha-OS</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>sin medir</translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
+        <translation>d y F medidos: lo que la probeta informó tras preparar el enlace, antes de enviar ningún objetivo; para una probeta cargada por un ensayo anterior, d es su última deformación confirmada y F se mide en el primer paso.</translation>
+    </message>
+    <message>
+        <source>Specimen loaded by an earlier test</source>
+        <translation>Probeta cargada por un ensayo anterior</translation>
+    </message>
+    <message>
+        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
+        <translation>%1 tiene %L2 pasos confirmados de un ensayo anterior; su última deformación confirmada es %3 %4. Este ensayo parte del reposo: su primer objetivo mueve la probeta desde allí.</translation>
+    </message>
+    <message>
+        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
+        <translation>Su controlador rechazó una probeta nueva (%1): sustituya la probeta en el controlador y reinicie el controlador sin su archivo de estado, o continúe con la probeta cargada.</translation>
+    </message>
+    <message>
+        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
+        <translation>Elija: continuar con la probeta cargada (su daño forma parte de este ensayo) o una probeta nueva (su controlador la reinicia al paso 0 y luego se muestra de nuevo esta verificación).</translation>
+    </message>
+    <message>
+        <source>Continue on the loaded specimen</source>
+        <translation>Continuar con la probeta cargada</translation>
+    </message>
+    <message>
+        <source>Fresh specimen</source>
+        <translation>Probeta nueva</translation>
+    </message>
+    <message>
+        <source>Reset the specimen</source>
+        <translation>Reiniciar la probeta</translation>
+    </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>Continuar la movería unos %1 %2 en el primer paso, más que el límite de incremento %3 %2: el controlador retendría el ensayo. Elija una probeta nueva o lleve la probeta al reposo en el controlador.</translation>
     </message>
 </context>
 <context>
@@ -2726,6 +3083,220 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>&amp;View</source>
         <translation>&amp;Ver</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsPanel</name>
+    <message>
+        <source>No RTHS run yet.</source>
+        <translation>Aún no hay ningún ensayo RTHS.</translation>
+    </message>
+    <message>
+        <source>Run:</source>
+        <translation>Ensayo:</translation>
+    </message>
+    <message>
+        <source>Benchmark case %1</source>
+        <translation>Caso de referencia %1</translation>
+    </message>
+    <message>
+        <source>Configuration file</source>
+        <translation>Archivo de configuración</translation>
+    </message>
+    <message>
+        <source>RTHS configuration (.json)</source>
+        <translation>configuración RTHS (.json)</translation>
+    </message>
+    <message>
+        <source>Choose an RTHS configuration file</source>
+        <translation>Elegir un archivo de configuración RTHS</translation>
+    </message>
+    <message>
+        <source>Pace:</source>
+        <translation>Ritmo:</translation>
+    </message>
+    <message>
+        <source>Fast (simulated)</source>
+        <translation>Rápido (simulado)</translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation>Tiempo real</translation>
+    </message>
+    <message>
+        <source>Duration:</source>
+        <translation>Duración:</translation>
+    </message>
+    <message>
+        <source>whole record</source>
+        <translation>registro completo</translation>
+    </message>
+    <message>
+        <source>Stop the run after this many seconds of test time (0: the whole record)</source>
+        <translation>Detener el ensayo tras estos segundos de tiempo de ensayo (0: el registro completo)</translation>
+    </message>
+    <message>
+        <source>Start RTHS</source>
+        <translation>Iniciar RTHS</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Hold the loop before its next tick (a held RTHS run restarts from rest)</source>
+        <translation>Detener el lazo antes de su siguiente ciclo (un ensayo RTHS detenido se reinicia desde el reposo)</translation>
+    </message>
+    <message>
+        <source>Emergency hold</source>
+        <translation>Retención de emergencia</translation>
+    </message>
+    <message>
+        <source>Live tracking</source>
+        <translation>Seguimiento en vivo</translation>
+    </message>
+    <message>
+        <source>Warning above</source>
+        <translation>Aviso por encima de</translation>
+    </message>
+    <message>
+        <source>Critical above</source>
+        <translation>Crítico por encima de</translation>
+    </message>
+    <message>
+        <source>J1 delay</source>
+        <translation>J1 retardo</translation>
+    </message>
+    <message>
+        <source>J2 tracking error</source>
+        <translation>J2 error de seguimiento</translation>
+    </message>
+    <message>
+        <source>RTHS configuration</source>
+        <translation>Configuración RTHS</translation>
+    </message>
+    <message>
+        <source>Configuration (*.json)</source>
+        <translation>Configuración (*.json)</translation>
+    </message>
+    <message>
+        <source>choose an RTHS configuration file</source>
+        <translation>elija un archivo de configuración RTHS</translation>
+    </message>
+    <message>
+        <source>Cannot start the RTHS run: %1</source>
+        <translation>No se puede iniciar el ensayo RTHS: %1</translation>
+    </message>
+    <message>
+        <source>RTHS run &apos;%1&apos; started</source>
+        <translation>ensayo RTHS &apos;%1&apos; iniciado</translation>
+    </message>
+    <message>
+        <source>RTHS hold</source>
+        <translation>detención RTHS</translation>
+    </message>
+    <message>
+        <source>RTHS emergency hold</source>
+        <translation>retención de emergencia RTHS</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>No aplicado: %1</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>-- ms</source>
+        <translation>-- ms</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>-- %</source>
+        <translation>-- %</translation>
+    </message>
+    <message>
+        <source>Amplitude error: %1 %</source>
+        <translation>Error de amplitud: %1 %</translation>
+    </message>
+    <message>
+        <source>Amplitude error: -- %</source>
+        <translation>Error de amplitud: -- %</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>Finished: %1 ticks (%2 s); whole run J1 %3 ms, J2 %4 %</source>
+        <translation>Terminado: %1 ciclos (%2 s); ensayo completo J1 %3 ms, J2 %4 %</translation>
+    </message>
+    <message>
+        <source>RTHS run finished: %1 ticks</source>
+        <translation>ensayo RTHS terminado: %1 ciclos</translation>
+    </message>
+    <message>
+        <source>Held after %1 ticks: %2</source>
+        <translation>Detenido tras %1 ciclos: %2</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>Controlador:</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</source>
+        <translation>laboratorio virtual integrado, o tcp://HOST:PUERTO de hsmu-controller --rths</translation>
+    </message>
+    <message>
+        <source>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</source>
+        <translation>Vacío: el lazo se ejecuta en la consola. tcp://HOST:PUERTO: supervisar el lazo que ejecuta hsmu-controller --rths (su token de HSMU_CONTROLLER_TOKEN)</translation>
+    </message>
+    <message>
+        <source>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>controlador: un lazo RTHS se supervisa por tcp://HOST:PUERTO (hsmu-controller --rths)</translation>
+    </message>
+    <message>
+        <source>real time; pre-flight: %1</source>
+        <translation>tiempo real; comprobación previa: %1</translation>
+    </message>
+    <message>
+        <source>fast; pre-flight: %1</source>
+        <translation>rápido; comprobación previa: %1</translation>
+    </message>
+    <message>
+        <source>on the controller %1:%2</source>
+        <translation>en el controlador %1:%2</translation>
+    </message>
+    <message>
+        <source>Running &apos;%1&apos; at %2 Hz (%3)</source>
+        <translation>Ejecutando &apos;%1&apos; a %2 Hz (%3)</translation>
+    </message>
+    <message>
+        <source>The RTHS run could not be followed: %1</source>
+        <translation>No se pudo seguir el ensayo RTHS: %1</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>an RTHS run is already going</source>
+        <translation>ya hay un ensayo RTHS en curso</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>rechazado en la comprobación previa: %1</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s (%1:%2)</source>
+        <translation>la del controlador (%1:%2)</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
+        <translation>se perdió el enlace con el controlador: %1 (el controlador detiene el lazo según su política --monitor-loss)</translation>
     </message>
 </context>
 <context>
@@ -2980,7 +3551,7 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>elemento adapter de OpenSees (subestructura numérica)</translation>
     </message>
     <message>
-        <source>hsmu-controller over TLS (the configuration's tls block)</source>
+        <source>hsmu-controller over TLS (the configuration&apos;s tls block)</source>
         <translation>hsmu-controller por TLS (el bloque tls de la configuración)</translation>
     </message>
     <message>
@@ -3068,6 +3639,25 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>the controller above</source>
         <translation>el controlador de arriba</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SynchronizationPlot</name>
+    <message>
+        <source>Synchronization: measured against desired</source>
+        <translation>Sincronización: medido frente a deseado</translation>
+    </message>
+    <message>
+        <source>desired displacement y [mm]</source>
+        <translation>desplazamiento deseado y [mm]</translation>
+    </message>
+    <message>
+        <source>measured displacement xm [mm]</source>
+        <translation>desplazamiento medido xm [mm]</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>medido</translation>
     </message>
 </context>
 <context>
@@ -3163,350 +3753,28 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>update #%1 is no longer pending: #%2 replaced it</source>
         <translation>la actualización n.º %1 ya no está pendiente: la n.º %2 la sustituyó</translation>
     </message>
-</context>
-<context>
-    <name>RthsCommand</name>
-    <message>
-        <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
-        <translation>Simulación híbrida en tiempo real con el actuador servohidráulico del laboratorio virtual.</translation>
-    </message>
-    <message>
-        <source>The subcommand.</source>
-        <translation>El subcomando.</translation>
-    </message>
-    <message>
-        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
-        <translation>Un archivo de configuración o rths-benchmark-case-1 .. -4.</translation>
-    </message>
-    <message>
-        <source>Output folder.</source>
-        <translation>Carpeta de salida.</translation>
-    </message>
-    <message>
-        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
-        <translation>Registro sísmico (m/s^2 salvo que la configuración diga otra cosa).</translation>
-    </message>
-    <message>
-        <source>Scale of the record.</source>
-        <translation>Factor de escala del registro.</translation>
-    </message>
-    <message>
-        <source>Stop after T seconds.</source>
-        <translation>Detener tras T segundos.</translation>
-    </message>
-    <message>
-        <source>fast (simulated, default) or realtime (wall clock).</source>
-        <translation>fast (simulado, por defecto) o realtime (reloj real).</translation>
-    </message>
-    <message>
-        <source>Run the loop&apos;s thread under SCHED_FIFO (with --pace realtime).</source>
-        <translation>Ejecutar el hilo del lazo con SCHED_FIFO (con --pace realtime).</translation>
-    </message>
-    <message>
-        <source>default, none, lead, polynomial, feedforward or ats.</source>
-        <translation>default, none, lead, polynomial, feedforward o ats.</translation>
-    </message>
-    <message>
-        <source>Draw the plant from the benchmark&apos;s distributions with this seed.</source>
-        <translation>Sortear la planta de las distribuciones del benchmark con esta semilla.</translation>
-    </message>
-    <message>
-        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
-        <translation>Con --pace realtime: espera activa durante los últimos N microsegundos antes de cada liberación (por defecto: un cuarto del periodo, como máximo 100; 0: solo dormir).</translation>
-    </message>
-    <message>
-        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
-        <translation>--spin-us: se esperaba de 0 hasta el periodo del lazo (%1 us), se obtuvo &apos;%2&apos;</translation>
-    </message>
-    <message>
-        <source>Sensor noise seed.</source>
-        <translation>Semilla del ruido de los sensores.</translation>
-    </message>
-    <message>
-        <source>Sensors without noise.</source>
-        <translation>Sensores sin ruido.</translation>
-    </message>
-    <message>
-        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
-        <translation>se esperaba un CONFIG (un archivo o rths-benchmark-case-1 .. -4)</translation>
-    </message>
-    <message>
-        <source>missing --out DIR</source>
-        <translation>falta --out DIR</translation>
-    </message>
-    <message>
-        <source>--pace: expected fast or realtime, got &apos;%1&apos;</source>
-        <translation>--pace: se esperaba fast o realtime, se recibió &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got &apos;%1&apos;</source>
-        <translation>--compensation: se esperaba default, none, lead, polynomial, feedforward o ats, se recibió &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>--seed, --scale and --duration take numbers</source>
-        <translation>--seed, --scale y --duration requieren números</translation>
-    </message>
-    <message>
-        <source>--perturb takes a seed</source>
-        <translation>--perturb requiere una semilla</translation>
-    </message>
-    <message>
-        <source>no ground motion: give --ground-motion FILE</source>
-        <translation>no hay registro sísmico: indique --ground-motion ARCHIVO</translation>
-    </message>
-    <message>
-        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
-        <translation>%1: el registro sísmico no existe (indique --ground-motion ARCHIVO)</translation>
-    </message>
-    <message>
-        <source>%1: %2 Hz loop, compensation %3%4</source>
-        <translation>%1: lazo de %2 Hz, compensación %3%4</translation>
-    </message>
-    <message>
-        <source> + phase lead</source>
-        <translation> + adelanto de fase</translation>
-    </message>
-    <message>
-        <source>pre-flight: %1</source>
-        <translation>verificación previa: %1</translation>
-    </message>
-    <message>
-        <source>refused in pre-flight: %1</source>
-        <translation>rechazado en la verificación previa: %1</translation>
-    </message>
-    <message>
-        <source>%1: cannot create the output folder</source>
-        <translation>%1: no se puede crear la carpeta de salida</translation>
-    </message>
-    <message>
-        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
-        <translation>hsmu rths: no se obtuvo la prioridad de tiempo real (%1); el lazo corrió con prioridad normal</translation>
-    </message>
-    <message>
-        <source>%1 ticks (%2 s); %3</source>
-        <translation>%1 ciclos (%2 s); %3</translation>
-    </message>
-    <message>
-        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
-        <translation>evaluación en frecuencia: amplitud %1, retardo %2 ms a %3 Hz; indicador de seguimiento %4 m^2</translation>
-    </message>
-    <message>
-        <source>deadline misses: %1 (worst %2 us late)</source>
-        <translation>plazos incumplidos: %1 (el peor con %2 us de retraso)</translation>
-    </message>
-    <message>
-        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
-        <translation>salidas: %1/record.h5, %1/steps.csv, %1/summary.json</translation>
-    </message>
-    <message>
-        <source>hsmu rths: %1</source>
-        <translation>hsmu rths: %1</translation>
-    </message>
-    <message>
-        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
-        <translation>Supervisar el lazo que ejecuta hsmu-controller --rths en tcp://HOST:PORT.</translation>
-    </message>
-    <message>
-        <source>File whose first line is the controller&apos;s shared secret.</source>
-        <translation>Archivo cuya primera línea es el secreto compartido del controlador.</translation>
-    </message>
-    <message>
-        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
-        <translation>Con --controller: una trama de telemetría cada N ciclos (por defecto: unas 128 por segundo).</translation>
-    </message>
-    <message>
-        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
-        <translation>--%1 no se aplica con --controller: el controlador ejecuta el lazo de su propia copia de la configuración</translation>
-    </message>
-    <message>
-        <source>--controller: %1</source>
-        <translation>--controller: %1</translation>
-    </message>
-    <message>
-        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
-        <translation>--controller: un lazo RTHS se supervisa mediante tcp://HOST:PORT (hsmu-controller --rths)</translation>
-    </message>
-    <message>
-        <source>--token-file: %1</source>
-        <translation>--token-file: %1</translation>
-    </message>
-    <message>
-        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
-        <translation>--telemetry-every: se esperaba un número entero &gt;= 1, se obtuvo &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>%1/telemetry.csv: cannot be written</source>
-        <translation>%1/telemetry.csv: no se puede escribir</translation>
-    </message>
-    <message>
-        <source>cannot reach the controller %1:%2: %3</source>
-        <translation>no se puede alcanzar el controlador %1:%2: %3</translation>
-    </message>
-    <message>
-        <source>the controller refused the monitor: %1</source>
-        <translation>el controlador rechazó el monitor: %1</translation>
-    </message>
-    <message>
-        <source>controller: %1</source>
-        <translation>controlador: %1</translation>
-    </message>
-    <message>
-        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
-        <translation>se perdió el enlace con el controlador: %1 (el controlador detiene el lazo según su política --monitor-loss); %2 tramas de telemetría en %3/telemetry.csv</translation>
-    </message>
-    <message>
-        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
-        <translation>t = %1 s: deseado %2 mm, medido %3 mm, %4 plazos incumplidos</translation>
-    </message>
-    <message>
-        <source>the controller: %1</source>
-        <translation>el controlador: %1</translation>
-    </message>
-    <message>
-        <source>%1 ticks on the controller; %2</source>
-        <translation>%1 ciclos en el controlador; %2</translation>
-    </message>
-    <message>
-        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
-        <translation>plazos incumplidos: %1 (el peor con %2 us de retraso); telemetría: %3 recibidas, %4 descartadas</translation>
-    </message>
-    <message>
-        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
-        <translation>salidas: %1/telemetry.csv, %1/summary.json</translation>
-    </message>
-</context>
-<context>
-    <name>MethodComparisonTable</name>
-    <message>
-        <source>Method comparison on %1: %2 samples</source>
-        <translation>Comparación de métodos en %1: %2 muestras</translation>
-    </message>
-    <message>
-        <source>method</source>
-        <translation>método</translation>
-    </message>
-    <message>
-        <source>NRMSE [%]</source>
-        <translation>NRMSE [%]</translation>
-    </message>
-    <message>
-        <source>CPU [s]</source>
-        <translation>CPU [s]</translation>
-    </message>
-    <message>
-        <source>on bounds</source>
-        <translation>en los límites</translation>
-    </message>
-    <message>
-        <source>rejected</source>
-        <translation>rechazadas</translation>
-    </message>
-    <message>
-        <source>verdict</source>
-        <translation>veredicto</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>ninguno</translation>
-    </message>
-    <message>
-        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
-        <translation>  recomendado: %1 (el más barato dentro del 5 % del mejor NRMSE)</translation>
-    </message>
-    <message>
-        <source>  verdict: %1</source>
-        <translation>  veredicto: %1</translation>
-    </message>
-    <message>
-        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
-        <translation>  salidas: %1 (comparison.csv, summary.json; los archivos de cada método en calibration/, ukf/, nelder-mead/)</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::PreflightDialog</name>
-    <message>
-        <source>not measured</source>
-        <translation>sin medir</translation>
-    </message>
-    <message>
-        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
-        <translation>d y F medidos: lo que la probeta informó tras preparar el enlace, antes de enviar ningún objetivo; para una probeta cargada por un ensayo anterior, d es su última deformación confirmada y F se mide en el primer paso.</translation>
-    </message>
-    <message>
-        <source>Specimen loaded by an earlier test</source>
-        <translation>Probeta cargada por un ensayo anterior</translation>
-    </message>
-    <message>
-        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
-        <translation>%1 tiene %L2 pasos confirmados de un ensayo anterior; su última deformación confirmada es %3 %4. Este ensayo parte del reposo: su primer objetivo mueve la probeta desde allí.</translation>
-    </message>
-    <message>
-        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
-        <translation>Su controlador rechazó una probeta nueva (%1): sustituya la probeta en el controlador y reinicie el controlador sin su archivo de estado, o continúe con la probeta cargada.</translation>
-    </message>
-    <message>
-        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
-        <translation>Elija: continuar con la probeta cargada (su daño forma parte de este ensayo) o una probeta nueva (su controlador la reinicia al paso 0 y luego se muestra de nuevo esta verificación).</translation>
-    </message>
-    <message>
-        <source>Continue on the loaded specimen</source>
-        <translation>Continuar con la probeta cargada</translation>
-    </message>
-    <message>
-        <source>Fresh specimen</source>
-        <translation>Probeta nueva</translation>
-    </message>
-    <message>
-        <source>Reset the specimen</source>
-        <translation>Reiniciar la probeta</translation>
-    </message>
-    <message>
-        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
-        <translation>Continuar la movería unos %1 %2 en el primer paso, más que el límite de incremento %3 %2: el controlador retendría el ensayo. Elija una probeta nueva o lleve la probeta al reposo en el controlador.</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::MainWindow</name>
-    <message>
-        <source>asking the controller for a fresh specimen...</source>
-        <translation>solicitando al controlador una probeta nueva...</translation>
-    </message>
-</context>
-<context>
-    <name>OperatorEvent</name>
-    <message>
-        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
-        <translation>%1 (%L2 pasos confirmados, última deformación %3 %4)</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
-        <translation>probeta cargada por un ensayo anterior: %1; el operador continúa con ella</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
-        <translation>probeta cargada por un ensayo anterior: %1; el operador eligió una probeta nueva, su controlador la reinició al paso 0</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
-        <translation>probeta cargada por un ensayo anterior: %1; el operador eligió una probeta nueva, su controlador la rechazó (nada cambió)</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::TestWorker</name>
     <message>
         <source>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</source>
         <translation>el controlador de %1 rechazó una probeta nueva: %2; sustituya la probeta en el controlador o continúe con la probeta cargada</translation>
     </message>
 </context>
 <context>
-    <name>hsmu::gui::PlotElementPicker</name>
+    <name>hsmu::gui::TrackingHistoryPlot</name>
     <message>
-        <source>Element:</source>
-        <translation>Elemento:</translation>
+        <source>Delay and amplitude error (moving window)</source>
+        <translation>Retardo y error de amplitud (ventana móvil)</translation>
     </message>
     <message>
-        <source>The element this plot shows</source>
-        <translation>El elemento que muestra este gráfico</translation>
+        <source>time [s]</source>
+        <translation>tiempo [s]</translation>
+    </message>
+    <message>
+        <source>delay [ms]</source>
+        <translation>retardo [ms]</translation>
+    </message>
+    <message>
+        <source>amplitude error [%]</source>
+        <translation>error de amplitud [%]</translation>
     </message>
 </context>
 </TS>

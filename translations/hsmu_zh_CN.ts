@@ -467,6 +467,30 @@
         <source>the record holds no step</source>
         <translation>记录中没有任何步</translation>
     </message>
+    <message>
+        <source>RTHS run held: %1</source>
+        <translation>RTHS 试验已保持：%1</translation>
+    </message>
+    <message>
+        <source>live delay J1 = %1 ms over the warning threshold %2 ms</source>
+        <translation>实时延迟 J1 = %1 ms，超过警告阈值 %2 ms</translation>
+    </message>
+    <message>
+        <source>live delay J1 = %1 ms over the critical threshold %2 ms</source>
+        <translation>实时延迟 J1 = %1 ms，超过严重阈值 %2 ms</translation>
+    </message>
+    <message>
+        <source>live tracking error J2 = %1 % over the warning threshold %2 %</source>
+        <translation>实时跟踪误差 J2 = %1 %，超过警告阈值 %2 %</translation>
+    </message>
+    <message>
+        <source>live tracking error J2 = %1 % over the critical threshold %2 %</source>
+        <translation>实时跟踪误差 J2 = %1 %，超过严重阈值 %2 %</translation>
+    </message>
+    <message>
+        <source>RTHS run not followed: %1</source>
+        <translation>无法跟踪 RTHS 试验：%1</translation>
+    </message>
 </context>
 <context>
     <name>CompareCommand</name>
@@ -808,6 +832,53 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>MethodComparisonTable</name>
+    <message>
+        <source>Method comparison on %1: %2 samples</source>
+        <translation>方法比较：%1，%2 个样本</translation>
+    </message>
+    <message>
+        <source>method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <source>NRMSE [%]</source>
+        <translation>NRMSE [%]</translation>
+    </message>
+    <message>
+        <source>CPU [s]</source>
+        <translation>CPU [s]</translation>
+    </message>
+    <message>
+        <source>on bounds</source>
+        <translation>位于边界</translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation>拒绝</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
+        <translation>  推荐：%1（NRMSE 在最佳值 5 % 以内的最省时方法）</translation>
+    </message>
+    <message>
+        <source>  verdict: %1</source>
+        <translation>  结论：%1</translation>
+    </message>
+    <message>
+        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
+        <translation>  输出：%1（comparison.csv、summary.json；各方法自己的文件在 calibration/、ukf/、nelder-mead/ 中）</translation>
+    </message>
+</context>
+<context>
     <name>OperatorEvent</name>
     <message>
         <source>pre-flight confirmed by the operator (zero offsets)</source>
@@ -876,6 +947,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>note recorded: %1</source>
         <translation>已记录备注：%1</translation>
+    </message>
+    <message>
+        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
+        <translation>%1（%L2 个已提交步，最后变形 %3 %4）</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
+        <translation>试件已被先前的试验加载：%1；操作员在其上继续</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
+        <translation>试件已被先前的试验加载：%1；操作员选择了新试件，其控制器已将其重置到第 0 步</translation>
+    </message>
+    <message>
+        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
+        <translation>试件已被先前的试验加载：%1；操作员选择了新试件，其控制器拒绝（未作任何更改）</translation>
     </message>
 </context>
 <context>
@@ -1240,6 +1327,217 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     </message>
 </context>
 <context>
+    <name>RthsCommand</name>
+    <message>
+        <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
+        <translation>在虚拟实验室的电液伺服作动器上进行实时混合试验。</translation>
+    </message>
+    <message>
+        <source>The subcommand.</source>
+        <translation>子命令。</translation>
+    </message>
+    <message>
+        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
+        <translation>配置文件或 rths-benchmark-case-1 .. -4。</translation>
+    </message>
+    <message>
+        <source>Output folder.</source>
+        <translation>输出文件夹。</translation>
+    </message>
+    <message>
+        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
+        <translation>地震动记录（除非配置另有说明，单位 m/s^2）。</translation>
+    </message>
+    <message>
+        <source>Scale of the record.</source>
+        <translation>记录的缩放系数。</translation>
+    </message>
+    <message>
+        <source>Stop after T seconds.</source>
+        <translation>T 秒后停止。</translation>
+    </message>
+    <message>
+        <source>fast (simulated, default) or realtime (wall clock).</source>
+        <translation>fast（模拟，默认）或 realtime（实际时钟）。</translation>
+    </message>
+    <message>
+        <source>Run the loop&apos;s thread under SCHED_FIFO (with --pace realtime).</source>
+        <translation>以 SCHED_FIFO 运行回路线程（配合 --pace realtime）。</translation>
+    </message>
+    <message>
+        <source>default, none, lead, polynomial, feedforward or ats.</source>
+        <translation>default、none、lead、polynomial、feedforward 或 ats。</translation>
+    </message>
+    <message>
+        <source>Draw the plant from the benchmark&apos;s distributions with this seed.</source>
+        <translation>用此种子从基准问题的分布中抽取被控对象。</translation>
+    </message>
+    <message>
+        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
+        <translation>配合 --pace realtime：在每次释放前的最后 N 微秒内忙等待（默认：周期的四分之一，最多 100；0：仅休眠）。</translation>
+    </message>
+    <message>
+        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
+        <translation>--spin-us：应为 0 到环路周期（%1 us）之间，实际为 &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>Sensor noise seed.</source>
+        <translation>传感器噪声种子。</translation>
+    </message>
+    <message>
+        <source>Sensors without noise.</source>
+        <translation>传感器无噪声。</translation>
+    </message>
+    <message>
+        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
+        <translation>需要一个 CONFIG（文件或 rths-benchmark-case-1 .. -4）</translation>
+    </message>
+    <message>
+        <source>missing --out DIR</source>
+        <translation>缺少 --out DIR</translation>
+    </message>
+    <message>
+        <source>--pace: expected fast or realtime, got &apos;%1&apos;</source>
+        <translation>--pace：应为 fast 或 realtime，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got &apos;%1&apos;</source>
+        <translation>--compensation：应为 default、none、lead、polynomial、feedforward 或 ats，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--seed, --scale and --duration take numbers</source>
+        <translation>--seed、--scale 和 --duration 需要数字</translation>
+    </message>
+    <message>
+        <source>--perturb takes a seed</source>
+        <translation>--perturb 需要一个种子</translation>
+    </message>
+    <message>
+        <source>no ground motion: give --ground-motion FILE</source>
+        <translation>没有地震动：请给出 --ground-motion FILE</translation>
+    </message>
+    <message>
+        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
+        <translation>%1：地震动记录不存在（请给出 --ground-motion FILE）</translation>
+    </message>
+    <message>
+        <source>%1: %2 Hz loop, compensation %3%4</source>
+        <translation>%1：%2 Hz 回路，补偿 %3%4</translation>
+    </message>
+    <message>
+        <source> + phase lead</source>
+        <translation> + 相位超前</translation>
+    </message>
+    <message>
+        <source>pre-flight: %1</source>
+        <translation>试验前检查：%1</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>试验前检查拒绝：%1</translation>
+    </message>
+    <message>
+        <source>%1: cannot create the output folder</source>
+        <translation>%1：无法创建输出文件夹</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
+        <translation>hsmu rths：未获得实时优先级（%1）；回路以普通优先级运行</translation>
+    </message>
+    <message>
+        <source>%1 ticks (%2 s); %3</source>
+        <translation>%1 个周期（%2 s）；%3</translation>
+    </message>
+    <message>
+        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
+        <translation>频域评价：幅值 %1，延迟 %2 ms（%3 Hz）；跟踪指标 %4 m^2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late)</source>
+        <translation>错过截止时间：%1 次（最差迟到 %2 us）</translation>
+    </message>
+    <message>
+        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
+        <translation>输出：%1/record.h5、%1/steps.csv、%1/summary.json</translation>
+    </message>
+    <message>
+        <source>hsmu rths: %1</source>
+        <translation>hsmu rths：%1</translation>
+    </message>
+    <message>
+        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
+        <translation>监视 hsmu-controller --rths 在 tcp://HOST:PORT 上运行的回路。</translation>
+    </message>
+    <message>
+        <source>File whose first line is the controller&apos;s shared secret.</source>
+        <translation>文件，其第一行为控制器的共享密钥。</translation>
+    </message>
+    <message>
+        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
+        <translation>与 --controller 一起使用：每 N 个周期一帧遥测数据（默认：约每秒 128 帧）。</translation>
+    </message>
+    <message>
+        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
+        <translation>--%1 不适用于 --controller：控制器按其自己的配置副本运行回路</translation>
+    </message>
+    <message>
+        <source>--controller: %1</source>
+        <translation>--controller：%1</translation>
+    </message>
+    <message>
+        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>--controller：RTHS 回路通过 tcp://HOST:PORT 监视（hsmu-controller --rths）</translation>
+    </message>
+    <message>
+        <source>--token-file: %1</source>
+        <translation>--token-file：%1</translation>
+    </message>
+    <message>
+        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
+        <translation>--telemetry-every：应为 &gt;= 1 的整数，得到 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1/telemetry.csv: cannot be written</source>
+        <translation>%1/telemetry.csv：无法写入</translation>
+    </message>
+    <message>
+        <source>cannot reach the controller %1:%2: %3</source>
+        <translation>无法连接控制器 %1:%2：%3</translation>
+    </message>
+    <message>
+        <source>the controller refused the monitor: %1</source>
+        <translation>控制器拒绝了监视端：%1</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>控制器：%1</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
+        <translation>与控制器的连接已断开：%1（控制器按其 --monitor-loss 策略保持回路）；%2 帧遥测数据在 %3/telemetry.csv 中</translation>
+    </message>
+    <message>
+        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
+        <translation>t = %1 s：期望 %2 mm，测量 %3 mm，%4 次错过截止时间</translation>
+    </message>
+    <message>
+        <source>the controller: %1</source>
+        <translation>控制器：%1</translation>
+    </message>
+    <message>
+        <source>%1 ticks on the controller; %2</source>
+        <translation>控制器上 %1 个周期；%2</translation>
+    </message>
+    <message>
+        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
+        <translation>错过截止时间：%1 次（最差延迟 %2 us）；遥测：收到 %3 帧，丢弃 %4 帧</translation>
+    </message>
+    <message>
+        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
+        <translation>输出：%1/telemetry.csv，%1/summary.json</translation>
+    </message>
+</context>
+<context>
     <name>RunCommand</name>
     <message>
         <source>%1 %  t = %2 s  %3 steps/s</source>
@@ -1317,7 +1615,7 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>输出 PNG 图表。</translation>
     </message>
     <message>
-        <source>File whose first line is the controller's shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</source>
+        <source>File whose first line is the controller&apos;s shared secret (readable by you only; else the environment variable HSMU_CONTROLLER_TOKEN).</source>
         <translation>首行为与控制器共享密钥的文件（仅限本人可读；否则使用环境变量 HSMU_CONTROLLER_TOKEN）。</translation>
     </message>
     <message>
@@ -2142,6 +2440,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>The guide is docs/console.md of the source tree, installed as share/doc/hsmu/console.md.</source>
         <translation>指南为源码树中的 docs/console.md，安装后为 share/doc/hsmu/console.md。</translation>
     </message>
+    <message>
+        <source>asking the controller for a fresh specimen...</source>
+        <translation>正在向控制器请求新试件...</translation>
+    </message>
+    <message>
+        <source>Real-time hybrid simulation</source>
+        <translation>实时混合试验</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::ParameterPlot</name>
@@ -2316,6 +2622,17 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     </message>
 </context>
 <context>
+    <name>hsmu::gui::PlotElementPicker</name>
+    <message>
+        <source>Element:</source>
+        <translation>单元：</translation>
+    </message>
+    <message>
+        <source>The element this plot shows</source>
+        <translation>此图显示的单元</translation>
+    </message>
+</context>
+<context>
     <name>hsmu::gui::PlotTools</name>
     <message>
         <source>x = %1, y = %2</source>
@@ -2475,6 +2792,46 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>alpha-OS</source>
         <translation>alpha-OS</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
+        <translation>实测 d 和 F：链路准备好后、发送任何目标之前试件报告的值；对于已被先前试验加载的试件，d 是其最后一个已提交步的变形，F 在第一步测量。</translation>
+    </message>
+    <message>
+        <source>Specimen loaded by an earlier test</source>
+        <translation>试件已被先前的试验加载</translation>
+    </message>
+    <message>
+        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
+        <translation>%1 已有先前试验的 %L2 个已提交步；其最后一个已提交步的变形为 %3 %4。本试验从静止开始：第一个目标将使试件从该位置移动。</translation>
+    </message>
+    <message>
+        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
+        <translation>其控制器拒绝了新试件（%1）：请在控制器处更换试件，并在不带状态文件的情况下重启控制器，或在已加载的试件上继续。</translation>
+    </message>
+    <message>
+        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
+        <translation>请选择：在已加载的试件上继续（其损伤计入本试验），或使用新试件（其控制器将其重置到第 0 步，然后再次显示本检查）。</translation>
+    </message>
+    <message>
+        <source>Continue on the loaded specimen</source>
+        <translation>在已加载的试件上继续</translation>
+    </message>
+    <message>
+        <source>Fresh specimen</source>
+        <translation>新试件</translation>
+    </message>
+    <message>
+        <source>Reset the specimen</source>
+        <translation>重置试件</translation>
+    </message>
+    <message>
+        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
+        <translation>继续将使其在第一步移动约 %1 %2，超过增量限值 %3 %2：控制器会保持（暂停）试验。请选择新试件，或在控制器处使试件回到静止位置。</translation>
     </message>
 </context>
 <context>
@@ -2723,6 +3080,220 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsPanel</name>
+    <message>
+        <source>No RTHS run yet.</source>
+        <translation>尚无 RTHS 试验。</translation>
+    </message>
+    <message>
+        <source>Run:</source>
+        <translation>试验：</translation>
+    </message>
+    <message>
+        <source>Benchmark case %1</source>
+        <translation>基准算例 %1</translation>
+    </message>
+    <message>
+        <source>Configuration file</source>
+        <translation>配置文件</translation>
+    </message>
+    <message>
+        <source>RTHS configuration (.json)</source>
+        <translation>RTHS 配置（.json）</translation>
+    </message>
+    <message>
+        <source>Choose an RTHS configuration file</source>
+        <translation>选择 RTHS 配置文件</translation>
+    </message>
+    <message>
+        <source>Pace:</source>
+        <translation>节奏：</translation>
+    </message>
+    <message>
+        <source>Fast (simulated)</source>
+        <translation>快速（模拟）</translation>
+    </message>
+    <message>
+        <source>Real time</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <source>Duration:</source>
+        <translation>时长：</translation>
+    </message>
+    <message>
+        <source>whole record</source>
+        <translation>整条记录</translation>
+    </message>
+    <message>
+        <source>Stop the run after this many seconds of test time (0: the whole record)</source>
+        <translation>试验时间达到该秒数后停止（0：整条记录）</translation>
+    </message>
+    <message>
+        <source>Start RTHS</source>
+        <translation>开始 RTHS</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>保持</translation>
+    </message>
+    <message>
+        <source>Hold the loop before its next tick (a held RTHS run restarts from rest)</source>
+        <translation>在下一个周期前保持回路（已保持的 RTHS 试验须从静止重新开始）</translation>
+    </message>
+    <message>
+        <source>Emergency hold</source>
+        <translation>紧急保持</translation>
+    </message>
+    <message>
+        <source>Live tracking</source>
+        <translation>实时跟踪</translation>
+    </message>
+    <message>
+        <source>Warning above</source>
+        <translation>警告阈值</translation>
+    </message>
+    <message>
+        <source>Critical above</source>
+        <translation>严重阈值</translation>
+    </message>
+    <message>
+        <source>J1 delay</source>
+        <translation>J1 延迟</translation>
+    </message>
+    <message>
+        <source>J2 tracking error</source>
+        <translation>J2 跟踪误差</translation>
+    </message>
+    <message>
+        <source>RTHS configuration</source>
+        <translation>RTHS 配置</translation>
+    </message>
+    <message>
+        <source>Configuration (*.json)</source>
+        <translation>配置（*.json）</translation>
+    </message>
+    <message>
+        <source>choose an RTHS configuration file</source>
+        <translation>请选择 RTHS 配置文件</translation>
+    </message>
+    <message>
+        <source>Cannot start the RTHS run: %1</source>
+        <translation>无法开始 RTHS 试验：%1</translation>
+    </message>
+    <message>
+        <source>RTHS run &apos;%1&apos; started</source>
+        <translation>RTHS 试验 &apos;%1&apos; 已开始</translation>
+    </message>
+    <message>
+        <source>RTHS hold</source>
+        <translation>RTHS 保持</translation>
+    </message>
+    <message>
+        <source>RTHS emergency hold</source>
+        <translation>RTHS 紧急保持</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>未应用：%1</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>-- ms</source>
+        <translation>-- ms</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>-- %</source>
+        <translation>-- %</translation>
+    </message>
+    <message>
+        <source>Amplitude error: %1 %</source>
+        <translation>幅值误差：%1 %</translation>
+    </message>
+    <message>
+        <source>Amplitude error: -- %</source>
+        <translation>幅值误差：-- %</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>Finished: %1 ticks (%2 s); whole run J1 %3 ms, J2 %4 %</source>
+        <translation>已完成：%1 个周期（%2 s）；全程 J1 %3 ms，J2 %4 %</translation>
+    </message>
+    <message>
+        <source>RTHS run finished: %1 ticks</source>
+        <translation>RTHS 试验已完成：%1 个周期</translation>
+    </message>
+    <message>
+        <source>Held after %1 ticks: %2</source>
+        <translation>%1 个周期后保持：%2</translation>
+    </message>
+    <message>
+        <source>Controller:</source>
+        <translation>控制器：</translation>
+    </message>
+    <message>
+        <source>built-in virtual lab, or tcp://HOST:PORT of hsmu-controller --rths</source>
+        <translation>内置虚拟实验室，或 hsmu-controller --rths 的 tcp://主机:端口</translation>
+    </message>
+    <message>
+        <source>Empty: the loop runs in the console. tcp://HOST:PORT: monitor the loop hsmu-controller --rths runs (its token from HSMU_CONTROLLER_TOKEN)</source>
+        <translation>留空：回路在控制台中运行。tcp://主机:端口：监视 hsmu-controller --rths 运行的回路（令牌取自 HSMU_CONTROLLER_TOKEN）</translation>
+    </message>
+    <message>
+        <source>controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
+        <translation>控制器：RTHS 回路通过 tcp://主机:端口 监视（hsmu-controller --rths）</translation>
+    </message>
+    <message>
+        <source>real time; pre-flight: %1</source>
+        <translation>实时；预检：%1</translation>
+    </message>
+    <message>
+        <source>fast; pre-flight: %1</source>
+        <translation>快速；预检：%1</translation>
+    </message>
+    <message>
+        <source>on the controller %1:%2</source>
+        <translation>在控制器 %1:%2 上</translation>
+    </message>
+    <message>
+        <source>Running &apos;%1&apos; at %2 Hz (%3)</source>
+        <translation>正在运行 &apos;%1&apos;，%2 Hz（%3）</translation>
+    </message>
+    <message>
+        <source>The RTHS run could not be followed: %1</source>
+        <translation>无法跟踪该 RTHS 试验：%1</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>an RTHS run is already going</source>
+        <translation>已有 RTHS 试验在运行</translation>
+    </message>
+    <message>
+        <source>refused in pre-flight: %1</source>
+        <translation>预检拒绝：%1</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s (%1:%2)</source>
+        <translation>由控制器执行（%1:%2）</translation>
+    </message>
+    <message>
+        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
+        <translation>与控制器的链路已断开：%1（控制器按其 --monitor-loss 策略保持回路）</translation>
     </message>
 </context>
 <context>
@@ -2977,7 +3548,7 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>OpenSees adapter 单元（数值子结构）</translation>
     </message>
     <message>
-        <source>hsmu-controller over TLS (the configuration's tls block)</source>
+        <source>hsmu-controller over TLS (the configuration&apos;s tls block)</source>
         <translation>通过 TLS 连接 hsmu-controller（配置中的 tls 块）</translation>
     </message>
     <message>
@@ -3065,6 +3636,25 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>the controller above</source>
         <translation>上方的控制器</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SynchronizationPlot</name>
+    <message>
+        <source>Synchronization: measured against desired</source>
+        <translation>同步图：实测对期望</translation>
+    </message>
+    <message>
+        <source>desired displacement y [mm]</source>
+        <translation>期望位移 y [mm]</translation>
+    </message>
+    <message>
+        <source>measured displacement xm [mm]</source>
+        <translation>实测位移 xm [mm]</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>实测</translation>
     </message>
 </context>
 <context>
@@ -3160,350 +3750,28 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>update #%1 is no longer pending: #%2 replaced it</source>
         <translation>更新 #%1 已不再待定：#%2 已替换它</translation>
     </message>
-</context>
-<context>
-    <name>RthsCommand</name>
-    <message>
-        <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
-        <translation>在虚拟实验室的电液伺服作动器上进行实时混合试验。</translation>
-    </message>
-    <message>
-        <source>The subcommand.</source>
-        <translation>子命令。</translation>
-    </message>
-    <message>
-        <source>A configuration file or rths-benchmark-case-1 .. -4.</source>
-        <translation>配置文件或 rths-benchmark-case-1 .. -4。</translation>
-    </message>
-    <message>
-        <source>Output folder.</source>
-        <translation>输出文件夹。</translation>
-    </message>
-    <message>
-        <source>Ground-motion record (m/s^2 unless the configuration says).</source>
-        <translation>地震动记录（除非配置另有说明，单位 m/s^2）。</translation>
-    </message>
-    <message>
-        <source>Scale of the record.</source>
-        <translation>记录的缩放系数。</translation>
-    </message>
-    <message>
-        <source>Stop after T seconds.</source>
-        <translation>T 秒后停止。</translation>
-    </message>
-    <message>
-        <source>fast (simulated, default) or realtime (wall clock).</source>
-        <translation>fast（模拟，默认）或 realtime（实际时钟）。</translation>
-    </message>
-    <message>
-        <source>Run the loop&apos;s thread under SCHED_FIFO (with --pace realtime).</source>
-        <translation>以 SCHED_FIFO 运行回路线程（配合 --pace realtime）。</translation>
-    </message>
-    <message>
-        <source>default, none, lead, polynomial, feedforward or ats.</source>
-        <translation>default、none、lead、polynomial、feedforward 或 ats。</translation>
-    </message>
-    <message>
-        <source>Draw the plant from the benchmark&apos;s distributions with this seed.</source>
-        <translation>用此种子从基准问题的分布中抽取被控对象。</translation>
-    </message>
-    <message>
-        <source>With --pace realtime: busy-wait the last N microseconds before each release (default: a quarter of the period, at most 100; 0: sleep only).</source>
-        <translation>配合 --pace realtime：在每次释放前的最后 N 微秒内忙等待（默认：周期的四分之一，最多 100；0：仅休眠）。</translation>
-    </message>
-    <message>
-        <source>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</source>
-        <translation>--spin-us：应为 0 到环路周期（%1 us）之间，实际为 &apos;%2&apos;</translation>
-    </message>
-    <message>
-        <source>Sensor noise seed.</source>
-        <translation>传感器噪声种子。</translation>
-    </message>
-    <message>
-        <source>Sensors without noise.</source>
-        <translation>传感器无噪声。</translation>
-    </message>
-    <message>
-        <source>expected one CONFIG (a file or rths-benchmark-case-1 .. -4)</source>
-        <translation>需要一个 CONFIG（文件或 rths-benchmark-case-1 .. -4）</translation>
-    </message>
-    <message>
-        <source>missing --out DIR</source>
-        <translation>缺少 --out DIR</translation>
-    </message>
-    <message>
-        <source>--pace: expected fast or realtime, got &apos;%1&apos;</source>
-        <translation>--pace：应为 fast 或 realtime，实际为 &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>--compensation: expected default, none, lead, polynomial, feedforward or ats, got &apos;%1&apos;</source>
-        <translation>--compensation：应为 default、none、lead、polynomial、feedforward 或 ats，实际为 &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>--seed, --scale and --duration take numbers</source>
-        <translation>--seed、--scale 和 --duration 需要数字</translation>
-    </message>
-    <message>
-        <source>--perturb takes a seed</source>
-        <translation>--perturb 需要一个种子</translation>
-    </message>
-    <message>
-        <source>no ground motion: give --ground-motion FILE</source>
-        <translation>没有地震动：请给出 --ground-motion FILE</translation>
-    </message>
-    <message>
-        <source>%1: the ground-motion record does not exist (give --ground-motion FILE)</source>
-        <translation>%1：地震动记录不存在（请给出 --ground-motion FILE）</translation>
-    </message>
-    <message>
-        <source>%1: %2 Hz loop, compensation %3%4</source>
-        <translation>%1：%2 Hz 回路，补偿 %3%4</translation>
-    </message>
-    <message>
-        <source> + phase lead</source>
-        <translation> + 相位超前</translation>
-    </message>
-    <message>
-        <source>pre-flight: %1</source>
-        <translation>试验前检查：%1</translation>
-    </message>
-    <message>
-        <source>refused in pre-flight: %1</source>
-        <translation>试验前检查拒绝：%1</translation>
-    </message>
-    <message>
-        <source>%1: cannot create the output folder</source>
-        <translation>%1：无法创建输出文件夹</translation>
-    </message>
-    <message>
-        <source>hsmu rths: real-time priority not taken (%1); the loop ran at normal priority</source>
-        <translation>hsmu rths：未获得实时优先级（%1）；回路以普通优先级运行</translation>
-    </message>
-    <message>
-        <source>%1 ticks (%2 s); %3</source>
-        <translation>%1 个周期（%2 s）；%3</translation>
-    </message>
-    <message>
-        <source>frequency evaluation: amplitude %1, delay %2 ms at %3 Hz; tracking indicator %4 m^2</source>
-        <translation>频域评价：幅值 %1，延迟 %2 ms（%3 Hz）；跟踪指标 %4 m^2</translation>
-    </message>
-    <message>
-        <source>deadline misses: %1 (worst %2 us late)</source>
-        <translation>错过截止时间：%1 次（最差迟到 %2 us）</translation>
-    </message>
-    <message>
-        <source>outputs: %1/record.h5, %1/steps.csv, %1/summary.json</source>
-        <translation>输出：%1/record.h5、%1/steps.csv、%1/summary.json</translation>
-    </message>
-    <message>
-        <source>hsmu rths: %1</source>
-        <translation>hsmu rths：%1</translation>
-    </message>
-    <message>
-        <source>Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT.</source>
-        <translation>监视 hsmu-controller --rths 在 tcp://HOST:PORT 上运行的回路。</translation>
-    </message>
-    <message>
-        <source>File whose first line is the controller&apos;s shared secret.</source>
-        <translation>文件，其第一行为控制器的共享密钥。</translation>
-    </message>
-    <message>
-        <source>With --controller: one telemetry frame every N ticks (default: about 128 per second).</source>
-        <translation>与 --controller 一起使用：每 N 个周期一帧遥测数据（默认：约每秒 128 帧）。</translation>
-    </message>
-    <message>
-        <source>--%1 does not apply with --controller: the controller runs the loop of its own copy of the configuration</source>
-        <translation>--%1 不适用于 --controller：控制器按其自己的配置副本运行回路</translation>
-    </message>
-    <message>
-        <source>--controller: %1</source>
-        <translation>--controller：%1</translation>
-    </message>
-    <message>
-        <source>--controller: an RTHS loop is monitored over tcp://HOST:PORT (hsmu-controller --rths)</source>
-        <translation>--controller：RTHS 回路通过 tcp://HOST:PORT 监视（hsmu-controller --rths）</translation>
-    </message>
-    <message>
-        <source>--token-file: %1</source>
-        <translation>--token-file：%1</translation>
-    </message>
-    <message>
-        <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
-        <translation>--telemetry-every：应为 &gt;= 1 的整数，得到 &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>%1/telemetry.csv: cannot be written</source>
-        <translation>%1/telemetry.csv：无法写入</translation>
-    </message>
-    <message>
-        <source>cannot reach the controller %1:%2: %3</source>
-        <translation>无法连接控制器 %1:%2：%3</translation>
-    </message>
-    <message>
-        <source>the controller refused the monitor: %1</source>
-        <translation>控制器拒绝了监视端：%1</translation>
-    </message>
-    <message>
-        <source>controller: %1</source>
-        <translation>控制器：%1</translation>
-    </message>
-    <message>
-        <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv</source>
-        <translation>与控制器的连接已断开：%1（控制器按其 --monitor-loss 策略保持回路）；%2 帧遥测数据在 %3/telemetry.csv 中</translation>
-    </message>
-    <message>
-        <source>t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses</source>
-        <translation>t = %1 s：期望 %2 mm，测量 %3 mm，%4 次错过截止时间</translation>
-    </message>
-    <message>
-        <source>the controller: %1</source>
-        <translation>控制器：%1</translation>
-    </message>
-    <message>
-        <source>%1 ticks on the controller; %2</source>
-        <translation>控制器上 %1 个周期；%2</translation>
-    </message>
-    <message>
-        <source>deadline misses: %1 (worst %2 us late); telemetry %3 received, %4 dropped</source>
-        <translation>错过截止时间：%1 次（最差延迟 %2 us）；遥测：收到 %3 帧，丢弃 %4 帧</translation>
-    </message>
-    <message>
-        <source>outputs: %1/telemetry.csv, %1/summary.json</source>
-        <translation>输出：%1/telemetry.csv，%1/summary.json</translation>
-    </message>
-</context>
-<context>
-    <name>MethodComparisonTable</name>
-    <message>
-        <source>Method comparison on %1: %2 samples</source>
-        <translation>方法比较：%1，%2 个样本</translation>
-    </message>
-    <message>
-        <source>method</source>
-        <translation>方法</translation>
-    </message>
-    <message>
-        <source>NRMSE [%]</source>
-        <translation>NRMSE [%]</translation>
-    </message>
-    <message>
-        <source>CPU [s]</source>
-        <translation>CPU [s]</translation>
-    </message>
-    <message>
-        <source>on bounds</source>
-        <translation>位于边界</translation>
-    </message>
-    <message>
-        <source>rejected</source>
-        <translation>拒绝</translation>
-    </message>
-    <message>
-        <source>verdict</source>
-        <translation>结论</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>无</translation>
-    </message>
-    <message>
-        <source>  recommended: %1 (the cheapest within 5 % of the best NRMSE)</source>
-        <translation>  推荐：%1（NRMSE 在最佳值 5 % 以内的最省时方法）</translation>
-    </message>
-    <message>
-        <source>  verdict: %1</source>
-        <translation>  结论：%1</translation>
-    </message>
-    <message>
-        <source>  outputs: %1 (comparison.csv, summary.json; each method&apos;s own files in calibration/, ukf/, nelder-mead/)</source>
-        <translation>  输出：%1（comparison.csv、summary.json；各方法自己的文件在 calibration/、ukf/、nelder-mead/ 中）</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::PreflightDialog</name>
-    <message>
-        <source>not measured</source>
-        <translation>未测量</translation>
-    </message>
-    <message>
-        <source>Measured d and F: what the specimen reported after the link was prepared, before any target was sent; for a specimen loaded by an earlier test, d is its last committed deformation and F is measured at the first step.</source>
-        <translation>实测 d 和 F：链路准备好后、发送任何目标之前试件报告的值；对于已被先前试验加载的试件，d 是其最后一个已提交步的变形，F 在第一步测量。</translation>
-    </message>
-    <message>
-        <source>Specimen loaded by an earlier test</source>
-        <translation>试件已被先前的试验加载</translation>
-    </message>
-    <message>
-        <source>%1 has %L2 committed steps from an earlier test; its last committed deformation is %3 %4. This test starts from rest: its first target moves the specimen from there.</source>
-        <translation>%1 已有先前试验的 %L2 个已提交步；其最后一个已提交步的变形为 %3 %4。本试验从静止开始：第一个目标将使试件从该位置移动。</translation>
-    </message>
-    <message>
-        <source>Its controller refused a fresh specimen (%1): replace the specimen at the controller and restart the controller without its state file, or continue on the loaded specimen.</source>
-        <translation>其控制器拒绝了新试件（%1）：请在控制器处更换试件，并在不带状态文件的情况下重启控制器，或在已加载的试件上继续。</translation>
-    </message>
-    <message>
-        <source>Choose: continue on the loaded specimen (its damage is part of this test), or a fresh specimen (its controller resets it to step 0, then this check is shown again).</source>
-        <translation>请选择：在已加载的试件上继续（其损伤计入本试验），或使用新试件（其控制器将其重置到第 0 步，然后再次显示本检查）。</translation>
-    </message>
-    <message>
-        <source>Continue on the loaded specimen</source>
-        <translation>在已加载的试件上继续</translation>
-    </message>
-    <message>
-        <source>Fresh specimen</source>
-        <translation>新试件</translation>
-    </message>
-    <message>
-        <source>Reset the specimen</source>
-        <translation>重置试件</translation>
-    </message>
-    <message>
-        <source>Continuing would move it by about %1 %2 at the first step, more than the increment limit %3 %2: the controller would hold the test. Choose a fresh specimen, or bring the specimen back to rest at the controller.</source>
-        <translation>继续将使其在第一步移动约 %1 %2，超过增量限值 %3 %2：控制器会保持（暂停）试验。请选择新试件，或在控制器处使试件回到静止位置。</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::MainWindow</name>
-    <message>
-        <source>asking the controller for a fresh specimen...</source>
-        <translation>正在向控制器请求新试件...</translation>
-    </message>
-</context>
-<context>
-    <name>OperatorEvent</name>
-    <message>
-        <source>%1 (%L2 committed steps, last deformation %3 %4)</source>
-        <translation>%1（%L2 个已提交步，最后变形 %3 %4）</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator continues on it</source>
-        <translation>试件已被先前的试验加载：%1；操作员在其上继续</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller reset it to step 0</source>
-        <translation>试件已被先前的试验加载：%1；操作员选择了新试件，其控制器已将其重置到第 0 步</translation>
-    </message>
-    <message>
-        <source>specimen loaded by an earlier test: %1; the operator chose a fresh specimen, its controller refused (nothing changed)</source>
-        <translation>试件已被先前的试验加载：%1；操作员选择了新试件，其控制器拒绝（未作任何更改）</translation>
-    </message>
-</context>
-<context>
-    <name>hsmu::gui::TestWorker</name>
     <message>
         <source>the controller of %1 refused a fresh specimen: %2; replace the specimen at the controller, or continue on the loaded specimen</source>
         <translation>%1 的控制器拒绝了新试件：%2；请在控制器处更换试件，或在已加载的试件上继续</translation>
     </message>
 </context>
 <context>
-    <name>hsmu::gui::PlotElementPicker</name>
+    <name>hsmu::gui::TrackingHistoryPlot</name>
     <message>
-        <source>Element:</source>
-        <translation>单元：</translation>
+        <source>Delay and amplitude error (moving window)</source>
+        <translation>延迟与幅值误差（滑动窗口）</translation>
     </message>
     <message>
-        <source>The element this plot shows</source>
-        <translation>此图显示的单元</translation>
+        <source>time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>delay [ms]</source>
+        <translation>延迟 [ms]</translation>
+    </message>
+    <message>
+        <source>amplitude error [%]</source>
+        <translation>幅值误差 [%]</translation>
     </message>
 </context>
 </TS>

@@ -49,6 +49,7 @@ bool ControllerApp::startRths(const std::string& token, std::string& error) {
         job.partition = cfg.partition();
         job.groundMotion = loadRthsGroundMotion(cfg, "", cfg.groundMotionScale);
         job.holdAfterMisses = cfg.holdAfterMisses;
+        job.configuration = cfg.raw.dump();
         const rths::Preflight pre = rths::preflight(job.partition, job.settings);
         std::fprintf(stderr, "hsmu-controller: pre-flight: %s\n", pre.message.c_str());
         if (pre.refused) {
@@ -68,6 +69,7 @@ bool ControllerApp::startRths(const std::string& token, std::string& error) {
     o.spinMicros = m_cmd.spinMicros;
     o.quiet = m_cmd.quiet;
     o.holdOnMonitorLoss = m_cmd.monitorLossHolds;
+    o.recordDirectory = m_cmd.record;
     m_rthsServer = std::make_unique<RthsServer>(o, std::move(job));
     if (!m_rthsServer->listen(error))
         return false;

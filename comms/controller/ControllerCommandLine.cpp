@@ -21,6 +21,7 @@ const char* ControllerCommandLine::usage() {
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "       hsmu-controller --rths FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]\n"
            "                       [--token-file F] [--realtime-priority P] [--spin-us N] [--monitor-loss hold|continue]\n"
+           "                       [--record DIR]\n"
            "  --rths FILE     run the whole RTHS loop of this RTHS configuration (or\n"
            "                  rths-benchmark-case-1 .. -4) on the controller; a console\n"
            "                  monitors it (`hsmu rths --controller`; docs/rths.md)\n"
@@ -30,6 +31,8 @@ const char* ControllerCommandLine::usage() {
            "  --monitor-loss P\n"
            "                  RTHS: when the monitor's link is lost during a run, hold the\n"
            "                  loop (hold, default) or let it run on (continue)\n"
+           "  --record DIR    RTHS: write each run's every tick to DIR/record.h5 (the second\n"
+           "                  run's to DIR/record-2.h5, ...) on this machine, as `hsmu rths`\n"
            "  --config FILE   the console's test configuration (JSON) or a preset name\n"
            "                  (e.g. paper-condition-3); its experimental\n"
            "                  elements' specimen sections and the optional controller section\n"
@@ -145,6 +148,13 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
         } else if (a == "--rths") {
             if (!value(c.rths))
                 return std::nullopt;
+        } else if (a == "--record") {
+            if (!value(c.record))
+                return std::nullopt;
+            if (c.record.empty()) {
+                error = "--record: expected a folder";
+                return std::nullopt;
+            }
         } else if (a == "--monitor-loss") {
             if (!value(v))
                 return std::nullopt;
@@ -212,6 +222,10 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
         return c;
     if (!c.rths.empty() && !c.config.empty()) {
         error = "--rths and --config exclude each other (an RTHS loop or specimens)";
+        return std::nullopt;
+    }
+    if (!c.record.empty() && c.rths.empty()) {
+        error = "--record DIR applies to --rths (a specimen's record is the console's)";
         return std::nullopt;
     }
     if (c.config.empty() && c.rths.empty()) {

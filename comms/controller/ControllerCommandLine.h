@@ -8,9 +8,11 @@
 //                   --tls-pins F --tls-revoked F]
 //   hsmu-controller --rths FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]
 //                   [--token-file F] [--realtime-priority P] [--monitor-loss hold|continue]
+//                   [--record DIR]
 //
 // --rths runs the whole RTHS loop on the controller (RthsServer; docs/rths.md) instead of
-// serving specimens; --config is then not needed and there is no state file.
+// serving specimens; --config is then not needed and there is no state file. --record DIR
+// (only with --rths) writes each run's every tick to DIR/record.h5 (run N >= 2: record-N.h5).
 
 // --port 0 picks a free port; the chosen one is printed on stdout ("listening on ADDR:PORT").
 // --bind defaults to 127.0.0.1: exposing the controller is an explicit choice. The --tls-*
@@ -55,6 +57,7 @@ struct ControllerCommandLine {
     double replyDelay = 0.0;  ///< --reply-delay MS, in seconds (native; tests and benchmarks)
     std::string rths;         ///< --rths FILE|PRESET: the RTHS loop's configuration
     bool monitorLossHolds = true; ///< --monitor-loss hold (default) | continue (RTHS)
+    std::string record;       ///< --record DIR: the RTHS runs' records (RTHS); "" = none
 
     /// nullopt with a sentence in error when the arguments are wrong.
     static std::optional<ControllerCommandLine> parse(int argc, const char* const* argv,

@@ -5,6 +5,8 @@
 #include "comms/controller/SecretCompare.h"
 #include "comms/tls/ByteStream.h"
 #include "comms/rths/RthsMonitor.h"
+#include "core/record/RecordWriter.h"
+#include "core/record/RthsRecord.h"
 #include "core/rths/RthsBenchmark.h"
 
 #include <boost/asio/io_context.hpp>
@@ -14,6 +16,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -43,6 +46,10 @@ struct RthsServer::Impl final : SessionHost {
     std::unique_ptr<RealtimePacer> pacer;
     std::unique_ptr<MonitorGate> gate;
     std::unique_ptr<TelemetryFeed> feed;
+    std::unique_ptr<RecordWriter> record;             // --record: this run's record.h5
+    std::unique_ptr<rths::RthsRecordFeed> recordFeed; // its ticks, from the loop's thread
+    std::string recordPath;
+    rths::TickObservers observers;                    // feed, then recordFeed
     std::thread loop;
     std::atomic<bool> finished{false};
     bool running = false;
@@ -161,6 +168,9 @@ struct RthsServer::Impl final : SessionHost {
         if (opt.realTime && opt.spinMicros >= h * 1e6)
             return ErrorMsg{ErrorCode::ProtocolViolation,
                             "rths-start: --spin-us must stay below the loop period"};
+        std::string error;
+        if (!opt.recordDirectory.empty() && !openRecord(h, error))
+            return ErrorMsg{ErrorCode::ProtocolViolation, "rths-start: " + error};
         clock = std::make_unique<SpinningClock>(
             monotonic, opt.spinMicros < 0.0 ? defaultSpinMargin(h)
                                             : std::chrono::nanoseconds(std::int64_t(opt.spinMicros * 1e3)));
@@ -168,6 +178,9 @@ struct RthsServer::Impl final : SessionHost {
         gate = std::make_unique<MonitorGate>(pacer.get(), h);
         const long every = m.decimation > 0 ? long(m.decimation) : defaultDecimation(job.settings.rate);
         feed = std::make_unique<TelemetryFeed>(*gate, every);
+        observers = {};
+        observers.add(feed.get());
+        observers.add(recordFeed.get());
         finished = false;
         running = true;
         holdAsked.clear();
@@ -180,7 +193,7 @@ struct RthsServer::Impl final : SessionHost {
                 priorityRefusal = enterRealtimePriority(opt.realTimePriority);
             try {
                 result = rths::runRths(job.partition, job.groundMotion, job.settings, gate.get(),
-                                       duration, feed.get());
+                                       duration, &observers);
             } catch (const std::exception& e) {
                 result = {};
                 loopError = e.what();
@@ -194,6 +207,52 @@ struct RthsServer::Impl final : SessionHost {
         log(o.str());
         armPoll();
         return AckMsg{MessageType::RthsStart, 0};
+    }
+
+    /// The first free DIR/record.h5, DIR/record-2.h5, ... (an earlier run's record is never
+    /// overwritten), opened for this run; false with the reason.
+    bool openRecord(double h, std::string& error) {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::create_directories(opt.recordDirectory, ec);
+        if (ec) {
+            error = "cannot create the record folder " + opt.recordDirectory + ": " + ec.message();
+            return false;
+        }
+        for (int n = 1;; ++n) {
+            const fs::path p = fs::path(opt.recordDirectory) /
+                               (n == 1 ? std::string("record.h5") : "record-" + std::to_string(n) + ".h5");
+            if (!fs::exists(p, ec)) {
+                recordPath = p.string();
+                break;
+            }
+        }
+        const auto floors = int(job.partition.reference.m.rows());
+        try {
+            record = std::make_unique<RecordWriter>(recordPath, rths::rthsLayout(floors),
+                                                    RecordStart{job.configuration, job.name, {}, h});
+        } catch (const std::exception& e) {
+            error = e.what();
+            return false;
+        }
+        recordFeed = std::make_unique<rths::RthsRecordFeed>(*record, job.groundMotion, floors);
+        return true;
+    }
+
+    /// The run's record: its hold as a critical alarm, then closed (after the loop's join).
+    void closeRecord() {
+        if (!record)
+            return;
+        if (!result.hold.empty()) {
+            const bool deadline = pacer && job.holdAfterMisses > 0 && pacer->misses() >= job.holdAfterMisses;
+            record->writeAlarms({rths::rthsHoldAlarm(result, deadline)});
+        }
+        if (record->finish())
+            log("record: " + recordPath + " (" + std::to_string(result.time.size()) + " ticks)");
+        else
+            log("record: " + recordPath + ": " + record->error());
+        recordFeed.reset();
+        record.reset();
     }
 
     void armPoll() {
@@ -229,6 +288,7 @@ struct RthsServer::Impl final : SessionHost {
 
     void endRun() {
         loop.join();
+        closeRecord();
         drain();
         running = false;
         if (!priorityRefusal.empty())

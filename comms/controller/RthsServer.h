@@ -13,6 +13,9 @@
 //   - telemetry: one frame every `decimation` ticks (TelemetryFeed's bounded ring, drained by
 //     the io thread every kPoll; a slow or absent monitor loses frames, counted, never the
 //     loop's time); rths-end with the summary when the run ends;
+//   - with recordDirectory, every tick of a run goes to a record.h5 on this machine (the same
+//     RthsRecordFeed and RecordWriter as `hsmu rths --out`), a hold as its critical alarm;
+//     a record that cannot be created refuses the run (Error) before it starts;
 //   - the monitor's link lost during a run: the loop holds (holdOnMonitorLoss, the default)
 //     or goes on, logged on stderr either way.
 // Thread rules: construct, listen() and run() on one thread; stop() from any thread.
@@ -37,6 +40,9 @@ struct RthsServerOptions {
     double spinMicros = -1.0;  ///< busy-wait before each release [us] (SpinningClock); 0: sleep; < 0: defaultSpinMargin
     bool quiet = false;
     bool holdOnMonitorLoss = true; ///< --monitor-loss hold (default) | continue
+    /// --record DIR: each run's every tick through core's RthsRecord writer to DIR/record.h5
+    /// (the Nth run of this server, N >= 2: DIR/record-N.h5); "" = no record
+    std::string recordDirectory;
 };
 
 /// The run: what `hsmu rths` would run for the same configuration.
@@ -46,6 +52,7 @@ struct RthsJob {
     GroundMotion groundMotion;
     rths::RthsSettings settings; ///< prepared (fitToNominalLoop)
     int holdAfterMisses = 10;    ///< deadline misses before the pacer holds; 0: never
+    std::string configuration;   ///< the configuration's JSON as given (the record keeps it)
 };
 
 class RthsServer {

@@ -4,6 +4,16 @@
 
 namespace hsmu::rths {
 
+Alarm rthsHoldAlarm(const RthsRun& run, bool deadlineMiss)
+{
+    const bool console = run.hold.rfind("console hold", 0) == 0 || run.hold.rfind("emergency hold", 0) == 0;
+    const AlarmKind kind = deadlineMiss ? AlarmKind::ControlFault
+                           : console    ? AlarmKind::OperatorHold
+                                        : AlarmKind::LimitExceeded;
+    const int last = run.time.empty() ? 0 : int(run.time.size()) - 1;
+    return Alarm(run.time.empty() ? 0.0 : run.time.back(), last, AlarmSeverity::Critical, kind, run.hold);
+}
+
 RunLayout rthsLayout(int floors)
 {
     RunLayout layout;

@@ -15,8 +15,15 @@
 #include "core/groundmotion/GroundMotion.h"
 #include "core/output/RunLayout.h"
 #include "core/rths/RthsBenchmark.h"
+#include "core/util/Alarm.h"
 
 namespace hsmu::rths {
+
+/// The critical alarm a held run leaves in its record's /alarms at its last tick (docs/rths.md,
+/// "The benchmark"): ControlFault for the deadline-miss policy (deadlineMiss), OperatorHold
+/// for a console's hold or emergency hold, LimitExceeded for a limit of the plant or command;
+/// the message is run.hold. Only for a held run (run.hold not empty).
+Alarm rthsHoldAlarm(const RthsRun& run, bool deadlineMiss);
 
 /// The record's layout for a partition with `floors` floors.
 RunLayout rthsLayout(int floors);

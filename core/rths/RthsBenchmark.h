@@ -58,6 +58,23 @@ public:
                         const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) = 0;
 };
 
+/// Hands every tick to each of several observers, in the order added (e.g. the controller's
+/// telemetry feed and its record); not owned.
+class TickObservers final : public TickObserver {
+public:
+    void add(TickObserver* observer) { if (observer) m_observers.push_back(observer); }
+    bool empty() const { return m_observers.empty(); }
+    void onTick(long k, const RthsTick& tick,
+                const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) override
+    {
+        for (TickObserver* o : m_observers)
+            o->onTick(k, tick, reference);
+    }
+
+private:
+    std::vector<TickObserver*> m_observers;
+};
+
 /// Run a whole record (its duration, at settings.rate) and evaluate it; with a gate, each tick
 /// waits for admit() and reports done(); with an observer, each tick is handed to it as it is
 /// sampled (so a record on disk holds every tick up to a crash). duration > 0 stops earlier [s].

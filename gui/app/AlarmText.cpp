@@ -271,6 +271,18 @@ QString AlarmText::translate(const std::string& code, const QStringList& a) {
         return tr("identification step rejected: %1").arg(reason(a[0]));
     if (is("tracking", 2))
         return tr("actuator tracking error J2 = %1 % (delay J1 = %2 s)").arg(a[0], a[1]);
+    if (is("rths-not-followed", 1))
+        return tr("RTHS run not followed: %1").arg(reason(a[0]));
+    if (is("rths-held", 1))
+        return tr("RTHS run held: %1").arg(reason(a[0]));
+    if (is("rths-j1-warning", 2))
+        return tr("live delay J1 = %1 ms over the warning threshold %2 ms").arg(a[0], a[1]);
+    if (is("rths-j1-critical", 2))
+        return tr("live delay J1 = %1 ms over the critical threshold %2 ms").arg(a[0], a[1]);
+    if (is("rths-j2-warning", 2))
+        return tr("live tracking error J2 = %1 % over the warning threshold %2 %").arg(a[0], a[1]);
+    if (is("rths-j2-critical", 2))
+        return tr("live tracking error J2 = %1 % over the critical threshold %2 %").arg(a[0], a[1]);
     if (is("parameter-pinned", 3))
         return tr("%1 has been at its bound %2 for %3 s").arg(a[0], a[1], a[2]);
     if (is("auxiliary-not-converged", 1))

@@ -4,6 +4,7 @@
 #include "gui/app/AlarmList.h"
 #include "gui/app/AlarmText.h"
 #include "gui/app/AlarmPanel.h"
+#include "gui/app/RthsPanel.h"
 #include "gui/app/AttentionBanner.h"
 #include "gui/app/ConsoleSettings.h"
 #include "gui/app/ControlBar.h"
@@ -95,6 +96,12 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     connect(m_banner, &AttentionBanner::acknowledgeAllRequested, m_alarms,
             &AlarmList::acknowledgeAll);
     connect(m_alarms, &AlarmList::attentionChanged, this, &MainWindow::onAttention);
+    // Real-time hybrid simulation: its own view (hidden until the View menu shows it); the
+    // emergency hold (every window, always) holds its loop too.
+    m_rths = new RthsPanel(m_alarms, this);
+    m_rthsDock = addDock(m_rths, QString(), QStringLiteral("rthsDock"), Qt::LeftDockWidgetArea);
+    m_rthsDock->hide();
+    connect(m_controls->emergencyHoldAction(), &QAction::triggered, m_rths, &RthsPanel::emergencyHold);
 
     m_status = new TestStatusBar(this);
     setStatusBar(m_status);
@@ -119,6 +126,7 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
         m_parametersDock->setWindowTitle(tr("Parameters"));
         pending->setWindowTitle(tr("Pending updates"));
         m_alarmDock->setWindowTitle(tr("Alarms and events"));
+        m_rthsDock->setWindowTitle(tr("Real-time hybrid simulation"));
         showTitle();
         if (m_controller->hasTest())
             showLink();

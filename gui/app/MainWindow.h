@@ -57,6 +57,7 @@ class LivePlotsPanel;
 class ParametersPanel;
 class PendingUpdatesPanel;
 class PreflightDialog;
+class RthsPanel;
 class SetupPanel;
 class TestController;
 class TestStatusBar;
@@ -83,6 +84,8 @@ public:
     PreflightDialog* preflightDialog() const { return m_preflight; }
     /// The Stop / Quit confirmation while it is open, else nullptr.
     QMessageBox* confirmation() const { return m_confirmation; }
+    /// The real-time hybrid simulation view (the "rthsDock" dock; View menu).
+    RthsPanel* rthsPanel() const { return m_rths; }
     /// Every keyboard shortcut of the console, one per line (Help > Keyboard shortcuts).
     static QString shortcutsText();
 
@@ -154,6 +157,8 @@ private:
     PendingUpdatesPanel* m_pending = nullptr;
     AlarmList* m_alarms = nullptr;
     QDockWidget* m_alarmDock = nullptr;
+    RthsPanel* m_rths = nullptr;
+    QDockWidget* m_rthsDock = nullptr;
     QDockWidget* m_setupDock = nullptr;
     QDockWidget* m_parametersDock = nullptr;
     TestStatusBar* m_status = nullptr;

@@ -211,9 +211,7 @@ int RthsCommand::exec(const QStringList& arguments)
             // A deadline-miss hold is the pacer's; any other is a limit of the plant or command.
             const bool deadline = pace == QLatin1String("realtime") && cfg.holdAfterMisses > 0 &&
                                   pacer.misses() >= cfg.holdAfterMisses;
-            const auto last = run.time.empty() ? 0 : int(run.time.size()) - 1;
-            record.writeAlarms({Alarm(run.time.empty() ? 0.0 : run.time.back(), last, AlarmSeverity::Critical,
-                                      deadline ? AlarmKind::ControlFault : AlarmKind::LimitExceeded, run.hold)});
+            record.writeAlarms({rths::rthsHoldAlarm(run, deadline)});
         }
         if (!record.finish())
             return fail(QString::fromStdString(record.error()));

@@ -1,20 +1,16 @@
 #include "gui/cli/RthsRemote.h"
 
-#include "comms/link/LinkClient.h"
+#include "gui/cli/RthsLink.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/RthsCommand.h"
 #include "gui/cli/SignalHold.h"
 
 #include <cstdio>
 #include <fstream>
-#include <random>
 
 namespace hsmu::gui {
 
 namespace {
-
-constexpr double kConnectTimeout = 10.0; ///< [s]
-constexpr double kFrameTimeout = 1.0;    ///< [s] one wait for a frame (the link's silence timeout judges loss)
 
 int fail(const QString& message) {
     ConsoleStreams::err() << "hsmu rths: " << message << Qt::endl;
@@ -50,36 +46,25 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
     if (!csv)
         return fail(RthsCommand::tr("%1/telemetry.csv: cannot be written").arg(o.out));
     csv << "tick,time_s,desired_m,command_m,measured_m,force_N,misses,worstLateness_us,dropped,holding\n";
-    comms::LinkClient link;
-    std::string error;
-    if (!link.connect(o.host.toStdString(), o.port, kConnectTimeout, error))
-        return fail(RthsCommand::tr("cannot reach the controller %1:%2: %3").arg(o.host).arg(o.port).arg(QString::fromStdString(error)));
-    const std::uint64_t session = std::random_device{}() | (std::uint64_t(std::random_device{}()) << 32);
-    link.send(comms::HelloMsg{comms::kProtocolVersion, session, o.token.toStdString(), {}}, error);
-    const auto ack = link.receive(kConnectTimeout, error);
-    if (!ack || !std::holds_alternative<comms::HelloAckMsg>(*ack)) {
-        const auto* e = ack ? std::get_if<comms::ErrorMsg>(&*ack) : nullptr;
-        return fail(RthsCommand::tr("the controller refused the monitor: %1").arg(QString::fromStdString(e ? e->reason : error)));
-    }
+    RthsLink link;
+    std::string error, description;
+    if (!link.open(o.host.toStdString(), o.port, o.token.toStdString(), o.decimation, o.duration, description, error))
+        return fail(QString::fromStdString(error));
     auto& out = ConsoleStreams::out();
-    out << RthsCommand::tr("controller: %1").arg(QString::fromStdString(std::get<comms::HelloAckMsg>(*ack).description)) << Qt::endl;
-    link.send(comms::RthsStartMsg{o.decimation, o.duration}, error);
-    SignalHold holdOnSignal([&link](const std::string& why) {
-        std::string e;
-        link.send(comms::HoldMsg{why + " by hsmu rths"}, e);
-    });
+    out << RthsCommand::tr("controller: %1").arg(QString::fromStdString(description)) << Qt::endl;
+    SignalHold holdOnSignal([&link](const std::string& why) { link.hold(why + " by hsmu rths", false); });
     long frames = 0;
     double lastPrinted = -1.0;
     char row[512];
     for (;;) {
-        const auto m = link.receive(kFrameTimeout, error);
-        if (!m && link.isOpen())
-            continue; // the controller evaluates the run (J1..J9) after its last tick: the link's
-                      // heartbeats, not this wait, say whether it is still there
-        if (!m)
+        const RthsLink::Event ev = link.next();
+        if (ev.kind == RthsLink::Event::Kind::Failed && ev.lost)
             return fail(RthsCommand::tr("the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv")
-                            .arg(QString::fromStdString(error)).arg(frames).arg(o.out));
-        if (const auto* t = std::get_if<comms::TelemetryMsg>(&*m)) {
+                            .arg(QString::fromStdString(ev.error)).arg(frames).arg(o.out));
+        if (ev.kind == RthsLink::Event::Kind::Failed)
+            return fail(QString::fromStdString(ev.error));
+        if (ev.kind == RthsLink::Event::Kind::Telemetry) {
+            const comms::TelemetryMsg* t = &ev.telemetry;
             ++frames;
             std::snprintf(row, sizeof row, "%llu,%.17g,%.17g,%.17g,%.17g,%.17g,%llu,%.3f,%llu,%d\n",
                           static_cast<unsigned long long>(t->tick), t->time, t->desired, t->command,
@@ -93,10 +78,9 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
                            .arg(t->time, 0, 'f', 2).arg(t->desired * 1e3, 0, 'f', 3)
                            .arg(t->measured * 1e3, 0, 'f', 3).arg(t->misses) << Qt::endl;
             }
-        } else if (const auto* e = std::get_if<comms::ErrorMsg>(&*m)) {
-            return fail(RthsCommand::tr("the controller: %1").arg(QString::fromStdString(e->reason)));
-        } else if (const auto* end = std::get_if<comms::RthsEndMsg>(&*m)) {
-            link.send(comms::ByeMsg{"run ended"}, error);
+        } else {
+            const comms::RthsEndMsg* end = &ev.end;
+            link.bye("run ended");
             csv.close();
             nlohmann::json summary = summaryOf(*end, s, pre);
             summary["name"] = cfg.name;

@@ -7,12 +7,17 @@
 // Holds (hold, emergency hold, the monitor's link lost) hold the loop before a tick, the end
 // says so and carries the ticks before it; they are asked after the first telemetry frame,
 // on a 30 s record at the real-time pace (so the run is still going; nothing is timed).
+// --record DIR: the controller writes every tick of each run to DIR/record.h5 through core's
+// RthsRecord writer (the second run to record-2.h5): its rows are the local run's ticks bit
+// for bit (time, desired, command, measured, force, floors), a hold is its critical alarm at
+// the last tick; --record without --rths is refused.
 // A 2 s real-time run reports its deadline misses (printed, not asserted: the machine is
 // shared).
 #include "ControllerProcess.h"
 #include "RawClient.h"
 
 #include "core/config/RthsConfig.h"
+#include "core/record/RecordReader.h"
 #include "core/rths/RthsBenchmark.h"
 
 #include <QTemporaryDir>
@@ -215,6 +220,89 @@ private slots:
         qInfo("real-time 2 s at 1024 Hz: %llu deadline misses, worst %.1f us late (%s)",
               static_cast<unsigned long long>(m.end->misses), m.end->worstLateness * 1e6,
               ctl.log().contains(QStringLiteral("priority not taken")) ? "normal priority" : "SCHED_FIFO 80");
+    }
+
+    void recordHoldsEveryTickOfTheControllersRun() {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 3.0);
+        const QString out = dir.path() + QStringLiteral("/records");
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("fast"),
+                               QStringLiteral("--record"), out});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY2(startRun(c, 64), qPrintable(ctl.log()));
+        const Monitored m = monitor(c, [] {});
+        QVERIFY2(m.end.has_value(), qPrintable(ctl.log()));
+        QVERIFY2(ctl.waitForLog(QStringLiteral("record: ")), qPrintable(ctl.log()));
+        const rths::RthsRun local = localRun(cfg);
+        {
+            const RecordReader reader((out + QStringLiteral("/record.h5")).toStdString());
+            const RecordData& d = reader.data();
+            QCOMPARE(d.rows(), int(local.time.size())); // 3073: every tick, not every 64th
+            QCOMPARE(d.meta.configName, std::string("sine on case 1"));
+            QVERIFY(d.meta.configuration.find("\"benchmarkCase\":1") != std::string::npos);
+            QVERIFY(d.alarms.empty());
+            for (int k = 0; k < d.rows(); ++k) {
+                const auto i = std::size_t(k);
+                QCOMPARE(d.steps[i], k);
+                QVERIFY(d.time(k) == local.time[i]);
+                QVERIFY(d.commanded(k, 0) == local.desired[i]);
+                QVERIFY(d.actuatorCommanded(k, 0) == local.command[i]);
+                QVERIFY(d.deformation(k, 0) == local.measured[i]);
+                QVERIFY(d.force(k, 0) == local.force[i]);
+                for (int f = 0; f < 3; ++f) {
+                    QVERIFY(d.u(k, f) == local.hybrid(k, f));
+                    QVERIFY(d.u(k, 3 + f) == local.reference(k, f));
+                }
+            }
+        }
+        // A second run (1 s) on the same controller: record-2.h5, the first run's beginning.
+        QVERIFY(c.send(RthsStartMsg{0, 1.0}));
+        const Monitored again = monitor(c, [] {});
+        QVERIFY(again.end.has_value());
+        QVERIFY2(ctl.waitForLog(QStringLiteral("record-2.h5")), qPrintable(ctl.log()));
+        {
+            const RecordReader reader((out + QStringLiteral("/record-2.h5")).toStdString());
+            QCOMPARE(reader.data().rows(), 1025);
+            for (int k = 0; k < reader.data().rows(); ++k)
+                QVERIFY(reader.data().deformation(k, 0) == local.measured[std::size_t(k)]);
+        }
+        // Another controller, real-time pace, the same folder: record-3.h5 (nothing of the
+        // earlier records overwritten), held by the monitor: its ticks before the hold and
+        // the hold as a critical alarm at the last tick.
+        QTemporaryDir dir30;
+        const QString cfg30 = writeConfig(dir30.path(), 30.0);
+        ControllerProcess rt({QStringLiteral("--rths"), cfg30, QStringLiteral("--pace"), QStringLiteral("realtime"),
+                              QStringLiteral("--record"), out});
+        QVERIFY2(rt.start(), qPrintable(rt.log()));
+        RawClient c2;
+        QVERIFY(c2.connect(rt.port()));
+        QVERIFY(startRun(c2, 8));
+        const Monitored held = monitor(c2, [&] { c2.send(HoldMsg{"operator"}); });
+        QVERIFY(held.end.has_value());
+        QVERIFY2(!held.end->hold.empty(), qPrintable(rt.log()));
+        QVERIFY2(rt.waitForLog(QStringLiteral("record-3.h5")), qPrintable(rt.log()));
+        const RecordReader third((out + QStringLiteral("/record-3.h5")).toStdString());
+        const RecordData& d = third.data();
+        QCOMPARE(d.rows(), int(held.end->ticks));
+        QVERIFY(d.rows() < 30 * 1024);
+        QCOMPARE(d.alarms.size(), std::size_t(1));
+        QCOMPARE(d.alarms.front().severity, AlarmSeverity::Critical);
+        QCOMPARE(d.alarms.front().kind, AlarmKind::OperatorHold);
+        QCOMPARE(d.alarms.front().message, held.end->hold);
+        QCOMPARE(d.alarms.front().step, d.rows() - 1);
+        const rths::RthsRun local30 = localRun(cfg30);
+        for (int k = 0; k < d.rows(); ++k)
+            QVERIFY(d.deformation(k, 0) == local30.measured[std::size_t(k)]);
+        QCOMPARE(RecordReader((out + QStringLiteral("/record.h5")).toStdString()).data().rows(), 3073);
+    }
+
+    void recordWithoutRthsIsRefused() {
+        ControllerProcess ctl({QStringLiteral("--config"), QStringLiteral("paper-condition-3"),
+                               QStringLiteral("--record"), QStringLiteral("/tmp")});
+        QVERIFY(!ctl.start());
+        QVERIFY2(ctl.log().contains(QStringLiteral("--record DIR applies to --rths")), qPrintable(ctl.log()));
     }
 
 private:

@@ -1,0 +1,203 @@
+#include "gui/app/RthsSession.h"
+
+#include "core/rths/RthsReport.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace hsmu::gui {
+
+/// The run's gate at the fast pace: the monitor's holds, and a wait while the feed's ring is
+/// half full (the GUI thread drains it every kPollMs), so no sample is dropped.
+class RthsSession::Backpressure final : public rths::TickGate {
+public:
+    Backpressure(comms::MonitorGate& gate, const comms::TelemetryFeed& feed, const std::atomic<long>& taken)
+        : m_gate(gate), m_feed(feed), m_taken(taken) {}
+    bool admit(long k, std::string& why) override
+    {
+        while (m_feed.produced() - m_feed.dropped() - m_taken.load() > long(comms::TelemetryFeed::kCapacity / 2) &&
+               !m_gate.holdRequested())
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return m_gate.admit(k, why);
+    }
+    void done(long k) override { m_gate.done(k); }
+
+private:
+    comms::MonitorGate& m_gate;
+    const comms::TelemetryFeed& m_feed;
+    const std::atomic<long>& m_taken;
+};
+
+RthsSession::RthsSession(QObject* parent) : QObject(parent)
+{
+    m_poll.setInterval(kPollMs);
+    connect(&m_poll, &QTimer::timeout, this, &RthsSession::poll);
+}
+
+RthsSession::~RthsSession()
+{
+    if (m_gate)
+        m_gate->requestHold("console closed");
+    if (m_link && m_active) {
+        m_link->hold("console closed", false); // the controller's loop holds; nobody waits for its end
+        m_link->abandon();
+    }
+    join();
+}
+
+void RthsSession::join()
+{
+    if (m_thread.joinable())
+        m_thread.join();
+}
+
+bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace, double duration, QString* error)
+{
+    if (m_active) {
+        if (error)
+            *error = tr("an RTHS run is already going");
+        return false;
+    }
+    join();
+    rths::RthsSettings s = cfg.settings;
+    rths::fitToNominalLoop(s);
+    const rths::Partition part = cfg.partition();
+    const rths::Preflight pre = rths::preflight(part, s);
+    m_preflight = QString::fromStdString(pre.message);
+    if (pre.refused) {
+        if (error)
+            *error = tr("refused in pre-flight: %1").arg(m_preflight);
+        return false;
+    }
+    // About 1024 samples per second: the live window resolves the delay to a fraction of 1 ms.
+    const long decimation = std::max(1L, long(std::lround(s.rate / 1024.0)));
+    m_samplePeriod = double(decimation) / s.rate;
+    m_pacer = pace == Pace::RealTime
+                  ? std::make_unique<comms::RealtimePacer>(m_clock, 1.0 / s.rate, cfg.holdAfterMisses)
+                  : nullptr;
+    m_gate = std::make_unique<comms::MonitorGate>(m_pacer.get(), 1.0 / s.rate);
+    m_feed = std::make_unique<comms::TelemetryFeed>(*m_gate, decimation);
+    m_taken = 0;
+    m_backpressure = std::make_unique<Backpressure>(*m_gate, *m_feed, m_taken);
+    rths::TickGate* gate = pace == Pace::Fast ? static_cast<rths::TickGate*>(m_backpressure.get()) : m_gate.get();
+    m_done = false;
+    m_run = {};
+    m_link.reset();
+    m_failure.clear();
+    m_thread = std::thread([this, part, ag, s, gate, duration] {
+        try {
+            m_run = rths::runRths(part, ag, s, gate, duration, m_feed.get());
+        } catch (const std::exception& e) {
+            m_run.hold = std::string("the loop failed: ") + e.what();
+        }
+        m_ticks = long(m_run.time.size());
+        m_done = true;
+    });
+    m_active = true;
+    m_poll.start();
+    return true;
+}
+
+bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint16 port, const QString& token,
+                              double duration, QString* error)
+{
+    if (m_active) {
+        if (error)
+            *error = tr("an RTHS run is already going");
+        return false;
+    }
+    join();
+    const double rate = cfg.settings.rate;
+    const long decimation = std::max(1L, long(std::lround(rate / 1024.0)));
+    m_samplePeriod = double(decimation) / rate;
+    m_preflight = tr("the controller's (%1:%2)").arg(host).arg(port);
+    m_backpressure.reset();
+    m_feed.reset();
+    m_gate.reset();
+    m_pacer.reset();
+    m_link = std::make_unique<RthsLink>();
+    m_remoteSamples.clear();
+    m_failure.clear();
+    m_run = {};
+    m_ticks = 0;
+    m_done = false;
+    m_thread = std::thread([this, h = host.toStdString(), port, t = token.toStdString(), decimation, duration] {
+        std::string description, why;
+        if (!m_link->open(h, port, t, unsigned(decimation), duration, description, why)) {
+            m_failure = why;
+            m_done = true;
+            return;
+        }
+        for (;;) {
+            const RthsLink::Event ev = m_link->next();
+            if (ev.kind == RthsLink::Event::Kind::Telemetry) {
+                const comms::TelemetryMsg& f = ev.telemetry;
+                std::lock_guard lock(m_remoteMutex);
+                m_remoteSamples.push_back({long(f.tick), f.time, f.desired, f.command, f.measured, f.force,
+                                           long(f.misses), f.worstLateness});
+                continue;
+            }
+            if (ev.kind == RthsLink::Event::Kind::End) {
+                m_run.hold = ev.end.hold;
+                for (int i = 0; i < 9; ++i)
+                    m_run.criteria.j[i] = ev.end.j[i];
+                m_ticks = long(ev.end.ticks);
+                m_link->bye("run ended");
+            } else {
+                m_failure = ev.lost ? tr("the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)")
+                                          .arg(QString::fromStdString(ev.error)).toStdString()
+                                    : ev.error;
+            }
+            break;
+        }
+        m_done = true;
+    });
+    m_active = true;
+    m_poll.start();
+    return true;
+}
+
+void RthsSession::hold()
+{
+    if (m_gate)
+        m_gate->requestHold("console hold: operator");
+    if (m_link)
+        m_link->hold("operator at the console", false);
+}
+
+void RthsSession::emergencyHold()
+{
+    if (m_gate)
+        m_gate->requestHold("emergency hold (console)");
+    if (m_link)
+        m_link->hold("operator at the console", true);
+}
+
+void RthsSession::poll()
+{
+    const bool done = m_done.load(); // before draining: every sample of a finished run is taken
+    m_batch.clear();
+    if (m_feed) {
+        comms::TelemetrySample sample;
+        while (m_feed->pop(sample)) {
+            m_batch.push_back(sample);
+            ++m_taken;
+        }
+    } else {
+        std::lock_guard lock(m_remoteMutex);
+        m_batch.swap(m_remoteSamples);
+    }
+    if (!m_batch.empty())
+        emit samples(m_batch);
+    if (!done)
+        return;
+    m_poll.stop();
+    join();
+    m_active = false;
+    if (!m_failure.empty())
+        emit failed(QString::fromStdString(m_failure));
+    else
+        emit finished(QString::fromStdString(m_run.hold), m_run.criteria, m_ticks);
+}
+
+} // namespace hsmu::gui

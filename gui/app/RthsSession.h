@@ -1,0 +1,91 @@
+#pragma once
+// RthsSession: an RTHS run on the console's built-in virtual lab (docs/rths.md, "The console's
+// RTHS view"): core's runRths on a worker thread, at the simulated (fast) or the wall clock's
+// pace, through the controller's own pieces (comms/rths/RthsMonitor: MonitorGate for the holds
+// and the real-time pacer, TelemetryFeed for one sample every decimation ticks), so a local run
+// and a monitored `hsmu-controller --rths` run reach the view as the same samples.
+// The GUI thread drains the samples every kPollMs and emits them in order; at the fast pace the
+// loop waits while half the feed's ring is undrained (nothing dropped, the simulated time does
+// not care). hold() / emergencyHold() hold the loop before its next tick (no resume: a held
+// RTHS run restarts from rest). The destructor holds a running loop and joins it.
+// Thread rules: GUI thread, except the loop's own thread inside.
+
+#include "comms/rths/RthsMonitor.h"
+#include "core/config/RthsConfig.h"
+#include "gui/cli/RthsLink.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace hsmu::gui {
+
+class RthsSession : public QObject {
+    Q_OBJECT
+public:
+    enum class Pace { Fast, RealTime };
+    static constexpr int kPollMs = 30;
+
+    explicit RthsSession(QObject* parent = nullptr);
+    ~RthsSession() override;
+
+    /// Prepare cfg's settings (fitToNominalLoop), run pre-flight and start the loop over ag
+    /// [m/s^2]; duration > 0 stops after that many seconds. False with *error (pre-flight's
+    /// refusal, a run already going) and nothing started.
+    bool start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace, double duration, QString* error);
+    /// Monitor the loop `hsmu-controller --rths` runs at host:port instead (RthsLink, the
+    /// protocol of `hsmu rths --controller`; token: the hello's): the controller runs its own copy
+    /// of the configuration at its own pace; cfg gives the rate, so the samples' spacing. The
+    /// connection is made on the session's thread: a failure comes as failed().
+    bool startRemote(const RthsConfig& cfg, const QString& host, quint16 port, const QString& token,
+                     double duration, QString* error);
+    /// From start() until finished() was emitted (GUI thread's view: the loop may have ended).
+    bool running() const { return m_active; }
+    /// The samples' spacing: decimation / rate [s].
+    double samplePeriod() const { return m_samplePeriod; }
+    /// Pre-flight's sentence of the last start().
+    const QString& preflight() const { return m_preflight; }
+    void hold();
+    void emergencyHold();
+
+signals:
+    /// Every sample since the last batch, oldest first (GUI thread).
+    void samples(const std::vector<hsmu::comms::TelemetrySample>& batch);
+    /// The run ended: hold is why it stopped early ("" when it ran out), with its J1..J9.
+    void finished(const QString& hold, const hsmu::rths::BenchmarkCriteria& criteria, long ticks);
+    /// A monitored run could not be followed (refused, link lost): why.
+    void failed(const QString& why);
+
+private:
+    class Backpressure;
+    void poll();
+    void join();
+
+    QTimer m_poll;
+    comms::MonotonicClock m_clock;
+    std::unique_ptr<comms::RealtimePacer> m_pacer;
+    std::unique_ptr<comms::MonitorGate> m_gate;
+    std::unique_ptr<comms::TelemetryFeed> m_feed;
+    std::unique_ptr<Backpressure> m_backpressure;
+    std::thread m_thread;
+    std::atomic<bool> m_done{false};
+    bool m_active = false;
+    std::atomic<long> m_taken{0};
+    rths::RthsRun m_run; // written by the loop's thread until m_done
+    double m_samplePeriod = 0.0;
+    QString m_preflight;
+    std::vector<comms::TelemetrySample> m_batch;
+    // Monitoring a controller's loop (startRemote): the link, and the frames of its thread.
+    std::unique_ptr<RthsLink> m_link;
+    std::mutex m_remoteMutex;
+    std::vector<comms::TelemetrySample> m_remoteSamples; // guarded by m_remoteMutex
+    std::string m_failure;                               // written by the thread until m_done
+    long m_ticks = 0;                                    // written by the thread until m_done
+};
+
+} // namespace hsmu::gui

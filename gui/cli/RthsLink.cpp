@@ -1,0 +1,84 @@
+#include "gui/cli/RthsLink.h"
+
+#include "gui/cli/RthsCommand.h"
+
+#include <random>
+
+namespace hsmu::gui {
+
+bool RthsLink::open(const std::string& host, std::uint16_t port, const std::string& token,
+                    unsigned decimation, double duration, std::string& description, std::string& error)
+{
+    if (!m_link.connect(host, port, kConnectTimeout, error)) {
+        error = RthsCommand::tr("cannot reach the controller %1:%2: %3")
+                    .arg(QString::fromStdString(host)).arg(port).arg(QString::fromStdString(error)).toStdString();
+        return false;
+    }
+    const std::uint64_t session = std::random_device{}() | (std::uint64_t(std::random_device{}()) << 32);
+    m_link.send(comms::HelloMsg{comms::kProtocolVersion, session, token, {}}, error);
+    const auto ack = m_link.receive(kConnectTimeout, error);
+    if (!ack || !std::holds_alternative<comms::HelloAckMsg>(*ack)) {
+        const auto* e = ack ? std::get_if<comms::ErrorMsg>(&*ack) : nullptr;
+        error = RthsCommand::tr("the controller refused the monitor: %1")
+                    .arg(QString::fromStdString(e ? e->reason : error)).toStdString();
+        return false;
+    }
+    description = std::get<comms::HelloAckMsg>(*ack).description;
+    return m_link.send(comms::RthsStartMsg{decimation, duration}, error);
+}
+
+RthsLink::Event RthsLink::next()
+{
+    Event ev;
+    for (;;) {
+        std::string error;
+        const auto m = m_link.receive(kFrameTimeout, error);
+        if (m_abandoned.load()) {
+            ev.error = "abandoned by the monitor";
+            return ev;
+        }
+        if (!m && m_link.isOpen())
+            continue;
+        if (!m) {
+            ev.lost = true;
+            ev.error = error;
+            return ev;
+        }
+        if (const auto* t = std::get_if<comms::TelemetryMsg>(&*m)) {
+            ev.kind = Event::Kind::Telemetry;
+            ev.telemetry = *t;
+            return ev;
+        }
+        if (const auto* e = std::get_if<comms::ErrorMsg>(&*m)) {
+            ev.error = RthsCommand::tr("the controller: %1").arg(QString::fromStdString(e->reason)).toStdString();
+            return ev;
+        }
+        if (const auto* end = std::get_if<comms::RthsEndMsg>(&*m)) {
+            ev.kind = Event::Kind::End;
+            ev.end = *end;
+            return ev;
+        }
+        // acks (rths-start, holds) and anything else: not events of the run
+    }
+}
+
+bool RthsLink::hold(const std::string& reason, bool emergency)
+{
+    std::string error;
+    return emergency ? m_link.send(comms::EmergencyHoldMsg{reason}, error)
+                     : m_link.send(comms::HoldMsg{reason}, error);
+}
+
+void RthsLink::abandon()
+{
+    m_abandoned = true;
+    m_link.interrupt();
+}
+
+void RthsLink::bye(const std::string& why)
+{
+    std::string error;
+    m_link.send(comms::ByeMsg{why}, error);
+}
+
+} // namespace hsmu::gui

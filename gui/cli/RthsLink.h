@@ -1,0 +1,48 @@
+#pragma once
+// RthsLink: the monitor's side of the RTHS protocol (docs/protocol.md, "RTHS monitoring"), one
+// piece for `hsmu rths --controller` (RthsRemote) and the console's RTHS view (RthsSession):
+// connect (LinkClient: token, heartbeats, silence timeout), hello, rths-start; then each frame
+// as an event (telemetry, the end, a failure); hold and emergency hold.
+// Thread rules: open / next / bye on one thread; hold() from any thread (LinkClient::send).
+
+#include "comms/link/LinkClient.h"
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+namespace hsmu::gui {
+
+class RthsLink {
+public:
+    static constexpr double kConnectTimeout = 10.0; ///< [s]
+    static constexpr double kFrameTimeout = 1.0;    ///< [s] one wait (the link's silence timeout judges loss)
+
+    /// Connect, hello with token, rths-start (decimation 0: the controller's default; duration
+    /// 0: the whole record). False with *error; description: the controller's hello-ack text.
+    bool open(const std::string& host, std::uint16_t port, const std::string& token,
+              unsigned decimation, double duration, std::string& description, std::string& error);
+
+    struct Event {
+        enum class Kind { Telemetry, End, Failed } kind = Kind::Failed;
+        comms::TelemetryMsg telemetry;
+        comms::RthsEndMsg end;
+        bool lost = false;  ///< Failed because the link was lost (error: the link's reason)
+        std::string error;  ///< Failed: the link's reason, or the controller's error (translated)
+    };
+    /// The next telemetry frame or the end (waiting as long as the link lives: after its last
+    /// tick the controller evaluates the run; heartbeats say it is still there).
+    Event next();
+    /// Ask the controller to hold the loop before its next tick; any thread.
+    bool hold(const std::string& reason, bool emergency);
+    /// Give up: a next() in progress (or the next one) returns Failed ("abandoned"); any thread.
+    void abandon();
+    /// Say goodbye (after the end).
+    void bye(const std::string& why);
+
+private:
+    comms::LinkClient m_link;
+    std::atomic<bool> m_abandoned{false};
+};
+
+} // namespace hsmu::gui
