@@ -68,6 +68,8 @@ public:
     void close();
 
     bool admitted() const { return m_admitted; }
+    /// [bytes] written by send() and not yet on the socket.
+    std::size_t queuedBytes() const { return m_queuedBytes; }
     std::uint64_t sessionId() const { return m_sessionId; }
     int station() const { return m_station; }
     void setStation(int index) { m_station = index; }

@@ -45,6 +45,7 @@ struct RthsServer::Impl final : SessionHost {
     std::unique_ptr<SpinningClock> clock;
     std::unique_ptr<RealtimePacer> pacer;
     std::unique_ptr<MonitorGate> gate;
+    std::unique_ptr<FastPaceGate> fastGate; ///< the fast pace's: waits for the ring to drain
     std::unique_ptr<TelemetryFeed> feed;
     std::unique_ptr<RecordWriter> record;             // --record: this run's record.h5
     std::unique_ptr<rths::RthsRecordFeed> recordFeed; // its ticks, from the loop's thread
@@ -178,6 +179,7 @@ struct RthsServer::Impl final : SessionHost {
         gate = std::make_unique<MonitorGate>(pacer.get(), h);
         const long every = m.decimation > 0 ? long(m.decimation) : defaultDecimation(job.settings.rate);
         feed = std::make_unique<TelemetryFeed>(*gate, every);
+        fastGate = opt.realTime ? nullptr : std::make_unique<FastPaceGate>(*gate, *feed);
         observers = {};
         observers.add(feed.get());
         observers.add(recordFeed.get());
@@ -192,7 +194,8 @@ struct RthsServer::Impl final : SessionHost {
             if (opt.realTime && opt.realTimePriority > 0)
                 priorityRefusal = enterRealtimePriority(opt.realTimePriority);
             try {
-                result = rths::runRths(job.partition, job.groundMotion, job.settings, gate.get(),
+                rths::TickGate* g = fastGate ? static_cast<rths::TickGate*>(fastGate.get()) : gate.get();
+                result = rths::runRths(job.partition, job.groundMotion, job.settings, g,
                                        duration, &observers);
             } catch (const std::exception& e) {
                 result = {};
@@ -262,7 +265,7 @@ struct RthsServer::Impl final : SessionHost {
                 return;
             const bool done = finished.load(std::memory_order_acquire);
             drain();
-            if (done)
+            if (done && (!monitor || feed->pending() == 0))
                 endRun();
             else
                 armPoll();
@@ -270,8 +273,11 @@ struct RthsServer::Impl final : SessionHost {
     }
 
     void drain() {
+        // Into the monitor's send queue only while it is below half its cap: a monitor that reads
+        // slower than the loop makes (the fast pace) leaves the samples in the ring, where the
+        // fast pace's gate waits for them and the real-time pace drops and counts them.
         TelemetrySample t;
-        while (feed->pop(t)) {
+        while ((!monitor || monitor->queuedBytes() < ControllerSession::kMaxQueuedBytes / 2) && feed->pop(t)) {
             if (!monitor) {
                 ++undelivered;
                 continue;

@@ -1,6 +1,8 @@
 #include "comms/rths/RthsMonitor.h"
 
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <cmath>
 #include <sstream>
 
@@ -61,6 +63,13 @@ bool TelemetryFeed::pop(TelemetrySample& out)
     out = m_ring[tail % kCapacity];
     m_tail.store(tail + 1, std::memory_order_release);
     return true;
+}
+
+bool FastPaceGate::admit(long k, std::string& why)
+{
+    while (m_feed.pending() > TelemetryFeed::kCapacity / 2 && !m_gate.holdRequested())
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return m_gate.admit(k, why);
 }
 
 long defaultDecimation(double rate)

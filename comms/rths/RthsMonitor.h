@@ -7,6 +7,9 @@
 //                  the link's loss refuses the next tick with a sentence naming it and the
 //                  tick; otherwise the RealtimePacer's admit / done (real-time pace), or
 //                  nothing (fast pace).
+//   FastPaceGate   the fast pace's gate: MonitorGate's holds, and a wait while the feed's ring
+//                  is half full, so a fast run (CI, the benchmark) drops no sample however
+//                  slowly its reader drains; never used at the real-time pace.
 //   TelemetryFeed  the run's TickObserver: one sample every `decimation` ticks into a bounded
 //                  single-producer single-consumer ring (kCapacity samples); a full ring drops
 //                  the sample and counts it (the loop is never delayed).
@@ -69,6 +72,8 @@ public:
     bool pop(TelemetrySample& out);
     long produced() const { return m_produced.load(std::memory_order_relaxed); } ///< samples made
     long dropped() const { return m_dropped.load(std::memory_order_relaxed); }   ///< ring full
+    /// Samples in the ring, not yet taken.
+    std::size_t pending() const { return m_head.load(std::memory_order_acquire) - m_tail.load(std::memory_order_acquire); }
 
 private:
     const MonitorGate& m_gate;
@@ -76,6 +81,17 @@ private:
     std::array<TelemetrySample, kCapacity> m_ring{};
     std::atomic<std::size_t> m_head{0}, m_tail{0}; // written by the loop / by the io thread
     std::atomic<long> m_produced{0}, m_dropped{0};
+};
+
+class FastPaceGate final : public rths::TickGate {
+public:
+    FastPaceGate(MonitorGate& gate, const TelemetryFeed& feed) : m_gate(gate), m_feed(feed) {}
+    bool admit(long k, std::string& why) override;
+    void done(long k) override { m_gate.done(k); }
+
+private:
+    MonitorGate& m_gate;
+    const TelemetryFeed& m_feed;
 };
 
 /// The default decimation: about 128 telemetry frames per second at the loop's rate [Hz].

@@ -7,27 +7,6 @@
 
 namespace hsmu::gui {
 
-/// The run's gate at the fast pace: the monitor's holds, and a wait while the feed's ring is
-/// half full (the GUI thread drains it every kPollMs), so no sample is dropped.
-class RthsSession::Backpressure final : public rths::TickGate {
-public:
-    Backpressure(comms::MonitorGate& gate, const comms::TelemetryFeed& feed, const std::atomic<long>& taken)
-        : m_gate(gate), m_feed(feed), m_taken(taken) {}
-    bool admit(long k, std::string& why) override
-    {
-        while (m_feed.produced() - m_feed.dropped() - m_taken.load() > long(comms::TelemetryFeed::kCapacity / 2) &&
-               !m_gate.holdRequested())
-            std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        return m_gate.admit(k, why);
-    }
-    void done(long k) override { m_gate.done(k); }
-
-private:
-    comms::MonitorGate& m_gate;
-    const comms::TelemetryFeed& m_feed;
-    const std::atomic<long>& m_taken;
-};
-
 RthsSession::RthsSession(QObject* parent) : QObject(parent)
 {
     m_poll.setInterval(kPollMs);
@@ -77,8 +56,7 @@ bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace
                   : nullptr;
     m_gate = std::make_unique<comms::MonitorGate>(m_pacer.get(), 1.0 / s.rate);
     m_feed = std::make_unique<comms::TelemetryFeed>(*m_gate, decimation);
-    m_taken = 0;
-    m_backpressure = std::make_unique<Backpressure>(*m_gate, *m_feed, m_taken);
+    m_backpressure = std::make_unique<comms::FastPaceGate>(*m_gate, *m_feed);
     rths::TickGate* gate = pace == Pace::Fast ? static_cast<rths::TickGate*>(m_backpressure.get()) : m_gate.get();
     m_done = false;
     m_run = {};
@@ -181,7 +159,6 @@ void RthsSession::poll()
         comms::TelemetrySample sample;
         while (m_feed->pop(sample)) {
             m_batch.push_back(sample);
-            ++m_taken;
         }
     } else {
         std::lock_guard lock(m_remoteMutex);

@@ -62,7 +62,6 @@ signals:
     void failed(const QString& why);
 
 private:
-    class Backpressure;
     void poll();
     void join();
 
@@ -71,11 +70,10 @@ private:
     std::unique_ptr<comms::RealtimePacer> m_pacer;
     std::unique_ptr<comms::MonitorGate> m_gate;
     std::unique_ptr<comms::TelemetryFeed> m_feed;
-    std::unique_ptr<Backpressure> m_backpressure;
+    std::unique_ptr<comms::FastPaceGate> m_backpressure;
     std::thread m_thread;
     std::atomic<bool> m_done{false};
     bool m_active = false;
-    std::atomic<long> m_taken{0};
     rths::RthsRun m_run; // written by the loop's thread until m_done
     double m_samplePeriod = 0.0;
     QString m_preflight;
