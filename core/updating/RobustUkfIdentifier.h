@@ -32,6 +32,9 @@
 //     a message saying why), the UKF restarts at once from the anchor (its stepped model's
 //     state), a local refit is started, and for the next divergenceWindow steps its estimates
 //     are not reportable (the Reporter passes nothing to the twins until it has recovered).
+//     Three UKF steps rejected in a row (a sigma point the law cannot integrate) restart the
+//     UKF at the anchor the same way; the anchor's model failing on a new deformation starts
+//     a global refit (AnchoredUkf.h).
 //  5b. Guard, every max(50, N / 20) steps: the anchor's NRMSE over the whole history comes
 //     from its running error (no replay); one that grew past staleRatio times its value at
 //     its fit is refitted (step 2). Else the UKF's estimate is replayed over the history
