@@ -15,9 +15,6 @@ namespace hsmu {
 
 namespace {
 
-/// UKF steps rejected in a row (a sigma point the law cannot integrate) before a refit.
-constexpr int kRejectionsBeforeReanchor = 3;
-
 std::vector<std::string> layoutNames() {
     std::vector<std::string> names(mrDamperUkfParameterNames().begin(),
                                    mrDamperUkfParameterNames().end());
@@ -162,14 +159,7 @@ MrDamperAnchorResult mrDamperAnchorJob(const MrDamperAnchorInput& in,
             if (j < 0)
                 continue;
             out.box[std::size_t(j)] = {b.lower, b.upper};
-            double fromFit = std::nan("");
-            if (bestCal)
-                for (std::size_t q = 0; q < bestCal->names.size(); ++q)
-                    if (bestCal->names[q] == b.name)
-                        fromFit = bestCal->standardDeviation[Eigen::Index(q)];
-            const double floor = 1e-2 * b.typical, cap = 0.1 * b.typical;
-            out.sd[std::size_t(j)] =
-                std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
+            out.sd[std::size_t(j)] = initialStandardDeviation(b.name, b.typical, bestCal);
         }
         // a parameter the user did not let the calibration fit: held at its value
         for (int j = 0; j < kMrDamperUkfParameters; ++j)
@@ -192,8 +182,9 @@ MrDamperUkfIdentifier::MrDamperUkfIdentifier(const MrDamper& model, std::optiona
                                              std::optional<double> fRef,
                                              const ParameterBoundsMap& bounds,
                                              const MrDamperUkfIdentifierSettings& settings)
-    : m_model(model.parameters()), m_dt(model.timeIncrement()), m_uRef(uRef), m_fRef(fRef),
-      m_userBounds(bounds), m_layout(layoutNames()), m_settings(settings) {
+    : AnchoredUkf(model.parameters(), settings), m_model(model.parameters()),
+      m_dt(model.timeIncrement()), m_uRef(uRef), m_fRef(fRef), m_userBounds(bounds),
+      m_layout(layoutNames()), m_settings(settings) {
     if (!(m_dt > 0.0) || !std::isfinite(m_dt))
         throw std::invalid_argument("the MR damper UKF needs the samples' time step (the "
                                     "model's time increment)");
@@ -214,9 +205,7 @@ MrDamperUkfIdentifier::MrDamperUkfIdentifier(const MrDamper& model, std::optiona
     for (const auto& b : defaultCalibrationSpec(request, HistoryScales{true, "", 1, 1, 1, 1}).fitted)
         if (const int j = mrDamperUkfParameterIndex(b.name); j >= 0)
             m_bounds[std::size_t(j)] = {b.lower, b.upper};
-    m_anchor = m_published = m_model;
-    m_window.assign(std::size_t(std::max(1, m_settings.divergenceWindow)), 0.0);
-    m_anchorWindow = m_window;
+    m_anchor = m_model;
     publish(m_model);
 }
 
@@ -242,38 +231,47 @@ bool MrDamperUkfIdentifier::setBounds(std::size_t index, const ParameterBounds& 
     return true; // effective at the next anchor
 }
 
-bool MrDamperUkfIdentifier::warmedUp() {
-    const std::size_t n = m_u.size();
-    if (n < m_nextWarmUpCheck)
-        return false;
-    m_nextWarmUpCheck = n + std::max<std::size_t>(1, n / 50);
-    return int(turningPoints(m_u, 0.02 * (m_uMax - m_uMin)).size()) >= m_settings.warmUpReversals;
+bool MrDamperUkfIdentifier::finite(const MrDamperParameters& p) const {
+    bool ok = true;
+    for (int j = 0; j < kMrDamperUkfParameters; ++j)
+        ok = ok && std::isfinite(MrDamperUkf::field(p, j));
+    return ok;
 }
 
-double MrDamperUkfIdentifier::anchorHistoryNrmse() const {
-    return m_sumF2 > 0 ? std::sqrt(m_anchorSse / m_sumF2) : 0.0;
+MrDamperUkfIdentifier::FilterStep MrDamperUkfIdentifier::stepFilter(double u, double f) {
+    const MrDamperUkfStep s = m_ukf->step(u, f);
+    return {s.status.ok, s.status.reason, s.predictedForce, m_ukf->estimate()};
 }
 
-double MrDamperUkfIdentifier::replayNrmse(const MrDamperParameters& p) const {
-    MrDamperState state;
-    double velocity = 0.0, sse = 0.0;
-    if (!replay(m_u, m_f, m_t, p, state, velocity, sse))
-        return std::nan("");
-    return m_sumF2 > 0 ? std::sqrt(sse / m_sumF2) : 0.0;
+void MrDamperUkfIdentifier::restartFilter(const MrDamperState& state, double u) {
+    m_ukf->restart(m_anchor, state, u, m_fit.sd);
 }
 
-void MrDamperUkfIdentifier::clearWindows() {
-    std::fill(m_window.begin(), m_window.end(), 0.0);
-    std::fill(m_anchorWindow.begin(), m_anchorWindow.end(), 0.0);
-    m_windowSum = m_anchorWindowSum = 0.0;
-    m_windowNext = m_windowFill = 0;
+std::string MrDamperUkfIdentifier::startFilter(const MrDamperAnchorResult& r,
+                                               const MrDamperState& state, double u) {
+    MrDamperUkfSettings us;
+    us.forceNoise = std::max(anchorRms(), 1e-3);
+    us.stateNoise = 1e-2 * us.forceNoise;
+    us.parameterNoise = m_settings.parameterNoise;
+    try {
+        m_ukf.emplace(r.best, r.box, m_dt, us);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    for (int j = 0; j < kMrDamperUkfParameters; ++j)
+        m_bounds[std::size_t(j)] = r.box[std::size_t(j)];
+    m_ukf->restart(r.best, state, u, r.sd);
+    return "";
 }
 
-void MrDamperUkfIdentifier::restartAtAnchor() {
-    m_ukf->restart(m_anchor, m_anchorLaw->committedState(), m_u.back(), m_anchorSd);
+MrDamper MrDamperUkfIdentifier::anchorLaw(const MrDamperAnchorResult& r, double uPrevious) const {
+    MrDamper law(r.best);
+    law.setTimeIncrement(m_dt);
+    law.setCommittedState(r.state, uPrevious, r.velocity);
+    return law;
 }
 
-void MrDamperUkfIdentifier::startAnchor(bool global, bool diverged) {
+MrDamperUkfIdentifier::AnchorWork MrDamperUkfIdentifier::anchorWork(bool global, bool diverged) {
     MrDamperAnchorInput in;
     in.u = m_u;
     in.f = m_f;
@@ -282,7 +280,7 @@ void MrDamperUkfIdentifier::startAnchor(bool global, bool diverged) {
     in.fRef = m_fRef;
     if (m_anchors > 0) {
         in.anchor = m_anchor;
-        in.anchorNrmse = m_anchorNrmse;
+        in.anchorNrmse = anchorNrmse();
         in.uRef = m_anchor.uRef; // the scales stay those of the first anchor
         in.fRef = m_anchor.fRef;
     }
@@ -292,211 +290,34 @@ void MrDamperUkfIdentifier::startAnchor(bool global, bool diverged) {
     in.userBounds = m_userBounds;
     in.global = global;
     in.settings = m_settings;
-    m_job.start(m_u.size(), JobMeta{diverged}, [in = std::move(in)](const std::atomic<bool>& cancel) {
+    return [in = std::move(in)](const std::atomic<bool>& cancel) {
         return mrDamperAnchorJob(in, &cancel);
-    });
+    };
 }
 
-IdentificationStatus MrDamperUkfIdentifier::applyAnchor() {
-    Job::Taken taken = m_job.take();
-    const bool diverged = taken.meta.diverged;
-    const MrDamperAnchorResult& r = taken.outcome;
-    const std::size_t startSize = taken.startSize;
-    IdentificationStatus st;
-    m_lastSeconds = r.cpuSeconds;
-    if (!r.ok) {
-        st.ok = !diverged;
-        st.message = "MR damper UKF: no anchor: " + r.reason;
-        return st;
-    }
-    // Catch up over the samples measured since the job started.
-    MrDamper law(r.best);
-    law.setTimeIncrement(m_dt);
-    law.setCommittedState(r.state, m_u[startSize - 1], r.velocity);
-    double sse = r.squaredErrors;
-    for (std::size_t k = startSize; k < m_u.size(); ++k) {
-        if (law.setTrialDeformation(m_u[k]) != LawStatus::Ok) {
-            st.ok = !diverged;
-            st.message = "MR damper UKF: no anchor: its law fails on the samples since the "
-                         "calibration";
-            return st;
-        }
-        law.commit();
-        const double e = law.committedForce() - m_f[k];
-        sse += e * e;
-    }
-    MrDamperUkfSettings us;
-    m_anchorRms = r.nrmse * r.rmsForce / r.best.fRef;
-    us.forceNoise = std::max(m_anchorRms, 1e-3);
-    us.stateNoise = 1e-2 * us.forceNoise;
-    us.parameterNoise = m_settings.parameterNoise;
-    try {
-        m_ukf.emplace(r.best, r.box, m_dt, us);
-    } catch (const std::exception& e) {
-        st.ok = false;
-        st.message = std::string("MR damper UKF: no anchor: ") + e.what();
-        return st;
-    }
-    for (int j = 0; j < kMrDamperUkfParameters; ++j)
-        m_bounds[std::size_t(j)] = r.box[std::size_t(j)];
-    m_anchorLaw.emplace(std::move(law));
-    m_anchorSse = sse;
-    m_anchor = r.best;
-    m_anchorSd = r.sd;
-    m_anchorNrmse = r.nrmse;
-    m_anchorSize = startSize;
-    if (r.global) {
-        m_globalSize = startSize;
-        ++m_globalAnchors;
-    }
-    restartAtAnchor();
-    clearWindows();
-    m_rejectedInRow = 0;
-    ++m_anchors;
-    publish(r.best);
-    m_nextCheck = m_u.size() + scheduledJobDelay(m_u.size());
-    char buf[240];
-    std::snprintf(buf, sizeof buf,
-                  "MR damper UKF %s %d (%s) at a fit over %zu samples: NRMSE %.4f",
-                  diverged ? "restarted, anchor" : "anchor", m_anchors,
-                  r.global ? "calibration" : "local refit", startSize, r.nrmse);
-    st.message = buf;
-    st.updated = true;
-    st.refit = true;
-    if (r.modelInadequate)
-        st.modelInadequate = r.modelInadequate;
-    return st;
+MrDamperUkfIdentifier::VerifyWork
+MrDamperUkfIdentifier::verifyWork(const MrDamperParameters& p) const {
+    return [u = m_u, f = m_f, t = m_t, p] {
+        const double t0 = threadCpuSeconds();
+        VerifyJobResult r;
+        MrDamperState state;
+        double velocity = 0.0, sse = 0.0, sff = 0.0;
+        for (double v : f)
+            sff += v * v;
+        r.ok = replay(u, f, t, p, state, velocity, sse);
+        r.nrmse = sff > 0 ? std::sqrt(sse / sff) : 0.0;
+        r.ok = r.ok && std::isfinite(r.nrmse);
+        r.cpuSeconds = threadCpuSeconds() - t0;
+        return r;
+    };
 }
 
-IdentificationStatus MrDamperUkfIdentifier::observe(double deformation, double force, bool) {
-    IdentificationStatus st;
-    if (!std::isfinite(deformation) || !std::isfinite(force)) {
-        st.ok = false;
-        st.message = "the measured deformation or force is not finite: step skipped";
-        return st;
-    }
-    m_t.push_back(double(m_u.size()) * m_dt);
-    m_u.push_back(deformation);
-    m_f.push_back(force);
-    m_uMin = m_u.size() == 1 ? deformation : std::min(m_uMin, deformation);
-    m_uMax = m_u.size() == 1 ? deformation : std::max(m_uMax, deformation);
-    m_sumF2 += force * force;
-    const std::size_t n = m_u.size();
-    if (!m_ukf) {
-        st.reportable = false;
-        m_predicted = std::numeric_limits<double>::quiet_NaN();
-        if (m_job.running()) {
-            if (m_job.due(n)) {
-                st = applyAnchor();
-                st.reportable = m_ukf.has_value();
-            }
-            return st;
-        }
-        if (warmedUp())
-            startAnchor(true, false);
-        return st;
-    }
-    const MrDamperUkfStep s = m_ukf->step(deformation, force);
-    m_predicted = s.predictedForce;
-    // divergence watch: the filter's a-priori error against the anchor model's own
-    const double fRef = m_anchor.fRef;
-    const bool anchorFailed = m_anchorLaw->setTrialDeformation(deformation) != LawStatus::Ok;
-    double a = 0.0;
-    if (!anchorFailed) {
-        m_anchorLaw->commit();
-        const double err = m_anchorLaw->committedForce() - force;
-        m_anchorSse += err * err;
-        a = err / fRef;
-    }
-    m_rejectedInRow = s.status.ok ? 0 : m_rejectedInRow + 1;
-    const double e = (s.predictedForce - force) / fRef;
-    const std::size_t w = m_window.size();
-    const double e2 = std::isfinite(e) ? e * e : 1e300;
-    m_windowSum += e2 - m_window[m_windowNext];
-    m_anchorWindowSum += a * a - m_anchorWindow[m_windowNext];
-    m_window[m_windowNext] = e2;
-    m_anchorWindow[m_windowNext] = a * a;
-    m_windowNext = (m_windowNext + 1) % w;
-    m_windowFill = std::min(m_windowFill + 1, w);
-    const MrDamperParameters now = m_ukf->estimate();
-    bool finite = std::isfinite(s.predictedForce);
-    for (int j = 0; j < kMrDamperUkfParameters; ++j)
-        finite = finite && std::isfinite(MrDamperUkf::field(now, j));
-    const double rms = std::sqrt(std::max(m_windowSum, 0.0) / double(w));
-    const double reference = std::max({std::sqrt(std::max(m_anchorWindowSum, 0.0) / double(w)),
-                                       m_anchorRms, m_settings.divergenceFloor});
-    const bool lawFailed = anchorFailed || m_rejectedInRow >= kRejectionsBeforeReanchor;
-    if (!finite || lawFailed ||
-        (m_windowFill == w && rms > m_settings.divergenceRatio * reference)) {
-        char buf[240];
-        if (lawFailed) {
-            std::snprintf(buf, sizeof buf, "%s: restarted from the anchor",
-                          anchorFailed ? "the MR damper UKF's anchor model failed on the new "
-                                         "deformation"
-                                       : "MR damper UKF steps rejected in a row");
-            m_rejectedInRow = 0;
-        } else {
-            ++m_divergences;
-            std::snprintf(buf, sizeof buf,
-                          "MR damper UKF diverging (a-priori force error %.3g of fRef over the "
-                          "last %zu steps, the anchor's %.3g): restarted from the anchor",
-                          rms, w, reference);
-        }
-        st.ok = false;
-        st.message = buf;
-        if (!anchorFailed)
-            restartAtAnchor();
-        publish(m_anchor);
-        clearWindows();
-        m_recovering = int(w);
-        if (!m_job.running()) {
-            startAnchor(anchorFailed, true);
-            st.message += ", a refit started";
-        }
-        st.reportable = false;
-        st.updated = true;
-        return st;
-    }
-    if (!s.status.ok) {
-        st.ok = false;
-        st.message = "MR damper UKF step rejected: " + s.status.reason;
-    }
-    if (m_recovering > 0)
-        --m_recovering;
-    const bool reportable = m_recovering == 0;
-    if (m_job.due(n)) {
-        IdentificationStatus j = applyAnchor();
-        if (!j.message.empty() || !j.ok)
-            st = j;
-        st.updated = st.updated || j.updated;
-        st.refit = j.refit;
-    } else if (!m_job.running()) {
-        if (double(n) >= m_settings.globalGrowth * double(m_globalSize)) {
-            startAnchor(true, false);
-        } else if (double(n) >= m_settings.anchorGrowth * double(m_anchorSize)) {
-            startAnchor(false, false);
-        } else if (n >= m_nextCheck) {
-            // The guard: the whole history decides, not the one-step prediction.
-            m_nextCheck = n + scheduledJobDelay(n);
-            const double nrmse = replayNrmse(now);
-            const double anchorNow = anchorHistoryNrmse();
-            if (std::isfinite(nrmse) && nrmse <= m_settings.driftRatio * anchorNow) {
-                publish(now);
-            } else {
-                restartAtAnchor();
-                publish(m_anchor);
-                char buf[200];
-                std::snprintf(buf, sizeof buf,
-                              "MR damper UKF estimate replays the history with NRMSE %.3g "
-                              "against the anchor's %.3g: back to the anchor",
-                              nrmse, anchorNow);
-                st.message = buf;
-            }
-            st.updated = true;
-        }
-    }
-    st.reportable = reportable;
-    return st;
+AnchorPlan MrDamperUkfIdentifier::plan(std::size_t n) {
+    if (double(n) >= m_settings.globalGrowth * double(m_globalSize))
+        return AnchorPlan::GlobalAnchor;
+    if (double(n) >= m_settings.anchorGrowth * double(m_anchorSize))
+        return AnchorPlan::LocalAnchor;
+    return AnchorPlan::VerifyOnly;
 }
 
 } // namespace hsmu

@@ -23,24 +23,26 @@
 //     rejected in a row: the UKF restarts from the anchor, a refit is started, and the
 //     estimates are not reportable for divergenceWindow steps.
 //  6. Guard: every max(50, N / 20) steps the UKF's estimate is replayed over the history (on
-//     the stepping thread: one replay); it is published if its NRMSE is within driftRatio of
-//     the anchor's, else the filter goes back to the anchor, which is published.
+//     the stepping thread: one replay, verifyOnStep); it is published if its NRMSE is within
+//     driftRatio of the anchor's, else the filter goes back to the anchor, which is published.
 //  7. Verdict: an anchor over >= verdictReversals turning points with NRMSE above
 //     verdictNrmse says the model family cannot represent the specimen.
 // Scales: the model's uRef / fRef when the configuration gives them, else derived from the
 // data at the first anchor (HistoryScales.h) and kept; user bounds are in those scales. They
 // are published with the estimate (uRef, fRef), as the robust UKF's, so that the auxiliary
 // model and the twins that take them hold the physical law that was fitted.
-// The estimates depend on the samples only (the jobs' results are applied at fixed steps): an
-// online run and an offline replay of its record agree bit for bit. The destructor cancels a
-// running job.
+// The warm-up, anchoring, tracking, divergence recovery, guard and jobs are AnchoredUkf.h's
+// (one machinery with the robust and pinching UKFs); this class gives the MR damper's parts:
+// the filter (MrDamperUkf), the anchor job (mrDamperAnchorJob), the replay with the samples'
+// times and the plan of point 4. The estimates depend on the samples only (the jobs' results
+// are applied at fixed steps): an online run and an offline replay of its record agree bit for
+// bit. The destructor cancels a running job.
 // Thread rules: observe() and the rest from one thread; the worker only reads its own copy of
 // the inputs.
 
 #include "core/hysteresis/MrDamper.h"
-#include "core/updating/Identifier.h"
+#include "core/updating/AnchoredUkf.h"
 #include "core/updating/MrDamperUkf.h"
-#include "core/updating/ScheduledJob.h"
 
 #include <array>
 #include <limits>
@@ -49,19 +51,14 @@
 
 namespace hsmu {
 
-struct MrDamperUkfIdentifierSettings {
-    int warmUpReversals = 2;
-    double anchorGrowth = 2.0; ///< re-anchor (locally) when the history grew by this factor
-    double globalGrowth = 4.0; ///< ... globally when it grew by this since the last global
-    int localIterations = 12;  ///< Levenberg-Marquardt iterations of a local refit
-    int divergenceWindow = 50;
-    double divergenceRatio = 4.0;
-    double divergenceFloor = 0.02;
-    double parameterNoise = 1e-7; ///< random walk per step, fraction of the box width
-    double driftRatio = 1.05;
+struct MrDamperUkfIdentifierSettings : AnchoredUkfSettings {
+    MrDamperUkfIdentifierSettings() {
+        parameterNoise = 1e-7;
+        fullWindowOnly = true;
+        verifyOnStep = true;
+    }
+    int localIterations = 12;   ///< Levenberg-Marquardt iterations of a local refit
     double poorFitRatio = 1.25; ///< a local refit worse than this x the anchor's: global
-    double verdictNrmse = 0.25;
-    int verdictReversals = 4;
 };
 
 /// What an anchor job computes (a pure function of its input; in the filter's scales).
@@ -89,6 +86,7 @@ struct MrDamperAnchorResult {
     double rmsForce = 0.0;      ///< RMS(F) over the snapshot
     MrDamperUkf::Values sd{};   ///< P0 (normalized)
     MrDamperUkf::Box box{};
+    bool rescaled = false;      ///< never: the scales stay those of the first anchor
     std::optional<double> modelInadequate;
     int residualEvaluations = 0;
     double cpuSeconds = 0.0;
@@ -97,7 +95,8 @@ struct MrDamperAnchorResult {
 MrDamperAnchorResult mrDamperAnchorJob(const MrDamperAnchorInput& in,
                                        const std::atomic<bool>* cancel = nullptr);
 
-class MrDamperUkfIdentifier final : public Identifier {
+class MrDamperUkfIdentifier final
+    : public AnchoredUkf<MrDamperParameters, MrDamper, MrDamperAnchorResult> {
 public:
     /// model: the specimen's model (an MrDamper whose time increment is the samples' step).
     /// uRef / fRef: the configuration's scales, or std::nullopt (from the data). bounds: user
@@ -111,35 +110,27 @@ public:
     /// mrDamperUkfParameterNames() (c0, c1, k0, k1, f0, alpha, beta, gamma, n), then uRef and
     /// fRef (not filtered, no bounds).
     const ParameterLayout& layout() const override { return m_layout; }
-    IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
     std::span<const double> estimate() const override { return m_estimate; }
     std::span<const double> standardDeviation() const override { return m_stddev; }
-    double predictedForce() const override { return m_predicted; }
-    double lastComputeSeconds() const override { return m_lastSeconds; }
     std::span<const ParameterBounds> bounds() const override { return m_bounds; }
     bool setBounds(std::size_t index, const ParameterBounds& b) override;
 
-    int anchors() const { return m_anchors; }
-    int globalAnchors() const { return m_globalAnchors; }
-    int divergences() const { return m_divergences; }
-    double anchorNrmse() const { return m_anchorNrmse; }
-    /// The published estimate as a whole law.
-    const MrDamperParameters& published() const { return m_published; }
-
 private:
-    struct JobMeta {
-        bool diverged = false;
-    };
-    using Job = ScheduledJob<JobMeta, MrDamperAnchorResult>;
-    void startAnchor(bool global, bool diverged);
-    IdentificationStatus applyAnchor();
-    void restartAtAnchor();
-    void clearWindows();
-    void publish(const MrDamperParameters& p);
-    bool warmedUp();
-    double anchorHistoryNrmse() const;
-    /// NRMSE of p replayed over the history (NaN if the law fails).
-    double replayNrmse(const MrDamperParameters& p) const;
+    const char* filterName() const override { return "MR damper UKF"; }
+    bool filtering() const override { return m_ukf.has_value(); }
+    FilterStep stepFilter(double u, double f) override;
+    std::string startFilter(const MrDamperAnchorResult& r, const MrDamperState& state,
+                            double u) override;
+    void restartFilter(const MrDamperState& state, double u) override;
+    AnchorWork anchorWork(bool global, bool diverged) override;
+    VerifyWork verifyWork(const MrDamperParameters& candidate) const override;
+    MrDamper anchorLaw(const MrDamperAnchorResult& r, double uPrevious) const override;
+    double fRef(const MrDamperParameters& p) const override { return p.fRef; }
+    double uRef(const MrDamperParameters& p) const override { return p.uRef; }
+    bool finite(const MrDamperParameters& p) const override;
+    void publish(const MrDamperParameters& p) override;
+    AnchorPlan plan(std::size_t n) override;
+    void appended() override { m_t.push_back(double(m_u.size() - 1) * m_dt); }
 
     MrDamperParameters m_model; ///< the configured model
     double m_dt;
@@ -150,25 +141,7 @@ private:
     std::array<ParameterBounds, kMrDamperUkfParameters + 2> m_bounds{};
     MrDamperUkfIdentifierSettings m_settings;
     std::optional<MrDamperUkf> m_ukf;
-    MrDamperParameters m_anchor, m_published;
-    MrDamperUkf::Values m_anchorSd{};
-    std::optional<MrDamper> m_anchorLaw; ///< the anchor's model, stepped along
-    double m_anchorSse = 0.0;
-    std::vector<double> m_u, m_f, m_t;
-    double m_uMin = 0.0, m_uMax = 0.0, m_sumF2 = 0.0;
-    std::size_t m_nextWarmUpCheck = 0;
-    std::size_t m_anchorSize = 0, m_globalSize = 0, m_nextCheck = 0;
-    double m_anchorNrmse = std::numeric_limits<double>::quiet_NaN();
-    double m_anchorRms = 0.0;
-    std::vector<double> m_window, m_anchorWindow;
-    double m_windowSum = 0.0, m_anchorWindowSum = 0.0;
-    std::size_t m_windowNext = 0, m_windowFill = 0;
-    int m_recovering = 0;
-    int m_rejectedInRow = 0;
-    int m_anchors = 0, m_globalAnchors = 0, m_divergences = 0;
-    double m_predicted = std::numeric_limits<double>::quiet_NaN();
-    double m_lastSeconds = 0.0;
-    Job m_job; ///< last, so destroyed (cancelled) first
+    std::vector<double> m_t; ///< the samples' times [s]
 };
 
 } // namespace hsmu

@@ -39,10 +39,6 @@ BoucWenPinchingParameters fromCalibration(BoucWenPinchingParameters p, const Cal
     return p;
 }
 
-bool movedBy(double a, double b, double factor) {
-    return a > factor * b || b > factor * a;
-}
-
 } // namespace
 
 PinchingAnchorJobResult pinchingAnchorJob(const PinchingAnchorJobInput& in,
@@ -66,18 +62,9 @@ PinchingAnchorJobResult pinchingAnchorJob(const PinchingAnchorJobInput& in,
         request.polishSamples = in.budget.polishSamples;
         request.localIterations = in.budget.localIterations;
         request.cancel = cancel;
-        if (in.anchor) {
-            // Later anchors keep the anchor's scales unless the data moved them (the first
-            // anchor may have seen little of the specimen: a few cycles, or sensor noise).
-            const BoucWenParameters& a = in.anchor->boucWen;
-            const bool move = scales.ok && (movedBy(scales.uRef, a.uRef, in.rescaleFactor) ||
-                                            movedBy(scales.fRef, a.fRef, in.rescaleFactor));
-            if (!request.uRef)
-                request.uRef = move ? scales.uRef : a.uRef;
-            if (!request.fRef)
-                request.fRef = move ? scales.fRef : a.fRef;
-            out.rescaled = move && !(in.uRef && in.fRef);
-        }
+        if (in.anchor)
+            out.rescaled = laterAnchorScales(request, scales, in.anchor->boucWen.uRef,
+                                             in.anchor->boucWen.fRef, in.rescaleFactor);
         if (!scales.ok && !(request.uRef && request.fRef))
             return finish("no anchor yet: " + scales.reason);
         const CalibrationSpec spec = defaultCalibrationSpec(request, scales);
@@ -157,14 +144,7 @@ PinchingAnchorJobResult pinchingAnchorJob(const PinchingAnchorJobInput& in,
             if (j < 0)
                 continue;
             out.box[std::size_t(j)] = {b.lower, b.upper};
-            double fromFit = std::nan("");
-            if (bestCal)
-                for (std::size_t q = 0; q < bestCal->names.size(); ++q)
-                    if (bestCal->names[q] == b.name)
-                        fromFit = bestCal->standardDeviation[Eigen::Index(q)];
-            const double floor = 1e-2 * b.typical, cap = 0.1 * b.typical;
-            out.sd[std::size_t(j)] =
-                std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
+            out.sd[std::size_t(j)] = initialStandardDeviation(b.name, b.typical, bestCal);
         }
         if (scales.reversals >= in.verdictReversals && out.nrmse > in.verdictNrmse)
             out.modelInadequate = out.nrmse;

@@ -32,6 +32,9 @@
 //     a message saying why), the UKF restarts at once from the anchor (its stepped model's
 //     state), a local refit is started, and for the next divergenceWindow steps its estimates
 //     are not reportable (the Reporter passes nothing to the twins until it has recovered).
+//     Three UKF steps rejected in a row (a sigma point the law cannot integrate) restart the
+//     UKF at the anchor the same way; the anchor's model failing on a new deformation starts
+//     a global refit (AnchoredUkf.h).
 //  5b. Guard, every max(50, N / 20) steps: the anchor's NRMSE over the whole history comes
 //     from its running error (no replay); one that grew past staleRatio times its value at
 //     its fit is refitted (step 2). Else the UKF's estimate is replayed over the history
@@ -43,22 +46,23 @@
 //  6. Verdict. When an anchor over at least verdictReversals turning points fits no better
 //     than verdictNrmse, the status carries the best NRMSE: the Inspector says that the model
 //     family cannot represent the specimen.
-// Jobs (ScheduledJob.h). Calibrations (2, 4, 5) and the guard's replay (5b) run on a worker
-// thread (std::async), one at a time, on a copy of the history at the step k they are started;
+// The warm-up, anchoring, tracking, divergence recovery, guard and jobs are AnchoredUkf.h's
+// (written once for the robust, pinching and MR damper filters); this class gives the
+// Bouc-Wen parts: the filter (BoucWenUkf, a = 1, kappa = 0, b = 2), the anchor job
+// (RobustUkfJobs.h anchorJob) and the plan of point 4 (history doubled: a global anchor; the
+// amplitude grown: a local refit), and the seed.
+// Jobs (ScheduledJob.h, AnchoredUkf.h): calibrations (2, 4, 5) and the guard's replay (5b) run
+// on a worker thread, one at a time, on a copy of the history at the step k they are started;
 // the result is applied at the step where the history reaches N_k + max(50, N_k / 20)
-// (jobDelay(); the next step when that one is a divergence's), and observe() waits for the
-// worker there if it has not finished. So the estimates depend on the samples only, not on the
-// machine's speed: a replay of a record gives the same estimates bit for bit, online or
-// offline. A job's result is caught up over the samples since N_k on the stepping thread (the
-// anchor's model stepped over them). The destructor cancels a running job (the calibration
-// stops at its next iteration) and waits only for that.
+// (jobDelay()), and observe() waits for the worker there if it has not finished. So the
+// estimates depend on the samples only, not on the machine's speed: a replay of a record gives
+// the same estimates bit for bit, online or offline. The destructor cancels a running job.
 // Values are in the law's normalized units. Thread rules: observe() and the rest from one
 // thread; the worker only reads its own copy of the inputs.
 
 #include "core/identification/BoucWenUkf.h"
-#include "core/updating/Identifier.h"
+#include "core/updating/AnchoredUkf.h"
 #include "core/updating/RobustUkfJobs.h"
-#include "core/updating/ScheduledJob.h"
 
 #include <array>
 #include <optional>
@@ -66,22 +70,11 @@
 
 namespace hsmu {
 
-struct RobustUkfSettings {
-    int warmUpReversals = 2;       ///< turning points before the first anchor
-    double anchorGrowth = 2.0;     ///< re-anchor when the history grew by this factor
-    double amplitudeGrowth = 1.25; ///< ... or the deformation amplitude by this factor
-    int divergenceWindow = 50;     ///< [steps]
-    double divergenceRatio = 4.0;  ///< window RMS error / the anchor's that diverges
-    double divergenceFloor = 0.02; ///< errors below this fraction of fRef never diverge
-    double parameterNoise = 1e-5;  ///< random walk per step, fraction of the box width
-    double driftRatio = 1.05;      ///< UKF estimate's history NRMSE / the anchor's: pull back
-    double staleRatio = 1.1;       ///< anchor's history NRMSE / at its fit: refit
-    double verdictNrmse = 0.25;    ///< an anchor worse than this: the model family is poor
-    int verdictReversals = 4;      ///< ... judged once the history has this many reversals
-    double rescaleFactor = 1.5;    ///< derived scales re-taken when they moved by more
+struct RobustUkfSettings : AnchoredUkfSettings {
+    double amplitudeGrowth = 1.25; ///< re-anchor (locally) when the amplitude grew by this
 };
 
-class RobustUkfIdentifier final : public Identifier {
+class RobustUkfIdentifier final : public AnchoredUkf<BoucWenParameters, BoucWen, AnchorJobResult> {
 public:
     /// initial: the model (normalized). uRef / fRef given (std::nullopt: derive from the
     /// data). bounds: user bounds by name (the rest: CalibrationDefaults' box). Throws
@@ -95,10 +88,8 @@ public:
     /// k0, alpha, beta, gamma, n, deltaNu, deltaEta, uRef, fRef (the scales are not
     /// identified by the filter and have no bounds; their standard deviation is 0).
     const ParameterLayout& layout() const override { return m_layout; }
-    IdentificationStatus observe(double deformation, double force, bool updateRequested) override;
     std::span<const double> estimate() const override { return m_estimate; }
     std::span<const double> standardDeviation() const override { return m_stddev; }
-    double predictedForce() const override { return m_predicted; }
     std::span<const ParameterBounds> bounds() const override { return m_bounds; }
     bool setBounds(std::size_t index, const ParameterBounds& b) override;
 
@@ -114,85 +105,33 @@ public:
               std::string& message);
     bool seeded() const { return m_seeded; }
 
-    int anchors() const { return m_anchors; }
-    int divergences() const { return m_divergences; }
-    /// NRMSE of the last anchor over the history it saw (NaN before the first).
-    double anchorNrmse() const { return m_anchorNrmse; }
-
-    /// The step distance, in samples, between starting a job on a history of n samples and
-    /// applying its result.
-    static std::size_t jobDelay(std::size_t n) { return scheduledJobDelay(n); }
-    /// Worker CPU spent in jobs so far [s], and their number (anchors and guard replays).
-    double workerCpuSeconds() const { return m_workerCpu; }
-    int jobs() const { return m_job.started(); }
-    /// ... of which in anchor jobs (calibrations) [s].
-    double anchorCpuSeconds() const { return m_anchorCpu; }
-    /// Applications that had to wait for the worker (informative: depends on the machine).
-    int waits() const { return m_job.waits(); }
-    ~RobustUkfIdentifier() override = default; // cancels a running job (ScheduledJob)
-
 private:
-    struct JobOutcome {
-        AnchorJobResult anchor;
-        VerifyJobResult verify;
-    };
-    struct JobMeta {
-        bool anchor = false; ///< else a guard replay of `candidate`
-        bool diverged = false;
-        bool discarded = false; ///< a divergence came after a guard replay was started
-        double startAmplitude = 0.0;
-        double anchorNrmseAtStart = 0.0;
-        BoucWenParameters candidate;
-    };
-    using Job = ScheduledJob<JobMeta, JobOutcome>;
-    void startAnchor(bool global, bool diverged, const std::optional<BoucWenParameters>& estimate);
-    void startVerify(const BoucWenParameters& candidate);
-    /// Applies the job's result (at its step); the status to return.
-    IdentificationStatus applyJob();
-    IdentificationStatus applyAnchor(const JobMeta& job, std::size_t startSize,
-                                     const AnchorJobResult& r);
-    /// The filter, its bounds and settings, and the anchor's model at r.best in `state` at
-    /// the last deformation `u`.
-    void startFilter(const AnchorJobResult& r, const BoucWenState& state, double u);
-    void restartAtAnchor();
-    void clearWindows();
-    double anchorHistoryNrmse() const;
-    void publish();
+    const char* filterName() const override { return "UKF"; }
+    bool filtering() const override { return m_ukf.has_value(); }
+    FilterStep stepFilter(double u, double f) override;
+    std::string startFilter(const AnchorJobResult& r, const BoucWenState& state,
+                            double u) override;
+    void restartFilter(const BoucWenState& state, double u) override;
+    AnchorWork anchorWork(bool global, bool diverged) override;
+    VerifyWork verifyWork(const BoucWenParameters& candidate) const override;
+    BoucWen anchorLaw(const AnchorJobResult& r, double uPrevious) const override;
+    double fRef(const BoucWenParameters& p) const override { return p.fRef; }
+    double uRef(const BoucWenParameters& p) const override { return p.uRef; }
+    bool finite(const BoucWenParameters& p) const override;
+    void publish(const BoucWenParameters& p) override;
+    AnchorPlan plan(std::size_t n) override;
+    AnchorJobInput anchorInput(bool global) const;
 
     BoucWenParameters m_initial;
     std::optional<double> m_uRef, m_fRef;
     ParameterBoundsMap m_userBounds; ///< as configured, by name (for the calibrations)
     RobustUkfSettings m_settings;
     std::optional<BoucWenUkf> m_ukf;
-    BoucWenParameters m_anchor; ///< the last anchor (scales included)
-    BoucWenParameters m_published; ///< the estimate last verified (or the anchor)
-    std::array<double, kBoucWenUkfSize> m_anchorSd{};
-    std::vector<double> m_u, m_f;
-    double m_uMin = 0.0, m_uMax = 0.0, m_sumF2 = 0.0;
-    std::size_t m_nextWarmUpCheck = 0;
-    double m_maxAmplitude = 0.0, m_anchorAmplitude = 0.0;
-    std::size_t m_anchorSize = 0;
-    double m_anchorNrmse = std::numeric_limits<double>::quiet_NaN();
-    double m_anchorRms = 0.0; ///< RMS force error of the anchor / fRef [-]
-    std::optional<BoucWen> m_anchorLaw; ///< the anchor's model, stepped along the samples
-    double m_anchorSse = 0.0;           ///< its squared force errors over the whole history
-    std::vector<double> m_window;       ///< squared a-priori errors / fRef^2 (ring)
-    std::vector<double> m_anchorWindow; ///< the anchor model's squared errors (same ring)
-    double m_anchorWindowSum = 0.0;
-    std::size_t m_windowNext = 0;
-    double m_windowSum = 0.0;
-    int m_recovering = 0;
     bool m_seeded = false;      ///< started from a previous record's calibration
-    bool m_ownAnchor = false;   ///< an anchor on this test's history has been applied
-    int m_anchors = 0, m_divergences = 0, m_pullBacks = 0;
-    std::size_t m_nextCheck = 0; ///< history size of the next guard check
-    double m_workerCpu = 0.0, m_anchorCpu = 0.0;
-    double m_predicted = std::numeric_limits<double>::quiet_NaN();
     ParameterLayout m_layout;
     // Published in layout order (kRobustUkfParameters, uRef, fRef); NaN bounds: none yet.
     std::array<double, 9> m_estimate{}, m_stddev{};
     std::array<ParameterBounds, 9> m_bounds{};
-    Job m_job; ///< the job running (at most one); last, so destroyed (cancelled) first
 };
 
 } // namespace hsmu

@@ -164,6 +164,29 @@ BoucWenState rescaledState(const BoucWenState& st, const BoucWenParameters& from
     return out;
 }
 
+bool laterAnchorScales(CalibrationRequest& request, const HistoryScales& scales, double uRef,
+                       double fRef, double factor) {
+    const bool move = scales.ok && (movedBy(scales.uRef, uRef, factor) ||
+                                    movedBy(scales.fRef, fRef, factor));
+    const bool configured = request.uRef && request.fRef;
+    if (!request.uRef)
+        request.uRef = move ? scales.uRef : uRef;
+    if (!request.fRef)
+        request.fRef = move ? scales.fRef : fRef;
+    return move && !configured;
+}
+
+double initialStandardDeviation(const std::string& name, double typical,
+                                const CalibrationResult* cal) {
+    double fromFit = std::nan("");
+    if (cal)
+        for (std::size_t q = 0; q < cal->names.size(); ++q)
+            if (cal->names[q] == name && Eigen::Index(q) < cal->standardDeviation.size())
+                fromFit = cal->standardDeviation[Eigen::Index(q)];
+    const double floor = 1e-2 * typical, cap = 0.1 * typical;
+    return std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
+}
+
 double threadCpuSeconds() {
 #if defined(CLOCK_THREAD_CPUTIME_ID)
     timespec t{};
@@ -209,23 +232,16 @@ BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uR
 AnchorJobResult anchorJob(const AnchorJobInput& in, const std::atomic<bool>* cancel) {
     const double t0 = threadCpuSeconds();
     AnchorJobResult out;
+    out.global = in.global || !in.anchor;
     try {
         const HistoryScales scales = deriveHistoryScales(in.u, in.f);
         CalibrationRequest request;
         request.bounds = in.userBounds;
         request.uRef = in.uRef;
         request.fRef = in.fRef;
-        if (in.anchor) {
-            // Later anchors keep the anchor's scales unless the data moved them (the first
-            // anchor may have seen little of the specimen: a few cycles, or sensor noise).
-            const bool move = scales.ok && (movedBy(scales.uRef, in.anchor->uRef, in.rescaleFactor) ||
-                                            movedBy(scales.fRef, in.anchor->fRef, in.rescaleFactor));
-            if (!request.uRef)
-                request.uRef = move ? scales.uRef : in.anchor->uRef;
-            if (!request.fRef)
-                request.fRef = move ? scales.fRef : in.anchor->fRef;
-            out.rescaled = move && !(in.uRef && in.fRef);
-        }
+        if (in.anchor)
+            out.rescaled = laterAnchorScales(request, scales, in.anchor->uRef, in.anchor->fRef,
+                                             in.rescaleFactor);
         if (!scales.ok && !(request.uRef && request.fRef)) {
             out.reason = "no anchor yet: " + scales.reason;
             out.cpuSeconds = threadCpuSeconds() - t0;
@@ -282,12 +298,9 @@ AnchorJobResult anchorJob(const AnchorJobInput& in, const std::atomic<bool>* can
                 if (spec.fitted[q].name == boucWenUkfIndexName(i)) {
                     const auto at = std::size_t(i);
                     out.box[at] = {spec.fitted[q].lower, spec.fitted[q].upper};
-                    const double fromFit = cal.ok && q < std::size_t(cal.standardDeviation.size())
-                                               ? cal.standardDeviation[Eigen::Index(q)]
-                                               : std::nan("");
-                    const double floor = 1e-2 * spec.fitted[q].typical;
-                    const double cap = 0.1 * spec.fitted[q].typical;
-                    out.sd[at] = std::clamp(std::isfinite(fromFit) ? fromFit : floor, floor, cap);
+                    out.sd[at] = initialStandardDeviation(spec.fitted[q].name,
+                                                          spec.fitted[q].typical,
+                                                          cal.ok ? &cal : nullptr);
                 }
         if (scales.reversals >= in.verdictReversals && out.nrmse > in.verdictNrmse)
             out.modelInadequate = out.nrmse;

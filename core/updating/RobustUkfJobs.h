@@ -29,6 +29,9 @@
 namespace hsmu {
 
 struct CalibrationSpec;
+struct CalibrationRequest;
+struct CalibrationResult;
+struct HistoryScales;
 
 /// The seven parameters the robust UKF identifies, in the filter's state order.
 inline constexpr BoucWenUkfIndex kRobustUkfParameters[] = {
@@ -62,6 +65,7 @@ struct AnchorJobResult {
     bool ok = false;
     bool cancelled = false;     ///< stopped by the cancel flag (then not ok)
     std::string reason;         ///< why not, when !ok
+    bool global = false;        ///< the calibration's multi-start ran (else a local refit)
     BoucWenParameters best;     ///< the anchor (scales included)
     BoucWenState state;         ///< the law's state at the snapshot's last sample
     double nrmse = 0.0;         ///< over the snapshot
@@ -110,6 +114,20 @@ bool insideBox(const CalibrationSpec& spec, const BoucWenPinchingParameters& p);
 /// the pinched zone's width psi s, deltaPsi / c, the energy rate p / (c s); zetaS, q, lambda
 /// unchanged (Eqs P2-P4, docs/hysteresis-laws.md).
 BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uRef, double fRef);
+
+// The anchor jobs' shared steps (the robust, pinching and MR damper UKFs' anchorJob()s).
+
+/// A later anchor's scales into `request` (those the configuration gives are kept): the
+/// previous anchor's (uRef, fRef), or the data's when either moved by more than `factor`
+/// (the first anchor may have seen little of the specimen: a few cycles, or sensor noise).
+/// True if the scales moved (and the configuration did not give both).
+bool laterAnchorScales(CalibrationRequest& request, const HistoryScales& scales, double uRef,
+                       double fRef, double factor);
+/// P0's standard deviation of the fitted parameter `name` (typical scale `typical`): the
+/// calibration's (cal null, or NaN there: none), clamped to [1 %, 10 %] of typical (1 % when
+/// none).
+double initialStandardDeviation(const std::string& name, double typical,
+                                const CalibrationResult* cal);
 
 /// CPU time of the calling thread [s] (wall time where the platform has no thread clock).
 double threadCpuSeconds();

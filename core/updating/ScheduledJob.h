@@ -1,8 +1,8 @@
 #pragma once
 // ScheduledJob: the online identifiers' heavy work (calibrations of the history so far, replays
 // of an estimate over it) on a worker thread, with its result applied at a step fixed when it
-// starts (docs/method.md, "The robust UKF", Jobs). Used by RobustUkfIdentifier and
-// PinchingUkfIdentifier.
+// starts (docs/method.md, "The robust UKF", Jobs). Used by AnchoredUkf.h (the robust,
+// pinching and MR damper UKFs).
 //
 //  - start(n, meta, work): work(cancel) runs on a worker (std::async), at most one job at a
 //    time, on inputs the caller has copied at history size n (the snapshot at step N_k); meta

@@ -11,6 +11,9 @@
 #include "tests/support/IdentifierByName.h"
 #include "core/updating/RobustUkfIdentifier.h"
 #include "core/updating/RobustUkfJobs.h"
+#include "core/identification/Calibration.h"
+#include "core/identification/CalibrationDefaults.h"
+#include "core/identification/HistoryScales.h"
 
 #include <QtTest>
 
@@ -295,6 +298,49 @@ private slots:
                                     .arg(b.upper)));
         }
         QVERIFY2(r.nrmse < 0.2, qPrintable(QString::number(r.nrmse))); // still a fit, from inside
+    }
+
+    /// The anchor jobs' shared steps (AnchoredUkf.h: the robust, pinching and MR damper UKFs'
+    /// anchors): a later anchor keeps its scales unless the data's moved by more than the
+    /// factor, the configuration's are never replaced; P0 is the calibration's standard
+    /// deviation clamped to [1 %, 10 %] of the parameter's typical scale.
+    void anchorJobsShareScalesAndInitialDeviations() {
+        HistoryScales data;
+        data.ok = true;
+        data.uRef = 2.0;
+        data.fRef = 3.0;
+        CalibrationRequest moved;
+        QVERIFY(laterAnchorScales(moved, data, 1.0, 3.0, 1.5)); // uRef 2 > 1.5 x 1
+        QCOMPARE(*moved.uRef, 2.0);
+        QCOMPARE(*moved.fRef, 3.0);
+        CalibrationRequest kept;
+        QVERIFY(!laterAnchorScales(kept, data, 1.9, 2.5, 1.5)); // both within 1.5x
+        QCOMPARE(*kept.uRef, 1.9);
+        QCOMPARE(*kept.fRef, 2.5);
+        CalibrationRequest configured;
+        configured.uRef = 7.0;
+        configured.fRef = 8.0;
+        QVERIFY(!laterAnchorScales(configured, data, 1.0, 1.0, 1.5)); // the configuration's
+        QCOMPARE(*configured.uRef, 7.0);
+        QCOMPARE(*configured.fRef, 8.0);
+        CalibrationRequest half;
+        half.fRef = 8.0; // uRef from the data: it moved
+        QVERIFY(laterAnchorScales(half, data, 1.0, 1.0, 1.5));
+        QCOMPARE(*half.uRef, 2.0);
+        QCOMPARE(*half.fRef, 8.0);
+        data.ok = false; // no scales from the data: the anchor's stay
+        CalibrationRequest none;
+        QVERIFY(!laterAnchorScales(none, data, 1.0, 1.0, 1.5));
+        QCOMPARE(*none.uRef, 1.0);
+
+        CalibrationResult cal;
+        cal.names = {"k0", "alpha", "beta"};
+        cal.standardDeviation = Eigen::Vector3d(0.05, 0.5, std::nan(""));
+        QCOMPARE(initialStandardDeviation("k0", 1.0, nullptr), 0.01); // no fit: 1 %
+        QCOMPARE(initialStandardDeviation("k0", 1.0, &cal), 0.05);    // the fit's
+        QCOMPARE(initialStandardDeviation("alpha", 2.0, &cal), 0.2);  // capped at 10 %
+        QCOMPARE(initialStandardDeviation("beta", 3.0, &cal), 0.03);  // on a bound: 1 %
+        QCOMPARE(initialStandardDeviation("n", 4.0, &cal), 0.04);     // not fitted: 1 %
     }
 };
 
