@@ -376,18 +376,15 @@ CalibrationResult calibrateOffsets(const std::vector<double>& u, const std::vect
         if (!isOffset(name) && std::find(withOffsets.fitted.begin(), withOffsets.fitted.end(),
                                          name) == withOffsets.fitted.end())
             spec.fixed[name] = value;
-    double meanForce = 0.0;
-    for (double x : f)
-        meanForce += x / double(f.size());
-    spec.starts.clear();
-    for (double f0 : {0.0, meanForce}) {
-        std::vector<double> s;
-        for (const Box& b : spec.fitted)
-            s.push_back(b.name == OffsetLaw::kForceOffset ? f0
-                        : isOffset(b.name)                 ? 0.0
-                                                           : plain.parameters.at(b.name));
-        spec.starts.push_back(std::move(s));
-    }
+    // One start, the plain optimum with both offsets 0 (the same forces, bit for bit), and
+    // every sample in both phases: Levenberg-Marquardt only accepts steps that lower the
+    // cost, so the fit with offsets is never worse than the fit without them.
+    std::vector<double> start;
+    for (const Box& b : spec.fitted)
+        start.push_back(isOffset(b.name) ? 0.0 : plain.parameters.at(b.name));
+    spec.starts = {start};
+    spec.reducedSamples = u.size();
+    spec.global = spec.local;
     spec.polished = 1;
     CalibrationResult fitted = calibrate(u, f, spec);
     if (fitted.cancelled)

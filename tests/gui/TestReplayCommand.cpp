@@ -269,9 +269,9 @@ void TestReplayCommand::errorsAreClear() {
     QVERIFY2(r.err.contains(QStringLiteral("expected ukf, nelder-mead or calibration")), qPrintable(r.err));
 }
 
-// A bilinear specimen whose load cell reads 5 % of its peak force at rest (mm and N): the
-// calibration (offsets auto by default) keeps a force offset, gives it back within 1 % with
-// its unit and interval in the table and in summary.json; --offsets off fits none; a bad
+// A bilinear specimen whose load cell reads 5 % of its peak force at rest (written in mm and
+// N, read in m and kN): the calibration (offsets auto by default) keeps a force offset, gives
+// it back within 1 % with its unit and interval in the table and in summary.json; --offsets off fits none; a bad
 // --offsets value is a clear error.
 void TestReplayCommand::calibrationFitsAForceOffset() {
     const double k0 = 1000.0, fy = 2.8, b = 0.1; // kN/m, kN, -
@@ -308,7 +308,7 @@ void TestReplayCommand::calibrationFitsAForceOffset() {
     Result r = run(out, {});
     QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
     QVERIFY2(r.out.contains(QStringLiteral("offsets fitted")), qPrintable(r.out));
-    QVERIFY2(QRegularExpression(QStringLiteral("forceOffset +N +[-0-9.e]+ +\\+- "))
+    QVERIFY2(QRegularExpression(QStringLiteral("forceOffset +kN +[-0-9.e]+ +\\+- "))
                  .match(r.out)
                  .hasMatch(),
              qPrintable(r.out));
@@ -319,7 +319,7 @@ void TestReplayCommand::calibrationFitsAForceOffset() {
                                .toObject()
                                .value(QStringLiteral("forceOffset"))
                                .toObject();
-    QVERIFY2(relative(f0.value(QStringLiteral("value")).toDouble(), offset) < 0.01,
+    QVERIFY2(relative(f0.value(QStringLiteral("value")).toDouble(), offset / 1e3) < 0.01,
              qPrintable(r.out));
     QCOMPARE(f0.value(QStringLiteral("ci95")).toArray().size(), qsizetype(2));
     QCOMPARE(readJson(out + QStringLiteral("/summary.json"))
@@ -327,7 +327,7 @@ void TestReplayCommand::calibrationFitsAForceOffset() {
                  .toObject()
                  .value(QStringLiteral("forceOffset"))
                  .toString(),
-             QStringLiteral("N"));
+             QStringLiteral("kN"));
 
     r = run(path(m_dir, "offsetOff"), {QStringLiteral("--offsets"), QStringLiteral("off")});
     QVERIFY2(r.exitCode == 0, qPrintable(report(r)));

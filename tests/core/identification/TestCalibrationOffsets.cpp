@@ -161,6 +161,8 @@ private slots:
         QVERIFY(r.offsetTest.ran);
         QVERIFY(!r.offsetTest.used);
         QVERIFY(r.offsetTest.criterion >= 0);
+        // the fit with offsets starts from the plain optimum: never worse
+        QVERIFY(r.offsetTest.nrmseWith <= r.offsetTest.nrmseWithout);
         QVERIFY(!r.parameters.count("forceOffset"));
         QCOMPARE(r.nrmse, plain.nrmse);
         QCOMPARE(r.names, plain.names);

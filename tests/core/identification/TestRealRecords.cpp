@@ -96,6 +96,7 @@ private slots:
               o.used ? "kept" : "left off", o.nrmseWithout, o.nrmseWith, o.criterion, o.branches);
         QVERIFY(o.ran);
         QVERIFY(best <= o.nrmseWithout);
+        QVERIFY(o.nrmseWith <= o.nrmseWithout); // from the plain optimum: never worse
         QVERIFY2(best <= 1.05 * reference,
                  qPrintable(QString("calibration NRMSE %1 > 1.05 x %2").arg(best).arg(reference)));
         // The online robust UKF.
