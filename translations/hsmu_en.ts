@@ -1220,6 +1220,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>    in its own scales: %1 (its normalized values are not comparable with the table's above)</translation>
     </message>
     <message>
+        <source>The calibration's deformation and force offsets: auto (fitted when the data ask for them, the default), on or off.</source>
+        <translation>The calibration's deformation and force offsets: auto (fitted when the data ask for them, the default), on or off.</translation>
+    </message>
+    <message>
+        <source>--offsets: expected auto, on or off, found '%1'</source>
+        <translation>--offsets: expected auto, on or off, found '%1'</translation>
+    </message>
+    <message>
+        <source>    offsets fitted: NRMSE %1 % with them, %2 % without (criterion %3 &lt; 0 over %4 branches)</source>
+        <translation>    offsets fitted: NRMSE %1 % with them, %2 % without (criterion %3 &lt; 0 over %4 branches)</translation>
+    </message>
+    <message>
+        <source>    offsets not needed: NRMSE %1 % with them, %2 % without (criterion %3 &gt;= 0 over %4 branches)</source>
+        <translation>    offsets not needed: NRMSE %1 % with them, %2 % without (criterion %3 &gt;= 0 over %4 branches)</translation>
+    </message>
+    <message>
         <source>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</source>
         <translation>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</translation>
     </message>

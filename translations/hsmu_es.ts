@@ -1220,6 +1220,22 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>    en sus propias escalas: %1 (sus valores normalizados no son comparables con los de la tabla anterior)</translation>
     </message>
     <message>
+        <source>The calibration&apos;s deformation and force offsets: auto (fitted when the data ask for them, the default), on or off.</source>
+        <translation>Los desplazamientos de cero (offsets) de deformación y de fuerza de la calibración: auto (ajustados cuando los datos los piden, por defecto), on u off.</translation>
+    </message>
+    <message>
+        <source>--offsets: expected auto, on or off, found &apos;%1&apos;</source>
+        <translation>--offsets: se esperaba auto, on u off; se encontró &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>    offsets fitted: NRMSE %1 % with them, %2 % without (criterion %3 &lt; 0 over %4 branches)</source>
+        <translation>    offsets ajustados: NRMSE %1 % con ellos, %2 % sin ellos (criterio %3 &lt; 0 sobre %4 ramas)</translation>
+    </message>
+    <message>
+        <source>    offsets not needed: NRMSE %1 % with them, %2 % without (criterion %3 &gt;= 0 over %4 branches)</source>
+        <translation>    offsets innecesarios: NRMSE %1 % con ellos, %2 % sin ellos (criterio %3 &gt;= 0 sobre %4 ramas)</translation>
+    </message>
+    <message>
         <source>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</source>
         <translation>hsmu replay: %1 / %2 muestras, %3 reajustes, %4 rechazadas, %5 s transcurridos, quedan unos %6 s</translation>
     </message>

@@ -1220,6 +1220,22 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>    采用其自身的尺度：%1（其归一化值与上表中的值不可比较）</translation>
     </message>
     <message>
+        <source>The calibration&apos;s deformation and force offsets: auto (fitted when the data ask for them, the default), on or off.</source>
+        <translation>标定的变形偏移与力偏移：auto（数据需要时拟合，默认）、on 或 off。</translation>
+    </message>
+    <message>
+        <source>--offsets: expected auto, on or off, found &apos;%1&apos;</source>
+        <translation>--offsets：应为 auto、on 或 off，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>    offsets fitted: NRMSE %1 % with them, %2 % without (criterion %3 &lt; 0 over %4 branches)</source>
+        <translation>    已拟合偏移：含偏移 NRMSE %1 %，不含 %2 %（判据 %3 &lt; 0，共 %4 个分支）</translation>
+    </message>
+    <message>
+        <source>    offsets not needed: NRMSE %1 % with them, %2 % without (criterion %3 &gt;= 0 over %4 branches)</source>
+        <translation>    无需偏移：含偏移 NRMSE %1 %，不含 %2 %（判据 %3 &gt;= 0，共 %4 个分支）</translation>
+    </message>
+    <message>
         <source>hsmu replay: %1 / %2 samples, %3 refits, %4 rejected, %5 s elapsed, about %6 s left</source>
         <translation>hsmu replay：%1 / %2 个样本，%3 次重新拟合，%4 次拒绝，已用 %5 s，约剩 %6 s</translation>
     </message>

@@ -242,6 +242,12 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
                                             double dt, const std::string& where)
 {
     try {
+        if (model.parameterIndex("forceOffset") >= 0 ||
+            model.parameterIndex("deformationOffset") >= 0)
+            throw ConfigError(where + ": the specimen model has offsets (deformationOffset, "
+                                      "forceOffset); the online identifiers fit none: calibrate "
+                                      "them offline (hsmu replay --offsets) and give them to the "
+                                      "twins' models by hand");
         if (u.method == "ukf" && model.lawName() == "boucWenPinching") {
             if (u.ukfFormulation != "robust")
                 throw ConfigError(where + ": the paper's UKF formulation identifies a boucWen "

@@ -5,6 +5,7 @@
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/hysteresis/LinearElastic.h"
 #include "core/hysteresis/MrDamper.h"
+#include "core/hysteresis/OffsetLaw.h"
 
 #include <algorithm>
 #include <cctype>
@@ -157,8 +158,10 @@ template <typename P, std::size_t N> std::vector<std::string> namesOf(const Para
 
 } // namespace
 
-std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
-                                       const std::map<std::string, double>& params) {
+namespace {
+
+std::unique_ptr<HysteresisLaw> makeInnerLaw(const std::string& lawName,
+                                            const std::map<std::string, double>& params) {
     const std::string key = lowerCase(lawName);
     if (key == "boucwen" || key == "bouc-wen") {
         const auto p = fillParameters("boucWen", kBoucWenSpecs, params);
@@ -188,6 +191,27 @@ std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
     throw std::invalid_argument("unknown hysteresis law '" + lawName +
                                 "' (expected one of boucWen, bouc-wen, boucWenPinching, "
                                 "bouc-wen-pinching, mrDamper, mr-damper, bilinear, elastic)");
+}
+
+} // namespace
+
+std::unique_ptr<HysteresisLaw> makeLaw(const std::string& lawName,
+                                       const std::map<std::string, double>& params) {
+    const auto u0 = params.find(OffsetLaw::kDeformationOffset);
+    const auto f0 = params.find(OffsetLaw::kForceOffset);
+    if (u0 == params.end() && f0 == params.end())
+        return makeInnerLaw(lawName, params);
+    std::map<std::string, double> inner = params;
+    inner.erase(OffsetLaw::kDeformationOffset);
+    inner.erase(OffsetLaw::kForceOffset);
+    std::unique_ptr<HysteresisLaw> law = makeInnerLaw(lawName, inner);
+    for (const auto& it : {u0, f0})
+        if (it != params.end() && !std::isfinite(it->second))
+            throw std::invalid_argument(law->lawName() + ": parameter '" + it->first + "' = " +
+                                        formatValue(it->second) +
+                                        " is not admissible (expected a finite number)");
+    return std::make_unique<OffsetLaw>(std::move(law), u0 != params.end() ? u0->second : 0.0,
+                                       f0 != params.end() ? f0->second : 0.0);
 }
 
 std::vector<std::string> knownLaws() {

@@ -14,6 +14,9 @@
 //   bilinear  k0, fy, b   (defaults of BilinearParameters: 1, 1, 0.1)
 //   elastic   k           (default 1)
 // Unspecified parameters take the defaults.
+// Every law also takes "deformationOffset" and "forceOffset" (OffsetLaw.h: F = F_law(u - u0) +
+// F0, in the caller's units): when either is given the law is built inside an OffsetLaw, whose
+// layout is the law's names followed by the two offsets (the other one 0).
 
 #include <map>
 #include <memory>

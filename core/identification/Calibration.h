@@ -94,6 +94,14 @@ struct CalibrationResult {
     int startsTried = 0;
     int residualEvaluations = 0;
     double computeSeconds = 0.0; ///< wall time [s]
+    /// The offset test of calibrateHistory (CalibrationDefaults.h, "Offsets"), when it ran.
+    struct OffsetTest {
+        bool ran = false;      ///< a fit with offsets was made (offsets on or auto)
+        bool used = false;     ///< the result is that fit (its parameters hold the offsets)
+        double nrmseWithout = 0.0, nrmseWith = 0.0; ///< the two fits' NRMSE [-]
+        int branches = 0;      ///< N_eff: the history's branches (reversals + 1)
+        double criterion = 0.0; ///< N_eff ln(RSS_with / RSS_without) + 2 ln N_eff (< 0: kept)
+    } offsetTest;
 };
 
 /// The fit of spec.law to the history (equal sizes >= 3, finite). Not ok, with a reason, for

@@ -1,7 +1,10 @@
 #include "core/identification/CalibrationDefaults.h"
 
+#include "core/hysteresis/OffsetLaw.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <stdexcept>
@@ -174,7 +177,41 @@ std::vector<std::vector<double>> reorder(const std::vector<Box>& defaults,
     return out;
 }
 
+/// The offsets' box: physical units, from the history's own range and peak force.
+std::vector<Box> offsetBox(const HistoryScales& s) {
+    const double range = s.deformationRange > 0 ? s.deformationRange : 1.0;
+    const double peak = s.fRef > 0 ? s.fRef : 1.0;
+    return {{OffsetLaw::kDeformationOffset, -0.5 * range, 0.5 * range, 0.01 * range},
+            {OffsetLaw::kForceOffset, -0.5 * peak, 0.5 * peak, 0.01 * peak}};
+}
+
+bool isOffset(const std::string& name) {
+    return name == OffsetLaw::kDeformationOffset || name == OffsetLaw::kForceOffset;
+}
+
 } // namespace
+
+std::optional<CalibrationOffsets> calibrationOffsetsFromName(const std::string& name) {
+    if (name == "off")
+        return CalibrationOffsets::Off;
+    if (name == "on")
+        return CalibrationOffsets::On;
+    if (name == "auto")
+        return CalibrationOffsets::Auto;
+    return std::nullopt;
+}
+
+const char* calibrationOffsetsName(CalibrationOffsets offsets) {
+    switch (offsets) {
+    case CalibrationOffsets::Off:
+        return "off";
+    case CalibrationOffsets::On:
+        return "on";
+    case CalibrationOffsets::Auto:
+        return "auto";
+    }
+    return "off";
+}
 
 CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
                                        const HistoryScales& scales) {
@@ -217,6 +254,14 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
                                     request.law + "' (expected boucWen, boucWenPinching, "
                                     "mrDamper or bilinear)");
     }
+    if (request.offsets != CalibrationOffsets::Off) {
+        const std::vector<Box> offsets = offsetBox(scales);
+        defaults.insert(defaults.end(), offsets.begin(), offsets.end());
+        for (auto& s : starts)
+            s.insert(s.end(), {0.0, 0.0});
+        spec.fixed[OffsetLaw::kDeformationOffset] = 0.0; // the law is built with its offsets
+        spec.fixed[OffsetLaw::kForceOffset] = 0.0;
+    }
     std::vector<Box> box = defaults;
     restrictTo(box, request.fitted);
     applyBounds(box, request.bounds);
@@ -233,8 +278,14 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
     return spec;
 }
 
-CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vector<double>& f,
-                                   const CalibrationRequest& request) {
+namespace {
+
+/// calibrateHistory without its offsets (request.offsets is ignored).
+CalibrationResult calibrateLaw(const std::vector<double>& u, const std::vector<double>& f,
+                               CalibrationRequest request) {
+    request.offsets = CalibrationOffsets::Off;
+    request.fitted.erase(std::remove_if(request.fitted.begin(), request.fitted.end(), isOffset),
+                         request.fitted.end());
     const HistoryScales scales = deriveHistoryScales(u, f);
     if (!scales.ok && !(request.uRef && request.fRef)) {
         CalibrationResult r;
@@ -297,6 +348,76 @@ CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vect
     pinched.residualEvaluations += base.residualEvaluations;
     pinched.computeSeconds += base.computeSeconds;
     return pinched;
+}
+
+/// The fit with offsets from the fit without them (`plain`), and the choice between them.
+CalibrationResult calibrateOffsets(const std::vector<double>& u, const std::vector<double>& f,
+                                   const CalibrationRequest& request, CalibrationResult plain) {
+    const HistoryScales scales = deriveHistoryScales(u, f);
+    CalibrationRequest withOffsets = request;
+    withOffsets.offsets = CalibrationOffsets::On;
+    // the plain fit's scales and fitted set (for boucWen possibly a moved uRef)
+    for (const char* name : {"uRef", "fRef"}) {
+        const auto it = plain.parameters.find(name);
+        if (it != plain.parameters.end())
+            (std::string(name) == "uRef" ? withOffsets.uRef : withOffsets.fRef) = it->second;
+    }
+    withOffsets.fitted = plain.names;
+    withOffsets.fitted.erase(std::remove_if(withOffsets.fitted.begin(), withOffsets.fitted.end(),
+                                            isOffset),
+                             withOffsets.fitted.end());
+    for (const char* name : {OffsetLaw::kDeformationOffset, OffsetLaw::kForceOffset})
+        if (request.fitted.empty() ||
+            std::find(request.fitted.begin(), request.fitted.end(), name) != request.fitted.end())
+            withOffsets.fitted.push_back(name);
+    CalibrationSpec spec = defaultCalibrationSpec(withOffsets, scales);
+    // the other parameters the plain fit held (its fixed ones) stay as they were
+    for (const auto& [name, value] : plain.parameters)
+        if (!isOffset(name) && std::find(withOffsets.fitted.begin(), withOffsets.fitted.end(),
+                                         name) == withOffsets.fitted.end())
+            spec.fixed[name] = value;
+    // One start, the plain optimum with both offsets 0 (the same forces, bit for bit), and
+    // every sample in both phases: Levenberg-Marquardt only accepts steps that lower the
+    // cost, so the fit with offsets is never worse than the fit without them.
+    std::vector<double> start;
+    for (const Box& b : spec.fitted)
+        start.push_back(isOffset(b.name) ? 0.0 : plain.parameters.at(b.name));
+    spec.starts = {start};
+    spec.reducedSamples = u.size();
+    spec.global = spec.local;
+    spec.polished = 1;
+    CalibrationResult fitted = calibrate(u, f, spec);
+    if (fitted.cancelled)
+        return fitted;
+    CalibrationResult::OffsetTest test;
+    test.ran = fitted.ok;
+    test.nrmseWithout = plain.nrmse;
+    test.nrmseWith = fitted.ok ? fitted.nrmse : std::nan("");
+    test.branches = std::max(scales.reversals, 0) + 1;
+    const double n = double(test.branches);
+    test.criterion = fitted.ok && plain.nrmse > 0
+                         ? 2.0 * n * std::log(fitted.nrmse / plain.nrmse) + 2.0 * std::log(n)
+                         : std::numeric_limits<double>::infinity();
+    const bool keep = fitted.ok && (request.offsets == CalibrationOffsets::On ||
+                                    (test.criterion < 0 && fitted.nrmse < plain.nrmse));
+    CalibrationResult& out = keep ? fitted : plain;
+    const CalibrationResult& other = keep ? plain : fitted;
+    test.used = keep;
+    out.offsetTest = test;
+    out.residualEvaluations += other.residualEvaluations;
+    out.computeSeconds += other.computeSeconds;
+    out.startsTried += other.startsTried;
+    return std::move(out);
+}
+
+} // namespace
+
+CalibrationResult calibrateHistory(const std::vector<double>& u, const std::vector<double>& f,
+                                   const CalibrationRequest& request) {
+    CalibrationResult plain = calibrateLaw(u, f, request);
+    if (request.offsets == CalibrationOffsets::Off || !plain.ok)
+        return plain;
+    return calibrateOffsets(u, f, request, std::move(plain));
 }
 
 } // namespace hsmu

@@ -14,6 +14,7 @@
 // Thread rules: plain data.
 
 #include "core/config/TestConfig.h"
+#include "core/identification/CalibrationDefaults.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,10 @@ struct IdentificationSettings {
     /// Calibrate the law over the whole history (Calibration.h): the best the law can do,
     /// reported beside the online result, and the verdict on the model family.
     bool calibrate = true;
+    /// The calibration's deformation and force offsets (CalibrationDefaults.h, "Offsets";
+    /// `hsmu replay --offsets`): fitted when the data ask for them (auto), always (on) or
+    /// never (off). Offline only: the online identifiers and the twins take no offsets.
+    CalibrationOffsets offsets = CalibrationOffsets::Auto;
     /// A calibration NRMSE above this says that the law cannot represent the specimen [-].
     double verdictNrmse = 0.25;
     /// When set and true (from any thread), the work stops at the calibration's next

@@ -81,6 +81,7 @@ void calibrateWhole(const SpecimenHistory& h, const IdentificationSettings& s,
     CalibrationRequest request;
     request.progress = progress;
     request.law = s.model.law;
+    request.offsets = s.offsets;
     request.uRef = s.updating.modelURef;
     request.fRef = s.updating.modelFRef;
     request.cancel = s.cancel;

@@ -57,8 +57,10 @@ std::string parameterUnit(const std::string& law, const std::string& name,
                           const std::string& deformationUnits, const std::string& forceUnits) {
     if (name == "uRef")
         return deformationUnits;
-    if (name == "fRef")
+    if (name == "fRef" || name == "forceOffset")
         return forceUnits;
+    if (name == "deformationOffset")
+        return deformationUnits;
     const std::string stiffness = forceUnits + "/" + deformationUnits;
     if (law == "bilinear")
         return name == "k0" ? stiffness : (name == "fy" ? forceUnits : "-");
@@ -94,6 +96,14 @@ nlohmann::json calibrationJson(const CalibrationResult& c) {
         fitted[c.names[i]] = p;
     }
     cal["parameters"] = fitted;
+    if (c.offsetTest.ran) {
+        const auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+        cal["offsets"] = {{"used", c.offsetTest.used},
+                          {"nrmseWithout", finite(c.offsetTest.nrmseWithout)},
+                          {"nrmseWith", finite(c.offsetTest.nrmseWith)},
+                          {"branches", c.offsetTest.branches},
+                          {"criterion", finite(c.offsetTest.criterion)}};
+    }
     return cal;
 }
 

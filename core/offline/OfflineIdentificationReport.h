@@ -18,7 +18,9 @@
 //                     "refits", "estimatorWarnings", "messages": [...],
 //                     "calibration": { "nrmse", "rmsError", "starts", "replays", "seconds",
 //                        "model": {every parameter}, "parameters": { NAME: {"value",
-//                        "onBound", "stddev", "ci95": [lo, hi], "correlation": {NAME: r}}}},
+//                        "onBound", "stddev", "ci95": [lo, hi], "correlation": {NAME: r}}},
+//                        "offsets": {"used", "nrmseWithout", "nrmseWith", "branches",
+//                        "criterion"} when the offset test ran (CalibrationDefaults.h)},
 //                     "verdict": "" or "the model family cannot represent ..." }
 // "online" is the run's own final estimate when the record holds one for the same method
 // and parameter. Parameters are in the law's units (normalized by uRef / fRef for Bouc-Wen).
@@ -43,7 +45,8 @@ void writeJsonFile(const std::string& path, const nlohmann::json& j,
                    std::vector<std::string>& written);
 
 /// The unit of a law's parameter as the tables and files state it: uRef in the deformation's
-/// unit, fRef in the force's; "-" for the Bouc-Wen laws' normalized parameters; the bilinear
+/// unit, fRef in the force's (and the offsets of every law, OffsetLaw.h: deformationOffset in
+/// the deformation's unit, forceOffset in the force's); "-" for the Bouc-Wen laws' normalized parameters; the bilinear
 /// law's k0 in force / deformation, fy in force, b "-"; the elastic law's k in force /
 /// deformation; "-" otherwise.
 std::string parameterUnit(const std::string& law, const std::string& name,

@@ -31,6 +31,7 @@ int fail(const QString& message) {
 
 struct ReplayOptions {
     QString record, import, units, columns, method, config, specimen, outDir;
+    CalibrationOffsets offsets = CalibrationOffsets::Auto; ///< --offsets
 };
 
 std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
@@ -73,8 +74,13 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
                                          QStringLiteral("name"));
     const QCommandLineOption outOpt(QStringLiteral("out"), ReplayCommand::tr("Output directory."),
                                     QStringLiteral("dir"));
-    p.addOptions(
-        {identifyOpt, importOpt, unitsOpt, columnsOpt, methodOpt, configOpt, specimenOpt, outOpt});
+    const QCommandLineOption offsetsOpt(
+        QStringLiteral("offsets"),
+        ReplayCommand::tr("The calibration's deformation and force offsets: auto (fitted when "
+                          "the data ask for them, the default), on or off."),
+        QStringLiteral("mode"));
+    p.addOptions({identifyOpt, importOpt, unitsOpt, columnsOpt, methodOpt, configOpt, specimenOpt,
+                  outOpt, offsetsOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed;
     const QStringList pos = p.positionalArguments();
@@ -96,6 +102,13 @@ std::optional<QString> parse(const QStringList& arguments, ReplayOptions& o) {
     o.config = p.value(configOpt);
     o.specimen = p.value(specimenOpt);
     o.outDir = p.value(outOpt);
+    if (p.isSet(offsetsOpt)) {
+        const auto offsets = calibrationOffsetsFromName(p.value(offsetsOpt).toStdString());
+        if (!offsets)
+            return ReplayCommand::tr("--offsets: expected auto, on or off, found '%1'")
+                .arg(p.value(offsetsOpt));
+        o.offsets = *offsets;
+    }
     if (o.outDir.isEmpty())
         return ReplayCommand::tr("missing --out DIR");
     return std::nullopt;
@@ -220,13 +233,28 @@ void printTable(const SpecimenHistory& h, const IdentificationSettings& s,
         for (std::size_t i = 0; i < c.names.size(); ++i) {
             const auto k = Eigen::Index(i);
             const double sd = c.standardDeviation[k];
-            out << QStringLiteral("    %1 %2 %3")
-                       .arg(QString::fromStdString(c.names[i]), -10)
+            out << QStringLiteral("    %1 %2 %3 %4")
+                       .arg(QString::fromStdString(c.names[i]), -17)
+                       .arg(QString::fromStdString(parameterUnit(s.model.law, c.names[i],
+                                                                 h.deformationUnits,
+                                                                 h.forceUnits)),
+                            -8)
                        .arg(num(c.estimate[k]), 12)
                        .arg(c.onBound[i] ? ReplayCommand::tr("on its bound")
                                          : QStringLiteral("+- %1").arg(num(1.96 * sd)))
                 << Qt::endl;
         }
+        if (c.offsetTest.ran)
+            out << (c.offsetTest.used
+                        ? ReplayCommand::tr("    offsets fitted: NRMSE %1 % with them, %2 % "
+                                            "without (criterion %3 < 0 over %4 branches)")
+                        : ReplayCommand::tr("    offsets not needed: NRMSE %1 % with them, %2 % "
+                                            "without (criterion %3 >= 0 over %4 branches)"))
+                       .arg(QString::number(100.0 * c.offsetTest.nrmseWith, 'f', 2))
+                       .arg(QString::number(100.0 * c.offsetTest.nrmseWithout, 'f', 2))
+                       .arg(QString::number(c.offsetTest.criterion, 'f', 1))
+                       .arg(c.offsetTest.branches)
+                << Qt::endl;
     }
     if (!r.verdict.empty())
         out << ReplayCommand::tr("  verdict: %1").arg(QString::fromStdString(r.verdict))
@@ -370,6 +398,7 @@ int ReplayCommand::exec(const QStringList& arguments) {
         }
         const bool all = o.method == QLatin1String("all"); // each method set per row
         settings = withOverrides(settings, o.config, all ? QString() : o.method);
+        settings.offsets = o.offsets;
         settings.online = !(o.method == QLatin1String("calibration") ||
                             (o.method.isEmpty() && calibrationOnlyByDefault(settings)));
     } catch (const std::exception& e) {

@@ -58,6 +58,7 @@ private slots:
     void importIdentifies();
     void pinchingModelIsCalibratedByDefault();
     void errorsAreClear();
+    void calibrationFitsAForceOffset();
     void labUnitsOutAndBackIn();
     void methodAllEqualsTheSingleRuns();
     void interruptedReplayWritesAPartialSummary();
@@ -266,6 +267,76 @@ void TestReplayCommand::errorsAreClear() {
                        QStringLiteral("--out"), path(m_dir, "x")});
     QCOMPARE(r.exitCode, 1);
     QVERIFY2(r.err.contains(QStringLiteral("expected ukf, nelder-mead, calibration or all")), qPrintable(r.err));
+}
+
+// A bilinear specimen whose load cell reads 5 % of its peak force at rest (written in mm and
+// N, read in m and kN): the calibration (offsets auto by default) keeps a force offset, gives
+// it back within 1 % with its unit and interval in the table and in summary.json; --offsets off fits none; a bad
+// --offsets value is a clear error.
+void TestReplayCommand::calibrationFitsAForceOffset() {
+    const double k0 = 1000.0, fy = 2.8, b = 0.1; // kN/m, kN, -
+    std::vector<double> us, fs;
+    double u = 0.0, f = 0.0, peak = 0.0;
+    for (int k = 1; k <= 600; ++k) {
+        const double uNew = 0.012 * (0.01 * k / 6.0) * std::sin(2.0 * M_PI * 0.01 * k);
+        const double upper = fy * (1.0 - b) + b * k0 * uNew;
+        const double lower = -fy * (1.0 - b) + b * k0 * uNew;
+        f = std::clamp(f + k0 * (uNew - u), lower, upper);
+        u = uNew;
+        us.push_back(u);
+        fs.push_back(f);
+        peak = std::max(peak, std::abs(f));
+    }
+    const double offset = 0.05 * peak * 1e3; // N
+    QByteArray csv = "time [s], deformation [mm], force [N]\n";
+    for (std::size_t k = 0; k < us.size(); ++k)
+        csv += QByteArray::number(0.01 * double(k + 1), 'g', 17) + ", " +
+               QByteArray::number(us[k] * 1e3, 'g', 17) + ", " +
+               QByteArray::number(fs[k] * 1e3 + offset, 'g', 17) + "\n";
+    const QString data = path(m_dir, "offset.csv");
+    writeText(data, csv);
+    const QString settings = path(m_dir, "offset.json");
+    writeText(settings, R"({"model": {"law": "bilinear"}})");
+    const auto run = [&](const QString& out, const QStringList& extra) {
+        return clitest::hsmu(QStringList{QStringLiteral("replay"), QStringLiteral("--import"), data,
+                                         QStringLiteral("--method"), QStringLiteral("calibration"),
+                                         QStringLiteral("--config"), settings,
+                                         QStringLiteral("--out"), out} +
+                             extra);
+    };
+    const QString out = path(m_dir, "offset");
+    Result r = run(out, {});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    QVERIFY2(r.out.contains(QStringLiteral("offsets fitted")), qPrintable(r.out));
+    QVERIFY2(QRegularExpression(QStringLiteral("forceOffset +kN +[-0-9.e]+ +\\+- "))
+                 .match(r.out)
+                 .hasMatch(),
+             qPrintable(r.out));
+    const QJsonObject cal =
+        readJson(out + QStringLiteral("/summary.json")).value(QStringLiteral("calibration")).toObject();
+    QVERIFY(cal.value(QStringLiteral("offsets")).toObject().value(QStringLiteral("used")).toBool());
+    const QJsonObject f0 = cal.value(QStringLiteral("parameters"))
+                               .toObject()
+                               .value(QStringLiteral("forceOffset"))
+                               .toObject();
+    QVERIFY2(relative(f0.value(QStringLiteral("value")).toDouble(), offset / 1e3) < 0.01,
+             qPrintable(r.out));
+    QCOMPARE(f0.value(QStringLiteral("ci95")).toArray().size(), qsizetype(2));
+    QCOMPARE(readJson(out + QStringLiteral("/summary.json"))
+                 .value(QStringLiteral("parameterUnits"))
+                 .toObject()
+                 .value(QStringLiteral("forceOffset"))
+                 .toString(),
+             QStringLiteral("kN"));
+
+    r = run(path(m_dir, "offsetOff"), {QStringLiteral("--offsets"), QStringLiteral("off")});
+    QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+    QVERIFY2(!r.out.contains(QStringLiteral("forceOffset")), qPrintable(r.out));
+
+    r = run(path(m_dir, "offsetBad"), {QStringLiteral("--offsets"), QStringLiteral("maybe")});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("--offsets: expected auto, on or off, found 'maybe'")),
+             qPrintable(r.err));
 }
 
 void TestReplayCommand::labUnitsOutAndBackIn() {

@@ -250,6 +250,29 @@ void TestOfflineIdentification::badSettingsAreClearErrors() {
         message({{"model", {{"law", "bilinear"}}}, {"updating", {{"method", "ukf"}}}});
     QVERIFY2(bilinearUkf.find("UKF identifies a boucWen model") != std::string::npos,
              bilinearUkf.c_str());
+    // A specimen model with offsets (OffsetLaw.h): the online identifiers fit none and say so
+    // (docs/method.md, "Offsets"), for the UKF and for Nelder-Mead.
+    SpecimenHistory h;
+    h.source = "offset.csv";
+    for (int k = 0; k < 20; ++k) {
+        h.time.push_back(0.01 * k);
+        h.deformation.push_back(0.01 * std::sin(0.5 * k));
+        h.force.push_back(std::sin(0.5 * k));
+    }
+    for (const char* method : {"ukf", "nelderMead"}) {
+        std::string why = "no error";
+        try {
+            identifyOffline(h, withOverride(s,
+                                            {{"model", {{"law", "boucWen"}, {"forceOffset", 0.1}}},
+                                             {"updating", {{"method", method}}}},
+                                            "o.json"));
+        } catch (const ConfigError& e) {
+            why = e.what();
+        }
+        QVERIFY2(why.find("the specimen model has offsets (deformationOffset, forceOffset); the "
+                          "online identifiers fit none") != std::string::npos,
+                 why.c_str());
+    }
     try {
         withMethod(s, "simplex");
         QFAIL("no error");
