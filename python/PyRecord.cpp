@@ -186,6 +186,18 @@ public:
     bool swmr() const { return m_reader->swmr(); }
     std::string path() const { return m_reader->path(); }
     std::vector<std::string> sites() const { return d().layout.sites; }
+    /// {site: security} (the record's /sites `security`); None for each site of a record
+    /// written before it was kept.
+    py::dict siteSecurity() const {
+        const auto& sites = d().layout.sites;
+        const auto& security = d().meta.siteSecurity;
+        py::dict out;
+        for (std::size_t i = 0; i < sites.size(); ++i)
+            out[py::str(sites[i])] = i < security.size() && !security[i].empty()
+                                         ? py::object(py::str(security[i]))
+                                         : py::object(py::none());
+        return out;
+    }
     std::vector<std::string> dofs() const { return d().layout.dofNames; }
 
 private:
@@ -244,6 +256,11 @@ Example:
                                "Elements: dicts of name, type, experimental, nonlinear, "
                                "deformation_unit, force_unit.")
         .def_property_readonly("sites", &Record::sites, "The sites of the experimental elements.")
+        .def_property_readonly("site_security", &Record::siteSecurity,
+                               "How the console reached each site: {site: \"tls\", "
+                               "\"plaintext-loopback\", \"insecure-plaintext\" or \"builtin\"}; "
+                               "None for a site of a record written before it was kept "
+                               "(docs/security.md).")
         .def_property_readonly("dofs", &Record::dofs, "The DOF names.")
         .def_property_readonly("updating", &Record::updating,
                                "None, or {specimen, method, parameters} of online updating.")

@@ -222,7 +222,9 @@ Returns a dict: "status" ("finished", "held", "failed"), "interrupted" (Ctrl+C),
 "hold_reason" (None, or the reason `hsmu run` prints in "test held at t = ... s (step N):
 REASON", e.g. a lost controller), "steps" ({column: float64 array}, one row per committed
 step, the columns of steps.csv with their units in the names: time_s, ag_m_s2, <dof>_u_m,
-..., at full precision), "summary" (summary.json's content), "configuration" (dict), "out".
+..., at full precision), "summary" (summary.json's content; its "link_security" says how
+each site was reached: "tls", "plaintext-loopback", "insecure-plaintext", "builtin"),
+"configuration" (dict), "out".
 A held run (a lost controller, a limit, Ctrl+C) returns normally, with every committed step
 kept and the record and summary written, as `hsmu run` exits 2 with them.
 The GIL is released while the test connects, runs and writes its files. Ctrl+C is an

@@ -15,6 +15,13 @@
 #   hsmu-certs.sh fingerprint FILE
 #       the certificate's SHA-256 fingerprint (64 hex digits): a pin, or a line of a revoked
 #       list (hsmu-controller --tls-pins / --tls-revoked; the console's "pins").
+#   hsmu-certs.sh revoke FILE --ca DIR [--crl-days N]
+#       marks the certificate FILE (issued by the CA in DIR) revoked in the CA's index.txt and
+#       writes DIR/crl.pem, the CA's certificate revocation list, valid N days (default 30):
+#       give it to the controllers (hsmu-controller --tls-crl, the console's "crl") and send
+#       them SIGHUP.
+#   hsmu-certs.sh crl --ca DIR [--crl-days N]
+#       writes DIR/crl.pem again (the same revocations, a new validity): before it expires.
 #
 # Every file is written with umask 077 (keys must stay private: hsmu refuses a key file that
 # others can read).
@@ -22,7 +29,7 @@ set -euo pipefail
 umask 077
 
 die() { echo "hsmu-certs.sh: $*" >&2; exit 2; }
-usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 
 init_ca() {
   local dir="${1:-}"
@@ -103,9 +110,49 @@ fingerprint() {
   openssl x509 -in "$file" -noout -fingerprint -sha256 | sed 's/^.*=//; s/://g' | tr 'A-F' 'a-f'
 }
 
+# crl DIR DAYS: DIR/crl.pem from the CA's index.txt (PEM, signed by the CA, mode 0644).
+make_crl() {
+  local ca="$1" days="$2"
+  [[ "$days" =~ ^[1-9][0-9]*$ ]] || die "--crl-days: expected a whole number of days >= 1, found '$days'"
+  openssl ca -batch -config "$ca/openssl.cnf" -gencrl -crldays "$days" -md sha256 \
+    -out "$ca/crl.pem.tmp" 2>/dev/null || die "openssl ca -gencrl failed (run it by hand: openssl ca -config $ca/openssl.cnf -gencrl ...)"
+  chmod 644 "$ca/crl.pem.tmp"
+  mv "$ca/crl.pem.tmp" "$ca/crl.pem"
+  echo "hsmu-certs.sh: $ca/crl.pem ($(grep -c '^R' "$ca/index.txt" || true) revoked, valid $days days)"
+}
+
+ca_options() { # sets ca and days from --ca DIR [--crl-days N]
+  ca="" days=30
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --ca) ca="${2:?--ca DIR}"; shift 2 ;;
+      --crl-days) days="${2:?--crl-days N}"; shift 2 ;;
+      *) die "unknown option $1" ;;
+    esac
+  done
+  [ -f "$ca/ca.key" ] && [ -f "$ca/openssl.cnf" ] || die "--ca DIR must be a folder made by init-ca"
+}
+
+revoke() {
+  local file="${1:-}"; shift || true
+  [ -n "$file" ] && [[ "$file" != -* ]] || usage
+  [ -f "$file" ] || die "revoke: no such certificate: $file"
+  local ca days; ca_options "$@"
+  openssl ca -batch -config "$ca/openssl.cnf" -revoke "$file" 2>/dev/null ||
+    die "revoke: openssl ca -revoke failed ($file not issued by the CA in $ca, or already revoked)"
+  make_crl "$ca" "$days"
+}
+
+crl() {
+  local ca days; ca_options "$@"
+  make_crl "$ca" "$days"
+}
+
 case "${1:-}" in
   init-ca) shift; init_ca "$@" ;;
   issue) shift; issue "$@" ;;
   fingerprint) shift; fingerprint "$@" ;;
+  revoke) shift; revoke "$@" ;;
+  crl) shift; crl "$@" ;;
   *) usage ;;
 esac

@@ -6,7 +6,7 @@
 # "no-sanitizers" (their purpose conflicts with the instrumentation; each label has a comment
 # saying why) and, unless HSMU_SANITIZE_ALL=1, the ones labelled "sanitizers-slow" (long
 # identifications on the shared records whose code the shorter tests already cover).
-# HSMU_SANITIZE=thread selects ThreadSanitizer (build-thread/) for the threaded tests instead.
+# HSMU_SANITIZE=thread runs scripts/test-tsan.sh instead (ThreadSanitizer, the threaded tests).
 #
 # Any finding fails the stage: the code is built with -fno-sanitize-recover=all and the runtime
 # with halt_on_error=1, so the process that made it exits non-zero (its test fails), and every
@@ -18,15 +18,13 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 sanitize="${HSMU_SANITIZE:-address,undefined}"
+if [[ "$sanitize" == *thread* ]]; then
+  exec "$here/scripts/test-tsan.sh" "$@"
+fi
 build_dir="${HSMU_SANITIZE_BUILD_DIR:-$here/build-${sanitize//,/-}}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
-# Under TSan: the tests with threads of their own (links, sessions, the controller, records).
-if [[ "$sanitize" == *thread* ]]; then
-  regex='^test_(comms_|record_crash|record_round_trip|session_)'
-else
-  regex='^test_'
-fi
+regex='^test_'
 exclude='no-sanitizers'
 [ "${HSMU_SANITIZE_ALL:-0}" = 1 ] || exclude='no-sanitizers|sanitizers-slow'
 
@@ -44,9 +42,6 @@ mkdir -p "$reports"
 common="halt_on_error=1:log_path=$reports/report"
 export ASAN_OPTIONS="$common:detect_leaks=${HSMU_DETECT_LEAKS:-1}:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="$common:print_stacktrace=1"
-# die_after_fork=0: the tests start hsmu-controller through QProcess (a fork of a threaded
-# process), which TSan otherwise refuses ("starting new threads after multi-threaded fork").
-export TSAN_OPTIONS="$common:second_deadlock_stack=1:die_after_fork=0"
 export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
 
 status=0

@@ -16,7 +16,7 @@ const char* ControllerCommandLine::usage() {
            "[--pace realtime|fast] [--token-file F] [--state-file FILE | --no-state-file] "
            "[--quiet]\n"
            "                       [--tls-certificate F --tls-key F (--tls-ca F | --tls-pins F) "
-           "[--tls-revoked F]]\n"
+           "[--tls-revoked F] [--tls-crl F]]\n"
            "                       [--protocol native|simapp|generictcp] [--data-size N] "
            "[--simapp-site] [--realtime-priority P] [--reply-delay MS]\n"
            "       hsmu-controller --rths FILE|PRESET --port PORT [--bind ADDR] [--pace realtime|fast]\n"
@@ -48,8 +48,10 @@ const char* ControllerCommandLine::usage() {
            "                  certificate and key (PEM; the key readable by its owner only)\n"
            "  --tls-ca F      clients must show a certificate this CA signed ...\n"
            "  --tls-pins F    ... or one whose SHA-256 fingerprint F lists (one a line)\n"
-           "  --tls-revoked F fingerprints refused even under the CA (one a line); SIGHUP\n"
-           "                  re-reads every TLS file (docs/security.md)\n"
+           "  --tls-revoked F fingerprints refused even under the CA (one a line)\n"
+           "  --tls-crl F     the CA's revocation list (PEM; scripts/hsmu-certs.sh revoke):\n"
+           "                  certificates it lists are refused. SIGHUP re-reads every\n"
+           "                  TLS file (docs/security.md)\n"
            "  --pace P        realtime (wall clock, default) or fast (simulated clock)\n"
            "  --token-file F  file holding the shared secret the console's hello must carry\n"
            "                  (or the environment variable HSMU_CONTROLLER_TOKEN; never an\n"
@@ -170,13 +172,14 @@ std::optional<ControllerCommandLine> ControllerCommandLine::parse(int argc, cons
             if (!value(c.bind))
                 return std::nullopt;
         } else if (a == "--tls-certificate" || a == "--tls-key" || a == "--tls-ca" ||
-                   a == "--tls-pins" || a == "--tls-revoked") {
+                   a == "--tls-pins" || a == "--tls-revoked" || a == "--tls-crl") {
             if (!c.tls)
                 c.tls.emplace();
             std::string& field = a == "--tls-certificate" ? c.tls->certificate
                                  : a == "--tls-key"       ? c.tls->key
                                  : a == "--tls-ca"        ? c.tls->ca
                                  : a == "--tls-pins"      ? c.tls->pinsFile
+                                 : a == "--tls-crl"       ? c.tls->crl
                                                           : c.tls->revokedFile;
             if (!value(field))
                 return std::nullopt;

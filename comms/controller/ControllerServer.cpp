@@ -112,9 +112,13 @@ struct ControllerServer::Impl final : SessionHost {
             if (ec)
                 return;
             std::string error;
-            if (reloadTls(error))
+            if (!opt.tls)
+                log("SIGHUP: no TLS files to reload (this controller has no --tls-* options); "
+                    "nothing changed");
+            else if (reloadTls(error))
                 log("SIGHUP: TLS files reloaded (" + std::to_string(tls.policy->pins.size()) +
-                    " pins, " + std::to_string(tls.policy->revoked.size()) + " revoked)");
+                    " pins, " + std::to_string(tls.policy->revoked.size()) + " revoked" +
+                    (opt.tls->crl.empty() ? std::string() : ", CRL " + opt.tls->crl) + ")");
             else
                 log("SIGHUP: TLS reload refused, the previous files stay: " + error);
             waitHangup();
@@ -357,6 +361,10 @@ bool ControllerServer::listen(std::string& error) {
         return false;
     if (!listenOn(d->acceptor, d->opt.bind, d->opt.port, error, "--bind: "))
         return false;
+    // SIGHUP handled before anyone is told the port (its default action would end the
+    // process): TLS files reloaded, or, without TLS, said and ignored. Served by run().
+    d->hangup.add(SIGHUP);
+    d->waitHangup();
     d->accept();
     return true;
 }
@@ -374,10 +382,6 @@ void ControllerServer::run() {
         if (!ec)
             stop();
     });
-    if (d->opt.tls) {
-        d->hangup.add(SIGHUP);
-        d->waitHangup();
-    }
     if (d->opt.realTime && d->opt.realTimePriority > 0) {
         sched_param sp{};
         sp.sched_priority = d->opt.realTimePriority;

@@ -65,6 +65,9 @@ bool OfServer::listen(std::string& error) {
         error = "--bind/--port: " + error;
         return false;
     }
+    // Before anyone is told the port: no TLS files to reload here, so SIGHUP is ignored (its
+    // default action would end the process).
+    std::signal(SIGHUP, SIG_IGN);
     return true;
 }
 

@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -343,6 +344,9 @@ RthsServer::~RthsServer() {
 bool RthsServer::listen(std::string& error) {
     if (!listenOn(d->acceptor, d->opt.bind, d->opt.port, error, "--bind: "))
         return false;
+    // Before anyone is told the port: no TLS files to reload here, so SIGHUP is ignored (its
+    // default action would end the process).
+    std::signal(SIGHUP, SIG_IGN);
     d->accept();
     return true;
 }

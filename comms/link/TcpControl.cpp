@@ -42,6 +42,13 @@ TcpControl::~TcpControl() {
     m_link->close();
 }
 
+std::string TcpControl::downReason() const {
+    if (!m_linkError.empty())
+        return m_linkError;
+    const std::string reason = m_link->closeReason();
+    return reason.empty() ? std::string("connection closed") : reason;
+}
+
 std::string TcpControl::where() const {
     const bool v6 = m_host.find(':') != std::string::npos;
     return (m_opt.tls ? "tls://" : "tcp://") + (v6 ? "[" + m_host + "]" : m_host) + ":" +
@@ -191,7 +198,7 @@ ControlResult TcpControl::freshSpecimen() {
     if (emergency())
         return ControlResult::fault(where() + ": " + emergencyText());
     if (!m_link->isOpen())
-        return ControlResult::fault("link to " + where() + " is down (" + m_linkError + ")");
+        return ControlResult::fault("link to " + where() + " is down (" + downReason() + ")");
     if (m_committed == 0)
         return ControlResult::success(); // virgin already
     return sendReset();
@@ -238,7 +245,7 @@ ControlResult TcpControl::setTarget(double d) {
     if (m_holding)
         return ControlResult::fault("TCP link is holding: " + m_holdReason);
     if (!m_link->isOpen())
-        return ControlResult::fault("link to " + where() + " is down (" + m_linkError +
+        return ControlResult::fault("link to " + where() + " is down (" + downReason() +
                                     "); resume to reconnect");
     std::string error;
     m_commitSent = false;
@@ -290,7 +297,7 @@ ControlResult TcpControl::commit() {
     if (emergency())
         return ControlResult::fault(where() + ": " + emergencyText());
     if (!m_link->isOpen())
-        return recoverCommit("link down (" + m_linkError + ")");
+        return recoverCommit("link down (" + downReason() + ")");
     std::string error;
     if (!sent && !m_link->send(CommitMsg{m_committed + 1}, error))
         return recoverCommit(error);
@@ -301,7 +308,7 @@ ControlResult TcpControl::commit() {
     }
     // Interrupted by an emergency hold: the step is retried after the resume (a commit the
     // controller did make is then answered idempotently: same measurement, same ack).
-    return m_link->isOpen() || emergency() ? r : recoverCommit(m_linkError);
+    return m_link->isOpen() || emergency() ? r : recoverCommit(downReason());
 }
 
 ControlResult TcpControl::recoverCommit(const std::string& why) {

@@ -120,6 +120,9 @@ private:
     std::string emergencyText() const;
     void takeEmergencyAcks(int count);
     std::string where() const;
+    /// Why the link is down: m_linkError, or the link's own close reason when it closed on its
+    /// own (the controller closed it, a read failed) between two of the console's calls.
+    std::string downReason() const;
 
     std::unique_ptr<LinkClient> m_link;
     std::string m_host;

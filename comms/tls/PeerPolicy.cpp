@@ -79,7 +79,9 @@ bool PeerVerifier::operator()(bool preverified, boost::asio::ssl::verify_context
         return refuse("the certificate " + fp.substr(0, 16) + "... is revoked");
     }
     if (!preverified) {
-        if (!(pinned && trustError(err)))
+        // A pinned leaf from another issuer has no CRL of that issuer: its pin is its trust,
+        // and the revoked list its revocation.
+        if (!(pinned && (trustError(err) || err == X509_V_ERR_UNABLE_TO_GET_CRL)))
             return refuse(X509_verify_cert_error_string(err));
     } else if (!m_chainTrusted && !pinned) {
         X509_STORE_CTX_set_error(store, X509_V_ERR_CERT_UNTRUSTED);

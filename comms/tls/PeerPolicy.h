@@ -3,7 +3,8 @@
 // (docs/security.md, "TLS"). A certificate is accepted when
 //   - its chain verifies up to the configured CA (dates included), or its SHA-256 fingerprint
 //     is pinned (then only its own dates are checked), and
-//   - its fingerprint is not in the revoked list, and
+//   - its fingerprint is not in the revoked list, nor (with a CRL: TlsSpec::crl, checked by
+//     OpenSSL's X509_STORE with X509_V_FLAG_CRL_CHECK) its serial in its CA's CRL, and
 //   - on the console's side, the host name or IP address dialled matches its subjectAltName.
 // The controller keeps a PeerPolicy per listening context and builds a new one on SIGHUP
 // (pins and revoked lists re-read): connections that arrive after the reload use it.

@@ -1,8 +1,8 @@
 #pragma once
 // makeTlsContext: the TLS 1.3 context of one end of a tls:// link (docs/security.md, "TLS"):
 // TLS 1.3 only (no fallback to older versions), this end's certificate chain and key (the key
-// file refused when others can read it), the CA to verify the peer with, and the peer policy
-// (pins, revoked). The console's context requires the controller's certificate; the
+// file refused when others can read it), the CA to verify the peer with, its CRL (X509_STORE's
+// CRL check of the leaf, when TlsSpec::crl is given), and the peer policy (pins, revoked). The console's context requires the controller's certificate; the
 // controller's requires a client certificate (mutual authentication). Internal to comms.
 
 #include "comms/tls/PeerPolicy.h"

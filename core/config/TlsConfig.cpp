@@ -66,7 +66,12 @@ bool checkTlsSpec(const TlsSpec& spec, std::string& error) {
         error = "TLS needs a CA or pinned fingerprints to trust the other end";
         return false;
     }
-    for (const std::string* f : {&spec.ca, &spec.certificate, &spec.pinsFile, &spec.revokedFile})
+    if (!spec.crl.empty() && spec.ca.empty()) {
+        error = "a TLS CRL (" + spec.crl + ") needs the CA that signs it (\"ca\", --tls-ca)";
+        return false;
+    }
+    for (const std::string* f :
+         {&spec.ca, &spec.certificate, &spec.pinsFile, &spec.revokedFile, &spec.crl})
         if (!f->empty() && !std::ifstream(*f)) {
             error = *f + ": cannot read the file";
             return false;
@@ -76,7 +81,7 @@ bool checkTlsSpec(const TlsSpec& spec, std::string& error) {
 
 TlsSpec parseTlsSpec(const JsonCursor& c, const std::string& baseDir) {
     c.requireObject();
-    c.allowOnly({"ca", "certificate", "key", "pins", "revoked"});
+    c.allowOnly({"ca", "certificate", "key", "pins", "revoked", "crl"});
     auto path = [&](const char* field) -> std::string {
         if (!c.has(field))
             return {};
@@ -90,6 +95,7 @@ TlsSpec parseTlsSpec(const JsonCursor& c, const std::string& baseDir) {
     s.certificate = path("certificate");
     s.key = path("key");
     s.revokedFile = path("revoked");
+    s.crl = path("crl");
     if (c.has("pins")) {
         const JsonCursor pins = c.child("pins");
         pins.requireArray();

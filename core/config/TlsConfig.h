@@ -4,7 +4,8 @@
 // ends:
 //
 //   "tls": {"ca": "lab-ca.pem", "certificate": "console.pem", "key": "console.key",
-//           "pins": ["sha256 fingerprint of a controller certificate", ...]}
+//           "pins": ["sha256 fingerprint of a controller certificate", ...],
+//           "revoked": "revoked.txt", "crl": "crl.pem"}
 //
 // ca: the CA (PEM) whose certificates this end trusts; pins: SHA-256 fingerprints (64 hex
 // digits, colons allowed) of peer certificates trusted without a CA; at least one of the two.
@@ -12,7 +13,8 @@
 // readable by its owner only (the token file's rule, core/util/SecretFile.h). Paths are
 // resolved against the configuration's folder. A site may carry a tls block of its own; the
 // top-level one applies to every other tls:// link. hsmu-controller takes the same fields
-// as options (--tls-ca, --tls-certificate, --tls-key, --tls-pins FILE, --tls-revoked FILE).
+// as options (--tls-ca, --tls-certificate, --tls-key, --tls-pins FILE, --tls-revoked FILE,
+// --tls-crl FILE).
 // core only carries these values; comms builds the TLS contexts (comms/tls/TlsContext.h).
 
 #include <optional>
@@ -30,6 +32,10 @@ struct TlsSpec {
     std::vector<std::string> pins; ///< SHA-256 fingerprints, 64 lower-case hex digits
     std::string pinsFile;    ///< more pins, one a line ("" = none; hsmu-controller --tls-pins)
     std::string revokedFile; ///< fingerprints refused even under the CA, one a line ("" = none)
+    /// The CA's certificate revocation list(s), PEM ("" = none): with one, a certificate the CA
+    /// signed is refused when the CRL lists it, or when no valid CRL of its CA is there (an
+    /// expired CRL refuses every certificate of its CA: fail closed).
+    std::string crl;
 };
 
 /// 64 lower-case hex digits from a fingerprint written with or without colons, in either

@@ -40,4 +40,25 @@ RunLayout RunLayout::of(const HybridTest& test) {
     return layout;
 }
 
+std::vector<std::string> securityOfSites(const std::vector<std::string>& sites,
+                                         const SiteSecurity& given) {
+    std::vector<std::string> out;
+    out.reserve(sites.size());
+    for (const std::string& site : sites) {
+        std::string value;
+        for (const auto& [name, how] : given)
+            if (name == site)
+                value = how;
+        out.push_back(std::move(value));
+    }
+    return out;
+}
+
+SiteSecurity builtinSiteSecurity(const RunLayout& layout) {
+    SiteSecurity out;
+    for (const std::string& site : layout.sites)
+        out.emplace_back(site, "builtin");
+    return out;
+}
+
 } // namespace hsmu

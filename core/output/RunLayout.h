@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hsmu {
@@ -48,5 +49,18 @@ struct RunLayout {
     /// The test's structure plus its updater's parameters (if it has an updater).
     static RunLayout of(const HybridTest& test);
 };
+
+/// How the console reached each site (site name -> "tls", "plaintext-loopback",
+/// "insecure-plaintext" or "builtin": comms::LinkAddress::security(), docs/security.md).
+using SiteSecurity = std::vector<std::pair<std::string, std::string>>;
+
+/// The security of each site (e.g. RunLayout::sites), in that order: the last entry of `given`
+/// naming the site, "" for a site `given` does not name. The record's /sites `security`,
+/// summary.json's and compare.json's `link_security` (docs/recording.md, docs/cli.md).
+std::vector<std::string> securityOfSites(const std::vector<std::string>& sites,
+                                         const SiteSecurity& given);
+
+/// Every site of layout.sites reached in-process ("builtin"): the runs of `hsmu compare`.
+SiteSecurity builtinSiteSecurity(const RunLayout& layout);
 
 } // namespace hsmu

@@ -114,6 +114,7 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     j["alarms"] = alarms;
     const auto reason = holdReason(test);
     j["hold_reason"] = reason ? nlohmann::json(*reason) : nlohmann::json(nullptr);
+    j["link_security"] = linkSecurityJson(layout.sites, info.siteSecurity);
     nlohmann::json tracking = nlohmann::json::object();
     for (std::size_t i = 0; i < layout.elements.size(); ++i)
         if (const rths::TrackingReport* t = stats.tracking(i, test.dt()))
@@ -122,6 +123,15 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     if (const ModelUpdater* updater = test.updater())
         j["updating"] = updatingBlock(*updater, last);
     return j;
+}
+
+nlohmann::json linkSecurityJson(const std::vector<std::string>& sites, const SiteSecurity& given) {
+    const std::vector<std::string> security = securityOfSites(sites, given);
+    nlohmann::json out = nlohmann::json::object();
+    for (std::size_t i = 0; i < sites.size(); ++i)
+        out[sites[i]] =
+            security[i].empty() ? nlohmann::json(nullptr) : nlohmann::json(security[i]);
+    return out;
 }
 
 nlohmann::json trackingJson(const rths::TrackingReport& r, const std::string& unit) {

@@ -9,6 +9,9 @@
 //   peak_deformation {element: {value, unit}},
 //   alarms [{time_s, step, severity, kind, message}] (the updating alarms included),
 //   hold_reason (string or null),
+//   link_security {site: "tls", "plaintext-loopback", "insecure-plaintext", "builtin", or null
+//     where the run did not say}: how the console reached each site of the experimental
+//     elements (the record's /sites `security`, docs/security.md),
 //   tracking {specimen: {J1_ms, J2_percent, J3_percent, frequency_evaluation {amplitude,
 //     delay_ms, frequency_Hz}, tracking_indicator {value, unit}}}: each specimen's commanded
 //     against measured deformation over the committed steps (docs/rths.md, "Tracking
@@ -23,8 +26,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/output/RunLayout.h"
+
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace hsmu {
 
@@ -38,7 +44,11 @@ struct RunInfo {
     std::string configName; ///< TestConfig::name
     std::string configFile; ///< path or "preset <name>"
     double wallTimeS = 0.0; ///< wall-clock time spent stepping [s]
+    SiteSecurity siteSecurity;  ///< how each site was reached (summary.json "link_security")
 };
+
+/// {site: security} of the sites (securityOfSites; a site `given` does not name: null).
+nlohmann::json linkSecurityJson(const std::vector<std::string>& sites, const SiteSecurity& given);
 
 /// The reason the test is holding (the last critical alarm's message without a leading
 /// "test held: "), if it is holding.

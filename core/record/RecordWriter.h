@@ -63,10 +63,10 @@ struct RecordStart {
     /// Deflate level 1-9 (with HDF5's shuffle filter) of the per-step DOF, element and
     /// actuator matrices; 0 (the default) writes them uncompressed (docs/recording.md).
     int deflate = 0;
-    /// How each site's link is protected (site name -> "builtin", "tls", "plaintext-loopback"
-    /// or "insecure-plaintext": comms::LinkAddress::security()), written as /sites' attribute
-    /// `security` in the order of RunLayout::sites (docs/recording.md); empty: not written.
-    std::vector<std::pair<std::string, std::string>> siteSecurity{};
+    /// How each site's link is protected (RunLayout.h SiteSecurity), written as /sites'
+    /// attribute `security` in the order of RunLayout::sites (securityOfSites,
+    /// docs/recording.md); empty: not written.
+    SiteSecurity siteSecurity{};
 };
 
 class RecordWriter final : public StepObserver {

@@ -132,17 +132,8 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         // Sites (docs/configuration.md): each step's round trip per site [s].
         const h5::Id g = group("sites");
         h5::writeAttr(g.get(), "names", layout.sites, w);
-        if (!start.siteSecurity.empty()) {
-            std::vector<std::string> security;
-            for (const std::string& site : layout.sites) {
-                std::string value;
-                for (const auto& [name, how] : start.siteSecurity)
-                    if (name == site)
-                        value = how;
-                security.push_back(value);
-            }
-            h5::writeAttr(g.get(), "security", security, w);
-        }
+        if (!start.siteSecurity.empty())
+            h5::writeAttr(g.get(), "security", securityOfSites(layout.sites, start.siteSecurity), w);
         siteRoundTrip = h5::Extendible(g.get(), "round_trip", f64, int(nSite), w);
         h5::writeAttr(siteRoundTrip.id(), "names", layout.sites, w);
         units(siteRoundTrip, "s");

@@ -74,13 +74,17 @@ ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
     if (e < 0 || d >= static_cast<int>(dofs.size()))
         throw ConfigError(cfg.sourcePath + ": compare: no element '" + element + "' or DOF '" +
                           dof + "'");
+    const RunLayout layout = RunLayout::of(test->structure());
+    run.sites = layout.sites;
+    run.linkSecurity = builtinSiteSecurity(layout);
     SessionOptions options; // as fast as possible, no automatic resume
     if (!recordDir.empty()) {
         options.recordPath = recordDir + "/" + name + "/record.h5";
         options.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt, name};
+        options.recordStart.siteSecurity = run.linkSecurity;
     }
     (void)index;
-    RunStatistics stats(RunLayout::of(test->structure()));
+    RunStatistics stats(layout);
     TestSession session(std::move(test), options);
     const HybridTest& t = session.test();
     Collector collector(run, e, d);
@@ -102,7 +106,6 @@ ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
     });
     session.removeObserver(&collector);
     session.removeObserver(&stats);
-    const RunLayout& layout = stats.layout();
     for (std::size_t i = 0; i < layout.elements.size(); ++i)
         if (const rths::TrackingReport* tracked = stats.tracking(i, t.dt())) {
             run.tracking.emplace_back(layout.elements[i].name, *tracked);

@@ -11,6 +11,7 @@
 // displacement:  NRMSE = RMS(x - x_ref) / RMS(x_ref),  peak error = max |x - x_ref|.
 
 #include "core/config/TestConfig.h"
+#include "core/output/RunLayout.h"
 #include "core/rths/TrackingMetrics.h"
 
 #include <functional>
@@ -45,6 +46,10 @@ struct ComparisonRun {
     std::vector<std::pair<std::string, rths::TrackingReport>> tracking;
     std::vector<std::string> trackingUnits;
     std::string recordError;         ///< why its record could not be written ("" = fine)
+    /// How each site of its experimental elements was reached: always "builtin" (the three
+    /// runs are in-process); its record's /sites `security` and compare.json's link_security.
+    SiteSecurity linkSecurity;
+    std::vector<std::string> sites; ///< RunLayout::sites of the run
 };
 
 struct ComparisonMetric {

@@ -68,7 +68,9 @@ nlohmann::json makeComparisonSummary(const ComparisonResult& r, const TestConfig
         nlohmann::json tracking = nlohmann::json::object();
         for (std::size_t i = 0; i < run->tracking.size(); ++i)
             tracking[run->tracking[i].first] = trackingJson(run->tracking[i].second, run->trackingUnits[i]);
-        (run == &r.reference ? j["reference"] : j["runs"][run->name])["tracking"] = tracking;
+        nlohmann::json& block = run == &r.reference ? j["reference"] : j["runs"][run->name];
+        block["tracking"] = tracking;
+        block["link_security"] = linkSecurityJson(run->sites, run->linkSecurity);
     }
     j["parameters"] = u.parameterNames;
     j["final_parameters"] = lastOf(u.parameterNames, u.parameters);

@@ -7,6 +7,8 @@
 //   reference {steps, final_state},
 //   runs.initial.tracking, runs.updated.tracking, reference.tracking: {specimen: as
 //     summary.json's "tracking" (RunSummary.h), commanded against measured deformation},
+//   runs.initial.link_security, runs.updated.link_security, reference.link_security: {site:
+//     "builtin"}, as summary.json's "link_security" (the three runs are in-process),
 //   parameters [names, the identifier's order],
 //   final_parameters {name: value}, final_standard_deviations {name: value}
 //     (the updated run's last estimate, the law's own units: normalized for Bouc-Wen),

@@ -46,6 +46,7 @@ HeadlessRun::HeadlessRun(const TestConfig& cfg, std::unique_ptr<HybridTest> test
       m_session(std::move(test), sessionOptions(cfg, m_options)), m_stats(m_layout) {
     m_info.configName = cfg.name;
     m_info.configFile = cfg.sourcePath;
+    m_info.siteSecurity = m_options.siteSecurity;
     const std::size_t columns = StepCsvWriter::columnCount(m_layout);
     if (!m_options.outDir.empty() && m_options.csv != HeadlessOptions::Csv::None) {
         if (m_options.csv == HeadlessOptions::Csv::Auto && columns > StepCsvWriter::kMaxColumns)

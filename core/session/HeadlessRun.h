@@ -32,9 +32,10 @@ struct HeadlessOptions {
     enum class Csv { Auto, All, None } csv = Csv::Auto;
     ReconnectPolicy reconnect; ///< `--reconnect N` (SessionOptions)
     int deflate = 0;           ///< the record's deflate level (RecordStart::deflate)
-    /// Each site's link security for the record (RecordStart::siteSecurity; comms'
-    /// siteSecurity() of the controller address and the configuration).
-    std::vector<std::pair<std::string, std::string>> siteSecurity;
+    /// Each site's link security for the record and summary.json (RecordStart::siteSecurity,
+    /// RunInfo::siteSecurity; comms' siteSecurity() of the controller address and the
+    /// configuration).
+    SiteSecurity siteSecurity;
 };
 
 class HeadlessRun {

@@ -29,38 +29,9 @@
 using namespace hsmu;
 using namespace hsmu::comms;
 using namespace linkfixture;
+using namespace tlsfixture;
 
 namespace {
-
-constexpr double kWait = 20.0; // [s] generous for a loaded CI machine
-const std::string kToken = "the-right-token";
-
-struct Attempt {
-    bool admitted = false;
-    QString error; ///< the console's words when refused
-};
-
-/// Connect (TLS when tls is set) and say hello with token; whether it was admitted.
-Attempt helloOver(const std::string& host, quint16 port, std::optional<TlsSpec> tls,
-                  const std::string& token = kToken, LinkClient* keep = nullptr) {
-    LinkClientOptions o;
-    o.tls = std::move(tls);
-    LinkClient local(o);
-    LinkClient& link = keep ? *keep : local;
-    std::string e;
-    if (!link.connect(host, port, kWait, e))
-        return {false, QString::fromStdString(e)};
-    if (!link.send(HelloMsg{kProtocolVersion, 7, token, ""}, e))
-        return {false, QString::fromStdString(e)};
-    const auto m = link.receive(kWait, e);
-    if (!m)
-        return {false, QString::fromStdString(e)};
-    if (std::holds_alternative<HelloAckMsg>(*m))
-        return {true, {}};
-    if (const auto* err = std::get_if<ErrorMsg>(&*m))
-        return {false, QString::fromStdString(err->reason)};
-    return {false, QStringLiteral("unexpected reply")};
-}
 
 /// A TLS client with no certificate of its own (it trusts the lab CA): what the controller
 /// answers to its hello, or the error that ended it.

@@ -31,8 +31,21 @@ QByteArray fileBytes(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
+// The record's /sites `security`, in its sites' order, once summary.json's link_security is
+// seen to say the same (otherwise a one-element vector naming the difference).
 std::vector<std::string> siteSecurity(const QString& runDir) {
-    return hsmu::RecordReader((runDir + "/record.h5").toStdString()).data().meta.siteSecurity;
+    const hsmu::RecordReader reader((runDir + "/record.h5").toStdString());
+    const auto& sites = reader.data().layout.sites;
+    const auto& security = reader.data().meta.siteSecurity;
+    nlohmann::json recorded = nlohmann::json::object();
+    for (std::size_t i = 0; i < sites.size() && i < security.size(); ++i)
+        recorded[sites[i]] = security[i];
+    std::ifstream in((runDir + "/summary.json").toStdString());
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+    if (summary.is_discarded() || !summary.contains("link_security") ||
+        summary.at("link_security") != recorded)
+        return {"summary.json link_security differs from the record's " + recorded.dump()};
+    return security;
 }
 
 } // namespace

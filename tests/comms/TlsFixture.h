@@ -5,7 +5,11 @@
 //   controller  (ca; subjectAltName IP 127.0.0.1)   console  (ca)
 //   expired     (ca; valid in January 2020 only)    stranger (rogue)
 // and the empty revoked list revoked.txt. Never hangs: every openssl run is bounded.
+// tlsfixture::helloOver: a console's LinkClient connecting and saying hello (admitted or why
+// not).
 
+#include "comms/link/LinkClient.h"
+#include "comms/protocol/Messages.h"
 #include "core/config/TlsConfig.h"
 
 #include <QFile>
@@ -13,6 +17,10 @@
 #include <QString>
 #include <QStringList>
 #include <QTemporaryDir>
+
+#include <optional>
+#include <string>
+#include <variant>
 
 class TlsFixture {
 public:
@@ -77,3 +85,38 @@ public:
 private:
     QTemporaryDir m_dir;
 };
+
+namespace tlsfixture {
+
+inline constexpr double kWait = 20.0; // [s] generous for a loaded CI machine
+inline const std::string kToken = "the-right-token";
+
+struct Attempt {
+    bool admitted = false;
+    QString error; ///< the console's words when refused
+};
+
+/// Connect (TLS when tls is set) and say hello with token; whether it was admitted.
+inline Attempt helloOver(const std::string& host, quint16 port, std::optional<hsmu::TlsSpec> tls,
+                         const std::string& token = kToken, hsmu::comms::LinkClient* keep = nullptr) {
+    using namespace hsmu::comms;
+    LinkClientOptions o;
+    o.tls = std::move(tls);
+    LinkClient local(o);
+    LinkClient& link = keep ? *keep : local;
+    std::string e;
+    if (!link.connect(host, port, kWait, e))
+        return {false, QString::fromStdString(e)};
+    if (!link.send(HelloMsg{kProtocolVersion, 7, token, ""}, e))
+        return {false, QString::fromStdString(e)};
+    const auto m = link.receive(kWait, e);
+    if (!m)
+        return {false, QString::fromStdString(e)};
+    if (std::holds_alternative<HelloAckMsg>(*m))
+        return {true, {}};
+    if (const auto* err = std::get_if<ErrorMsg>(&*m))
+        return {false, QString::fromStdString(err->reason)};
+    return {false, QStringLiteral("unexpected reply")};
+}
+
+} // namespace tlsfixture

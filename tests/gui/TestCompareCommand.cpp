@@ -50,7 +50,12 @@ private slots:
             const QJsonObject t = m.value(QStringLiteral("tracking")).toObject();
             QCOMPARE(t.keys(), QStringList{QStringLiteral("Element 1")});
             QCOMPARE(t.value(QStringLiteral("Element 1")).toObject().value(QStringLiteral("J2_percent")).toDouble(), 0.0);
+            // Issue 26: how each site was reached (compare's runs are in-process).
+            QCOMPARE(m.value(QStringLiteral("link_security")).toObject(),
+                     (QJsonObject{{QStringLiteral("controller"), QStringLiteral("builtin")}}));
         }
+        QCOMPARE(j.value(QStringLiteral("reference")).toObject().value(QStringLiteral("link_security")).toObject(),
+                 (QJsonObject{{QStringLiteral("controller"), QStringLiteral("builtin")}}));
         // The reference run has the compared element as a specimen too.
         QCOMPARE(j.value(QStringLiteral("reference")).toObject().value(QStringLiteral("tracking")).toObject().keys(),
                  (QStringList{QStringLiteral("Element 1"), QStringLiteral("Element 2")}));

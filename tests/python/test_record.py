@@ -73,6 +73,8 @@ def test_logs_metadata_and_configuration(run):
     assert rec.updating["specimen"] in [e["name"] for e in rec.elements if e["experimental"]]
     assert rec.swmr and rec.refresh() == 0  # a finished record: nothing new
     assert summary  # the run wrote its summary beside the record
+    # how the console reached the site (issue 26): the record and summary.json say the same
+    assert rec.site_security == summary["link_security"] == {"controller": "builtin"}
 
 
 def hsmu_source():

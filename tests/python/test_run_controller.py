@@ -18,9 +18,11 @@ PRESET = "paper-condition-3"
 HELD = re.compile(r"hsmu run: test held at t = (\S+) s \(step (\d+)\): (.*)")
 LOST = re.compile(r"^(.*: no measurement for step \d+: )"
                   r"(the controller closed the connection|connection lost: .+)$")
-# When the kill lands between two steps the link notices first and the next step finds it down
-# (the reason in brackets is empty today: a known gap, issue 26's notes).
-DOWN = re.compile(r"^(Element 1: link to \S+) is down \(.*\); resume to reconnect$")
+# When the kill lands between two steps the link notices first and the next step finds it down;
+# the reason in brackets is the link's own (LinkClient::closeReason, never empty).
+DOWN = re.compile(r"^(Element 1: link to \S+) is down "
+                  r"\((the controller closed the connection|connection lost: .+)\); "
+                  r"resume to reconnect$")
 
 
 @pytest.fixture
@@ -62,6 +64,10 @@ def test_steps_equal_hsmu_run_against_a_controller(cli, controllers, config_file
     for s in (a, b):
         del s["wall_time_s"]
     assert a == b
+    # the link's security, in the result, summary.json and the record (docs/security.md)
+    assert result["summary"]["link_security"] == {"controller": "plaintext-loopback"}
+    assert hsmu.Record(tmp_path / "py" / "record.h5").site_security == \
+        {"controller": "plaintext-loopback"}
 
     # the token from the environment, as `hsmu run` takes it without --token-file
     again = controllers(PRESET, token_file=token_file)

@@ -97,6 +97,31 @@ private slots:
         QVERIFY(!j.contains("updating")); // no updater
     }
 
+    void linkSecurityFollowsTheSites() {
+        // Order of the sites, the last entry naming a site wins, a site not named: "" / null.
+        const SiteSecurity given{{"Lab B", "tls"}, {"controller", "builtin"}, {"Lab B", "insecure-plaintext"}};
+        const std::vector<std::string> sites{"controller", "Lab B", "Lab C"};
+        QCOMPARE(securityOfSites(sites, given),
+                 (std::vector<std::string>{"builtin", "insecure-plaintext", ""}));
+        const nlohmann::json j = linkSecurityJson(sites, given);
+        QCOMPARE(j.size(), std::size_t(3));
+        QCOMPARE(j.at("controller").get<std::string>(), std::string("builtin"));
+        QCOMPARE(j.at("Lab B").get<std::string>(), std::string("insecure-plaintext"));
+        QVERIFY(j.at("Lab C").is_null());
+        QCOMPARE(builtinSiteSecurity(RunLayout{{}, {}, {}, {"controller", "Lab C"}}),
+                 (SiteSecurity{{"controller", "builtin"}, {"Lab C", "builtin"}}));
+
+        // summary.json: the run's sites (the small frame's specimen: the default site).
+        Run run{smallFrame(0.2), nullptr, {}};
+        runToEnd(run);
+        QCOMPARE(run.stats->layout().sites, std::vector<std::string>{"controller"});
+        RunInfo info{"small frame", "inline.json", 0.25, {{"controller", "tls"}}};
+        QCOMPARE(makeRunSummary(*run.test, *run.stats, info).at("link_security"),
+                 (nlohmann::json{{"controller", "tls"}}));
+        info.siteSecurity.clear(); // not said: null, never a guess
+        QVERIFY(makeRunSummary(*run.test, *run.stats, info).at("link_security").at("controller").is_null());
+    }
+
     void updatingBlockHoldsTheFinalEstimate() {
         Run run{buildHybridTest(condition3(2.0)), nullptr, {}};
         runToEnd(run);

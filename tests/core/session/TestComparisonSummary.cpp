@@ -39,6 +39,10 @@ ComparisonResult sample() {
     r.updated.stddev = {{0.2, 0.5}, {0.01, 0.02}};
     r.updated.appliedUpdates = 42;
     r.updated.alarms = {"t = 1 s: something"};
+    r.reference.sites = {"controller", "Lab B"};
+    r.reference.linkSecurity = {{"controller", "builtin"}, {"Lab B", "builtin"}};
+    r.updated.sites = {"controller"};
+    r.updated.linkSecurity = {{"controller", "builtin"}};
     r.initialMetric = {0.4, 3.5, 0.3, 0.02};
     r.updatedMetric = {0.04, 0.5, NAN, 0.002};
     return r;
@@ -78,6 +82,12 @@ private slots:
         QCOMPARE(j.at("true_parameters").at("k0").get<double>(), 1.0);
         QCOMPARE(j.at("true_parameters").at("n").get<double>(), 2.0);
         QCOMPARE(j.at("true_parameters").size(), std::size_t(2));
+        // Each run's link_security: its own sites (the reference has more specimens); a run
+        // with no sites has an empty object.
+        QCOMPARE(j.at("reference").at("link_security"),
+                 (nlohmann::json{{"controller", "builtin"}, {"Lab B", "builtin"}}));
+        QCOMPARE(updated.at("link_security"), (nlohmann::json{{"controller", "builtin"}}));
+        QVERIFY(initial.at("link_security").is_object() && initial.at("link_security").empty());
     }
 
     void trueParametersOnlyForTheUpdatingSpecimen() {
