@@ -244,7 +244,7 @@ private slots:
         }
         qInfo("peak |u| %.6g m, max |du| %.3g; peak shear %.6g kN, max |dF| %.3g", peakU, du,
               peakF, dF);
-        QVERIFY(peakU > 0.02); // the column yields (u_y = 0.01 m)
+        QVERIFY(peakU > 0.02); // the column yields (u_y about 0.005 m)
         QVERIFY(du <= 1e-9 * peakU);
         QVERIFY(dF <= 1e-9 * peakF);
         const auto& x = static_cast<const ExperimentalLink2d&>(*hyb->structure().elements()[0]);
