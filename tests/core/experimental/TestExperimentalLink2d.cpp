@@ -300,6 +300,57 @@ private slots:
         QCOMPARE(lab->committedStroke(0), 0.0);
     }
 
+    // Through an exact (-nlGeom) setup: a column top (x3, y3, theta3) driven by OpenFresco's
+    // `expSetup TwoActuators2d 1 1.5 1.2 0.6 -nlGeom -phiLocX 90` with elastic actuators. The
+    // commands are S1's closed-form strokes; the measured basic displacements are the commanded
+    // ones (S4's Newton, v given); the basic forces do the actuators' virtual work (central
+    // difference of s, eq. S3) and the nodal forces the basic forces' (eq. L2).
+    void exactSetupThroughTheElement()
+    {
+        std::string error;
+        TwoActuators2dParams p{1.5, 1.2, 0.6, SetupGeometry::Exact, false, 90.0};
+        auto setup = makeTwoActuators2d(p, error);
+        QVERIFY2(setup, error.c_str());
+        const ExperimentalSetup* setupView = setup.get();
+        std::vector<VirtualActuator> acts;
+        acts.push_back({"lower", ActuatorMode::Displacement, std::make_unique<LinearElastic>(2e4)});
+        acts.push_back({"upper", ActuatorMode::Displacement, std::make_unique<LinearElastic>(3e4)});
+        std::vector<ActuatorChannelSpec> ch{{"lower", ActuatorMode::Displacement, 0, {}, 2e4},
+                                            {"upper", ActuatorMode::Displacement, 0, {}, 3e4}};
+        ExperimentalLink2d e("C", {{-1, -1, -1, 0, 1, 2}, kH, 90.0}, std::move(setup), ch,
+                             std::make_unique<VirtualActuatorLab>(std::move(acts)));
+        Eigen::VectorXd u(3);
+        u << 0.05, 0.002, 0.1; // x3 [m], y3 [m], theta3 [rad]
+        QVERIFY(e.setTrial(u).ok);
+        // setup frame: (u, v) = R(90) (axial, shear) = (-shear, axial) = (x3, y3)
+        const double us = 0.05, vs = 0.002, th = 0.1;
+        const double s1 = std::hypot(us + 1.5, vs) - 1.5;
+        const double s2 = std::hypot(us - 0.6 * std::sin(th) + 1.2, vs + 0.6 * std::cos(th) - 0.6) - 1.2;
+        QVERIFY(std::abs(e.commands()[0] - s1) <= 1e-15);
+        QVERIFY(std::abs(e.commands()[1] - s2) <= 1e-15);
+        QVERIFY((e.basicDeformations() - e.commandedBasic()).cwiseAbs().maxCoeff() <= 1e-13);
+        const Eigen::Vector2d f(2e4 * s1, 3e4 * s2);
+        QVERIFY((e.actuatorForces() - f).cwiseAbs().maxCoeff() <= 1e-9);
+        const Eigen::VectorXd d = e.commandedBasic();
+        for (int k = 0; k < 3; ++k) {
+            const double h = 1e-6;
+            Eigen::VectorXd dp = d, dm = d, sp, sm;
+            dp[k] += h;
+            dm[k] -= h;
+            QVERIFY(setupView->strokes(dp, sp).ok && setupView->strokes(dm, sm).ok);
+            const double work = f.dot(sp - sm) / (2 * h);
+            QVERIFY2(std::abs(e.basicForces()[k] - work) <= 1e-6 * f.cwiseAbs().maxCoeff(),
+                     qPrintable(QString("basic DOF %1: %2 vs %3").arg(k)
+                                    .arg(e.basicForces()[k]).arg(work)));
+        }
+        Eigen::VectorXd r = Eigen::VectorXd::Zero(3);
+        e.addNodalForces(r);
+        const Eigen::Matrix<double, 3, 6>& A = Link2dKinematics("C", {{-1, -1, -1, 0, 1, 2}, kH, 90.0}).matrix();
+        const Eigen::Vector3d expected = A.rightCols(3).transpose() * Eigen::Vector3d(
+            e.basicForces()[0], e.basicForces()[1], e.basicForces()[2]);
+        QVERIFY((r - expected).cwiseAbs().maxCoeff() <= 1e-12 * expected.cwiseAbs().maxCoeff());
+    }
+
     // An emergency hold mid-test: every actuator keeps its committed stroke and force; after
     // resume the test finishes and equals the uninterrupted numerical run.
     void emergencyHoldThenResume()
