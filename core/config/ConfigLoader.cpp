@@ -222,10 +222,13 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
         dofs.fail("", "expected at least one DOF");
     for (std::size_t i = 0; i < dofs.size(); ++i) {
         const JsonCursor d = dofs.at(i);
-        d.allowOnly({"name", "mass"});
+        d.allowOnly({"name", "mass", "influence"});
         DofSpec spec{d.string("name", "DOF " + std::to_string(i + 1)), d.number("mass")};
         if (!(spec.mass > 0.0))
             d.fail("mass", "expected a mass > 0 t");
+        spec.influence = d.number("influence", 1.0);
+        if (!std::isfinite(spec.influence))
+            d.fail("influence", "expected a finite number (1: shaken by the record, 0: not)");
         cfg.dofs.push_back(spec);
     }
     if (s.has("equalDofs")) {

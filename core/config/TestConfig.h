@@ -81,7 +81,8 @@ struct ElementSpec {
 
 struct DofSpec {
     std::string name;
-    double mass = 0.0; ///< [t]
+    double mass = 0.0; ///< [t] ([t m^2] on a rotational DOF)
+    double influence = 1.0; ///< ground-motion influence iota (0: a rotation, docs/configuration.md)
 };
 
 struct DampingSpec {

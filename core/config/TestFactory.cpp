@@ -116,7 +116,7 @@ std::unique_ptr<Structure> buildStructure(const TestConfig& cfg, const ControlFa
 {
     auto s = std::make_unique<Structure>();
     for (const auto& d : cfg.dofs)
-        s->addDof(d.name, d.mass);
+        s->addDof(d.name, d.mass, d.influence);
     for (const auto& [m, sl] : cfg.equalDofs)
         s->addEqualDof(m, sl);
     for (const auto& e : cfg.elements) {

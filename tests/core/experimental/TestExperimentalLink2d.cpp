@@ -109,8 +109,8 @@ std::unique_ptr<Structure> frame(std::unique_ptr<Element> left)
     auto s = std::make_unique<Structure>();
     s->addDof("x3", 20.0);
     s->addDof("x4", 20.0);
-    s->addDof("theta3", 0.05);
-    s->addDof("theta4", 0.05);
+    s->addDof("theta3", 0.05, 0.0); // rotations: not shaken by the record
+    s->addDof("theta4", 0.05, 0.0);
     s->addElement(std::move(left));
     std::array<Link2dBasicDof, 3> right; // numerical right column
     right[0].heldForce = kP;
@@ -234,6 +234,8 @@ private slots:
         QCOMPARE(runToStop(*ref), HybridTest::StepResult::Finished);
         QCOMPARE(runToStop(*hyb), HybridTest::StepResult::Finished);
         QCOMPARE(a.records.size(), b.records.size());
+        // T^T M iota: the record shakes the translations only (influence 0 on the rotations)
+        QCOMPARE(hyb->structure().influence(), Eigen::Vector4d(20.0, 20.0, 0.0, 0.0).eval());
         double peakU = 0, peakF = 0, du = 0, dF = 0;
         for (std::size_t i = 0; i < a.records.size(); ++i) {
             peakU = std::max(peakU, a.records[i].u.cwiseAbs().maxCoeff());
