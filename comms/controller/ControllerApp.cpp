@@ -117,6 +117,13 @@ bool ControllerApp::start(std::string& error) {
             const ElementSpec& e = cfg.elements[i];
             if (!e.experimental)
                 continue;
+            if (e.link2d) {
+                error = m_cmd.config + ": element '" + e.name +
+                        "': a link2d specimen (several actuator channels through a setup) is "
+                        "not served by hsmu-controller yet; run it on the built-in virtual lab "
+                        "(docs/setups.md, \"Multi-DOF elements\")";
+                return false;
+            }
             const int index = static_cast<int>(stations.size());
             stations.push_back(
                 std::make_unique<SpecimenStation>(index, e, settings, pace, m_journal.get()));

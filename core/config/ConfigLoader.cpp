@@ -1,6 +1,7 @@
 #include "core/config/ConfigLoader.h"
 #include "core/config/ConfigUnits.h"
 #include "core/config/JsonNesting.h"
+#include "core/config/Link2dConfig.h"
 #include "core/config/NumericalSite.h"
 #include "core/config/RthsConfig.h"
 #include "core/config/UpdatingConfig.h"
@@ -38,15 +39,6 @@ MaterialSpec parseMaterial(const JsonCursor& c)
     return m;
 }
 
-namespace {
-
-std::string fmt(double x)
-{
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%g", x);
-    return buf;
-}
-
 SafetyLimits parseLimits(const JsonCursor& c)
 {
     c.allowOnly({"deformation", "force", "increment"});
@@ -58,6 +50,35 @@ SafetyLimits parseLimits(const JsonCursor& c)
         if (c.has(k) && !(c.number(k) > 0.0))
             c.fail(k, "expected a positive limit");
     return l;
+}
+
+int parseDof(const JsonCursor& c, const nlohmann::json& v, const std::vector<DofSpec>& dofs,
+             const std::string& key)
+{
+    if (v.is_number_integer()) {
+        // Compared as 64-bit: 4294967297 must not become DOF 1.
+        const bool neg = !v.is_number_unsigned() && v.get<std::int64_t>() < 0;
+        if (neg || v.get<std::uint64_t>() >= dofs.size())
+            c.fail(key, "DOF index " + v.dump() + " out of range 0.." +
+                            std::to_string(dofs.size() - 1));
+        return static_cast<int>(v.get<std::uint64_t>());
+    }
+    if (v.is_string()) {
+        for (std::size_t i = 0; i < dofs.size(); ++i)
+            if (dofs[i].name == v.get<std::string>())
+                return static_cast<int>(i);
+        c.fail(key, "no DOF named '" + v.get<std::string>() + "'");
+    }
+    c.fail(key, "expected a DOF name or index");
+}
+
+namespace {
+
+std::string fmt(double x)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", x);
+    return buf;
 }
 
 SpecimenSpec parseSpecimen(const JsonCursor& c)
@@ -117,28 +138,10 @@ SpecimenSpec parseSpecimen(const JsonCursor& c)
     return s;
 }
 
-int parseDof(const JsonCursor& c, const nlohmann::json& v, const std::vector<DofSpec>& dofs,
-             const std::string& key)
-{
-    if (v.is_number_integer()) {
-        // Compared as 64-bit: 4294967297 must not become DOF 1.
-        const bool neg = !v.is_number_unsigned() && v.get<std::int64_t>() < 0;
-        if (neg || v.get<std::uint64_t>() >= dofs.size())
-            c.fail(key, "DOF index " + v.dump() + " out of range 0.." +
-                            std::to_string(dofs.size() - 1));
-        return static_cast<int>(v.get<std::uint64_t>());
-    }
-    if (v.is_string()) {
-        for (std::size_t i = 0; i < dofs.size(); ++i)
-            if (dofs[i].name == v.get<std::string>())
-                return static_cast<int>(i);
-        c.fail(key, "no DOF named '" + v.get<std::string>() + "'");
-    }
-    c.fail(key, "expected a DOF name or index");
-}
-
 ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 {
+    if (c.has("type") && c.node().at("type") == "link2d")
+        return parseLink2dElement(c, dofs); // Link2dConfig.h
     c.allowOnly({"name", "type", "dof", "dofs", "height", "ei", "material", "experimental",
                  "specimen", "limits", "numericalSite"});
     ElementSpec e;
@@ -154,7 +157,7 @@ ElementSpec parseElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
             c.fail("dof", "missing (expected the DOF the element acts on)");
         e.dofs = {parseDof(c, c.node().at("dof"), dofs, "dof")};
     } else {
-        c.fail("type", "expected 'lateralSpring', 'rotationalBaseSpring' or 'truss', found '" +
+        c.fail("type", "expected 'lateralSpring', 'rotationalBaseSpring', 'truss' or 'link2d', found '" +
                            e.type + "'");
     }
     if (e.type == "rotationalBaseSpring") {
@@ -219,10 +222,13 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
         dofs.fail("", "expected at least one DOF");
     for (std::size_t i = 0; i < dofs.size(); ++i) {
         const JsonCursor d = dofs.at(i);
-        d.allowOnly({"name", "mass"});
+        d.allowOnly({"name", "mass", "influence"});
         DofSpec spec{d.string("name", "DOF " + std::to_string(i + 1)), d.number("mass")};
         if (!(spec.mass > 0.0))
             d.fail("mass", "expected a mass > 0 t");
+        spec.influence = d.number("influence", 1.0);
+        if (!std::isfinite(spec.influence))
+            d.fail("influence", "expected a finite number (1: shaken by the record, 0: not)");
         cfg.dofs.push_back(spec);
     }
     if (s.has("equalDofs")) {

@@ -12,6 +12,11 @@ namespace hsmu {
 /// Parse a material object {"law": NAME, PARAMETER: value, ...} and check that the law
 /// accepts it. Throws ConfigError naming the field.
 MaterialSpec parseMaterial(const JsonCursor& c);
+/// A "limits" object (deformation, force, increment; each > 0 when given).
+SafetyLimits parseLimits(const JsonCursor& c);
+/// A DOF given by name or index v (the field `key` of c), checked against dofs.
+int parseDof(const JsonCursor& c, const nlohmann::json& v, const std::vector<DofSpec>& dofs,
+             const std::string& key);
 /// Read and parse a file. Throws ConfigError (unreadable file, JSON syntax with line/column,
 /// schema violations).
 TestConfig loadConfigFile(const std::string& path);

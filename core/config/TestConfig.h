@@ -5,6 +5,7 @@
 
 #include "core/config/LinkConfig.h"
 #include "core/config/SiteConfig.h"
+#include "core/experimental/ActuatorChannel.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
 #include "core/updating/Inspector.h"
@@ -13,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <limits>
 #include <map>
 #include <optional>
@@ -29,6 +31,31 @@ struct MaterialSpec {
 struct SpecimenSpec {
     MaterialSpec trueMaterial;       ///< the virtual specimen's own law
     VirtualSpecimenOptions options;  ///< noise, actuator, fracture, interlock
+};
+
+/// One basic DOF of a link2d element (docs/configuration.md, "link2d"): a law, or a held force.
+struct Link2dBasicSpec {
+    bool hasMaterial = false;
+    MaterialSpec material;  ///< when hasMaterial
+    double heldForce = 0.0; ///< [kN] or [kN m] otherwise (0: a free DOF)
+};
+
+/// One actuator of a link2d specimen: its channel (control mode, held force, limits, K0) and
+/// the uniaxial material the in-process virtual lab simulates it with.
+struct ActuatorSpec {
+    ActuatorChannelSpec channel;
+    MaterialSpec material;
+};
+
+/// A two-node 2D link / beam-column (type "link2d"; core/structure/Link2dKinematics.h).
+struct Link2dSpec {
+    std::array<int, 6> dofs{-1, -1, -1, -1, -1, -1}; ///< node i (x, y, theta), node j; -1: support
+    double length = 0.0;                              ///< [m]
+    double angle = 90.0;                              ///< [deg] of i -> j from x
+    std::array<Link2dBasicSpec, 3> basic;             ///< axial, shear, rotation
+    int primary = 1;                                  ///< the basic DOF the record reports
+    std::string setupScript; ///< experimental: one OpenFresco expSetup line (SetupScript.h)
+    std::vector<ActuatorSpec> actuators; ///< experimental: one per setup actuator
 };
 
 struct ElementSpec {
@@ -48,11 +75,14 @@ struct ElementSpec {
     std::string numericalSite;
     /// The site serving it (a name from "sites"); "": the default site kDefaultSiteName.
     std::string site;
+    /// type "link2d": its geometry, basic DOFs, setup and actuators.
+    std::optional<Link2dSpec> link2d;
 };
 
 struct DofSpec {
     std::string name;
-    double mass = 0.0; ///< [t]
+    double mass = 0.0; ///< [t] ([t m^2] on a rotational DOF)
+    double influence = 1.0; ///< ground-motion influence iota (0: a rotation, docs/configuration.md)
 };
 
 struct DampingSpec {

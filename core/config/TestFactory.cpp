@@ -4,13 +4,17 @@
 #include "core/config/NumericalSite.h"
 #include "core/config/UpdatingConfig.h"
 #include "core/updating/ModelUpdater.h"
+#include "core/config/Link2dConfig.h"
+#include "core/experimental/ExperimentalLink2d.h"
 #include "core/experimental/ExperimentalElement.h"
+#include "core/experimental/VirtualActuatorLab.h"
 #include "core/groundmotion/GroundMotionReader.h"
 #include "core/groundmotion/SyntheticGroundMotion.h"
 #include "core/hysteresis/LawFactory.h"
 #include "core/integration/AlphaOS.h"
 #include "core/integration/ExplicitNewmark.h"
 #include "core/structure/FlexibleColumnSpring.h"
+#include "core/structure/Link2dElement.h"
 #include "core/structure/SpringElement.h"
 #include "core/structure/Structure.h"
 #include "core/experiment/HybridTest.h"
@@ -31,6 +35,14 @@ std::unique_ptr<HysteresisLaw> buildLaw(const MaterialSpec& m, const std::string
 
 std::unique_ptr<ExperimentalControl> buildVirtualSpecimen(const ElementSpec& spec)
 {
+    if (spec.link2d) { // N actuators, each its uniaxial material (VirtualActuatorLab.h)
+        std::vector<VirtualActuator> lab;
+        for (const ActuatorSpec& a : spec.link2d->actuators)
+            lab.push_back({a.channel.name, a.channel.mode,
+                           buildLaw(a.material, "element '" + spec.name + "' actuator '" +
+                                                    a.channel.name + "'")});
+        return std::make_unique<VirtualActuatorLab>(std::move(lab));
+    }
     auto law = buildLaw(spec.specimen.trueMaterial, "element '" + spec.name + "' specimen");
     return std::make_unique<VirtualSpecimen>(std::move(law), spec.specimen.options);
 }
@@ -59,17 +71,60 @@ std::unique_ptr<HysteresisLaw> buildSiteLaw(const ElementSpec& e, std::unique_pt
     }
 }
 
+// A link2d element (Link2dConfig.h): numerical, or a specimen through its setup on the control
+// the factory gives (in process: a VirtualActuatorLab of the actuators' materials).
+std::unique_ptr<Element> buildLink2d(const ElementSpec& e, const ControlFactory& controls,
+                                     const std::string& where)
+{
+    const Link2dSpec& s = *e.link2d;
+    const Link2dGeometry g{s.dofs, s.length, s.angle};
+    try {
+        if (!e.experimental) {
+            std::array<Link2dBasicDof, 3> dofs;
+            for (int k = 0; k < 3; ++k) {
+                if (s.basic[k].hasMaterial)
+                    dofs[k].law = buildLaw(s.basic[k].material, where);
+                dofs[k].heldForce = s.basic[k].heldForce;
+            }
+            return std::make_unique<Link2dElement>(e.name, g, std::move(dofs), s.primary);
+        }
+        std::string error;
+        auto setup = buildLink2dSetup(s, error);
+        if (!setup)
+            throw ConfigError(where + ": setup: " + error);
+        std::vector<ActuatorChannelSpec> channels;
+        for (const ActuatorSpec& a : s.actuators)
+            channels.push_back(a.channel);
+        auto control = controls ? controls(e) : buildVirtualSpecimen(e);
+        if (!control)
+            throw ConfigError(where + ": no experimental control could be made");
+        auto x = std::make_unique<ExperimentalLink2d>(e.name, g, std::move(setup),
+                                                      std::move(channels), std::move(control),
+                                                      s.primary);
+        x->setSite(e.site.empty() ? kDefaultSiteName : e.site);
+        return x;
+    } catch (const ConfigError&) {
+        throw;
+    } catch (const std::exception& x) {
+        throw ConfigError(where + ": " + x.what());
+    }
+}
+
 } // namespace
 
 std::unique_ptr<Structure> buildStructure(const TestConfig& cfg, const ControlFactory& controls)
 {
     auto s = std::make_unique<Structure>();
     for (const auto& d : cfg.dofs)
-        s->addDof(d.name, d.mass);
+        s->addDof(d.name, d.mass, d.influence);
     for (const auto& [m, sl] : cfg.equalDofs)
         s->addEqualDof(m, sl);
     for (const auto& e : cfg.elements) {
         const std::string where = cfg.sourcePath + ": element '" + e.name + "'";
+        if (e.link2d) {
+            s->addElement(buildLink2d(e, controls, where));
+            continue;
+        }
         auto law = buildLaw(e.material, where);
         if (!e.numericalSite.empty())
             law = buildSiteLaw(e, std::move(law), where);

@@ -11,6 +11,8 @@
 // Thread rules: one thread at a time (the test's), except emergencyHold(), which any thread
 // may call at any time (docs/protocol.md, "Emergency hold").
 
+#include <Eigen/Core>
+
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -95,6 +97,17 @@ public:
     }
     /// The actuator channels of the last measurement; nullopt when the control has none.
     virtual std::optional<ActuatorChannels> actuatorChannels() const { return std::nullopt; }
+
+    // N actuator channels (a multi-DOF specimen behind an experimental setup, docs/setups.md
+    // "Multi-DOF elements"): one command and one measured stroke and force per actuator.
+    // A one-channel control needs none of these (the defaults map them on setTarget/measure).
+    /// Number of actuator channels.
+    virtual int channelCount() const { return 1; }
+    /// Command every channel at once: the stroke [m] of a displacement-controlled channel, the
+    /// force [kN] of a force-controlled one (ActuatorChannelSpec). Nothing moves on a fault.
+    virtual ControlResult setTargets(const Eigen::VectorXd& commands);
+    /// Measured strokes and forces of every channel after the last setTargets().
+    virtual ControlResult measureChannels(Eigen::VectorXd& strokes, Eigen::VectorXd& forces);
 };
 
 } // namespace hsmu

@@ -35,7 +35,7 @@ ElementStatus ExperimentalElement::sendTrial(const Eigen::VectorXd& uFull)
     if (auto why = targetViolation(uFull))
         return ElementStatus::limitReached(*why);
     const double target = kinematicDeformation(uFull);
-    m_sentAt = std::chrono::steady_clock::now().time_since_epoch().count();
+    markSent();
     if (ControlResult r = m_control->setTarget(target); !r.ok)
         return fault(r);
     m_commanded = target;
@@ -52,11 +52,7 @@ ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
     ControlMeasurement m;
     if (ControlResult r = m_control->measure(m); !r.ok)
         return fault(r);
-    const double latency = m_control->replyLatency();
-    m_roundTrip = std::isfinite(latency)
-                      ? latency
-                      : 1e-9 * double(std::chrono::steady_clock::now().time_since_epoch().count() -
-                                      m_sentAt);
+    markMeasured();
     m_measured = m;
     // The console believes no impossible measurement: past a limit the test holds (critical
     // alarm), the step is not committed, so no update is computed from the sample.
@@ -65,6 +61,15 @@ ElementStatus ExperimentalElement::setTrial(const Eigen::VectorXd& uFull)
     if (auto why = m_limits.violationOfForce(m.force))
         return ElementStatus::limitReached(name() + ": " + *why);
     return ElementStatus::success();
+}
+
+void ExperimentalElement::markMeasured()
+{
+    const double latency = m_control->replyLatency();
+    m_roundTrip = std::isfinite(latency)
+                      ? latency
+                      : 1e-9 * double(std::chrono::steady_clock::now().time_since_epoch().count() -
+                                      m_sentAt);
 }
 
 ElementStatus ExperimentalElement::beginCommit()

@@ -17,6 +17,7 @@
 #include "core/experimental/SafetyLimits.h"
 #include "core/structure/Element.h"
 
+#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -24,7 +25,7 @@
 
 namespace hsmu {
 
-class ExperimentalElement final : public Element {
+class ExperimentalElement : public Element {
 public:
     /// typeName: the geometry it stands for ("rotationalBaseSpring", "lateralSpring", ...).
     /// initialStiffness: dP/dq of the specimen's initial model (for K0, damping and the
@@ -37,7 +38,7 @@ public:
     bool isExperimental() const override { return true; }
 
     /// Why the target for full displacements u must not be sent, if it must not.
-    std::optional<std::string> targetViolation(const Eigen::VectorXd& uFull) const;
+    virtual std::optional<std::string> targetViolation(const Eigen::VectorXd& uFull) const;
 
     /// Check limits and send the target (no wait).
     ElementStatus sendTrial(const Eigen::VectorXd& uFull) override;
@@ -66,8 +67,21 @@ public:
     const SafetyLimits& limits() const { return m_limits; }
     void setLimits(const SafetyLimits& limits) { m_limits = limits; }
 
-private:
+protected:
+    // For elements with several actuator channels (ExperimentalLink2d): the same fault count,
+    // round-trip timing and committed bookkeeping as the one-channel path.
     ElementStatus fault(const ControlResult& r);
+    void markSent() { m_sentAt = std::chrono::steady_clock::now().time_since_epoch().count(); }
+    /// After a measurement: the round trip from markSent() (or the control's reply latency).
+    void markMeasured();
+    /// The reported (primary) commanded deformation and measurement.
+    void setReported(double commanded, const ControlMeasurement& measured)
+    {
+        m_commanded = commanded;
+        m_measured = measured;
+    }
+
+private:
 
     std::string m_typeName;
     std::string m_site = "controller";

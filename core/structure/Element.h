@@ -77,12 +77,14 @@ public:
     virtual HysteresisLaw* law() { return nullptr; }
     virtual const HysteresisLaw* law() const { return nullptr; }
 
-    /// Add c_k P to R[dof_k] (full DOFs).
-    void addNodalForces(Eigen::VectorXd& rFull) const;
+    /// Add c_k P to R[dof_k] (full DOFs). A multi-DOF element (Link2d, ExperimentalLink2d)
+    /// adds A^T q instead, q its basic forces (docs/setups.md, "Multi-DOF elements", eq. L1-L2).
+    virtual void addNodalForces(Eigen::VectorXd& rFull) const;
     /// Append c c^T k0 as triplets over the free DOFs (row freeOf[dof_a], column
-    /// freeOf[dof_b]); Eigen sums duplicates when the sparse matrix is built.
-    void addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
-                             const std::vector<int>& freeOf) const;
+    /// freeOf[dof_b]); Eigen sums duplicates when the sparse matrix is built. A multi-DOF
+    /// element appends A^T Kb0 A.
+    virtual void addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
+                                     const std::vector<int>& freeOf) const;
 
 private:
     std::string m_name;

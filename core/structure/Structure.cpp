@@ -15,10 +15,11 @@ RayleighDamping RayleighDamping::fromRatio(double zeta, double w1, double w2)
     return {2.0 * zeta * w1 * w2 / (w1 + w2), 2.0 * zeta / (w1 + w2)};
 }
 
-int Structure::addDof(std::string name, double mass)
+int Structure::addDof(std::string name, double mass, double influence)
 {
     m_dofNames.push_back(std::move(name));
     m_masses.push_back(mass);
+    m_iota.push_back(influence);
     return static_cast<int>(m_dofNames.size()) - 1;
 }
 
@@ -116,7 +117,12 @@ void Structure::finalize()
     for (int j = 0; j < nFree; ++j)
         m_m.insert(j, j) = m_mDiag[j];
     m_m.makeCompressed();
-    m_influence = m_mDiag; // T^T M_full iota
+    m_influence = Eigen::VectorXd::Zero(nFree); // T^T M_full iota
+    for (int i = 0; i < n; ++i) {
+        if (!std::isfinite(m_iota[i]))
+            throw std::invalid_argument("DOF '" + m_dofNames[i] + "': influence must be finite");
+        m_influence[m_freeOf[i]] += mFull[i] * m_iota[i];
+    }
 
     for (const auto& e : m_elements)
         for (const auto& t : e->terms())

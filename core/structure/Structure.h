@@ -45,8 +45,10 @@ public:
     Structure(const Structure&) = delete;
     Structure& operator=(const Structure&) = delete;
 
-    /// Add a DOF with lumped mass [t]; returns its full index.
-    int addDof(std::string name, double mass);
+    /// Add a DOF with lumped mass [t] (a rotational DOF: [t m^2]) and its ground-motion
+    /// influence iota (1: a horizontal translation the record shakes; 0: a rotation or a
+    /// vertical DOF); returns its full index.
+    int addDof(std::string name, double mass, double influence = 1.0);
     void addElement(std::unique_ptr<Element> element);
     /// Constrain u[slave] = u[master].
     void addEqualDof(int master, int slave);
@@ -108,6 +110,7 @@ private:
 
     std::vector<std::string> m_dofNames;
     std::vector<double> m_masses;
+    std::vector<double> m_iota; // per full DOF
     std::vector<std::unique_ptr<Element>> m_elements;
     std::vector<std::pair<int, int>> m_equalDofs;
     RayleighDamping m_rayleigh;

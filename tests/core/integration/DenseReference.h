@@ -31,6 +31,17 @@ inline DenseModel denseModel(const Structure& s, const DampingSpec& damping) {
     const int n = s.fullDofCount();
     Eigen::MatrixXd kFull = Eigen::MatrixXd::Zero(n, n);
     for (const auto& e : s.elements()) {
+        if (e->typeName() == "link2d" || e->typeName() == "experimentalLink2d") {
+            // multi-DOF (A^T Kb A, eq. L2): its own dense block over the full DOFs
+            std::vector<Eigen::Triplet<double>> tr;
+            std::vector<int> identity(n);
+            for (int i = 0; i < n; ++i)
+                identity[i] = i;
+            e->addInitialStiffness(tr, identity);
+            for (const auto& t : tr)
+                kFull(t.row(), t.col()) += t.value();
+            continue;
+        }
         const double k = e->initialGeneralizedStiffness();
         for (const auto& a : e->terms())
             for (const auto& b : e->terms())

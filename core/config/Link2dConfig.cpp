@@ -1,0 +1,134 @@
+#include "core/config/Link2dConfig.h"
+
+#include "core/config/ConfigLoader.h"
+#include "core/experimental/setup/SetupScript.h"
+#include "core/hysteresis/LawFactory.h"
+
+#include <cmath>
+
+namespace hsmu {
+
+namespace {
+
+Link2dBasicSpec parseBasic(const JsonCursor& c)
+{
+    c.allowOnly({"material", "heldForce"});
+    Link2dBasicSpec b;
+    if (c.has("material") && c.has("heldForce"))
+        c.fail("heldForce", "either a material or a held force, not both");
+    if (c.has("material")) {
+        b.hasMaterial = true;
+        b.material = parseMaterial(c.child("material"));
+    }
+    b.heldForce = c.number("heldForce", 0.0);
+    return b;
+}
+
+ActuatorSpec parseActuator(const JsonCursor& c)
+{
+    c.allowOnly({"name", "control", "force", "limits", "material", "initialStiffness"});
+    ActuatorSpec a;
+    a.channel.name = c.string("name");
+    const std::string mode = c.string("control", "displacement");
+    if (mode == "force") {
+        a.channel.mode = ActuatorMode::Force;
+        a.channel.heldForce = c.number("force");
+    } else if (mode == "displacement") {
+        if (c.has("force"))
+            c.fail("force", "only for a force-controlled actuator (\"control\": \"force\")");
+    } else {
+        c.fail("control", "expected 'displacement' or 'force', found '" + mode + "'");
+    }
+    if (c.has("limits"))
+        a.channel.limits = parseLimits(c.child("limits"));
+    a.material = parseMaterial(c.child("material"));
+    if (c.has("initialStiffness")) {
+        a.channel.initialStiffness = c.number("initialStiffness");
+        if (!(a.channel.initialStiffness >= 0.0) || !std::isfinite(a.channel.initialStiffness))
+            c.fail("initialStiffness", "expected a stiffness >= 0 kN/m");
+    } else if (a.channel.mode == ActuatorMode::Displacement) {
+        a.channel.initialStiffness = makeLaw(a.material.law, a.material.params)->initialTangent();
+    }
+    return a;
+}
+
+} // namespace
+
+std::unique_ptr<ExperimentalSetup> buildLink2dSetup(const Link2dSpec& s, std::string& error)
+{
+    SetupsByTag setups;
+    if (!parseSetupScript(s.setupScript, setups, error))
+        return nullptr;
+    if (setups.size() != 1) {
+        error = "defines " + std::to_string(setups.size()) +
+                " top-level setups, expected one (sub-setups go into an Aggregator)";
+        return nullptr;
+    }
+    return std::move(setups.begin()->second);
+}
+
+ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
+{
+    c.allowOnly({"name", "type", "dofs", "length", "angle", "basic", "primary", "experimental",
+                 "setup", "actuators"});
+    ElementSpec e;
+    e.name = c.string("name");
+    e.type = "link2d";
+    Link2dSpec s;
+    const JsonCursor d = c.child("dofs");
+    if (!d.node().is_array() || d.size() != 6)
+        c.fail("dofs", "expected six DOFs [xi, yi, thetai, xj, yj, thetaj], null for a support");
+    for (int k = 0; k < 6; ++k) {
+        const auto& v = d.node()[k];
+        s.dofs[k] = v.is_null() ? -1 : parseDof(c, v, dofs, "dofs");
+        if (s.dofs[k] >= 0)
+            e.dofs.push_back(s.dofs[k]);
+    }
+    if (e.dofs.empty())
+        c.fail("dofs", "every DOF is a support: the element would do nothing");
+    s.length = c.number("length");
+    if (!(s.length > 0.0) || !std::isfinite(s.length))
+        c.fail("length", "expected a length > 0 m");
+    s.angle = c.number("angle", 90.0);
+    if (!std::isfinite(s.angle))
+        c.fail("angle", "expected an angle in degrees");
+    s.primary = c.integer("primary", 1, 0, 2);
+    e.experimental = c.boolean("experimental", false);
+    if (e.experimental) {
+        if (c.has("basic"))
+            c.fail("basic", "a specimen's basic forces come from its actuators: omit basic");
+        const JsonCursor st = c.child("setup");
+        st.allowOnly({"script"});
+        s.setupScript = st.string("script");
+        std::string error;
+        auto setup = buildLink2dSetup(s, error);
+        if (!setup)
+            st.fail("script", error);
+        if (setup->basicSize() != 3)
+            st.fail("script", setup->typeName() + " serves " + std::to_string(setup->basicSize()) +
+                                  " basic DOFs, a link2d element has 3 (axial, shear, rotation): "
+                                  "-sizeTrialOut 3 3");
+        const JsonCursor acts = c.child("actuators");
+        acts.requireArray();
+        for (std::size_t i = 0; i < acts.size(); ++i)
+            s.actuators.push_back(parseActuator(acts.at(i)));
+        if (int(s.actuators.size()) != setup->actuatorCount())
+            c.fail("actuators", setup->typeName() + " has " +
+                                    std::to_string(setup->actuatorCount()) + " actuators, " +
+                                    std::to_string(s.actuators.size()) + " given");
+    } else {
+        if (c.has("setup") || c.has("actuators"))
+            c.fail(c.has("setup") ? "setup" : "actuators", "only with \"experimental\": true");
+        const JsonCursor b = c.child("basic");
+        if (!b.node().is_array() || b.size() != 3)
+            c.fail("basic", "expected three basic DOFs [axial, shear, rotation]");
+        for (int k = 0; k < 3; ++k)
+            s.basic[k] = parseBasic(b.at(k));
+        if (!s.basic[s.primary].hasMaterial)
+            c.fail("primary", "the primary basic DOF needs a material");
+    }
+    e.link2d = std::move(s);
+    return e;
+}
+
+} // namespace hsmu

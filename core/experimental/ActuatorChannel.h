@@ -1,0 +1,35 @@
+#pragma once
+// ActuatorChannelSpec: one actuator of a multi-actuator specimen (docs/setups.md, "Mixed
+// control and channel limits"). Each channel is displacement-controlled (its command is the
+// stroke the setup computes from the element's basic displacements) or force-controlled (its
+// command is a held force, e.g. the vertical actuator's constant axial load; its stroke is
+// whatever the specimen gives under it).
+// Limits per channel (SafetyLimits, the channel's units: stroke [m], force [kN]):
+//   maxDeformation: |stroke| (a commanded stroke past it is never sent; a measured one past it
+//                   by SafetyLimits::kMeasuredDeformationTolerance holds the test, also on a
+//                   force-controlled channel);
+//   maxForce:       |force| (a commanded force past it is never sent; a measured one holds);
+//   maxIncrement:   |stroke - last committed stroke| per step [m] (the rate limit times dt).
+// A hold names the element and the channel.
+
+#include "core/experimental/SafetyLimits.h"
+
+#include <string>
+
+namespace hsmu {
+
+enum class ActuatorMode { Displacement, Force };
+
+struct ActuatorChannelSpec {
+    std::string name;                          ///< e.g. "lateral", "vertical"
+    ActuatorMode mode = ActuatorMode::Displacement;
+    double heldForce = 0.0;                    ///< [kN] command of a force-controlled channel
+    SafetyLimits limits;
+    /// [kN/m] initial stiffness the channel sees (the specimen through this actuator), for K0;
+    /// a force-controlled channel adds no stiffness.
+    double initialStiffness = 0.0;
+};
+
+const char* actuatorModeName(ActuatorMode m);
+
+} // namespace hsmu

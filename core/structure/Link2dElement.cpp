@@ -1,0 +1,82 @@
+#include "core/structure/Link2dElement.h"
+
+#include <stdexcept>
+
+namespace hsmu {
+
+namespace {
+std::vector<DofTerm> primaryTerms(const std::string& name, const Link2dGeometry& g, int primary)
+{
+    if (primary < 0 || primary > 2)
+        throw std::invalid_argument("element '" + name + "': primary basic DOF must be 0, 1 or 2");
+    return Link2dKinematics(name, g).terms(primary);
+}
+} // namespace
+
+Link2dElement::Link2dElement(std::string name, const Link2dGeometry& geometry,
+                             std::array<Link2dBasicDof, 3> dofs, int primary)
+    : Element(name, primaryTerms(name, geometry, primary)), m_kin(name, geometry),
+      m_dofs(std::move(dofs)), m_primary(primary)
+{
+    if (!m_dofs[m_primary].law)
+        throw std::invalid_argument("element '" + name + "': the primary basic DOF needs a law");
+    for (int i = 0; i < 3; ++i)
+        m_q[i] = m_dofs[i].law ? 0.0 : m_dofs[i].heldForce;
+}
+
+ElementStatus Link2dElement::setTrial(const Eigen::VectorXd& uFull)
+{
+    m_d = m_kin.basic(uFull);
+    for (int i = 0; i < 3; ++i) {
+        HysteresisLaw* law = m_dofs[i].law.get();
+        if (!law) {
+            m_q[i] = m_dofs[i].heldForce;
+            continue;
+        }
+        if (LawStatus s = law->setTrialDeformation(m_d[i]); s != LawStatus::Ok)
+            return ElementStatus::failure(name() + ": basic DOF " + std::to_string(i) + ": " +
+                                          lawStatusName(s));
+        m_q[i] = law->trialForce();
+    }
+    return ElementStatus::success();
+}
+
+double Link2dElement::initialGeneralizedStiffness() const
+{
+    return m_dofs[m_primary].law->initialTangent();
+}
+
+ElementStatus Link2dElement::commit()
+{
+    for (auto& dof : m_dofs)
+        if (dof.law)
+            dof.law->commit();
+    return ElementStatus::success();
+}
+
+void Link2dElement::revert()
+{
+    for (int i = 0; i < 3; ++i)
+        if (HysteresisLaw* law = m_dofs[i].law.get()) {
+            law->revert();
+            m_d[i] = law->committedDeformation();
+            m_q[i] = law->committedForce();
+        }
+}
+
+void Link2dElement::addNodalForces(Eigen::VectorXd& rFull) const
+{
+    m_kin.addNodalForces(m_q, rFull);
+}
+
+void Link2dElement::addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
+                                        const std::vector<int>& freeOf) const
+{
+    Eigen::Matrix3d kb = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 3; ++i)
+        if (m_dofs[i].law)
+            kb(i, i) = m_dofs[i].law->initialTangent();
+    m_kin.addStiffness(kb, k, freeOf);
+}
+
+} // namespace hsmu

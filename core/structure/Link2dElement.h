@@ -1,0 +1,53 @@
+#pragma once
+// Link2dElement: a numerical two-node 2D link / beam-column with 3 basic DOFs (axial, shear,
+// rotation; Link2dKinematics.h, eq. L1-L2), each carried by its own hysteresis law, or by a
+// held basic force (e.g. a constant axial load: q = P whatever d, no stiffness), or by
+// nothing (q = 0). The all-numerical twin of an ExperimentalLink2d (docs/setups.md,
+// "Multi-DOF elements"). Units: basic forces [kN], [kN m] with deformations [m], [rad].
+// deformation() / force() report the primary basic DOF (the record's one column per element).
+
+#include "core/structure/Link2dKinematics.h"
+
+#include <array>
+#include <memory>
+
+namespace hsmu {
+
+struct Link2dBasicDof {
+    std::unique_ptr<HysteresisLaw> law; ///< nullptr: the held force below
+    double heldForce = 0.0;             ///< q when law is nullptr (0: a free DOF)
+};
+
+class Link2dElement final : public Element {
+public:
+    /// primary: the basic DOF (0 axial, 1 shear, 2 rotation) deformation() reports; it must
+    /// carry a law. Throws std::invalid_argument naming the element otherwise.
+    Link2dElement(std::string name, const Link2dGeometry& geometry,
+                  std::array<Link2dBasicDof, 3> dofs, int primary = 1);
+
+    std::string typeName() const override { return "link2d"; }
+    ElementStatus setTrial(const Eigen::VectorXd& uFull) override;
+    double deformation() const override { return m_d[m_primary]; }
+    double force() const override { return m_q[m_primary]; }
+    double initialGeneralizedStiffness() const override;
+    ElementStatus commit() override;
+    void revert() override;
+    HysteresisLaw* law() override { return m_dofs[m_primary].law.get(); }
+    const HysteresisLaw* law() const override { return m_dofs[m_primary].law.get(); }
+
+    void addNodalForces(Eigen::VectorXd& rFull) const override;
+    void addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
+                             const std::vector<int>& freeOf) const override;
+
+    const Eigen::Vector3d& basicDeformations() const { return m_d; } ///< trial d
+    const Eigen::Vector3d& basicForces() const { return m_q; }       ///< trial q
+    const Link2dKinematics& kinematics() const { return m_kin; }
+
+private:
+    Link2dKinematics m_kin;
+    std::array<Link2dBasicDof, 3> m_dofs;
+    int m_primary;
+    Eigen::Vector3d m_d = Eigen::Vector3d::Zero(), m_q = Eigen::Vector3d::Zero();
+};
+
+} // namespace hsmu

@@ -1,0 +1,151 @@
+// Tests of the "link2d" element of a configuration (core/config/Link2dConfig.h,
+// docs/configuration.md "link2d"): the shipped preset two-actuator-column-frame.json (a one-bay
+// frame whose left column is a two-actuator specimen with a constant axial load on the
+// in-process virtual lab) equals the same frame with that column numerical (the same laws, the
+// axial load held) to 1e-9 of the peak; and each configuration error names the field, the
+// setup and its parameter. Units: kN, m, s, t.
+
+#include "core/config/ConfigLoader.h"
+#include "core/config/TestFactory.h"
+#include "core/experiment/HybridTest.h"
+#include "core/experimental/ExperimentalLink2d.h"
+#include "core/structure/Structure.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <fstream>
+
+using namespace hsmu;
+
+namespace {
+
+const std::string kPreset = HSMU_SOURCE_DIR "/resources/presets/two-actuator-column-frame.json";
+
+struct Recorder final : StepObserver {
+    std::vector<StepRecord> records;
+    void onStep(const StepRecord& r) override { records.push_back(r); }
+};
+
+nlohmann::json presetJson()
+{
+    std::ifstream in(kPreset);
+    return nlohmann::json::parse(in);
+}
+
+// The left column as the numerical twin: held axial load, the lateral actuator's law on the
+// shear DOF, a free rotation (no actuator on it).
+nlohmann::json numericalTwin(nlohmann::json doc)
+{
+    nlohmann::json& col = doc["structure"]["elements"][0];
+    const nlohmann::json shear = col["actuators"][1]["material"];
+    const double axial = col["actuators"][0]["force"];
+    for (const char* k : {"experimental", "setup", "actuators"})
+        col.erase(k);
+    col["basic"] = nlohmann::json::array({{{"heldForce", axial}}, {{"material", shear}},
+                                          nlohmann::json::object()});
+    return doc;
+}
+
+std::vector<StepRecord> run(const nlohmann::json& doc, double duration,
+                            std::unique_ptr<HybridTest>* keep = nullptr)
+{
+    TestConfig cfg = parseConfig(doc, "frame.json");
+    cfg.analysis.duration = duration;
+    auto test = buildHybridTest(cfg);
+    Recorder rec;
+    test->addObserver(&rec);
+    if (!test->prepare())
+        qFatal("%s", test->lastError().c_str());
+    while (test->step() == HybridTest::StepResult::Advanced) {
+    }
+    if (test->state() != HybridTest::State::Finished)
+        qFatal("not finished: %s", test->alarms().empty() ? "" : test->alarms().back().message.c_str());
+    test->removeObserver(&rec);
+    if (keep)
+        *keep = std::move(test);
+    return rec.records;
+}
+
+QString errorOf(const nlohmann::json& doc)
+{
+    try {
+        parseConfig(doc, "frame.json");
+    } catch (const std::exception& e) {
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
+
+} // namespace
+
+class TestLink2dConfig : public QObject {
+    Q_OBJECT
+
+private slots:
+    void presetEqualsNumericalTwin()
+    {
+        std::unique_ptr<HybridTest> hybrid;
+        const auto b = run(presetJson(), 10.0, &hybrid);
+        const auto a = run(numericalTwin(presetJson()), 10.0);
+        QCOMPARE(a.size(), b.size());
+        double peak = 0, du = 0, peakF = 0, dF = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            peak = std::max(peak, std::abs(a[i].u[0]));
+            du = std::max(du, (a[i].u - b[i].u).cwiseAbs().maxCoeff());
+            peakF = std::max(peakF, std::abs(a[i].elements[0].force));
+            dF = std::max(dF, std::abs(a[i].elements[0].force - b[i].elements[0].force));
+        }
+        qInfo("peak |x3| %.6g m, max |du| %.3g m; peak shear %.6g kN, max |dF| %.3g kN", peak, du,
+              peakF, dF);
+        QVERIFY(peak > 0.01); // twice the column's yield displacement (about 0.005 m: z_max fRef / k0)
+        QVERIFY(du <= 1e-9 * peak);
+        QVERIFY(dF <= 1e-9 * peakF);
+        const auto* x = dynamic_cast<const ExperimentalLink2d*>(
+            hybrid->structure().element("Column L"));
+        QVERIFY(x);
+        QCOMPARE(x->setup().typeName(), std::string("NoTransformation"));
+        QCOMPARE(x->channels()[0].mode, ActuatorMode::Force);
+        QVERIFY(std::abs(x->basicForces()[0] + 500.0) <= 1e-9);
+    }
+
+    void errorsNameTheSetupAndParameter()
+    {
+        auto doc = presetJson();
+        doc["structure"]["elements"][0]["setup"]["script"] =
+            "expSetup NoTransformation 1 -dir 1 2 -sizeTrialOut 2 2";
+        QString e = errorOf(doc);
+        QVERIFY2(e.contains("setup.script") && e.contains("NoTransformation serves 2 basic DOFs"),
+                 qPrintable(e));
+
+        doc = presetJson();
+        doc["structure"]["elements"][0]["setup"]["script"] =
+            "expSetup TwoActuators2d 1 1.5 1.2 0.0 -phiLocX 90";
+        e = errorOf(doc);
+        QVERIFY2(e.contains("setup.script") && e.contains("TwoActuators2d: L"), qPrintable(e));
+
+        doc = presetJson();
+        doc["structure"]["elements"][0]["actuators"].erase(1);
+        e = errorOf(doc);
+        QVERIFY2(e.contains("actuators") && e.contains("NoTransformation has 2 actuators, 1 given"),
+                 qPrintable(e));
+
+        doc = presetJson();
+        doc["structure"]["elements"][0]["actuators"][0]["control"] = "velocity";
+        e = errorOf(doc);
+        QVERIFY2(e.contains("control") && e.contains("'displacement' or 'force'"), qPrintable(e));
+
+        doc = presetJson();
+        doc["structure"]["elements"][0]["dofs"] = nlohmann::json::array({nullptr, "x3"});
+        e = errorOf(doc);
+        QVERIFY2(e.contains("dofs") && e.contains("six DOFs"), qPrintable(e));
+
+        doc = presetJson(); // the primary basic DOF of a numerical link needs a law
+        doc["structure"]["elements"][1]["basic"][1] = {{"heldForce", 3.0}};
+        e = errorOf(doc);
+        QVERIFY2(e.contains("primary"), qPrintable(e));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLink2dConfig)
+#include "TestLink2dConfig.moc"
