@@ -1,5 +1,7 @@
 #include "comms/tls/TlsContext.h"
 
+#include "comms/tls/OpenSslLibrary.h"
+
 #include <openssl/err.h>
 #include <openssl/ssl.h>
 
@@ -8,7 +10,7 @@ namespace hsmu::comms {
 namespace ssl = boost::asio::ssl;
 
 TlsContext makeTlsContext(const TlsSpec& spec, TlsRole role, std::string& error) {
-    if (!checkTlsSpec(spec, error))
+    if (!checkTlsSpec(spec, error) || !loadOpenSsl(error))
         return {};
     auto policy = std::make_shared<PeerPolicy>();
     if (!PeerPolicy::load(spec, *policy, error))
