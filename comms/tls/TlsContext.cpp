@@ -1,5 +1,7 @@
 #include "comms/tls/TlsContext.h"
 
+#include "comms/tls/OpenSslLibrary.h"
+
 #include <openssl/err.h>
 #include <openssl/pem.h>
 #include <openssl/ssl.h>
@@ -48,7 +50,7 @@ bool loadCrl(SSL_CTX* ctx, const std::string& path, std::string& error) {
 } // namespace
 
 TlsContext makeTlsContext(const TlsSpec& spec, TlsRole role, std::string& error) {
-    if (!checkTlsSpec(spec, error))
+    if (!checkTlsSpec(spec, error) || !loadOpenSsl(error))
         return {};
     auto policy = std::make_shared<PeerPolicy>();
     if (!PeerPolicy::load(spec, *policy, error))

@@ -295,7 +295,8 @@ HybridTest::StepResult HybridTest::step()
         return StepResult::Held;
     }
     // Every target is checked before any is sent: nothing leaves a limit, ever.
-    const Eigen::VectorXd uFull = m_structure->toFull(uTrial);
+    m_structure->toFull(uTrial, m_uFull);
+    const Eigen::VectorXd& uFull = m_uFull;
     for (ExperimentalElement* x : m_specimens) {
         if (auto why = x->targetViolation(uFull)) {
             enterHold(AlarmKind::LimitExceeded, *why);
@@ -351,9 +352,9 @@ void HybridTest::publish()
     rec.step = m_step;
     rec.time = time();
     rec.groundAcceleration = m_groundMotion.acceleration[m_step];
-    rec.u = m_structure->toFull(m_integrator->displacement());
-    rec.v = m_structure->toFull(m_integrator->velocity());
-    rec.a = m_structure->toFull(m_integrator->acceleration());
+    m_structure->toFull(m_integrator->displacement(), rec.u);
+    m_structure->toFull(m_integrator->velocity(), rec.v);
+    m_structure->toFull(m_integrator->acceleration(), rec.a);
     const auto& elements = m_structure->elements();
     rec.elements.resize(elements.size());
     for (std::size_t i = 0; i < elements.size(); ++i) {

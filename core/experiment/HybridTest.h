@@ -143,6 +143,7 @@ private:
     std::vector<ExperimentalElement*> m_specimens; // owned by the structure
     std::unique_ptr<ModelUpdater> m_updater;
     StepRecord m_record;
+    Eigen::VectorXd m_uFull; // step()'s trial at every DOF (storage reused)
     std::shared_ptr<SiteMonitor> m_siteMonitor = std::make_shared<SiteMonitor>();
     std::vector<SiteStatus> m_sites; // rebuilt at prepare, hold and resume; refreshed per step
     void updateSites();

@@ -24,7 +24,7 @@ bool ExplicitNewmark::correct(const Eigen::VectorXd& rTrial, double agNext)
     const Eigen::VectorXd aNext = m_lhs.solve(rhs);
     if (!aNext.allFinite())
         return false;
-    m_u = predict();
+    m_u = m_u + m_dt * m_v + 0.5 * m_dt * m_dt * m_a; // predict(), in place
     m_v = vHalf + kGamma * m_dt * aNext;
     m_a = aNext;
     return true;

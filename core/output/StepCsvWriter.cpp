@@ -1,6 +1,7 @@
 #include "core/output/StepCsvWriter.h"
 
-#include <charconv>
+#include "core/output/TenDigits.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -9,11 +10,9 @@ namespace hsmu {
 namespace {
 
 void appendValue(std::string& line, double value) {
-    char buf[32];
-    // std::to_chars is locale-independent; general format with 10 digits equals "%.10g".
-    const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, 10);
-    line.push_back(',');
-    line.append(buf, r.ptr);
+    char buf[1 + kTenDigitsMaxChars];
+    buf[0] = ',';
+    line.append(buf, writeTenDigits(buf + 1, value));
 }
 
 } // namespace

@@ -13,7 +13,7 @@
 //   fit_error (the inspector's normalized RMS error [-]),
 // e.g. "param_k0,...,std_k0,...,aux_force_kNm,fit_error"; a record without updating data
 // writes NaN there.
-// Values are written like "%.10g" with a '.' decimal point whatever the locale.
+// Values are written like "%.10g" with a '.' decimal point whatever the locale (writeTenDigits).
 // The file is flushed every kFlushInterval rows and by finish() / the destructor, so an
 // interrupted run keeps (almost) every committed step.
 //

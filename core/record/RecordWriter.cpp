@@ -225,6 +225,14 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
             &siteRoundTrip};
 }
 
+int RecordWriter::batchRowsFor(std::size_t nDof, std::size_t nElem) {
+    const long width = long(std::max<std::size_t>(3 * (nDof + nElem), 1));
+    const long byValues = std::max(kMaxBufferedValues / width, 1L);
+    const long rows = std::min<long>(kMaxBufferedRows, byValues);
+    const long chunk = recordschema::chunkRowsFor(int(std::max(nDof, nElem)), int(sizeof(double)));
+    return int(rows >= chunk ? rows / chunk * chunk : rows);
+}
+
 RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
                            const RecordStart& start)
     : m_d(std::make_unique<Impl>()) {
@@ -236,9 +244,8 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->nSite = layout.sites.size();
     const h5::QuietErrors quiet;
     m_d->create(start); // on a throw, Impl's handles close the partial file
-    const std::size_t width = std::max<std::size_t>(3 * (m_d->nDof + m_d->nElem), 1);
-    const std::size_t rows =
-        std::min<std::size_t>(kMaxBufferedRows, std::size_t(kMaxBufferedValues) / width + 1);
+    m_d->batchRows = batchRowsFor(m_d->nDof, m_d->nElem);
+    const std::size_t rows = std::size_t(m_d->batchRows);
     for (Impl::Batch* b : {&m_d->fill, &m_d->out})
         b->reserve(rows, m_d->nDof, m_d->nElem, m_d->nPar, m_d->nSite);
     m_d->thread = std::make_unique<RecordThread>([d = m_d.get()] { d->writeOut(); });
@@ -285,8 +292,7 @@ void RecordWriter::onStep(const StepRecord& r) {
                 for (const UpdateEvent& ev : *events)
                     d.bufferEvent(ev);
     }
-    if (d.fill.bTime.size() >= std::size_t(kMaxBufferedRows) ||
-        long(d.fill.bU.size() * 3 + d.fill.bDef.size() * 3) >= kMaxBufferedValues ||
+    if (d.fill.bTime.size() >= std::size_t(d.batchRows) ||
         Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
         d.flush(false);
 }

@@ -19,7 +19,7 @@
 // The file is created with the latest format and switched to SWMR write mode, so another
 // process can read it (RecordReader, h5py with swmr=True) while the run goes on. Rows are
 // buffered in memory and appended (extend + write + H5Fflush) at least every kFlushInterval
-// seconds of wall time, every kMaxBufferedRows rows (or kMaxBufferedValues values), and by
+// seconds of wall time, every batchRowsFor() rows (whole chunks; kMaxBufferedRows at most), and by
 // flush() / finish() / the destructor: a process killed mid-run leaves a file holding every
 // step flushed before.
 // Off the stepping thread (issue 27): onStep() only copies the row into a batch whose
@@ -42,6 +42,7 @@
 // been joined; core uses HDF5 from no other thread.
 
 #include "core/output/RunLayout.h"
+#include "core/record/RecordSchema.h"
 #include "core/util/Alarm.h"
 #include "core/experiment/StepRecord.h"
 
@@ -72,11 +73,17 @@ struct RecordStart {
 class RecordWriter final : public StepObserver {
 public:
     static constexpr double kFlushInterval = 0.5; ///< [s] of wall time
-    static constexpr int kMaxBufferedRows = 500; // crash safety: <= 1,000 rows behind steps.csv
+    static constexpr int kMaxBufferedRows = recordschema::kChunkRows; // crash safety: <= 1,000 rows behind steps.csv
     /// Also flush once the buffered per-step values (DOF and element columns) reach this
     /// many doubles (8 MiB): a 10,000-DOF model flushes every 18 rows, bounding memory (two
     /// batches, one filling and one being written, hold what one batch of 16 MiB did).
     static constexpr long kMaxBufferedValues = 1L << 20;
+    /// Rows of one batch (a flush when the batch is full) for a layout of nDof DOFs and nElem
+    /// elements: at most kMaxBufferedRows and kMaxBufferedValues / (3 (nDof + nElem)) rows,
+    /// rounded down to a whole number of the widest per-step matrix's chunks
+    /// (recordschema::chunkRowsFor), so that each chunk is written once: 500 for small models,
+    /// 10 at 10,000 DOFs (issue 27).
+    static int batchRowsFor(std::size_t nDof, std::size_t nElem);
 
     /// Creates (truncates) path. Throws RecordError naming the file on failure.
     RecordWriter(const std::string& path, const RunLayout& layout, const RecordStart& start);

@@ -66,6 +66,7 @@ struct RecordWriter::Impl {
     const std::vector<Alarm>* tracked = nullptr;
     std::size_t alarmsSeen = 0;
     int received = 0;
+    int batchRows = 1; // rows per batch (batchRowsFor)
     std::atomic<int> flushed{0}, alarmsFlushed{0}, notesFlushed{0}; // by the record thread
     std::atomic<bool> failed{false}; // set by the record thread once `error` is written
     bool closed = false;

@@ -194,17 +194,24 @@ double Structure::updatedMaxFrequency() const
 
 Eigen::VectorXd Structure::toFull(const Eigen::VectorXd& uFree) const
 {
-    Eigen::VectorXd u(Eigen::Index(m_freeOf.size()));
-    for (std::size_t i = 0; i < m_freeOf.size(); ++i)
-        u[Eigen::Index(i)] = uFree[m_freeOf[i]];
+    Eigen::VectorXd u;
+    toFull(uFree, u);
     return u;
+}
+
+void Structure::toFull(const Eigen::VectorXd& uFree, Eigen::VectorXd& out) const
+{
+    out.resize(Eigen::Index(m_freeOf.size()));
+    for (std::size_t i = 0; i < m_freeOf.size(); ++i)
+        out[Eigen::Index(i)] = uFree[m_freeOf[i]];
 }
 
 ElementStatus Structure::setTrial(const Eigen::VectorXd& uFree)
 {
     if (m_order.size() != m_elements.size())
         buildOrder();
-    const Eigen::VectorXd u = toFull(uFree);
+    toFull(uFree, m_trialFull);
+    const Eigen::VectorXd& u = m_trialFull;
     // Send every specimen's target before any measurement is awaited (sites answer in
     // parallel: the step costs the slowest round trip, not the sum). Experimental elements
     // come first in m_order. A send that fails stops further sends; every target already

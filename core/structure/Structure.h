@@ -93,6 +93,9 @@ public:
     double updatedMaxFrequency() const;
 
     Eigen::VectorXd toFull(const Eigen::VectorXd& uFree) const;
+    /// toFull into out, reusing its storage (no allocation once sized): once a step per
+    /// vector of the published StepRecord (issue 27).
+    void toFull(const Eigen::VectorXd& uFree, Eigen::VectorXd& out) const;
 
     /// Set every element's trial at free displacements u; experimental elements first (their
     /// targets go out before any numerical work). Returns the first failure.
@@ -123,6 +126,7 @@ private:
     Eigen::VectorXd m_mDiag, m_influence, m_omega;
     double m_omegaMax = 0.0;
     mutable Eigen::VectorXd m_rFull; // restoringForce() scratch
+    Eigen::VectorXd m_trialFull;     // setTrial() scratch
 };
 
 } // namespace hsmu

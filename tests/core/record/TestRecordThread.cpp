@@ -10,6 +10,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -90,6 +91,26 @@ private slots:
         QCOMPARE(done.load(), 1001);
         QCOMPARE(overlapped.load(), 0);
         QVERIFY(jobThread != std::this_thread::get_id());
+    }
+
+    // A batch fills whole chunks of the widest per-step matrix (each chunk written once) and
+    // stays within both memory bounds.
+    void batchesFillWholeChunks() {
+        QCOMPARE(RecordWriter::batchRowsFor(1, 1), 500);       // the strong SDOF
+        QCOMPARE(RecordWriter::batchRowsFor(1000, 1000), 125); // 6,000 values a row
+        QCOMPARE(RecordWriter::batchRowsFor(10000, 10000), 10);
+        for (std::size_t dofs : {0, 1, 7, 60, 199, 300, 999, 4096, 25000, 100000, 300000})
+            for (std::size_t elems : {std::size_t(0), std::size_t(1), dofs / 3, dofs}) {
+                const int rows = RecordWriter::batchRowsFor(dofs, elems);
+                const int chunk = recordschema::chunkRowsFor(int(std::max(dofs, elems)), 8);
+                const long values = long(rows) * long(3 * (dofs + elems));
+                QVERIFY(rows >= 1 && rows <= RecordWriter::kMaxBufferedRows);
+                QVERIFY(rows == 1 || values <= RecordWriter::kMaxBufferedValues);
+                QVERIFY2(rows % chunk == 0 || rows < chunk,
+                         qPrintable(QString("%1 DOFs, %2 elements: %3 rows, chunks of %4")
+                                        .arg(dofs).arg(elems).arg(rows).arg(chunk)));
+                QCOMPARE(recordschema::kChunkRows % chunk, 0);
+            }
     }
 
     void steppingThreadAllocatesNothingPerRow() {
