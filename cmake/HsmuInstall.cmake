@@ -43,8 +43,9 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# Qt's platform plugins are loaded at run time, not linked: name them.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6svg6")
+# Qt's platform plugins and OpenSSL 3 (loaded on the first tls:// link, comms/tls/OpenSslLibrary)
+# are loaded at run time, not linked: name them.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6svg6, libssl3")
 # The Python module (`import hsmu`, docs/python.md) needs the interpreter and NumPy.
 if(HSMU_PYTHON_MODULE)
   set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3, python3-numpy")
