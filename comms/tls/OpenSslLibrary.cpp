@@ -8,6 +8,7 @@
 #include <openssl/bio.h>
 #include <openssl/err.h>
 #include <openssl/evp.h>
+#include <openssl/pem.h>
 #include <openssl/ssl.h>
 #include <openssl/x509v3.h>
 
@@ -75,6 +76,7 @@ bool loadOpenSsl(std::string& error) {
 HSMU_OPENSSL(long, BIO_ctrl, (BIO *bp, int cmd, long larg, void *parg), (bp, cmd, larg, parg))
 HSMU_OPENSSL(size_t, BIO_ctrl_pending, (BIO *b), (b))
 HSMU_OPENSSL(int, BIO_free, (BIO *a), (a))
+HSMU_OPENSSL(BIO *, BIO_new_file, (const char *filename, const char *mode), (filename, mode))
 HSMU_OPENSSL(int, BIO_new_bio_pair, (BIO **bio1, size_t writebuf1, BIO **bio2, size_t writebuf2), (bio1, writebuf1, bio2, writebuf2))
 HSMU_OPENSSL(int, BIO_read, (BIO *b, void *data, int dlen), (b, data, dlen))
 HSMU_OPENSSL(int, BIO_write, (BIO *b, const void *data, int dlen), (b, data, dlen))
@@ -82,10 +84,12 @@ HSMU_OPENSSL(void, ERR_clear_error, (), ())
 HSMU_OPENSSL(unsigned long, ERR_get_error, (), ())
 HSMU_OPENSSL(const char *, ERR_reason_error_string, (unsigned long e), (e))
 HSMU_OPENSSL(const EVP_MD *, EVP_sha256, (), ())
+HSMU_OPENSSL(X509_CRL *, PEM_read_bio_X509_CRL, (BIO *out, X509_CRL **x, pem_password_cb *cb, void *u), (out, x, cb, u))
 HSMU_OPENSSL(int, SSL_CTX_check_private_key, (const SSL_CTX *ctx), (ctx))
 HSMU_OPENSSL(long, SSL_CTX_ctrl, (SSL_CTX *ctx, int cmd, long larg, void *parg), (ctx, cmd, larg, parg))
 HSMU_OPENSSL(void, SSL_CTX_free, (SSL_CTX * a0), (a0))
 HSMU_OPENSSL(void *, SSL_CTX_get_default_passwd_cb_userdata, (SSL_CTX *ctx), (ctx))
+HSMU_OPENSSL(X509_STORE *, SSL_CTX_get_cert_store, (const SSL_CTX *ctx), (ctx))
 HSMU_OPENSSL(void *, SSL_CTX_get_ex_data, (const SSL_CTX *ssl, int idx), (ssl, idx))
 HSMU_OPENSSL(SSL_verify_cb, SSL_CTX_get_verify_callback, (const SSL_CTX *ctx), (ctx))
 HSMU_OPENSSL(int, SSL_CTX_load_verify_locations, (SSL_CTX *ctx, const char *CAfile, const char *CApath), (ctx, CAfile, CApath))
@@ -121,7 +125,10 @@ HSMU_OPENSSL(int, X509_STORE_CTX_get_error, (const X509_STORE_CTX *ctx), (ctx))
 HSMU_OPENSSL(int, X509_STORE_CTX_get_error_depth, (const X509_STORE_CTX *ctx), (ctx))
 HSMU_OPENSSL(void *, X509_STORE_CTX_get_ex_data, (const X509_STORE_CTX *ctx, int idx), (ctx, idx))
 HSMU_OPENSSL(void, X509_STORE_CTX_set_error, (X509_STORE_CTX *ctx, int s), (ctx, s))
+HSMU_OPENSSL(int, X509_STORE_add_crl, (X509_STORE *ctx, X509_CRL *x), (ctx, x))
+HSMU_OPENSSL(int, X509_STORE_set_flags, (X509_STORE *ctx, unsigned long flags), (ctx, flags))
 HSMU_OPENSSL(void, X509_free, (X509 *a), (a))
+HSMU_OPENSSL(void, X509_CRL_free, (X509_CRL *a), (a))
 HSMU_OPENSSL(int, X509_check_host, (X509 *x, const char *chk, size_t chklen, unsigned int flags, char **peername), (x, chk, chklen, flags, peername))
 HSMU_OPENSSL(int, X509_check_ip_asc, (X509 *x, const char *ipasc, unsigned int flags), (x, ipasc, flags))
 HSMU_OPENSSL(int, X509_cmp_current_time, (const ASN1_TIME *s), (s))
