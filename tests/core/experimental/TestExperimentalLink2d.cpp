@@ -347,7 +347,8 @@ private slots:
         }
         Eigen::VectorXd r = Eigen::VectorXd::Zero(3);
         e.addNodalForces(r);
-        const Eigen::Matrix<double, 3, 6>& A = Link2dKinematics("C", {{-1, -1, -1, 0, 1, 2}, kH, 90.0}).matrix();
+        const Link2dKinematics kinematics("C", {{-1, -1, -1, 0, 1, 2}, kH, 90.0});
+        const Eigen::Matrix<double, 3, 6>& A = kinematics.matrix();
         const Eigen::Vector3d expected = A.rightCols(3).transpose() * Eigen::Vector3d(
             e.basicForces()[0], e.basicForces()[1], e.basicForces()[2]);
         QVERIFY((r - expected).cwiseAbs().maxCoeff() <= 1e-12 * expected.cwiseAbs().maxCoeff());
