@@ -15,7 +15,9 @@ namespace hsmu::ukfkernels {
 // the clone would call the baseline loops): its plain loops then work on four doubles at a
 // time. The results are the same bit for bit: AVX2 brings no fused multiply-add, and
 // vectorizing element-wise loops (not reductions, which stay in order) changes no rounding.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// Not under ThreadSanitizer: the loader runs the clones' resolver before TSan's runtime is up,
+// and the instrumented resolver crashes every program at start (scripts/test-tsan.sh).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_THREAD__)
 #define HSMU_KERNEL_CLONES __attribute__((target_clones("avx2", "default"), flatten))
 #else
 #define HSMU_KERNEL_CLONES
