@@ -40,6 +40,10 @@ const char* messageTypeName(MessageType type) {
         return "telemetry";
     case MessageType::RthsEnd:
         return "rths-end";
+    case MessageType::Targets:
+        return "targets";
+    case MessageType::Measurements:
+        return "measurements";
     }
     return "unknown";
 }
@@ -78,14 +82,15 @@ const char* errorCodeName(ErrorCode code) {
 
 bool isKnownMessageType(std::uint16_t type) {
     return type >= static_cast<std::uint16_t>(MessageType::Hello) &&
-           type <= static_cast<std::uint16_t>(MessageType::RthsEnd);
+           type <= static_cast<std::uint16_t>(MessageType::Measurements);
 }
 
 MessageType messageTypeOf(const Message& m) {
-    // The variant's alternatives are in the order of the MessageType values 1..17.
-    static_assert(std::variant_size_v<Message> == 17);
+    // The variant's alternatives are in the order of the MessageType values 1..19.
+    static_assert(std::variant_size_v<Message> == 19);
     static_assert(std::is_same_v<std::variant_alternative_t<12, Message>, ByeMsg>);
     static_assert(std::is_same_v<std::variant_alternative_t<16, Message>, RthsEndMsg>);
+    static_assert(std::is_same_v<std::variant_alternative_t<18, Message>, MeasurementsMsg>);
     return static_cast<MessageType>(m.index() + 1);
 }
 
