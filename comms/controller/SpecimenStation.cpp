@@ -85,7 +85,13 @@ HelloAckMsg SpecimenStation::status() const {
     a.holdReason = m_holdReason;
     if (m_rig) {
         a.channelCommands = m_rig->committedCommands();
-        a.lastCommittedTarget = a.channelCommands.front();
+        // The deformation a one-channel view shows (the console's pre-flight): the first
+        // displacement-controlled channel's stroke, not a held force.
+        for (std::size_t i = 0; i < a.channelCommands.size(); ++i)
+            if (m_spec.link2d->actuators[i].channel.mode == ActuatorMode::Displacement) {
+                a.lastCommittedTarget = a.channelCommands[i];
+                break;
+            }
         a.description = "specimen '" + m_spec.name + "' on hsmu-controller (" +
                         std::to_string(m_rig->channels()) + " actuator channels: " +
                         m_rig->lab().description() + "), " + std::to_string(m_committed) +

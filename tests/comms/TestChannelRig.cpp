@@ -52,6 +52,7 @@ private slots:
         QCOMPARE(again.channels[1].force, mm.channels[1].force);
         QVERIFY(std::holds_alternative<AckMsg>(st.commit(CommitMsg{1})));
         QCOMPARE(st.status().channelCommands, (std::vector<double>{-500.0, 0.001}));
+        QCOMPARE(st.status().lastCommittedTarget, 0.001); // the lateral stroke, not the force
         QVERIFY(std::holds_alternative<AckMsg>(st.commit(CommitMsg{1}))); // repeated commit
         QCOMPARE(st.committedSteps(), std::uint64_t(1));
         // The committed step re-sent with other targets: a state mismatch.
