@@ -6,7 +6,8 @@
 // axial load held) to 1e-9 of the peak. A dropped link, a channel's limit tripped at the
 // controller and an emergency hold each leave every actuator holding (the hello-ack's
 // per-channel committed commands are the test's last committed ones) and the record keeps
-// every step exactly once; a controller killed mid-run leaves the test held.
+// every step exactly once; a lost commit acknowledgement is settled without a hold; a
+// controller killed mid-run leaves the test held.
 #include "comms/link/ControlFactory.h"
 
 #include "ControllerProcess.h"
@@ -173,6 +174,26 @@ private slots:
         QVERIFY2(seen && seen->committedSteps == 149 && seen->channelCommands.size() == 2,
                  "the controller kept the specimen at step 149");
         QCOMPARE(seen->channelCommands[0], -500.0);
+        QVERIFY2(run.state == HybridTest::State::Finished, run.error.c_str());
+        QVERIFY(everyStepOnce(run));
+        const Run numerical = runTest(parseConfig(numericalTwin(preset(5.0)), "twin.json"), {});
+        const double diff = relativeDifference(numerical, run);
+        QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
+    }
+
+    void lostCommitIsSettledWithoutAHold() {
+        // The commit of step 200 reaches the controller, its acknowledgement is lost: commit()
+        // reconnects and the controller's step count settles it (TcpControl's one path).
+        // Real-time pace: the N-channel steps are still evaluated when their targets arrive.
+        ControllerProcess ctl(
+            {"--config", QString::fromStdString(m_config), "--pace", "realtime", "--quiet"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        LoopbackProxy proxy(ctl.port());
+        proxy.cutAfter(MessageType::Commit, 200);
+        const Run run = runTest(loadConfigFile(m_config),
+                                makeControlFactory(local(proxy.port()), patient()));
+        QCOMPARE(proxy.cuts(), 1);
+        QCOMPARE(run.holds, 0);
         QVERIFY2(run.state == HybridTest::State::Finished, run.error.c_str());
         QVERIFY(everyStepOnce(run));
         const Run numerical = runTest(parseConfig(numericalTwin(preset(5.0)), "twin.json"), {});
