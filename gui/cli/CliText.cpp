@@ -18,11 +18,37 @@ std::string translate(const char* context, const char* source) {
     return g_translator ? g_translator(context, source) : std::string(source);
 }
 
+namespace {
+
+/// Whether x lies exactly half-way between two values of `precision` decimals ('f') or
+/// significant digits ('g'): its exact decimal expansion (a double's terminates) is a 5 then
+/// zeros at the first dropped digit.
+bool tie(double x, char format, int precision) {
+    char buffer[1024];
+    const int extra = 30;
+    if (format == 'f')
+        std::snprintf(buffer, sizeof buffer, "%.*f", precision + extra, x);
+    else
+        std::snprintf(buffer, sizeof buffer, "%.*e", std::max(precision, 1) - 1 + extra, x);
+    std::string digits = buffer;
+    if (format != 'f')
+        digits = digits.substr(0, digits.find('e'));
+    const std::string dropped = digits.substr(digits.size() - std::size_t(extra));
+    return dropped.front() == '5' && dropped.find_first_not_of('0', 1) == std::string::npos;
+}
+
+} // namespace
+
 std::string number(double x, char format, int precision) {
     if (std::isnan(x))
         return "nan";
     if (std::isinf(x))
         return x < 0 ? "-inf" : "inf";
+    if (x == 0.0)
+        x = 0.0; // Qt prints -0.0 as "0"
+    // Qt rounds a tie away from zero, printf to even: the next double outward rounds as Qt.
+    if (tie(x, format, precision))
+        x = std::nextafter(x, x > 0 ? HUGE_VAL : -HUGE_VAL);
     char buffer[512];
     std::snprintf(buffer, sizeof buffer, format == 'f' ? "%.*f" : "%.*g", precision, x);
     return buffer;

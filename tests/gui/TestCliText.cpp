@@ -19,6 +19,9 @@ private slots:
     void numbersAsQString() {
         std::vector<double> values{0.0, -0.0, 1.0, -1.0, 0.5, 1e-5, 1.5e-7, 123456.0, 1234567.0,
                                    99999.95, 0.000123449, 31.16, 2.675, 1e300, -4.2e-310,
+                                   // ties of the last printed digit: Qt rounds them away from 0
+                                   0.5, 1.5, 2.5, -0.5, -2.5, 0.125, 0.375, -0.625, 12345.5,
+                                   1.25, 0.0625, 100.5, 1e-3 * 0.5, -0.3, -0.004, 0.005,
                                    std::numeric_limits<double>::quiet_NaN(),
                                    -std::numeric_limits<double>::quiet_NaN(),
                                    std::numeric_limits<double>::infinity(),
