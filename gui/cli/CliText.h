@@ -19,7 +19,8 @@ using Translator = std::string (*)(const char* context, const char* source);
 
 /// Install t (nullptr: English sources).
 void setTranslator(Translator t);
-/// source in the user's language (see above). Both arguments are string literals.
+/// source in the user's language (see above). Call it with string literals, as
+/// translate("RunReport", "..."): lupdate reads such calls as QCoreApplication::translate.
 std::string translate(const char* context, const char* source);
 
 /// QString::number(x, format, precision): format 'g' (significant digits) or 'f' (decimals).

@@ -128,8 +128,8 @@ bool FastRun::englishOnly() {
 std::optional<RunRequest> FastRun::request(int argc, char** argv) {
     if (argc < 2 || std::strcmp(argv[1], "run") != 0 || std::getenv("HSMU_CONTROLLER_TOKEN"))
         return std::nullopt;
-    static const char* const kValued[] = {"out", "scale", "dt", "duration", "record-dt",
-                                          "csv", "compress", "reconnect"};
+    static const char* const kValued[] = {"out",       "scale", "dt",       "duration",
+                                          "record-dt", "csv",   "compress", "reconnect"};
     std::map<std::string, std::string> values;
     bool allowUnstable = false;
     std::string config;
@@ -213,13 +213,11 @@ int FastRun::guarded(const std::function<int()>& body) {
     return 1;
 }
 
-std::pair<std::string, int> FastRun::execSibling(const char* name, char** argv,
-                                                 const char* argv0) {
+std::pair<std::string, int> FastRun::execSibling(const char* name, char** argv, const char* argv0) {
     std::error_code ec;
     const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
     const std::string path =
-        ((ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path()) / name)
-            .string();
+        ((ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path()) / name).string();
     std::string first = argv0 ? argv0 : argv[0];
     if (argv0)
         argv[0] = first.data();
@@ -232,8 +230,10 @@ int FastRun::main(int argc, char** argv) {
         if (auto r = request(argc, argv))
             return RunFlow::exec(*r);
         const auto [path, error] = execSibling("hsmu-cli", argv, nullptr);
-        std::fprintf(stderr, "hsmu: cannot start %s: %s (the subcommands other than a plain "
-                     "`hsmu run FILE` run in it)\n", path.c_str(), std::strerror(error));
+        std::fprintf(stderr,
+                     "hsmu: cannot start %s: %s (the subcommands other than a plain "
+                     "`hsmu run FILE` run in it)\n",
+                     path.c_str(), std::strerror(error));
         return 1;
     });
 }

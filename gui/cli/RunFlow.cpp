@@ -18,10 +18,6 @@ namespace hsmu::gui {
 
 namespace {
 
-std::string tr(const char* source) {
-    return translate("RunCommand", source);
-}
-
 /// One line on stderr (unbuffered: in order with whatever the front end printed).
 void errLine(const std::string& line) {
     std::fputs((line + '\n').c_str(), stderr);
@@ -42,8 +38,9 @@ public:
         if (percent < m_next && row.step < m_test.totalSteps())
             return;
         const double seconds = std::max(
-            1e-9, std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count());
-        errLine(Text(tr("%1 %  t = %2 s  %3 steps/s"))
+            1e-9,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count());
+        errLine(Text(translate("RunCommand", "%1 %  t = %2 s  %3 steps/s"))
                     .arg(percent, 3)
                     .arg(number(row.time, 'f', 2))
                     .arg(number(row.step / seconds, 'f', 0)));
@@ -88,7 +85,9 @@ int RunFlow::exec(const RunRequest& r) {
             r.configure(cfg);
         if (!r.approval.empty()) {
             if (!cfg.updating.enabled)
-                errLine(tr("hsmu run: --approval ignored: the configuration has no updating"));
+                errLine(
+                    translate("RunCommand",
+                              "hsmu run: --approval ignored: the configuration has no updating"));
             cfg.updating.approval = r.approval;
         }
         comms::TcpControlOptions link; // the session's timeouts (LinkTimeouts), the token
@@ -98,7 +97,8 @@ int RunFlow::exec(const RunRequest& r) {
         return fail(e.what());
     }
     if (!makePath(r.outDir))
-        return fail(Text(tr("%1: cannot create the output directory")).arg(r.outDir));
+        return fail(
+            Text(translate("RunCommand", "%1: cannot create the output directory")).arg(r.outDir));
     HeadlessOptions headless;
     headless.outDir = r.outDir;
     headless.csv = r.csv;
@@ -114,33 +114,38 @@ int RunFlow::exec(const RunRequest& r) {
         return fail(e.what());
     }
     if (const std::size_t columns = headlessRun->csvSkippedColumns())
-        errLine(Text(tr("hsmu run: steps.csv not written (%1 columns); record.h5 holds every "
-                        "column (hsmu export writes CSV from it)"))
-                    .arg(columns));
+        errLine(
+            Text(translate("RunCommand",
+                           "hsmu run: steps.csv not written (%1 columns); record.h5 holds every "
+                           "column (hsmu export writes CSV from it)"))
+                .arg(columns));
     TestSession& session = headlessRun->session();
     HybridTest* const run = &session.test();
     if (r.observe)
         r.observe(session);
     session.onReconnect = [run](const TestSession::Reconnect& c) {
-        errLine(Text(tr("hsmu run: link fault at t = %1 s (step %2): %3; reconnecting in %4 s "
-                        "(attempt %5 of %6)"))
-                    .arg(num(run->time(), 6))
-                    .arg(run->currentStep())
-                    .arg(c.reason)
-                    .arg(num(c.delay, 3))
-                    .arg(c.attempt)
-                    .arg(c.of));
+        errLine(
+            Text(translate("RunCommand",
+                           "hsmu run: link fault at t = %1 s (step %2): %3; reconnecting in %4 s "
+                           "(attempt %5 of %6)"))
+                .arg(num(run->time(), 6))
+                .arg(run->currentStep())
+                .arg(c.reason)
+                .arg(num(c.delay, 3))
+                .arg(c.attempt)
+                .arg(c.of));
     };
 
     if (r.controller.kind != comms::LinkAddress::Kind::Builtin)
-        errLine(Text(tr("hsmu run: connecting to %1 (%2 protocol, %3)"))
+        errLine(Text(translate("RunCommand", "hsmu run: connecting to %1 (%2 protocol, %3)"))
                     .args({r.controller.toString(), comms::linkProtocol(r.controller, cfg.link),
                            r.controller.security()}));
     // SIGINT / SIGTERM from here on hold every site out of band (even mid-step); the
     // session never resumes an operator hold.
     SignalHold signalHold(*run);
     if (!headlessRun->prepare())
-        return fail(Text(tr("the test cannot start: %1")).arg(headlessRun->lastError()));
+        return fail(Text(translate("RunCommand", "the test cannot start: %1"))
+                        .arg(headlessRun->lastError()));
 
     Progress progress(*run);
     session.addObserver(&progress);
@@ -150,25 +155,25 @@ int RunFlow::exec(const RunRequest& r) {
     int code = result == TestSession::Status::Finished ? 0 : 1;
     if (result == TestSession::Status::Held) {
         code = 2;
-        errLine(Text(tr("hsmu run: test held at t = %1 s (step %2): %3"))
+        errLine(Text(translate("RunCommand", "hsmu run: test held at t = %1 s (step %2): %3"))
                     .arg(num(run->time(), 6))
                     .arg(run->currentStep())
                     .arg(holdReason(*run).value_or("held")));
     } else if (code != 0) {
-        errLine(Text(tr("hsmu run: the test stopped unexpectedly (state %1)"))
+        errLine(Text(translate("RunCommand", "hsmu run: the test stopped unexpectedly (state %1)"))
                     .arg(testStateName(run->state())));
     }
     const HeadlessRun::Failures failed = headlessRun->finish();
     if (!failed.record.empty())
         code = fail(failed.record);
     if (!failed.stepsCsv.empty())
-        code = fail(Text(tr("%1: write failed")).arg(failed.stepsCsv));
+        code = fail(Text(translate("RunCommand", "%1: write failed")).arg(failed.stepsCsv));
     if (!failed.summary.empty())
         code = fail(failed.summary);
     if (r.afterRun && r.afterRun(headlessRun->layout(), cfg) != 0)
         code = 1;
-    const std::string report = RunReport::text(*run, headlessRun->statistics(),
-                                               headlessRun->info(), printedDir(r.outDir));
+    const std::string report =
+        RunReport::text(*run, headlessRun->statistics(), headlessRun->info(), printedDir(r.outDir));
     std::fputs(report.c_str(), stdout);
     std::fflush(stdout);
     return code;

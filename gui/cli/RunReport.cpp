@@ -1,8 +1,8 @@
 #include "gui/cli/RunReport.h"
 
+#include "core/experiment/HybridTest.h"
 #include "core/output/RunStatistics.h"
 #include "core/output/RunSummary.h"
-#include "core/experiment/HybridTest.h"
 #include "core/rths/TrackingMetrics.h"
 #include "gui/cli/CliText.h"
 #include "gui/plots/PlotSelection.h"
@@ -17,10 +17,6 @@ namespace {
 
 constexpr int kMaxListed = 20; // DOFs / elements listed before "... N more"
 
-std::string tr(const char* source) {
-    return translate("RunReport", source);
-}
-
 std::string num(double x, int digits = 4) {
     return number(x, 'g', digits);
 }
@@ -32,7 +28,7 @@ void printUpdating(std::ostream& out, const HybridTest& test, const RunLayout& l
         return;
     const UpdatingInfo& info = *layout.updating;
     const UpdatingSample& u = last.updating;
-    out << Text(tr("  identified parameters of %1 (%2, final value ± std):"))
+    out << Text(translate("RunReport", "  identified parameters of %1 (%2, final value ± std):"))
                .args({info.specimen, info.method})
                .str()
         << '\n';
@@ -47,7 +43,8 @@ void printUpdating(std::ostream& out, const HybridTest& test, const RunLayout& l
         name.resize(std::max(width, name.size()), ' '); // QString::leftJustified
         out << "    " << name << " = " << num(value, 5) << " ± " << num(sd, 2) << '\n';
     }
-    out << Text(tr("  updates applied: %1, proposals pending: %2, final fit error: %3"))
+    out << Text(translate("RunReport",
+                          "  updates applied: %1, proposals pending: %2, final fit error: %3"))
                .arg(u.appliedUpdates)
                .arg(u.pendingProposals)
                .arg(num(u.fitError, 3))
@@ -57,12 +54,13 @@ void printUpdating(std::ostream& out, const HybridTest& test, const RunLayout& l
 
 } // namespace
 
-std::string RunReport::text(const HybridTest& test, const RunStatistics& stats,
-                            const RunInfo& info, const std::string& outDir) {
+std::string RunReport::text(const HybridTest& test, const RunStatistics& stats, const RunInfo& info,
+                            const std::string& outDir) {
     std::ostringstream out;
     const RunLayout& layout = stats.layout();
-    out << Text(tr("Test: %1")).arg(info.configName).str() << '\n';
-    out << Text(tr("  state: %1, steps: %2 of %3, test time: %4 s, wall time: %5 s"))
+    out << Text(translate("RunReport", "Test: %1")).arg(info.configName).str() << '\n';
+    out << Text(translate("RunReport",
+                          "  state: %1, steps: %2 of %3, test time: %4 s, wall time: %5 s"))
                .arg(testStateName(test.state()))
                .arg(test.currentStep())
                .arg(test.totalSteps())
@@ -72,18 +70,20 @@ std::string RunReport::text(const HybridTest& test, const RunStatistics& stats,
     // A large model lists a spread few (docs/cli.md); summary.json has every one.
     const auto more = [&out](std::size_t shown, std::size_t all) {
         if (shown < all)
-            out << "    " << Text(tr("... %1 more in summary.json")).arg(all - shown).str()
+            out << "    "
+                << Text(translate("RunReport", "... %1 more in summary.json"))
+                       .arg(all - shown)
+                       .str()
                 << '\n';
     };
-    out << tr("  peak displacement:") << '\n';
+    out << translate("RunReport", "  peak displacement:") << '\n';
     const std::vector<int> dofs = spreadIndices(int(layout.dofNames.size()), kMaxListed);
     for (const int d : dofs) {
         const auto i = std::size_t(d);
-        out << "    " << layout.dofNames[i] << ": " << num(stats.peakDisplacement()[i])
-            << " m\n";
+        out << "    " << layout.dofNames[i] << ": " << num(stats.peakDisplacement()[i]) << " m\n";
     }
     more(dofs.size(), layout.dofNames.size());
-    out << tr("  peak force:") << '\n';
+    out << translate("RunReport", "  peak force:") << '\n';
     const std::vector<int> elements = spreadIndices(int(layout.elements.size()), kMaxListed);
     for (const int e : elements) {
         const auto i = std::size_t(e);
@@ -96,22 +96,24 @@ std::string RunReport::text(const HybridTest& test, const RunStatistics& stats,
         if (!tracked)
             continue;
         const rths::TrackingReport& t = *tracked;
-        out << Text(tr("  tracking of %1 (commanded against measured): J1 %2 ms, J2 %3 %, J3 "
-                       "%4 %"))
+        out << Text(
+                   translate("RunReport",
+                             "  tracking of %1 (commanded against measured): J1 %2 ms, J2 %3 %, J3 "
+                             "%4 %"))
                    .args({layout.elements[i].name, num(t.j1, 3), num(t.j2, 3), num(t.j3, 3)})
                    .str()
             << '\n';
     }
     printUpdating(out, test, layout, stats.last());
     if (test.alarms().empty())
-        out << tr("  alarms: none") << '\n';
+        out << translate("RunReport", "  alarms: none") << '\n';
     else
-        out << tr("  alarms:") << '\n';
+        out << translate("RunReport", "  alarms:") << '\n';
     for (const Alarm& a : test.alarms())
         out << "    t = " << num(a.time, 6) << " s (step " << a.step << ") "
-            << alarmSeverityName(a.severity) << ", " << alarmKindName(a.kind) << ": "
-            << a.message << '\n';
-    out << Text(tr("  outputs: %1")).arg(outDir).str() << '\n';
+            << alarmSeverityName(a.severity) << ", " << alarmKindName(a.kind) << ": " << a.message
+            << '\n';
+    out << Text(translate("RunReport", "  outputs: %1")).arg(outDir).str() << '\n';
     return out.str();
 }
 

@@ -10,22 +10,21 @@
 #include <limits>
 #include <random>
 
-using hsmu::gui::Text;
 using hsmu::gui::number;
+using hsmu::gui::Text;
 
 class TestCliText : public QObject {
     Q_OBJECT
 private slots:
     void numbersAsQString() {
-        std::vector<double> values{0.0, -0.0, 1.0, -1.0, 0.5, 1e-5, 1.5e-7, 123456.0, 1234567.0,
-                                   99999.95, 0.000123449, 31.16, 2.675, 1e300, -4.2e-310,
-                                   // ties of the last printed digit: Qt rounds them away from 0
-                                   0.5, 1.5, 2.5, -0.5, -2.5, 0.125, 0.375, -0.625, 12345.5,
-                                   1.25, 0.0625, 100.5, 1e-3 * 0.5, -0.3, -0.004, 0.005,
-                                   std::numeric_limits<double>::quiet_NaN(),
-                                   -std::numeric_limits<double>::quiet_NaN(),
-                                   std::numeric_limits<double>::infinity(),
-                                   -std::numeric_limits<double>::infinity()};
+        std::vector<double> values{
+            0.0, -0.0, 1.0, -1.0, 0.5, 1e-5, 1.5e-7, 123456.0, 1234567.0, 99999.95, 0.000123449,
+            31.16, 2.675, 1e300, -4.2e-310,
+            // ties of the last printed digit: Qt rounds them away from 0
+            0.5, 1.5, 2.5, -0.5, -2.5, 0.125, 0.375, -0.625, 12345.5, 1.25, 0.0625, 100.5,
+            1e-3 * 0.5, -0.3, -0.004, 0.005, std::numeric_limits<double>::quiet_NaN(),
+            -std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+            -std::numeric_limits<double>::infinity()};
         std::mt19937_64 rng(27);
         std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
         std::uniform_int_distribution<int> exponent(-12, 12);
@@ -61,7 +60,8 @@ private slots:
     }
 
     void translatorApplies() {
-        QCOMPARE(hsmu::gui::translate("RunReport", "  alarms: none"), std::string("  alarms: none"));
+        QCOMPARE(hsmu::gui::translate("RunReport", "  alarms: none"),
+                 std::string("  alarms: none"));
         hsmu::gui::setTranslator([](const char*, const char* s) { return std::string("<") + s; });
         QCOMPARE(hsmu::gui::translate("RunReport", "x"), std::string("<x"));
         hsmu::gui::setTranslator(nullptr);

@@ -38,7 +38,8 @@ QByteArray bytes(const QString& path) {
 QString withoutTimes(QString s) {
     s.replace(QRegularExpression(QStringLiteral("wall time: [0-9.e+-]+ s")),
               QStringLiteral("wall time: * s"));
-    s.replace(QRegularExpression(QStringLiteral("  [0-9]+ steps/s")), QStringLiteral("  * steps/s"));
+    s.replace(QRegularExpression(QStringLiteral("  [0-9]+ steps/s")),
+              QStringLiteral("  * steps/s"));
     return s;
 }
 
@@ -49,20 +50,21 @@ class TestFastRun : public QObject {
 private slots:
     void plainRunLoadsNoQt() {
         QTemporaryDir dir;
-        const auto r = clitest::hsmu({QStringLiteral("run"), kConfig, QStringLiteral("--out"),
-                                      dir.filePath(QStringLiteral("out")),
-                                      QStringLiteral("--duration"), QStringLiteral("2")},
-                                     120000, {{QStringLiteral("LD_DEBUG"), QStringLiteral("files")}});
+        const auto r =
+            clitest::hsmu({QStringLiteral("run"), kConfig, QStringLiteral("--out"),
+                           dir.filePath(QStringLiteral("out")), QStringLiteral("--duration"),
+                           QStringLiteral("2")},
+                          120000, {{QStringLiteral("LD_DEBUG"), QStringLiteral("files")}});
         QVERIFY2(r.exitCode == 0, qPrintable(clitest::report(r)));
         QVERIFY2(r.err.contains(QStringLiteral("file=libstdc++")), "LD_DEBUG listed no library");
         QVERIFY2(!r.err.contains(QStringLiteral("libQt6")), qPrintable(r.err.left(4000)));
         QVERIFY(r.out.contains(QStringLiteral("state: finished, steps: 2000 of 2000")));
         // what it hands on does load Qt Core: the check above can fail
-        const auto preset = clitest::hsmu(
-            {QStringLiteral("run"), QStringLiteral("paper-condition-3"), QStringLiteral("--out"),
-             dir.filePath(QStringLiteral("preset")), QStringLiteral("--duration"),
-             QStringLiteral("0.2")},
-            120000, {{QStringLiteral("LD_DEBUG"), QStringLiteral("files")}});
+        const auto preset =
+            clitest::hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
+                           QStringLiteral("--out"), dir.filePath(QStringLiteral("preset")),
+                           QStringLiteral("--duration"), QStringLiteral("0.2")},
+                          120000, {{QStringLiteral("LD_DEBUG"), QStringLiteral("files")}});
         QVERIFY2(preset.exitCode == 0, qPrintable(clitest::report(preset)));
         QVERIFY(preset.err.contains(QStringLiteral("file=libQt6Core")));
     }
@@ -74,10 +76,10 @@ private slots:
                                  QStringLiteral("all")};
         const QString fast = dir.filePath(QStringLiteral("fast/"));
         const QString qt = dir.filePath(QStringLiteral("qt/"));
-        const auto a = clitest::hsmu(QStringList{QStringLiteral("run"), kConfig,
-                                                 QStringLiteral("--out"), fast} + common);
-        const auto b = hsmuCli(QStringList{QStringLiteral("run"), kConfig,
-                                           QStringLiteral("--out"), qt} + common);
+        const auto a = clitest::hsmu(
+            QStringList{QStringLiteral("run"), kConfig, QStringLiteral("--out"), fast} + common);
+        const auto b = hsmuCli(
+            QStringList{QStringLiteral("run"), kConfig, QStringLiteral("--out"), qt} + common);
         QVERIFY2(a.exitCode == 0, qPrintable(clitest::report(a)));
         QVERIFY2(b.exitCode == 0, qPrintable(clitest::report(b)));
         QCOMPARE(withoutTimes(a.out).replace(fast.chopped(1), QStringLiteral("DIR")),
@@ -104,11 +106,12 @@ private slots:
         QVERIFY(settings.open(QIODevice::WriteOnly));
         settings.write("[General]\nlanguage=es\n");
         settings.close();
-        const QStringList args{QStringLiteral("run"), kConfig, QStringLiteral("--out"),
-                               dir.filePath(QStringLiteral("out")), QStringLiteral("--duration"),
-                               QStringLiteral("0.1")};
+        const QStringList args{QStringLiteral("run"),        kConfig,
+                               QStringLiteral("--out"),      dir.filePath(QStringLiteral("out")),
+                               QStringLiteral("--duration"), QStringLiteral("0.1")};
         const auto bySettings = clitest::hsmu(
-            args, 120000, {{QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config"))}});
+            args, 120000,
+            {{QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config"))}});
         QVERIFY2(bySettings.exitCode == 0, qPrintable(clitest::report(bySettings)));
         QVERIFY2(bySettings.out.contains(QStringLiteral("  desplazamiento máximo:")),
                  qPrintable(bySettings.out));
