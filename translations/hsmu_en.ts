@@ -3295,6 +3295,46 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>The RTHS run could not be followed: %1</source>
         <translation>The RTHS run could not be followed: %1</translation>
     </message>
+    <message>
+        <source>Record folder:</source>
+        <translation>Record folder:</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>not recorded</translation>
+    </message>
+    <message>
+        <source>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</source>
+        <translation>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console: %1</source>
+        <translation>Recorded on the controller, not by the console: %1</translation>
+    </message>
+    <message>
+        <source>Not recorded (no record folder)</source>
+        <translation>Not recorded (no record folder)</translation>
+    </message>
+    <message>
+        <source>Recording every tick to %1</source>
+        <translation>Recording every tick to %1</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</source>
+        <translation>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</translation>
+    </message>
+    <message>
+        <source>The record %1 is incomplete: %2</source>
+        <translation>The record %1 is incomplete: %2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 ticks to %2</source>
+        <translation>Recorded %1 ticks to %2</translation>
+    </message>
+    <message>
+        <source>No estimate: the command&apos;s RMS %1 mm is below %2 mm</source>
+        <translation>No estimate: the command&apos;s RMS %1 mm is below %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3313,6 +3353,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
         <translation>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</translation>
+    </message>
+    <message>
+        <source>the record cannot be created in %1: %2</source>
+        <translation>the record cannot be created in %1: %2</translation>
     </message>
 </context>
 <context>

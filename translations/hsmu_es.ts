@@ -3295,6 +3295,46 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>The RTHS run could not be followed: %1</source>
         <translation>No se pudo seguir el ensayo RTHS: %1</translation>
     </message>
+    <message>
+        <source>Record folder:</source>
+        <translation>Carpeta del registro:</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>sin registro</translation>
+    </message>
+    <message>
+        <source>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</source>
+        <translation>Cada tic de un ensayo iniciado desde esta vista se escribe en record.h5 en esta carpeta (record-2.h5, record-3.h5, ... si ya existe: nada se sobrescribe); vacía: sin registro</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console: %1</source>
+        <translation>Lo registra el controlador, no la consola: %1</translation>
+    </message>
+    <message>
+        <source>Not recorded (no record folder)</source>
+        <translation>Sin registro (no hay carpeta del registro)</translation>
+    </message>
+    <message>
+        <source>Recording every tick to %1</source>
+        <translation>Registrando cada tic en %1</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</source>
+        <translation>Lo registra el controlador, no la consola (esperando la descripción del controlador)</translation>
+    </message>
+    <message>
+        <source>The record %1 is incomplete: %2</source>
+        <translation>El registro %1 está incompleto: %2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 ticks to %2</source>
+        <translation>%1 tics registrados en %2</translation>
+    </message>
+    <message>
+        <source>No estimate: the command&apos;s RMS %1 mm is below %2 mm</source>
+        <translation>Sin estimación: el RMS de la consigna, %1 mm, está por debajo de %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3313,6 +3353,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
         <translation>se perdió el enlace con el controlador: %1 (el controlador detiene el lazo según su política --monitor-loss)</translation>
+    </message>
+    <message>
+        <source>the record cannot be created in %1: %2</source>
+        <translation>no se puede crear el registro en %1: %2</translation>
     </message>
 </context>
 <context>

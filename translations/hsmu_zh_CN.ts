@@ -3292,6 +3292,46 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>The RTHS run could not be followed: %1</source>
         <translation>无法跟踪该 RTHS 试验：%1</translation>
     </message>
+    <message>
+        <source>Record folder:</source>
+        <translation>记录文件夹：</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>不记录</translation>
+    </message>
+    <message>
+        <source>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</source>
+        <translation>从此视图启动的试验的每个节拍写入此文件夹中的 record.h5（已存在时写入 record-2.h5、record-3.h5……：不覆盖任何文件）；留空：不记录</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console: %1</source>
+        <translation>由控制器记录，而非控制台：%1</translation>
+    </message>
+    <message>
+        <source>Not recorded (no record folder)</source>
+        <translation>不记录（未指定记录文件夹）</translation>
+    </message>
+    <message>
+        <source>Recording every tick to %1</source>
+        <translation>正在将每个节拍记录到 %1</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</source>
+        <translation>由控制器记录，而非控制台（正在等待控制器的描述）</translation>
+    </message>
+    <message>
+        <source>The record %1 is incomplete: %2</source>
+        <translation>记录 %1 不完整：%2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 ticks to %2</source>
+        <translation>已将 %1 个节拍记录到 %2</translation>
+    </message>
+    <message>
+        <source>No estimate: the command&apos;s RMS %1 mm is below %2 mm</source>
+        <translation>无估计：指令的均方根 %1 mm 低于 %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3310,6 +3350,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
         <translation>与控制器的链路已断开：%1（控制器按其 --monitor-loss 策略保持回路）</translation>
+    </message>
+    <message>
+        <source>the record cannot be created in %1: %2</source>
+        <translation>无法在 %1 中创建记录：%2</translation>
     </message>
 </context>
 <context>

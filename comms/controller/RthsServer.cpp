@@ -17,7 +17,6 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -67,7 +66,9 @@ struct RthsServer::Impl final : SessionHost {
     std::string describe() const {
         std::ostringstream o;
         o << "RTHS loop '" << job.name << "', " << job.settings.rate << " Hz, "
-          << job.groundMotion.duration() << " s record";
+          << job.groundMotion.duration() << " s record, "
+          << (opt.recordDirectory.empty() ? std::string("no record on the controller")
+                                          : "recording each run in " + opt.recordDirectory);
         return o.str();
     }
 
@@ -216,23 +217,9 @@ struct RthsServer::Impl final : SessionHost {
     /// The first free DIR/record.h5, DIR/record-2.h5, ... (an earlier run's record is never
     /// overwritten), opened for this run; false with the reason.
     bool openRecord(double h, std::string& error) {
-        namespace fs = std::filesystem;
-        std::error_code ec;
-        fs::create_directories(opt.recordDirectory, ec);
-        if (ec) {
-            error = "cannot create the record folder " + opt.recordDirectory + ": " + ec.message();
-            return false;
-        }
-        for (int n = 1;; ++n) {
-            const fs::path p = fs::path(opt.recordDirectory) /
-                               (n == 1 ? std::string("record.h5") : "record-" + std::to_string(n) + ".h5");
-            if (!fs::exists(p, ec)) {
-                recordPath = p.string();
-                break;
-            }
-        }
         const auto floors = int(job.partition.reference.m.rows());
         try {
+            recordPath = rths::firstFreeRecordPath(opt.recordDirectory);
             record = std::make_unique<RecordWriter>(recordPath, rths::rthsLayout(floors),
                                                     RecordStart{job.configuration, job.name, {}, h});
         } catch (const std::exception& e) {
