@@ -2668,8 +2668,12 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>%1 +- %2%3 (95 %)</translation>
     </message>
     <message>
-        <source>Offsets #%1 for the twins, found at t = %2 s (step %3) on %4 samples: deformation offset u0 = %5, force offset F0 = %6; the specimen&apos;s NRMSE %7 without them, %8 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
-        <translation>Offsets #%1 for the twins, found at t = %2 s (step %3) on %4 samples: deformation offset u0 = %5, force offset F0 = %6; the specimen&apos;s NRMSE %7 without them, %8 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</translation>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>Offsets #%1 for the twins: u0 = %2, F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</translation>
     </message>
 </context>
 <context>

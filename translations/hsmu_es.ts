@@ -2668,8 +2668,12 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>%1 +- %2%3 (95 %)</translation>
     </message>
     <message>
-        <source>Offsets #%1 for the twins, found at t = %2 s (step %3) on %4 samples: deformation offset u0 = %5, force offset F0 = %6; the specimen&apos;s NRMSE %7 without them, %8 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
-        <translation>Desplazamientos de cero #%1 para los gemelos, hallados en t = %2 s (paso %3) sobre %4 muestras: desplazamiento de cero de la deformación u0 = %5, desplazamiento de cero de la fuerza F0 = %6; NRMSE del espécimen %7 sin ellos, %8 con ellos. Llegan a los gemelos (F = F_ley(u - u0) + F0) solo si usted los aprueba, sea cual sea la política.</translation>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>Desplazamientos de cero #%1 para los gemelos: u0 = %2, F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>Hallados en t = %1 s (paso %2) sobre %3 muestras; NRMSE del espécimen %4 sin ellos, %5 con ellos. Llegan a los gemelos (F = F_ley(u - u0) + F0) solo si usted los aprueba, sea cual sea la política.</translation>
     </message>
 </context>
 <context>

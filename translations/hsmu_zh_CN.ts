@@ -2665,8 +2665,12 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>%1 +- %2%3（95 %）</translation>
     </message>
     <message>
-        <source>Offsets #%1 for the twins, found at t = %2 s (step %3) on %4 samples: deformation offset u0 = %5, force offset F0 = %6; the specimen&apos;s NRMSE %7 without them, %8 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
-        <translation>为孪生模型找到的偏移 #%1，于 t = %2 s（第 %3 步）基于 %4 个样本：变形偏移 u0 = %5，力偏移 F0 = %6；试件的 NRMSE 不含偏移为 %7，含偏移为 %8。无论采用何种策略，只有经您批准后才会应用到孪生模型（F = F_law(u - u0) + F0）。</translation>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>孪生模型的偏移 #%1：u0 = %2，F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>于 t = %1 s（第 %2 步）基于 %3 个样本得到；试件的 NRMSE 不含偏移为 %4，含偏移为 %5。无论采用何种策略，只有经您批准后才会应用到孪生模型（F = F_law(u - u0) + F0）。</translation>
     </message>
 </context>
 <context>

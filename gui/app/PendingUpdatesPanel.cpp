@@ -157,17 +157,20 @@ QString PendingUpdatesPanel::describeOffsets(const OffsetProposal& p,
         return tr("%1 +- %2%3 (95 %)")
             .arg(QString::number(v, 'g', 4), QString::number(1.96 * sd, 'g', 2), u);
     };
-    return tr("Offsets #%1 for the twins, found at t = %2 s (step %3) on %4 samples: deformation "
-              "offset u0 = %5, force offset F0 = %6; the specimen's NRMSE %7 without them, %8 "
-              "with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve "
-              "them, whatever the policy.")
+    return tr("Offsets #%1 for the twins: u0 = %2, F0 = %3")
         .arg(p.id)
+        .arg(value(p.deformationOffset, p.deformationSd, deformationUnit),
+             value(p.forceOffset, p.forceSd, forceUnit));
+}
+
+QString PendingUpdatesPanel::offsetsDetail(const OffsetProposal& p) {
+    return tr("Found at t = %1 s (step %2) on %3 samples; the specimen's NRMSE %4 without them, "
+              "%5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve "
+              "them, whatever the policy.")
         .arg(QString::number(p.time, 'f', 2))
         .arg(p.step)
         .arg(qulonglong(p.samples))
-        .arg(value(p.deformationOffset, p.deformationSd, deformationUnit),
-             value(p.forceOffset, p.forceSd, forceUnit),
-             QString::number(p.nrmseWithout, 'g', 3), QString::number(p.nrmseWith, 'g', 3));
+        .arg(QString::number(p.nrmseWithout, 'g', 3), QString::number(p.nrmseWith, 'g', 3));
 }
 
 void PendingUpdatesPanel::showOffsets() {
@@ -177,6 +180,9 @@ void PendingUpdatesPanel::showOffsets() {
     m_offsetsText->setText(p ? describeOffsets(*p, QString::fromStdString(m_snapshot.deformationUnit),
                                                QString::fromStdString(m_snapshot.forceUnit))
                              : QString());
+    const QString detail = p ? offsetsDetail(*p) : QString();
+    for (QWidget* w : {static_cast<QWidget*>(m_offsetsText), static_cast<QWidget*>(m_approveOffsets)})
+        w->setToolTip(detail);
 }
 
 void PendingUpdatesPanel::changeEvent(QEvent* event) {

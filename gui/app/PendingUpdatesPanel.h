@@ -57,6 +57,8 @@ public:
     /// The text of pending offsets p in the specimen's units (values, 95 % intervals).
     static QString describeOffsets(const OffsetProposal& p, const QString& deformationUnit,
                                    const QString& forceUnit);
+    /// Where they were found, both fits' NRMSE and the rule (the item's tool tip).
+    static QString offsetsDetail(const OffsetProposal& p);
 
     static QString describe(ReporterPolicy policy);
 
