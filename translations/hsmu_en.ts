@@ -52,6 +52,10 @@
         <translation>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</translation>
     </message>
     <message>
+        <source>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</source>
+        <translation>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</translation>
+    </message>
+    <message>
         <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
         <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</translation>
     </message>
@@ -919,6 +923,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>update %1 rejected by the operator (%2)</source>
         <translation>update %1 rejected by the operator (%2)</translation>
+    </message>
+    <message>
+        <source>offsets %1 approved by the operator for %2: %3</source>
+        <translation>offsets %1 approved by the operator for %2: %3</translation>
+    </message>
+    <message>
+        <source>offsets %1 rejected by the operator (%2)</source>
+        <translation>offsets %1 rejected by the operator (%2)</translation>
     </message>
     <message>
         <source>bounds changed: %1 -&gt; %2</source>
@@ -2639,6 +2651,30 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>: stale (older than %1 s), wait for the next proposal</source>
         <translation>: stale (older than %1 s), wait for the next proposal</translation>
     </message>
+    <message>
+        <source>Approve offsets</source>
+        <translation>Approve offsets</translation>
+    </message>
+    <message>
+        <source>Reject offsets</source>
+        <translation>Reject offsets</translation>
+    </message>
+    <message>
+        <source>%1%2 (on its bound, no interval)</source>
+        <translation>%1%2 (on its bound, no interval)</translation>
+    </message>
+    <message>
+        <source>%1 +- %2%3 (95 %)</source>
+        <translation>%1 +- %2%3 (95 %)</translation>
+    </message>
+    <message>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>Offsets #%1 for the twins: u0 = %2, F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PlotElementPicker</name>
@@ -3784,6 +3820,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>update #%1 is no longer pending</source>
         <translation>update #%1 is no longer pending</translation>
+    </message>
+    <message>
+        <source>offsets #%1 are no longer pending</source>
+        <translation>offsets #%1 are no longer pending</translation>
+    </message>
+    <message>
+        <source>offsets #%1 were not applied: %2</source>
+        <translation>offsets #%1 were not applied: %2</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>

@@ -52,6 +52,10 @@
         <translation>actualización no aplicada: la cola de aprobación está llena (%1 propuestas pendientes); esta y las siguientes ofertas quedan en el registro hasta que el operador decida</translation>
     </message>
     <message>
+        <source>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</source>
+        <translation>desplazamientos de cero propuestos para los gemelos: u0 = %1, F0 = %2 (solo se aplican si el operador los aprueba)</translation>
+    </message>
+    <message>
         <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
         <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) dentro del límite %5</translation>
     </message>
@@ -919,6 +923,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>update %1 rejected by the operator (%2)</source>
         <translation>actualización %1 rechazada por el operador (%2)</translation>
+    </message>
+    <message>
+        <source>offsets %1 approved by the operator for %2: %3</source>
+        <translation>desplazamientos de cero %1 aprobados por el operador para %2: %3</translation>
+    </message>
+    <message>
+        <source>offsets %1 rejected by the operator (%2)</source>
+        <translation>desplazamientos de cero %1 rechazados por el operador (%2)</translation>
     </message>
     <message>
         <source>bounds changed: %1 -&gt; %2</source>
@@ -2639,6 +2651,30 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>: stale (older than %1 s), wait for the next proposal</source>
         <translation>: caducada (más de %1 s), espere la siguiente propuesta</translation>
     </message>
+    <message>
+        <source>Approve offsets</source>
+        <translation>Aprobar desplazamientos de cero</translation>
+    </message>
+    <message>
+        <source>Reject offsets</source>
+        <translation>Rechazar desplazamientos de cero</translation>
+    </message>
+    <message>
+        <source>%1%2 (on its bound, no interval)</source>
+        <translation>%1%2 (en su límite, sin intervalo)</translation>
+    </message>
+    <message>
+        <source>%1 +- %2%3 (95 %)</source>
+        <translation>%1 +- %2%3 (95 %)</translation>
+    </message>
+    <message>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>Desplazamientos de cero #%1 para los gemelos: u0 = %2, F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>Hallados en t = %1 s (paso %2) sobre %3 muestras; NRMSE del espécimen %4 sin ellos, %5 con ellos. Llegan a los gemelos (F = F_ley(u - u0) + F0) solo si usted los aprueba, sea cual sea la política.</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PlotElementPicker</name>
@@ -3784,6 +3820,14 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>update #%1 is no longer pending</source>
         <translation>la actualización #%1 ya no está pendiente</translation>
+    </message>
+    <message>
+        <source>offsets #%1 are no longer pending</source>
+        <translation>los desplazamientos de cero #%1 ya no están pendientes</translation>
+    </message>
+    <message>
+        <source>offsets #%1 were not applied: %2</source>
+        <translation>los desplazamientos de cero #%1 no se aplicaron: %2</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>

@@ -52,6 +52,10 @@
         <translation>更新未应用：审批队列已满（%1 个提议待定）；此后的提议在操作员决定前都会记录</translation>
     </message>
     <message>
+        <source>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</source>
+        <translation>为孪生模型提议的偏移：u0 = %1，F0 = %2（仅在操作员批准后才应用）</translation>
+    </message>
+    <message>
         <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
         <translation>%1：omega_max dt = %2（omega_max = %3 rad/s，dt = %4 s）在极限 %5 之内</translation>
     </message>
@@ -919,6 +923,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>update %1 rejected by the operator (%2)</source>
         <translation>操作员拒绝了更新 %1（%2）</translation>
+    </message>
+    <message>
+        <source>offsets %1 approved by the operator for %2: %3</source>
+        <translation>操作员为 %2 批准了偏移 %1：%3</translation>
+    </message>
+    <message>
+        <source>offsets %1 rejected by the operator (%2)</source>
+        <translation>操作员拒绝了偏移 %1（%2）</translation>
     </message>
     <message>
         <source>bounds changed: %1 -&gt; %2</source>
@@ -2636,6 +2648,30 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>: stale (older than %1 s), wait for the next proposal</source>
         <translation>：已过期（超过 %1 s），请等待下一个建议</translation>
     </message>
+    <message>
+        <source>Approve offsets</source>
+        <translation>批准偏移</translation>
+    </message>
+    <message>
+        <source>Reject offsets</source>
+        <translation>拒绝偏移</translation>
+    </message>
+    <message>
+        <source>%1%2 (on its bound, no interval)</source>
+        <translation>%1%2（位于边界，无区间）</translation>
+    </message>
+    <message>
+        <source>%1 +- %2%3 (95 %)</source>
+        <translation>%1 +- %2%3（95 %）</translation>
+    </message>
+    <message>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>孪生模型的偏移 #%1：u0 = %2，F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>于 t = %1 s（第 %2 步）基于 %3 个样本得到；试件的 NRMSE 不含偏移为 %4，含偏移为 %5。无论采用何种策略，只有经您批准后才会应用到孪生模型（F = F_law(u - u0) + F0）。</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PlotElementPicker</name>
@@ -3781,6 +3817,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>update #%1 is no longer pending</source>
         <translation>更新 #%1 已不再待处理</translation>
+    </message>
+    <message>
+        <source>offsets #%1 are no longer pending</source>
+        <translation>偏移 #%1 已不再待定</translation>
+    </message>
+    <message>
+        <source>offsets #%1 were not applied: %2</source>
+        <translation>偏移 #%1 未应用：%2</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>

@@ -89,6 +89,24 @@ void HybridTest::revisitUpdatedModel()
 
 bool HybridTest::rejectUpdate(int proposalId) { return m_updater && m_updater->reject(proposalId); }
 
+bool HybridTest::approveOffsets(int id, std::string* error)
+{
+    if (!m_updater) {
+        if (error)
+            *error = "no online model updating in this test";
+        return false;
+    }
+    if (!m_updater->approveOffsets(id, *m_structure, error))
+        return false;
+    revisitUpdatedModel();
+    return true;
+}
+
+bool HybridTest::rejectOffsets(int id)
+{
+    return m_updater && m_updater->rejectOffsets(id).has_value();
+}
+
 void HybridTest::addObserver(StepObserver* observer) { m_observers.push_back(observer); }
 
 void HybridTest::removeObserver(StepObserver* observer)
