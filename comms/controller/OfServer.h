@@ -33,7 +33,8 @@
 //            another client is waiting to connect: then a session with no frame for
 //            idleTimeout (controller.idleTimeout) is closed (logged) and the next is served.
 //   faults   an interlock trip, a non-finite value, an unknown code or a peer that closes
-//            mid-frame: logged, the connection is closed, the stations keep their state.
+//            mid-frame: logged, the connection is closed, every station holds at its
+//            committed state (as after any session that does not end by 99; see below).
 // Real-time pace runs a step's ticks at the loop rate when its trial arrives.
 // N actuator channels (a link2d specimen, ChannelRig; OfServerChannels.cpp): the specimen is
 // served alone and its channels are the client's DOFs, in configuration order, with
@@ -101,6 +102,7 @@ public:
     std::string describe() const;
 
 private:
+    static constexpr double kWriteTimeout = 10.0; ///< [s] for a reply
     void serve(of::OfSocket& socket);
     bool acceptHeader(of::OfSocket& socket, std::string& why);
     /// Answer a refused client's requests with NaN until it ends (see the header).

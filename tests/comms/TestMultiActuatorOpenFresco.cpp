@@ -7,13 +7,17 @@
 // a dropped link each leave every actuator holding at its committed command (the controller's
 // log, checked against the console's record or against frames built here from the documented
 // layout), and the record keeps every step exactly once. Sizes that cannot carry the
-// force-controlled channel are refused on both sides with the fix named.
+// force-controlled channel are refused on both sides with the fix named. The real OpenSees /
+// OpenFresco kit (../shared/tools/opensees; skipped where absent) drives the two actuators of
+// hsmu-controller's GenericTCP server through `expControl GenericTCP -ctrlModes 1 0 0 1 0` and
+// `expSetup NoTransformation -dir 1 2`, i.e. with OpenFresco's own sizes for the setup.
 #include "comms/link/ControlFactory.h"
 #include "comms/openfresco/SimAppControl.h"
 
 #include "ControllerProcess.h"
 #include "MultiActuatorFixture.h"
 #include "OfRawPeer.h"
+#include "OpenSeesRunner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -29,6 +33,37 @@ namespace {
 LinkAddress address(LinkAddress::Kind kind, quint16 port) {
     return LinkAddress{kind, "127.0.0.1", port};
 }
+
+// OpenSees + OpenFresco: a twoNodeLink on 2 DOFs behind `expSetup NoTransformation -dir 1 2`
+// and `expControl GenericTCP` with disp + force control and daq (OpenFresco's sizes for two
+// actuators: ctrl disp 2, ctrl force 2, daq disp 2, daq force 2); dir 2 (the lateral actuator)
+// pushed 1 mm per step, dir 1 (the force-controlled vertical actuator) free and unloaded:
+// OpenFresco sends the element's trial forces (0) in the ctrl force entries.
+const char* const kKitScript = R"(model BasicBuilder -ndm 2 -ndf 2
+loadPackage OpenFrescoTcl
+node 1 0.0 0.0
+node 2 0.0 0.0
+fix 1 1 1
+expControl GenericTCP 1 127.0.0.1 PORT -ctrlModes 1 0 0 1 0 -daqModes 1 0 0 1 0
+expSetup NoTransformation 1 -control 1 -dir 1 2 -sizeTrialOut 2 2
+expSite LocalSite 1 1
+expElement twoNodeLink 1 1 2 -dir 1 2 -site 1 -initStif 200000.0 0.0 0.0 1000.0
+timeSeries Linear 1
+pattern Plain 1 1 { sp 2 2 0.001 }
+recorder Element -precision 16 -file force.out -time -ele 1 basicForce
+recorder Element -precision 16 -file daqDisp.out -time -ele 1 daqDisp
+constraints Transformation
+numberer Plain
+system FullGeneral
+test NormDispIncr 1e-12 10
+algorithm Newton
+integrator LoadControl 1.0
+analysis Static
+analyze 4
+wipeExp
+wipe
+exit
+)";
 
 QString number(double x) {
     char v[40];
@@ -180,6 +215,38 @@ private slots:
                                 "force entries, so ctrl force must be 2") != std::string::npos,
                  pr.reason.c_str());
         QVERIFY(!c.linkUp());
+    }
+
+    void openFrescoKitDrivesBothActuatorsOverGenericTcp() {
+        if (!opensees::available())
+            QSKIP(qPrintable(opensees::reason()));
+        // The lateral actuator elastic (k 1000 kN/m): every force is known in closed form.
+        nlohmann::json j = preset(5.0);
+        j["structure"]["elements"][0]["actuators"][1]["material"] = {{"law", "elastic"},
+                                                                     {"k", 1000.0}};
+        const std::string path = writeConfig(m_dir.path(), "kit.json", j);
+        ControllerProcess ctl({"--config", QString::fromStdString(path), "--protocol",
+                               "generictcp", "--pace", "fast"});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const QString script = QString(kKitScript).replace("PORT", QString::number(ctl.port()));
+        // ECGenericTCP::setup waits for two <Enter> on stdin.
+        const auto r = opensees::run(m_dir.path(), "kit.tcl", script, 60000, "\n\n");
+        QVERIFY2(r.finished, qPrintable(r.output));
+        QVERIFY2(ctl.waitForLog("sizes ctrl [disp 2, vel 0, accel 0, force 2, time 0], daq [disp "
+                                "2, vel 0, accel 0, force 2, time 0]"),
+                 qPrintable(ctl.log()));
+        QVERIFY2(ctl.waitForLog("terminated by the client (99)"), qPrintable(ctl.log()));
+        const auto force = opensees::table(m_dir.path() + "/force.out");
+        const auto disp = opensees::table(m_dir.path() + "/daqDisp.out");
+        QCOMPARE(force.size(), std::size_t(4));
+        QCOMPARE(disp.size(), std::size_t(4));
+        for (std::size_t i = 0; i < 4; ++i) {
+            const double d = 0.001 * static_cast<double>(i + 1); // [m] the lateral stroke
+            QVERIFY2(force[i].size() == 3 && disp[i].size() == 3, qPrintable(r.output));
+            QVERIFY(std::abs(disp[i][2] - d) <= 1e-12);          // measured lateral stroke
+            QVERIFY(std::abs(force[i][2] - 1000.0 * d) <= 1e-9); // k d [kN]
+            QVERIFY(std::abs(force[i][1]) <= 1e-9);              // the vertical force held: 0
+        }
     }
 
     void linkWithOtherSpecimensOrServerDofsIsRefusedAtStart() {
