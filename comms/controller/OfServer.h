@@ -133,7 +133,7 @@ private:
     std::atomic<bool> m_stop{false};
     of::OfSizes m_sizes;
     std::vector<MeasurementMsg> m_measured;
-    MeasurementsMsg m_measuredN; ///< N channels: the last trial's measurements
+    MeasurementsMsg m_measuredN;     ///< N channels: the last trial's measurements
     std::vector<double> m_commanded; ///< per station: the last trial's deformation
     std::vector<double> m_ctrl;      ///< per DOF: the last trial's ctrl disp
     bool m_haveTrial = false;        ///< a measured trial not yet committed

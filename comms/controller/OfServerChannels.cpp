@@ -23,8 +23,8 @@ std::optional<std::string> OfServer::channelSizesProblem(const OfSizes& s) const
     const ChannelRig& rig = *channelRig();
     const int n = rig.channels();
     const std::string N = std::to_string(n);
-    const std::string who = "specimen '" + m_stations[0]->name() + "' has " + N +
-                            " actuator channels, ";
+    const std::string who =
+        "specimen '" + m_stations[0]->name() + "' has " + N + " actuator channels, ";
     if (s.ctrlSize(Resp::Disp) != n)
         return who + "so ctrl disp must be " + N + " (one stroke per actuator, as OpenFresco's " +
                "setup of " + N + " actuators), not " + std::to_string(s.ctrlSize(Resp::Disp));
@@ -37,7 +37,8 @@ std::optional<std::string> OfServer::channelSizesProblem(const OfSizes& s) const
     if (!forced.empty() && f != n)
         return who + "of which channel(s) " + forced +
                " are force-controlled: their commands travel in the ctrl force entries, so "
-               "ctrl force must be " + N + ", not " + std::to_string(f);
+               "ctrl force must be " +
+               N + ", not " + std::to_string(f);
     if (f != 0 && f != n)
         return who + "so ctrl force must be 0 or " + N + ", not " + std::to_string(f);
     return std::nullopt;

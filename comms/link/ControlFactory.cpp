@@ -75,7 +75,8 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
         return [address, given = o,
                 protocol](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
             of::OfControlOptions o = given;
-            if (spec.link2d) { // OpenFresco's sizes for a setup of N actuators (OpenFrescoControl.h)
+            // OpenFresco's sizes for a setup of N actuators (OpenFrescoControl.h).
+            if (spec.link2d) {
                 const int n = static_cast<int>(spec.link2d->actuators.size());
                 bool force = false;
                 for (const ActuatorSpec& a : spec.link2d->actuators) {

@@ -28,7 +28,8 @@ std::optional<std::string> OpenFrescoControl::channelProblem() const {
         if (m_opt.channelModes[i] == ActuatorMode::Force && s.ctrlSize(Resp::Force) != n)
             return "channel " + std::to_string(i + 1) +
                    " is force-controlled: its command travels in the ctrl force entries, so "
-                   "ctrl force must be " + N + sizes;
+                   "ctrl force must be " +
+                   N + sizes;
     return std::nullopt;
 }
 

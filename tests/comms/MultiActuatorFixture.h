@@ -30,8 +30,8 @@ inline nlohmann::json numericalTwin(nlohmann::json doc) {
     const double axial = col["actuators"][0]["force"];
     for (const char* k : {"experimental", "setup", "actuators"})
         col.erase(k);
-    col["basic"] = nlohmann::json::array({{{"heldForce", axial}}, {{"material", shear}},
-                                          nlohmann::json::object()});
+    col["basic"] = nlohmann::json::array(
+        {{{"heldForce", axial}}, {{"material", shear}}, nlohmann::json::object()});
     return doc;
 }
 
@@ -45,7 +45,8 @@ inline double relativeDifference(const Run& a, const Run& b) {
         peakU = std::max(peakU, a.records[i].u.cwiseAbs().maxCoeff());
         du = std::max(du, (a.records[i].u - b.records[i].u).cwiseAbs().maxCoeff());
         peakF = std::max(peakF, std::abs(a.records[i].elements[0].force));
-        dF = std::max(dF, std::abs(a.records[i].elements[0].force - b.records[i].elements[0].force));
+        dF =
+            std::max(dF, std::abs(a.records[i].elements[0].force - b.records[i].elements[0].force));
     }
     return std::max(du / peakU, dF / peakF);
 }

@@ -86,8 +86,8 @@ class TestMultiActuatorOpenFresco : public QObject {
     std::string m_config;
 
     ControllerProcess* controller(const char* protocol, bool quiet = true) {
-        QStringList args{"--config", QString::fromStdString(m_config), "--protocol", protocol,
-                         "--pace", "fast"};
+        QStringList args{
+            "--config", QString::fromStdString(m_config), "--protocol", protocol, "--pace", "fast"};
         if (quiet)
             args << "--quiet";
         return new ControllerProcess(args);
@@ -109,11 +109,11 @@ private slots:
         QFETCH(QString, protocol);
         std::unique_ptr<ControllerProcess> ctl(controller(qPrintable(protocol), false));
         QVERIFY2(ctl->start(), qPrintable(ctl->log()));
-        const auto kind = protocol == "simapp" ? LinkAddress::Kind::SimApp
-                                               : LinkAddress::Kind::GenericTcp;
+        const auto kind =
+            protocol == "simapp" ? LinkAddress::Kind::SimApp : LinkAddress::Kind::GenericTcp;
         const TestConfig cfg = loadConfigFile(m_config);
-        const Run linked = runTest(cfg, makeControlFactory(address(kind, ctl->port()),
-                                                           patientOptions()));
+        const Run linked =
+            runTest(cfg, makeControlFactory(address(kind, ctl->port()), patientOptions()));
         QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
         QCOMPARE(linked.records.size(), std::size_t(501));
         QVERIFY(everyStepOnce(linked));
@@ -127,7 +127,8 @@ private slots:
         const double vsLab = maxDifference(inProcess, linked);
         const double vsNumerical = relativeDifference(numerical, linked);
         qInfo("over %s: max |diff| to the in-process lab %.3g, relative to the numerical frame "
-              "%.3g", qPrintable(protocol), vsLab, vsNumerical);
+              "%.3g",
+              qPrintable(protocol), vsLab, vsNumerical);
         QVERIFY2(vsLab <= 1e-9, qPrintable(QString::number(vsLab)));
         QVERIFY2(vsNumerical <= 1e-9, qPrintable(QString::number(vsNumerical)));
     }
@@ -136,9 +137,9 @@ private slots:
         std::unique_ptr<ControllerProcess> ctl(controller("simapp", false));
         QVERIFY2(ctl->start(), qPrintable(ctl->log()));
         const TestConfig cfg = loadConfigFile(m_config);
-        auto test = buildHybridTest(
-            cfg, makeControlFactory(address(LinkAddress::Kind::SimApp, ctl->port()),
-                                    patientOptions()));
+        auto test =
+            buildHybridTest(cfg, makeControlFactory(address(LinkAddress::Kind::SimApp, ctl->port()),
+                                                    patientOptions()));
         Recorder rec;
         test->addObserver(&rec);
         QVERIFY(test->prepare());
@@ -175,8 +176,8 @@ private slots:
         QVERIFY(p.send(frame({6}, 256)));
         const auto r1 = p.receive(256);
         QVERIFY2(r1, p.error.c_str());
-        QCOMPARE((*r1)[1], 0.002);            // the lateral stroke, as commanded (ideal)
-        QCOMPARE((*r1)[2], -500.0);           // the vertical force, as commanded
+        QCOMPARE((*r1)[1], 0.002);  // the lateral stroke, as commanded (ideal)
+        QCOMPARE((*r1)[2], -500.0); // the vertical force, as commanded
         QVERIFY(std::abs((*r1)[0] + 500.0 / 200000.0) < 1e-14); // elastic k 200000 kN/m
         QVERIFY(p.send(frame({5}, 256)));
         // Step 2 measured, never committed: then the link drops.
@@ -225,8 +226,8 @@ private slots:
         j["structure"]["elements"][0]["actuators"][1]["material"] = {{"law", "elastic"},
                                                                      {"k", 1000.0}};
         const std::string path = writeConfig(m_dir.path(), "kit.json", j);
-        ControllerProcess ctl({"--config", QString::fromStdString(path), "--protocol",
-                               "generictcp", "--pace", "fast"});
+        ControllerProcess ctl({"--config", QString::fromStdString(path), "--protocol", "generictcp",
+                               "--pace", "fast"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const QString script = QString(kKitScript).replace("PORT", QString::number(ctl.port()));
         // ECGenericTCP::setup waits for two <Enter> on stdin.
@@ -253,8 +254,8 @@ private slots:
         nlohmann::json j = preset(5.0);
         j["controller"]["serverDofs"] = nlohmann::json::array({{{"specimen", "Column L"}}});
         const std::string path = writeConfig(m_dir.path(), "dofs.json", j);
-        ControllerProcess ctl({"--config", QString::fromStdString(path), "--protocol", "simapp",
-                               "--pace", "fast"});
+        ControllerProcess ctl(
+            {"--config", QString::fromStdString(path), "--protocol", "simapp", "--pace", "fast"});
         QVERIFY(!ctl.start(0, 20000));
         QVERIFY2(ctl.log().contains("is served over --protocol simapp alone") &&
                      ctl.log().contains("remove controller.serverDofs"),
