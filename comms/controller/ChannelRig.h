@@ -33,6 +33,10 @@ public:
     explicit ChannelRig(const ElementSpec& spec);
 
     int channels() const { return static_cast<int>(m_spec.size()); }
+    /// Channel i's configuration (name, mode, limits), 0 <= i < channels().
+    const ActuatorChannelSpec& channel(int i) const {
+        return m_spec.at(static_cast<std::size_t>(i));
+    }
     void prepare(double dt);
     /// The last committed command of each channel (0 before the first step).
     std::vector<double> committedCommands() const;

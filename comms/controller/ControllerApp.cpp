@@ -113,17 +113,13 @@ bool ControllerApp::start(std::string& error) {
         const auto pace =
             m_cmd.fast ? SpecimenStation::Pace::Fast : SpecimenStation::Pace::RealTime;
         const auto& rawElements = cfg.raw.at("structure").at("elements");
+        std::string linkOverOpenFresco; // a link2d specimen served over an OpenFresco protocol
         for (std::size_t i = 0; i < cfg.elements.size(); ++i) {
             const ElementSpec& e = cfg.elements[i];
             if (!e.experimental)
                 continue;
-            if (e.link2d && protocol != "native" && !protocol.empty()) {
-                error = m_cmd.config + ": element '" + e.name +
-                        "': a link2d specimen (several actuator channels) is served over the "
-                        "native protocol only so far, not --protocol " + protocol +
-                        " (docs/setups.md, \"hsmu-controller\")";
-                return false;
-            }
+            if (e.link2d && protocol != "native" && !protocol.empty())
+                linkOverOpenFresco = e.name;
             const int index = static_cast<int>(stations.size());
             // A specimen of several channels keeps no journal (SpecimenStation.h).
             stations.push_back(std::make_unique<SpecimenStation>(
@@ -136,6 +132,21 @@ bool ControllerApp::start(std::string& error) {
         }
         if (stations.empty()) {
             error = m_cmd.config + ": no experimental element (\"experimental\": true) to emulate";
+            return false;
+        }
+        // An OpenFresco server gives a link2d specimen's channels to its client as its DOFs
+        // (OfServer.h): that specimen alone, without controller.serverDofs.
+        const bool serverDofs = cfg.raw.contains("controller") &&
+                                cfg.raw.at("controller").is_object() &&
+                                cfg.raw.at("controller").contains("serverDofs");
+        if (!linkOverOpenFresco.empty() && (stations.size() > 1 || serverDofs)) {
+            error = m_cmd.config + ": element '" + linkOverOpenFresco +
+                    "': a link2d specimen (several actuator channels) is served over --protocol " +
+                    protocol + " alone, its channels the client's DOFs: " +
+                    (serverDofs ? std::string("remove controller.serverDofs")
+                                : "serve the other experimental elements by another "
+                                  "hsmu-controller, or use the native protocol") +
+                    " (docs/setups.md, \"hsmu-controller\")";
             return false;
         }
         std::vector<std::string> names;
