@@ -47,6 +47,8 @@ enum class MessageType : std::uint16_t {
     EmergencyHold = 15, ///< monitor -> controller: hold the loop before its next tick, at once
     Telemetry = 16,     ///< controller -> monitor: one decimated tick of the running loop
     RthsEnd = 17,       ///< controller -> monitor: the run's end and its summary (J1..J9, ...)
+    RthsUpdate = 18,        ///< monitor -> controller: new parameters for the damper's twin
+    RthsUpdateApplied = 19, ///< controller -> monitor: a twin update decided at a tick
 };
 
 /// Error frame codes. "Closes" means the sender closes the connection after the frame.
@@ -64,6 +66,7 @@ enum class ErrorCode : std::uint16_t {
     StateMismatch = 11,     ///< a re-sent target differs from the one already committed
     Timeout = 12,           ///< no hello, or silence past the idle timeout (closes)
     Internal = 13,          ///< anything else (e.g. the state file cannot be written)
+    UpdateRefused = 14,     ///< an rths-update refused (unknown name, not finite, out of the box)
 };
 
 /// Measurement flags (bit field).
