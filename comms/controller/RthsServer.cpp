@@ -160,7 +160,7 @@ struct RthsServer::Impl final : SessionHost {
 
     /// rths-update: checked now (refused: nothing applied), applied before the next tick.
     std::optional<Message> update(const RthsUpdateMsg& m) {
-        if (!running || !posted)
+        if (!running || !posted || finished.load(std::memory_order_acquire))
             return ErrorMsg{ErrorCode::UpdateRefused, "rths-update refused: no run in progress; nothing applied"};
         rths::TwinUpdate u{m.names, m.values, "operator", 0};
         if (const std::string why = rths::checkTwinUpdate(job.settings.damper, u); !why.empty()) {
@@ -357,6 +357,13 @@ struct RthsServer::Impl final : SessionHost {
 
     void endRun() {
         loop.join();
+        if (posted) // asked for while the last tick ran: the run ended first
+            for (const rths::TwinUpdate& u : posted->takeAll()) {
+                UpdateEvent e{int(result.time.size()), 0.0, "damper twin", ParameterLayout(u.names), u.values, false,
+                              u.source + ": the run ended before its next tick; nothing applied"};
+                e.decision = UpdateDecision::Refused;
+                outbox.onUpdate(0, e);
+            }
         if (identification) {
             if (!identification->failure().empty())
                 log(identification->failure());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 namespace hsmu::rths {
@@ -133,6 +134,15 @@ bool PostedTwinUpdates::next(long, TwinUpdate& out)
     out = std::move(m_posted.front());
     m_posted.pop_front();
     return true;
+}
+
+std::vector<TwinUpdate> PostedTwinUpdates::takeAll()
+{
+    std::lock_guard lock(m_mutex);
+    std::vector<TwinUpdate> out(std::make_move_iterator(m_posted.begin()),
+                                std::make_move_iterator(m_posted.end()));
+    m_posted.clear();
+    return out;
 }
 
 std::string describeTwinUpdate(const UpdateEvent& e)

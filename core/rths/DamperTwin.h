@@ -95,6 +95,8 @@ public:
     explicit PostedTwinUpdates(bool blocking) : m_blocking(blocking) {}
     void post(TwinUpdate u);
     bool next(long k, TwinUpdate& out) override;
+    /// What was posted and never applied (the run ended first).
+    std::vector<TwinUpdate> takeAll();
 
 private:
     bool m_blocking;

@@ -169,7 +169,7 @@ private slots:
         QVERIFY(u.applied);
         QCOMPARE(u.message, std::string("operator"));
         QVERIFY(u.tick > 0 && u.tick < 4097);
-        QVERIFY(ctl.log().contains(QStringLiteral("damper twin updated before tick %1").arg(u.tick)));
+        QVERIFY2(ctl.waitForLog(QStringLiteral("damper twin updated before tick %1").arg(u.tick)), qPrintable(ctl.log()));
         // The local run with the same update before the same tick: the same ticks, bit for bit.
         rths::ScheduledTwinUpdates same({{u.names, u.values, "replay", long(u.tick)}});
         const rths::RthsRun local = localRun(cfg, &same);
