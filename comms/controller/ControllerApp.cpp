@@ -118,19 +118,21 @@ bool ControllerApp::start(std::string& error) {
             const ElementSpec& e = cfg.elements[i];
             if (!e.experimental)
                 continue;
-            if (e.link2d) {
+            if (e.link2d && protocol != "native" && !protocol.empty()) {
                 error = m_cmd.config + ": element '" + e.name +
-                        "': a link2d specimen (several actuator channels through a setup) is "
-                        "not served by hsmu-controller yet; run it on the built-in virtual lab "
-                        "(docs/setups.md, \"Multi-DOF elements\")";
+                        "': a link2d specimen (several actuator channels) is served over the "
+                        "native protocol only so far, not --protocol " + protocol +
+                        " (docs/setups.md, \"hsmu-controller\")";
                 return false;
             }
             const int index = static_cast<int>(stations.size());
-            stations.push_back(
-                std::make_unique<SpecimenStation>(index, e, settings, pace, m_journal.get()));
+            // A specimen of several channels keeps no journal (SpecimenStation.h).
+            stations.push_back(std::make_unique<SpecimenStation>(
+                index, e, settings, pace, e.link2d ? nullptr : m_journal.get()));
+            const auto& raw = rawElements.at(i);
             identities.push_back(
-                {e.name, StateJournal::fingerprint(e.name + "\n" +
-                                                   rawElements.at(i).at("specimen").dump())});
+                {e.name, StateJournal::fingerprint(
+                             e.name + "\n" + (e.link2d ? raw : raw.at("specimen")).dump())});
             m_names += (m_names.empty() ? "" : ", ") + e.name;
         }
         if (stations.empty()) {

@@ -90,7 +90,12 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
     if (address.kind == LinkAddress::Kind::Tls) // no tls block: connecting says what is missing
         o.tls = link.tls.value_or(TlsSpec{});
     return [address, o](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
-        return std::make_unique<TcpControl>(address.host, address.port, spec.name, spec.limits, o);
+        TcpControlOptions mine = o;
+        if (spec.link2d) // N actuator channels: each one's mode; the limits are per channel
+            for (const ActuatorSpec& a : spec.link2d->actuators)
+                mine.channelModes.push_back(a.channel.mode);
+        return std::make_unique<TcpControl>(address.host, address.port, spec.name, spec.limits,
+                                            mine);
     };
 }
 

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 #include <variant>
+#include <vector>
 
 namespace hsmu::comms {
 
@@ -35,6 +36,10 @@ struct HelloAckMsg { // payload: u16 u64 f64 u8 str str str
     std::string element;     ///< the specimen's name
     std::string description; ///< controller and specimen, for logs
     std::string holdReason;  ///< when holding
+    /// A specimen of N >= 2 actuator channels (optional tail: u16 N, N x f64): the last
+    /// committed command of each channel; empty for a one-channel specimen (no tail, so the
+    /// frame is byte for byte what a one-channel console has always read).
+    std::vector<double> channelCommands;
 };
 
 struct ConfigureMsg { // payload: f64 x 4
@@ -128,6 +133,31 @@ struct RthsEndMsg {                      // payload: u64 f64 x 9 u64 f64 u64 u64
     std::string hold;                    ///< why the run stopped early; "" when it ran out
 };
 
+// N actuator channels of one specimen (docs/protocol.md, "Several actuator channels"): the
+// stroke of a displacement-controlled channel in [m], the force of a force-controlled one [kN].
+
+struct ChannelTarget {
+    std::uint8_t mode = kChannelDisplacement; ///< kChannelDisplacement | kChannelForce
+    double command = 0.0;                     ///< stroke [m] or force [kN]
+};
+
+struct TargetsMsg { // payload: u64 u16 N x (u8 f64); 2 <= N <= kMaxChannels
+    std::uint64_t step = 0;
+    std::vector<ChannelTarget> channels;
+};
+
+struct ChannelMeasurement {
+    double stroke = 0.0;  ///< measured [m]
+    double force = 0.0;   ///< measured [kN]
+    double command = 0.0; ///< the channel's command when the step was measured
+};
+
+struct MeasurementsMsg { // payload: u64 u32 u16 N x (f64 f64 f64); 2 <= N <= kMaxChannels
+    std::uint64_t step = 0;
+    std::uint32_t flags = 0; ///< kFlagReplayed
+    std::vector<ChannelMeasurement> channels;
+};
+
 /// Most parameters one update names (an mrDamper twin has 12).
 inline constexpr std::size_t kMaxUpdateParameters = 32;
 
@@ -147,7 +177,8 @@ struct RthsUpdateAppliedMsg {      // payload: u64 u8 str u16 count x (str f64)
 using Message =
     std::variant<HelloMsg, HelloAckMsg, ConfigureMsg, TargetMsg, MeasurementMsg, CommitMsg, AckMsg,
                  HoldMsg, ResumeMsg, ResetMsg, HeartbeatMsg, ErrorMsg, ByeMsg, RthsStartMsg,
-                 EmergencyHoldMsg, TelemetryMsg, RthsEndMsg, RthsUpdateMsg, RthsUpdateAppliedMsg>;
+                 EmergencyHoldMsg, TelemetryMsg, RthsEndMsg, TargetsMsg, MeasurementsMsg,
+                 RthsUpdateMsg, RthsUpdateAppliedMsg>;
 
 /// The header type of a message.
 MessageType messageTypeOf(const Message& m);

@@ -40,6 +40,10 @@ const char* messageTypeName(MessageType type) {
         return "telemetry";
     case MessageType::RthsEnd:
         return "rths-end";
+    case MessageType::Targets:
+        return "targets";
+    case MessageType::Measurements:
+        return "measurements";
     case MessageType::RthsUpdate:
         return "rths-update";
     case MessageType::RthsUpdateApplied:
@@ -88,11 +92,12 @@ bool isKnownMessageType(std::uint16_t type) {
 }
 
 MessageType messageTypeOf(const Message& m) {
-    // The variant's alternatives are in the order of the MessageType values 1..19.
-    static_assert(std::variant_size_v<Message> == 19);
+    // The variant's alternatives are in the order of the MessageType values 1..21.
+    static_assert(std::variant_size_v<Message> == 21);
     static_assert(std::is_same_v<std::variant_alternative_t<12, Message>, ByeMsg>);
     static_assert(std::is_same_v<std::variant_alternative_t<16, Message>, RthsEndMsg>);
-    static_assert(std::is_same_v<std::variant_alternative_t<18, Message>, RthsUpdateAppliedMsg>);
+    static_assert(std::is_same_v<std::variant_alternative_t<18, Message>, MeasurementsMsg>);
+    static_assert(std::is_same_v<std::variant_alternative_t<20, Message>, RthsUpdateAppliedMsg>);
     return static_cast<MessageType>(m.index() + 1);
 }
 
