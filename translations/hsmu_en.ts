@@ -1525,6 +1525,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--telemetry-every: expected a whole number &gt;= 1, got '%1'</translation>
     </message>
     <message>
+        <source>With --controller: at T seconds of the run, send new values of the damper twin's parameters (repeatable).</source>
+        <translation>With --controller: at T seconds of the run, send new values of the damper twin's parameters (repeatable).</translation>
+    </message>
+    <message>
+        <source>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin's parameters), got '%1'</source>
+        <translation>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin's parameters), got '%1'</translation>
+    </message>
+    <message>
+        <source>--update needs --controller: it sends the update to the loop hsmu-controller runs</source>
+        <translation>--update needs --controller: it sends the update to the loop hsmu-controller runs</translation>
+    </message>
+    <message>
         <source>%1/telemetry.csv: cannot be written</source>
         <translation>%1/telemetry.csv: cannot be written</translation>
     </message>

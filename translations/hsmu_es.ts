@@ -1525,6 +1525,18 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--telemetry-every: se esperaba un número entero &gt;= 1, se obtuvo &apos;%1&apos;</translation>
     </message>
     <message>
+        <source>With --controller: at T seconds of the run, send new values of the damper twin&apos;s parameters (repeatable).</source>
+        <translation>Con --controller: a los T segundos del ensayo, envía nuevos valores de los parámetros del gemelo del amortiguador (repetible).</translation>
+    </message>
+    <message>
+        <source>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin&apos;s parameters), got &apos;%1&apos;</source>
+        <translation>--update: se esperaba T:NOMBRE=VALOR[,NOMBRE=VALOR...] (segundos, luego los parámetros del gemelo del amortiguador), se obtuvo &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--update needs --controller: it sends the update to the loop hsmu-controller runs</source>
+        <translation>--update necesita --controller: envía la actualización al lazo que ejecuta hsmu-controller</translation>
+    </message>
+    <message>
         <source>%1/telemetry.csv: cannot be written</source>
         <translation>%1/telemetry.csv: no se puede escribir</translation>
     </message>

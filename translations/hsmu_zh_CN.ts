@@ -1525,6 +1525,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--telemetry-every：应为 &gt;= 1 的整数，得到 &apos;%1&apos;</translation>
     </message>
     <message>
+        <source>With --controller: at T seconds of the run, send new values of the damper twin&apos;s parameters (repeatable).</source>
+        <translation>与 --controller 一起使用：在试验的第 T 秒发送阻尼器孪生模型参数的新值（可重复）。</translation>
+    </message>
+    <message>
+        <source>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin&apos;s parameters), got &apos;%1&apos;</source>
+        <translation>--update：应为 T:名称=值[,名称=值...]（秒，然后是阻尼器孪生模型的参数），得到 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--update needs --controller: it sends the update to the loop hsmu-controller runs</source>
+        <translation>--update 需要 --controller：它把更新发送给 hsmu-controller 运行的回路</translation>
+    </message>
+    <message>
         <source>%1/telemetry.csv: cannot be written</source>
         <translation>%1/telemetry.csv：无法写入</translation>
     </message>

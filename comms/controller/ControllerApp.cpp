@@ -49,6 +49,7 @@ bool ControllerApp::startRths(const std::string& token, std::string& error) {
         job.partition = cfg.partition();
         job.groundMotion = loadRthsGroundMotion(cfg, "", cfg.groundMotionScale);
         job.holdAfterMisses = cfg.holdAfterMisses;
+        job.identification = cfg.identification;
         job.configuration = cfg.raw.dump();
         const rths::Preflight pre = rths::preflight(job.partition, job.settings);
         std::fprintf(stderr, "hsmu-controller: pre-flight: %s\n", pre.message.c_str());

@@ -1,5 +1,6 @@
 #include "comms/protocol/FrameCodec.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -128,6 +129,10 @@ Bounds boundsOf(MessageType t) {
         return {10 + 9 * 2, 10 + 9 * kMaxChannels};
     case MessageType::Measurements:
         return {14 + 24 * 2, 14 + 24 * kMaxChannels};
+    case MessageType::RthsUpdate:
+        return {12, kMaxPayload};
+    case MessageType::RthsUpdateApplied:
+        return {13, kMaxPayload};
     }
     return {0, 0};
 }
@@ -191,6 +196,21 @@ struct Encoder {
         w.f64(m.duration);
     }
     void operator()(const EmergencyHoldMsg& m) { w.str(m.reason); }
+    void namedValues(const std::vector<std::string>& names, const std::vector<double>& values) {
+        const std::size_t n = std::min({names.size(), values.size(), kMaxUpdateParameters});
+        w.u16(static_cast<std::uint16_t>(n));
+        for (std::size_t i = 0; i < n; ++i) {
+            w.str(names[i]);
+            w.f64(values[i]);
+        }
+    }
+    void operator()(const RthsUpdateMsg& m) { namedValues(m.names, m.values); }
+    void operator()(const RthsUpdateAppliedMsg& m) {
+        w.u64(m.tick);
+        w.u8(m.applied ? 1 : 0);
+        w.str(m.message);
+        namedValues(m.names, m.values);
+    }
     void operator()(const TelemetryMsg& m) {
         w.u64(m.tick);
         for (double v : {m.time, m.desired, m.command, m.measured, m.force})
@@ -235,6 +255,19 @@ struct Encoder {
 /// A channel count field: 2..kMaxChannels.
 bool channelCount(Reader& r, std::uint16_t& n) {
     return r.u16(n) && n >= 2 && n <= kMaxChannels;
+}
+
+/// u16 count (at most kMaxUpdateParameters), count x (str name, f64 value).
+bool readNamedValues(Reader& r, std::vector<std::string>& names, std::vector<double>& values) {
+    std::uint16_t n = 0;
+    if (!r.u16(n) || n > kMaxUpdateParameters)
+        return false;
+    names.resize(n);
+    values.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!r.str(names[i]) || !r.f64(values[i]))
+            return false;
+    return true;
 }
 
 bool decodeInto(MessageType t, Reader& r, Message& out) {
@@ -359,6 +392,21 @@ bool decodeInto(MessageType t, Reader& r, Message& out) {
             !r.f64(m.measured) || !r.f64(m.force) || !r.u64(m.misses) ||
             !r.f64(m.worstLateness) || !r.u64(m.dropped) || !r.boolean(m.holding) ||
             !r.str(m.holdReason))
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::RthsUpdate: {
+        RthsUpdateMsg m;
+        if (!readNamedValues(r, m.names, m.values) || m.names.empty())
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::RthsUpdateApplied: {
+        RthsUpdateAppliedMsg m;
+        if (!r.u64(m.tick) || !r.boolean(m.applied) || !r.str(m.message) ||
+            !readNamedValues(r, m.names, m.values))
             return false;
         out = std::move(m);
         return true;

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 #include <variant>
 #include <vector>
 
@@ -157,10 +158,27 @@ struct MeasurementsMsg { // payload: u64 u32 u16 N x (f64 f64 f64); 2 <= N <= kM
     std::vector<ChannelMeasurement> channels;
 };
 
+/// Most parameters one update names (an mrDamper twin has 12).
+inline constexpr std::size_t kMaxUpdateParameters = 32;
+
+struct RthsUpdateMsg {             // payload: u16 count, count x (str name, f64 value)
+    std::vector<std::string> names; ///< the twin's parameters (MrDamper's names)
+    std::vector<double> values;     ///< in the twin's scales (docs/rths.md)
+};
+
+struct RthsUpdateAppliedMsg {      // payload: u64 u8 str u16 count x (str f64)
+    std::uint64_t tick = 0;        ///< the tick the update came before
+    bool applied = false;          ///< false: refused by the loop (message says why)
+    std::string message;           ///< its source ("operator", "identification") or the refusal
+    std::vector<std::string> names;
+    std::vector<double> values;
+};
+
 using Message =
     std::variant<HelloMsg, HelloAckMsg, ConfigureMsg, TargetMsg, MeasurementMsg, CommitMsg, AckMsg,
                  HoldMsg, ResumeMsg, ResetMsg, HeartbeatMsg, ErrorMsg, ByeMsg, RthsStartMsg,
-                 EmergencyHoldMsg, TelemetryMsg, RthsEndMsg, TargetsMsg, MeasurementsMsg>;
+                 EmergencyHoldMsg, TelemetryMsg, RthsEndMsg, TargetsMsg, MeasurementsMsg,
+                 RthsUpdateMsg, RthsUpdateAppliedMsg>;
 
 /// The header type of a message.
 MessageType messageTypeOf(const Message& m);

@@ -51,6 +51,8 @@ enum class MessageType : std::uint16_t {
     // "Several actuator channels"). Older peers refuse them as unknown types, as any new type.
     Targets = 18,      ///< console -> controller: step index, each channel's mode and command
     Measurements = 19, ///< controller -> console: step, each channel's stroke, force, command
+    RthsUpdate = 20,        ///< monitor -> controller: new parameters for the damper's twin
+    RthsUpdateApplied = 21, ///< controller -> monitor: a twin update decided at a tick
 };
 
 /// Channels of one specimen a Targets / Measurements frame may carry (2..kMaxChannels; a
@@ -75,6 +77,7 @@ enum class ErrorCode : std::uint16_t {
     StateMismatch = 11,     ///< a re-sent target differs from the one already committed
     Timeout = 12,           ///< no hello, or silence past the idle timeout (closes)
     Internal = 13,          ///< anything else (e.g. the state file cannot be written)
+    UpdateRefused = 14,     ///< an rths-update refused (unknown name, not finite, out of the box)
 };
 
 /// Measurement flags (bit field).

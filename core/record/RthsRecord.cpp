@@ -33,14 +33,21 @@ RunLayout rthsLayout(int floors)
     return layout;
 }
 
-RthsRecordFeed::RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors)
-    : m_sink(sink), m_ag(groundMotion), m_floors(floors)
+RthsRecordFeed::RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors,
+                               RecordWriter* notes)
+    : m_sink(sink), m_notes(notes), m_ag(groundMotion), m_floors(floors)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     m_row.u = Eigen::VectorXd::Zero(2 * floors);
     m_row.v = Eigen::VectorXd::Constant(2 * floors, nan);
     m_row.a = m_row.v;
     m_row.elements.resize(1);
+}
+
+void RthsRecordFeed::onUpdate(long k, const UpdateEvent& event)
+{
+    if (m_notes)
+        m_notes->addNote(event.time, int(k), describeTwinUpdate(event));
 }
 
 void RthsRecordFeed::onTick(long k, const RthsTick& tick,

@@ -16,6 +16,7 @@
 #include "core/output/RunLayout.h"
 #include "core/record/RecordWriter.h"
 #include "core/rths/RthsBenchmark.h"
+#include "core/record/RecordWriter.h"
 #include "core/util/Alarm.h"
 
 namespace hsmu::rths {
@@ -32,12 +33,17 @@ RunLayout rthsLayout(int floors);
 /// Turns ticks into StepRecords for a StepObserver (a RecordWriter). No allocation per tick.
 class RthsRecordFeed final : public TickObserver {
 public:
-    RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors);
+    /// notes: where the twin updates go, as notes at their tick (describeTwinUpdate); nullptr:
+    /// nowhere.
+    RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors,
+                   RecordWriter* notes = nullptr);
     void onTick(long k, const RthsTick& tick,
                 const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) override;
+    void onUpdate(long k, const UpdateEvent& event) override;
 
 private:
     StepObserver& m_sink;
+    RecordWriter* m_notes;
     const GroundMotion& m_ag;
     int m_floors;
     StepRecord m_row;

@@ -1,4 +1,5 @@
 #include "core/updating/Reporter.h"
+#include "core/updating/ParameterUpdate.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/structure/Structure.h"
@@ -103,9 +104,9 @@ bool Reporter::bind(Structure& structure, const ParameterLayout& identified, std
     return ok;
 }
 
-UpdateEvent Reporter::apply(HysteresisLaw* law, const std::string& element,
-                            const ParameterLayout& names, std::span<const int> lawIndex,
-                            std::span<const double> values, int step, double time)
+UpdateEvent applyParameterUpdate(HysteresisLaw* law, const std::string& element,
+                                 const ParameterLayout& names, std::span<const int> lawIndex,
+                                 std::span<const double> values, int step, double time)
 {
     UpdateEvent ev{step,  time, element, names, std::vector<double>(values.begin(), values.end()),
                    true, {}};
@@ -128,7 +129,16 @@ UpdateEvent Reporter::apply(HysteresisLaw* law, const std::string& element,
         return refuse(element + ": the law refused " + names.name(k) + " = " +
                       std::to_string(values[k]));
     }
-    ++m_applied;
+    return ev;
+}
+
+UpdateEvent Reporter::apply(HysteresisLaw* law, const std::string& element,
+                            const ParameterLayout& names, std::span<const int> lawIndex,
+                            std::span<const double> values, int step, double time)
+{
+    UpdateEvent ev = applyParameterUpdate(law, element, names, lawIndex, values, step, time);
+    if (ev.ok)
+        ++m_applied;
     return ev;
 }
 

@@ -37,7 +37,9 @@ std::vector<Message> samples() {
                          "console hold at tick 1024"},
             rthsEnd(),
             TargetsMsg{8, {{kChannelDisplacement, 0.0125}, {kChannelForce, -1500.0}}},
-            MeasurementsMsg{8, kFlagReplayed, {{0.0125, 310.5, 0.0125}, {-2.5e-4, -1500.0, -1500.0}}}};
+            MeasurementsMsg{8, kFlagReplayed, {{0.0125, 310.5, 0.0125}, {-2.5e-4, -1500.0, -1500.0}}},
+            RthsUpdateMsg{{"alpha", "c0"}, {80.0, 0.03}},
+            RthsUpdateAppliedMsg{4097, true, "operator", {"alpha", "c0"}, {80.0, 0.03}}};
 }
 
 RthsEndMsg rthsEnd() {
@@ -85,7 +87,7 @@ class TestFrameCodec : public QObject {
 private slots:
     void roundTripEveryMessage() {
         const auto msgs = samples();
-        QCOMPARE(msgs.size(), std::size_t(19)); // one of each type
+        QCOMPARE(msgs.size(), std::size_t(21)); // one of each type
         std::vector<std::uint8_t> stream;
         for (std::size_t i = 0; i < msgs.size(); ++i)
             encodeFrame(msgs[i], std::uint32_t(i + 1), stream);
@@ -118,6 +120,13 @@ private slots:
         const auto& end = std::get<RthsEndMsg>(frames[16].message);
         QCOMPARE(end.j[8], 4.5 + 1e-13);
         QCOMPARE(std::get<TelemetryMsg>(frames[15].message).force, -250.0);
+        // rths-update: u16 count + (str, f64) each; rths-update-applied 13 + the same.
+        QCOMPARE(payload(RthsUpdateMsg{{"alpha"}, {1.0}}), std::size_t(2 + 2 + 5 + 8));
+        QCOMPARE(payload(RthsUpdateAppliedMsg{}), std::size_t(13));
+        const auto& u = std::get<RthsUpdateMsg>(frames[19].message);
+        QVERIFY(u.names == (std::vector<std::string>{"alpha", "c0"}));
+        QCOMPARE(u.values[1], 0.03);
+        QCOMPARE(std::get<RthsUpdateAppliedMsg>(frames[20].message).tick, std::uint64_t(4097));
         // N channels (docs/protocol.md, "Several actuator channels"): targets 10 + 9 N bytes,
         // measurements 14 + 24 N, the hello-ack's tail 2 + 8 N (none for one channel).
         QCOMPARE(payload(msgs[17]), std::size_t(10 + 9 * 2));
@@ -249,7 +258,7 @@ private slots:
     }
 
     void unknownType() {
-        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(20), std::uint16_t(0xFFFF)}) {
+        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(22), std::uint16_t(0xFFFF)}) {
             FrameDecoder d;
             QCOMPARE(decodeAll(d, header(kFrameMagic, 1, t, 1, 0)), FrameDecoder::Status::Error);
             QCOMPARE(d.error().code, ErrorCode::Malformed);
@@ -283,6 +292,31 @@ private slots:
                        {99, 0, 0, 0, 0, 0, 0, 0, 0, 0}, b);
         FrameDecoder d4;
         QCOMPARE(decodeAll(d4, b), FrameDecoder::Status::Error);
+    }
+
+    void malformedUpdatesAreRefused() {
+        // rths-update without a parameter, with more than kMaxUpdateParameters, with a name
+        // running past the payload, or with trailing bytes: malformed, nothing decoded.
+        const auto refused = [](std::vector<std::uint8_t> payload, const char* what) {
+            std::vector<std::uint8_t> b;
+            encodeRawFrame({kFrameMagic, 1, std::uint16_t(MessageType::RthsUpdate), 1,
+                            std::uint32_t(payload.size())}, payload, b);
+            FrameDecoder d;
+            QVERIFY2(decodeAll(d, b) == FrameDecoder::Status::Error, what);
+            QCOMPARE(d.error().code, ErrorCode::Malformed);
+        };
+        std::vector<std::uint8_t> none(12, 0); // count 0, padded to the minimum length
+        refused(none, "count 0");
+        std::vector<std::uint8_t> many(12, 0);
+        many[0] = 33;
+        refused(many, "33 parameters");
+        std::vector<std::uint8_t> longName = {1, 0, 200, 0, 'a', 0, 0, 0, 0, 0, 0, 0};
+        refused(longName, "a name past the payload");
+        std::vector<std::uint8_t> b;
+        encodeFrame(RthsUpdateMsg{{"a"}, {1.0}}, 1, b);
+        std::vector<std::uint8_t> trailing(b.begin() + 16, b.end());
+        trailing.push_back(0);
+        refused(trailing, "trailing bytes");
     }
 
     void sequenceGapIsAViolation() {
