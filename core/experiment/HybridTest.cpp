@@ -1,4 +1,6 @@
 #include "core/experiment/HybridTest.h"
+
+#include "core/experiment/ElementChannels.h"
 #include "core/util/ReasonText.h"
 #include "core/util/InputLimits.h"
 
@@ -357,8 +359,10 @@ void HybridTest::publish()
     m_structure->toFull(m_integrator->acceleration(), rec.a);
     const auto& elements = m_structure->elements();
     rec.elements.resize(elements.size());
+    rec.channels.clear();
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const Element& e = *elements[i];
+        appendChannelValues(e, rec.channels);
         ElementSample& s = rec.elements[i];
         if (m_step == 0) {
             s = ElementSample{};

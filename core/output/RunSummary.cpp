@@ -103,6 +103,14 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     j["peak_displacement_m"] = peakU;
     j["peak_force"] = peakF;
     j["peak_deformation"] = peakD;
+    if (!layout.channels.empty()) { // multi-DOF elements: every basic DOF and actuator
+        nlohmann::json peakC = nlohmann::json::object();
+        for (std::size_t i = 0; i < layout.channels.size(); ++i) {
+            const ElementChannel& c = layout.channels[i];
+            peakC[c.element][c.name] = withUnit(stats.peakChannel()[i], c.unit);
+        }
+        j["peak_channels"] = peakC;
+    }
 
     nlohmann::json alarms = nlohmann::json::array();
     for (const Alarm& a : test.alarms())
