@@ -1,6 +1,7 @@
 #include "core/config/Link2dConfig.h"
 
 #include "core/config/ConfigLoader.h"
+#include "core/config/SetupConfig.h"
 #include "core/experimental/setup/SetupScript.h"
 #include "core/hysteresis/LawFactory.h"
 
@@ -98,14 +99,20 @@ ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& 
         if (c.has("basic"))
             c.fail("basic", "a specimen's basic forces come from its actuators: omit basic");
         const JsonCursor st = c.child("setup");
-        st.allowOnly({"script"});
-        s.setupScript = st.string("script");
+        // An expSetup line, or the same as a type and OpenFresco's parameters (SetupConfig.h).
+        const char* field = st.has("script") ? "script" : "type";
+        if (st.has("script")) {
+            st.allowOnly({"script"});
+            s.setupScript = st.string("script");
+        } else {
+            s.setupScript = setupScriptOf(st);
+        }
         std::string error;
         auto setup = buildLink2dSetup(s, error);
         if (!setup)
-            st.fail("script", error);
+            st.fail(field, error);
         if (setup->basicSize() != 3)
-            st.fail("script", setup->typeName() + " serves " + std::to_string(setup->basicSize()) +
+            st.fail(field, setup->typeName() + " serves " + std::to_string(setup->basicSize()) +
                                   " basic DOFs, a link2d element has 3 (axial, shear, rotation): "
                                   "-sizeTrialOut 3 3");
         const JsonCursor acts = c.child("actuators");
