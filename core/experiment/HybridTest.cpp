@@ -300,6 +300,7 @@ HybridTest::StepResult HybridTest::step()
     m_structure->toFull(uTrial, m_uFull);
     const Eigen::VectorXd& uFull = m_uFull;
     for (ExperimentalElement* x : m_specimens) {
+        x->setTargetTime((m_step + 1) * m_options.dt); // the step being computed
         if (auto why = x->targetViolation(uFull)) {
             enterHold(AlarmKind::LimitExceeded, *why);
             return StepResult::Held;
