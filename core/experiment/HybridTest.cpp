@@ -1,4 +1,6 @@
 #include "core/experiment/HybridTest.h"
+
+#include "core/experiment/ElementChannels.h"
 #include "core/util/ReasonText.h"
 #include "core/util/InputLimits.h"
 
@@ -316,6 +318,7 @@ HybridTest::StepResult HybridTest::step()
     m_structure->toFull(uTrial, m_uFull);
     const Eigen::VectorXd& uFull = m_uFull;
     for (ExperimentalElement* x : m_specimens) {
+        x->setTargetTime((m_step + 1) * m_options.dt); // the step being computed
         if (auto why = x->targetViolation(uFull)) {
             enterHold(AlarmKind::LimitExceeded, *why);
             return StepResult::Held;
@@ -375,8 +378,10 @@ void HybridTest::publish()
     m_structure->toFull(m_integrator->acceleration(), rec.a);
     const auto& elements = m_structure->elements();
     rec.elements.resize(elements.size());
+    rec.channels.clear();
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const Element& e = *elements[i];
+        appendChannelValues(e, rec.channels);
         ElementSample& s = rec.elements[i];
         if (m_step == 0) {
             s = ElementSample{};

@@ -83,6 +83,14 @@ nlohmann::json summaryWithoutNamedBlocks(const HybridTest& test, const RunStatis
     const StepRecord& last = stats.last();
     j["final"] = {{"step", last.step}, {"time_s", number(last.time)}};
     j["peak_ground_acceleration_m_s2"] = number(stats.peakGroundAcceleration());
+    if (!layout.channels.empty()) { // multi-DOF elements: every basic DOF and actuator
+        nlohmann::json peakC = nlohmann::json::object();
+        for (std::size_t i = 0; i < layout.channels.size(); ++i) {
+            const ElementChannel& c = layout.channels[i];
+            peakC[c.element][c.name] = withUnit(stats.peakChannel()[i], c.unit);
+        }
+        j["peak_channels"] = peakC;
+    }
 
     nlohmann::json alarms = nlohmann::json::array();
     for (const Alarm& a : test.alarms())

@@ -6,7 +6,8 @@
 //   final {step, time_s, displacement_m {dof: m}, force {element: {value, unit}}},
 //   peak_ground_acceleration_m_s2,
 //   peak_displacement_m {dof: m}, peak_force {element: {value, unit}},
-//   peak_deformation {element: {value, unit}},
+//   peak_deformation {element: {value, unit}}, peak_channels {element: {channel: {value,
+//   unit}}} (only with multi-DOF elements: every basic DOF and actuator, ElementChannels.h),
 //   alarms [{time_s, step, severity, kind, message}] (the updating alarms included),
 //   hold_reason (string or null),
 //   link_security {site: "tls", "plaintext-loopback", "insecure-plaintext", "builtin", or null

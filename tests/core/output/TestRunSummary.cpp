@@ -128,7 +128,7 @@ private slots:
         QCOMPARE(j.at("controller").get<std::string>(), std::string("builtin"));
         QCOMPARE(j.at("Lab B").get<std::string>(), std::string("insecure-plaintext"));
         QVERIFY(j.at("Lab C").is_null());
-        QCOMPARE(builtinSiteSecurity(RunLayout{{}, {}, {}, {"controller", "Lab C"}}),
+        QCOMPARE(builtinSiteSecurity(RunLayout{{}, {}, {}, {"controller", "Lab C"}, {}}),
                  (SiteSecurity{{"controller", "builtin"}, {"Lab C", "builtin"}}));
 
         // summary.json: the run's sites (the small frame's specimen: the default site).
