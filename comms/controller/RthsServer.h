@@ -28,7 +28,7 @@
 #include "core/groundmotion/GroundMotion.h"
 #include "core/rths/Partition.h"
 #include "core/rths/RthsLoop.h"
-#include "core/rths/TwinIdentification.h"
+#include "core/updating/TwinIdentification.h"
 
 #include <cstdint>
 #include <memory>

@@ -10,7 +10,7 @@
 #include "core/rths/Partition.h"
 #include "core/rths/RthsLoop.h"
 #include "core/rths/ServoActuator.h"
-#include "core/rths/TwinIdentification.h"
+#include "core/updating/TwinIdentification.h"
 
 #include <nlohmann/json.hpp>
 

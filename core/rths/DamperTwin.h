@@ -16,7 +16,7 @@
 
 #include "core/hysteresis/MrDamper.h"
 #include "core/identification/ParameterSet.h"
-#include "core/updating/ParameterUpdate.h"
+#include "core/identification/ParameterUpdate.h"
 
 #include <cstdint>
 #include <deque>

@@ -7,7 +7,7 @@
 #include "core/record/RecordWriter.h"
 #include "core/record/RthsRecord.h"
 #include "core/rths/RthsReport.h"
-#include "core/rths/TwinIdentification.h"
+#include "core/updating/TwinIdentification.h"
 #include "comms/LinkAddress.h"
 #include "core/util/SecretFile.h"
 #include "gui/cli/ConsoleStreams.h"

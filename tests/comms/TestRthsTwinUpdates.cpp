@@ -13,7 +13,7 @@
 
 #include "core/config/RthsConfig.h"
 #include "core/rths/RthsBenchmark.h"
-#include "core/rths/TwinIdentification.h"
+#include "core/updating/TwinIdentification.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -14,7 +14,7 @@
 //    equal those of a run without updates; a valid update in the same run is applied.
 #include "core/config/RthsConfig.h"
 #include "core/rths/RthsBenchmark.h"
-#include "core/rths/TwinIdentification.h"
+#include "core/updating/TwinIdentification.h"
 
 #include <QtTest>
 

@@ -1,4 +1,4 @@
-#include "core/rths/TwinIdentification.h"
+#include "core/updating/TwinIdentification.h"
 
 #include "core/updating/MrDamperUkfIdentifier.h"
 
