@@ -428,9 +428,17 @@ void TcpControl::resume() {
     m_holdReason.clear();
     if (!m_link->isOpen() && !reconnect().ok)
         return; // setTarget reports the link as down; the test holds again
-    std::string error;
-    if (!m_link->send(ResumeMsg{}, error) || !await(MessageType::Resume, m_opt.stepDeadline).ok)
-        linkFault("no acknowledgement of the resume");
+    const auto acknowledged = [this] {
+        std::string error;
+        return m_link->send(ResumeMsg{}, error) && await(MessageType::Resume, m_opt.stepDeadline).ok;
+    };
+    if (acknowledged())
+        return;
+    // The link closed while the test was held before this side saw it (e.g. the controller
+    // replaced the session): reconnect once and resume there (a refusal keeps the link open).
+    if (!emergency() && !m_link->isOpen() && reconnect().ok && acknowledged())
+        return;
+    linkFault("no acknowledgement of the resume");
 }
 
 } // namespace hsmu::comms

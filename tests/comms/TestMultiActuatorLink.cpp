@@ -217,7 +217,8 @@ private slots:
         test->resume(); // the connection the check replaced is reconnected
         while (test->step() == HybridTest::StepResult::Advanced) {
         }
-        QCOMPARE(test->state(), HybridTest::State::Finished);
+        QVERIFY2(test->state() == HybridTest::State::Finished,
+                 test->alarms().empty() ? "held" : test->alarms().back().message.c_str());
         test->removeObserver(&rec);
         run.records = rec.records;
         QVERIFY(everyStepOnce(run));
