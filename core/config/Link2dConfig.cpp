@@ -11,20 +11,6 @@ namespace hsmu {
 
 namespace {
 
-Link2dBasicSpec parseBasic(const JsonCursor& c)
-{
-    c.allowOnly({"material", "heldForce"});
-    Link2dBasicSpec b;
-    if (c.has("material") && c.has("heldForce"))
-        c.fail("heldForce", "either a material or a held force, not both");
-    if (c.has("material")) {
-        b.hasMaterial = true;
-        b.material = parseMaterial(c.child("material"));
-    }
-    b.heldForce = c.number("heldForce", 0.0);
-    return b;
-}
-
 // "forceSchedule": [[t [s], F [kN]], ...], t strictly increasing (ActuatorChannel.h, eq. F1).
 std::vector<std::array<double, 2>> parseForceSchedule(const JsonCursor& c)
 {
@@ -43,6 +29,27 @@ std::vector<std::array<double, 2>> parseForceSchedule(const JsonCursor& c)
     if (const std::string why = forceScheduleProblem(out); !why.empty())
         c.fail("forceSchedule", why);
     return out;
+}
+
+// A numerical basic DOF: a material, a held force (constant or scheduled), or nothing.
+Link2dBasicSpec parseBasic(const JsonCursor& c)
+{
+    c.allowOnly({"material", "heldForce", "forceSchedule"});
+    Link2dBasicSpec b;
+    if (c.has("material") && (c.has("heldForce") || c.has("forceSchedule")))
+        c.fail(c.has("heldForce") ? "heldForce" : "forceSchedule",
+               "either a material or a held force, not both");
+    if (c.has("heldForce") && c.has("forceSchedule"))
+        c.fail("forceSchedule", "a held force is \"heldForce\" (constant) or \"forceSchedule\" "
+                                "([[t, F], ...]), not both");
+    if (c.has("material")) {
+        b.hasMaterial = true;
+        b.material = parseMaterial(c.child("material"));
+    }
+    b.heldForce = c.number("heldForce", 0.0);
+    if (c.has("forceSchedule"))
+        b.forceSchedule = parseForceSchedule(c);
+    return b;
 }
 
 ActuatorSpec parseActuator(const JsonCursor& c)

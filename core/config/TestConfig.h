@@ -38,6 +38,7 @@ struct Link2dBasicSpec {
     bool hasMaterial = false;
     MaterialSpec material;  ///< when hasMaterial
     double heldForce = 0.0; ///< [kN] or [kN m] otherwise (0: a free DOF)
+    ForceSchedule forceSchedule; ///< (t [s], F) points instead of heldForce (eq. F1)
 };
 
 /// One actuator of a link2d specimen: its channel (control mode, held force, limits, K0) and

@@ -85,6 +85,7 @@ std::unique_ptr<Element> buildLink2d(const ElementSpec& e, const ControlFactory&
                 if (s.basic[k].hasMaterial)
                     dofs[k].law = buildLaw(s.basic[k].material, where);
                 dofs[k].heldForce = s.basic[k].heldForce;
+                dofs[k].forceSchedule = s.basic[k].forceSchedule;
             }
             return std::make_unique<Link2dElement>(e.name, g, std::move(dofs), s.primary);
         }

@@ -192,9 +192,12 @@ bool HybridTest::prepare()
               m_stability.message + " (forced by the operator)");
     }
     m_specimens.clear();
+    m_timed.clear();
     for (const auto& e : m_structure->elements())
         if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
             m_specimens.push_back(x);
+        else if (e->timeDependent())
+            m_timed.push_back(e.get()); // e.g. a twin's scheduled axial load
     for (ExperimentalElement* x : m_specimens)
         if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
             return fail(x->name() + ": " + r.reason);
@@ -317,8 +320,11 @@ HybridTest::StepResult HybridTest::step()
     // Every target is checked before any is sent: nothing leaves a limit, ever.
     m_structure->toFull(uTrial, m_uFull);
     const Eigen::VectorXd& uFull = m_uFull;
+    const double targetTime = (m_step + 1) * m_options.dt; // the step being computed
+    for (Element* e : m_timed)
+        e->setTargetTime(targetTime);
     for (ExperimentalElement* x : m_specimens) {
-        x->setTargetTime((m_step + 1) * m_options.dt); // the step being computed
+        x->setTargetTime(targetTime);
         if (auto why = x->targetViolation(uFull)) {
             enterHold(AlarmKind::LimitExceeded, *why);
             return StepResult::Held;

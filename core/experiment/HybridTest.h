@@ -39,6 +39,7 @@
 
 namespace hsmu {
 
+class Element;
 class ExperimentalElement;
 class ModelUpdater;
 class Integrator;
@@ -145,6 +146,7 @@ private:
     std::vector<Alarm> m_alarms;
     std::vector<StepObserver*> m_observers;
     std::vector<ExperimentalElement*> m_specimens; // owned by the structure
+    std::vector<Element*> m_timed; // numerical elements with a scheduled force (Element.h)
     std::unique_ptr<ModelUpdater> m_updater;
     StepRecord m_record;
     Eigen::VectorXd m_uFull; // step()'s trial at every DOF (storage reused)

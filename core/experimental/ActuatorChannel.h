@@ -17,6 +17,7 @@
 // (docs/setups.md, "Scheduled forces"); its limits are checked on F(t) like a constant one.
 
 #include "core/experimental/SafetyLimits.h"
+#include "core/structure/ForceSchedule.h"
 
 #include <array>
 #include <string>
@@ -36,7 +37,7 @@ struct ActuatorChannelSpec {
     double initialStiffness = 0.0;
     /// Force control: (t [s], F [kN]) points, t strictly increasing; empty: heldForce. Last,
     /// so that brace initializers of the fields above keep their meaning.
-    std::vector<std::array<double, 2>> forceSchedule;
+    ForceSchedule forceSchedule;
 };
 
 const char* actuatorModeName(ActuatorMode m);
@@ -44,9 +45,5 @@ const char* actuatorModeName(ActuatorMode m);
 /// The force a force-controlled channel commands at test time t [s] (eq. F1; heldForce
 /// without a schedule) [kN].
 double commandedForce(const ActuatorChannelSpec& c, double t);
-
-/// Why the schedule is not usable (empty string: it is): a point not finite, times not
-/// strictly increasing.
-std::string forceScheduleProblem(const std::vector<std::array<double, 2>>& schedule);
 
 } // namespace hsmu

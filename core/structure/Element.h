@@ -60,6 +60,12 @@ public:
     virtual ElementStatus sendTrial(const Eigen::VectorXd& /*uFull*/) { return ElementStatus::success(); }
     /// Two-phase commit: send the commit without waiting; the next commit() completes it.
     virtual ElementStatus beginCommit() { return ElementStatus::success(); }
+    /// Whether the element's force depends on test time (a scheduled force: Link2dElement's
+    /// held basic forces, ForceSchedule.h); the stepping loop then tells it the time first.
+    virtual bool timeDependent() const { return false; }
+    /// The test time [s] of the step whose trial comes next (HybridTest calls it before that
+    /// step's targets are checked and its trial set): a scheduled force is taken at it.
+    virtual void setTargetTime(double /*time*/) {}
     /// The site (lab, controller) answering for the element; "" for a numerical element.
     virtual std::string site() const { return {}; }
     /// Deformation of the element's own law (rotation, displacement) at the trial state.

@@ -21,7 +21,20 @@ Link2dElement::Link2dElement(std::string name, const Link2dGeometry& geometry,
     if (!m_dofs[m_primary].law)
         throw std::invalid_argument("element '" + name + "': the primary basic DOF needs a law");
     for (int i = 0; i < 3; ++i)
-        m_q[i] = m_dofs[i].law ? 0.0 : m_dofs[i].heldForce;
+        m_q[i] = m_dofs[i].law ? 0.0 : heldForce(i);
+}
+
+double Link2dElement::heldForce(int i) const
+{
+    return scheduledForce(m_dofs[i].forceSchedule, m_dofs[i].heldForce, m_time); // eq. F1
+}
+
+bool Link2dElement::timeDependent() const
+{
+    for (const auto& dof : m_dofs)
+        if (!dof.law && !dof.forceSchedule.empty())
+            return true;
+    return false;
 }
 
 ElementStatus Link2dElement::setTrial(const Eigen::VectorXd& uFull)
@@ -30,7 +43,7 @@ ElementStatus Link2dElement::setTrial(const Eigen::VectorXd& uFull)
     for (int i = 0; i < 3; ++i) {
         HysteresisLaw* law = m_dofs[i].law.get();
         if (!law) {
-            m_q[i] = m_dofs[i].heldForce;
+            m_q[i] = heldForce(i);
             continue;
         }
         if (LawStatus s = law->setTrialDeformation(m_d[i]); s != LawStatus::Ok)
@@ -51,16 +64,20 @@ ElementStatus Link2dElement::commit()
     for (auto& dof : m_dofs)
         if (dof.law)
             dof.law->commit();
+    m_committedTime = m_time;
     return ElementStatus::success();
 }
 
 void Link2dElement::revert()
 {
+    m_time = m_committedTime;
     for (int i = 0; i < 3; ++i)
         if (HysteresisLaw* law = m_dofs[i].law.get()) {
             law->revert();
             m_d[i] = law->committedDeformation();
             m_q[i] = law->committedForce();
+        } else {
+            m_q[i] = heldForce(i);
         }
 }
 

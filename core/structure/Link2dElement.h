@@ -1,11 +1,13 @@
 #pragma once
 // Link2dElement: a numerical two-node 2D link / beam-column with 3 basic DOFs (axial, shear,
 // rotation; Link2dKinematics.h, eq. L1-L2), each carried by its own hysteresis law, or by a
-// held basic force (e.g. a constant axial load: q = P whatever d, no stiffness), or by
-// nothing (q = 0). The all-numerical twin of an ExperimentalLink2d (docs/setups.md,
+// held basic force (e.g. a constant axial load: q = P whatever d, no stiffness; or a force
+// following a schedule of test time, ForceSchedule.h eq. F1, like the specimen's
+// force-controlled actuator), or by nothing (q = 0). The all-numerical twin of an ExperimentalLink2d (docs/setups.md,
 // "Multi-DOF elements"). Units: basic forces [kN], [kN m] with deformations [m], [rad].
 // deformation() / force() report the primary basic DOF (the record's one column per element).
 
+#include "core/structure/ForceSchedule.h"
 #include "core/structure/Link2dKinematics.h"
 
 #include <array>
@@ -16,6 +18,7 @@ namespace hsmu {
 struct Link2dBasicDof {
     std::unique_ptr<HysteresisLaw> law; ///< nullptr: the held force below
     double heldForce = 0.0;             ///< q when law is nullptr (0: a free DOF)
+    ForceSchedule forceSchedule;        ///< q(t) instead of heldForce when not empty
 };
 
 class Link2dElement final : public Element {
@@ -26,6 +29,8 @@ public:
                   std::array<Link2dBasicDof, 3> dofs, int primary = 1);
 
     std::string typeName() const override { return "link2d"; }
+    bool timeDependent() const override;
+    void setTargetTime(double time) override { m_time = time; }
     ElementStatus setTrial(const Eigen::VectorXd& uFull) override;
     double deformation() const override { return m_d[m_primary]; }
     double force() const override { return m_q[m_primary]; }
@@ -51,9 +56,12 @@ public:
     const Link2dKinematics& kinematics() const { return m_kin; }
 
 private:
+    double heldForce(int i) const; // [kN] or [kN m] of a DOF without a law, at m_time
+
     Link2dKinematics m_kin;
     std::array<Link2dBasicDof, 3> m_dofs;
     int m_primary;
+    double m_time = 0.0, m_committedTime = 0.0; // [s] of the trial / the committed state
     Eigen::Vector3d m_d = Eigen::Vector3d::Zero(), m_q = Eigen::Vector3d::Zero();
 };
 

@@ -6,6 +6,9 @@
 //  - the run: at every step k the vertical actuator's recorded command equals F(k dt) of the
 //    closed form to 1e-12 kN, its measured force F to 1e-12 max(1, |F|) (the lab's Newton
 //    tolerance), its stroke F / 2e5 to 1e-12 relative, the element's axial basic force F;
+//  - the numerical twin (the same column all-numerical, its axial basic DOF held by the same
+//    schedule, Link2dElement / ForceSchedule.h): its axial basic force equals F(k dt) at every
+//    step to 1e-12 kN, and the frame's displacements equal the hybrid run's to 1e-9 m;
 //  - the limits are still checked on F(t): a schedule that crosses the force limit is refused
 //    at configuration time naming the actuator and the time; built past that check, the test
 //    holds at the first step whose F(t) exceeds the limit, before that command leaves, every
@@ -120,6 +123,77 @@ private slots:
         }
         qInfo("max |F - F(t)| %.3g kN over 400 steps", worstF);
         QCOMPARE(rec.records[100].channels[std::size_t(vc)], -500.0); // t = 1 s
+    }
+
+    void numericalTwinFollowsTheSchedule() {
+        // The hybrid frame, and its all-numerical copy: Column L a numerical link2d whose axial
+        // DOF follows the schedule, its shear DOF the lateral actuator's material (the
+        // specimen NoTransformation puts on it), its rotation free as the specimen's.
+        const json hybridDoc = presetWith(kSchedule);
+        json numericalDoc = hybridDoc;
+        json& column = numericalDoc["structure"]["elements"][0];
+        const json lateral = column["actuators"][1]["material"];
+        for (const char* k : {"experimental", "setup", "actuators"})
+            column.erase(k);
+        column["basic"] = json::array({{{"forceSchedule", kSchedule}},
+                                       {{"material", lateral}},
+                                       json::object()});
+        auto run = [](const json& doc, std::vector<StepRecord>& out, int& axial) {
+            TestConfig cfg = parseConfig(doc, "frame.json");
+            cfg.analysis.duration = 4.0;
+            auto test = buildHybridTest(cfg);
+            axial = channel(RunLayout::of(*test), "axial force");
+            Recorder rec;
+            test->addObserver(&rec);
+            QVERIFY(test->prepare());
+            while (test->step() == HybridTest::StepResult::Advanced) {
+            }
+            QCOMPARE(test->state(), HybridTest::State::Finished);
+            out = rec.records;
+        };
+        std::vector<StepRecord> hybrid, numerical;
+        int ha = -1, na = -1;
+        run(hybridDoc, hybrid, ha);
+        run(numericalDoc, numerical, na);
+        QVERIFY(ha >= 0 && na >= 0);
+        QCOMPARE(numerical.size(), hybrid.size());
+        double worstU = 0.0, peakU = 0.0;
+        for (std::size_t k = 1; k < numerical.size(); ++k) {
+            const double f = closedForm(numerical[k].time);
+            const double q = numerical[k].channels[std::size_t(na)];
+            QVERIFY2(std::abs(q - f) <= 1e-12,
+                     qPrintable(QString("step %1: %2 against %3").arg(k).arg(q).arg(f)));
+            QVERIFY(std::abs(q - hybrid[k].channels[std::size_t(ha)]) <=
+                    1e-12 * std::max(1.0, std::abs(f)));
+            worstU = std::max(worstU, (numerical[k].u - hybrid[k].u).cwiseAbs().maxCoeff());
+            peakU = std::max(peakU, numerical[k].u.cwiseAbs().maxCoeff());
+        }
+        qInfo("max |u_numerical - u_hybrid| %.3g m (peak %.3g m) over 400 steps", worstU, peakU);
+        QVERIFY(peakU > 1e-3); // the frame moved
+        QVERIFY(worstU <= 1e-9);
+        QCOMPARE(numerical[100].channels[std::size_t(na)], -500.0); // t = 1 s
+    }
+
+    void twinScheduleErrors() {
+        json doc = presetWith(kSchedule);
+        json& right = doc["structure"]["elements"][1]["basic"][0];
+        auto error = [&](const json& basic) {
+            right = basic;
+            try {
+                parseConfig(doc, "frame.json");
+            } catch (const std::exception& x) {
+                return QString(x.what());
+            }
+            return QString();
+        };
+        QString e = error({{"heldForce", -500.0}, {"forceSchedule", kSchedule}});
+        QVERIFY2(e.contains("forceSchedule") && e.contains("not both"), qPrintable(e));
+        e = error({{"forceSchedule", json::array({{0.0, 1.0}, {0.0, 2.0}})}});
+        QVERIFY2(e.contains("forceSchedule") && e.contains("increase strictly"), qPrintable(e));
+        e = error({{"forceSchedule", json::array()}});
+        QVERIFY2(e.contains("at least one point"), qPrintable(e));
+        e = error({{"forceSchedule", kSchedule}, {"material", {{"law", "elastic"}, {"k", 1.0}}}});
+        QVERIFY2(e.contains("not both"), qPrintable(e));
     }
 
     void limitsCheckedOnTheSchedule() {
