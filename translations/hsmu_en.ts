@@ -3808,8 +3808,8 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>%1: no 2-D drawing of its setup %2 (a 3-D or aggregated setup); its actuators are in the plot.</translation>
     </message>
     <message>
-        <source>%1, %2: deformed shape x%3 (solid), at rest (dashed)</source>
-        <translation>%1, %2: deformed shape x%3 (solid), at rest (dashed)</translation>
+        <source>deformed shape x%1 (solid), at rest (dashed)</source>
+        <translation>deformed shape x%1 (solid), at rest (dashed)</translation>
     </message>
 </context>
 <context>

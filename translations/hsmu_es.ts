@@ -3808,8 +3808,8 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>%1: sin dibujo 2-D de su montaje %2 (un montaje 3-D o agregado); sus actuadores están en el gráfico.</translation>
     </message>
     <message>
-        <source>%1, %2: deformed shape x%3 (solid), at rest (dashed)</source>
-        <translation>%1, %2: deformada x%3 (continua), en reposo (discontinua)</translation>
+        <source>deformed shape x%1 (solid), at rest (dashed)</source>
+        <translation>deformada x%1 (continua), en reposo (discontinua)</translation>
     </message>
 </context>
 <context>

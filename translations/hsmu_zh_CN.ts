@@ -3805,8 +3805,8 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>%1：其装置 %2 无二维图（三维或组合装置）；其作动器见曲线图。</translation>
     </message>
     <message>
-        <source>%1, %2: deformed shape x%3 (solid), at rest (dashed)</source>
-        <translation>%1，%2：变形形状 x%3（实线），静止（虚线）</translation>
+        <source>deformed shape x%1 (solid), at rest (dashed)</source>
+        <translation>变形形状 x%1（实线），静止（虚线）</translation>
     </message>
 </context>
 <context>

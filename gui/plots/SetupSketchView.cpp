@@ -15,7 +15,7 @@ namespace hsmu::gui {
 namespace {
 
 constexpr int kMargin = 14;  // [px] around the drawing
-constexpr int kCaption = 18; // [px] the caption's row
+constexpr int kCaption = 34; // [px] the caption's two rows
 
 QColor colourOf(SketchPart part) {
     switch (part) {
@@ -99,9 +99,10 @@ QString SetupSketchView::caption() const {
         return tr("%1: no 2-D drawing of its setup %2 (a 3-D or aggregated setup); its "
                   "actuators are in the plot.")
             .arg(name, QString::fromStdString(m_setup->typeName()));
-    return tr("%1, %2: deformed shape x%3 (solid), at rest (dashed)")
-        .arg(name, QString::fromStdString(m_setup->typeName()))
-        .arg(m_deformed.scale);
+    // two rows: the element and its setup, then the scale (never cut off by a long name)
+    return QStringLiteral("%1 (%2)\n%3")
+        .arg(name, QString::fromStdString(m_setup->typeName()),
+             tr("deformed shape x%1 (solid), at rest (dashed)").arg(m_deformed.scale));
 }
 
 void SetupSketchView::changeEvent(QEvent* event) {
@@ -113,12 +114,18 @@ void SetupSketchView::changeEvent(QEvent* event) {
 void SetupSketchView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    const QRect captionRect(4, 2, width() - 8, kCaption);
     p.setPen(Qt::black);
-    p.drawText(captionRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine,
-               fontMetrics().elidedText(caption(), Qt::ElideMiddle, captionRect.width()));
-    if (!m_deformed.drawable)
+    if (!m_deformed.drawable) { // a reason, wrapped to the view
+        p.drawText(rect().adjusted(4, 2, -4, -2), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+                   caption());
         return;
+    }
+    const QStringList rows = caption().split(QLatin1Char('\n'));
+    const int rowHeight = kCaption / 2;
+    for (int r = 0; r < rows.size() && r < 2; ++r)
+        p.drawText(QRect(4, 1 + r * rowHeight, width() - 8, rowHeight),
+                   Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine,
+                   fontMetrics().elidedText(rows[r], Qt::ElideMiddle, width() - 8));
     // One metres-to-pixels scale for x and y (the drawing keeps its proportions), y up.
     double x0 = 0.0, x1 = 0.0, y0 = 0.0, y1 = 0.0;
     for (const SetupSketch* s : {&m_rest, &m_deformed})
@@ -148,8 +155,20 @@ void SetupSketchView::paintEvent(QPaintEvent*) {
         p.drawLine(px(seg.from), px(seg.to));
         if (seg.part == SketchPart::Actuator && seg.actuator >= 0 &&
             seg.actuator < m_actuatorNames.size()) {
+            // the name at the actuator's middle: above a horizontal one, beside a vertical one
+            // on the side away from node j (two close vertical actuators' names never cross)
             p.setPen(colourOf(seg.part).darker(130));
-            p.drawText(px(seg.from) + QPointF(3.0, -3.0), m_actuatorNames[seg.actuator]);
+            const QString name = m_actuatorNames[seg.actuator];
+            const QPointF mid = 0.5 * (px(seg.from) + px(seg.to));
+            const Eigen::Vector2d along = seg.to - seg.from;
+            const double w = fontMetrics().horizontalAdvance(name);
+            double x = mid.x() - 0.5 * w, y = mid.y() - 4.0;
+            if (std::abs(along.y()) > std::abs(along.x())) {
+                const bool left = seg.from.x() < m_deformed.nodeJ.x() - 1e-9;
+                x = left ? mid.x() - w - 4.0 : mid.x() + 4.0;
+                y = mid.y() + 0.5 * fontMetrics().ascent();
+            }
+            p.drawText(QPointF(std::clamp(x, 2.0, std::max(2.0, width() - w - 2.0)), y), name);
         }
     }
     // node i: a fixed support; node j: the control point
