@@ -9,6 +9,7 @@
 //  - the sketch: node j at the closed form of eq. K1 from the recorded measured deformations
 //    and the stated scale (sketchScale of the largest displacement, computed here from the
 //    records), 1e-12 m; the brace's three actuators drawn; a numerical element has no sketch;
+//  - `hsmu run --plots` (PlotExporter::writeRunPlots) writes one PNG per group (19);
 //  - the pre-flight lines: a force-controlled channel within its force limit (PASS, the
 //    preset's 500 kN against 1000 kN) and one past it (FAIL, 1200 kN), both in the dialog.
 // Units: kN, m, rad, s.
@@ -22,11 +23,15 @@
 #include "gui/plots/ActuatorsPanel.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/LivePlotsPanel.h"
+#include "gui/plots/PlotExporter.h"
 #include "gui/plots/PlotStyle.h"
 #include "gui/plots/SetupSketchView.h"
 #include "gui/replay/RecordPlayback.h"
 
 #include <QComboBox>
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
 #include <QLabel>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -215,6 +220,29 @@ private slots:
             actuators += seg.part == SketchPart::Actuator ? 1 : 0;
         QCOMPARE(actuators, 3);
         QVERIFY(a.sketch().caption().contains(QLatin1String("InvertedVBrace2d")));
+    }
+
+    void runPlotsHaveEveryGroup() {
+        // `hsmu run --plots`: one PNG per basic DOF and actuator group
+        const QString dir = m_dir.filePath(QStringLiteral("plots"));
+        QVERIFY(QDir().mkpath(dir));
+        QStringList errors;
+        const QStringList files = PlotExporter::writeRunPlots(
+            dir, m_column.layout, m_column.records, &errors, PlotReferences::of(m_column.config));
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char(' '))));
+        QStringList channels;
+        for (const QString& f : files)
+            if (QFileInfo(f).fileName().startsWith(QLatin1String("channels_")))
+                channels << QFileInfo(f).fileName();
+        QCOMPARE(channels.size(), 19);
+        for (const char* name :
+             {"channels_Column_L_actuator_lateral.png", "channels_Column_L_actuator_vertical.png",
+              "channels_Column_L_shear.png", "channels_Column_L_strokes.png",
+              "channels_Beam_rotation.png"})
+            QVERIFY2(channels.contains(QLatin1String(name)), name);
+        QVERIFY(
+            !QImage(QDir(dir).filePath(QStringLiteral("channels_Column_L_actuator_lateral.png")))
+                 .isNull());
     }
 
     void preflightLinesPassAndFail() {
