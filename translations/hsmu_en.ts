@@ -2,6 +2,49 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>ActuatorLimitText</name>
+    <message>
+        <source>%1, actuator &apos;%2&apos; (%3)</source>
+        <translation>%1, actuator &apos;%2&apos; (%3)</translation>
+    </message>
+    <message>
+        <source>force control</source>
+        <translation>force control</translation>
+    </message>
+    <message>
+        <source>displacement control</source>
+        <translation>displacement control</translation>
+    </message>
+    <message>
+        <source>stroke |s|</source>
+        <translation>stroke |s|</translation>
+    </message>
+    <message>
+        <source>force |F|</source>
+        <translation>force |F|</translation>
+    </message>
+    <message>
+        <source>stroke increment |Δs| per step</source>
+        <translation>stroke increment |Δs| per step</translation>
+    </message>
+    <message>
+        <source>PASS  %1: %2 up to %3 %4 (t = %5 s), within the limit %6 %4</source>
+        <translation>PASS  %1: %2 up to %3 %4 (t = %5 s), within the limit %6 %4</translation>
+    </message>
+    <message>
+        <source>FAIL  %1: %2 reaches %3 %4 (t = %5 s), past the limit %6 %4: the test will hold at that step</source>
+        <translation>FAIL  %1: %2 reaches %3 %4 (t = %5 s), past the limit %6 %4: the test will hold at that step</translation>
+    </message>
+    <message>
+        <source>%1: %2 limit %3 %4, checked at every step (it depends on the specimen&apos;s response)</source>
+        <translation>%1: %2 limit %3 %4, checked at every step (it depends on the specimen&apos;s response)</translation>
+    </message>
+    <message>
+        <source>%1: no %2 limit</source>
+        <translation>%1: no %2 limit</translation>
+    </message>
+</context>
+<context>
     <name>AlarmText</name>
     <message>
         <source>test resumed after an automatic reconnect</source>
@@ -1795,6 +1838,93 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>failed</source>
         <translation>failed</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ActuatorsPanel</name>
+    <message>
+        <source>Displacement [%1]</source>
+        <translation>Displacement [%1]</translation>
+    </message>
+    <message>
+        <source>Rotation [%1]</source>
+        <translation>Rotation [%1]</translation>
+    </message>
+    <message>
+        <source>Force [%1]</source>
+        <translation>Force [%1]</translation>
+    </message>
+    <message>
+        <source>Moment [%1]</source>
+        <translation>Moment [%1]</translation>
+    </message>
+    <message>
+        <source>axial</source>
+        <translation>axial</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>shear</translation>
+    </message>
+    <message>
+        <source>rotation</source>
+        <translation>rotation</translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation>commanded</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>measured</translation>
+    </message>
+    <message>
+        <source>command</source>
+        <translation>command</translation>
+    </message>
+    <message>
+        <source>stroke</source>
+        <translation>stroke</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>force</translation>
+    </message>
+    <message>
+        <source>%1: %2 DOF</source>
+        <translation>%1: %2 DOF</translation>
+    </message>
+    <message>
+        <source>%1: actuator &apos;%2&apos;</source>
+        <translation>%1: actuator &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>%1: every basic deformation</source>
+        <translation>%1: every basic deformation</translation>
+    </message>
+    <message>
+        <source>%1: every basic force</source>
+        <translation>%1: every basic force</translation>
+    </message>
+    <message>
+        <source>%1: every actuator&apos;s stroke</source>
+        <translation>%1: every actuator&apos;s stroke</translation>
+    </message>
+    <message>
+        <source>%1: every actuator&apos;s force</source>
+        <translation>%1: every actuator&apos;s force</translation>
+    </message>
+    <message>
+        <source>The actuator, basic DOF or set of channels the plot shows</source>
+        <translation>The actuator, basic DOF or set of channels the plot shows</translation>
+    </message>
+    <message>
+        <source>No step yet.</source>
+        <translation>No step yet.</translation>
+    </message>
+    <message>
+        <source>Step %1, t = %2 s: %3</source>
+        <translation>Step %1, t = %2 s: %3</translation>
     </message>
 </context>
 <context>
@@ -3669,6 +3799,17 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>synthetic</source>
         <translation>synthetic</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SetupSketchView</name>
+    <message>
+        <source>%1: no 2-D drawing of its setup %2 (a 3-D or aggregated setup); its actuators are in the plot.</source>
+        <translation>%1: no 2-D drawing of its setup %2 (a 3-D or aggregated setup); its actuators are in the plot.</translation>
+    </message>
+    <message>
+        <source>deformed shape x%1 (solid), at rest (dashed)</source>
+        <translation>deformed shape x%1 (solid), at rest (dashed)</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,49 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
 <context>
+    <name>ActuatorLimitText</name>
+    <message>
+        <source>%1, actuator &apos;%2&apos; (%3)</source>
+        <translation>%1, actuador &apos;%2&apos; (%3)</translation>
+    </message>
+    <message>
+        <source>force control</source>
+        <translation>control de fuerza</translation>
+    </message>
+    <message>
+        <source>displacement control</source>
+        <translation>control de desplazamiento</translation>
+    </message>
+    <message>
+        <source>stroke |s|</source>
+        <translation>carrera |s|</translation>
+    </message>
+    <message>
+        <source>force |F|</source>
+        <translation>fuerza |F|</translation>
+    </message>
+    <message>
+        <source>stroke increment |Δs| per step</source>
+        <translation>incremento de carrera |Δs| por paso</translation>
+    </message>
+    <message>
+        <source>PASS  %1: %2 up to %3 %4 (t = %5 s), within the limit %6 %4</source>
+        <translation>CORRECTO  %1: %2 hasta %3 %4 (t = %5 s), dentro del límite %6 %4</translation>
+    </message>
+    <message>
+        <source>FAIL  %1: %2 reaches %3 %4 (t = %5 s), past the limit %6 %4: the test will hold at that step</source>
+        <translation>FALLA  %1: %2 llega a %3 %4 (t = %5 s), más allá del límite %6 %4: el ensayo se detendrá en ese paso</translation>
+    </message>
+    <message>
+        <source>%1: %2 limit %3 %4, checked at every step (it depends on the specimen&apos;s response)</source>
+        <translation>%1: límite de %2 %3 %4, comprobado en cada paso (depende de la respuesta de la probeta)</translation>
+    </message>
+    <message>
+        <source>%1: no %2 limit</source>
+        <translation>%1: sin límite de %2</translation>
+    </message>
+</context>
+<context>
     <name>AlarmText</name>
     <message>
         <source>test resumed after an automatic reconnect</source>
@@ -1795,6 +1838,93 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>failed</source>
         <translation>fallido</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ActuatorsPanel</name>
+    <message>
+        <source>Displacement [%1]</source>
+        <translation>Desplazamiento [%1]</translation>
+    </message>
+    <message>
+        <source>Rotation [%1]</source>
+        <translation>Rotación [%1]</translation>
+    </message>
+    <message>
+        <source>Force [%1]</source>
+        <translation>Fuerza [%1]</translation>
+    </message>
+    <message>
+        <source>Moment [%1]</source>
+        <translation>Momento [%1]</translation>
+    </message>
+    <message>
+        <source>axial</source>
+        <translation>axial</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>cortante</translation>
+    </message>
+    <message>
+        <source>rotation</source>
+        <translation>rotación</translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation>comandado</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>medido</translation>
+    </message>
+    <message>
+        <source>command</source>
+        <translation>comando</translation>
+    </message>
+    <message>
+        <source>stroke</source>
+        <translation>carrera</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>fuerza</translation>
+    </message>
+    <message>
+        <source>%1: %2 DOF</source>
+        <translation>%1: GDL %2</translation>
+    </message>
+    <message>
+        <source>%1: actuator &apos;%2&apos;</source>
+        <translation>%1: actuador &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>%1: every basic deformation</source>
+        <translation>%1: todas las deformaciones básicas</translation>
+    </message>
+    <message>
+        <source>%1: every basic force</source>
+        <translation>%1: todas las fuerzas básicas</translation>
+    </message>
+    <message>
+        <source>%1: every actuator&apos;s stroke</source>
+        <translation>%1: la carrera de cada actuador</translation>
+    </message>
+    <message>
+        <source>%1: every actuator&apos;s force</source>
+        <translation>%1: la fuerza de cada actuador</translation>
+    </message>
+    <message>
+        <source>The actuator, basic DOF or set of channels the plot shows</source>
+        <translation>El actuador, GDL básico o conjunto de canales que muestra el gráfico</translation>
+    </message>
+    <message>
+        <source>No step yet.</source>
+        <translation>Aún no hay pasos.</translation>
+    </message>
+    <message>
+        <source>Step %1, t = %2 s: %3</source>
+        <translation>Paso %1, t = %2 s: %3</translation>
     </message>
 </context>
 <context>
@@ -3669,6 +3799,17 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>synthetic</source>
         <translation>sintético</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SetupSketchView</name>
+    <message>
+        <source>%1: no 2-D drawing of its setup %2 (a 3-D or aggregated setup); its actuators are in the plot.</source>
+        <translation>%1: sin dibujo 2-D de su montaje %2 (un montaje 3-D o agregado); sus actuadores están en el gráfico.</translation>
+    </message>
+    <message>
+        <source>deformed shape x%1 (solid), at rest (dashed)</source>
+        <translation>deformada x%1 (continua), en reposo (discontinua)</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,49 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>ActuatorLimitText</name>
+    <message>
+        <source>%1, actuator &apos;%2&apos; (%3)</source>
+        <translation>%1，作动器“%2”（%3）</translation>
+    </message>
+    <message>
+        <source>force control</source>
+        <translation>力控制</translation>
+    </message>
+    <message>
+        <source>displacement control</source>
+        <translation>位移控制</translation>
+    </message>
+    <message>
+        <source>stroke |s|</source>
+        <translation>行程 |s|</translation>
+    </message>
+    <message>
+        <source>force |F|</source>
+        <translation>力 |F|</translation>
+    </message>
+    <message>
+        <source>stroke increment |Δs| per step</source>
+        <translation>每步行程增量 |Δs|</translation>
+    </message>
+    <message>
+        <source>PASS  %1: %2 up to %3 %4 (t = %5 s), within the limit %6 %4</source>
+        <translation>通过  %1：%2 最大 %3 %4（t = %5 s），在限值 %6 %4 以内</translation>
+    </message>
+    <message>
+        <source>FAIL  %1: %2 reaches %3 %4 (t = %5 s), past the limit %6 %4: the test will hold at that step</source>
+        <translation>不通过  %1：%2 达到 %3 %4（t = %5 s），超过限值 %6 %4：试验将在该步暂停</translation>
+    </message>
+    <message>
+        <source>%1: %2 limit %3 %4, checked at every step (it depends on the specimen&apos;s response)</source>
+        <translation>%1：%2 限值 %3 %4，每步检查（取决于试件的响应）</translation>
+    </message>
+    <message>
+        <source>%1: no %2 limit</source>
+        <translation>%1：无 %2 限值</translation>
+    </message>
+</context>
+<context>
     <name>AlarmText</name>
     <message>
         <source>test resumed after an automatic reconnect</source>
@@ -1795,6 +1838,93 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>failed</source>
         <translation>失败</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::ActuatorsPanel</name>
+    <message>
+        <source>Displacement [%1]</source>
+        <translation>位移 [%1]</translation>
+    </message>
+    <message>
+        <source>Rotation [%1]</source>
+        <translation>转角 [%1]</translation>
+    </message>
+    <message>
+        <source>Force [%1]</source>
+        <translation>力 [%1]</translation>
+    </message>
+    <message>
+        <source>Moment [%1]</source>
+        <translation>弯矩 [%1]</translation>
+    </message>
+    <message>
+        <source>axial</source>
+        <translation>轴向</translation>
+    </message>
+    <message>
+        <source>shear</source>
+        <translation>剪切</translation>
+    </message>
+    <message>
+        <source>rotation</source>
+        <translation>转动</translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation>指令</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <source>command</source>
+        <translation>指令值</translation>
+    </message>
+    <message>
+        <source>stroke</source>
+        <translation>行程</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>力</translation>
+    </message>
+    <message>
+        <source>%1: %2 DOF</source>
+        <translation>%1：%2 自由度</translation>
+    </message>
+    <message>
+        <source>%1: actuator &apos;%2&apos;</source>
+        <translation>%1：作动器“%2”</translation>
+    </message>
+    <message>
+        <source>%1: every basic deformation</source>
+        <translation>%1：全部基本变形</translation>
+    </message>
+    <message>
+        <source>%1: every basic force</source>
+        <translation>%1：全部基本力</translation>
+    </message>
+    <message>
+        <source>%1: every actuator&apos;s stroke</source>
+        <translation>%1：各作动器行程</translation>
+    </message>
+    <message>
+        <source>%1: every actuator&apos;s force</source>
+        <translation>%1：各作动器力</translation>
+    </message>
+    <message>
+        <source>The actuator, basic DOF or set of channels the plot shows</source>
+        <translation>图中显示的作动器、基本自由度或通道组</translation>
+    </message>
+    <message>
+        <source>No step yet.</source>
+        <translation>尚无步。</translation>
+    </message>
+    <message>
+        <source>Step %1, t = %2 s: %3</source>
+        <translation>第 %1 步，t = %2 s：%3</translation>
     </message>
 </context>
 <context>
@@ -3666,6 +3796,17 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>synthetic</source>
         <translation>合成</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::SetupSketchView</name>
+    <message>
+        <source>%1: no 2-D drawing of its setup %2 (a 3-D or aggregated setup); its actuators are in the plot.</source>
+        <translation>%1：其装置 %2 无二维图（三维或组合装置）；其作动器见曲线图。</translation>
+    </message>
+    <message>
+        <source>deformed shape x%1 (solid), at rest (dashed)</source>
+        <translation>变形形状 x%1（实线），静止（虚线）</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 #include "gui/app/PreflightDialog.h"
 
+#include "gui/app/ActuatorLimitText.h"
 #include "gui/app/AlarmText.h"
 
 #include <QCheckBox>
@@ -146,6 +147,17 @@ PreflightDialog::PreflightDialog(const PreflightReport& report, const QStringLis
         specimens);
     note->setWordWrap(true);
     sv->addWidget(note);
+    for (const SpecimenPreflight& s : report.specimens)
+        for (const ActuatorLimitLine& l : s.actuatorLimits) {
+            auto* line = new QLabel(ActuatorLimitText::line(s.element, l), specimens);
+            line->setObjectName(QStringLiteral("actuatorLimitLine"));
+            line->setWordWrap(true);
+            if (l.verdict == LimitVerdict::Pass)
+                line->setStyleSheet(QStringLiteral("color: #2e7d32;"));
+            else if (l.verdict == LimitVerdict::Exceeded)
+                line->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
+            sv->addWidget(line);
+        }
     layout->addWidget(specimens, 1);
 
     if (report.hasLoadedSpecimen())

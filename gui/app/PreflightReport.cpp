@@ -1,6 +1,7 @@
 #include "gui/app/PreflightReport.h"
 
 #include "core/experimental/ExperimentalElement.h"
+#include "core/experimental/ExperimentalLink2d.h"
 #include "core/integration/Integrator.h"
 #include "core/output/ElementUnits.h"
 #include "core/structure/Structure.h"
@@ -39,6 +40,8 @@ PreflightReport preflightOf(const HybridTest& test, bool allowUnstable) {
             s.measuredDeformation = h->lastDeformation;
             s.measuredForce = std::numeric_limits<double>::quiet_NaN();
         }
+        if (const auto* link = dynamic_cast<const ExperimentalLink2d*>(x))
+            s.actuatorLimits = actuatorLimitLines(link->channels(), test.totalSteps() * test.dt());
         r.specimens.push_back(s);
     }
     return r;

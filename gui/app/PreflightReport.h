@@ -4,10 +4,12 @@
 // (docs/method.md, Hybrid simulation: explicit Newmark needs omega_max dt <= 2), the ground motion,
 // and per specimen its control, its safety limits and the values measured after the control was
 // prepared (the zero the test starts from), or, for a specimen loaded by an earlier test, its
-// committed steps and last deformation. Units: the specimen's (rad and kN m for a
+// committed steps and last deformation; a multi-actuator specimen's per-actuator limits.
+// Units: the specimen's (rad and kN m for a
 // rotational spring, m and kN for a lateral one); s; m/s^2.
 // Thread rules: plain data; preflightOf() on the thread that runs the test, after prepare().
 
+#include "core/experimental/ActuatorLimitCheck.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/integration/StabilityCheck.h"
 
@@ -38,6 +40,9 @@ struct SpecimenPreflight {
     double lastDeformation = 0.0;
     /// Why its controller refused a fresh specimen ("" = not asked, or it gave one).
     std::string freshRefused;
+    /// A multi-actuator specimen's per-channel limits against what the run is known to reach
+    /// (core/experimental/ActuatorLimitCheck.h); empty for a one-actuator specimen.
+    std::vector<ActuatorLimitLine> actuatorLimits;
 
     bool loaded() const { return committedSteps > 0; }
     /// Continuing would send a first target about |lastDeformation| away from where the
@@ -62,6 +67,14 @@ struct PreflightReport {
     /// The test may start once the operator confirms (stable, or forced by the configuration).
     bool startable() const { return stability.stable || allowUnstable; }
     /// Some specimen was loaded by an earlier test: the operator chooses continue or fresh.
+    /// Some actuator's configured limit is below what the run commands (a FAIL line).
+    bool hasExceededActuatorLimit() const {
+        for (const SpecimenPreflight& s : specimens)
+            for (const ActuatorLimitLine& l : s.actuatorLimits)
+                if (l.verdict == LimitVerdict::Exceeded)
+                    return true;
+        return false;
+    }
     bool hasLoadedSpecimen() const {
         for (const SpecimenPreflight& s : specimens)
             if (s.loaded())

@@ -1,6 +1,7 @@
 #include "gui/plots/LivePlotsPanel.h"
 
 #include "core/config/TestFactory.h"
+#include "gui/plots/ActuatorsPanel.h"
 #include "gui/app/LiveText.h"
 #include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
@@ -128,18 +129,22 @@ LivePlotsPanel::LivePlotsPanel(QWidget* parent) : QWidget(parent) {
     m_parameterGrid->addWidget(m_overlayNote, kNoteRow, 0, 1, kParameterColumns);
     LiveText::bind(m_overlayNote, [this] { showOverlayNote(); });
     m_fitError->yAxis->ticker()->setTickCount(3);
+    m_actuators = new ActuatorsPanel(vertical);
     vertical->addWidget(top);
     vertical->addWidget(m_parameterArea);
+    vertical->addWidget(m_actuators);
     vertical->setStretchFactor(0, 3);
     vertical->setStretchFactor(1, 2);
-    vertical->setSizes({600, 400});
+    vertical->setStretchFactor(2, 2);
+    vertical->setSizes({600, 400, 400});
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(vertical);
 
     for (QCustomPlot* p : std::initializer_list<QCustomPlot*>{m_hysteresis, m_force, m_displacement,
-                                                              m_ground, m_tracking, m_fitError})
+                                                              m_ground, m_tracking, m_fitError,
+                                                              &m_actuators->plot()})
         enableExportMenu(p);
     connect(m_hysteresisPicker, &PlotElementPicker::elementPicked, this,
             [this](int e) { showPicked(*m_hysteresis, [this, e] { showHysteresisOf(e); }); });
@@ -173,6 +178,8 @@ void LivePlotsPanel::configure(const RunLayout& layout, const PlotReferences& re
     m_fitError->showFitError(m_hasUpdating ? references.fitThreshold : qQNaN());
     rebuildParameterPlots(layout, references);
     m_parameterArea->setVisible(m_hasUpdating);
+    m_actuators->configure(layout, references);
+    m_actuators->setVisible(m_actuators->hasChannels());
     clearData();
     // Another test: the last one's zoom and time span go (autoscale on, no time span known).
     for (QCustomPlot* p : allPlots()) {
@@ -226,8 +233,8 @@ void LivePlotsPanel::showPicked(QCustomPlot& plot, const std::function<void()>& 
 }
 
 std::vector<QCustomPlot*> LivePlotsPanel::allPlots() const {
-    std::vector<QCustomPlot*> out{m_hysteresis, m_force, m_displacement, m_ground, m_tracking,
-                                  m_fitError};
+    std::vector<QCustomPlot*> out{m_hysteresis, m_force,    m_displacement,       m_ground,
+                                  m_tracking,   m_fitError, &m_actuators->plot()};
     out.insert(out.end(), m_parameters.begin(), m_parameters.end());
     return out;
 }
@@ -268,7 +275,8 @@ void LivePlotsPanel::setGroundMotion(const QVector<double>& time,
     m_fixedGroundMotion = true;
     m_ground->refresh();
     // Before the first steps the time axes span the test: 0 to the record's (cut) end.
-    std::vector<QCustomPlot*> timed{m_force, m_displacement, m_tracking, m_fitError};
+    std::vector<QCustomPlot*> timed{m_force, m_displacement, m_tracking, m_fitError,
+                                    &m_actuators->plot()};
     timed.insert(timed.end(), m_parameters.begin(), m_parameters.end());
     for (QCustomPlot* p : timed)
         PlotStyle::setEmptyXRange(*p, 0.0, time.isEmpty() ? qQNaN() : time.back());
@@ -345,6 +353,7 @@ void LivePlotsPanel::appendRecords(const std::vector<StepRecord>& rows) {
     if (rows.empty())
         return;
     m_hysteresis->appendRecords(rows);
+    m_actuators->appendRecords(rows);
     m_force->appendRecords(rows);
     m_displacement->appendRecords(rows);
     if (!m_fixedGroundMotion)
@@ -365,11 +374,13 @@ void LivePlotsPanel::appendRecords(const std::vector<StepRecord>& rows) {
 void LivePlotsPanel::clearData() {
     // A read-out describes the data shown: it goes with them (another test's elements).
     for (QCustomPlot* p : std::initializer_list<QCustomPlot*>{m_hysteresis, m_force, m_displacement,
-                                                              m_ground, m_tracking, m_fitError})
+                                                              m_ground, m_tracking, m_fitError,
+                                                              &m_actuators->plot()})
         PlotTools::attach(*p)->hideReadout();
     for (ParameterPlot* p : m_parameters)
         PlotTools::attach(*p)->hideReadout();
     m_hysteresis->clearData();
+    m_actuators->clearData();
     m_force->clearData();
     m_displacement->clearData();
     if (!m_fixedGroundMotion)
@@ -425,6 +436,8 @@ std::vector<LivePlotsPanel::NamedPlot> LivePlotsPanel::plots() const {
         out.push_back({QStringLiteral("tracking"), m_tracking});
     if (m_hasUpdating)
         out.push_back({QStringLiteral("fit_error"), m_fitError});
+    if (m_actuators->hasChannels())
+        out.push_back({QStringLiteral("channels"), &m_actuators->plot()});
     return out;
 }
 

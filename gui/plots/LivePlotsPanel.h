@@ -17,6 +17,9 @@
 //                  band, identification bounds (updating); overlaid histories (a replay's
 //                  re-identification) are named in one note under them, not in a legend row
 //                  that would squeeze a small plot to a strip
+//   actuators      with multi-DOF elements (RunLayout::channels): every actuator's command,
+//                  stroke and force, every basic DOF, one curve each, and the setup's sketch
+//                  with its deformed shape (ActuatorsPanel), under the other plots
 // Feeding (the PlotJuggler way): appendRecords() only appends; refresh() asks for one redraw
 // of every plot. The owner calls refresh() once per coalesced batch (~30 Hz), never per step.
 // Redraws are also budgeted: after a redraw that took c ms, the next one waits at least
@@ -52,6 +55,7 @@ struct TestConfig;
 
 namespace hsmu::gui {
 
+class ActuatorsPanel;
 class HistoryPlot;
 class HysteresisPlot;
 class PlotElementPicker;
@@ -116,6 +120,7 @@ public:
     HistoryPlot& groundMotion() const { return *m_ground; }
     HistoryPlot& tracking() const { return *m_tracking; }
     HistoryPlot& fitError() const { return *m_fitError; }
+    ActuatorsPanel& actuators() const { return *m_actuators; }
     /// The element pickers of the hysteresis, force and tracking plots.
     PlotElementPicker& hysteresisPicker() const { return *m_hysteresisPicker; }
     PlotElementPicker& forcePicker() const { return *m_forcePicker; }
@@ -160,6 +165,7 @@ private:
     HistoryPlot* m_ground = nullptr;
     HistoryPlot* m_tracking = nullptr;
     HistoryPlot* m_fitError = nullptr;
+    ActuatorsPanel* m_actuators = nullptr;
     QWidget* m_parameterArea = nullptr;
     QGridLayout* m_parameterGrid = nullptr;
     QLabel* m_overlayNote = nullptr; ///< names the overlaid curves (dashed), hidden without

@@ -1,5 +1,7 @@
 #include "gui/plots/PlotExporter.h"
 
+#include "gui/plots/ActuatorsPanel.h"
+#include "gui/plots/HistoryPlot.h"
 #include "gui/plots/HysteresisPlot.h"
 #include "gui/plots/LivePlotsPanel.h"
 #include "gui/plots/ParameterPlot.h"
@@ -144,6 +146,15 @@ QStringList PlotExporter::writeRunPlots(const QString& dir, const RunLayout& lay
             QDir(dir).filePath(QStringLiteral("hysteresis_%1.png")
                                    .arg(fileSafe(QString::fromStdString(layout.elements[i].name))));
         record(savePng(plot, path), path);
+    }
+    // Every basic DOF and actuator of the multi-DOF elements, one plot per group.
+    ActuatorsPanel& actuators = panel.actuators();
+    for (int g = 0; g < int(actuators.groups().size()); ++g) {
+        actuators.showGroup(g);
+        path = QDir(dir).filePath(
+            QStringLiteral("channels_%1.png")
+                .arg(fileSafe(QString::fromStdString(channelGroupName(actuators.groups()[std::size_t(g)])))));
+        record(savePng(actuators.plot(), path), path);
     }
     if (!panel.parameterPlots().empty()) {
         std::vector<QCustomPlot*> cells(panel.parameterPlots().begin(),

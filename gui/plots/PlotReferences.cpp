@@ -8,6 +8,9 @@ namespace hsmu::gui {
 
 PlotReferences PlotReferences::of(const TestConfig& cfg) {
     PlotReferences r;
+    for (const ElementSpec& e : cfg.elements)
+        if (e.experimental && e.link2d)
+            r.link2dSpecimens.emplace_back(e.name, *e.link2d);
     if (!cfg.updating.enabled)
         return r;
     if (cfg.updating.method == "ukf")
@@ -20,7 +23,7 @@ PlotReferences PlotReferences::of(const TestConfig& cfg) {
 
 PlotReferences PlotReferences::ofConfigurationJson(const std::string& json) {
     try {
-        // Only the updating section matters; a record's ground-motion file need not exist.
+        // The updating section and the elements; a record's ground-motion file need not exist.
         return of(parseConfig(nlohmann::json::parse(json), "record"));
     } catch (const std::exception&) {
         return {}; // an old or foreign configuration: plots without reference lines

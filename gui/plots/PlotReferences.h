@@ -11,15 +11,19 @@
 
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hsmu::gui {
 
 struct PlotReferences {
     ParameterBoundsMap bounds; ///< per identified parameter name
     double fitThreshold = std::numeric_limits<double>::quiet_NaN(); ///< NaN: none
+    /// Each experimental link2d element (name, its geometry and setup), configuration order.
+    std::vector<std::pair<std::string, Link2dSpec>> link2dSpecimens;
 
     /// The configuration's updating bounds (a UKF: Table III for every parameter not listed)
-    /// and inspector threshold; empty without updating.
+    /// and inspector threshold (none without updating); the link2d specimens.
     static PlotReferences of(const TestConfig& cfg);
     /// The same from a record's stored configuration JSON; empty (no lines) if the text does
     /// not parse as a configuration.

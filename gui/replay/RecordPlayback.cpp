@@ -30,6 +30,9 @@ StepRecord RecordPlayback::rowAt(const RecordData& d, int i) {
                 std::isnan(d.actuatorFlags(i, j)) ? -1 : std::int64_t(d.actuatorFlags(i, j));
         }
     }
+    // the multi-DOF elements' channels (/elements/channels; none in older records)
+    for (Eigen::Index j = 0; i < d.channels.rows() && j < d.channels.cols(); ++j)
+        r.channels.push_back(d.channels(i, j));
     r.hasUpdating = d.layout.updating.has_value() && d.parameters.rows() > i;
     if (r.hasUpdating) {
         UpdatingSample& u = r.updating;

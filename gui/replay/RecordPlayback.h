@@ -20,8 +20,8 @@ class RecordPlayback {
 public:
     explicit RecordPlayback(std::shared_ptr<const RecordData> data);
 
-    /// Row i of the record as the StepRecord the live test produced (updating filled when
-    /// the record has it). Precondition: 0 <= i < rows().
+    /// Row i of the record as the StepRecord the live test produced (updating and the multi-DOF
+    /// elements' channels filled when the record has them). Precondition: 0 <= i < rows().
     static StepRecord rowAt(const RecordData& data, int i);
 
     const RecordData& data() const { return *m_data; }

@@ -25,6 +25,8 @@ public:
     std::string typeName() const override { return m_typeName; }
     int basicSize() const override { return m_sizeTrial; }
     int actuatorCount() const override { return static_cast<int>(m_dofs.size()); }
+    /// The basic DOF each actuator follows (0-based).
+    const std::vector<int>& dofs() const { return m_dofs; }
     SetupResult strokes(const Eigen::VectorXd& d, Eigen::VectorXd& s) const override;
     SetupResult jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const override;
     SetupResult basicDisplacements(const Eigen::VectorXd& s, const Eigen::VectorXd& given,

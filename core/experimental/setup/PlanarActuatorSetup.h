@@ -52,6 +52,12 @@ public:
     int actuatorCount() const override { return static_cast<int>(m_actuators.size()); }
     SetupGeometry geometry() const { return m_geometry; }
     const std::vector<PlanarActuator>& actuators() const { return m_actuators; }
+    /// R(phiLocX): (u, v)_setup = R (u, v)_element (the drawing of core/experimental/SetupSketch).
+    Eigen::Matrix2d elementToSetup() const {
+        Eigen::Matrix2d r;
+        r << m_cphi, -m_sphi, m_sphi, m_cphi;
+        return r;
+    }
 
     SetupResult strokes(const Eigen::VectorXd& d, Eigen::VectorXd& s) const override;
     SetupResult jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const override;
