@@ -310,14 +310,20 @@ CalibrationResult calibrateLaw(const std::vector<double>& u, const std::vector<d
     }
     if (request.law != "boucWenPinching")
         return calibrate(u, f, defaultCalibrationSpec(request, scales));
-    // Pinching: the plain law's optimum first, then the pinching law from it.
+    // Pinching: the plain law's optimum first (with its uRef moved when its k0 lands far from
+    // 1, above), then the pinching law from it in the plain fit's scales: the pinching box
+    // (psi, lambda: widths in z) assumes an ultimate z about 1, which a k0 of 30 (the MR
+    // damper's sharp yield with the derived scales) takes to 0.02.
     CalibrationRequest plain = request;
     plain.law = "boucWen";
     plain.fitted.clear();
-    const CalibrationResult base = calibrate(u, f, defaultCalibrationSpec(plain, scales));
+    const CalibrationResult base = calibrateLaw(u, f, plain);
     if (base.cancelled)
         return base;
-    CalibrationSpec spec = defaultCalibrationSpec(request, scales);
+    CalibrationRequest pinching = request;
+    if (base.ok && !request.uRef)
+        pinching.uRef = base.parameters.at("uRef");
+    CalibrationSpec spec = defaultCalibrationSpec(pinching, scales);
     if (base.ok) {
         spec.starts.clear();
         std::vector<double> plainStart;
