@@ -8,7 +8,7 @@
 //   deltaNu, deltaEta [0, 20 / max(E, 1)]   (E: the history's normalized path work, so that
 //                                            nu and eta stay below 21 over the history)
 //   A0 = 1, deltaA = 0 fixed (as the paper; A and k0 are not separately identifiable)
-// and, for boucWenPinching, on top: zetaS [0, 0.99], p [0, 20/max(E,1)], q [0, 0.9],
+// and, for boucWenPinching, on top: zetaS [0, 0.99], p [0, 200/max(E,1)], q [0, 0.9],
 // psi [0.01, 5], deltaPsi [0, 20/max(E,1)], lambda [0.01, 10].
 // Starts: k0 = 1 with alpha in {0.02, 0.15}, n in {1, 2, 5} and three loop shapes
 // beta / (beta + gamma) in {0.5, 0.9, 1.4} at beta + gamma = 0.8^-n (ultimate z 0.8),
