@@ -64,8 +64,8 @@ std::vector<std::vector<double>> scatteredPinchingStarts(
         for (const Box& b : fitted) {
             const auto at = base.find(b.name);
             const double u = uniform();
-            if (isRate(b.name))
-                v[b.name] = b.lower + (b.upper - b.lower) * u * u * u;
+            if (isRate(b.name)) // drawn over at most 200 typical (20 / E): p's box is wider
+                v[b.name] = b.lower + std::min(b.upper - b.lower, 200.0 * b.typical) * u * u * u;
             else if (b.name == "n")
                 v[b.name] = logUniform(0.7, 6.0);
             else if (isPinchingParameter(b.name) || at == base.end())

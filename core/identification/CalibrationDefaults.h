@@ -13,7 +13,8 @@
 // Starts: k0 = 1 with alpha in {0.02, 0.15}, n in {1, 2, 5} and three loop shapes
 // beta / (beta + gamma) in {0.5, 0.9, 1.4} at beta + gamma = 0.8^-n (ultimate z 0.8),
 // no degradation. The pinching law starts from the Bouc-Wen optimum without pinching and from
-// 24 starts scattered around it (pinching parameters over their whole box, the Bouc-Wen
+// 40 starts scattered around it (pinching parameters over their whole box, the energy rates
+// over at most their first 20/max(E,1), the Bouc-Wen
 // shape within +-25 % of the optimum; a fixed seed), the two best polished. Bilinear: k0 [0.05 K, 20 K], fy [0.02, 2] x the peak force, b [0, 0.9].
 // mrDamper (rate-dependent; the history's times are needed): normalized like the Bouc-Wen
 // laws, A = 1 fixed (A and alpha are not separately identifiable), and with v the history's
