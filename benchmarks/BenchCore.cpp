@@ -4,6 +4,9 @@
 //   one HybridTest step, condition-3 frame <= 2 us
 //   the whole 31 s El Centro run, frame     <= 20 ms (compute only: no output observers)
 //   one step of the frame with online updating <= 8 us (issue 3)
+//   the two-actuator column frame's whole step on the in-process virtual lab, within 1.3x of
+//   the same frame with one actuator (issue 24; docs/benchmarks.md, "Multi-actuator
+//   specimens"): bmTwoActuatorFrameStep / bmOneActuatorFrameStep
 // Run: build/bin/hsmu_bench [--benchmark_repetitions=5]
 
 #include "core/config/ConfigLoader.h"
@@ -95,6 +98,28 @@ BENCHMARK(bmFrameStep);
 // (target <= 8 us).
 void bmUpdatedFrameStep(benchmark::State& state) { frameSteps(state, frameConfig(false, true)); }
 BENCHMARK(bmUpdatedFrameStep);
+
+// The preset two-actuator-column-frame (a link2d column behind NoTransformation, a vertical
+// actuator holding -500 kN in force control, a lateral one in displacement control, each a
+// uniaxial material of the virtual lab); actuators 1: the same frame with the lateral
+// actuator alone (OneActuator on the shear DOF), today's one-actuator specimen step.
+TestConfig actuatorFrame(int actuators)
+{
+    TestConfig cfg = loadConfigFile(std::string(HSMU_SOURCE_DIR) +
+                                    "/resources/presets/two-actuator-column-frame.json");
+    if (actuators == 1) {
+        Link2dSpec& s = *cfg.elements[0].link2d;
+        s.setupScript = "expSetup OneActuator 1 2 -sizeTrialOut 3 3";
+        s.actuators.erase(s.actuators.begin()); // the vertical one
+    }
+    return cfg;
+}
+
+void bmTwoActuatorFrameStep(benchmark::State& state) { frameSteps(state, actuatorFrame(2)); }
+BENCHMARK(bmTwoActuatorFrameStep);
+
+void bmOneActuatorFrameStep(benchmark::State& state) { frameSteps(state, actuatorFrame(1)); }
+BENCHMARK(bmOneActuatorFrameStep);
 
 void bmWholeElCentroRun(benchmark::State& state)
 {

@@ -1,8 +1,9 @@
 # Install rules and the Debian package (docs/console.md, "Installing").
 #   cmake --install build --prefix PREFIX   puts
-#     PREFIX/bin/hsmu, PREFIX/bin/hsmu-console (the console, started by hsmu), PREFIX/bin/hsmu-controller
+#     PREFIX/bin/hsmu, PREFIX/bin/hsmu-cli (the Qt Core subcommands, started by hsmu),
+#     PREFIX/bin/hsmu-console (the console, started by hsmu-cli), PREFIX/bin/hsmu-controller
 #     PREFIX/share/hsmu/presets/*.json            (also embedded in both programs)
-#     PREFIX/share/hsmu/translations/hsmu_*.qm    (also embedded in hsmu)
+#     PREFIX/share/hsmu/translations/hsmu_*.qm    (also embedded in hsmu-cli, hsmu-console)
 #     PREFIX/share/hsmu/opensees/hsmu_twin.tcl    (the OpenSees side of numerical twins)
 #     PREFIX/share/applications/hsmu.desktop
 #     PREFIX/share/icons/hicolor/scalable/apps/hsmu.svg
@@ -16,7 +17,7 @@ include(GNUInstallDirs)
 set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 if(TARGET hsmu)
-  install(TARGETS hsmu hsmu-console RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(TARGETS hsmu hsmu-cli hsmu-console RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 install(TARGETS hsmu-controller RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/presets/

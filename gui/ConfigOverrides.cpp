@@ -11,16 +11,7 @@ void ConfigOverrides::applyTo(TestConfig& cfg) const {
         cfg.groundMotion.units.clear();
         cfg.groundMotion.dt = 0.0;
     }
-    if (recordDt)
-        cfg.groundMotion.dt = *recordDt;
-    if (scale)
-        cfg.groundMotion.scale = *scale;
-    if (dt)
-        cfg.analysis.dt = *dt;
-    if (duration)
-        cfg.analysis.duration = *duration;
-    if (allowUnstable)
-        cfg.analysis.allowUnstable = true;
+    NumberOverrides::applyTo(cfg);
 }
 
 } // namespace hsmu::gui

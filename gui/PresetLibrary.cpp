@@ -78,6 +78,10 @@ QList<PresetLibrary::Preset> PresetLibrary::presets() {
     return out;
 }
 
+PresetCatalog PresetLibrary::catalog() {
+    return embedded();
+}
+
 TestConfig PresetLibrary::load(const QString& nameOrPath) {
     return loadConfigOrPreset(nameOrPath.toStdString(), embedded());
 }

@@ -5,6 +5,7 @@
 // shear-building family, else a path that fails naming it).
 // Thread rules: any thread (read-only resources).
 
+#include "core/config/PresetCatalog.h"
 #include "core/config/TestConfig.h"
 
 #include <QList>
@@ -26,6 +27,8 @@ public:
     /// Load a configuration file or an embedded preset. Throws hsmu::ConfigError naming the
     /// file (or "preset <id>") and the field at fault.
     static TestConfig load(const QString& nameOrPath);
+    /// The embedded presets as the CONFIG rule's catalog (RunFlow).
+    static PresetCatalog catalog();
 };
 
 } // namespace hsmu::gui

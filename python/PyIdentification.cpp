@@ -1,6 +1,7 @@
 #include "python/PyIdentification.h"
 
 #include "core/config/ConfigLoader.h"
+#include "core/identification/CalibrationDefaults.h"
 #include "core/offline/IdentificationSettings.h"
 #include "core/offline/MeasuredDataCsv.h"
 #include "core/offline/OfflineIdentification.h"
@@ -146,14 +147,30 @@ py::dict unitsDict(const SpecimenHistory& h, const IdentificationSettings& s,
 }
 
 py::dict calibrate(py::handle time, py::handle deformation, py::handle force, py::handle units,
-                   const std::optional<std::string>& law, py::handle model, py::handle progress) {
+                   const std::optional<std::string>& law, py::handle model, py::handle progress,
+                   const std::string& offsets) {
+    const auto mode = calibrationOffsetsFromName(offsets);
+    if (!mode) // `hsmu replay --offsets`'s message
+        throw py::value_error("offsets: expected auto, on or off, found '" + offsets + "'");
     const SpecimenHistory h = historyOf(time, deformation, force, units);
-    const IdentificationSettings s = settingsOf(h, law, model, py::none(), "calibration");
+    IdentificationSettings s = settingsOf(h, law, model, py::none(), "calibration");
+    s.offsets = *mode;
     const OfflineIdentificationResult r = identify(h, s, progress);
     py::dict out = toPython(calibrationJson(*r.calibration));
     out["law"] = s.model.law;
     out["verdict"] = r.verdict;
     out["units"] = unitsDict(h, s, r.parameterNames);
+    // The offsets kept, each as its parameter (value, stddev, ci95) with its unit.
+    if (out.contains("offsets") && out["offsets"]["used"].cast<bool>()) {
+        py::dict parameters = out["parameters"];
+        py::dict unitsOut = out["units"];
+        for (const char* name : {"deformationOffset", "forceOffset"})
+            if (parameters.contains(name)) {
+                py::dict p = parameters[name].attr("copy")();
+                p["unit"] = unitsOut.contains(name) ? unitsOut[name] : py::str("");
+                out["offsets"][name] = p;
+            }
+    }
     return out;
 }
 
@@ -273,8 +290,10 @@ void bindIdentification(py::module_& m) {
     m.def("calibrate", &calibrate, py::arg("time"), py::arg("deformation"), py::arg("force"),
           py::kw_only(), py::arg("units") = "s,m,kN", py::arg("law") = py::none(),
           py::arg("model") = py::none(), py::arg("progress") = py::none(),
+          py::arg("offsets") = "auto",
           R"doc(Fit a hysteresis law to a measured history over the whole history, as
-`hsmu replay --import DATA --units U --method calibration` does (the same code).
+`hsmu replay --import DATA --units U --method calibration --offsets OFFSETS` does (the same
+code).
 
 time, deformation, force: 1-D arrays of equal length, finite, time increasing; in `units`
 ("TIME,DEFORMATION,FORCE", e.g. "s,mm,kN", or a tuple of three strings; time s, ms or step
@@ -289,6 +308,12 @@ Returns a dict shaped like summary.json's "calibration": "parameters" {name: {"v
 (every parameter of the fitted law), "nrmse", "rmsError" [force unit], "starts", "replays",
 "seconds"; plus "law", "verdict" ("" or why the law cannot represent the specimen) and
 "units" (of the data and of each parameter; Bouc-Wen's are normalised by uRef / fRef).
+offsets: "auto" (the default, as the command's: a deformation and a force offset fitted and
+kept when the data ask for them, docs/method.md "Offsets"), "on" (always kept) or "off" (not
+fitted); any other value raises ValueError. When the offset fit ran, "offsets" holds "used",
+"nrmseWithout", "nrmseWith", "branches" and "criterion", and when kept also
+"deformationOffset" and "forceOffset" ({"value", "stddev", "ci95", "onBound", "unit"}; they
+are among "parameters" and "model" too).
 progress: None or a callable given a dict {"phase", "samples_done", "samples", "refits",
 "rejected", "elapsed_s"} (from a worker thread, with the GIL held) before each phase and
 every 64 samples of an online pass, and once with phase "done" at the end; an exception it

@@ -3,8 +3,11 @@
 # item 4; docs/benchmarks.md, "The strong SDOF against OpenSees"): benchmarks/sdof-opensees.json
 # against ../shared/tools/opensees/examples/sdof_reference.tcl with DT=0.001 (31,160 steps of
 # El Centro, explicit Newmark, a Bouc-Wen spring), run alternately N times each. Each process's
-# CPU time (user + sys), wall time and peak RSS are its rusage from wait4(), what /usr/bin/time
-# prints, unrounded (/usr/bin/time rounds CPU to 10 ms, an eighth of hsmu's run). Prints each
+# CPU time (user + sys) and wall time are its rusage from wait4(), unrounded (/usr/bin/time
+# rounds CPU to 10 ms, a fifth of hsmu's run); each runs under /usr/bin/time, whose %M is its
+# peak RSS: a child forked from this Python script would inherit Python's ~14 MiB as its peak
+# (the kernel keeps the high-water mark across exec); /usr/bin/time's own few hundred
+# microseconds of CPU count for both programs alike. Prints each
 # run, the medians, the CPU ratio and the load average before and after. Exits 0 without
 # measuring when the kit is absent.
 #   scripts/bench-sdof-opensees.sh [N]          (default 5)
@@ -23,6 +26,8 @@ import os, shutil, statistics, subprocess, tempfile
 here, kit, n = os.environ["HERE"], os.environ["KIT"], int(os.environ["N"])
 work = tempfile.mkdtemp()
 def run(args, cwd, env):
+    rss = os.path.join(work, "rss")
+    args = ["/usr/bin/time", "-f", "%M", "-o", rss] + args
     with open(os.path.join(work, "log"), "w") as log:
         p = subprocess.Popen(args, cwd=cwd, env=env, stdout=log, stderr=subprocess.STDOUT)
         import time
@@ -31,7 +36,7 @@ def run(args, cwd, env):
         wall = time.monotonic() - t0
     if status != 0:
         raise SystemExit(f"{args[0]} failed: " + open(os.path.join(work, "log")).read()[-800:])
-    return ru.ru_utime + ru.ru_stime, wall, ru.ru_maxrss / 1024.0
+    return ru.ru_utime + ru.ru_stime, wall, int(open(rss).read().split()[-1]) / 1024.0
 hsmu = [os.environ["HSMU_BIN"], "run", os.path.join(here, "benchmarks/sdof-opensees.json"),
         "--out", os.path.join(work, "hsmu")] + os.environ.get("HSMU_ARGS", "").split()
 ose = [os.path.join(kit, "opensees"), "sdof_reference.tcl"]

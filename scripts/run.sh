@@ -3,12 +3,12 @@
 # condition 3, on the built-in virtual specimen. In a window when a display exists, otherwise
 # headless, printing the summary and writing PNG plots to ./out/paper-condition-3.
 # The El Centro 1940 record is used when ../shared/data holds it, else the built-in record.
-# Only what it runs is built (hsmu, hsmu-console, hsmu-controller and their libraries): the
+# Only what it runs is built (hsmu, hsmu-cli, hsmu-console, hsmu-controller and their libraries): the
 # tests and the benchmarks are scripts/test.sh's.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${HSMU_BUILD_DIR:-$here/build}"
-"$here/scripts/setup.sh" hsmu hsmu-console hsmu-controller
+"$here/scripts/setup.sh" hsmu hsmu-cli hsmu-console hsmu-controller
 
 hsmu="$build_dir/bin/hsmu"
 gm_args=()

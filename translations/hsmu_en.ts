@@ -52,6 +52,10 @@
         <translation>update not applied: the approval queue is full (%1 proposals pending); this and later offers are in the record until the operator decides</translation>
     </message>
     <message>
+        <source>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</source>
+        <translation>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</translation>
+    </message>
+    <message>
         <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
         <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</translation>
     </message>
@@ -921,6 +925,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>update %1 rejected by the operator (%2)</translation>
     </message>
     <message>
+        <source>offsets %1 approved by the operator for %2: %3</source>
+        <translation>offsets %1 approved by the operator for %2: %3</translation>
+    </message>
+    <message>
+        <source>offsets %1 rejected by the operator (%2)</source>
+        <translation>offsets %1 rejected by the operator (%2)</translation>
+    </message>
+    <message>
         <source>bounds changed: %1 -&gt; %2</source>
         <translation>bounds changed: %1 -&gt; %2</translation>
     </message>
@@ -1511,6 +1523,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--telemetry-every: expected a whole number &gt;= 1, got '%1'</source>
         <translation>--telemetry-every: expected a whole number &gt;= 1, got '%1'</translation>
+    </message>
+    <message>
+        <source>With --controller: at T seconds of the run, send new values of the damper twin's parameters (repeatable).</source>
+        <translation>With --controller: at T seconds of the run, send new values of the damper twin's parameters (repeatable).</translation>
+    </message>
+    <message>
+        <source>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin's parameters), got '%1'</source>
+        <translation>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin's parameters), got '%1'</translation>
+    </message>
+    <message>
+        <source>--update needs --controller: it sends the update to the loop hsmu-controller runs</source>
+        <translation>--update needs --controller: it sends the update to the loop hsmu-controller runs</translation>
     </message>
     <message>
         <source>%1/telemetry.csv: cannot be written</source>
@@ -2639,6 +2663,30 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>: stale (older than %1 s), wait for the next proposal</source>
         <translation>: stale (older than %1 s), wait for the next proposal</translation>
     </message>
+    <message>
+        <source>Approve offsets</source>
+        <translation>Approve offsets</translation>
+    </message>
+    <message>
+        <source>Reject offsets</source>
+        <translation>Reject offsets</translation>
+    </message>
+    <message>
+        <source>%1%2 (on its bound, no interval)</source>
+        <translation>%1%2 (on its bound, no interval)</translation>
+    </message>
+    <message>
+        <source>%1 +- %2%3 (95 %)</source>
+        <translation>%1 +- %2%3 (95 %)</translation>
+    </message>
+    <message>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>Offsets #%1 for the twins: u0 = %2, F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PlotElementPicker</name>
@@ -3295,6 +3343,46 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>The RTHS run could not be followed: %1</source>
         <translation>The RTHS run could not be followed: %1</translation>
     </message>
+    <message>
+        <source>Record folder:</source>
+        <translation>Record folder:</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>not recorded</translation>
+    </message>
+    <message>
+        <source>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</source>
+        <translation>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console: %1</source>
+        <translation>Recorded on the controller, not by the console: %1</translation>
+    </message>
+    <message>
+        <source>Not recorded (no record folder)</source>
+        <translation>Not recorded (no record folder)</translation>
+    </message>
+    <message>
+        <source>Recording every tick to %1</source>
+        <translation>Recording every tick to %1</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</source>
+        <translation>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</translation>
+    </message>
+    <message>
+        <source>The record %1 is incomplete: %2</source>
+        <translation>The record %1 is incomplete: %2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 ticks to %2</source>
+        <translation>Recorded %1 ticks to %2</translation>
+    </message>
+    <message>
+        <source>No estimate: the command&apos;s RMS %1 mm is below %2 mm</source>
+        <translation>No estimate: the command&apos;s RMS %1 mm is below %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3313,6 +3401,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
         <translation>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</translation>
+    </message>
+    <message>
+        <source>the record cannot be created in %1: %2</source>
+        <translation>the record cannot be created in %1: %2</translation>
     </message>
 </context>
 <context>
@@ -3740,6 +3832,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>update #%1 is no longer pending</source>
         <translation>update #%1 is no longer pending</translation>
+    </message>
+    <message>
+        <source>offsets #%1 are no longer pending</source>
+        <translation>offsets #%1 are no longer pending</translation>
+    </message>
+    <message>
+        <source>offsets #%1 were not applied: %2</source>
+        <translation>offsets #%1 were not applied: %2</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>

@@ -52,6 +52,10 @@
         <translation>actualización no aplicada: la cola de aprobación está llena (%1 propuestas pendientes); esta y las siguientes ofertas quedan en el registro hasta que el operador decida</translation>
     </message>
     <message>
+        <source>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</source>
+        <translation>desplazamientos de cero propuestos para los gemelos: u0 = %1, F0 = %2 (solo se aplican si el operador los aprueba)</translation>
+    </message>
+    <message>
         <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
         <translation>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) dentro del límite %5</translation>
     </message>
@@ -921,6 +925,14 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>actualización %1 rechazada por el operador (%2)</translation>
     </message>
     <message>
+        <source>offsets %1 approved by the operator for %2: %3</source>
+        <translation>desplazamientos de cero %1 aprobados por el operador para %2: %3</translation>
+    </message>
+    <message>
+        <source>offsets %1 rejected by the operator (%2)</source>
+        <translation>desplazamientos de cero %1 rechazados por el operador (%2)</translation>
+    </message>
+    <message>
         <source>bounds changed: %1 -&gt; %2</source>
         <translation>límites cambiados: %1 -&gt; %2</translation>
     </message>
@@ -1511,6 +1523,18 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
         <translation>--telemetry-every: se esperaba un número entero &gt;= 1, se obtuvo &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>With --controller: at T seconds of the run, send new values of the damper twin&apos;s parameters (repeatable).</source>
+        <translation>Con --controller: a los T segundos del ensayo, envía nuevos valores de los parámetros del gemelo del amortiguador (repetible).</translation>
+    </message>
+    <message>
+        <source>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin&apos;s parameters), got &apos;%1&apos;</source>
+        <translation>--update: se esperaba T:NOMBRE=VALOR[,NOMBRE=VALOR...] (segundos, luego los parámetros del gemelo del amortiguador), se obtuvo &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--update needs --controller: it sends the update to the loop hsmu-controller runs</source>
+        <translation>--update necesita --controller: envía la actualización al lazo que ejecuta hsmu-controller</translation>
     </message>
     <message>
         <source>%1/telemetry.csv: cannot be written</source>
@@ -2639,6 +2663,30 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>: stale (older than %1 s), wait for the next proposal</source>
         <translation>: caducada (más de %1 s), espere la siguiente propuesta</translation>
     </message>
+    <message>
+        <source>Approve offsets</source>
+        <translation>Aprobar desplazamientos de cero</translation>
+    </message>
+    <message>
+        <source>Reject offsets</source>
+        <translation>Rechazar desplazamientos de cero</translation>
+    </message>
+    <message>
+        <source>%1%2 (on its bound, no interval)</source>
+        <translation>%1%2 (en su límite, sin intervalo)</translation>
+    </message>
+    <message>
+        <source>%1 +- %2%3 (95 %)</source>
+        <translation>%1 +- %2%3 (95 %)</translation>
+    </message>
+    <message>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>Desplazamientos de cero #%1 para los gemelos: u0 = %2, F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>Hallados en t = %1 s (paso %2) sobre %3 muestras; NRMSE del espécimen %4 sin ellos, %5 con ellos. Llegan a los gemelos (F = F_ley(u - u0) + F0) solo si usted los aprueba, sea cual sea la política.</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PlotElementPicker</name>
@@ -3295,6 +3343,46 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <source>The RTHS run could not be followed: %1</source>
         <translation>No se pudo seguir el ensayo RTHS: %1</translation>
     </message>
+    <message>
+        <source>Record folder:</source>
+        <translation>Carpeta del registro:</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>sin registro</translation>
+    </message>
+    <message>
+        <source>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</source>
+        <translation>Cada tic de un ensayo iniciado desde esta vista se escribe en record.h5 en esta carpeta (record-2.h5, record-3.h5, ... si ya existe: nada se sobrescribe); vacía: sin registro</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console: %1</source>
+        <translation>Lo registra el controlador, no la consola: %1</translation>
+    </message>
+    <message>
+        <source>Not recorded (no record folder)</source>
+        <translation>Sin registro (no hay carpeta del registro)</translation>
+    </message>
+    <message>
+        <source>Recording every tick to %1</source>
+        <translation>Registrando cada tic en %1</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</source>
+        <translation>Lo registra el controlador, no la consola (esperando la descripción del controlador)</translation>
+    </message>
+    <message>
+        <source>The record %1 is incomplete: %2</source>
+        <translation>El registro %1 está incompleto: %2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 ticks to %2</source>
+        <translation>%1 tics registrados en %2</translation>
+    </message>
+    <message>
+        <source>No estimate: the command&apos;s RMS %1 mm is below %2 mm</source>
+        <translation>Sin estimación: el RMS de la consigna, %1 mm, está por debajo de %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3313,6 +3401,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
         <translation>se perdió el enlace con el controlador: %1 (el controlador detiene el lazo según su política --monitor-loss)</translation>
+    </message>
+    <message>
+        <source>the record cannot be created in %1: %2</source>
+        <translation>no se puede crear el registro en %1: %2</translation>
     </message>
 </context>
 <context>
@@ -3740,6 +3832,14 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>update #%1 is no longer pending</source>
         <translation>la actualización #%1 ya no está pendiente</translation>
+    </message>
+    <message>
+        <source>offsets #%1 are no longer pending</source>
+        <translation>los desplazamientos de cero #%1 ya no están pendientes</translation>
+    </message>
+    <message>
+        <source>offsets #%1 were not applied: %2</source>
+        <translation>los desplazamientos de cero #%1 no se aplicaron: %2</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>

@@ -52,6 +52,10 @@
         <translation>更新未应用：审批队列已满（%1 个提议待定）；此后的提议在操作员决定前都会记录</translation>
     </message>
     <message>
+        <source>offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the operator approves them)</source>
+        <translation>为孪生模型提议的偏移：u0 = %1，F0 = %2（仅在操作员批准后才应用）</translation>
+    </message>
+    <message>
         <source>%1: omega_max dt = %2 (omega_max = %3 rad/s, dt = %4 s) within the limit %5</source>
         <translation>%1：omega_max dt = %2（omega_max = %3 rad/s，dt = %4 s）在极限 %5 之内</translation>
     </message>
@@ -921,6 +925,14 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>操作员拒绝了更新 %1（%2）</translation>
     </message>
     <message>
+        <source>offsets %1 approved by the operator for %2: %3</source>
+        <translation>操作员为 %2 批准了偏移 %1：%3</translation>
+    </message>
+    <message>
+        <source>offsets %1 rejected by the operator (%2)</source>
+        <translation>操作员拒绝了偏移 %1（%2）</translation>
+    </message>
+    <message>
         <source>bounds changed: %1 -&gt; %2</source>
         <translation>界限已更改：%1 -&gt; %2</translation>
     </message>
@@ -1511,6 +1523,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>--telemetry-every: expected a whole number &gt;= 1, got &apos;%1&apos;</source>
         <translation>--telemetry-every：应为 &gt;= 1 的整数，得到 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>With --controller: at T seconds of the run, send new values of the damper twin&apos;s parameters (repeatable).</source>
+        <translation>与 --controller 一起使用：在试验的第 T 秒发送阻尼器孪生模型参数的新值（可重复）。</translation>
+    </message>
+    <message>
+        <source>--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin&apos;s parameters), got &apos;%1&apos;</source>
+        <translation>--update：应为 T:名称=值[,名称=值...]（秒，然后是阻尼器孪生模型的参数），得到 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--update needs --controller: it sends the update to the loop hsmu-controller runs</source>
+        <translation>--update 需要 --controller：它把更新发送给 hsmu-controller 运行的回路</translation>
     </message>
     <message>
         <source>%1/telemetry.csv: cannot be written</source>
@@ -2636,6 +2660,30 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>: stale (older than %1 s), wait for the next proposal</source>
         <translation>：已过期（超过 %1 s），请等待下一个建议</translation>
     </message>
+    <message>
+        <source>Approve offsets</source>
+        <translation>批准偏移</translation>
+    </message>
+    <message>
+        <source>Reject offsets</source>
+        <translation>拒绝偏移</translation>
+    </message>
+    <message>
+        <source>%1%2 (on its bound, no interval)</source>
+        <translation>%1%2（位于边界，无区间）</translation>
+    </message>
+    <message>
+        <source>%1 +- %2%3 (95 %)</source>
+        <translation>%1 +- %2%3（95 %）</translation>
+    </message>
+    <message>
+        <source>Offsets #%1 for the twins: u0 = %2, F0 = %3</source>
+        <translation>孪生模型的偏移 #%1：u0 = %2，F0 = %3</translation>
+    </message>
+    <message>
+        <source>Found at t = %1 s (step %2) on %3 samples; the specimen&apos;s NRMSE %4 without them, %5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve them, whatever the policy.</source>
+        <translation>于 t = %1 s（第 %2 步）基于 %3 个样本得到；试件的 NRMSE 不含偏移为 %4，含偏移为 %5。无论采用何种策略，只有经您批准后才会应用到孪生模型（F = F_law(u - u0) + F0）。</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::PlotElementPicker</name>
@@ -3292,6 +3340,46 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <source>The RTHS run could not be followed: %1</source>
         <translation>无法跟踪该 RTHS 试验：%1</translation>
     </message>
+    <message>
+        <source>Record folder:</source>
+        <translation>记录文件夹：</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>不记录</translation>
+    </message>
+    <message>
+        <source>Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded</source>
+        <translation>从此视图启动的试验的每个节拍写入此文件夹中的 record.h5（已存在时写入 record-2.h5、record-3.h5……：不覆盖任何文件）；留空：不记录</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console: %1</source>
+        <translation>由控制器记录，而非控制台：%1</translation>
+    </message>
+    <message>
+        <source>Not recorded (no record folder)</source>
+        <translation>不记录（未指定记录文件夹）</translation>
+    </message>
+    <message>
+        <source>Recording every tick to %1</source>
+        <translation>正在将每个节拍记录到 %1</translation>
+    </message>
+    <message>
+        <source>Recorded on the controller, not by the console (waiting for the controller&apos;s description)</source>
+        <translation>由控制器记录，而非控制台（正在等待控制器的描述）</translation>
+    </message>
+    <message>
+        <source>The record %1 is incomplete: %2</source>
+        <translation>记录 %1 不完整：%2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 ticks to %2</source>
+        <translation>已将 %1 个节拍记录到 %2</translation>
+    </message>
+    <message>
+        <source>No estimate: the command&apos;s RMS %1 mm is below %2 mm</source>
+        <translation>无估计：指令的均方根 %1 mm 低于 %2 mm</translation>
+    </message>
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
@@ -3310,6 +3398,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)</source>
         <translation>与控制器的链路已断开：%1（控制器按其 --monitor-loss 策略保持回路）</translation>
+    </message>
+    <message>
+        <source>the record cannot be created in %1: %2</source>
+        <translation>无法在 %1 中创建记录：%2</translation>
     </message>
 </context>
 <context>
@@ -3737,6 +3829,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>update #%1 is no longer pending</source>
         <translation>更新 #%1 已不再待处理</translation>
+    </message>
+    <message>
+        <source>offsets #%1 are no longer pending</source>
+        <translation>偏移 #%1 已不再待定</translation>
+    </message>
+    <message>
+        <source>offsets #%1 were not applied: %2</source>
+        <translation>偏移 #%1 未应用：%2</translation>
     </message>
     <message>
         <source>the fit-error threshold must be a positive number</source>

@@ -49,6 +49,7 @@ bool ControllerApp::startRths(const std::string& token, std::string& error) {
         job.partition = cfg.partition();
         job.groundMotion = loadRthsGroundMotion(cfg, "", cfg.groundMotionScale);
         job.holdAfterMisses = cfg.holdAfterMisses;
+        job.identification = cfg.identification;
         job.configuration = cfg.raw.dump();
         const rths::Preflight pre = rths::preflight(job.partition, job.settings);
         std::fprintf(stderr, "hsmu-controller: pre-flight: %s\n", pre.message.c_str());
@@ -113,27 +114,40 @@ bool ControllerApp::start(std::string& error) {
         const auto pace =
             m_cmd.fast ? SpecimenStation::Pace::Fast : SpecimenStation::Pace::RealTime;
         const auto& rawElements = cfg.raw.at("structure").at("elements");
+        std::string linkOverOpenFresco; // a link2d specimen served over an OpenFresco protocol
         for (std::size_t i = 0; i < cfg.elements.size(); ++i) {
             const ElementSpec& e = cfg.elements[i];
             if (!e.experimental)
                 continue;
-            if (e.link2d) {
-                error = m_cmd.config + ": element '" + e.name +
-                        "': a link2d specimen (several actuator channels through a setup) is "
-                        "not served by hsmu-controller yet; run it on the built-in virtual lab "
-                        "(docs/setups.md, \"Multi-DOF elements\")";
-                return false;
-            }
+            if (e.link2d && protocol != "native" && !protocol.empty())
+                linkOverOpenFresco = e.name;
             const int index = static_cast<int>(stations.size());
-            stations.push_back(
-                std::make_unique<SpecimenStation>(index, e, settings, pace, m_journal.get()));
+            // A specimen of several channels keeps no journal (SpecimenStation.h).
+            stations.push_back(std::make_unique<SpecimenStation>(
+                index, e, settings, pace, e.link2d ? nullptr : m_journal.get()));
+            const auto& raw = rawElements.at(i);
             identities.push_back(
-                {e.name, StateJournal::fingerprint(e.name + "\n" +
-                                                   rawElements.at(i).at("specimen").dump())});
+                {e.name, StateJournal::fingerprint(
+                             e.name + "\n" + (e.link2d ? raw : raw.at("specimen")).dump())});
             m_names += (m_names.empty() ? "" : ", ") + e.name;
         }
         if (stations.empty()) {
             error = m_cmd.config + ": no experimental element (\"experimental\": true) to emulate";
+            return false;
+        }
+        // An OpenFresco server gives a link2d specimen's channels to its client as its DOFs
+        // (OfServer.h): that specimen alone, without controller.serverDofs.
+        const bool serverDofs = cfg.raw.contains("controller") &&
+                                cfg.raw.at("controller").is_object() &&
+                                cfg.raw.at("controller").contains("serverDofs");
+        if (!linkOverOpenFresco.empty() && (stations.size() > 1 || serverDofs)) {
+            error = m_cmd.config + ": element '" + linkOverOpenFresco +
+                    "': a link2d specimen (several actuator channels) is served over --protocol " +
+                    protocol + " alone, its channels the client's DOFs: " +
+                    (serverDofs ? std::string("remove controller.serverDofs")
+                                : "serve the other experimental elements by another "
+                                  "hsmu-controller, or use the native protocol") +
+                    " (docs/setups.md, \"hsmu-controller\")";
             return false;
         }
         std::vector<std::string> names;

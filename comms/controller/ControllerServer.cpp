@@ -252,7 +252,9 @@ struct ControllerServer::Impl final : SessionHost {
                 });
                 reply.reset();
             }
-        } else if (const auto* c = std::get_if<CommitMsg>(&m))
+        } else if (const auto* ts = std::get_if<TargetsMsg>(&m))
+            reply = st.targets(*ts);
+        else if (const auto* c = std::get_if<CommitMsg>(&m))
             reply = st.commit(*c);
         else if (const auto* h = std::get_if<HoldMsg>(&m)) {
             reply = st.hold(h->reason);

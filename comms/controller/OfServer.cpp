@@ -19,9 +19,7 @@ using namespace of;
 
 namespace {
 
-constexpr double kHeaderTimeout = 10.0; // [s] from connect to the sizes header
-constexpr double kWriteTimeout = 10.0;  // [s] for a reply
-constexpr long kLoggedInitLines = 16;   // GenericTCP init lines logged per session
+constexpr long kLoggedInitLines = 16; // GenericTCP init lines logged per session
 
 volatile std::sig_atomic_t g_signalled = 0;
 
@@ -52,7 +50,11 @@ std::string OfServer::describe() const {
     std::string role = m_opt.protocol == OfProtocol::GenericTcp ? "generictcp server"
                        : m_opt.siteServer                       ? "simapp site server"
                                                                 : "simapp element server";
-    return role + ", dataSize " + std::to_string(m_opt.dataSize) + ", " + m_opt.dofs.describe();
+    const ChannelRig* rig = channelRig();
+    return role + ", dataSize " + std::to_string(m_opt.dataSize) + ", " +
+           (rig ? std::to_string(rig->channels()) + " actuator channels of '" +
+                      m_stations[0]->name() + "'"
+                : m_opt.dofs.describe());
 }
 
 void OfServer::log(const std::string& line) const {
@@ -117,52 +119,6 @@ std::string OfServer::idleText() const {
     return std::string("idle for ") + buf + " s while another client waits";
 }
 
-bool OfServer::acceptHeader(OfSocket& socket, std::string& why) {
-    std::uint8_t bytes[kSizesBytes];
-    if (!socket.read(bytes, sizeof bytes, kHeaderTimeout, why)) {
-        why = "no sizes header: " + why;
-        return false;
-    }
-    m_lastFrame = std::chrono::steady_clock::now();
-    const OfSizes s = decodeSizes(bytes);
-    m_sizes = OfSizes{};
-    m_sizes.dataSize = 0; // no frames can be exchanged (refuse() closes at once)
-    if (auto p = s.problem()) {
-        why = "sizes header " + s.describe() + ": " + *p;
-        return false;
-    }
-    m_sizes = s;
-    const int n = m_opt.dofs.dofs();
-    const std::string N = std::to_string(n);
-    auto bad = [&](const std::string& what) {
-        why = "sizes header " + s.describe() + " refused: " + what;
-        return false;
-    };
-    if (s.dataSize != m_opt.dataSize)
-        return bad("the client's dataSize is " + std::to_string(s.dataSize) + ", this server's " +
-                   std::to_string(m_opt.dataSize) +
-                   " (--data-size or controller.dataSize; OpenSees: -dataSize)");
-    const int c = s.ctrlSize(Resp::Disp);
-    if (c != n)
-        return bad("the client has " + std::to_string(c) + " control DOF" + (c == 1 ? "" : "s") +
-                   " (ctrl disp " + std::to_string(c) + "), this server serves " + N + " (" +
-                   m_opt.dofs.describe() + "); list the client's " + std::to_string(c) +
-                   " DOFs in controller.serverDofs, one entry per DOF in the client's order, "
-                   "e.g. [{\"specimen\": \"" +
-                   m_stations[0]->name() + "\", \"factor\": -1}, {\"specimen\": \"" +
-                   m_stations[0]->name() + "\"}] for a two-node element");
-    for (Resp r : {Resp::Disp, Resp::Vel, Resp::Accel, Resp::Force})
-        if (s.daqSize(r) != 0 && s.daqSize(r) != n)
-            return bad("daq sizes must be 0 or the " + N + " DOFs of this server (" +
-                       m_opt.dofs.describe() + ")");
-    if (s.daqSize(Resp::Time) > 1)
-        return bad("daq time must be 0 or 1");
-    if (m_opt.protocol == OfProtocol::SimApp && !m_opt.siteServer && s.dataSize < n * n)
-        return bad("an element server of " + N +
-                   " DOFs needs dataSize >= n * n = " + std::to_string(n * n));
-    return true;
-}
-
 void OfServer::serve(OfSocket& socket) {
     std::string why;
     const std::string peer = socket.peer(); // "" once the socket is closed
@@ -188,13 +144,24 @@ void OfServer::serve(OfSocket& socket) {
     for (auto& m : m_measured)
         m = MeasurementMsg{};
     std::fill(m_commanded.begin(), m_commanded.end(), 0.0);
-    m_ctrl.assign(static_cast<std::size_t>(m_opt.dofs.dofs()), 0.0);
+    m_ctrl.assign(static_cast<std::size_t>(dofCount()), 0.0);
+    m_measuredN = MeasurementsMsg{};
 
     const std::size_t frameBytes = static_cast<std::size_t>(m_sizes.dataSize) * sizeof(double);
     std::vector<std::uint8_t> buffer(std::max(frameBytes, kInitLineBytes));
     std::vector<double> frame, reply;
     std::vector<std::uint8_t> out;
     const bool generic = m_opt.protocol == OfProtocol::GenericTcp;
+    // Whatever ends the session other than 99 leaves every actuator holding (OfServer.h).
+    bool terminated = false;
+    struct HoldOnExit {
+        OfServer* server;
+        const bool& terminated;
+        ~HoldOnExit() {
+            if (!terminated)
+                server->holdAfterSession("the OpenFresco session ended without 99");
+        }
+    } holdOnExit{this, terminated};
     bool framesStarted = false;
     bool trialSeen = false; // until the first trial, a getDaqResponse is the console's probe
     long initLines = 0;
@@ -279,6 +246,7 @@ void OfServer::serve(OfSocket& socket) {
             break;
         case Action::Terminate:
             log("session " + socket.peer() + " terminated by the client (99)");
+            terminated = true;
             return;
         case Action::Open:
         case Action::Setup:
@@ -304,6 +272,8 @@ bool OfServer::trial(const std::vector<double>& frame, std::string& why) {
     const std::size_t n = m_stations.size();
     if (m_opt.protocol == OfProtocol::GenericTcp && m_haveTrial && !commitAll(why))
         return false;
+    if (channelRig())
+        return trialChannels(frame, why);
     const auto first = static_cast<std::size_t>(m_sizes.ctrlIndex(Resp::Disp));
     for (std::size_t i = 0; i < m_ctrl.size(); ++i) {
         m_ctrl[i] = frame[first + i];
@@ -374,15 +344,10 @@ bool OfServer::commitAll(std::string& why) {
 std::vector<double> OfServer::daqReply(int first, int last) const {
     // [disp..., vel..., accel..., force..., time], each part as long as its daq size (6), or
     // n values (1 for time) when asked for alone (7-11); n = the client's DOFs.
-    const std::size_t n = static_cast<std::size_t>(m_opt.dofs.dofs());
+    const std::size_t n = static_cast<std::size_t>(dofCount());
     const bool whole = last - first > 1;
-    std::vector<double> dm(m_stations.size()), fm(m_stations.size());
-    for (std::size_t s = 0; s < m_stations.size(); ++s) {
-        dm[s] = m_measured[s].deformation;
-        fm[s] = m_measured[s].force;
-    }
-    const std::vector<double> disp = m_opt.dofs.measuredDisp(m_ctrl, dm, m_commanded);
-    const std::vector<double> force = m_opt.dofs.forces(fm);
+    std::vector<double> disp, force;
+    measuredDofs(disp, force);
     std::vector<double> v;
     for (int k = first; k < last; ++k) {
         const Resp r = static_cast<Resp>(k);
@@ -404,61 +369,22 @@ std::vector<double> OfServer::daqReply(int first, int last) const {
 }
 
 std::vector<double> OfServer::matrix(int action) const {
-    const std::size_t n = static_cast<std::size_t>(m_opt.dofs.dofs());
-    if (action != static_cast<int>(Action::GetInitialStiff) &&
-        action != static_cast<int>(Action::GetTangentStiff))
+    const std::size_t n = static_cast<std::size_t>(dofCount());
+    const bool initial = action == static_cast<int>(Action::GetInitialStiff);
+    if (!initial && action != static_cast<int>(Action::GetTangentStiff))
         return std::vector<double>(n * n, 0.0); // damping, mass
+    if (const ChannelRig* rig = channelRig()) { // diag of the actuators' tangents
+        std::vector<double> K(n * n, 0.0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const HysteresisLaw& law = *rig->lab().actuator(static_cast<int>(i)).law;
+            K[i * n + i] = initial ? law.initialTangent() : law.algorithmicTangent();
+        }
+        return K;
+    }
     std::vector<double> k(m_stations.size());
     for (std::size_t s = 0; s < m_stations.size(); ++s)
-        k[s] = action == static_cast<int>(Action::GetInitialStiff)
-                   ? m_stations[s]->initialStiffness()
-                   : m_stations[s]->tangentStiffness();
+        k[s] = initial ? m_stations[s]->initialStiffness() : m_stations[s]->tangentStiffness();
     return m_opt.dofs.stiffness(k); // column-major
-}
-
-void OfServer::refuse(OfSocket& socket) {
-    if (m_sizes.dataSize < 1)
-        return;                           // sizes that cannot frame anything: close
-    constexpr double kRefusedIdle = 10.0; // [s] without a frame before a refused session closes
-    const bool generic = m_opt.protocol == OfProtocol::GenericTcp;
-    const std::size_t frameBytes = static_cast<std::size_t>(m_sizes.dataSize) * sizeof(double);
-    std::vector<std::uint8_t> buffer(std::max(frameBytes, kInitLineBytes)), out;
-    std::vector<double> frame;
-    const std::vector<double> nan(static_cast<std::size_t>(m_sizes.dataSize),
-                                  std::numeric_limits<double>::quiet_NaN());
-    std::string why, error;
-    const std::string peer = socket.peer(); // "" once the socket is closed
-    long answered = 0;
-    for (bool framesStarted = false;;) {
-        if (!socket.read(buffer.data(), 8, kRefusedIdle, why))
-            break;
-        const bool isFrame = startsWithCode(buffer.data());
-        if (!isFrame && (!generic || framesStarted))
-            break; // not a frame of these sizes: the stream cannot be followed
-        const std::size_t total = isFrame ? frameBytes : kInitLineBytes;
-        if (total > 8 && !socket.read(buffer.data() + 8, total - 8, kRefusedIdle, why))
-            break;
-        m_lastFrame = std::chrono::steady_clock::now();
-        if (!isFrame)
-            continue;
-        framesStarted = true;
-        decodeFrame(buffer.data(), m_sizes.dataSize, frame);
-        const auto action = actionOf(frame[0]);
-        if (!action || *action == Action::Terminate)
-            break;
-        const int code = static_cast<int>(*action);
-        const bool replies = (code >= 6 && code <= 11) ||
-                             (code >= 12 && code <= 15 && !generic && !m_opt.siteServer);
-        if (!replies)
-            continue;
-        if (!encodeFrame(nan, m_sizes.dataSize, out, error) ||
-            !socket.write(out.data(), out.size(), kWriteTimeout, error))
-            break;
-        ++answered;
-    }
-    if (answered > 0 || m_replaced)
-        log("refused session " + peer + " ended" + (m_replaced ? " (" + idleText() + ")" : "") +
-            "; " + std::to_string(answered) + " request(s) answered with NaN");
 }
 
 } // namespace hsmu::comms

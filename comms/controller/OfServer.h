@@ -33,8 +33,20 @@
 //            another client is waiting to connect: then a session with no frame for
 //            idleTimeout (controller.idleTimeout) is closed (logged) and the next is served.
 //   faults   an interlock trip, a non-finite value, an unknown code or a peer that closes
-//            mid-frame: logged, the connection is closed, the stations keep their state.
+//            mid-frame: logged, the connection is closed, every station holds at its
+//            committed state (as after any session that does not end by 99; see below).
 // Real-time pace runs a step's ticks at the loop rate when its trial arrives.
+// N actuator channels (a link2d specimen, ChannelRig; OfServerChannels.cpp): the specimen is
+// served alone and its channels are the client's DOFs, in configuration order, with
+// OpenFresco's sizes for a setup of N actuators: ctrl disp N, and ctrl force N when a channel
+// is force-controlled (else 0 or N); daq disp and daq force 0 or N. A trial takes each
+// displacement-controlled channel's stroke [m] from its ctrl disp entry and each
+// force-controlled channel's force [kN] from its ctrl force entry (the channel modes are this
+// server's configuration; the other entry of a channel is ignored); the daq reply carries the
+// measured strokes and forces; 12-15 (element server) the diagonal of the actuators'
+// materials' tangents (damping and mass 0). A session that ends other than by 99 (a dropped or
+// shut-down link, a fault) leaves every actuator holding at its committed stroke and force
+// (logged with the committed step and each channel's committed command).
 // Thread rules: listen() and run() on one thread; stop() from any thread (and SIGINT/SIGTERM).
 
 #include "comms/controller/ControllerServer.h"
@@ -45,6 +57,7 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,6 +102,7 @@ public:
     std::string describe() const;
 
 private:
+    static constexpr double kWriteTimeout = 10.0; ///< [s] for a reply
     void serve(of::OfSocket& socket);
     bool acceptHeader(of::OfSocket& socket, std::string& why);
     /// Answer a refused client's requests with NaN until it ends (see the header).
@@ -102,6 +116,16 @@ private:
     /// another client waits (then m_replaced is set).
     bool cancelled();
     std::string idleText() const;
+    /// The client's DOFs: the N channels of a link2d specimen, else the OfDofMap's.
+    int dofCount() const;
+    // N actuator channels (OfServerChannels.cpp; nullptr / unused for one-channel stations).
+    const ChannelRig* channelRig() const;
+    std::optional<std::string> channelSizesProblem(const of::OfSizes& s) const;
+    bool trialChannels(const std::vector<double>& frame, std::string& why);
+    /// Per DOF: the measured displacement and force of the last trial.
+    void measuredDofs(std::vector<double>& disp, std::vector<double>& force) const;
+    /// After a session that did not end by 99: every station holds (logged).
+    void holdAfterSession(const std::string& why);
 
     OfServerOptions m_opt;
     std::vector<std::unique_ptr<SpecimenStation>> m_stations;
@@ -109,6 +133,7 @@ private:
     std::atomic<bool> m_stop{false};
     of::OfSizes m_sizes;
     std::vector<MeasurementMsg> m_measured;
+    MeasurementsMsg m_measuredN;     ///< N channels: the last trial's measurements
     std::vector<double> m_commanded; ///< per station: the last trial's deformation
     std::vector<double> m_ctrl;      ///< per DOF: the last trial's ctrl disp
     bool m_haveTrial = false;        ///< a measured trial not yet committed

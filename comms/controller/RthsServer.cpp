@@ -14,10 +14,11 @@
 #include <boost/asio/signal_set.hpp>
 
 #include <atomic>
+#include <mutex>
+#include <utility>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -29,7 +30,26 @@ namespace asio = boost::asio;
 namespace {
 /// How often the io thread drains the telemetry ring and looks for the run's end.
 constexpr auto kPoll = std::chrono::milliseconds(2);
-}
+
+/// The twin update decisions of the loop, for the io thread (rare: a short lock each).
+class UpdateOutbox final : public rths::TickObserver {
+public:
+    void onTick(long, const rths::RthsTick&,
+                const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>&) override {}
+    void onUpdate(long, const UpdateEvent& e) override {
+        std::lock_guard lock(m_mutex);
+        m_events.push_back(e);
+    }
+    std::vector<UpdateEvent> take() {
+        std::lock_guard lock(m_mutex);
+        return std::exchange(m_events, {});
+    }
+
+private:
+    std::mutex m_mutex;
+    std::vector<UpdateEvent> m_events;
+};
+} // namespace
 
 struct RthsServer::Impl final : SessionHost {
     RthsServerOptions opt;
@@ -51,7 +71,11 @@ struct RthsServer::Impl final : SessionHost {
     std::unique_ptr<RecordWriter> record;             // --record: this run's record.h5
     std::unique_ptr<rths::RthsRecordFeed> recordFeed; // its ticks, from the loop's thread
     std::string recordPath;
-    rths::TickObservers observers;                    // feed, then recordFeed
+    rths::TickObservers observers;                    // feed, then recordFeed, then outbox
+    UpdateOutbox outbox;                              // the twin's update decisions
+    std::unique_ptr<rths::PostedTwinUpdates> posted;  // the monitor's rths-update
+    std::unique_ptr<rths::TwinIdentification> identification; // the damper's, online
+    rths::TwinUpdateSources sources;                  // identification, then posted
     std::thread loop;
     std::atomic<bool> finished{false};
     bool running = false;
@@ -67,7 +91,9 @@ struct RthsServer::Impl final : SessionHost {
     std::string describe() const {
         std::ostringstream o;
         o << "RTHS loop '" << job.name << "', " << job.settings.rate << " Hz, "
-          << job.groundMotion.duration() << " s record";
+          << job.groundMotion.duration() << " s record, "
+          << (opt.recordDirectory.empty() ? std::string("no record on the controller")
+                                          : "recording each run in " + opt.recordDirectory);
         return o.str();
     }
 
@@ -122,6 +148,8 @@ struct RthsServer::Impl final : SessionHost {
             requestHold("emergency hold (" + e->reason + ")");
             return AckMsg{MessageType::EmergencyHold, 0};
         }
+        if (const auto* u = std::get_if<RthsUpdateMsg>(&m))
+            return update(*u);
         (void)s;
         if (std::holds_alternative<ResumeMsg>(m))
             return ErrorMsg{ErrorCode::ProtocolViolation,
@@ -129,6 +157,19 @@ struct RthsServer::Impl final : SessionHost {
         return ErrorMsg{ErrorCode::ProtocolViolation, std::string("unexpected ") +
                                                           messageTypeName(messageTypeOf(m)) +
                                                           " on an RTHS controller"};
+    }
+
+    /// rths-update: checked now (refused: nothing applied), applied before the next tick.
+    std::optional<Message> update(const RthsUpdateMsg& m) {
+        if (!running || !posted || finished.load(std::memory_order_acquire))
+            return ErrorMsg{ErrorCode::UpdateRefused, "rths-update refused: no run in progress; nothing applied"};
+        rths::TwinUpdate u{m.names, m.values, "operator", 0};
+        if (const std::string why = rths::checkTwinUpdate(job.settings.damper, u); !why.empty()) {
+            log("rths-update refused: " + why + "; nothing applied");
+            return ErrorMsg{ErrorCode::UpdateRefused, "rths-update refused: " + why + "; nothing applied"};
+        }
+        posted->post(std::move(u));
+        return AckMsg{MessageType::RthsUpdate, 0};
     }
 
     void requestHold(const std::string& why) {
@@ -184,6 +225,22 @@ struct RthsServer::Impl final : SessionHost {
         observers = {};
         observers.add(feed.get());
         observers.add(recordFeed.get());
+        observers.add(&outbox);
+        outbox.take();
+        sources = {};
+        posted.reset();
+        identification.reset();
+        if (job.settings.damper.enabled) {
+            if (job.identification.enabled) {
+                rths::TwinIdentificationSettings is = job.identification;
+                is.wait = !opt.realTime;
+                identification = std::make_unique<rths::TwinIdentification>(job.settings.damper, is,
+                                                                            job.settings.rate);
+                sources.add(identification.get());
+            }
+            posted = std::make_unique<rths::PostedTwinUpdates>(!opt.realTime);
+            sources.add(posted.get());
+        }
         finished = false;
         running = true;
         holdAsked.clear();
@@ -197,7 +254,7 @@ struct RthsServer::Impl final : SessionHost {
             try {
                 rths::TickGate* g = fastGate ? static_cast<rths::TickGate*>(fastGate.get()) : gate.get();
                 result = rths::runRths(job.partition, job.groundMotion, job.settings, g,
-                                       duration, &observers);
+                                       duration, &observers, sources.empty() ? nullptr : &sources);
             } catch (const std::exception& e) {
                 result = {};
                 loopError = e.what();
@@ -216,30 +273,16 @@ struct RthsServer::Impl final : SessionHost {
     /// The first free DIR/record.h5, DIR/record-2.h5, ... (an earlier run's record is never
     /// overwritten), opened for this run; false with the reason.
     bool openRecord(double h, std::string& error) {
-        namespace fs = std::filesystem;
-        std::error_code ec;
-        fs::create_directories(opt.recordDirectory, ec);
-        if (ec) {
-            error = "cannot create the record folder " + opt.recordDirectory + ": " + ec.message();
-            return false;
-        }
-        for (int n = 1;; ++n) {
-            const fs::path p = fs::path(opt.recordDirectory) /
-                               (n == 1 ? std::string("record.h5") : "record-" + std::to_string(n) + ".h5");
-            if (!fs::exists(p, ec)) {
-                recordPath = p.string();
-                break;
-            }
-        }
         const auto floors = int(job.partition.reference.m.rows());
         try {
+            recordPath = rths::firstFreeRecordPath(opt.recordDirectory);
             record = std::make_unique<RecordWriter>(recordPath, rths::rthsLayout(floors),
                                                     RecordStart{job.configuration, job.name, {}, h});
         } catch (const std::exception& e) {
             error = e.what();
             return false;
         }
-        recordFeed = std::make_unique<rths::RthsRecordFeed>(*record, job.groundMotion, floors);
+        recordFeed = std::make_unique<rths::RthsRecordFeed>(*record, job.groundMotion, floors, record.get());
         return true;
     }
 
@@ -274,6 +317,12 @@ struct RthsServer::Impl final : SessionHost {
     }
 
     void drain() {
+        for (const UpdateEvent& e : outbox.take()) {
+            log(rths::describeTwinUpdate(e));
+            if (monitor)
+                monitor->send(RthsUpdateAppliedMsg{std::uint64_t(e.step), e.ok, e.message,
+                                                   e.parameters.names(), e.applied});
+        }
         // Into the monitor's send queue only while it is below half its cap: a monitor that reads
         // slower than the loop makes (the fast pace) leaves the samples in the ring, where the
         // fast pace's gate waits for them and the real-time pace drops and counts them.
@@ -295,6 +344,18 @@ struct RthsServer::Impl final : SessionHost {
 
     void endRun() {
         loop.join();
+        if (posted) // asked for while the last tick ran: the run ended first
+            for (const rths::TwinUpdate& u : posted->takeAll()) {
+                UpdateEvent e{int(result.time.size()), 0.0, "damper twin", ParameterLayout(u.names), u.values, false,
+                              u.source + ": the run ended before its next tick; nothing applied"};
+                e.decision = UpdateDecision::Refused;
+                outbox.onUpdate(0, e);
+            }
+        if (identification) {
+            if (!identification->failure().empty())
+                log(identification->failure());
+            identification.reset(); // its worker stops
+        }
         closeRecord();
         drain();
         running = false;

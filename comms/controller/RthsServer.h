@@ -17,12 +17,18 @@
 //     RthsRecordFeed and RecordWriter as `hsmu rths --out`), a hold as its critical alarm;
 //     a record that cannot be created refuses the run (Error) before it starts;
 //   - the monitor's link lost during a run: the loop holds (holdOnMonitorLoss, the default)
-//     or goes on, logged on stderr either way.
+//     or goes on, logged on stderr either way;
+//   - with a damper twin (RthsSettings::damper): rths-update from the monitor is checked at
+//     once (checkTwinUpdate: refused with Error(UpdateRefused), nothing applied) and applied
+//     before the loop's next tick; the online identification (job.identification) offers its
+//     estimates alike; every decision goes to the monitor (rths-update-applied), to stderr and
+//     to the record's notes, with its tick.
 // Thread rules: construct, listen() and run() on one thread; stop() from any thread.
 
 #include "core/groundmotion/GroundMotion.h"
 #include "core/rths/Partition.h"
 #include "core/rths/RthsLoop.h"
+#include "core/updating/TwinIdentification.h"
 
 #include <cstdint>
 #include <memory>
@@ -52,6 +58,7 @@ struct RthsJob {
     GroundMotion groundMotion;
     rths::RthsSettings settings; ///< prepared (fitToNominalLoop)
     int holdAfterMisses = 10;    ///< deadline misses before the pacer holds; 0: never
+    rths::TwinIdentificationSettings identification; ///< of the damper's twin (wait: the fast pace)
     std::string configuration;   ///< the configuration's JSON as given (the record keeps it)
 };
 

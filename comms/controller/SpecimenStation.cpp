@@ -49,6 +49,12 @@ SpecimenStation::SpecimenStation(int index, const ElementSpec& spec,
 SpecimenStation::~SpecimenStation() = default;
 
 void SpecimenStation::makeSpecimen() {
+    if (m_spec.link2d) {
+        m_rig = std::make_unique<ChannelRig>(m_spec);
+        if (m_dt > 0.0)
+            m_rig->prepare(m_dt);
+        return;
+    }
     // The station models the actuator (at the loop rate) and the interlock itself; the core
     // specimen contributes the law, the noise and the fracture event.
     VirtualSpecimenOptions o = m_spec.specimen.options;
@@ -61,11 +67,13 @@ void SpecimenStation::makeSpecimen() {
 }
 
 double SpecimenStation::initialStiffness() const {
-    return m_specimen->trueLaw().initialTangent();
+    return m_rig ? m_rig->lab().actuator(0).law->initialTangent()
+                 : m_specimen->trueLaw().initialTangent();
 }
 
 double SpecimenStation::tangentStiffness() const {
-    return m_specimen->trueLaw().algorithmicTangent();
+    return m_rig ? m_rig->lab().actuator(0).law->algorithmicTangent()
+                 : m_specimen->trueLaw().algorithmicTangent();
 }
 
 HelloAckMsg SpecimenStation::status() const {
@@ -75,6 +83,21 @@ HelloAckMsg SpecimenStation::status() const {
     a.holding = m_holding;
     a.element = m_spec.name;
     a.holdReason = m_holdReason;
+    if (m_rig) {
+        a.channelCommands = m_rig->committedCommands();
+        // The deformation a one-channel view shows (the console's pre-flight): the first
+        // displacement-controlled channel's stroke, not a held force.
+        for (std::size_t i = 0; i < a.channelCommands.size(); ++i)
+            if (m_spec.link2d->actuators[i].channel.mode == ActuatorMode::Displacement) {
+                a.lastCommittedTarget = a.channelCommands[i];
+                break;
+            }
+        a.description = "specimen '" + m_spec.name + "' on hsmu-controller (" +
+                        std::to_string(m_rig->channels()) + " actuator channels: " +
+                        m_rig->lab().description() + "), " + std::to_string(m_committed) +
+                        " committed steps";
+        return a;
+    }
     const auto& o = m_spec.specimen.options;
     const char* act = o.actuator.type == ActuatorModel::Type::Lag     ? "lag"
                       : o.actuator.type == ActuatorModel::Type::Delay ? "delay"
@@ -93,6 +116,10 @@ HelloAckMsg SpecimenStation::status() const {
 
 bool SpecimenStation::replay(const JournalRecord& r, std::string& error) {
     const std::string where = "specimen '" + m_spec.name + "': ";
+    if (m_rig) {
+        error = where + "a specimen of several actuator channels keeps no journal";
+        return false;
+    }
     switch (r.kind) {
     case JournalRecord::Kind::Configure:
         m_dt = r.dt;
@@ -146,7 +173,10 @@ Message SpecimenStation::configure(const ConfigureMsg& m) {
     m_limits.maxIncrement = tighter(own.maxIncrement, m.maxIncrement);
     if (m.dt != m_dt) {
         m_dt = m.dt;
-        m_specimen->prepare(m_dt);
+        if (m_rig)
+            m_rig->prepare(m_dt);
+        else
+            m_specimen->prepare(m_dt);
         if (m_journal) {
             JournalRecord r;
             r.kind = JournalRecord::Kind::Configure;
@@ -196,6 +226,8 @@ Message SpecimenStation::trip(ErrorCode code, const std::string& reason) {
                    reason;
     m_pc.stop();
     m_pending = false;
+    if (m_rig) // every actuator back at its committed stroke and force
+        m_rig->hold(m_holdReason);
     ++m_trips;
     return error(code, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
 }
@@ -228,6 +260,10 @@ Message SpecimenStation::finishStep() {
 }
 
 std::optional<Message> SpecimenStation::target(const TargetMsg& m) {
+    if (m_rig)
+        return error(ErrorCode::ProtocolViolation,
+                     "specimen '" + m_spec.name + "' has " + std::to_string(m_rig->channels()) +
+                         " actuator channels: send targets, not one target");
     if (!m_configured)
         return error(ErrorCode::NotConfigured, "target before configure");
     if (m_holding)
@@ -272,6 +308,23 @@ std::optional<Message> SpecimenStation::target(const TargetMsg& m) {
     return finishStep();
 }
 
+Message SpecimenStation::targets(const TargetsMsg& m) {
+    if (!m_rig)
+        return error(ErrorCode::ProtocolViolation,
+                     "specimen '" + m_spec.name + "' has one actuator channel: send target");
+    if (!m_configured)
+        return error(ErrorCode::NotConfigured, "targets before configure");
+    if (m_holding)
+        return error(ErrorCode::Holding, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
+    auto r = m_rig->target(m, m_committed);
+    if (auto* e = std::get_if<ErrorMsg>(&r)) {
+        if (e->code == ErrorCode::Interlock || e->code == ErrorCode::SpecimenFault)
+            return trip(e->code, e->reason);
+        return *e;
+    }
+    return std::get<MeasurementsMsg>(r);
+}
+
 std::optional<Message> SpecimenStation::tick() {
     if (!needsTicks())
         return std::nullopt;
@@ -294,6 +347,17 @@ Message SpecimenStation::commit(const CommitMsg& m) {
         return error(ErrorCode::Holding, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
     if (m.step == m_committed && m_last.valid)
         return AckMsg{MessageType::Commit, m_committed};
+    if (m_rig) {
+        if (m.step == m_committed && m_committed > 0)
+            return AckMsg{MessageType::Commit, m_committed};
+        if (m.step != m_committed + 1 || !m_rig->hasTrial(m.step))
+            return error(ErrorCode::ProtocolViolation,
+                         "commit of step " + std::to_string(m.step) + " without its measurement");
+        if (ControlResult r = m_rig->commit(); !r.ok)
+            return trip(ErrorCode::SpecimenFault, r.reason);
+        m_committed = m.step;
+        return AckMsg{MessageType::Commit, m_committed};
+    }
     if (m.step != m_committed + 1 || !m_trial.valid || m_trial.step != m.step)
         return error(ErrorCode::ProtocolViolation,
                      "commit of step " + std::to_string(m.step) + " without its measurement");
@@ -336,6 +400,8 @@ Message SpecimenStation::hold(const std::string& reason) {
     m_holding = true;
     m_pc.stop();
     m_pending = false;
+    if (m_rig)
+        m_rig->hold(m_holdReason);
     return AckMsg{MessageType::Hold, m_committed};
 }
 
@@ -343,7 +409,10 @@ Message SpecimenStation::resume() {
     m_holding = false;
     m_consoleHold = false;
     m_holdReason.clear();
-    m_specimen->resume();
+    if (m_rig)
+        m_rig->resume();
+    else
+        m_specimen->resume();
     return AckMsg{MessageType::Resume, m_committed};
 }
 

@@ -24,9 +24,16 @@
 // last committed target), an actuator position past the deformation limit at any tick, or a
 // measured force past the force limit -> the station holds and answers Error(Interlock)
 // whose text names the limit. Targets are refused (Error(Holding)) until Resume.
+// N actuator channels (a link2d specimen): the station's specimen is a ChannelRig (its
+// actuators' uniaxial materials, each channel's limits) and its steps come as Targets and go
+// as Measurements; commit, hold, resume, reset, the hello-ack and the step indices are the
+// same as one channel's (a one-channel frame to it, or an N-channel one to a one-channel
+// station, is a protocol violation). Its steps are evaluated at once (ideal actuators, no
+// ticks) and not journaled: pass a null journal.
 // Thread rules: one thread (the controller's io thread).
 
 #include "comms/controller/ActuatorDynamics.h"
+#include "comms/controller/ChannelRig.h"
 #include "comms/controller/ControllerSettings.h"
 #include "comms/controller/PredictorCorrector.h"
 #include "comms/controller/StateJournal.h"
@@ -61,6 +68,10 @@ public:
     /// A measurement or an error now, or nullopt: the step is under way (real time), tick()
     /// delivers its measurement.
     std::optional<Message> target(const TargetMsg& m);
+    /// The step of an N-channel specimen: its Measurements or an error (at once).
+    Message targets(const TargetsMsg& m);
+    /// The N-channel specimen (nullptr for one channel).
+    const ChannelRig* rig() const { return m_rig.get(); }
     /// One tick of the loop (real time). A Measurement when a step ends, an Error when the
     /// interlock trips, else nullopt.
     std::optional<Message> tick();
@@ -114,7 +125,8 @@ private:
     ControllerSettings m_settings;
     Pace m_pace;
     StateJournal* m_journal;
-    std::unique_ptr<VirtualSpecimen> m_specimen;
+    std::unique_ptr<VirtualSpecimen> m_specimen; // one channel
+    std::unique_ptr<ChannelRig> m_rig;           // N channels
     ActuatorDynamics m_actuator;
     PredictorCorrector m_pc;
     SafetyLimits m_limits;

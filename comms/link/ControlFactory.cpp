@@ -72,8 +72,22 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
         o.stepDeadline = options.stepDeadline;
         o.connectAttempts = std::max(1, options.reconnectAttempts);
         o.retryDelay = options.reconnectDelay;
-        return [address, o,
+        return [address, given = o,
                 protocol](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
+            of::OfControlOptions o = given;
+            // OpenFresco's sizes for a setup of N actuators (OpenFrescoControl.h).
+            if (spec.link2d) {
+                const int n = static_cast<int>(spec.link2d->actuators.size());
+                bool force = false;
+                for (const ActuatorSpec& a : spec.link2d->actuators) {
+                    o.channelModes.push_back(a.channel.mode);
+                    force = force || a.channel.mode == ActuatorMode::Force;
+                }
+                o.sizes.ctrl[static_cast<std::size_t>(of::Resp::Disp)] = n;
+                o.sizes.ctrl[static_cast<std::size_t>(of::Resp::Force)] = force ? n : 0;
+                o.sizes.daq[static_cast<std::size_t>(of::Resp::Disp)] = n;
+                o.sizes.daq[static_cast<std::size_t>(of::Resp::Force)] = n;
+            }
             if (protocol == "simapp")
                 return std::make_unique<of::SimAppControl>(address.host, address.port, spec.name,
                                                            o);
@@ -90,7 +104,12 @@ ControlFactory makeControlFactory(const LinkAddress& address, const TcpControlOp
     if (address.kind == LinkAddress::Kind::Tls) // no tls block: connecting says what is missing
         o.tls = link.tls.value_or(TlsSpec{});
     return [address, o](const ElementSpec& spec) -> std::unique_ptr<ExperimentalControl> {
-        return std::make_unique<TcpControl>(address.host, address.port, spec.name, spec.limits, o);
+        TcpControlOptions mine = o;
+        if (spec.link2d) // N actuator channels: each one's mode; the limits are per channel
+            for (const ActuatorSpec& a : spec.link2d->actuators)
+                mine.channelModes.push_back(a.channel.mode);
+        return std::make_unique<TcpControl>(address.host, address.port, spec.name, spec.limits,
+                                            mine);
     };
 }
 

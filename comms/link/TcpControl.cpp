@@ -136,6 +136,8 @@ ControlResult TcpControl::handshake(bool initial) {
     if (!ack)
         return linkFault(std::string("expected hello-ack, received ") +
                          messageTypeName(messageTypeOf(*m)));
+    if (ControlResult r = checkChannels(*ack); !r.ok)
+        return r;
     m_controllerDescription = ack->description;
     m_controllerCommitted = ack->committedSteps;
     if (initial) {
@@ -239,7 +241,7 @@ ControlResult TcpControl::prepare(double dt) {
     return r;
 }
 
-ControlResult TcpControl::setTarget(double d) {
+std::optional<ControlResult> TcpControl::targetRefusal() const {
     if (emergency())
         return ControlResult::fault(where() + ": " + emergencyText());
     if (m_holding)
@@ -247,39 +249,25 @@ ControlResult TcpControl::setTarget(double d) {
     if (!m_link->isOpen())
         return ControlResult::fault("link to " + where() + " is down (" + downReason() +
                                     "); resume to reconnect");
-    std::string error;
-    m_commitSent = false;
-    m_targetSentAt = std::chrono::steady_clock::now();
-    if (!m_link->send(TargetMsg{m_committed + 1, d}, error))
-        return linkFault(error);
+    return std::nullopt;
+}
+
+ControlResult TcpControl::setTarget(double d) {
+    if (multiChannel())
+        return ControlResult::fault(where() + ": specimen '" + m_element + "' has " +
+                                    std::to_string(channelCount()) +
+                                    " actuator channels; one target given");
+    if (auto refusal = targetRefusal())
+        return *refusal;
     m_sentTarget = d;
-    m_awaitingMeasurement = true;
-    return ControlResult::success();
+    return sendTarget();
 }
 
 ControlResult TcpControl::measure(ControlMeasurement& out) {
-    if (!m_awaitingMeasurement)
-        return ControlResult::fault("TCP link: measure() without a target");
-    m_awaitingMeasurement = false;
-    std::string error;
-    std::chrono::steady_clock::time_point arrived{};
-    const auto m = m_link->receive(m_opt.stepDeadline, error, &arrived);
-    if (!m)
-        return noReply("no measurement for step " + std::to_string(m_committed + 1), error);
-    if (const auto* e = std::get_if<ErrorMsg>(&*m))
-        return refused(*e);
-    const auto* mm = std::get_if<MeasurementMsg>(&*m);
-    if (!mm)
-        return linkFault(std::string("expected a measurement, received ") +
-                         messageTypeName(messageTypeOf(*m)));
-    if (mm->step != m_committed + 1)
-        return linkFault("measurement for step " + std::to_string(mm->step) + ", expected " +
-                         std::to_string(m_committed + 1));
-    m_last = *mm;
-    m_latency = std::chrono::duration<double>(arrived - m_targetSentAt).count();
-    m_measured = true;
-    out.deformation = mm->deformation;
-    out.force = mm->force;
+    if (ControlResult r = receiveMeasurement(); !r.ok)
+        return r;
+    out.deformation = multiChannel() ? m_lastN.channels[0].stroke : m_last.deformation;
+    out.force = multiChannel() ? m_lastN.channels[0].force : m_last.force;
     return ControlResult::success();
 }
 
@@ -340,12 +328,25 @@ ControlResult TcpControl::recoverCommit(const std::string& why) {
             return ControlResult::success();
         }
         const MeasurementMsg before = m_last;
-        ControlMeasurement again;
-        if (ControlResult t = setTarget(m_sentTarget); !t.ok)
+        const MeasurementsMsg beforeN = m_lastN;
+        if (auto refusal = targetRefusal())
+            return *refusal;
+        if (ControlResult t = sendTarget(); !t.ok)
             return t;
-        if (ControlResult mr = measure(again); !mr.ok)
+        if (ControlResult mr = receiveMeasurement(); !mr.ok)
             return mr;
-        if (again.deformation != before.deformation || again.force != before.force)
+        const auto same = [](const MeasurementsMsg& a, const MeasurementsMsg& b) {
+            if (a.channels.size() != b.channels.size())
+                return false;
+            for (std::size_t i = 0; i < a.channels.size(); ++i)
+                if (a.channels[i].stroke != b.channels[i].stroke ||
+                    a.channels[i].force != b.channels[i].force)
+                    return false;
+            return true;
+        };
+        if (multiChannel() ? !same(m_lastN, beforeN)
+                           : (m_last.deformation != before.deformation ||
+                              m_last.force != before.force))
             return ControlResult::fault("controller at " + where() + ": step " +
                                         std::to_string(m_committed + 1) +
                                         " measured differently after the reconnect; not committed");
@@ -427,20 +428,17 @@ void TcpControl::resume() {
     m_holdReason.clear();
     if (!m_link->isOpen() && !reconnect().ok)
         return; // setTarget reports the link as down; the test holds again
-    std::string error;
-    if (!m_link->send(ResumeMsg{}, error) || !await(MessageType::Resume, m_opt.stepDeadline).ok)
-        linkFault("no acknowledgement of the resume");
-}
-
-std::optional<ActuatorChannels> TcpControl::actuatorChannels() const {
-    if (!m_measured)
-        return std::nullopt;
-    ActuatorChannels c;
-    c.commanded = m_last.commanded;
-    c.measured = m_last.deformation;
-    c.heldTicks = m_last.heldTicks;
-    c.flags = m_last.flags;
-    return c;
+    const auto acknowledged = [this] {
+        std::string error;
+        return m_link->send(ResumeMsg{}, error) && await(MessageType::Resume, m_opt.stepDeadline).ok;
+    };
+    if (acknowledged())
+        return;
+    // The link closed while the test was held before this side saw it (e.g. the controller
+    // replaced the session): reconnect once and resume there (a refusal keeps the link open).
+    if (!emergency() && !m_link->isOpen() && reconnect().ok && acknowledged())
+        return;
+    linkFault("no acknowledgement of the resume");
 }
 
 } // namespace hsmu::comms

@@ -32,6 +32,7 @@
 
 #include "comms/protocol/Messages.h"
 #include "core/config/LinkConfig.h"
+#include "core/experimental/ActuatorChannel.h"
 #include "core/experimental/ExperimentalControl.h"
 #include "core/experimental/SafetyLimits.h"
 
@@ -42,6 +43,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace hsmu::comms {
 
@@ -59,6 +61,11 @@ struct TcpControlOptions {
     std::uint64_t sessionId = 0;     ///< 0: makeControlFactory draws one per test
     /// A tls:// link's certificates (LinkClientOptions::tls); nullopt: plain TCP.
     std::optional<TlsSpec> tls;
+    /// The specimen's actuator channels and their control modes, from the console's
+    /// configuration (a link2d specimen's actuators); empty: one channel (Target /
+    /// Measurement). Two or more: Targets / Measurements frames; a hello-ack reporting another
+    /// channel count is refused (docs/protocol.md, "Several actuator channels").
+    std::vector<ActuatorMode> channelModes;
 };
 
 class TcpControl final : public ExperimentalControl {
@@ -92,8 +99,18 @@ public:
     /// controller of a real rig refuses it (the fault names its answer). Nothing is sent when
     /// the specimen has no committed steps.
     ControlResult freshSpecimen() override;
-    /// commanded, measured (deformation), held ticks and flags of the last measurement frame.
+    /// commanded, measured (deformation), held ticks and flags of the last measurement frame
+    /// (N channels: the first channel's command and stroke, and the flags).
     std::optional<ActuatorChannels> actuatorChannels() const override;
+
+    // N channels (TcpControlChannels.cpp): one Targets frame per step, one Measurements back;
+    // the same step indices, commits, holds, reconnection and idempotent re-sends as one
+    // channel. One channel: the base's mapping onto setTarget / measure.
+    int channelCount() const override;
+    ControlResult setTargets(const Eigen::VectorXd& commands) override;
+    ControlResult measureChannels(Eigen::VectorXd& strokes, Eigen::VectorXd& forces) override;
+    /// The last Measurements frame (N channels).
+    const MeasurementsMsg& lastMeasurements() const { return m_lastN; }
 
     /// Close any connection and connect again (up to reconnectAttempts attempts).
     ControlResult reconnect();
@@ -107,6 +124,15 @@ public:
     int reconnects() const { return m_reconnects; }
 
 private:
+    bool multiChannel() const { return !m_opt.channelModes.empty(); }
+    /// Why no target may be sent now (emergency, holding, link down), if any.
+    std::optional<ControlResult> targetRefusal() const;
+    /// Send the step's target as it stands (m_sentTarget or m_sentTargets).
+    ControlResult sendTarget();
+    /// Wait for the step's Measurement (or Measurements) frame into m_last (m_lastN).
+    ControlResult receiveMeasurement();
+    /// The hello-ack's channel count against the configuration's; a fault if they differ.
+    ControlResult checkChannels(const HelloAckMsg& ack);
     ControlResult handshake(bool initial);
     ControlResult await(MessageType acked, double timeout);
     ControlResult linkFault(const std::string& what);
@@ -143,6 +169,8 @@ private:
     std::uint64_t m_controllerCommitted = 0; // as of the last hello-ack
     double m_lastCommittedTarget = 0.0;      // as of the first hello-ack (or 0 after a reset)
     double m_sentTarget = 0.0;
+    std::vector<ChannelTarget> m_sentTargets; // N channels
+    MeasurementsMsg m_lastN;                  // N channels
     bool m_commitSent = false;
     std::chrono::steady_clock::time_point m_targetSentAt{};
     double m_latency = std::numeric_limits<double>::quiet_NaN();

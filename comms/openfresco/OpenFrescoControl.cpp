@@ -183,6 +183,8 @@ ControlResult OpenFrescoControl::prepare(double dt) {
                                     ": the sizes need ctrl disp, daq disp and daq "
                                     "force of at least 1 (" +
                                     m_opt.sizes.describe() + ")");
+    if (auto why = channelProblem())
+        return ControlResult::fault(where() + ": specimen '" + m_element + "': " + *why);
     if (m_protocol == OfProtocol::Adapter &&
         (m_opt.sizes.daqSize(Resp::Vel) != 0 || m_opt.sizes.daqSize(Resp::Accel) != 0 ||
          m_opt.sizes.daqSize(Resp::Time) != 0 || m_opt.sizes.ctrlSize(Resp::Disp) != 1 ||
@@ -204,7 +206,7 @@ ControlResult OpenFrescoControl::prepare(double dt) {
     return r;
 }
 
-ControlResult OpenFrescoControl::setTarget(double d) {
+ControlResult OpenFrescoControl::trialAllowed() {
     if (m_emergency.load(std::memory_order_acquire))
         return ControlResult::fault(where() + ": " + emergencyText());
     if (m_holding)
@@ -217,9 +219,11 @@ ControlResult OpenFrescoControl::setTarget(double d) {
         return ControlResult::fault(where() + ": " + ofProtocolName(m_protocol) +
                                     " has no commit, so a measured step cannot be "
                                     "repeated; restart the test");
+    return ControlResult::success();
+}
+
+ControlResult OpenFrescoControl::sendTrial(std::vector<double>& ctrl) {
     const OfSizes& s = m_opt.sizes;
-    std::vector<double> ctrl(static_cast<std::size_t>(s.ctrlTotal()), 0.0);
-    ctrl[static_cast<std::size_t>(s.ctrlIndex(Resp::Disp) - 1)] = d;
     if (s.ctrlSize(Resp::Time) > 0)
         ctrl[static_cast<std::size_t>(s.ctrlIndex(Resp::Time) - 1)] =
             static_cast<double>(m_committed + 1) * m_dt;
@@ -233,11 +237,22 @@ ControlResult OpenFrescoControl::setTarget(double d) {
     if (ControlResult r = sendRequest(static_cast<int>(ask), {}); !r.ok)
         return r;
     m_awaitingMeasurement = true;
+    return ControlResult::success();
+}
+
+ControlResult OpenFrescoControl::setTarget(double d) {
+    if (ControlResult r = trialAllowed(); !r.ok)
+        return r;
+    const OfSizes& s = m_opt.sizes;
+    std::vector<double> ctrl(static_cast<std::size_t>(s.ctrlTotal()), 0.0);
+    ctrl[static_cast<std::size_t>(s.ctrlIndex(Resp::Disp) - 1)] = d;
+    if (ControlResult r = sendTrial(ctrl); !r.ok)
+        return r;
     m_target = d;
     return ControlResult::success();
 }
 
-ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
+ControlResult OpenFrescoControl::readReply() {
     if (!m_awaitingMeasurement)
         return ControlResult::fault(where() + ": measure() without a target");
     m_awaitingMeasurement = false;
@@ -247,6 +262,12 @@ ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
         return linkFault("no measurement for step " + std::to_string(m_committed + 1) + ": " +
                          error);
     decodeFrame(m_buffer.data(), m_opt.sizes.dataSize, m_values);
+    return ControlResult::success();
+}
+
+ControlResult OpenFrescoControl::measure(ControlMeasurement& out) {
+    if (ControlResult r = readReply(); !r.ok)
+        return r;
     const double d = m_values[static_cast<std::size_t>(m_opt.sizes.daqIndex(Resp::Disp))];
     const double f = m_values[static_cast<std::size_t>(m_opt.sizes.daqIndex(Resp::Force))];
     if (!std::isfinite(d) || !std::isfinite(f))

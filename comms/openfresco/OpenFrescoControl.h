@@ -33,11 +33,22 @@
 // end the session with the specimen where it is). The session cannot be resumed: restart the test.
 // Actuator channels: commanded = the ctrl displacement sent, measured = the daq displacement
 // as read (before the dead-channel substitution); no held ticks or flags (-1).
+// N actuator channels (a link2d specimen: OfControlOptions::channelModes; OpenFrescoChannels.cpp,
+// docs/openfresco.md "Several actuator channels"): OpenFresco's sizes for a setup of N
+// actuators, ctrl disp N (and ctrl force N when a channel is force-controlled), daq disp N and
+// daq force N. setTargets() sends one trial [3, ...] whose ctrl disp entry i carries channel i's
+// stroke [m] when it is displacement-controlled (else 0) and whose ctrl force entry i carries
+// its force [kN] when it is force-controlled (else 0), then [6]; measureChannels() reads the
+// strokes from daq disp and the forces from daq force. Sizes that cannot carry every channel's
+// command, and the adapter protocol (one DOF), are refused by prepare() naming the fix.
+// setTarget() / measure() stay the one-channel path. actuatorChannels(): channel 1's command
+// and stroke.
 // Thread rules: one thread at a time (the test worker), except emergencyHold().
 
 #include "comms/openfresco/AdapterCompensation.h"
 #include "comms/openfresco/OfSizes.h"
 #include "core/config/LinkConfig.h"
+#include "core/experimental/ActuatorChannel.h"
 #include "core/experimental/ExperimentalControl.h"
 
 #include <atomic>
@@ -68,6 +79,9 @@ struct OfControlOptions {
     /// warning is also the control's notice (takeNotice(): a Warning alarm in the record)
     /// whatever this says.
     bool warnNoCommit = true;
+    /// A link2d specimen's actuator channels and their modes (ControlFactory fills them from
+    /// the configuration, with the sizes); empty: one channel.
+    std::vector<ActuatorMode> channelModes;
     /// Adapter: the penalty compensation (AdapterCompensation; both on by default).
     AdapterCompensation::Options adapter;
 };
@@ -89,6 +103,9 @@ public:
     /// Any thread: closes the connection now (see the header).
     void emergencyHold(const std::string& reason) override;
     std::optional<ActuatorChannels> actuatorChannels() const override;
+    int channelCount() const override;
+    ControlResult setTargets(const Eigen::VectorXd& commands) override;
+    ControlResult measureChannels(Eigen::VectorXd& strokes, Eigen::VectorXd& forces) override;
     /// Whether the daq displacement read exactly 0 while the target was not 0: from then on a
     /// reading of exactly 0 is replaced by the commanded deformation.
     bool commandedDeformationUsed() const { return m_zeroDisp; }
@@ -113,6 +130,14 @@ private:
     ControlResult connectOnce();
     ControlResult linkFault(const std::string& what);
     ControlResult sendRequest(int action, const std::vector<double>& values);
+    /// Why no trial may be sent now (emergency, hold, link down, GenericTCP repeat), or success.
+    ControlResult trialAllowed();
+    /// A trial [3, ctrl] with the time entry filled, then the daq request.
+    ControlResult sendTrial(std::vector<double>& ctrl);
+    /// The reply to the daq request into m_values.
+    ControlResult readReply();
+    /// N channels: why these sizes cannot carry them (prepare()), or nullopt.
+    std::optional<std::string> channelProblem() const;
 
     OfProtocol m_protocol;
     std::unique_ptr<OfSocket> m_socket;
@@ -132,6 +157,7 @@ private:
     std::string m_notice;
     bool m_zeroDisp = false;
     double m_target = 0.0;
+    Eigen::VectorXd m_targets; ///< N channels: the last commands sent
     std::vector<std::uint8_t> m_buffer;
     std::vector<double> m_values;
     std::optional<ActuatorChannels> m_channels;

@@ -3,6 +3,7 @@
 #include "core/config/JsonCursor.h"
 #include "core/config/NumericalSite.h"
 #include "core/config/TestConfig.h"
+#include "core/hysteresis/OffsetLaw.h"
 
 namespace hsmu::comms::of {
 
@@ -16,6 +17,14 @@ void installOpenSeesTwins(OpenSeesTwinOptions options)
             throw ConfigError(why);
         if (std::string no = OpenSeesTwinLaw::supported(model->lawName()); !no.empty())
             throw ConfigError(no);
+        // A model with offsets (OffsetLaw.h): OpenSees runs the law without them and the
+        // console adds them around its force, F = F_OpenSees(u - u0) + F0, exactly (the
+        // helper's material has no offsets to send them to).
+        if (const auto* offsets = dynamic_cast<const OffsetLaw*>(model.get()))
+            return std::make_unique<OffsetLaw>(
+                std::make_unique<OpenSeesTwinLaw>(a.host, a.port, spec.name,
+                                                  offsets->inner().clone(), options),
+                offsets->deformationOffset(), offsets->forceOffset());
         return std::make_unique<OpenSeesTwinLaw>(a.host, a.port, spec.name, std::move(model),
                                                  options);
     });

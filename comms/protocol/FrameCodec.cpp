@@ -1,5 +1,6 @@
 #include "comms/protocol/FrameCodec.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -94,7 +95,7 @@ Bounds boundsOf(MessageType t) {
     case MessageType::Hello:
         return {14, 12 + 2 * kStr};
     case MessageType::HelloAck:
-        return {25, 19 + 3 * kStr};
+        return {25, 19 + 3 * kStr + 2 + 8 * kMaxChannels};
     case MessageType::Configure:
         return {32, 32};
     case MessageType::Target:
@@ -124,6 +125,14 @@ Bounds boundsOf(MessageType t) {
         return {75, 73 + kStr};
     case MessageType::RthsEnd:
         return {170, 168 + kStr};
+    case MessageType::Targets:
+        return {10 + 9 * 2, 10 + 9 * kMaxChannels};
+    case MessageType::Measurements:
+        return {14 + 24 * 2, 14 + 24 * kMaxChannels};
+    case MessageType::RthsUpdate:
+        return {12, kMaxPayload};
+    case MessageType::RthsUpdateApplied:
+        return {13, kMaxPayload};
     }
     return {0, 0};
 }
@@ -144,6 +153,11 @@ struct Encoder {
         w.str(m.element);
         w.str(m.description);
         w.str(m.holdReason);
+        if (!m.channelCommands.empty()) {
+            w.u16(static_cast<std::uint16_t>(m.channelCommands.size()));
+            for (double c : m.channelCommands)
+                w.f64(c);
+        }
     }
     void operator()(const ConfigureMsg& m) {
         w.f64(m.dt);
@@ -182,6 +196,21 @@ struct Encoder {
         w.f64(m.duration);
     }
     void operator()(const EmergencyHoldMsg& m) { w.str(m.reason); }
+    void namedValues(const std::vector<std::string>& names, const std::vector<double>& values) {
+        const std::size_t n = std::min({names.size(), values.size(), kMaxUpdateParameters});
+        w.u16(static_cast<std::uint16_t>(n));
+        for (std::size_t i = 0; i < n; ++i) {
+            w.str(names[i]);
+            w.f64(values[i]);
+        }
+    }
+    void operator()(const RthsUpdateMsg& m) { namedValues(m.names, m.values); }
+    void operator()(const RthsUpdateAppliedMsg& m) {
+        w.u64(m.tick);
+        w.u8(m.applied ? 1 : 0);
+        w.str(m.message);
+        namedValues(m.names, m.values);
+    }
     void operator()(const TelemetryMsg& m) {
         w.u64(m.tick);
         for (double v : {m.time, m.desired, m.command, m.measured, m.force})
@@ -205,7 +234,41 @@ struct Encoder {
             w.f64(v);
         w.str(m.hold);
     }
+    void operator()(const TargetsMsg& m) {
+        w.u64(m.step);
+        w.u16(static_cast<std::uint16_t>(m.channels.size()));
+        for (const ChannelTarget& c : m.channels) {
+            w.u8(c.mode);
+            w.f64(c.command);
+        }
+    }
+    void operator()(const MeasurementsMsg& m) {
+        w.u64(m.step);
+        w.u32(m.flags);
+        w.u16(static_cast<std::uint16_t>(m.channels.size()));
+        for (const ChannelMeasurement& c : m.channels)
+            for (double v : {c.stroke, c.force, c.command})
+                w.f64(v);
+    }
 };
+
+/// A channel count field: 2..kMaxChannels.
+bool channelCount(Reader& r, std::uint16_t& n) {
+    return r.u16(n) && n >= 2 && n <= kMaxChannels;
+}
+
+/// u16 count (at most kMaxUpdateParameters), count x (str name, f64 value).
+bool readNamedValues(Reader& r, std::vector<std::string>& names, std::vector<double>& values) {
+    std::uint16_t n = 0;
+    if (!r.u16(n) || n > kMaxUpdateParameters)
+        return false;
+    names.resize(n);
+    values.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!r.str(names[i]) || !r.f64(values[i]))
+            return false;
+    return true;
+}
 
 bool decodeInto(MessageType t, Reader& r, Message& out) {
     switch (t) {
@@ -222,6 +285,15 @@ bool decodeInto(MessageType t, Reader& r, Message& out) {
             !r.boolean(m.holding) || !r.str(m.element) || !r.str(m.description) ||
             !r.str(m.holdReason))
             return false;
+        if (!r.atEnd()) { // an N-channel specimen's tail
+            std::uint16_t n = 0;
+            if (!channelCount(r, n))
+                return false;
+            m.channelCommands.resize(n);
+            for (double& c : m.channelCommands)
+                if (!r.f64(c))
+                    return false;
+        }
         out = std::move(m);
         return true;
     }
@@ -324,6 +396,21 @@ bool decodeInto(MessageType t, Reader& r, Message& out) {
         out = std::move(m);
         return true;
     }
+    case MessageType::RthsUpdate: {
+        RthsUpdateMsg m;
+        if (!readNamedValues(r, m.names, m.values) || m.names.empty())
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::RthsUpdateApplied: {
+        RthsUpdateAppliedMsg m;
+        if (!r.u64(m.tick) || !r.boolean(m.applied) || !r.str(m.message) ||
+            !readNamedValues(r, m.names, m.values))
+            return false;
+        out = std::move(m);
+        return true;
+    }
     case MessageType::RthsEnd: {
         RthsEndMsg m;
         if (!r.u64(m.ticks))
@@ -340,6 +427,30 @@ bool decodeInto(MessageType t, Reader& r, Message& out) {
                 return false;
         if (!r.str(m.hold))
             return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::Targets: {
+        TargetsMsg m;
+        std::uint16_t n = 0;
+        if (!r.u64(m.step) || !channelCount(r, n))
+            return false;
+        m.channels.resize(n);
+        for (ChannelTarget& c : m.channels)
+            if (!r.u8(c.mode) || c.mode > kChannelForce || !r.f64(c.command))
+                return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::Measurements: {
+        MeasurementsMsg m;
+        std::uint16_t n = 0;
+        if (!r.u64(m.step) || !r.u32(m.flags) || !channelCount(r, n))
+            return false;
+        m.channels.resize(n);
+        for (ChannelMeasurement& c : m.channels)
+            if (!r.f64(c.stroke) || !r.f64(c.force) || !r.f64(c.command))
+                return false;
         out = std::move(m);
         return true;
     }

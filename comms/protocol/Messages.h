@@ -15,7 +15,9 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 #include <variant>
+#include <vector>
 
 namespace hsmu::comms {
 
@@ -34,6 +36,10 @@ struct HelloAckMsg { // payload: u16 u64 f64 u8 str str str
     std::string element;     ///< the specimen's name
     std::string description; ///< controller and specimen, for logs
     std::string holdReason;  ///< when holding
+    /// A specimen of N >= 2 actuator channels (optional tail: u16 N, N x f64): the last
+    /// committed command of each channel; empty for a one-channel specimen (no tail, so the
+    /// frame is byte for byte what a one-channel console has always read).
+    std::vector<double> channelCommands;
 };
 
 struct ConfigureMsg { // payload: f64 x 4
@@ -127,10 +133,52 @@ struct RthsEndMsg {                      // payload: u64 f64 x 9 u64 f64 u64 u64
     std::string hold;                    ///< why the run stopped early; "" when it ran out
 };
 
+// N actuator channels of one specimen (docs/protocol.md, "Several actuator channels"): the
+// stroke of a displacement-controlled channel in [m], the force of a force-controlled one [kN].
+
+struct ChannelTarget {
+    std::uint8_t mode = kChannelDisplacement; ///< kChannelDisplacement | kChannelForce
+    double command = 0.0;                     ///< stroke [m] or force [kN]
+};
+
+struct TargetsMsg { // payload: u64 u16 N x (u8 f64); 2 <= N <= kMaxChannels
+    std::uint64_t step = 0;
+    std::vector<ChannelTarget> channels;
+};
+
+struct ChannelMeasurement {
+    double stroke = 0.0;  ///< measured [m]
+    double force = 0.0;   ///< measured [kN]
+    double command = 0.0; ///< the channel's command when the step was measured
+};
+
+struct MeasurementsMsg { // payload: u64 u32 u16 N x (f64 f64 f64); 2 <= N <= kMaxChannels
+    std::uint64_t step = 0;
+    std::uint32_t flags = 0; ///< kFlagReplayed
+    std::vector<ChannelMeasurement> channels;
+};
+
+/// Most parameters one update names (an mrDamper twin has 12).
+inline constexpr std::size_t kMaxUpdateParameters = 32;
+
+struct RthsUpdateMsg {             // payload: u16 count, count x (str name, f64 value)
+    std::vector<std::string> names; ///< the twin's parameters (MrDamper's names)
+    std::vector<double> values;     ///< in the twin's scales (docs/rths.md)
+};
+
+struct RthsUpdateAppliedMsg {      // payload: u64 u8 str u16 count x (str f64)
+    std::uint64_t tick = 0;        ///< the tick the update came before
+    bool applied = false;          ///< false: refused by the loop (message says why)
+    std::string message;           ///< its source ("operator", "identification") or the refusal
+    std::vector<std::string> names;
+    std::vector<double> values;
+};
+
 using Message =
     std::variant<HelloMsg, HelloAckMsg, ConfigureMsg, TargetMsg, MeasurementMsg, CommitMsg, AckMsg,
                  HoldMsg, ResumeMsg, ResetMsg, HeartbeatMsg, ErrorMsg, ByeMsg, RthsStartMsg,
-                 EmergencyHoldMsg, TelemetryMsg, RthsEndMsg>;
+                 EmergencyHoldMsg, TelemetryMsg, RthsEndMsg, TargetsMsg, MeasurementsMsg,
+                 RthsUpdateMsg, RthsUpdateAppliedMsg>;
 
 /// The header type of a message.
 MessageType messageTypeOf(const Message& m);

@@ -40,6 +40,14 @@ const char* messageTypeName(MessageType type) {
         return "telemetry";
     case MessageType::RthsEnd:
         return "rths-end";
+    case MessageType::Targets:
+        return "targets";
+    case MessageType::Measurements:
+        return "measurements";
+    case MessageType::RthsUpdate:
+        return "rths-update";
+    case MessageType::RthsUpdateApplied:
+        return "rths-update-applied";
     }
     return "unknown";
 }
@@ -72,20 +80,24 @@ const char* errorCodeName(ErrorCode code) {
         return "timeout";
     case ErrorCode::Internal:
         return "internal error";
+    case ErrorCode::UpdateRefused:
+        return "update refused";
     }
     return "unknown";
 }
 
 bool isKnownMessageType(std::uint16_t type) {
     return type >= static_cast<std::uint16_t>(MessageType::Hello) &&
-           type <= static_cast<std::uint16_t>(MessageType::RthsEnd);
+           type <= static_cast<std::uint16_t>(MessageType::RthsUpdateApplied);
 }
 
 MessageType messageTypeOf(const Message& m) {
-    // The variant's alternatives are in the order of the MessageType values 1..17.
-    static_assert(std::variant_size_v<Message> == 17);
+    // The variant's alternatives are in the order of the MessageType values 1..21.
+    static_assert(std::variant_size_v<Message> == 21);
     static_assert(std::is_same_v<std::variant_alternative_t<12, Message>, ByeMsg>);
     static_assert(std::is_same_v<std::variant_alternative_t<16, Message>, RthsEndMsg>);
+    static_assert(std::is_same_v<std::variant_alternative_t<18, Message>, MeasurementsMsg>);
+    static_assert(std::is_same_v<std::variant_alternative_t<20, Message>, RthsUpdateAppliedMsg>);
     return static_cast<MessageType>(m.index() + 1);
 }
 

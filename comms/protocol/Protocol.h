@@ -47,7 +47,20 @@ enum class MessageType : std::uint16_t {
     EmergencyHold = 15, ///< monitor -> controller: hold the loop before its next tick, at once
     Telemetry = 16,     ///< controller -> monitor: one decimated tick of the running loop
     RthsEnd = 17,       ///< controller -> monitor: the run's end and its summary (J1..J9, ...)
+    // N actuator channels of one specimen (a link2d specimen behind a setup; docs/protocol.md,
+    // "Several actuator channels"). Older peers refuse them as unknown types, as any new type.
+    Targets = 18,      ///< console -> controller: step index, each channel's mode and command
+    Measurements = 19, ///< controller -> console: step, each channel's stroke, force, command
+    RthsUpdate = 20,        ///< monitor -> controller: new parameters for the damper's twin
+    RthsUpdateApplied = 21, ///< controller -> monitor: a twin update decided at a tick
 };
+
+/// Channels of one specimen a Targets / Measurements frame may carry (2..kMaxChannels; a
+/// one-channel specimen uses Target / Measurement).
+inline constexpr std::size_t kMaxChannels = 16;
+/// The mode byte of a channel in Targets: its command is a stroke [m] or a force [kN].
+inline constexpr std::uint8_t kChannelDisplacement = 0;
+inline constexpr std::uint8_t kChannelForce = 1;
 
 /// Error frame codes. "Closes" means the sender closes the connection after the frame.
 enum class ErrorCode : std::uint16_t {
@@ -64,6 +77,7 @@ enum class ErrorCode : std::uint16_t {
     StateMismatch = 11,     ///< a re-sent target differs from the one already committed
     Timeout = 12,           ///< no hello, or silence past the idle timeout (closes)
     Internal = 13,          ///< anything else (e.g. the state file cannot be written)
+    UpdateRefused = 14,     ///< an rths-update refused (unknown name, not finite, out of the box)
 };
 
 /// Measurement flags (bit field).

@@ -1,6 +1,7 @@
 #include "core/config/Link2dConfig.h"
 
 #include "core/config/ConfigLoader.h"
+#include "core/config/SetupConfig.h"
 #include "core/experimental/setup/SetupScript.h"
 #include "core/hysteresis/LawFactory.h"
 
@@ -24,23 +25,56 @@ Link2dBasicSpec parseBasic(const JsonCursor& c)
     return b;
 }
 
+// "forceSchedule": [[t [s], F [kN]], ...], t strictly increasing (ActuatorChannel.h, eq. F1).
+std::vector<std::array<double, 2>> parseForceSchedule(const JsonCursor& c)
+{
+    const JsonCursor p = c.child("forceSchedule");
+    p.requireArray();
+    std::vector<std::array<double, 2>> out;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        const auto& v = p.node()[k];
+        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+            c.fail("forceSchedule", "point " + std::to_string(k + 1) +
+                                        ": expected [t, F] (time [s], force [kN])");
+        out.push_back({v[0].get<double>(), v[1].get<double>()});
+    }
+    if (out.empty())
+        c.fail("forceSchedule", "expected at least one point [t, F]");
+    if (const std::string why = forceScheduleProblem(out); !why.empty())
+        c.fail("forceSchedule", why);
+    return out;
+}
+
 ActuatorSpec parseActuator(const JsonCursor& c)
 {
-    c.allowOnly({"name", "control", "force", "limits", "material", "initialStiffness"});
+    c.allowOnly({"name", "control", "force", "forceSchedule", "limits", "material",
+                 "initialStiffness"});
     ActuatorSpec a;
     a.channel.name = c.string("name");
     const std::string mode = c.string("control", "displacement");
     if (mode == "force") {
         a.channel.mode = ActuatorMode::Force;
-        a.channel.heldForce = c.number("force");
-    } else if (mode == "displacement") {
+        if (c.has("force") == c.has("forceSchedule"))
+            c.fail("force", "a force-controlled actuator takes \"force\" (constant) or "
+                            "\"forceSchedule\" ([[t, F], ...]), one of them");
         if (c.has("force"))
-            c.fail("force", "only for a force-controlled actuator (\"control\": \"force\")");
+            a.channel.heldForce = c.number("force");
+        else
+            a.channel.forceSchedule = parseForceSchedule(c);
+    } else if (mode == "displacement") {
+        for (const char* k : {"force", "forceSchedule"})
+            if (c.has(k))
+                c.fail(k, "only for a force-controlled actuator (\"control\": \"force\")");
     } else {
         c.fail("control", "expected 'displacement' or 'force', found '" + mode + "'");
     }
     if (c.has("limits"))
         a.channel.limits = parseLimits(c.child("limits"));
+    // A schedule is linear between its points: its largest |F| is at one of them.
+    for (const auto& [t, f] : a.channel.forceSchedule)
+        if (auto why = a.channel.limits.violationOfForce(f))
+            c.fail("forceSchedule", "actuator '" + a.channel.name + "' at t = " +
+                                        std::to_string(t) + " s: " + *why);
     a.material = parseMaterial(c.child("material"));
     if (c.has("initialStiffness")) {
         a.channel.initialStiffness = c.number("initialStiffness");
@@ -98,14 +132,20 @@ ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& 
         if (c.has("basic"))
             c.fail("basic", "a specimen's basic forces come from its actuators: omit basic");
         const JsonCursor st = c.child("setup");
-        st.allowOnly({"script"});
-        s.setupScript = st.string("script");
+        // An expSetup line, or the same as a type and OpenFresco's parameters (SetupConfig.h).
+        const char* field = st.has("script") ? "script" : "type";
+        if (st.has("script")) {
+            st.allowOnly({"script"});
+            s.setupScript = st.string("script");
+        } else {
+            s.setupScript = setupScriptOf(st);
+        }
         std::string error;
         auto setup = buildLink2dSetup(s, error);
         if (!setup)
-            st.fail("script", error);
+            st.fail(field, error);
         if (setup->basicSize() != 3)
-            st.fail("script", setup->typeName() + " serves " + std::to_string(setup->basicSize()) +
+            st.fail(field, setup->typeName() + " serves " + std::to_string(setup->basicSize()) +
                                   " basic DOFs, a link2d element has 3 (axial, shear, rotation): "
                                   "-sizeTrialOut 3 3");
         const JsonCursor acts = c.child("actuators");

@@ -2,8 +2,11 @@
 
 #include "core/groundmotion/AccelerationUnit.h"
 #include "core/groundmotion/GroundMotionReader.h"
+#include "core/hysteresis/LawFactory.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <regex>
 
@@ -71,6 +74,66 @@ void parseStructure(const JsonCursor& s, RthsConfig& out)
     }
     if (out.specimenDof >= n)
         s.fail("specimenDof", "a DOF of the structure (0 to " + std::to_string(n - 1) + ")");
+}
+
+/// An mrDamper law's parameters by name (LawFactory's names, checks and messages).
+MrDamperParameters parseMrDamper(const JsonCursor& c)
+{
+    c.requireObject();
+    std::map<std::string, double> values;
+    for (const auto& [key, v] : c.node().items()) {
+        if (!v.is_number())
+            c.fail(key, "a number");
+        values[key] = v.get<double>();
+    }
+    try {
+        const auto law = makeLaw("mrDamper", values);
+        return static_cast<const MrDamper&>(*law).parameters();
+    } catch (const std::invalid_argument& e) {
+        c.fail("", std::string("mrDamper parameters (") + e.what() + ")");
+    }
+    return {};
+}
+
+/// "damper": the MR damper in the specimen, its twin in the numerical substructure, the
+/// parameter box of the twin's updates and the online identification (docs/rths.md).
+void parseDamper(const JsonCursor& c, RthsConfig& out)
+{
+    c.allowOnly({"specimen", "twin", "twinDof", "forceNoise", "bounds", "identification"});
+    auto& d = out.settings.damper;
+    d.enabled = true;
+    d.specimen = parseMrDamper(c.child("specimen"));
+    d.twin = c.has("twin") ? parseMrDamper(c.child("twin")) : d.specimen;
+    d.twinDof = c.integer("twinDof", 1, 0, 1000);
+    if (d.twinDof >= out.reference.m.rows())
+        c.fail("twinDof", "a DOF of the structure (0 to " + std::to_string(out.reference.m.rows() - 1) + ")");
+    d.forceNoise = c.number("forceNoise", d.forceNoise);
+    if (!(d.forceNoise >= 0.0))
+        c.fail("forceNoise", "a noise level >= 0 N");
+    if (c.has("bounds")) {
+        const JsonCursor b = c.child("bounds");
+        b.requireObject();
+        const std::vector<std::string> names = MrDamper().parameterNames();
+        for (const auto& [key, v] : b.node().items()) {
+            if (std::find(names.begin(), names.end(), key) == names.end())
+                b.fail(key, "an mrDamper parameter");
+            if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+                !(v[0].get<double>() <= v[1].get<double>()))
+                b.fail(key, "[lower, upper] with lower <= upper");
+            d.box[key] = ParameterBounds{v[0].get<double>(), v[1].get<double>()};
+        }
+    }
+    if (c.has("identification")) {
+        const JsonCursor i = c.child("identification");
+        i.allowOnly({"enabled", "decimation", "interval", "latency"});
+        auto& s = out.identification;
+        s.enabled = i.boolean("enabled", true);
+        s.decimation = i.integer("decimation", s.decimation, 1, 1000);
+        s.interval = i.number("interval", s.interval);
+        s.latency = i.number("latency", s.latency);
+        if (!(s.interval > 0.0 && s.latency >= 0.0))
+            i.fail("", "interval > 0 s and latency >= 0 s");
+    }
 }
 
 } // namespace
@@ -190,7 +253,7 @@ RthsConfig parseRthsConfig(const nlohmann::json& document, const std::string& fi
     out.raw = document;
     const JsonCursor r = root.child("rths");
     r.allowOnly({"rate", "structure", "plant", "limits", "sensors", "controller", "compensation",
-                 "forceDelay", "groundMotion", "holdAfterMisses"});
+                 "forceDelay", "groundMotion", "holdAfterMisses", "damper"});
     auto& s = out.settings;
     s.rate = r.number("rate", 4096.0);
     if (!(s.rate >= 100.0 && s.rate <= 100000.0))
@@ -217,6 +280,8 @@ RthsConfig parseRthsConfig(const nlohmann::json& document, const std::string& fi
         parsePidGains(r.child("controller"), s.pid);
     if (r.has("compensation"))
         parseCompensation(r.child("compensation"), s.compensation);
+    if (r.has("damper"))
+        parseDamper(r.child("damper"), out);
     if (r.has("groundMotion")) {
         const JsonCursor g = r.child("groundMotion");
         g.allowOnly({"file", "scale", "unit"});

@@ -10,6 +10,7 @@
 #include "core/rths/Partition.h"
 #include "core/rths/RthsLoop.h"
 #include "core/rths/ServoActuator.h"
+#include "core/updating/TwinIdentification.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +29,9 @@ struct RthsConfig {
     double groundMotionScale = 1.0;
     std::string groundMotionUnit = "m/s^2";
     int holdAfterMisses = 10;     ///< deadline misses (real-time pace) before the test holds; 0: never
+    /// "damper": {"identification": {...}}: the online identification of the damper that
+    /// updates its twin (settings.damper: the damper and the twin themselves)
+    rths::TwinIdentificationSettings identification;
     nlohmann::json raw;           ///< the whole document as given (the record keeps it)
     /// The partition of `reference` with the plant's specimen (me, ce, ke) at specimenDof.
     rths::Partition partition() const;

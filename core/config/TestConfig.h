@@ -154,6 +154,9 @@ struct UpdatingSpec {
     /// Headless decision for the onApproval policy: "manual" (queue), "approveAll", "rejectAll".
     std::string approval = "manual";
     int maxConsecutiveRejections = 20;
+    /// The online offset check (ModelUpdater, OffsetCheck.h): "off" (default), "auto"
+    /// (offsets proposed to the operator when the data ask for them) or "on" (every check's).
+    std::string offsets = "off";
 };
 
 struct TestConfig {

@@ -89,7 +89,7 @@ void seedFromRecord(RobustUkfIdentifier& id, const std::string& path, const std:
 UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
 {
     c.allowOnly({"enabled", "specimen", "method", "bounds", "ukf", "nelderMead", "inspector",
-                 "reporter", "approval", "maxConsecutiveRejections"});
+                 "reporter", "approval", "maxConsecutiveRejections", "offsets"});
     UpdatingSpec u;
     u.enabled = c.boolean("enabled", true);
     u.specimen = c.string("specimen");
@@ -235,6 +235,9 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
     if (u.approval != "manual" && u.approval != "approveAll" && u.approval != "rejectAll")
         c.fail("approval", "expected manual, approveAll or rejectAll");
     u.maxConsecutiveRejections = c.integer("maxConsecutiveRejections", u.maxConsecutiveRejections);
+    u.offsets = c.string("offsets", u.offsets);
+    if (!calibrationOffsetsFromName(u.offsets))
+        c.fail("offsets", "expected off, auto or on");
     return u;
 }
 
@@ -246,8 +249,9 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
             model.parameterIndex("deformationOffset") >= 0)
             throw ConfigError(where + ": the specimen model has offsets (deformationOffset, "
                                       "forceOffset); the online identifiers fit none: calibrate "
-                                      "them offline (hsmu replay --offsets) and give them to the "
-                                      "twins' models by hand");
+                                      "them offline (hsmu replay --offsets) or online "
+                                      "(updating.offsets), the operator approving them for the "
+                                      "twins");
         if (u.method == "ukf" && model.lawName() == "boucWenPinching") {
             if (u.ukfFormulation != "robust")
                 throw ConfigError(where + ": the paper's UKF formulation identifies a boucWen "
@@ -326,6 +330,10 @@ std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
     else if (u.approval == "rejectAll")
         updater->setAutoResolve(false);
     updater->setMaxConsecutiveRejections(u.maxConsecutiveRejections);
+    if (const auto offsets = calibrationOffsetsFromName(u.offsets);
+        offsets && *offsets != CalibrationOffsets::Off)
+        updater->setOffsetCheck(
+            std::make_unique<OffsetCheck>(updater->auxiliaryModel().lawName(), *offsets));
     return updater;
 }
 

@@ -1,4 +1,6 @@
 #include "core/experiment/HybridTest.h"
+
+#include "core/experiment/ElementChannels.h"
 #include "core/util/ReasonText.h"
 #include "core/util/InputLimits.h"
 
@@ -88,6 +90,24 @@ void HybridTest::revisitUpdatedModel()
 }
 
 bool HybridTest::rejectUpdate(int proposalId) { return m_updater && m_updater->reject(proposalId); }
+
+bool HybridTest::approveOffsets(int id, std::string* error)
+{
+    if (!m_updater) {
+        if (error)
+            *error = "no online model updating in this test";
+        return false;
+    }
+    if (!m_updater->approveOffsets(id, *m_structure, error))
+        return false;
+    revisitUpdatedModel();
+    return true;
+}
+
+bool HybridTest::rejectOffsets(int id)
+{
+    return m_updater && m_updater->rejectOffsets(id).has_value();
+}
 
 void HybridTest::addObserver(StepObserver* observer) { m_observers.push_back(observer); }
 
@@ -298,6 +318,7 @@ HybridTest::StepResult HybridTest::step()
     m_structure->toFull(uTrial, m_uFull);
     const Eigen::VectorXd& uFull = m_uFull;
     for (ExperimentalElement* x : m_specimens) {
+        x->setTargetTime((m_step + 1) * m_options.dt); // the step being computed
         if (auto why = x->targetViolation(uFull)) {
             enterHold(AlarmKind::LimitExceeded, *why);
             return StepResult::Held;
@@ -357,8 +378,10 @@ void HybridTest::publish()
     m_structure->toFull(m_integrator->acceleration(), rec.a);
     const auto& elements = m_structure->elements();
     rec.elements.resize(elements.size());
+    rec.channels.clear();
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const Element& e = *elements[i];
+        appendChannelValues(e, rec.channels);
         ElementSample& s = rec.elements[i];
         if (m_step == 0) {
             s = ElementSample{};

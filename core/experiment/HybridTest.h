@@ -108,6 +108,10 @@ public:
     /// Operator decision on a pending update proposal (between steps).
     bool approveUpdate(int proposalId);
     bool rejectUpdate(int proposalId);
+    /// Operator decision on the pending offsets (ModelUpdater::approveOffsets; between
+    /// steps): false with `error` set if they are not pending or cannot be applied.
+    bool approveOffsets(int id, std::string* error);
+    bool rejectOffsets(int id);
 
     /// Per-site health (sites: docs/configuration.md), updated after every step, hold and
     /// resume; readable from any thread.

@@ -33,6 +33,10 @@ struct StepRecord {
     /// Per site (RunLayout::sites order): the step's round trip [s], the slowest of the site's
     /// elements from target sent to measurement received; NaN at step 0.
     std::vector<double> siteRoundTrips;
+    /// Every element's channels (ElementChannels.h: each basic DOF and actuator of a multi-DOF
+    /// element), elements in structure order, RunLayout::channels' order; empty without
+    /// multi-DOF elements.
+    std::vector<double> channels;
     bool hasUpdating = false; ///< the test runs online model updating
     UpdatingSample updating;  ///< valid when hasUpdating (step 0: initial estimate)
 };

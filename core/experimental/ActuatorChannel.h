@@ -11,10 +11,16 @@
 //   maxForce:       |force| (a commanded force past it is never sent; a measured one holds);
 //   maxIncrement:   |stroke - last committed stroke| per step [m] (the rate limit times dt).
 // A hold names the element and the channel.
+// A force-controlled channel holds a constant force, or follows a schedule of (t [s], F [kN])
+// points: F(t) linear between points (eq. F1: F = F_k + (t - t_k) (F_k+1 - F_k) / (t_k+1 -
+// t_k) for t_k <= t <= t_k+1), F of the first point before it and of the last after it
+// (docs/setups.md, "Scheduled forces"); its limits are checked on F(t) like a constant one.
 
 #include "core/experimental/SafetyLimits.h"
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace hsmu {
 
@@ -28,8 +34,19 @@ struct ActuatorChannelSpec {
     /// [kN/m] initial stiffness the channel sees (the specimen through this actuator), for K0;
     /// a force-controlled channel adds no stiffness.
     double initialStiffness = 0.0;
+    /// Force control: (t [s], F [kN]) points, t strictly increasing; empty: heldForce. Last,
+    /// so that brace initializers of the fields above keep their meaning.
+    std::vector<std::array<double, 2>> forceSchedule;
 };
 
 const char* actuatorModeName(ActuatorMode m);
+
+/// The force a force-controlled channel commands at test time t [s] (eq. F1; heldForce
+/// without a schedule) [kN].
+double commandedForce(const ActuatorChannelSpec& c, double t);
+
+/// Why the schedule is not usable (empty string: it is): a point not finite, times not
+/// strictly increasing.
+std::string forceScheduleProblem(const std::vector<std::array<double, 2>>& schedule);
 
 } // namespace hsmu

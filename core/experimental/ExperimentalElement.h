@@ -39,6 +39,10 @@ public:
 
     /// Why the target for full displacements u must not be sent, if it must not.
     virtual std::optional<std::string> targetViolation(const Eigen::VectorXd& uFull) const;
+    /// The test time [s] of the step whose target is checked and sent next (HybridTest calls
+    /// it before targetViolation): a scheduled command (a force-controlled actuator following
+    /// a schedule, ActuatorChannel.h) is taken at it. Default: not used.
+    virtual void setTargetTime(double /*time*/) {}
 
     /// Check limits and send the target (no wait).
     ElementStatus sendTrial(const Eigen::VectorXd& uFull) override;

@@ -81,8 +81,8 @@ std::optional<std::string> ExperimentalLink2d::commandsFor(const Eigen::Vector3d
             cmd[i] = s[i];
             why = c.limits.violationOfTarget(s[i], m_lastStroke[i]);
         } else {
-            cmd[i] = c.heldForce;
-            why = c.limits.violationOfForce(c.heldForce);
+            cmd[i] = commandedForce(c, m_targetTime); // constant or scheduled
+            why = c.limits.violationOfForce(cmd[i]);
         }
         if (why)
             return name() + ": actuator '" + c.name + "': " + *why;

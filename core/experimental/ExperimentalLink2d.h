@@ -6,7 +6,8 @@
 // control layers) by N actuator channels of one control (ExperimentalControl::setTargets).
 //
 // Per step: d = A u (L1); strokes s = S(d) (setup, eq. S1); each channel's command is its
-// stroke (displacement control) or its held force (force control, ActuatorChannel.h); every
+// stroke (displacement control) or its held force (force control, constant or following its
+// schedule at the target's test time, setTargetTime; ActuatorChannel.h eq. F1); every
 // channel's limits are checked before any command leaves. The measured strokes s_m and forces
 // f_m come back through the setup: d_m = S^-1(s_m) (the DOFs no actuator fixes taken from the
 // trial d, eq. S4), q = J(d_m)^T f_m (eq. S3); the structure gets A^T q (eq. L2) and K0 gets
@@ -40,6 +41,7 @@ public:
                        std::unique_ptr<ExperimentalControl> control, int primary = 1);
 
     std::optional<std::string> targetViolation(const Eigen::VectorXd& uFull) const override;
+    void setTargetTime(double time) override { m_targetTime = time; }
     ElementStatus sendTrial(const Eigen::VectorXd& uFull) override;
     ElementStatus setTrial(const Eigen::VectorXd& uFull) override;
     ElementStatus commit() override;
@@ -73,6 +75,7 @@ private:
     int m_primary;
     Eigen::Matrix3d m_kb0;
     bool m_linkSent = false;
+    double m_targetTime = 0.0; // [s] the next target's test time (scheduled forces)
     Eigen::Vector3d m_dTrial = Eigen::Vector3d::Zero();
     Eigen::VectorXd m_cmd, m_sMeas, m_fMeas, m_dMeas, m_q;
     Eigen::VectorXd m_lastStroke; // committed commanded stroke per channel (increment limit)

@@ -19,6 +19,8 @@ RunLayout RunLayout::of(const Structure& structure) {
         info.nonlinear = info.experimental || (law && law->lawName() != "elastic");
         info.units = elementUnits(info.type);
         layout.elements.push_back(std::move(info));
+        for (ElementChannel& c : elementChannels(*e))
+            layout.channels.push_back(std::move(c));
     }
     layout.sites = siteNames(structure);
     return layout;

@@ -8,6 +8,7 @@
 // uRef / fRef for a Bouc-Wen law) and the specimen whose units the auxiliary force carries.
 // Thread rules: plain data, copy freely.
 
+#include "core/experiment/ElementChannels.h"
 #include "core/output/ElementUnits.h"
 
 #include <optional>
@@ -43,6 +44,9 @@ struct RunLayout {
     /// Sites of the experimental elements (docs/configuration.md), order of
     /// StepRecord::siteRoundTrips; empty without experimental elements.
     std::vector<std::string> sites;
+    /// The multi-DOF elements' channels (core/experiment/ElementChannels.h: every basic DOF
+    /// and actuator), order of StepRecord::channels; empty without multi-DOF elements.
+    std::vector<ElementChannel> channels;
 
     /// Valid before or after Structure::finalize(); no updating information.
     static RunLayout of(const Structure& structure);

@@ -14,6 +14,7 @@ void keepPeak(double& peak, double value) {
 RunStatistics::RunStatistics(RunLayout layout)
     : m_layout(std::move(layout)), m_peakU(m_layout.dofNames.size(), 0.0),
       m_peakForce(m_layout.elements.size(), 0.0), m_peakDeformation(m_layout.elements.size(), 0.0),
+      m_peakChannel(m_layout.channels.size(), 0.0),
       m_commanded(m_layout.elements.size()), m_measured(m_layout.elements.size()),
       m_tracking(m_layout.elements.size()) {
 }
@@ -32,6 +33,8 @@ void RunStatistics::onStep(const StepRecord& record) {
     keepPeak(m_peakAg, record.groundAcceleration);
     for (std::size_t i = 0; i < m_peakU.size() && Eigen::Index(i) < record.u.size(); ++i)
         keepPeak(m_peakU[i], record.u[Eigen::Index(i)]);
+    for (std::size_t i = 0; i < m_peakChannel.size() && i < record.channels.size(); ++i)
+        keepPeak(m_peakChannel[i], record.channels[i]);
     for (std::size_t i = 0; i < m_peakForce.size() && i < record.elements.size(); ++i) {
         keepPeak(m_peakForce[i], record.elements[i].force);
         keepPeak(m_peakDeformation[i], record.elements[i].deformation);

@@ -1,5 +1,6 @@
 #include "core/output/RunSummary.h"
 
+#include "core/output/PrettyJson.h"
 #include "core/rths/TrackingMetrics.h"
 
 #include "core/integration/Integrator.h"
@@ -57,8 +58,11 @@ std::optional<std::string> holdReason(const HybridTest& test) {
     return std::string("held");
 }
 
-nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats,
-                              const RunInfo& info) {
+namespace {
+
+/// The summary without its per-DOF and per-element objects (namedSummaryBlocks).
+nlohmann::json summaryWithoutNamedBlocks(const HybridTest& test, const RunStatistics& stats,
+                                         const RunInfo& info) {
     const RunLayout& layout = stats.layout();
     const StabilityReport& st = test.stability();
     nlohmann::json j;
@@ -77,32 +81,16 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
                       {"message", st.message}};
 
     const StepRecord& last = stats.last();
-    nlohmann::json finalU = nlohmann::json::object(), finalF = nlohmann::json::object();
-    for (std::size_t i = 0; i < layout.dofNames.size(); ++i)
-        finalU[layout.dofNames[i]] =
-            Eigen::Index(i) < last.u.size() ? number(last.u[Eigen::Index(i)]) : nullptr;
-    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
-        const double f = i < last.elements.size() ? last.elements[i].force : std::nan("");
-        finalF[layout.elements[i].name] = withUnit(f, layout.elements[i].units.force);
-    }
-    j["final"] = {{"step", last.step},
-                  {"time_s", number(last.time)},
-                  {"displacement_m", finalU},
-                  {"force", finalF}};
-
+    j["final"] = {{"step", last.step}, {"time_s", number(last.time)}};
     j["peak_ground_acceleration_m_s2"] = number(stats.peakGroundAcceleration());
-    nlohmann::json peakU = nlohmann::json::object(), peakF = nlohmann::json::object(),
-                   peakD = nlohmann::json::object();
-    for (std::size_t i = 0; i < layout.dofNames.size(); ++i)
-        peakU[layout.dofNames[i]] = number(stats.peakDisplacement()[i]);
-    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
-        const ElementInfo& e = layout.elements[i];
-        peakF[e.name] = withUnit(stats.peakForce()[i], e.units.force);
-        peakD[e.name] = withUnit(stats.peakDeformation()[i], e.units.deformation);
+    if (!layout.channels.empty()) { // multi-DOF elements: every basic DOF and actuator
+        nlohmann::json peakC = nlohmann::json::object();
+        for (std::size_t i = 0; i < layout.channels.size(); ++i) {
+            const ElementChannel& c = layout.channels[i];
+            peakC[c.element][c.name] = withUnit(stats.peakChannel()[i], c.unit);
+        }
+        j["peak_channels"] = peakC;
     }
-    j["peak_displacement_m"] = peakU;
-    j["peak_force"] = peakF;
-    j["peak_deformation"] = peakD;
 
     nlohmann::json alarms = nlohmann::json::array();
     for (const Alarm& a : test.alarms())
@@ -122,6 +110,48 @@ nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats
     j["tracking"] = tracking;
     if (const ModelUpdater* updater = test.updater())
         j["updating"] = updatingBlock(*updater, last);
+    return j;
+}
+
+/// The summary's {name: value} objects by their JSON pointers: final displacement and force,
+/// peak displacement, force and deformation.
+std::map<std::string, NamedValues> namedSummaryBlocks(const RunStatistics& stats) {
+    const RunLayout& layout = stats.layout();
+    const StepRecord& last = stats.last();
+    std::vector<std::string> elements, forceUnits, deformationUnits;
+    for (const ElementInfo& e : layout.elements) {
+        elements.push_back(e.name);
+        forceUnits.push_back(e.units.force);
+        deformationUnits.push_back(e.units.deformation);
+    }
+    std::vector<double> finalU(layout.dofNames.size()), finalF(elements.size());
+    for (std::size_t i = 0; i < finalU.size(); ++i)
+        finalU[i] = Eigen::Index(i) < last.u.size() ? last.u[Eigen::Index(i)] : std::nan("");
+    for (std::size_t i = 0; i < finalF.size(); ++i)
+        finalF[i] = i < last.elements.size() ? last.elements[i].force : std::nan("");
+    std::map<std::string, NamedValues> blocks;
+    blocks["/final/displacement_m"] = {layout.dofNames, std::move(finalU), {}};
+    blocks["/final/force"] = {elements, std::move(finalF), forceUnits};
+    blocks["/peak_displacement_m"] = {layout.dofNames, stats.peakDisplacement(), {}};
+    blocks["/peak_force"] = {elements, stats.peakForce(), std::move(forceUnits)};
+    blocks["/peak_deformation"] = {std::move(elements), stats.peakDeformation(),
+                                   std::move(deformationUnits)};
+    return blocks;
+}
+
+} // namespace
+
+nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats,
+                              const RunInfo& info) {
+    nlohmann::json j = summaryWithoutNamedBlocks(test, stats, info);
+    for (const auto& [pointer, block] : namedSummaryBlocks(stats)) {
+        nlohmann::json values = nlohmann::json::object();
+        for (std::size_t i = 0; i < block.names.size(); ++i)
+            values[block.names[i]] = block.units.empty()
+                                            ? number(block.values[i])
+                                            : withUnit(block.values[i], block.units[i]);
+        j[nlohmann::json::json_pointer(pointer)] = std::move(values);
+    }
     return j;
 }
 
@@ -149,7 +179,9 @@ void writeSummaryJson(const std::string& path, const HybridTest& test, const Run
     std::ofstream out(path, std::ios::out | std::ios::trunc);
     if (!out)
         throw std::runtime_error(path + ": cannot be opened for writing");
-    out << makeRunSummary(test, stats, info).dump(2) << '\n';
+    // Streamed: the same bytes as makeRunSummary(...).dump(2) (test_output_run_summary).
+    writePrettyJson(out, summaryWithoutNamedBlocks(test, stats, info), namedSummaryBlocks(stats));
+    out << '\n';
     out.flush();
     if (!out)
         throw std::runtime_error(path + ": write failed");

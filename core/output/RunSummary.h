@@ -6,7 +6,8 @@
 //   final {step, time_s, displacement_m {dof: m}, force {element: {value, unit}}},
 //   peak_ground_acceleration_m_s2,
 //   peak_displacement_m {dof: m}, peak_force {element: {value, unit}},
-//   peak_deformation {element: {value, unit}},
+//   peak_deformation {element: {value, unit}}, peak_channels {element: {channel: {value,
+//   unit}}} (only with multi-DOF elements: every basic DOF and actuator, ElementChannels.h),
 //   alarms [{time_s, step, severity, kind, message}] (the updating alarms included),
 //   hold_reason (string or null),
 //   link_security {site: "tls", "plaintext-loopback", "insecure-plaintext", "builtin", or null
@@ -60,8 +61,10 @@ nlohmann::json trackingJson(const rths::TrackingReport& report, const std::strin
 nlohmann::json makeRunSummary(const HybridTest& test, const RunStatistics& stats,
                               const RunInfo& info);
 
-/// makeRunSummary written with 2-space indentation. Throws std::runtime_error naming the file
-/// if it cannot be written.
+/// makeRunSummary written with 2-space indentation (the bytes of its dump(2)), its per-DOF and
+/// per-element objects streamed rather than built as a DOM (core/output/PrettyJson.h: a
+/// 10,000-DOF run's five 10,000-entry objects). Throws std::runtime_error naming the file if it
+/// cannot be written.
 void writeSummaryJson(const std::string& path, const HybridTest& test, const RunStatistics& stats,
                       const RunInfo& info);
 

@@ -2,6 +2,7 @@
 
 #include "core/output/TenDigits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,7 +24,7 @@ std::size_t StepCsvWriter::columnCount(const RunLayout& layout) {
         n += e.experimental ? 3 : 2;
     if (layout.updating)
         n += 2 * layout.updating->parameters.size() + 2;
-    return n;
+    return n + layout.channels.size();
 }
 
 std::vector<std::string> StepCsvWriter::columnNames(const RunLayout& layout) {
@@ -45,6 +46,11 @@ std::vector<std::string> StepCsvWriter::columnNames(const RunLayout& layout) {
             h.push_back("std_" + p);
         h.push_back("aux_force_" + compactUnit(layout.updating->units.force));
         h.push_back("fit_error");
+    }
+    for (const ElementChannel& c : layout.channels) {
+        std::string name = c.element + "_" + c.name + "_" + compactUnit(c.unit);
+        std::replace(name.begin(), name.end(), ' ', '_');
+        h.push_back(name);
     }
     return h;
 }
@@ -76,8 +82,14 @@ void StepCsvWriter::rowValues(const RunLayout& layout, const StepRecord& record,
         if (layout.elements[i].experimental)
             out.push_back(s.commanded);
     }
-    if (!layout.updating)
-        return;
+    if (layout.updating)
+        appendUpdating(layout, record, out);
+    for (std::size_t i = 0; i < layout.channels.size(); ++i)
+        out.push_back(i < record.channels.size() ? record.channels[i] : std::nan(""));
+}
+
+void StepCsvWriter::appendUpdating(const RunLayout& layout, const StepRecord& record,
+                                   std::vector<double>& out) {
     const std::size_t n = layout.updating->parameters.size();
     const UpdatingSample& u = record.updating;
     const auto at = [&record](const std::vector<double>& x, std::size_t i) {

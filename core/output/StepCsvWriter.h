@@ -13,6 +13,9 @@
 //   fit_error (the inspector's normalized RMS error [-]),
 // e.g. "param_k0,...,std_k0,...,aux_force_kNm,fit_error"; a record without updating data
 // writes NaN there.
+// Last, with multi-DOF elements (RunLayout::channels, core/experiment/ElementChannels.h), one
+// column per basic DOF and actuator channel: <element>_<channel>_<unit>, blanks as '_', e.g.
+// "Column_L_shear_force_kN,...,Column_L_vertical_stroke_m".
 // Values are written like "%.10g" with a '.' decimal point whatever the locale (writeTenDigits).
 // The file is flushed every kFlushInterval rows and by finish() / the destructor, so an
 // interrupted run keeps (almost) every committed step.
@@ -65,6 +68,9 @@ public:
     const std::string& path() const { return m_path; }
 
 private:
+    /// The updating part of a row (param_, std_, aux_force_, fit_error).
+    static void appendUpdating(const RunLayout& layout, const StepRecord& record,
+                               std::vector<double>& out);
     std::string m_path;
     RunLayout m_layout;
     std::ofstream m_out;

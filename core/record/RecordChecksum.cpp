@@ -43,6 +43,11 @@ std::string recordMetadataChecksum(const RecordMetadata& m, const RunLayout& l) 
         f.number(e.experimental ? 1.0 : 0.0);
         f.number(e.nonlinear ? 1.0 : 0.0);
     }
+    for (const ElementChannel& c : l.channels) {
+        f.text(c.element);
+        f.text(c.name);
+        f.text(c.unit);
+    }
     if (l.updating) {
         f.text(l.updating->specimen);
         f.text(l.updating->method);

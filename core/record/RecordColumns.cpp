@@ -63,6 +63,19 @@ std::optional<RecordTable> actuators(const RecordData& r) {
     return t;
 }
 
+/// channels.csv: every basic DOF and actuator of the multi-DOF elements (records that have them).
+std::optional<RecordTable> channels(const RecordData& r) {
+    const auto n = Eigen::Index(r.layout.channels.size());
+    if (n == 0 || r.channels.rows() != r.rows() || r.channels.cols() != n)
+        return std::nullopt;
+    RecordTable t{"channels.csv", {}};
+    for (Eigen::Index j = 0; j < n; ++j) {
+        const ElementChannel& c = r.layout.channels[std::size_t(j)];
+        t.columns.push_back(matrixColumn(c.element + " " + c.name, c.unit, &RecordData::channels, j));
+    }
+    return t;
+}
+
 std::optional<RecordTable> sites(const RecordData& r) {
     const auto n = r.siteRoundTrip.cols();
     if (n == 0 || r.siteRoundTrip.rows() != r.rows())
@@ -127,6 +140,8 @@ std::vector<RecordTable> recordTables(const RecordData& r) {
     tables.push_back(dofs(r));
     tables.push_back(elements(r));
     if (auto t = actuators(r))
+        tables.push_back(std::move(*t));
+    if (auto t = channels(r))
         tables.push_back(std::move(*t));
     if (auto t = sites(r))
         tables.push_back(std::move(*t));

@@ -10,6 +10,9 @@
 //   actuators.csv  per specimen: <name> actuator commanded, <name> actuator measured [its
 //                  deformation unit], <name> held ticks [-], <name> flags [-] (records with
 //                  /elements/actuator and a specimen)
+//   channels.csv   per multi-DOF element channel: <element> <channel> [its unit], e.g.
+//                  "Column L shear force" [kN], "Column L vertical stroke" [m] (records with
+//                  /elements/channels; core/experiment/ElementChannels.h)
 //   sites.csv      <site> round trip [s] (records with /sites/round_trip)
 //   updating.csv   <parameter> [-] ..., stddev <parameter> [-] ..., auxiliary_force [force],
 //                  fit_error [-], applied_updates, updates_this_step, pending_proposals [-],

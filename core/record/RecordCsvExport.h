@@ -9,6 +9,9 @@
 //   actuators.csv      step, time [s], then per specimen: <name> actuator commanded [unit],
 //                      <name> actuator measured [unit], <name> held ticks [-], <name> flags [-]
 //                      (records with /elements/actuator and a specimen; nan: no channel)
+//   channels.csv       step, time [s], then per channel of a multi-DOF element: <element>
+//                      <channel> [unit] (every basic DOF's commanded, deformation, force and
+//                      every actuator's command, stroke, force; records with /elements/channels)
 //   updating.csv       step, time [s], <parameter> [-] ..., stddev <parameter> [-] ...,
 //                      auxiliary_force [unit], fit_error [-], applied_updates [-],
 //                      updates_this_step [-], pending_proposals [-] and, from schema 2,

@@ -73,6 +73,9 @@ struct RecordData {
     Eigen::MatrixXd actuatorMeasured;  ///< [N x nElem] element deformation units
     Eigen::MatrixXd heldTicks;         ///< [N x nElem] controller ticks held for a late target
     Eigen::MatrixXd actuatorFlags;     ///< [N x nElem] bit 0 fractured, bit 1 replayed
+    /// [N x nChannel] the multi-DOF elements' channels (/elements/channels: every basic DOF
+    /// and actuator, layout.channels order and units); 0 x 0 without them.
+    Eigen::MatrixXd channels;
 
     // Online model updating (empty unless layout.updating).
     Eigen::MatrixXd parameters;        ///< [N x nParam] estimate

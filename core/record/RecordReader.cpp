@@ -73,6 +73,7 @@ struct RecordReader::Impl {
         noteStep, noteText;
     Column actCmd, actMeasured, actTicks, actFlags; // /elements/actuator, when present
     bool actuator = false;
+    Column channels; // /elements/channels, when the run had multi-DOF elements
     bool v2 = false;                        // schema 2 datasets present
     std::vector<std::string> decisionCodes; // /updating/events/decision "codes" (if present)
 
@@ -132,6 +133,8 @@ std::vector<Column*> RecordReader::Impl::stepColumns() {
     if (data.layout.updating && v2)
         for (Column* x : {&tracking, &requested})
             c.push_back(x);
+    if (!data.layout.channels.empty())
+        c.push_back(&channels);
     if (!data.layout.sites.empty())
         c.push_back(&siteRoundTrip);
     return c;
@@ -239,6 +242,18 @@ void RecordReader::Impl::readMetadata() {
         actMeasured = column("/elements/actuator/measured", nElem);
         actTicks = column("/elements/actuator/held_ticks", nElem);
         actFlags = column("/elements/actuator/flags", nElem);
+    }
+    if (H5Lexists(root, "/elements/channels", H5P_DEFAULT) > 0) {
+        const h5::Id d = h5::check(H5Dopen2(root, "/elements/channels", H5P_DEFAULT), w,
+                                   "damaged record (no dataset /elements/channels)");
+        const auto owner = h5::readStringsAttr(d.get(), "elements", w);
+        const auto names = h5::readStringsAttr(d.get(), "names", w);
+        const auto units = h5::readStringsAttr(d.get(), "units", w);
+        if (names.size() != owner.size() || units.size() != owner.size())
+            throw RecordError(path + ": damaged record (channel attributes disagree)");
+        for (std::size_t i = 0; i < owner.size(); ++i)
+            layout.channels.push_back({owner[i], names[i], units[i]});
+        channels = column("/elements/channels", int(owner.size()));
     }
     if (H5Lexists(root, "updating", H5P_DEFAULT) > 0) {
         const h5::Id g = h5::check(H5Gopen2(root, "updating", H5P_DEFAULT), w,
@@ -355,6 +370,8 @@ int RecordReader::Impl::readNewRows() {
     appendRows(data.commanded, cmd, r0, n, w);
     if (!data.layout.sites.empty())
         appendRows(data.siteRoundTrip, siteRoundTrip, r0, n, w);
+    if (!data.layout.channels.empty())
+        appendRows(data.channels, channels, r0, n, w);
     if (actuator) {
         appendRows(data.actuatorCommanded, actCmd, r0, n, w);
         appendRows(data.actuatorMeasured, actMeasured, r0, n, w);

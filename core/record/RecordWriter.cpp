@@ -54,7 +54,7 @@ void RecordWriter::Impl::Batch::clear() {
                     &bEventElement, &bEventDecision, &bEventProposal})
         b->clear();
     for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
-                    &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip})
+                    &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip, &bChannels})
         b->clear();
     bAlarms.clear();
     bNotes.clear();
@@ -62,7 +62,8 @@ void RecordWriter::Impl::Batch::clear() {
 }
 
 void RecordWriter::Impl::Batch::reserve(std::size_t rows, std::size_t nDof, std::size_t nElem,
-                                        std::size_t nPar, std::size_t nSite) {
+                                        std::size_t nPar, std::size_t nSite,
+                                        std::size_t nChan) {
     for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending, &bRequested})
         b->reserve(rows);
     for (auto* b : {&bTime, &bAg, &bAux, &bFit})
@@ -75,6 +76,7 @@ void RecordWriter::Impl::Batch::reserve(std::size_t rows, std::size_t nDof, std:
         b->reserve(rows * nPar);
     bTracking.reserve(rows * std::size_t(recordschema::kTrackingColumns));
     bSiteRoundTrip.reserve(rows * nSite);
+    bChannels.reserve(rows * nChan);
     actuator.reserve(rows * nElem);
 }
 
@@ -92,6 +94,8 @@ void RecordWriter::Impl::writeBuffers(const Batch& b) {
         cmd.append(b.bCmd.data(), n);
         if (nSite > 0)
             siteRoundTrip.append(b.bSiteRoundTrip.data(), n);
+        if (nChan > 0)
+            channels.append(b.bChannels.data(), n);
         actuator.write(b.actuator, n);
         if (layout.updating) {
             par.append(b.bPar.data(), n);
@@ -222,7 +226,8 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
             &noteTime,
             &noteStep,
             &noteText,
-            &siteRoundTrip};
+            &siteRoundTrip,
+            &channels};
 }
 
 int RecordWriter::batchRowsFor(std::size_t nDof, std::size_t nElem) {
@@ -242,12 +247,13 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->nElem = layout.elements.size();
     m_d->nPar = layout.updating ? layout.updating->parameters.size() : 0;
     m_d->nSite = layout.sites.size();
+    m_d->nChan = layout.channels.size();
     const h5::QuietErrors quiet;
     m_d->create(start); // on a throw, Impl's handles close the partial file
     m_d->batchRows = batchRowsFor(m_d->nDof, m_d->nElem);
     const std::size_t rows = std::size_t(m_d->batchRows);
     for (Impl::Batch* b : {&m_d->fill, &m_d->out})
-        b->reserve(rows, m_d->nDof, m_d->nElem, m_d->nPar, m_d->nSite);
+        b->reserve(rows, m_d->nDof, m_d->nElem, m_d->nPar, m_d->nSite, m_d->nChan);
     m_d->thread = std::make_unique<RecordThread>([d = m_d.get()] { d->writeOut(); });
 }
 
@@ -273,6 +279,7 @@ void RecordWriter::onStep(const StepRecord& r) {
         d.fill.bCmd.push_back(s.commanded);
     }
     pushValues(d.fill.bSiteRoundTrip, r.siteRoundTrips, d.nSite, true);
+    pushValues(d.fill.bChannels, r.channels, d.nChan, true);
     d.actuator.buffer(r, d.fill.actuator);
     if (d.layout.updating) {
         const UpdatingSample& up = r.updating;

@@ -31,7 +31,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     // filled), not HDF5's default 1 MiB: rows are only appended, so a written chunk is never
     // read back, and with 1 MiB a 31,160-step SDOF run kept 3.2 MB of written chunks (issue
     // 27). Set on the file: H5Fstart_swmr_write() reopens the datasets with the file's cache.
-    const long widest = long(std::max({nDof, nElem, nPar, nSite,
+    const long widest = long(std::max({nDof, nElem, nPar, nSite, nChan,
                                        std::size_t(recordschema::kTrackingColumns)}));
     const std::size_t chunkBytes = std::size_t(
         long(recordschema::chunkRowsFor(int(widest), int(sizeof(double)))) * widest * 8);
@@ -125,6 +125,18 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
         actuator.create(g.get(), names, defUnits, w, start.deflate);
+        if (nChan > 0) { // the multi-DOF elements' basic DOFs and actuators
+            std::vector<std::string> owner, channel, unit;
+            for (const ElementChannel& c : layout.channels) {
+                owner.push_back(c.element);
+                channel.push_back(c.name);
+                unit.push_back(c.unit);
+            }
+            channels = h5::Extendible(g.get(), "channels", f64, int(nChan), w, rows, z);
+            h5::writeAttr(channels.id(), "elements", owner, w);
+            h5::writeAttr(channels.id(), "names", channel, w);
+            h5::writeAttr(channels.id(), "units", unit, w);
+        }
     }
     if (layout.updating)
         createUpdating(root);

@@ -32,7 +32,7 @@ namespace hsmu {
 struct RecordWriter::Impl {
     std::string path;
     RunLayout layout;
-    std::size_t nDof = 0, nElem = 0, nPar = 0, nSite = 0;
+    std::size_t nDof = 0, nElem = 0, nPar = 0, nSite = 0, nChan = 0;
     h5::Id file;
     h5::Id severityType, kindType, messageType, noteType;
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
@@ -41,6 +41,7 @@ struct RecordWriter::Impl {
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
     h5::Extendible noteTime, noteStep, noteText;
     h5::Extendible siteRoundTrip;
+    h5::Extendible channels; // /elements/channels (multi-DOF elements)
     ActuatorColumns actuator; // /elements/actuator
 
     /// Rows, alarms and notes buffered between two flushes.
@@ -48,7 +49,7 @@ struct RecordWriter::Impl {
         std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep,
             bEventElement, bEventDecision, bEventProposal;
         std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
-            bTracking, bEventTime, bEventValues, bSiteRoundTrip;
+            bTracking, bEventTime, bEventValues, bSiteRoundTrip, bChannels;
         ActuatorColumns::Rows actuator;
         std::vector<Alarm> bAlarms;
         std::vector<RecordNote> bNotes;
@@ -56,7 +57,7 @@ struct RecordWriter::Impl {
         void clear();
         /// Capacity for `rows` rows, so that appending a row never allocates.
         void reserve(std::size_t rows, std::size_t nDof, std::size_t nElem, std::size_t nPar,
-                     std::size_t nSite);
+                     std::size_t nSite, std::size_t nChan);
     };
     // `fill` belongs to the stepping thread; `out` to the record thread while it writes it
     // (between RecordThread::start() and the next wait()), to the stepping thread otherwise.

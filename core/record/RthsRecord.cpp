@@ -1,6 +1,8 @@
 #include "core/record/RthsRecord.h"
 
+#include <filesystem>
 #include <limits>
+#include <stdexcept>
 
 namespace hsmu::rths {
 
@@ -31,14 +33,21 @@ RunLayout rthsLayout(int floors)
     return layout;
 }
 
-RthsRecordFeed::RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors)
-    : m_sink(sink), m_ag(groundMotion), m_floors(floors)
+RthsRecordFeed::RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors,
+                               RecordWriter* notes)
+    : m_sink(sink), m_notes(notes), m_ag(groundMotion), m_floors(floors)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     m_row.u = Eigen::VectorXd::Zero(2 * floors);
     m_row.v = Eigen::VectorXd::Constant(2 * floors, nan);
     m_row.a = m_row.v;
     m_row.elements.resize(1);
+}
+
+void RthsRecordFeed::onUpdate(long k, const UpdateEvent& event)
+{
+    if (m_notes)
+        m_notes->addNote(event.time, int(k), describeTwinUpdate(event));
 }
 
 void RthsRecordFeed::onTick(long k, const RthsTick& tick,
@@ -56,6 +65,34 @@ void RthsRecordFeed::onTick(long k, const RthsTick& tick,
     e.actuator.commanded = tick.command;
     e.actuator.measured = tick.measured;
     m_sink.onStep(m_row);
+}
+
+std::string firstFreeRecordPath(const std::string& dir)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec)
+        throw std::runtime_error("cannot create the record folder " + dir + ": " + ec.message());
+    for (int n = 1;; ++n) {
+        const fs::path p = fs::path(dir) / (n == 1 ? std::string("record.h5") : "record-" + std::to_string(n) + ".h5");
+        if (!fs::exists(p, ec))
+            return p.string();
+    }
+}
+
+RthsRecording::RthsRecording(const std::string& dir, const RecordStart& start, const GroundMotion& groundMotion,
+                             int floors)
+    : m_path(firstFreeRecordPath(dir)), m_writer(m_path, rthsLayout(floors), start),
+      m_feed(m_writer, groundMotion, floors)
+{
+}
+
+bool RthsRecording::finish(const RthsRun& run, bool deadlineMiss)
+{
+    if (!run.hold.empty())
+        m_writer.writeAlarms({rthsHoldAlarm(run, deadlineMiss)});
+    return m_writer.finish();
 }
 
 } // namespace hsmu::rths

@@ -14,7 +14,9 @@
 #include "core/experiment/StepRecord.h"
 #include "core/groundmotion/GroundMotion.h"
 #include "core/output/RunLayout.h"
+#include "core/record/RecordWriter.h"
 #include "core/rths/RthsBenchmark.h"
+#include "core/record/RecordWriter.h"
 #include "core/util/Alarm.h"
 
 namespace hsmu::rths {
@@ -31,15 +33,46 @@ RunLayout rthsLayout(int floors);
 /// Turns ticks into StepRecords for a StepObserver (a RecordWriter). No allocation per tick.
 class RthsRecordFeed final : public TickObserver {
 public:
-    RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors);
+    /// notes: where the twin updates go, as notes at their tick (describeTwinUpdate); nullptr:
+    /// nowhere.
+    RthsRecordFeed(StepObserver& sink, const GroundMotion& groundMotion, int floors,
+                   RecordWriter* notes = nullptr);
     void onTick(long k, const RthsTick& tick,
                 const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) override;
+    void onUpdate(long k, const UpdateEvent& event) override;
 
 private:
     StepObserver& m_sink;
+    RecordWriter* m_notes;
     const GroundMotion& m_ag;
     int m_floors;
     StepRecord m_row;
+};
+
+/// The first free DIR/record.h5, DIR/record-2.h5, DIR/record-3.h5, ... (DIR created when
+/// missing): an earlier run's record is never overwritten. Throws std::runtime_error naming
+/// the folder when it cannot be created.
+std::string firstFreeRecordPath(const std::string& dir);
+
+/// One RTHS run's record in folder DIR, at firstFreeRecordPath(DIR): the RecordWriter (batched
+/// on its own thread) and the RthsRecordFeed the loop hands its ticks to (feed(), from the
+/// loop's thread); finish() after the loop: a held run's rthsHoldAlarm at its last tick, then
+/// the file closed. The console's RTHS view records through it (docs/rths.md).
+class RthsRecording {
+public:
+    /// Throws (RecordError, std::runtime_error) when the folder or the file cannot be created.
+    RthsRecording(const std::string& dir, const RecordStart& start, const GroundMotion& groundMotion,
+                  int floors);
+    const std::string& path() const { return m_path; }
+    TickObserver* feed() { return &m_feed; }
+    /// false with error() when the file could not be completed (every flushed tick stays).
+    bool finish(const RthsRun& run, bool deadlineMiss);
+    const std::string& error() const { return m_writer.error(); }
+
+private:
+    std::string m_path;
+    RecordWriter m_writer;
+    RthsRecordFeed m_feed;
 };
 
 } // namespace hsmu::rths

@@ -59,7 +59,7 @@ double loopDelay(const RthsSettings& s, double f)
 
 RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
                 const RthsSettings& settings, TickGate* gate, double duration,
-                TickObserver* observer)
+                TickObserver* observer, TwinUpdateSource* updates)
 {
     RthsLoop loop(partition, groundMotion, settings);
     const double h = loop.period();
@@ -79,6 +79,11 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
     for (long k = 0; k < n; ++k) {
         if (gate && !gate->admit(k, gateHold))
             break;
+        for (TwinUpdate u; updates && updates->next(k, u);) {
+            run.updates.push_back(loop.updateTwin(u));
+            if (observer)
+                observer->onUpdate(k, run.updates.back());
+        }
         const bool advanced = loop.tick();
         if (gate)
             gate->done(k);
@@ -91,6 +96,8 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
         hybrid.push_back(t.floors);
         if (observer)
             observer->onTick(k, t, reference.row(k));
+        if (updates && advanced)
+            updates->observe(k, t.measured, t.damperForce);
         run.peakForce = std::max(run.peakForce, std::abs(loop.plant().force()));
         run.peakStroke = std::max(run.peakStroke, std::abs(loop.plant().displacement()));
         run.peakVelocity = std::max(run.peakVelocity, std::abs(loop.plant().velocity()));
@@ -98,6 +105,8 @@ RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
             break;
     }
     run.hold = loop.holdReason().empty() ? gateHold : loop.holdReason();
+    if (loop.twin())
+        run.twin = loop.twin()->law().parameters();
     const long m = long(run.time.size());
     run.hybrid.resize(m, floors);
     for (long k = 0; k < m; ++k)

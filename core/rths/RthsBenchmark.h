@@ -9,6 +9,7 @@
 #include "core/rths/TrackingMetrics.h"
 
 #include <complex>
+#include <optional>
 #include <vector>
 
 namespace hsmu::rths {
@@ -22,6 +23,9 @@ struct RthsRun {
     FrequencyEvaluation frequency;
     double trackingIndicator = 0.0; ///< [m^2]
     double peakForce = 0.0, peakStroke = 0.0, peakVelocity = 0.0; ///< of the plant [N], [m], [m/s]
+    /// The twin updates decided during the run (step = the tick they came before), in order.
+    std::vector<UpdateEvent> updates;
+    std::optional<MrDamperParameters> twin; ///< the twin's parameters at the end (with a damper)
 };
 
 /// The benchmark's sample controller: PI 2 + 95 / s with the phase lead Gt on the command.
@@ -56,6 +60,8 @@ public:
     /// Tick k: what it produced, and the reference structure's floors at the same time [m].
     virtual void onTick(long k, const RthsTick& tick,
                         const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) = 0;
+    /// A twin update decided before tick k (applied or refused: the event says).
+    virtual void onUpdate(long /*k*/, const UpdateEvent& /*event*/) {}
 };
 
 /// Hands every tick to each of several observers, in the order added (e.g. the controller's
@@ -70,6 +76,11 @@ public:
         for (TickObserver* o : m_observers)
             o->onTick(k, tick, reference);
     }
+    void onUpdate(long k, const UpdateEvent& event) override
+    {
+        for (TickObserver* o : m_observers)
+            o->onUpdate(k, event);
+    }
 
 private:
     std::vector<TickObserver*> m_observers;
@@ -78,9 +89,13 @@ private:
 /// Run a whole record (its duration, at settings.rate) and evaluate it; with a gate, each tick
 /// waits for admit() and reports done(); with an observer, each tick is handed to it as it is
 /// sampled (so a record on disk holds every tick up to a crash). duration > 0 stops earlier [s].
+/// With updates (a damper twin: DamperTwin.h), before each tick (after the gate admitted it)
+/// every update it has due is applied to the twin (RthsLoop::updateTwin; the events in
+/// RthsRun::updates, and to the observer), and after the tick it observes the damper's
+/// measured deformation and force.
 RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
                 const RthsSettings& settings, TickGate* gate = nullptr, double duration = 0.0,
-                TickObserver* observer = nullptr);
+                TickObserver* observer = nullptr, TwinUpdateSource* updates = nullptr);
 
 /// Command (before the lead) to measured displacement of the discrete loop at omega [rad/s]:
 /// Lead(z) C(z) Gd / (1 + C(z) Gd), z = e^{j omega h}, Gd ~ G(j omega) e^{-j omega h / 2} (ZOH).

@@ -42,6 +42,17 @@ RthsLoop::RthsLoop(const Partition& partition, const GroundMotion& groundMotion,
     const auto n = m_p.numerical.m.rows();
     m_x = Eigen::VectorXd::Zero(n);
     m_v = Eigen::VectorXd::Zero(n);
+    if (settings.damper.enabled) {
+        const int d = settings.damper.twinDof;
+        if (d < 0 || d >= int(n))
+            throw std::invalid_argument("RTHS: the damper twin's DOF must be one of the structure's (0 to " +
+                                        std::to_string(n - 1) + ")");
+        if (!MrDamper::admissible(settings.damper.specimen) || !MrDamper::admissible(settings.damper.twin))
+            throw std::invalid_argument("RTHS: the damper's or its twin's mrDamper parameters are not admissible");
+        m_damper.emplace(settings.damper.specimen);
+        m_damper->setTimeIncrement(m_h);
+        m_twin.emplace(settings.damper, m_h);
+    }
     m_plant.reset(0.0);
     m_pid.reset(0.0);
     m_comp.reset(0.0);
@@ -64,6 +75,12 @@ Eigen::VectorXd RthsLoop::accelerationOf(const Eigen::VectorXd& x, const Eigen::
     const auto& n = m_p.numerical;
     Eigen::VectorXd load = -(m_p.reference.m * m_p.reference.iota) * ag - n.c * v - n.k * x;
     load(m_p.specimen.dof) -= fe;
+    if (m_twin) { // the twin's storey force, held over the tick
+        const int d = m_s.damper.twinDof;
+        load(d) -= m_twinForce;
+        if (d > 0)
+            load(d - 1) += m_twinForce;
+    }
     return m_mnInv * load;
 }
 
@@ -121,6 +138,17 @@ bool RthsLoop::tick()
     while (int(m_forces.size()) > m_s.forceDelay + 1)
         m_forces.pop_front();
     const double fe = int(m_forces.size()) > m_s.forceDelay ? m_forces.front() : 0.0;
+    // The damper in the specimen and its twin: one tick of each law, their forces held over it.
+    double damperForce = 0.0;
+    if (m_damper) {
+        if (m_damper->setTrialDeformation(m_plant.displacement()) == LawStatus::Ok)
+            m_damper->commit();
+        else
+            m_damper->revert();
+        damperForce = m_damper->committedForce();
+        const int d = m_s.damper.twinDof;
+        m_twinForce = m_twin->step(m_x(d) - (d > 0 ? m_x(d - 1) : 0.0));
+    }
     // L2: the target, compensation, servo-controller.
     const double ag0 = m_ag.at(t);
     const Eigen::VectorXd a0 = accelerationOf(m_x, m_v, ag0, fe);
@@ -136,11 +164,13 @@ bool RthsLoop::tick()
     m_last.force = fm;
     m_last.floors = m_x;
     m_last.floors(j) = xm;
+    m_last.damperForce = m_damper ? sense(damperForce, m_s.damper.forceNoise) : 0.0;
+    m_last.twinForce = m_twinForce;
     checkCommand(command); // the plant's state was checked at the end of the last tick
     if (holding())
         return false;
     // L4: the plant over [t, t + h].
-    m_plant.advance(valve, m_h);
+    m_plant.advance(valve, m_h, damperForce);
     // L5: the numerical substructure over [t, t + h] (RK4, fe held).
     const double agMid = m_ag.at(t + 0.5 * m_h), ag1 = m_ag.at(t + m_h);
     rk4Step(m_x, m_v, m_h, a0,
@@ -150,6 +180,18 @@ bool RthsLoop::tick()
     ++m_k;
     checkPlant();
     return !holding();
+}
+
+UpdateEvent RthsLoop::updateTwin(const TwinUpdate& u)
+{
+    const double t = double(m_k) * m_h;
+    if (!m_twin) {
+        UpdateEvent ev{int(m_k), t, "damper twin", ParameterLayout(u.names), u.values, false,
+                       u.source + ": this RTHS run has no damper twin; nothing applied"};
+        ev.decision = UpdateDecision::Refused;
+        return ev;
+    }
+    return m_twin->apply(u, m_k, t);
 }
 
 Eigen::MatrixXd referenceResponse(const LinearStructure& r, const GroundMotion& ag, double h,

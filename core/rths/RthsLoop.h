@@ -16,6 +16,7 @@
 
 #include "core/groundmotion/GroundMotion.h"
 #include "core/rths/Compensation.h"
+#include "core/rths/DamperTwin.h"
 #include "core/rths/DiscreteFilters.h"
 #include "core/rths/Partition.h"
 #include "core/rths/ServoHydraulicPlant.h"
@@ -25,6 +26,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 
 namespace hsmu::rths {
@@ -51,6 +53,7 @@ struct RthsSettings {
     SensorSettings sensors;
     ActuatorLimits limits;
     int forceDelay = 1; ///< ticks between measuring fe and its use (L3)
+    DamperSettings damper; ///< an MR damper in the specimen and its twin (DamperTwin.h)
 };
 
 /// What one tick produced (all at t = k h).
@@ -62,6 +65,8 @@ struct RthsTick {
     double measured = 0.0; ///< xm [m]
     double force = 0.0;    ///< fm [N]
     Eigen::VectorXd floors; ///< the hybrid response: the numerical displacements, xm at the specimen
+    double damperForce = 0.0; ///< the damper's load cell [N] (with a damper; else 0)
+    double twinForce = 0.0;   ///< the twin's force over this tick [N] (with a damper; else 0)
 };
 
 class RthsLoop {
@@ -78,6 +83,11 @@ public:
     double period() const { return m_h; }
     const Compensator& compensator() const { return m_comp; }
     const ServoHydraulicPlant& plant() const { return m_plant; }
+    /// Apply a twin update now, between tick ticks() - 1 and ticks() (DamperTwin::apply; refused
+    /// without a damper twin).
+    UpdateEvent updateTwin(const TwinUpdate& u);
+    /// The damper's twin (nullptr without a damper).
+    const DamperTwin* twin() const { return m_twin ? &*m_twin : nullptr; }
 
 private:
     double sense(double value, double rms);
@@ -99,6 +109,9 @@ private:
     Eigen::MatrixXd m_mnInv;
     Eigen::VectorXd m_x, m_v; // numerical substructure
     std::deque<double> m_forces; // measured forces, newest last
+    std::optional<MrDamper> m_damper;  // the physical damper in the specimen
+    std::optional<DamperTwin> m_twin;  // its twin in the numerical substructure
+    double m_twinForce = 0.0;          // held over the tick [N]
     long m_k = 0;
     RthsTick m_last;
     std::string m_hold;

@@ -100,6 +100,22 @@ nlohmann::json rthsSummary(const RthsRun& run, const RthsSettings& s, const Pref
     const auto& p = s.plant;
     j["plant"] = {{"a1b0", p.a1b0}, {"a2", p.a2}, {"a3", p.a3}, {"b1", p.b1}, {"b2", p.b2},
                   {"me_kg", p.me}, {"ce_Ns_per_m", p.ce}, {"ke_N_per_m", p.ke}, {"g", p.g}};
+    if (run.twin) { // the damper's twin: its updates with their ticks, its law at the end
+        nlohmann::json updates = nlohmann::json::array();
+        for (const UpdateEvent& e : run.updates) {
+            nlohmann::json values = nlohmann::json::object();
+            for (std::size_t i = 0; i < e.parameters.size() && i < e.applied.size(); ++i)
+                values[e.parameters.name(i)] = e.applied[i];
+            updates.push_back({{"tick", e.step}, {"time_s", e.time}, {"applied", e.ok},
+                               {"message", e.message}, {"parameters", values}});
+        }
+        const MrDamper twin(*run.twin);
+        nlohmann::json law = nlohmann::json::object();
+        const auto names = twin.parameterNames();
+        for (std::size_t i = 0; i < names.size(); ++i)
+            law[names[i]] = twin.parameterValue(int(i));
+        j["twin"] = {{"updates", updates}, {"parameters", law}};
+    }
     return j;
 }
 

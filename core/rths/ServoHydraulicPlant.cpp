@@ -62,17 +62,17 @@ void ServoHydraulicPlant::reset(double x0)
     m_s = {m_p.a3 * f, 0.0, f, x0, 0.0};
 }
 
-ServoHydraulicPlant::State ServoHydraulicPlant::derivative(const State& s, double u) const
+ServoHydraulicPlant::State ServoHydraulicPlant::derivative(const State& s, double u, double fd) const
 {
     const double q = s[0], qd = s[1], f = s[2], x = s[3], v = s[4];
     return {qd,
             m_p.a1b0 * (m_p.g * u - x) - m_p.b1 * qd - m_p.b2 * q,
             -m_p.a3 * f + q - m_p.a2 * v,
             v,
-            (f - m_p.ce * v - m_p.ke * x) / m_p.me};
+            (f - m_p.ce * v - m_p.ke * x - fd) / m_p.me};
 }
 
-void ServoHydraulicPlant::advance(double u, double h)
+void ServoHydraulicPlant::advance(double u, double h, double fd)
 {
     auto add = [](const State& a, const State& b, double c) {
         State r;
@@ -80,10 +80,10 @@ void ServoHydraulicPlant::advance(double u, double h)
             r[i] = a[i] + c * b[i];
         return r;
     };
-    const State k1 = derivative(m_s, u);
-    const State k2 = derivative(add(m_s, k1, 0.5 * h), u);
-    const State k3 = derivative(add(m_s, k2, 0.5 * h), u);
-    const State k4 = derivative(add(m_s, k3, h), u);
+    const State k1 = derivative(m_s, u, fd);
+    const State k2 = derivative(add(m_s, k1, 0.5 * h), u, fd);
+    const State k3 = derivative(add(m_s, k2, 0.5 * h), u, fd);
+    const State k4 = derivative(add(m_s, k3, h), u, fd);
     for (std::size_t i = 0; i < m_s.size(); ++i)
         m_s[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
 }

@@ -47,10 +47,11 @@ public:
 
     /// At rest at displacement x0 (the valve holding it: Q = a2*0 + a3 F, F = ke x0).
     void reset(double x0 = 0.0);
-    /// Integrate over h [s] with the valve command u [m] held.
-    void advance(double u, double h);
-    /// ds/dt at state s and command u (eqs. P1-P3).
-    State derivative(const State& s, double u) const;
+    /// Integrate over h [s] with the valve command u [m] held; fd [N]: a force of the specimen
+    /// held over h (a damper's: P3 with -fd on its right; docs/rths.md, "A damper and its twin").
+    void advance(double u, double h, double fd = 0.0);
+    /// ds/dt at state s, command u and specimen force fd (eqs. P1-P3).
+    State derivative(const State& s, double u, double fd = 0.0) const;
     /// G(j omega) of the state-space form, C (j omega I - A)^-1 B (equal to P4; tested).
     std::complex<double> stateSpaceResponse(double omega) const;
 

@@ -75,6 +75,8 @@ void TrackingAlarms::setLimits(const TrackingLimits& limits)
 
 void TrackingAlarms::judge(const TrackingEstimate& e, std::vector<Alarm>& out)
 {
+    if (!e.valid)
+        return; // no estimate (too quiet): nothing raised, the levels kept
     judgeOne("rths-j1", "live delay J1", "ms", e.delay, m_limits.j1Warning, m_limits.j1Critical, m_j1, e, out);
     judgeOne("rths-j2", "live tracking error J2", "%", e.j2, m_limits.j2Warning, m_limits.j2Critical, m_j2, e, out);
 }

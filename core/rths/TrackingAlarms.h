@@ -35,7 +35,8 @@ public:
     /// Throws std::invalid_argument when checkTrackingLimits fails (the old limits kept).
     void setLimits(const TrackingLimits& limits);
     const TrackingLimits& limits() const { return m_limits; }
-    /// Judge one estimate; the alarms it raises are appended to `out` (J1's first).
+    /// Judge one estimate; the alarms it raises are appended to `out` (J1's first). An
+    /// estimate the window gated (valid false) raises nothing and leaves the levels as they are.
     void judge(const TrackingEstimate& e, std::vector<Alarm>& out);
     /// 0 below warning, 1 warning, 2 critical, per index (after the last judge()).
     int j1Level() const { return m_j1; }

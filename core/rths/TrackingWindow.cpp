@@ -1,5 +1,6 @@
 #include "core/rths/TrackingWindow.h"
 
+#include "core/rths/RthsLoop.h"
 #include "core/rths/TrackingMetrics.h"
 
 #include <algorithm>
@@ -19,7 +20,19 @@ std::string checkTrackingWindow(const TrackingWindowSettings& s, double h)
         return "tracking interval: a positive number of seconds";
     if (!(s.maxDelay > 0.0) || !std::isfinite(s.maxDelay) || s.maxDelay > 0.5 * s.window)
         return "tracking maxDelay: positive and at most half the window";
+    if (!(s.minimumRms >= 0.0) || !std::isfinite(s.minimumRms))
+        return "tracking minimumRms: finite and >= 0 m";
+    if (!(s.peakFraction >= 0.0) || !(s.peakFraction < 1.0))
+        return "tracking peakFraction: 0 up to (not including) 1";
     return {};
+}
+
+TrackingWindowSettings gatedWindowSettings(TrackingWindowSettings s, const SensorSettings& sensor)
+{
+    const double noise = std::hypot(sensor.noise ? sensor.displacementNoise : 0.0, sensor.quantum / std::sqrt(12.0));
+    s.minimumRms = kNoiseMultiple * noise;
+    s.peakFraction = kPeakFraction;
+    return s;
 }
 
 double amplitudeRatio(const std::vector<double>& y, const std::vector<double>& xm, int lag,
@@ -80,6 +93,7 @@ void TrackingWindow::reset()
     m_head = m_filled = 0;
     m_next = 0;
     m_count = 0;
+    m_peakRms = 0.0;
     m_last = {};
 }
 
@@ -108,13 +122,26 @@ void TrackingWindow::estimate(long k)
     TrackingEstimate e;
     e.tick = k;
     e.time = double(k) * m_h;
+    double sum = 0.0;
+    for (const double y : m_yBuf)
+        sum += y * y;
+    e.commandRms = std::sqrt(sum / double(m_n));
+    m_peakRms = std::max(m_peakRms, e.commandRms);
+    e.gate = std::max(m_s.minimumRms, m_s.peakFraction * m_peakRms);
+    ++m_count;
+    if (e.commandRms < e.gate) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        e.valid = false;
+        e.delay = e.j2 = e.amplitude = e.amplitudeError = nan;
+        m_last = e;
+        return;
+    }
     e.j2 = normalizedRmsError(m_yBuf, m_xmBuf);
     e.delay = windowDelay(m_yBuf, m_xmBuf, m_h, m_maxLag);
     const int lag = int(std::lround(e.delay * 1e-3 / m_h));
     e.amplitude = amplitudeRatio(m_yBuf, m_xmBuf, lag, std::size_t(m_maxLag));
     e.amplitudeError = (e.amplitude - 1.0) * 100.0;
     m_last = e;
-    ++m_count;
 }
 
 } // namespace hsmu::rths

@@ -15,6 +15,12 @@
 //   amplitude  A = sum xm[k] y[k-d] / sum y[k-d]^2, k = max(d, L) .. n-1, d = round(delay / h):
 //              the least-squares gain of xm on y shifted by the delay [-]                 (M7)
 //   amplitude error  (A - 1) 100 [%]
+//   signal gate      no estimate (valid false; delay, J2, amplitude NaN) while the window's
+//                    command is too quiet for one: rms(y) < max(minimumRms, peakFraction x
+//                    the largest window rms(y) of the run so far) (docs/rths.md, "Live
+//                    tracking": sensor noise as large as the motion makes the delay wander
+//                    to the search bound and the amplitude to +-100 %); a valid estimate is
+//                    computed as without the gate, bit for bit
 //
 // h: the loop period [s]. Cost per estimate: O(n maxDelay / h) with n = W / h samples.
 // Thread rules: one thread (the loop's, as a TickObserver's helper).
@@ -29,7 +35,21 @@ struct TrackingWindowSettings {
     double window = 1.0;    ///< W [s]
     double interval = 0.1;  ///< between estimates [s]
     double maxDelay = 0.05; ///< the longest delay searched [s]
+    /// The window's command RMS below which no estimate is made [m] (0: no absolute floor);
+    /// the console's view: kNoiseMultiple x the displacement sensor's noise RMS.
+    double minimumRms = 0.0;
+    /// ... or below this fraction of the largest window RMS of the run so far [-] (0: none).
+    double peakFraction = 0.0;
 };
+
+struct SensorSettings;
+
+/// The console's signal gate for the loop's displacement sensor (docs/rths.md, "Live
+/// tracking"): minimumRms = kNoiseMultiple x the sensor's noise RMS, sqrt(sigma^2 + q^2 / 12)
+/// (sigma its Gaussian noise when on, q its A/D quantum), and peakFraction = kPeakFraction.
+constexpr double kNoiseMultiple = 10.0;
+constexpr double kPeakFraction = 0.1;
+TrackingWindowSettings gatedWindowSettings(TrackingWindowSettings s, const SensorSettings& sensor);
 
 /// "" when usable, else what is wrong (naming the field).
 std::string checkTrackingWindow(const TrackingWindowSettings& s, double h);
@@ -41,6 +61,9 @@ struct TrackingEstimate {
     double j2 = 0.0;              ///< [%]
     double amplitude = 1.0;       ///< A [-]
     double amplitudeError = 0.0;  ///< (A - 1) 100 [%]
+    bool valid = true;            ///< false: the command was too quiet (the fields above NaN)
+    double commandRms = 0.0;      ///< rms(y) over the window [m]
+    double gate = 0.0;            ///< the RMS it had to reach [m]
 };
 
 class TrackingWindow {
@@ -67,6 +90,7 @@ private:
     std::vector<double> m_yBuf, m_xmBuf; // contiguous copies (kept)
     TrackingEstimate m_last;
     long m_count = 0;
+    double m_peakRms = 0.0; // the largest window rms(y) so far [m]
 };
 
 /// M1' over whole histories [ms] (maxLag >= 1 ticks, shorter than the histories).

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,11 @@ public:
     /// The law an updating scheme may change; nullptr if none (e.g. experimental).
     virtual HysteresisLaw* law() { return nullptr; }
     virtual const HysteresisLaw* law() const { return nullptr; }
+    /// Swap the law law() returns with `law` (not null; the old law comes back in it), between
+    /// steps: an operator-approved change of the law's form (an OffsetLaw around it,
+    /// ModelUpdater::approveOffsets). The element's committed state is the new law's from the
+    /// next trial on. False (nothing swapped) if the element has no law to change.
+    virtual bool swapLaw(std::unique_ptr<HysteresisLaw>& /*law*/) { return false; }
 
     /// Add c_k P to R[dof_k] (full DOFs). A multi-DOF element (Link2d, ExperimentalLink2d)
     /// adds A^T q instead, q its basic forces (docs/setups.md, "Multi-DOF elements", eq. L1-L2).

@@ -30,6 +30,13 @@ public:
     void revert() override { m_law->revert(); }
     HysteresisLaw* law() override { return m_law.get(); }
     const HysteresisLaw* law() const override { return m_law.get(); }
+    bool swapLaw(std::unique_ptr<HysteresisLaw>& law) override
+    {
+        if (!law)
+            return false;
+        m_law.swap(law);
+        return true;
+    }
 
     double columnFlexibility() const { return m_flex; } ///< L / (3 EI) [rad per kN m]
 

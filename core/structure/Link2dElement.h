@@ -34,6 +34,13 @@ public:
     void revert() override;
     HysteresisLaw* law() override { return m_dofs[m_primary].law.get(); }
     const HysteresisLaw* law() const override { return m_dofs[m_primary].law.get(); }
+    bool swapLaw(std::unique_ptr<HysteresisLaw>& law) override
+    {
+        if (!law)
+            return false;
+        m_dofs[m_primary].law.swap(law);
+        return true;
+    }
 
     void addNodalForces(Eigen::VectorXd& rFull) const override;
     void addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,

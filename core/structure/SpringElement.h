@@ -32,6 +32,13 @@ public:
     void revert() override { m_law->revert(); }
     HysteresisLaw* law() override { return m_law.get(); }
     const HysteresisLaw* law() const override { return m_law.get(); }
+    bool swapLaw(std::unique_ptr<HysteresisLaw>& law) override
+    {
+        if (!law)
+            return false;
+        m_law.swap(law);
+        return true;
+    }
 
 private:
     std::string m_typeName;

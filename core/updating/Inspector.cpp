@@ -1,6 +1,7 @@
 #include "core/updating/Inspector.h"
 
 #include "core/rths/TrackingMetrics.h"
+#include "core/rths/TrackingWindow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -178,12 +179,13 @@ void Inspector::trackingIndices()
     const std::size_t n = m_cmd.size();
     if (n < 4)
         return;
-    // The RTHS criteria (core/rths/TrackingMetrics.h, M1-M3) over the window: one definition
-    // for the live inspector, `hsmu run`'s summary and `hsmu rths`. J1 searches lags up to a
-    // quarter of the window.
+    // The RTHS criteria over the window: J2, J3 as TrackingMetrics.h (M2, M3) for `hsmu run`'s
+    // summary and `hsmu rths`; J1 as the console's live RTHS window (TrackingWindow.h, M1': one
+    // live delay estimator; M1's plain sum leans towards the lags whose shifted command carries
+    // more energy on a window of a few periods). J1 searches lags up to a quarter of the window.
     m_cmdBuf.assign(m_cmd.begin(), m_cmd.end());
     m_measBuf.assign(m_meas.begin(), m_meas.end());
-    m_tracking.j1 = rths::delayByCorrelation(m_cmdBuf, m_measBuf, m_dt, int(n / 4)) * 1e-3;
+    m_tracking.j1 = rths::windowDelay(m_cmdBuf, m_measBuf, m_dt, int(n / 4)) * 1e-3;
     m_tracking.j2 = rths::normalizedRmsError(m_cmdBuf, m_measBuf) * 1e-2;
     m_tracking.j3 = rths::peakError(m_cmdBuf, m_measBuf) * 1e-2;
 }

@@ -15,10 +15,12 @@
 //   pinned      an identified parameter sat on a bound for pinnedTime seconds (Warning; the
 //               parameters are checked in name order, the order of alarms raised together).
 //   tracking    the RTHS benchmark's indices over a sliding window of measured vs commanded
-//               deformation, as core/rths/TrackingMetrics.h computes them (M1-M3, in s and
-//               fractions here): J1 = delay [s] maximizing their cross-correlation (lags up to a
-//               quarter of the window, refined by a parabola), J2 = RMS(d_m - d_c) / RMS(d_c),
-//               J3 = max|d_m - d_c| / max|d_c| (Warning when J2 > its limit).
+//               deformation (in s and fractions here): J1 = delay [s] maximizing their
+//               normalized cross-correlation, as the console's live RTHS window computes it
+//               (core/rths/TrackingWindow.h, M1': every lag summed over the same steps and
+//               divided by the shifted command's energy; lags up to a quarter of the window,
+//               refined by a parabola), J2 = RMS(d_m - d_c) / RMS(d_c), J3 = max|d_m - d_c| /
+//               max|d_c| (core/rths/TrackingMetrics.h, M2, M3; Warning when J2 > its limit).
 // Thresholds can change between steps (effective next step).
 
 #include "core/util/Alarm.h"

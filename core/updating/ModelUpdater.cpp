@@ -2,6 +2,7 @@
 
 #include "core/experimental/ExperimentalElement.h"
 #include "core/hysteresis/HysteresisLaw.h"
+#include "core/hysteresis/OffsetLaw.h"
 #include "core/structure/Structure.h"
 
 #include <algorithm>
@@ -162,6 +163,15 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
         m_reporter->offer(step, time, values, structure, m_events);
         report(m_events, alarms, step, time, out); // counts the applied ones
     }
+    if (m_offsets && m_offsets->observe(step, time, dm, fm)) {
+        const OffsetProposal& p = *m_offsets->pending();
+        const std::string u0 = std::to_string(p.deformationOffset);
+        const std::string f0 = std::to_string(p.forceOffset);
+        alarms.push_back({time, step, AlarmSeverity::Info, AlarmKind::ModelUpdate,
+                          "offsets proposed for the twins: u0 = " + u0 + ", F0 = " + f0 +
+                              " (they apply only when the operator approves them)",
+                          "offsets-proposed", {u0, f0}});
+    }
     if (m_autoResolve && !m_reporter->pending().empty()) {
         auto resolved = m_reporter->resolveAll(*m_autoResolve, structure, step, time);
         report(resolved, alarms, step, time, out);
@@ -202,6 +212,59 @@ bool ModelUpdater::approve(int proposalId, Structure& structure, int step, doubl
         alarms.push_back({time, step, AlarmSeverity::Warning, AlarmKind::ModelUpdate,
                           "update not applied: " + ev->message});
     return ev->ok;
+}
+
+const OffsetProposal* ModelUpdater::pendingOffsets() const
+{
+    return m_offsets && m_offsets->pending() ? &*m_offsets->pending() : nullptr;
+}
+
+std::optional<OffsetProposal> ModelUpdater::approveOffsets(int id, Structure& structure,
+                                                           std::string* error)
+{
+    const OffsetProposal* p = pendingOffsets();
+    if (!p || p->id != id) {
+        if (error)
+            *error = "offsets #" + std::to_string(id) + " are not pending";
+        return std::nullopt;
+    }
+    std::vector<Element*> targets;
+    for (const ReporterTarget& t : m_reporter->targets()) {
+        Element* e = structure.element(t.element);
+        if (!e || !e->law()) {
+            if (error)
+                *error = "offsets not applied: target '" + t.element +
+                         "' is not a numerical element with a law";
+            return std::nullopt;
+        }
+        targets.push_back(e);
+    }
+    for (Element* e : targets) {
+        if (auto* law = dynamic_cast<OffsetLaw*>(e->law())) {
+            const int idx[] = {law->parameterIndex(OffsetLaw::kDeformationOffset),
+                               law->parameterIndex(OffsetLaw::kForceOffset)};
+            const double values[] = {p->deformationOffset, p->forceOffset};
+            law->setParameterValues(idx, values, true);
+        } else {
+            // The element's own law (its state, and an OpenSees twin its connection) goes
+            // inside the offsets: a copy holds its place while it is taken out.
+            std::unique_ptr<HysteresisLaw> own = e->law()->clone();
+            e->swapLaw(own); // own: the element's own law
+            std::unique_ptr<HysteresisLaw> wrapped = std::make_unique<OffsetLaw>(
+                std::move(own), p->deformationOffset, p->forceOffset);
+            e->swapLaw(wrapped); // wrapped: the copy (released here)
+        }
+    }
+    // The targets' laws changed objects: the reporter resolves them again.
+    std::string bindError;
+    if (!m_reporter->bind(structure, m_identifier->layout(), &bindError) && error)
+        *error = bindError;
+    return m_offsets->take(id);
+}
+
+std::optional<OffsetProposal> ModelUpdater::rejectOffsets(int id)
+{
+    return m_offsets ? m_offsets->take(id) : std::nullopt;
 }
 
 } // namespace hsmu

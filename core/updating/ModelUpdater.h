@@ -11,11 +11,16 @@
 // estimate (its z, e stay continuous); after a Nelder-Mead fit it is replayed over the stored
 // history so its state matches the fitted parameters.
 // Bounds, thresholds and policies may change between steps (effective next step).
+// Offsets (docs/method.md, "Offsets", Online): with an OffsetCheck (setOffsetCheck) the
+// specimen's history is calibrated with offsets now and then; offsets the data ask for are a
+// separate pending item (pendingOffsets()) that only the operator's approveOffsets() applies
+// to the twins (never the policy, never the headless approval flag).
 
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/util/Alarm.h"
 #include "core/updating/Identifier.h"
 #include "core/updating/Inspector.h"
+#include "core/updating/OffsetCheck.h"
 #include "core/updating/Reporter.h"
 
 #include <memory>
@@ -82,7 +87,23 @@ public:
     bool reject(int proposalId) { return m_reporter->reject(proposalId); }
     void setMaxConsecutiveRejections(int n) { m_maxRejections = n < 1 ? 1 : n; }
     /// Headless flag for the OnApproval policy: approve (true) or reject every proposal.
+    /// It never decides the offsets.
     void setAutoResolve(std::optional<bool> approveAll) { m_autoResolve = approveAll; }
+
+    /// The online offset check (nullptr: none, the default).
+    void setOffsetCheck(std::unique_ptr<OffsetCheck> check) { m_offsets = std::move(check); }
+    const OffsetCheck* offsetCheck() const { return m_offsets.get(); }
+    /// The offsets waiting for the operator's decision (nullptr: none).
+    const OffsetProposal* pendingOffsets() const;
+    /// The operator approves the pending offsets `id` (between steps): every reporter
+    /// target's law becomes F = F_law(u - u0) + F0 (OffsetLaw.h: an OffsetLaw around it, or
+    /// its offsets set if it has them), all targets or none. Returns the proposal applied;
+    /// nullopt with `error` set if `id` is not pending or a target has no law to change
+    /// (the proposal then stays pending).
+    std::optional<OffsetProposal> approveOffsets(int id, Structure& structure,
+                                                 std::string* error);
+    /// The operator rejects the pending offsets `id`; nullopt if it is not pending.
+    std::optional<OffsetProposal> rejectOffsets(int id);
 
 private:
     /// The identified values (layout order) to the auxiliary model: as one set, else value by
@@ -102,6 +123,7 @@ private:
     std::unique_ptr<Identifier> m_identifier;
     Inspector m_inspector;
     std::unique_ptr<Reporter> m_reporter;
+    std::unique_ptr<OffsetCheck> m_offsets;
     ExperimentalElement* m_element = nullptr;
     std::vector<double> m_history; // measured deformations, for replays of the auxiliary model
     double m_dt = 0.0;             // the step (a rate-dependent auxiliary law's time increment)

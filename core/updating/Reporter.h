@@ -25,6 +25,7 @@
 // Thread rules: none (called from the test's thread; the GUI calls approve/reject through it).
 
 #include "core/identification/ParameterLayout.h"
+#include "core/identification/ParameterUpdate.h"
 
 #include <deque>
 #include <limits>
@@ -59,26 +60,6 @@ struct UpdateProposal {
     std::vector<double> proposed; ///< after scaling, in `parameters` order
     std::vector<double> current;  ///< the target's values when proposed (same order)
     double fitError = std::numeric_limits<double>::quiet_NaN(); ///< [-] when proposed (NaN: unknown)
-};
-
-/// What became of an offer: applied to the target, refused by its law (or not finite), rejected
-/// by the operator, or not queued (the approval queue was full). The record keeps the code
-/// (updateDecisionName(), language-neutral).
-/// Superseded: a newer proposal for the same target replaced it (OnApproval). New codes are
-/// appended: the record stores the index into the list of names.
-enum class UpdateDecision { Applied, Refused, Rejected, NotQueued, Superseded };
-const char* updateDecisionName(UpdateDecision d);
-
-struct UpdateEvent {
-    int step = 0;
-    double time = 0.0;
-    std::string element;
-    ParameterLayout parameters;  ///< the target's parameters (name order), for display / record
-    std::vector<double> applied; ///< the values applied (Applied) or offered, in that order
-    bool ok = true;              ///< decision == Applied
-    std::string message; ///< why, when !ok
-    UpdateDecision decision = UpdateDecision::Applied;
-    int proposal = 0; ///< the proposal's id under OnApproval (0: none)
 };
 
 class Reporter {

@@ -287,6 +287,10 @@ QString AlarmText::translate(const std::string& code, const QStringList& a) {
         return tr("%1 has been at its bound %2 for %3 s").arg(a[0], a[1], a[2]);
     if (is("auxiliary-not-converged", 1))
         return tr("auxiliary model did not converge at deformation %1").arg(a[0]);
+    if (is("offsets-proposed", 2))
+        return tr("offsets proposed for the twins: u0 = %1, F0 = %2 (they apply only when the "
+                  "operator approves them)")
+            .arg(a[0], a[1]);
     if (is("approval-queue-full", 1))
         return tr("update not applied: the approval queue is full (%1 proposals pending); "
                   "this and later offers are in the record until the operator decides")

@@ -445,7 +445,10 @@ void MainWindow::openSettings() {
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->addAction(m_controls->emergencyHoldAction());
     connect(dialog, &QDialog::accepted, this,
-            [this] { m_controller->setRecordDirectory(ConsoleSettings::recordDirectory()); });
+            [this] {
+                m_controller->setRecordDirectory(ConsoleSettings::recordDirectory());
+                m_rths->setRecordFolder(RthsPanel::defaultRecordFolder());
+            });
     dialog->open();
 }
 

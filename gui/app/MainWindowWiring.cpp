@@ -195,6 +195,10 @@ void MainWindow::wireController() {
             &TestController::approveUpdate);
     connect(m_pending, &PendingUpdatesPanel::rejectRequested, m_controller,
             &TestController::rejectUpdate);
+    connect(m_pending, &PendingUpdatesPanel::approveOffsetsRequested, m_controller,
+            &TestController::approveOffsets);
+    connect(m_pending, &PendingUpdatesPanel::rejectOffsetsRequested, m_controller,
+            &TestController::rejectOffsets);
     connect(m_pending, &PendingUpdatesPanel::policyChosen, this, &MainWindow::onPolicyChosen);
     connect(m_controller, &TestController::operatorEvent, this,
             [this](const OperatorEvent& e) { m_alarms->addEvent(e); });

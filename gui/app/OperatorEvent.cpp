@@ -122,6 +122,11 @@ QString OperatorEvent::describe() const {
                    .arg(o.section(QLatin1Char(' '), 0, 0), o.section(QLatin1Char(' '), 1), n);
     else if (is(action, kReject))
         what = tr("update %1 rejected by the operator (%2)").arg(o, n);
+    else if (is(action, kApproveOffsets)) // old: "#id targets", new: the offsets applied
+        what = tr("offsets %1 approved by the operator for %2: %3")
+                   .arg(o.section(QLatin1Char(' '), 0, 0), o.section(QLatin1Char(' '), 1), n);
+    else if (is(action, kRejectOffsets))
+        what = tr("offsets %1 rejected by the operator (%2)").arg(o, n);
     else if (is(action, kBounds))
         what = tr("bounds changed: %1 -> %2").arg(o, n);
     else if (is(action, kLock))

@@ -34,6 +34,10 @@ public:
     static constexpr const char* kStop = "stop";
     static constexpr const char* kApprove = "approve-update";
     static constexpr const char* kReject = "reject-update";
+    /// The twins' offsets (ModelUpdater::approveOffsets): old "#id element ...", new the
+    /// offsets "u0=<v> <unit> F0=<v> <unit>".
+    static constexpr const char* kApproveOffsets = "approve-offsets";
+    static constexpr const char* kRejectOffsets = "reject-offsets";
     static constexpr const char* kBounds = "bounds";
     static constexpr const char* kLock = "lock";
     static constexpr const char* kThreshold = "fit-threshold";

@@ -72,6 +72,39 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     m_tree->setMinimumHeight(2 * m_tree->frameWidth() + m_tree->header()->sizeHint().height() +
                              2 * row + QPushButton(QStringLiteral("Approve")).sizeHint().height());
 
+    // The offsets: their own item under the proposals, never decided by the policy.
+    m_offsetsBox = new QWidget(this);
+    m_offsetsBox->setObjectName(QStringLiteral("pendingOffsets"));
+    m_offsetsText = new QLabel(m_offsetsBox);
+    m_offsetsText->setWordWrap(true);
+    m_offsetsText->setTextFormat(Qt::PlainText);
+    m_approveOffsets = new QPushButton(m_offsetsBox);
+    m_approveOffsets->setObjectName(QStringLiteral("approveOffsets"));
+    m_rejectOffsets = new QPushButton(m_offsetsBox);
+    m_rejectOffsets->setObjectName(QStringLiteral("rejectOffsets"));
+    // The decision is for the offsets shown when the button was pressed.
+    for (QPushButton* b : {m_approveOffsets, m_rejectOffsets}) {
+        connect(b, &QPushButton::pressed, b,
+                [this, b] { b->setProperty("pressedId", m_offsetsBox->property("offsetsId")); });
+        connect(b, &QPushButton::clicked, this, [this, b] {
+            const QVariant pressed = b->property("pressedId");
+            const int id = (pressed.isValid() ? pressed : m_offsetsBox->property("offsetsId")).toInt();
+            b->setProperty("pressedId", QVariant());
+            if (b == m_approveOffsets)
+                emit approveOffsetsRequested(id);
+            else
+                emit rejectOffsetsRequested(id);
+        });
+    }
+    auto* offsetButtons = new QHBoxLayout;
+    offsetButtons->addWidget(m_approveOffsets);
+    offsetButtons->addWidget(m_rejectOffsets);
+    offsetButtons->addStretch(1);
+    auto* offsetLayout = new QVBoxLayout(m_offsetsBox);
+    offsetLayout->setContentsMargins(0, 0, 0, 0);
+    offsetLayout->addWidget(m_offsetsText);
+    offsetLayout->addLayout(offsetButtons);
+
     // The label above its choice: the row fits the dock at 1280x720 in every language.
     auto* policyRow = new QHBoxLayout;
     m_policyLabel = new QLabel(this);
@@ -84,6 +117,7 @@ PendingUpdatesPanel::PendingUpdatesPanel(QWidget* parent) : QWidget(parent) {
     layout->addLayout(policyRow);
     layout->addWidget(m_summary);
     layout->addWidget(m_tree, 1);
+    layout->addWidget(m_offsetsBox);
     retranslateUi();
     setSnapshot({});
     setEditable(false); // nothing to decide before a test is loaded
@@ -103,10 +137,52 @@ void PendingUpdatesPanel::retranslateUi() {
     m_tree->setToolTip(tr("The target's current value, the proposed one, the estimator's "
                           "value now and the change the proposal makes, in the law's "
                           "normalized units"));
+    m_approveOffsets->setText(tr("Approve offsets"));
+    m_rejectOffsets->setText(tr("Reject offsets"));
     showSummary();
+    showOffsets();
     for (const UpdateProposal& p : m_snapshot.pending)
         if (const auto it = m_items.find(p.element); it != m_items.end())
             fillProposal(it->second, p);
+}
+
+QString PendingUpdatesPanel::describeOffsets(const OffsetProposal& p,
+                                             const QString& deformationUnit,
+                                             const QString& forceUnit) {
+    // value +- the 95 % half-width (1.96 sd), or "(on its bound)" when it has no interval.
+    const auto value = [](double v, double sd, const QString& unit) {
+        const QString u = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+        if (!std::isfinite(sd))
+            return tr("%1%2 (on its bound, no interval)").arg(QString::number(v, 'g', 4), u);
+        return tr("%1 +- %2%3 (95 %)")
+            .arg(QString::number(v, 'g', 4), QString::number(1.96 * sd, 'g', 2), u);
+    };
+    return tr("Offsets #%1 for the twins: u0 = %2, F0 = %3")
+        .arg(p.id)
+        .arg(value(p.deformationOffset, p.deformationSd, deformationUnit),
+             value(p.forceOffset, p.forceSd, forceUnit));
+}
+
+QString PendingUpdatesPanel::offsetsDetail(const OffsetProposal& p) {
+    return tr("Found at t = %1 s (step %2) on %3 samples; the specimen's NRMSE %4 without them, "
+              "%5 with them. They reach the twins (F = F_law(u - u0) + F0) only if you approve "
+              "them, whatever the policy.")
+        .arg(QString::number(p.time, 'f', 2))
+        .arg(p.step)
+        .arg(qulonglong(p.samples))
+        .arg(QString::number(p.nrmseWithout, 'g', 3), QString::number(p.nrmseWith, 'g', 3));
+}
+
+void PendingUpdatesPanel::showOffsets() {
+    const auto& p = m_snapshot.offsets;
+    m_offsetsBox->setVisible(p.has_value());
+    m_offsetsBox->setProperty("offsetsId", p ? p->id : 0);
+    m_offsetsText->setText(p ? describeOffsets(*p, QString::fromStdString(m_snapshot.deformationUnit),
+                                               QString::fromStdString(m_snapshot.forceUnit))
+                             : QString());
+    const QString detail = p ? offsetsDetail(*p) : QString();
+    for (QWidget* w : {static_cast<QWidget*>(m_offsetsText), static_cast<QWidget*>(m_approveOffsets)})
+        w->setToolTip(detail);
 }
 
 void PendingUpdatesPanel::changeEvent(QEvent* event) {
@@ -133,6 +209,8 @@ void PendingUpdatesPanel::setEditable(bool editable) {
     m_everyN->setEnabled(policy && ReporterPolicy(m_policy->currentData().toInt()) ==
                                        ReporterPolicy::EveryNSteps);
     m_tree->setEnabled(editable || m_tree->topLevelItemCount() == 0);
+    m_approveOffsets->setEnabled(editable);
+    m_rejectOffsets->setEnabled(editable);
 }
 
 void PendingUpdatesPanel::setNextRunPolicyEditable(bool editable) {
@@ -271,6 +349,7 @@ void PendingUpdatesPanel::setSnapshot(const UpdatingSnapshot& s) {
     }
     m_snapshot = s;
     showSummary();
+    showOffsets();
     // One row per target: a newer proposal for a target takes its row in place (the buttons
     // stay under the mouse); decided targets leave, new ones are appended below.
     std::map<std::string, const UpdateProposal*> pending;

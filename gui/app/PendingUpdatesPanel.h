@@ -12,6 +12,10 @@
 // and each is in the record (/updating/events, decision "notQueued"). It only emits the
 // operator's decisions; MainWindow wires them to the TestController. Retranslates itself on a
 // language change.
+// Offsets (docs/console.md, "Offsets for the twins"): the offsets the updating's check found
+// (ModelUpdater::pendingOffsets) are a separate item below the proposals, with their values,
+// units and 95 % intervals and their own Approve / Reject buttons: whatever the policy, they
+// reach the twins only through that Approve.
 // Thread rules: GUI thread only.
 
 #include "gui/app/UpdatingSnapshot.h"
@@ -24,6 +28,7 @@
 
 class QComboBox;
 class QLabel;
+class QPushButton;
 class QSpinBox;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -46,12 +51,22 @@ public:
     /// Ids of the proposals shown, oldest first (the reporter's queue order).
     QList<int> shownProposals() const;
     QLabel* summary() const { return m_summary; }
+    /// The offsets item (hidden while no offsets are pending) and its text.
+    QWidget* offsetsBox() const { return m_offsetsBox; }
+    QLabel* offsetsText() const { return m_offsetsText; }
+    /// The text of pending offsets p in the specimen's units (values, 95 % intervals).
+    static QString describeOffsets(const OffsetProposal& p, const QString& deformationUnit,
+                                   const QString& forceUnit);
+    /// Where they were found, both fits' NRMSE and the rule (the item's tool tip).
+    static QString offsetsDetail(const OffsetProposal& p);
 
     static QString describe(ReporterPolicy policy);
 
 signals:
     void approveRequested(int proposalId);
     void rejectRequested(int proposalId);
+    void approveOffsetsRequested(int id);
+    void rejectOffsetsRequested(int id);
     void policyChosen(hsmu::ReporterPolicy policy, int everyN);
 
 protected:
@@ -63,12 +78,17 @@ private:
     void showSummary();
     QTreeWidgetItem* addProposal(const UpdateProposal& p);
     void fillProposal(QTreeWidgetItem* top, const UpdateProposal& p);
+    void showOffsets();
 
     QComboBox* m_policy = nullptr;
     QSpinBox* m_everyN = nullptr;
     QLabel* m_policyLabel = nullptr;
     QLabel* m_summary = nullptr;
     QTreeWidget* m_tree = nullptr;
+    QWidget* m_offsetsBox = nullptr;
+    QLabel* m_offsetsText = nullptr;
+    QPushButton* m_approveOffsets = nullptr;
+    QPushButton* m_rejectOffsets = nullptr;
     UpdatingSnapshot m_snapshot;                   ///< the last one shown
     std::map<std::string, QTreeWidgetItem*> m_items; ///< target element -> its top-level row
     bool m_editable = false;

@@ -2,6 +2,7 @@
 
 #include "comms/LinkAddress.h"
 #include "gui/app/AlarmList.h"
+#include "gui/app/ConsoleSettings.h"
 #include "gui/plots/RthsPlots.h"
 
 #include <QComboBox>
@@ -49,9 +50,9 @@ Alarm holdAlarm(const std::string& hold, double time, long tick)
 
 } // namespace
 
-rths::TrackingWindowSettings RthsPanel::windowSettings()
+rths::TrackingWindowSettings RthsPanel::windowSettings(const RthsConfig& cfg)
 {
-    return {1.0, 0.1, 0.05};
+    return rths::gatedWindowSettings({1.0, 0.1, 0.05}, cfg.settings.sensors);
 }
 
 RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
@@ -89,6 +90,16 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     form->addWidget(m_pace, 1, 1);
     form->addWidget(m_durationLabel, 1, 2);
     form->addWidget(m_duration, 1, 3);
+    m_recordLabel = new QLabel(this);
+    m_recordFolder = new QLineEdit(defaultRecordFolder(), this);
+    m_recordFolder->setObjectName(QStringLiteral("rthsRecordFolder"));
+    m_recordState = new QLabel(this);
+    m_recordState->setObjectName(QStringLiteral("rthsRecordState"));
+    m_recordState->setWordWrap(true);
+    m_recordState->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addWidget(m_recordLabel, 3, 0);
+    form->addWidget(m_recordFolder, 3, 1, 1, 3);
+    form->addWidget(m_recordState, 4, 0, 1, 4);
     v->addLayout(form);
 
     auto* buttons = new QHBoxLayout;
@@ -163,6 +174,7 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     connect(m_session, &RthsSession::samples, this, &RthsPanel::onSamples);
     connect(m_session, &RthsSession::finished, this, &RthsPanel::onFinished);
     connect(m_session, &RthsSession::failed, this, &RthsPanel::onFailed);
+    connect(m_session, &RthsSession::controllerDescribed, this, &RthsPanel::onControllerDescribed);
     setStatus([] { return tr("No RTHS run yet."); }, false);
     retranslateUi();
     showEstimate();
@@ -202,8 +214,44 @@ void RthsPanel::retranslateUi()
     m_criticalHeader->setText(tr("Critical above"));
     m_j1Label->setText(tr("J1 delay"));
     m_j2Label->setText(tr("J2 tracking error"));
+    m_recordLabel->setText(tr("Record folder:"));
+    m_recordFolder->setPlaceholderText(tr("not recorded"));
+    m_recordFolder->setToolTip(tr("Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded"));
+    m_recordState->setText(m_recordRender ? m_recordRender() : QString());
     m_status->setText(m_statusRender ? m_statusRender() : QString());
     showEstimate();
+}
+
+QString RthsPanel::defaultRecordFolder()
+{
+    const QString dir = ConsoleSettings::recordDirectory();
+    return dir.isEmpty() ? QString() : dir + QStringLiteral("/rths");
+}
+
+void RthsPanel::setRecordFolder(const QString& folder)
+{
+    m_recordFolder->setText(folder);
+}
+
+QString RthsPanel::recordFolder() const
+{
+    return m_recordFolder->text().trimmed();
+}
+
+QString RthsPanel::recordText() const
+{
+    return m_recordState->text();
+}
+
+void RthsPanel::setRecordState(std::function<QString()> render)
+{
+    m_recordRender = std::move(render);
+    m_recordState->setText(m_recordRender());
+}
+
+void RthsPanel::onControllerDescribed(const QString& description)
+{
+    setRecordState([description] { return tr("Recorded on the controller, not by the console: %1").arg(description); });
 }
 
 void RthsPanel::setStatus(std::function<QString()> render, bool bad)
@@ -232,6 +280,7 @@ void RthsPanel::updateButtons()
     m_pace->setEnabled(!going);
     m_controller->setEnabled(!going);
     m_duration->setEnabled(!going);
+    m_recordFolder->setEnabled(!going);
 }
 
 void RthsPanel::browse()
@@ -272,15 +321,20 @@ void RthsPanel::start()
 bool RthsPanel::startRun(const RthsConfig& cfg, const GroundMotion& ag, RthsSession::Pace pace, double duration)
 {
     QString error;
-    if (!m_session->start(cfg, ag, pace, duration, &error)) {
+    if (!m_session->start(cfg, ag, pace, duration, recordFolder(), &error)) {
         setStatus([error] { return tr("Cannot start the RTHS run: %1").arg(error); }, true);
         m_alarms->addMessage([error] { return tr("Cannot start the RTHS run: %1").arg(error); }, AlarmSeverity::Warning);
         return false;
     }
     const QString pre = m_session->preflight();
     const bool realTime = pace == RthsSession::Pace::RealTime;
-    began(QString::fromStdString(cfg.name), cfg.settings.rate,
+    began(cfg,
           realTime ? tr("real time; pre-flight: %1").arg(pre) : tr("fast; pre-flight: %1").arg(pre));
+    const QString path = m_session->recordPath();
+    if (path.isEmpty())
+        setRecordState([] { return tr("Not recorded (no record folder)"); });
+    else
+        setRecordState([path] { return tr("Recording every tick to %1").arg(path); });
     return true;
 }
 
@@ -292,13 +346,16 @@ bool RthsPanel::startRemoteRun(const RthsConfig& cfg, const QString& host, quint
         setStatus([error] { return tr("Cannot start the RTHS run: %1").arg(error); }, true);
         return false;
     }
-    began(QString::fromStdString(cfg.name), cfg.settings.rate, tr("on the controller %1:%2").arg(host).arg(port));
+    began(cfg, tr("on the controller %1:%2").arg(host).arg(port));
+    setRecordState([] { return tr("Recorded on the controller, not by the console (waiting for the controller's description)"); });
     return true;
 }
 
-void RthsPanel::began(const QString& name, double rate, const QString& where)
+void RthsPanel::began(const RthsConfig& cfg, const QString& where)
 {
-    m_window = std::make_unique<rths::TrackingWindow>(m_session->samplePeriod(), windowSettings());
+    const QString name = QString::fromStdString(cfg.name);
+    const double rate = cfg.settings.rate;
+    m_window = std::make_unique<rths::TrackingWindow>(m_session->samplePeriod(), windowSettings(cfg));
     m_alarmsLogic.reset();
     m_sync->clearData();
     m_history->clearData();
@@ -375,7 +432,8 @@ void RthsPanel::onSamples(const std::vector<comms::TelemetrySample>& batch)
             rths::TrackingEstimate e = m_window->last();
             e.tick = s.tick;
             e.time = s.time;
-            m_history->append(e.time, e.delay, e.amplitudeError);
+            if (e.valid) // a gated window (too quiet) leaves a gap
+                m_history->append(e.time, e.delay, e.amplitudeError);
             m_alarmsLogic.judge(e, raised);
         }
     }
@@ -388,8 +446,9 @@ void RthsPanel::onSamples(const std::vector<comms::TelemetrySample>& batch)
 
 void RthsPanel::showEstimate()
 {
-    const bool has = m_window && m_window->hasEstimate();
-    const rths::TrackingEstimate e = has ? m_window->last() : rths::TrackingEstimate{};
+    const bool quiet = m_window && m_window->hasEstimate() && !m_window->last().valid;
+    const bool has = m_window && m_window->hasEstimate() && !quiet;
+    const rths::TrackingEstimate e = m_window && m_window->hasEstimate() ? m_window->last() : rths::TrackingEstimate{};
     const auto colour = [](int level) {
         return level == 2 ? QStringLiteral("color: #b00000;") : level == 1 ? QStringLiteral("color: #c07000;") : QString();
     };
@@ -398,7 +457,9 @@ void RthsPanel::showEstimate()
     m_j1Value->setStyleSheet(QStringLiteral("font-size: 14pt; font-weight: bold;") + colour(m_alarmsLogic.j1Level()));
     m_j2Value->setStyleSheet(QStringLiteral("font-size: 14pt; font-weight: bold;") + colour(m_alarmsLogic.j2Level()));
     m_amplitudeValue->setText(has ? tr("Amplitude error: %1 %").arg(e.amplitudeError, 0, 'f', 2)
-                                  : tr("Amplitude error: -- %"));
+                              : quiet ? tr("No estimate: the command's RMS %1 mm is below %2 mm")
+                                            .arg(e.commandRms * 1e3, 0, 'f', 3).arg(e.gate * 1e3, 0, 'f', 3)
+                                      : tr("Amplitude error: -- %"));
     m_timeValue->setText(tr("t = %1 s").arg(m_lastTime, 0, 'f', 2));
 }
 
@@ -407,6 +468,16 @@ void RthsPanel::onFinished(const QString& hold, const rths::BenchmarkCriteria& c
     const long last = ticks > 0 ? ticks - 1 : 0;
     const double t = double(last) / m_rate; // the last tick's time [s]
     const double j1 = criteria.j[0], j2 = criteria.j[1];
+    if (const QString path = m_session->recordPath(); !path.isEmpty()) {
+        const QString bad = m_session->recordError();
+        const auto incomplete = [path, bad] { return tr("The record %1 is incomplete: %2").arg(path, bad); };
+        if (bad.isEmpty()) {
+            setRecordState([path, ticks] { return tr("Recorded %1 ticks to %2").arg(ticks).arg(path); });
+        } else {
+            setRecordState(incomplete);
+            m_alarms->addMessage(incomplete, AlarmSeverity::Warning);
+        }
+    }
     if (hold.isEmpty()) {
         setStatus([ticks, t, j1, j2] {
             return tr("Finished: %1 ticks (%2 s); whole run J1 %3 ms, J2 %4 %")

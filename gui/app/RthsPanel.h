@@ -9,7 +9,10 @@
 //     run, effective at the next estimate): crossing one raises an alarm in the alarm panel;
 //   - Hold and Emergency hold, which hold the running loop before its next tick; a run held by
 //     the loop itself (a limit of the plant or command, deadline misses) is named in the panel
-//     and as a critical alarm with its channel, value and tick.
+//     and as a critical alarm with its channel, value and tick;
+//   - the record folder (default: the console's record folder + "/rths"; empty: not recorded)
+//     and where the run's record goes (the first free record.h5, record-N.h5 there), or, for a
+//     controller's run, where the controller records (its hello-ack) or that it does not.
 // The estimates and the thresholds' logic are core's (rths::TrackingWindow, TrackingAlarms):
 // this panel only feeds them the session's samples and shows what they return.
 // Thread rules: GUI thread only.
@@ -42,8 +45,10 @@ public:
     /// alarms: the main window's alarm list (threshold alarms, holds, errors go there).
     explicit RthsPanel(AlarmList* alarms, QWidget* parent = nullptr);
 
-    /// The moving window of the live estimates (default: 1 s, every 0.1 s, delays to 50 ms).
-    static rths::TrackingWindowSettings windowSettings();
+    /// The moving window of the live estimates (default: 1 s, every 0.1 s, delays to 50 ms),
+    /// gated for the displacement sensor of cfg: no estimate while the window's command RMS is
+    /// below 10 x the sensor's noise RMS (noise and quantization) or 0.1 x the run's largest.
+    static rths::TrackingWindowSettings windowSettings(const RthsConfig& cfg);
 
     /// Start a run of cfg over ag [m/s^2] (what the Start button does after loading the chosen
     /// source); false with the reason shown (and listed as an alarm) when it cannot start.
@@ -58,6 +63,15 @@ public:
     void hold();
     void emergencyHold();
     bool running() const { return m_session->running(); }
+
+    /// The console's record folder (ConsoleSettings::recordDirectory()) + "/rths"; "" when the
+    /// console records nothing.
+    static QString defaultRecordFolder();
+    /// Where the next local run records ("" = not recorded).
+    void setRecordFolder(const QString& folder);
+    QString recordFolder() const;
+    /// The record line: where the run records, recorded, or where the controller records.
+    QString recordText() const;
 
     void setLimits(const rths::TrackingLimits& limits);
     rths::TrackingLimits limits() const { return m_alarmsLogic.limits(); }
@@ -82,10 +96,13 @@ private:
     void onFinished(const QString& hold, const rths::BenchmarkCriteria& criteria, long ticks);
     void onLimitsEdited();
     void onFailed(const QString& why);
-    /// Clear the plots and estimates of the last run; the status says what runs.
-    void began(const QString& name, double rate, const QString& where);
+    /// Clear the plots and estimates of the last run (the window gated for cfg's displacement
+    /// sensor: rths::gatedWindowSettings); the status says what runs.
+    void began(const RthsConfig& cfg, const QString& where);
     void showEstimate();
     void setStatus(std::function<QString()> render, bool bad);
+    void setRecordState(std::function<QString()> render);
+    void onControllerDescribed(const QString& description);
     void updateButtons();
     void browse();
 
@@ -123,6 +140,10 @@ private:
     QLabel* m_j2Value = nullptr;
     QLabel* m_amplitudeValue = nullptr;
     QLabel* m_timeValue = nullptr;
+    QLabel* m_recordLabel = nullptr;
+    QLineEdit* m_recordFolder = nullptr;
+    QLabel* m_recordState = nullptr;
+    std::function<QString()> m_recordRender; // the record line, again at each language change
     QLabel* m_status = nullptr;
     std::function<QString()> m_statusRender; // the status line, again at each language change
     bool m_statusBad = false;

@@ -30,7 +30,8 @@ void RthsSession::join()
         m_thread.join();
 }
 
-bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace, double duration, QString* error)
+bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace, double duration,
+                        const QString& recordFolder, QString* error)
 {
     if (m_active) {
         if (error)
@@ -54,19 +55,44 @@ bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace
     m_pacer = pace == Pace::RealTime
                   ? std::make_unique<comms::RealtimePacer>(m_clock, 1.0 / s.rate, cfg.holdAfterMisses)
                   : nullptr;
+    m_recording.reset();
+    m_recordPath.clear();
+    m_recordError.clear();
+    m_ag = ag;
+    if (!recordFolder.isEmpty()) {
+        try {
+            const RecordStart record{cfg.raw.dump(), cfg.name, {}, 1.0 / s.rate};
+            m_recording = std::make_unique<rths::RthsRecording>(recordFolder.toStdString(), record, m_ag,
+                                                                int(part.reference.m.rows()));
+        } catch (const std::exception& e) {
+            if (error)
+                *error = tr("the record cannot be created in %1: %2").arg(recordFolder, QString::fromStdString(e.what()));
+            return false;
+        }
+        m_recordPath = QString::fromStdString(m_recording->path());
+    }
     m_gate = std::make_unique<comms::MonitorGate>(m_pacer.get(), 1.0 / s.rate);
     m_feed = std::make_unique<comms::TelemetryFeed>(*m_gate, decimation);
+    m_observers = {};
+    m_observers.add(m_feed.get());
+    m_observers.add(m_recording ? m_recording->feed() : nullptr);
     m_backpressure = std::make_unique<comms::FastPaceGate>(*m_gate, *m_feed);
     rths::TickGate* gate = pace == Pace::Fast ? static_cast<rths::TickGate*>(m_backpressure.get()) : m_gate.get();
     m_done = false;
     m_run = {};
     m_link.reset();
     m_failure.clear();
-    m_thread = std::thread([this, part, ag, s, gate, duration] {
+    m_thread = std::thread([this, part, s, gate, duration, misses = cfg.holdAfterMisses] {
         try {
-            m_run = rths::runRths(part, ag, s, gate, duration, m_feed.get());
+            m_run = rths::runRths(part, m_ag, s, gate, duration, &m_observers);
         } catch (const std::exception& e) {
             m_run.hold = std::string("the loop failed: ") + e.what();
+        }
+        // The record is closed here, off the GUI thread: a hold is its last tick's alarm.
+        if (m_recording) {
+            const bool deadline = m_pacer && misses > 0 && m_pacer->misses() >= misses;
+            if (!m_recording->finish(m_run, deadline))
+                m_recordError = m_recording->error();
         }
         m_ticks = long(m_run.time.size());
         m_done = true;
@@ -93,8 +119,13 @@ bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint1
     m_feed.reset();
     m_gate.reset();
     m_pacer.reset();
+    m_recording.reset();
+    m_recordPath.clear();
+    m_recordError.clear();
     m_link = std::make_unique<RthsLink>();
     m_remoteSamples.clear();
+    m_description.clear();
+    m_described = false;
     m_failure.clear();
     m_run = {};
     m_ticks = 0;
@@ -105,6 +136,10 @@ bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint1
             m_failure = why;
             m_done = true;
             return;
+        }
+        {
+            std::lock_guard lock(m_remoteMutex);
+            m_description = description;
         }
         for (;;) {
             const RthsLink::Event ev = m_link->next();
@@ -161,8 +196,17 @@ void RthsSession::poll()
             m_batch.push_back(sample);
         }
     } else {
-        std::lock_guard lock(m_remoteMutex);
-        m_batch.swap(m_remoteSamples);
+        std::string description;
+        {
+            std::lock_guard lock(m_remoteMutex);
+            m_batch.swap(m_remoteSamples);
+            if (!m_described && !m_description.empty())
+                description = m_description;
+        }
+        if (!description.empty()) {
+            m_described = true;
+            emit controllerDescribed(QString::fromStdString(description));
+        }
     }
     if (!m_batch.empty())
         emit samples(m_batch);

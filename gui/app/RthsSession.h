@@ -8,10 +8,15 @@
 // loop waits while half the feed's ring is undrained (nothing dropped, the simulated time does
 // not care). hold() / emergencyHold() hold the loop before its next tick (no resume: a held
 // RTHS run restarts from rest). The destructor holds a running loop and joins it.
+// A local run with a record folder writes every tick to the first free record.h5 /
+// record-N.h5 there (core's RthsRecording: the same RthsRecordFeed and RecordWriter as
+// `hsmu rths`, batched on the writer's thread), a hold as the last tick's alarm; the loop's
+// thread closes it.
 // Thread rules: GUI thread, except the loop's own thread inside.
 
 #include "comms/rths/RthsMonitor.h"
 #include "core/config/RthsConfig.h"
+#include "core/record/RthsRecord.h"
 #include "gui/cli/RthsLink.h"
 
 #include <QObject>
@@ -35,9 +40,11 @@ public:
     ~RthsSession() override;
 
     /// Prepare cfg's settings (fitToNominalLoop), run pre-flight and start the loop over ag
-    /// [m/s^2]; duration > 0 stops after that many seconds. False with *error (pre-flight's
-    /// refusal, a run already going) and nothing started.
-    bool start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace, double duration, QString* error);
+    /// [m/s^2]; duration > 0 stops after that many seconds; recordFolder not empty: every tick
+    /// recorded there (recordPath()). False with *error (pre-flight's refusal, a run already
+    /// going, a record that cannot be created) and nothing started.
+    bool start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace, double duration,
+               const QString& recordFolder, QString* error);
     /// Monitor the loop `hsmu-controller --rths` runs at host:port instead (RthsLink, the
     /// protocol of `hsmu rths --controller`; token: the hello's): the controller runs its own copy
     /// of the configuration at its own pace; cfg gives the rate, so the samples' spacing. The
@@ -50,6 +57,10 @@ public:
     double samplePeriod() const { return m_samplePeriod; }
     /// Pre-flight's sentence of the last start().
     const QString& preflight() const { return m_preflight; }
+    /// The last local run's record file ("" when not recorded).
+    const QString& recordPath() const { return m_recordPath; }
+    /// After finished(): why the record could not be completed ("" when it was, or none).
+    QString recordError() const { return m_done ? QString::fromStdString(m_recordError) : QString(); }
     void hold();
     void emergencyHold();
 
@@ -60,6 +71,9 @@ signals:
     void finished(const QString& hold, const hsmu::rths::BenchmarkCriteria& criteria, long ticks);
     /// A monitored run could not be followed (refused, link lost): why.
     void failed(const QString& why);
+    /// The monitored controller's hello-ack text (its loop, and where it records or that it
+    /// does not), once connected.
+    void controllerDescribed(const QString& description);
 
 private:
     void poll();
@@ -75,6 +89,11 @@ private:
     std::atomic<bool> m_done{false};
     bool m_active = false;
     rths::RthsRun m_run; // written by the loop's thread until m_done
+    GroundMotion m_ag;   // the run's record (the record feed reads it)
+    std::unique_ptr<rths::RthsRecording> m_recording; // closed by the loop's thread
+    rths::TickObservers m_observers;                  // the feed, then the record
+    QString m_recordPath;
+    std::string m_recordError;                        // written by the thread until m_done
     double m_samplePeriod = 0.0;
     QString m_preflight;
     std::vector<comms::TelemetrySample> m_batch;
@@ -82,6 +101,8 @@ private:
     std::unique_ptr<RthsLink> m_link;
     std::mutex m_remoteMutex;
     std::vector<comms::TelemetrySample> m_remoteSamples; // guarded by m_remoteMutex
+    std::string m_description;                           // guarded by m_remoteMutex
+    bool m_described = false;
     std::string m_failure;                               // written by the thread until m_done
     long m_ticks = 0;                                    // written by the thread until m_done
 };

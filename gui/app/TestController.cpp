@@ -205,6 +205,12 @@ void TestController::approveUpdate(int proposalId) {
 void TestController::rejectUpdate(int proposalId) {
     onWorker([=](TestWorker* w) { w->rejectUpdate(proposalId); });
 }
+void TestController::approveOffsets(int id) {
+    onWorker([=](TestWorker* w) { w->approveOffsets(id); });
+}
+void TestController::rejectOffsets(int id) {
+    onWorker([=](TestWorker* w) { w->rejectOffsets(id); });
+}
 void TestController::setReporterPolicy(ReporterPolicy policy, int everyN) {
     onWorker([=](TestWorker* w) { w->setReporterPolicy(policy, everyN); });
 }

@@ -109,6 +109,8 @@ public slots:
     void setParameterLocked(const QString& name, bool locked);
     void approveUpdate(int proposalId);
     void rejectUpdate(int proposalId);
+    void approveOffsets(int id); ///< the twins' offsets (TestWorker::approveOffsets)
+    void rejectOffsets(int id);
     void setReporterPolicy(hsmu::ReporterPolicy policy, int everyN);
     void setFitThreshold(double threshold);
     /// An operator note, recorded by the worker with its current step and time (queued; the

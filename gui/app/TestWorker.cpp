@@ -38,6 +38,18 @@ std::string valuesText(const ParameterLayout& names, const std::vector<double>& 
     return out;
 }
 
+/// "#<id> <targets>" and "u0=<v> <unit> (sd <s>) F0=<v> <unit> (sd <s>)" for the record.
+std::pair<std::string, std::string> offsetsText(const ModelUpdater& u, const OffsetProposal& p,
+                                                const ElementUnits& units) {
+    std::string targets;
+    for (const ReporterTarget& t : u.reporter().targets())
+        targets += (targets.empty() ? "" : ",") + t.element;
+    return {"#" + std::to_string(p.id) + " " + targets,
+            "u0=" + number(p.deformationOffset) + " " + units.deformation + " (sd " +
+                number(p.deformationSd) + ") F0=" + number(p.forceOffset) + " " + units.force +
+                " (sd " + number(p.forceSd) + ")"};
+}
+
 SessionOptions consoleSession(RecordStart record, const QString& recordPath) {
     SessionOptions o;
     o.speed = 1.0; // real time until the operator changes it
@@ -385,6 +397,42 @@ void TestWorker::rejectUpdate(int proposalId) {
                                  "rejected by the operator", UpdateDecision::Rejected,
                                  proposalId});
     }
+    publishUpdating();
+}
+
+void TestWorker::approveOffsets(int id) {
+    const ModelUpdater* u = test().updater();
+    const OffsetProposal* pending = u ? u->pendingOffsets() : nullptr;
+    if (!pending || pending->id != id) {
+        refuse(QT_TR_NOOP("offsets #%1 are no longer pending"), {QString::number(id)});
+        return publishUpdating();
+    }
+    const OffsetProposal p = *pending;
+    const Element* specimen = test().structure().element(u->specimenElement());
+    const auto [old, applied] =
+        offsetsText(*u, p, elementUnits(specimen ? specimen->typeName() : std::string()));
+    std::string error;
+    if (!test().approveOffsets(id, &error))
+        refuse(QT_TR_NOOP("offsets #%1 were not applied: %2"),
+               {QString::number(id), QString::fromStdString(error)});
+    else
+        logEvent(OperatorEvent::kApproveOffsets, old, applied);
+    publishAlarms();
+    publishUpdating();
+}
+
+void TestWorker::rejectOffsets(int id) {
+    const ModelUpdater* u = test().updater();
+    const OffsetProposal* pending = u ? u->pendingOffsets() : nullptr;
+    if (!pending || pending->id != id) {
+        refuse(QT_TR_NOOP("offsets #%1 are no longer pending"), {QString::number(id)});
+        return publishUpdating();
+    }
+    const Element* specimen = test().structure().element(u->specimenElement());
+    const auto [old, offered] = offsetsText(
+        *u, *pending, elementUnits(specimen ? specimen->typeName() : std::string()));
+    test().rejectOffsets(id);
+    logEvent(OperatorEvent::kRejectOffsets, old, offered);
     publishUpdating();
 }
 

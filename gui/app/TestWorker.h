@@ -25,7 +25,7 @@
 // nothing and leaves the test Ready and unarmed (the pre-flight must be confirmed again), so
 // Resume can never drive an unconfirmed test.
 // Every operator action (pre-flight confirmation, start, pause, single step, resume, hold,
-// stop, approve / reject, bounds, lock, threshold, policy) becomes an OperatorEvent: emitted
+// stop, approve / reject an update or the offsets, bounds, lock, threshold, policy) becomes an OperatorEvent: emitted
 // to the console and written to the record (language-neutral, as a /notes row). An approved
 // update is also written to /updating/events with the next committed step. The updating
 // panels get an UpdatingSnapshot at most ~10 times a second while running, and at once after every
@@ -110,6 +110,9 @@ public slots:
     void setParameterLocked(const QString& name, bool locked);
     void approveUpdate(int proposalId);
     void rejectUpdate(int proposalId);
+    /// The twins' offsets (ModelUpdater::approveOffsets), only ever by the operator.
+    void approveOffsets(int id);
+    void rejectOffsets(int id);
     void setReporterPolicy(hsmu::ReporterPolicy policy, int everyN);
     void setFitThreshold(double threshold);
     /// Emit the updating snapshot now (e.g. right after loading, before any start).

@@ -1,6 +1,7 @@
 #include "gui/app/UpdatingSnapshot.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
+#include "core/output/ElementUnits.h"
 #include "core/structure/Element.h"
 #include "core/structure/Structure.h"
 #include "core/experiment/HybridTest.h"
@@ -65,6 +66,13 @@ UpdatingSnapshot snapshotOf(const HybridTest& test) {
     s.appliedUpdates = r.appliedCount();
     s.notQueued = r.notQueuedCount();
     s.maxPending = r.maxPending();
+    if (const OffsetProposal* p = u->pendingOffsets())
+        s.offsets = *p;
+    if (const Element* e = test.structure().element(s.specimen)) {
+        const ElementUnits units = elementUnits(e->typeName());
+        s.deformationUnit = units.deformation;
+        s.forceUnit = units.force;
+    }
     return s;
 }
 

@@ -7,11 +7,13 @@
 // Thread rules: plain data; snapshotOf() on the thread that runs the test.
 
 #include "core/identification/ParameterSet.h"
+#include "core/updating/OffsetCheck.h"
 #include "core/updating/Reporter.h"
 
 #include <QMetaType>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,10 @@ struct UpdatingSnapshot {
     int appliedUpdates = 0;
     int notQueued = 0;   ///< offers not queued (approval queue full), all in the record
     int maxPending = 0;  ///< the approval queue's capacity
+    /// The offsets waiting for the operator (ModelUpdater::pendingOffsets), in the
+    /// specimen's units below; never applied without the operator's approval.
+    std::optional<OffsetProposal> offsets;
+    std::string deformationUnit, forceUnit; ///< the specimen's (ElementUnits.h)
 
     const ParameterState* parameter(const std::string& name) const;
     /// Whether proposal p is stale at this snapshot's time (Reporter::stale).

@@ -4,6 +4,7 @@
 #include "gui/app/Translations.h"
 #include "gui/cli/CompareCommand.h"
 #include "gui/cli/ExportCommand.h"
+#include "gui/cli/FastRun.h"
 #include "gui/cli/MaterialCommand.h"
 #include "gui/cli/ReplayCommand.h"
 #include "gui/cli/RthsCommand.h"
@@ -12,13 +13,9 @@
 #include <QCoreApplication>
 #include <QTextStream>
 
-#include <cerrno>
 #include <cstring>
-#include <exception>
-#include <filesystem>
 #include <initializer_list>
 #include <string>
-#include <unistd.h>
 
 namespace hsmu::gui {
 
@@ -26,15 +23,7 @@ namespace {
 
 /// Replace this process with hsmu-console (next to this executable), same arguments.
 int execConsole(char** argv) {
-    std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    const std::string console =
-        ((ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path()) / "hsmu-console")
-            .string();
-    std::string name = "hsmu-console";
-    argv[0] = name.data();
-    ::execv(console.c_str(), argv);
-    const int e = errno;
+    const auto [console, e] = FastRun::execSibling("hsmu-console", argv, "hsmu-console");
     QTextStream(stderr) << "hsmu: cannot start " << QString::fromStdString(console) << ": "
                         << QString::fromLocal8Bit(std::strerror(e))
                         << " (the console, the replay window and --plots are drawn by it)"
@@ -53,14 +42,7 @@ bool CliLauncher::hasArgument(int argc, char** argv, std::initializer_list<const
 }
 
 int CliLauncher::guarded(const std::function<int()>& body) {
-    try {
-        return body();
-    } catch (const std::exception& e) { // last line of defence: a message, never an abort
-        QTextStream(stderr) << "hsmu: internal error: " << e.what() << Qt::endl;
-    } catch (...) {
-        QTextStream(stderr) << "hsmu: internal error" << Qt::endl;
-    }
-    return 1;
+    return FastRun::guarded(body);
 }
 
 void CliLauncher::describeApplication() {

@@ -1,5 +1,6 @@
 #pragma once
-// CliLauncher: the `hsmu` executable, Qt Core only (no Widgets, no QCustomPlot: a headless
+// CliLauncher: the `hsmu-cli` executable, started by the Qt-free `hsmu` (gui/cli/FastRun.h)
+// for every command line it does not run itself; Qt Core only (no Widgets, no QCustomPlot: a headless
 // `hsmu run` stays small, docs/benchmarks.md "Memory"). The first argument selects what runs:
 //   hsmu run | compare CONFIG ...     in this process, on a QCoreApplication
 //   hsmu material | export ...       in this process

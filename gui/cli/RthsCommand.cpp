@@ -7,6 +7,7 @@
 #include "core/record/RecordWriter.h"
 #include "core/record/RthsRecord.h"
 #include "core/rths/RthsReport.h"
+#include "core/updating/TwinIdentification.h"
 #include "comms/LinkAddress.h"
 #include "core/util/SecretFile.h"
 #include "gui/cli/ConsoleStreams.h"
@@ -19,6 +20,7 @@
 #include <cmath>
 
 #include <fstream>
+#include <memory>
 #include <thread>
 
 namespace hsmu::gui {
@@ -62,7 +64,7 @@ bool applyCompensation(const QString& name, rths::RthsSettings& s)
 int monitorController(const QCommandLineParser& p, const RthsConfig& cfg, const rths::RthsSettings& s,
                       double duration, const QCommandLineOption& controllerOpt,
                       const QCommandLineOption& tokenFileOpt, const QCommandLineOption& everyOpt,
-                      const QCommandLineOption& outOpt)
+                      const QCommandLineOption& outOpt, const QCommandLineOption& updateOpt)
 {
     std::string error;
     const auto address = comms::LinkAddress::parse(p.value(controllerOpt).toStdString(), &error);
@@ -88,6 +90,12 @@ int monitorController(const QCommandLineParser& p, const RthsConfig& cfg, const 
         o.decimation = p.value(everyOpt).toUInt(&ok);
         if (!ok || o.decimation == 0)
             return fail(RthsCommand::tr("--telemetry-every: expected a whole number >= 1, got '%1'").arg(p.value(everyOpt)));
+    }
+    for (const QString& u : p.values(updateOpt)) {
+        RthsTimedUpdate parsed;
+        if (!parseTimedUpdate(u, parsed))
+            return fail(RthsCommand::tr("--update: expected T:NAME=VALUE[,NAME=VALUE...] (seconds, then the damper twin's parameters), got '%1'").arg(u));
+        o.updates.push_back(parsed);
     }
     if (!QDir().mkpath(o.out))
         return fail(RthsCommand::tr("%1: cannot create the output folder").arg(o.out));
@@ -119,7 +127,8 @@ int RthsCommand::exec(const QStringList& arguments)
     const QCommandLineOption controllerOpt(QStringLiteral("controller"), tr("Monitor the loop run by hsmu-controller --rths at tcp://HOST:PORT."), QStringLiteral("address"));
     const QCommandLineOption tokenFileOpt(QStringLiteral("token-file"), tr("File whose first line is the controller's shared secret."), QStringLiteral("file"));
     const QCommandLineOption everyOpt(QStringLiteral("telemetry-every"), tr("With --controller: one telemetry frame every N ticks (default: about 128 per second)."), QStringLiteral("n"));
-    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, spinOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt});
+    const QCommandLineOption updateOpt(QStringLiteral("update"), tr("With --controller: at T seconds of the run, send new values of the damper twin's parameters (repeatable)."), QStringLiteral("T:name=value,..."));
+    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, spinOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt, updateOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed->isEmpty() ? 0 : fail(*parsed);
     const QStringList pos = p.positionalArguments();
@@ -136,6 +145,8 @@ int RthsCommand::exec(const QStringList& arguments)
             out = p.value(o).toDouble(&ok);
         return ok && std::isfinite(out);
     };
+    if (!p.isSet(controllerOpt) && p.isSet(updateOpt))
+        return fail(tr("--update needs --controller: it sends the update to the loop hsmu-controller runs"));
     if (p.isSet(controllerOpt))
         for (const QCommandLineOption* o : {&gmOpt, &scaleOpt, &paceOpt, &prioOpt, &spinOpt, &compOpt, &perturbOpt, &seedOpt, &noNoiseOpt})
             if (p.isSet(*o))
@@ -164,7 +175,7 @@ int RthsCommand::exec(const QStringList& arguments)
             s.plant = rths::perturbedPlant(s.plant, random);
         }
         if (p.isSet(controllerOpt))
-            return monitorController(p, cfg, s, duration, controllerOpt, tokenFileOpt, everyOpt, outOpt);
+            return monitorController(p, cfg, s, duration, controllerOpt, tokenFileOpt, everyOpt, outOpt, updateOpt);
         const QString gmFile = p.isSet(gmOpt) ? p.value(gmOpt) : QString::fromStdString(cfg.groundMotionFile);
         if (gmFile.isEmpty())
             return fail(tr("no ground motion: give --ground-motion FILE"));
@@ -189,7 +200,15 @@ int RthsCommand::exec(const QStringList& arguments)
         const auto floors = int(part.reference.m.rows());
         RecordStart start{cfg.raw.dump(), cfg.name, {}, 1.0 / s.rate};
         RecordWriter record((dir + QStringLiteral("/record.h5")).toStdString(), rths::rthsLayout(floors), start);
-        rths::RthsRecordFeed feed(record, ag, floors);
+        rths::RthsRecordFeed feed(record, ag, floors, &record);
+        // The damper's online identification (docs/rths.md, "A damper and its twin"): off the
+        // loop's thread; the simulated pace waits for its offers (bit for bit), real time not.
+        std::unique_ptr<rths::TwinIdentification> identification;
+        if (s.damper.enabled && cfg.identification.enabled) {
+            rths::TwinIdentificationSettings is = cfg.identification;
+            is.wait = pace != QLatin1String("realtime");
+            identification = std::make_unique<rths::TwinIdentification>(s.damper, is, s.rate);
+        }
         rths::RthsRun run;
         comms::MonotonicClock monotonic;
         comms::SpinningClock clock(monotonic, std::chrono::nanoseconds(std::int64_t(spin * 1e3)));
@@ -199,14 +218,19 @@ int RthsCommand::exec(const QStringList& arguments)
             std::thread loop([&] {
                 if (p.isSet(prioOpt))
                     priority = comms::enterRealtimePriority(80);
-                run = rths::runRths(part, ag, s, &pacer, duration, &feed);
+                run = rths::runRths(part, ag, s, &pacer, duration, &feed, identification.get());
             });
             loop.join();
             if (!priority.empty())
                 ConsoleStreams::err() << tr("hsmu rths: real-time priority not taken (%1); the loop ran at normal priority").arg(QString::fromStdString(priority)) << Qt::endl;
         } else {
-            run = rths::runRths(part, ag, s, nullptr, duration, &feed);
+            run = rths::runRths(part, ag, s, nullptr, duration, &feed, identification.get());
         }
+        if (identification && !identification->failure().empty())
+            ConsoleStreams::err() << QString::fromStdString(identification->failure()) << Qt::endl;
+        identification.reset();
+        for (const UpdateEvent& e : run.updates)
+            out << QString::fromStdString(rths::describeTwinUpdate(e)) << Qt::endl;
         if (!run.hold.empty()) {
             // A deadline-miss hold is the pacer's; any other is a limit of the plant or command.
             const bool deadline = pace == QLatin1String("realtime") && cfg.holdAfterMisses > 0 &&

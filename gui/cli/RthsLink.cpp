@@ -3,6 +3,7 @@
 #include "gui/cli/RthsCommand.h"
 
 #include <random>
+#include <utility>
 
 namespace hsmu::gui {
 
@@ -49,6 +50,16 @@ RthsLink::Event RthsLink::next()
             ev.telemetry = *t;
             return ev;
         }
+        if (const auto* u = std::get_if<comms::RthsUpdateAppliedMsg>(&*m)) {
+            std::lock_guard lock(m_updatesMutex);
+            m_updates.push_back(*u);
+            continue;
+        }
+        if (const auto* e = std::get_if<comms::ErrorMsg>(&*m); e && e->code == comms::ErrorCode::UpdateRefused) {
+            std::lock_guard lock(m_updatesMutex);
+            m_updates.push_back(comms::RthsUpdateAppliedMsg{0, false, e->reason, {}, {}});
+            continue;
+        }
         if (const auto* e = std::get_if<comms::ErrorMsg>(&*m)) {
             ev.error = RthsCommand::tr("the controller: %1").arg(QString::fromStdString(e->reason)).toStdString();
             return ev;
@@ -67,6 +78,18 @@ bool RthsLink::hold(const std::string& reason, bool emergency)
     std::string error;
     return emergency ? m_link.send(comms::EmergencyHoldMsg{reason}, error)
                      : m_link.send(comms::HoldMsg{reason}, error);
+}
+
+bool RthsLink::update(const std::vector<std::string>& names, const std::vector<double>& values)
+{
+    std::string error;
+    return m_link.send(comms::RthsUpdateMsg{names, values}, error);
+}
+
+std::vector<comms::RthsUpdateAppliedMsg> RthsLink::takeUpdates()
+{
+    std::lock_guard lock(m_updatesMutex);
+    return std::exchange(m_updates, {});
 }
 
 void RthsLink::abandon()

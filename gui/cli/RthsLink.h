@@ -2,14 +2,18 @@
 // RthsLink: the monitor's side of the RTHS protocol (docs/protocol.md, "RTHS monitoring"), one
 // piece for `hsmu rths --controller` (RthsRemote) and the console's RTHS view (RthsSession):
 // connect (LinkClient: token, heartbeats, silence timeout), hello, rths-start; then each frame
-// as an event (telemetry, the end, a failure); hold and emergency hold.
+// as an event (telemetry, the end, a failure); hold and emergency hold; updates of the loop's
+// damper twin (rths-update; the controller's decisions, rths-update-applied, and its refusals
+// are kept for takeUpdates(), not events: a run goes on whatever becomes of an update).
 // Thread rules: open / next / bye on one thread; hold() from any thread (LinkClient::send).
 
 #include "comms/link/LinkClient.h"
 
 #include <atomic>
 #include <cstdint>
+#include <mutex>
 #include <string>
+#include <vector>
 
 namespace hsmu::gui {
 
@@ -35,6 +39,11 @@ public:
     Event next();
     /// Ask the controller to hold the loop before its next tick; any thread.
     bool hold(const std::string& reason, bool emergency);
+    /// Send new values of the damper twin's parameters (rths-update); any thread.
+    bool update(const std::vector<std::string>& names, const std::vector<double>& values);
+    /// What became of updates so far (applied or refused by the loop, each at its tick; refused
+    /// by the controller at once: applied false, tick 0, the controller's reason); any thread.
+    std::vector<comms::RthsUpdateAppliedMsg> takeUpdates();
     /// Give up: a next() in progress (or the next one) returns Failed ("abandoned"); any thread.
     void abandon();
     /// Say goodbye (after the end).
@@ -43,6 +52,8 @@ public:
 private:
     comms::LinkClient m_link;
     std::atomic<bool> m_abandoned{false};
+    std::mutex m_updatesMutex;
+    std::vector<comms::RthsUpdateAppliedMsg> m_updates;
 };
 
 } // namespace hsmu::gui

@@ -37,7 +37,35 @@ nlohmann::json summaryOf(const comms::RthsEndMsg& end, const rths::RthsSettings&
     return j;
 }
 
+/// The controller's decision on an update as the local run's event (its sentence, its summary).
+UpdateEvent eventOf(const comms::RthsUpdateAppliedMsg& u) {
+    UpdateEvent e{int(u.tick), 0.0, "damper twin", ParameterLayout(u.names), u.values, u.applied, u.message};
+    e.decision = u.applied ? UpdateDecision::Applied : UpdateDecision::Refused;
+    return e;
+}
+
 } // namespace
+
+bool parseTimedUpdate(const QString& text, RthsTimedUpdate& out) {
+    const qsizetype colon = text.indexOf(QLatin1Char(':'));
+    if (colon <= 0)
+        return false;
+    bool ok = false;
+    out = {};
+    out.time = text.left(colon).toDouble(&ok);
+    if (!ok || !(out.time >= 0.0))
+        return false;
+    for (const QString& pair : text.mid(colon + 1).split(QLatin1Char(','))) {
+        const qsizetype eq = pair.indexOf(QLatin1Char('='));
+        if (eq <= 0)
+            return false;
+        out.names.push_back(pair.left(eq).trimmed().toStdString());
+        out.values.push_back(pair.mid(eq + 1).toDouble(&ok));
+        if (!ok)
+            return false;
+    }
+    return !out.names.empty();
+}
 
 int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
                         const rths::Preflight& pre, const RthsRemoteOptions& o) {
@@ -56,8 +84,21 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
     long frames = 0;
     double lastPrinted = -1.0;
     char row[512];
+    std::size_t nextUpdate = 0;
+    nlohmann::json updates = nlohmann::json::array();
+    const auto reportUpdates = [&] {
+        for (const comms::RthsUpdateAppliedMsg& u : link.takeUpdates()) {
+            const UpdateEvent e = eventOf(u);
+            (u.applied ? out : ConsoleStreams::err()) << QString::fromStdString(rths::describeTwinUpdate(e)) << Qt::endl;
+            nlohmann::json values = nlohmann::json::object();
+            for (std::size_t i = 0; i < u.names.size() && i < u.values.size(); ++i)
+                values[u.names[i]] = u.values[i];
+            updates.push_back({{"tick", u.tick}, {"applied", u.applied}, {"message", u.message}, {"parameters", values}});
+        }
+    };
     for (;;) {
         const RthsLink::Event ev = link.next();
+        reportUpdates();
         if (ev.kind == RthsLink::Event::Kind::Failed && ev.lost)
             return fail(RthsCommand::tr("the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy); %2 telemetry frames in %3/telemetry.csv")
                             .arg(QString::fromStdString(ev.error)).arg(frames).arg(o.out));
@@ -72,6 +113,8 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
                           t->worstLateness * 1e6, static_cast<unsigned long long>(t->dropped),
                           t->holding ? 1 : 0);
             csv << row;
+            for (; nextUpdate < o.updates.size() && t->time >= o.updates[nextUpdate].time; ++nextUpdate)
+                link.update(o.updates[nextUpdate].names, o.updates[nextUpdate].values);
             if (t->time >= lastPrinted + 1.0) {
                 lastPrinted = t->time;
                 out << RthsCommand::tr("t = %1 s: desired %2 mm, measured %3 mm, %4 deadline misses")
@@ -80,6 +123,7 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
             }
         } else {
             const comms::RthsEndMsg* end = &ev.end;
+            reportUpdates();
             link.bye("run ended");
             csv.close();
             nlohmann::json summary = summaryOf(*end, s, pre);
@@ -87,6 +131,8 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
             summary["pace"] = "controller";
             summary["controller"] = o.host.toStdString() + ":" + std::to_string(o.port);
             summary["telemetry"] = {{"received", frames}, {"sent", end->telemetrySent}, {"dropped", end->telemetryDropped}};
+            if (!updates.empty())
+                summary["twin"] = {{"updates", updates}};
             std::ofstream(dir + "/summary.json") << summary.dump(2) << '\n';
             QString table;
             for (int i = 0; i < 9; ++i)

@@ -21,10 +21,14 @@
 // address, the test cannot start, e.g. unstable or no controller listening); 2 the test went
 // to a safe hold (limit or fault, retries exhausted): the reason is printed and the outputs
 // hold every committed step.
+// The run itself is RunFlow's (Qt-free, shared with the Qt-free `hsmu`, gui/cli/FastRun.h);
+// this adds Qt's option parser (--help, the errors), the embedded presets and --plots.
 // Thread rules: main thread; --plots needs a QApplication (see Launcher).
 
 #include <QCoreApplication>
 #include <QStringList>
+
+#include <string>
 
 namespace hsmu::gui {
 
@@ -33,6 +37,8 @@ class RunCommand {
 public:
     /// arguments: the process arguments (program, "run", ...). Returns the exit code.
     static int exec(const QStringList& arguments);
+    /// QCoreApplication::translate as CliText's translator (gui/cli/CliText.h).
+    static std::string translated(const char* context, const char* source);
 };
 
 } // namespace hsmu::gui

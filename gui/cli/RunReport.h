@@ -4,12 +4,11 @@
 // model updating the final identified parameters ± one standard deviation (the law's own
 // units: normalized for Bouc-Wen), the number of applied updates and pending proposals, and
 // every alarm.
+// Without Qt (the Qt-free `hsmu run`, gui/cli/FastRun.h); its strings are translated through
+// CliText's translator in the context "RunReport" (translations/).
 // Thread rules: main thread, after the test stopped stepping.
 
-#include <QCoreApplication>
-#include <QString>
-
-class QTextStream;
+#include <string>
 
 namespace hsmu {
 class HybridTest;
@@ -20,10 +19,10 @@ struct RunInfo;
 namespace hsmu::gui {
 
 class RunReport {
-    Q_DECLARE_TR_FUNCTIONS(RunReport)
 public:
-    static void print(QTextStream& out, const HybridTest& test, const RunStatistics& stats,
-                      const RunInfo& info, const QString& outDir);
+    /// The summary's text (lines ending in '\n'); outDir as the user gave it (QDir's path()).
+    static std::string text(const HybridTest& test, const RunStatistics& stats,
+                            const RunInfo& info, const std::string& outDir);
 };
 
 } // namespace hsmu::gui

@@ -19,7 +19,7 @@ std::vector<Message> samples() {
     const double inf = std::numeric_limits<double>::infinity();
     return {HelloMsg{1, 0x0123456789abcdefull, "s3cret", "Element 1"},
             HelloAckMsg{1, 42, -0.0125, true, "Element 1", "specimen 'Element 1' (boucWen)",
-                        "interlock: force"},
+                        "interlock: force", {}},
             ConfigureMsg{0.01, 0.15, inf, 0.01},
             TargetMsg{7, 1.0e-3},
             MeasurementMsg{7, 1.0e-3, -12.5, 1.0e-3, 3, kFlagFractured | kFlagReplayed},
@@ -35,7 +35,11 @@ std::vector<Message> samples() {
             EmergencyHoldMsg{"operator: emergency stop"},
             TelemetryMsg{1024, 1.0, 1e-3, 1.1e-3, 0.9e-3, -250.0, 3, 42e-6, 1, true,
                          "console hold at tick 1024"},
-            rthsEnd()};
+            rthsEnd(),
+            TargetsMsg{8, {{kChannelDisplacement, 0.0125}, {kChannelForce, -1500.0}}},
+            MeasurementsMsg{8, kFlagReplayed, {{0.0125, 310.5, 0.0125}, {-2.5e-4, -1500.0, -1500.0}}},
+            RthsUpdateMsg{{"alpha", "c0"}, {80.0, 0.03}},
+            RthsUpdateAppliedMsg{4097, true, "operator", {"alpha", "c0"}, {80.0, 0.03}}};
 }
 
 RthsEndMsg rthsEnd() {
@@ -83,7 +87,7 @@ class TestFrameCodec : public QObject {
 private slots:
     void roundTripEveryMessage() {
         const auto msgs = samples();
-        QCOMPARE(msgs.size(), std::size_t(17)); // one of each type
+        QCOMPARE(msgs.size(), std::size_t(21)); // one of each type
         std::vector<std::uint8_t> stream;
         for (std::size_t i = 0; i < msgs.size(); ++i)
             encodeFrame(msgs[i], std::uint32_t(i + 1), stream);
@@ -116,6 +120,65 @@ private slots:
         const auto& end = std::get<RthsEndMsg>(frames[16].message);
         QCOMPARE(end.j[8], 4.5 + 1e-13);
         QCOMPARE(std::get<TelemetryMsg>(frames[15].message).force, -250.0);
+        // rths-update: u16 count + (str, f64) each; rths-update-applied 13 + the same.
+        QCOMPARE(payload(RthsUpdateMsg{{"alpha"}, {1.0}}), std::size_t(2 + 2 + 5 + 8));
+        QCOMPARE(payload(RthsUpdateAppliedMsg{}), std::size_t(13));
+        const auto& u = std::get<RthsUpdateMsg>(frames[19].message);
+        QVERIFY(u.names == (std::vector<std::string>{"alpha", "c0"}));
+        QCOMPARE(u.values[1], 0.03);
+        QCOMPARE(std::get<RthsUpdateAppliedMsg>(frames[20].message).tick, std::uint64_t(4097));
+        // N channels (docs/protocol.md, "Several actuator channels"): targets 10 + 9 N bytes,
+        // measurements 14 + 24 N, the hello-ack's tail 2 + 8 N (none for one channel).
+        QCOMPARE(payload(msgs[17]), std::size_t(10 + 9 * 2));
+        QCOMPARE(payload(msgs[18]), std::size_t(14 + 24 * 2));
+        const auto& ms = std::get<MeasurementsMsg>(frames[18].message);
+        QCOMPARE(ms.channels[1].force, -1500.0);
+        QCOMPARE(std::get<TargetsMsg>(frames[17].message).channels[1].mode, kChannelForce);
+        HelloAckMsg one;
+        HelloAckMsg three;
+        three.channelCommands = {0.01, -0.02, -1500.0};
+        QCOMPARE(payload(three), payload(one) + 2 + 8 * 3);
+        std::vector<std::uint8_t> b;
+        encodeFrame(three, 1, b);
+        FrameDecoder d2;
+        std::vector<Frame> f;
+        QCOMPARE(decodeAll(d2, b, &f), FrameDecoder::Status::NeedMore);
+        QCOMPARE(std::get<HelloAckMsg>(f.at(0).message).channelCommands,
+                 three.channelCommands);
+    }
+
+    // A channel count of 0, 1 or past kMaxChannels, a mode byte other than 0/1, and a hello-ack
+    // tail that is cut short are refused as malformed.
+    void badChannelFields() {
+        const auto refused = [](const Message& m, std::size_t at, std::uint8_t value) {
+            std::vector<std::uint8_t> b;
+            encodeFrame(m, 1, b);
+            b[kHeaderSize + at] = value;
+            FrameDecoder d;
+            return decodeAll(d, b) == FrameDecoder::Status::Error &&
+                   d.error().code == ErrorCode::Malformed;
+        };
+        const TargetsMsg t{1, {{kChannelDisplacement, 0.1}, {kChannelForce, 2.0}}};
+        QVERIFY(refused(t, 8, 1));  // N = 1 (the length no longer matches either)
+        QVERIFY(refused(t, 10, 2)); // first channel's mode byte
+        const MeasurementsMsg m{1, 0, {{0.1, 1.0, 0.1}, {0.2, 2.0, 0.2}}};
+        QVERIFY(refused(m, 12, 0)); // N = 0
+        std::vector<std::uint8_t> b; // 17 channels: past kMaxChannels, refused at the header
+        TargetsMsg big{1, std::vector<ChannelTarget>(kMaxChannels + 1)};
+        encodeFrame(big, 1, b);
+        FrameDecoder d;
+        QCOMPARE(decodeAll(d, b), FrameDecoder::Status::Error);
+        QVERIFY(d.error().reason.find("outside") != std::string::npos);
+        HelloAckMsg a;
+        a.channelCommands = {1.0, 2.0};
+        b.clear();
+        encodeFrame(a, 1, b);
+        b.resize(b.size() - 8); // the second command cut off (length fixed below)
+        const auto len = static_cast<std::uint32_t>(b.size() - kHeaderSize);
+        for (int i = 0; i < 4; ++i)
+            b[12 + i] = static_cast<std::uint8_t>(len >> (8 * i));
+        FrameDecoder d2;
+        QCOMPARE(decodeAll(d2, b), FrameDecoder::Status::Error);
     }
 
     void byteByByteChunking() {
@@ -195,7 +258,7 @@ private slots:
     }
 
     void unknownType() {
-        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(18), std::uint16_t(0xFFFF)}) {
+        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(22), std::uint16_t(0xFFFF)}) {
             FrameDecoder d;
             QCOMPARE(decodeAll(d, header(kFrameMagic, 1, t, 1, 0)), FrameDecoder::Status::Error);
             QCOMPARE(d.error().code, ErrorCode::Malformed);
@@ -229,6 +292,31 @@ private slots:
                        {99, 0, 0, 0, 0, 0, 0, 0, 0, 0}, b);
         FrameDecoder d4;
         QCOMPARE(decodeAll(d4, b), FrameDecoder::Status::Error);
+    }
+
+    void malformedUpdatesAreRefused() {
+        // rths-update without a parameter, with more than kMaxUpdateParameters, with a name
+        // running past the payload, or with trailing bytes: malformed, nothing decoded.
+        const auto refused = [](std::vector<std::uint8_t> payload, const char* what) {
+            std::vector<std::uint8_t> b;
+            encodeRawFrame({kFrameMagic, 1, std::uint16_t(MessageType::RthsUpdate), 1,
+                            std::uint32_t(payload.size())}, payload, b);
+            FrameDecoder d;
+            QVERIFY2(decodeAll(d, b) == FrameDecoder::Status::Error, what);
+            QCOMPARE(d.error().code, ErrorCode::Malformed);
+        };
+        std::vector<std::uint8_t> none(12, 0); // count 0, padded to the minimum length
+        refused(none, "count 0");
+        std::vector<std::uint8_t> many(12, 0);
+        many[0] = 33;
+        refused(many, "33 parameters");
+        std::vector<std::uint8_t> longName = {1, 0, 200, 0, 'a', 0, 0, 0, 0, 0, 0, 0};
+        refused(longName, "a name past the payload");
+        std::vector<std::uint8_t> b;
+        encodeFrame(RthsUpdateMsg{{"a"}, {1.0}}, 1, b);
+        std::vector<std::uint8_t> trailing(b.begin() + 16, b.end());
+        trailing.push_back(0);
+        refused(trailing, "trailing bytes");
     }
 
     void sequenceGapIsAViolation() {

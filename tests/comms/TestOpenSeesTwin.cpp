@@ -6,6 +6,8 @@
 //  - the paper's frame, condition 3 (resources/presets/paper-condition-3-opensees.json), Element
 //    2 in OpenSees and updated every step by the UKF, equals the built-in run to 1e-6 of Element
 //    2's peak force (the updates matter: without them the force differs by far more);
+//  - a twin whose model has offsets (OffsetLaw.h): OpenSees runs the law, the console adds the
+//    offsets around its force; the frame equals the built-in run with the same offsets;
 //  - the preset run as the docs say (the helper on its default port, `hsmu run`);
 //  - no helper listening: the test holds with a message naming the site.
 #include "comms/link/ControlFactory.h"
@@ -214,6 +216,51 @@ private slots:
               f.size(), updates, peak, diff, diff / peak, frozenDiff / peak);
         QVERIFY(updates > 100);
         QVERIFY(frozenDiff > 1e-3 * peak); // the updates change Element 2's force
+        QVERIFY2(diff <= 1e-6 * peak, qPrintable(QString::number(diff / peak)));
+    }
+
+    // A twin configured with offsets is not sent to OpenSees without them: the site wraps the
+    // OpenSees law in the offsets, F = F_OpenSees(u - u0) + F0, and the frame equals the
+    // built-in run with the same offsets (in-process OffsetLaw) to 1e-6 of Element 2's peak.
+    void offsetsAroundOpenSeesEqualTheBuiltIn()
+    {
+        const std::string preset = HSMU_SOURCE_DIR "/resources/presets/paper-condition-3-opensees.json";
+        TestConfig twinCfg = loadConfigFile(preset);
+        twinCfg.analysis.duration = 6.0;
+        std::size_t e2 = 0;
+        for (std::size_t i = 0; i < twinCfg.elements.size(); ++i)
+            if (twinCfg.elements[i].name == "Element 2") {
+                e2 = i;
+                twinCfg.elements[i].material.params["deformationOffset"] = 0.004; // rad
+                twinCfg.elements[i].material.params["forceOffset"] = 2.5;         // kN m
+            }
+        TestConfig builtIn = twinCfg;
+        builtIn.elements[e2].numericalSite.clear();
+        TestConfig noOffsets = builtIn;
+        noOffsets.elements[e2].material.params.erase("deformationOffset");
+        noOffsets.elements[e2].material.params.erase("forceOffset");
+        const quint16 port = freePort();
+        twinCfg.elements[e2].numericalSite = "opensees://127.0.0.1:" + std::to_string(port);
+
+        const Run reference = runTest(builtIn, {});
+        QCOMPARE(reference.state, HybridTest::State::Finished);
+        const Run plain = runTest(noOffsets, {});
+        QCOMPARE(plain.state, HybridTest::State::Finished);
+        QProcess helper;
+        QVERIFY(startHelper(helper, port));
+        const Run twin = runTest(twinCfg, comms::makeControlFactory(comms::LinkAddress{}));
+        endHelper(helper);
+        QVERIFY2(twin.state == HybridTest::State::Finished, twin.error.c_str());
+        QCOMPARE(twin.records.size(), reference.records.size());
+        const std::vector<double> f = elementForce(twin, e2);
+        const std::vector<double> fRef = elementForce(reference, e2);
+        const double peak = peakAbs(fRef);
+        const double diff = maxDiff(f, fRef);
+        const double withoutOffsets = maxDiff(elementForce(plain, e2), fRef);
+        qInfo("offsets: Element 2 peak %.4g kN m, max |OpenSees + offsets - built-in| %.3g "
+              "(%.3g of the peak); the run without offsets differs by %.3g",
+              peak, diff, diff / peak, withoutOffsets / peak);
+        QVERIFY(withoutOffsets > 0.05 * peak); // the offsets matter
         QVERIFY2(diff <= 1e-6 * peak, qPrintable(QString::number(diff / peak)));
     }
 

@@ -6,8 +6,16 @@
 // loop; a stroke limit the run exceeds holds it with the channel named in the panel and a
 // critical alarm. As the monitor of a real `hsmu-controller --rths` (RthsLink, the protocol of
 // `hsmu rths --controller`): every telemetry frame reaches the plot and the end's J1 equals the
-// local runRths' bit for bit; Hold holds the controller's loop.
+// local runRths' bit for bit; Hold holds the controller's loop; the view says where the
+// controller records (or that it does not).
+// The record (docs/rths.md, "The console's RTHS view"): a run from the view writes every tick to
+// record.h5 in its record folder, equal to `hsmu rths` of the same configuration tick for tick
+// (bit for bit: one loop, one RthsRecordFeed, one writer), readable by `hsmu export`; the next
+// run to record-2.h5 (nothing overwritten); a held run keeps every tick before the hold (equal
+// to the local runRths' ticks) with the hold as its last row's critical alarm.
 #include "../comms/ControllerProcess.h"
+#include "CliTestSupport.h"
+#include "core/record/RecordReader.h"
 #include "core/config/RthsConfig.h"
 #include "core/rths/RthsBenchmark.h"
 #include "gui/app/AlarmList.h"
@@ -72,6 +80,26 @@ int rows(const AlarmList& list, AlarmKind kind, AlarmSeverity severity)
     return n;
 }
 
+/// Every recorded column of rows 0 .. n-1 of a and b equal, bit for bit ("" when they are).
+QString sameRows(const RecordData& a, const RecordData& b, int n)
+{
+    for (int k = 0; k < n; ++k) {
+        const double x[] = {a.time(k), a.groundAcceleration(k), a.commanded(k, 0), a.actuatorCommanded(k, 0),
+                            a.deformation(k, 0), a.force(k, 0), a.actuatorMeasured(k, 0)};
+        const double y[] = {b.time(k), b.groundAcceleration(k), b.commanded(k, 0), b.actuatorCommanded(k, 0),
+                            b.deformation(k, 0), b.force(k, 0), b.actuatorMeasured(k, 0)};
+        for (int c = 0; c < 7; ++c)
+            if (x[c] != y[c])
+                return QStringLiteral("tick %1 column %2: %3 vs %4").arg(k).arg(c).arg(x[c], 0, 'g', 17).arg(y[c], 0, 'g', 17);
+        for (int c = 0; c < a.u.cols(); ++c)
+            if (a.u(k, c) != b.u(k, c))
+                return QStringLiteral("tick %1 u %2").arg(k).arg(c);
+        if (a.steps[std::size_t(k)] != b.steps[std::size_t(k)])
+            return QStringLiteral("tick %1 step").arg(k);
+    }
+    return {};
+}
+
 } // namespace
 
 class TestRthsPanel : public QObject {
@@ -117,9 +145,14 @@ private slots:
     {
         QTemporaryDir dir;
         const RthsConfig cfg = sineConfig(dir.path(), 60.0);
+        rths::RthsSettings s = cfg.settings;
+        rths::fitToNominalLoop(s);
+        const rths::RthsRun whole = rths::runRths(cfg.partition(), motionOf(cfg), s); // the 60 s, unheld
         for (const bool emergency : {false, true}) {
             AlarmList alarms;
             RthsPanel panel(&alarms);
+            panel.setRecordFolder(dir.path() + (emergency ? QStringLiteral("/emergency") : QStringLiteral("/hold")));
+            QSignalSpy criteria(panel.session(), &RthsSession::finished);
             QSignalSpy batches(panel.session(), &RthsSession::samples);
             QSignalSpy ended(&panel, &RthsPanel::runFinished);
             QVERIFY(panel.startRun(cfg, motionOf(cfg), RthsSession::Pace::Fast, 0.0));
@@ -137,7 +170,80 @@ private slots:
             QCOMPARE(rows(alarms, AlarmKind::OperatorHold, emergency ? AlarmSeverity::Critical : AlarmSeverity::Warning), 1);
             QVERIFY(!panel.running());
             QVERIFY(!button->isEnabled());
+            // The record keeps every tick before the hold, the hold as the last row's alarm.
+            const long ticks = criteria.at(0).at(2).value<long>();
+            QVERIFY2(ticks > 0 && ticks < long(whole.time.size()), qPrintable(QString::number(ticks)));
+            const RecordReader reader(panel.session()->recordPath().toStdString());
+            const RecordData& d = reader.data();
+            QCOMPARE(long(d.rows()), ticks);
+            QVERIFY(panel.recordText().contains(QStringLiteral("Recorded %1 ticks").arg(ticks)));
+            for (int k = 0; k < d.rows(); ++k) {
+                const auto i = std::size_t(k);
+                QVERIFY2(d.time(k) == whole.time[i] && d.commanded(k, 0) == whole.desired[i] &&
+                             d.actuatorCommanded(k, 0) == whole.command[i] && d.deformation(k, 0) == whole.measured[i] &&
+                             d.force(k, 0) == whole.force[i] && d.u(k, 0) == whole.hybrid(k, 0),
+                         qPrintable(QStringLiteral("tick %1").arg(k)));
+            }
+            QCOMPARE(d.alarms.size(), std::size_t(1));
+            QCOMPARE(d.alarms.front().kind, AlarmKind::OperatorHold);
+            QCOMPARE(d.alarms.front().severity, AlarmSeverity::Critical);
+            QCOMPARE(d.alarms.front().step, d.rows() - 1);
+            QCOMPARE(QString::fromStdString(d.alarms.front().message), hold);
         }
+    }
+
+    void aRunFromTheViewRecordsWhatHsmuRthsRecords()
+    {
+        QTemporaryDir dir;
+        const RthsConfig cfg = sineConfig(dir.path(), 3.0);
+        const QString folder = dir.path() + QStringLiteral("/console/rths");
+        AlarmList alarms;
+        RthsPanel panel(&alarms);
+        panel.setRecordFolder(folder);
+        QSignalSpy ended(&panel, &RthsPanel::runFinished);
+        QVERIFY(panel.startRun(cfg, motionOf(cfg), RthsSession::Pace::Fast, 0.0));
+        const QString first = panel.session()->recordPath();
+        QCOMPARE(first, folder + QStringLiteral("/record.h5"));
+        QVERIFY(panel.recordText().contains(first));
+        QVERIFY(ended.wait(60000));
+        QCOMPARE(ended.at(0).at(0).toString(), QString());
+        QVERIFY2(panel.recordText().contains(QStringLiteral("Recorded 3073 ticks to ") + first), qPrintable(panel.recordText()));
+
+        const clitest::Result r = clitest::hsmu({QStringLiteral("rths"), dir.path() + QStringLiteral("/rths.json"),
+                                                 QStringLiteral("--out"), dir.path() + QStringLiteral("/cli")});
+        QVERIFY2(r.exitCode == 0, qPrintable(clitest::report(r)));
+        {   // one reader of a file at a time in a process: HDF5 refuses a second open
+            const RecordReader console(first.toStdString());
+            const RecordReader cli((dir.path() + QStringLiteral("/cli/record.h5")).toStdString());
+            QCOMPARE(console.rows(), 3073);
+            QCOMPARE(cli.rows(), 3073);
+            QCOMPARE(console.data().meta.configuration, cli.data().meta.configuration);
+            QCOMPARE(console.data().meta.dt, cli.data().meta.dt);
+            QCOMPARE(console.data().layout.dofNames, cli.data().layout.dofNames);
+            const QString diff = sameRows(console.data(), cli.data(), 3073);
+            QVERIFY2(diff.isEmpty(), qPrintable(diff));
+            QVERIFY(console.data().alarms.empty());
+        }
+        // `hsmu export` reads it.
+        const clitest::Result e = clitest::hsmu({QStringLiteral("export"), first, QStringLiteral("--csv"),
+                                                 dir.path() + QStringLiteral("/csv")});
+        QVERIFY2(e.exitCode == 0, qPrintable(clitest::report(e)));
+        QCOMPARE(clitest::readLines(dir.path() + QStringLiteral("/csv/elements.csv")).size(), 3074); // header + rows
+
+        // The next run: record-2.h5, the first one untouched.
+        QVERIFY(panel.startRun(cfg, motionOf(cfg), RthsSession::Pace::Fast, 1.0));
+        QCOMPARE(panel.session()->recordPath(), folder + QStringLiteral("/record-2.h5"));
+        QVERIFY(ended.wait(60000));
+        QCOMPARE(RecordReader(first.toStdString()).rows(), 3073);
+        QCOMPARE(RecordReader((folder + QStringLiteral("/record-2.h5")).toStdString()).rows(), 1025);
+
+        // No folder: not recorded, and said so.
+        panel.setRecordFolder(QString());
+        QVERIFY(panel.startRun(cfg, motionOf(cfg), RthsSession::Pace::Fast, 0.5));
+        QVERIFY(panel.session()->recordPath().isEmpty());
+        QVERIFY(panel.recordText().contains(QStringLiteral("Not recorded")));
+        QVERIFY(ended.wait(60000));
+        QVERIFY(!QFile::exists(folder + QStringLiteral("/record-3.h5")));
     }
 
     void aLimitHoldNamesTheChannelValueAndTick()
@@ -147,11 +253,16 @@ private slots:
         const RthsConfig cfg = sineConfig(dir.path(), 4.0, QStringLiteral(R"("limits": {"stroke": 1e-4},)"));
         AlarmList alarms;
         RthsPanel panel(&alarms);
+        panel.setRecordFolder(dir.path());
         QSignalSpy ended(&panel, &RthsPanel::runFinished);
         QVERIFY(panel.startRun(cfg, motionOf(cfg), RthsSession::Pace::Fast, 0.0));
         QVERIFY(ended.wait(60000));
         const QString hold = ended.at(0).at(0).toString();
         QVERIFY2(hold.contains(QStringLiteral("stroke")) && hold.contains(QStringLiteral("tick")), qPrintable(hold));
+        const RecordReader reader((dir.path() + QStringLiteral("/record.h5")).toStdString());
+        QCOMPARE(reader.data().alarms.size(), std::size_t(1));
+        QCOMPARE(reader.data().alarms.front().kind, AlarmKind::LimitExceeded);
+        QCOMPARE(reader.data().alarms.front().step, reader.rows() - 1);
         QVERIFY(panel.statusText().contains(hold));
         QCOMPARE(rows(alarms, AlarmKind::LimitExceeded, AlarmSeverity::Critical), 1);
     }
@@ -161,10 +272,13 @@ private slots:
         QTemporaryDir dir;
         const RthsConfig cfg = sineConfig(dir.path(), 3.0);
         const QString path = dir.path() + QStringLiteral("/rths.json");
-        ControllerProcess ctl({QStringLiteral("--rths"), path, QStringLiteral("--pace"), QStringLiteral("fast")});
+        const QString controllerRecords = dir.path() + QStringLiteral("/on-the-controller");
+        ControllerProcess ctl({QStringLiteral("--rths"), path, QStringLiteral("--pace"), QStringLiteral("fast"),
+                               QStringLiteral("--record"), controllerRecords});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         AlarmList alarms;
         RthsPanel panel(&alarms);
+        panel.setRecordFolder(dir.path() + QStringLiteral("/console")); // not used for a controller's run
         QSignalSpy ended(&panel, &RthsPanel::runFinished);
         QSignalSpy criteria(panel.session(), &RthsSession::finished);
         QVERIFY(panel.startRemoteRun(cfg, QStringLiteral("127.0.0.1"), ctl.port(), QString(), 0.0));
@@ -179,6 +293,10 @@ private slots:
         rths::fitToNominalLoop(s);
         const rths::RthsRun local = rths::runRths(cfg.partition(), motionOf(cfg), s);
         QVERIFY(criteria.at(0).at(1).value<rths::BenchmarkCriteria>().j[0] == local.criteria.j[0]);
+        // Where the controller records, from its hello-ack; the console writes nothing.
+        QVERIFY2(panel.recordText().contains(QStringLiteral("recording each run in ") + controllerRecords),
+                 qPrintable(panel.recordText()));
+        QVERIFY(!QFile::exists(dir.path() + QStringLiteral("/console")));
     }
 
     void holdsTheControllersLoop()
@@ -194,6 +312,7 @@ private slots:
         QSignalSpy ended(&panel, &RthsPanel::runFinished);
         QVERIFY(panel.startRemoteRun(cfg, QStringLiteral("127.0.0.1"), ctl.port(), QString(), 0.0));
         QVERIFY(batches.wait(60000));
+        QVERIFY2(panel.recordText().contains(QStringLiteral("no record on the controller")), qPrintable(panel.recordText()));
         QTest::mouseClick(panel.findChild<QPushButton*>(QStringLiteral("rthsHold")), Qt::LeftButton);
         QVERIFY(ended.wait(60000));
         const QString hold = ended.at(0).at(0).toString();

@@ -5,7 +5,10 @@
 // one row every 8th tick (the default at 1024 Hz) with the local steps.csv's measured
 // displacement (to steps.csv's 9 significant digits). SIGINT holds the controller's loop
 // (real-time pace, a 30 s record, sent after the first progress line): exit 2, the hold named
-// in the summary.
+// in the summary. `--update T:NAME=VALUE,...` sends the damper twin's new values when the
+// telemetry reaches T: the one inside the box is applied before a tick the summary names, the
+// one outside it is refused with the reason, and the run goes to its end; without
+// --controller the option is refused.
 #include "CliTestSupport.h"
 #include "../comms/ControllerProcess.h"
 
@@ -17,6 +20,22 @@
 #include <cmath>
 
 namespace {
+
+/// The configuration with an MR damper in the specimen and its twin on floor 2 (N, m).
+QString writeDamperConfig(const QString& dir, const QString& motion) {
+    const QString path = dir + QStringLiteral("/damper.json");
+    QFile f(path);
+    f.open(QIODevice::WriteOnly | QIODevice::Text);
+    f.write(QStringLiteral(R"({"name": "damper on case 1", "rths": {"rate": 1024,
+      "structure": {"benchmarkCase": 1, "specimenDof": 0},
+      "compensation": {"type": "none", "lead": {"enabled": true}},
+      "holdAfterMisses": 0,
+      "damper": {"specimen": {"alpha": 72.1, "c0": 0.0236, "c1": 3.29, "beta": 2.41, "gamma": 8.96,
+                              "n": 0.521, "uRef": 0.0054, "fRef": 320},
+                 "twinDof": 1, "bounds": {"alpha": [0, 500]}},
+      "groundMotion": {"file": "%1", "scale": 1.0, "unit": "m/s^2"}}})").arg(motion).toUtf8());
+    return path;
+}
 
 QString writeConfig(const QString& dir, double seconds) {
     const QString motion = dir + QStringLiteral("/sine.txt");
@@ -79,6 +98,35 @@ private slots:
             const double measured = t[4].toDouble(), csv = s[3].toDouble();
             QVERIFY2(std::abs(measured - csv) <= 1e-8 * std::abs(measured) + 1e-300, qPrintable(tel[i] + QStringLiteral(" / ") + steps[1 + t[0].toInt()]));
         }
+    }
+
+    void updatesReachTheControllersLoop() {
+        QTemporaryDir dir;
+        writeConfig(dir.path(), 3.0); // its sine.txt
+        const QString cfg = writeDamperConfig(dir.path(), dir.path() + QStringLiteral("/sine.txt"));
+        const QString out = dir.path() + QStringLiteral("/out");
+        const auto refused = clitest::hsmu({QStringLiteral("rths"), cfg, QStringLiteral("--out"), out,
+                                            QStringLiteral("--update"), QStringLiteral("1:alpha=80")});
+        QCOMPARE(refused.exitCode, 1);
+        QVERIFY2(refused.err.contains(QStringLiteral("--update needs --controller")), qPrintable(clitest::report(refused)));
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("realtime")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        const auto r = clitest::hsmu({QStringLiteral("rths"), cfg, QStringLiteral("--controller"),
+                                      QStringLiteral("tcp://127.0.0.1:%1").arg(ctl.port()), QStringLiteral("--out"), out,
+                                      QStringLiteral("--update"), QStringLiteral("1:alpha=80,c0=0.03"),
+                                      QStringLiteral("--update"), QStringLiteral("1.5:alpha=900")});
+        QVERIFY2(r.exitCode == 0, qPrintable(clitest::report(r) + ctl.log()));
+        QVERIFY2(r.out.contains(QStringLiteral("damper twin updated before tick ")), qPrintable(clitest::report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("alpha = 900 is outside the parameter box [0, 500]")), qPrintable(clitest::report(r)));
+        const QJsonObject summary = clitest::readJson(out + QStringLiteral("/summary.json"));
+        QCOMPARE(summary.value(QStringLiteral("ticks")).toInt(), 3073);
+        const QJsonArray updates = summary.value(QStringLiteral("twin")).toObject().value(QStringLiteral("updates")).toArray();
+        QCOMPARE(updates.size(), 2);
+        const QJsonObject applied = updates[0].toObject();
+        QVERIFY(applied.value(QStringLiteral("applied")).toBool());
+        QVERIFY(applied.value(QStringLiteral("tick")).toInt() >= 1024); // sent at t >= 1 s
+        QCOMPARE(applied.value(QStringLiteral("parameters")).toObject().value(QStringLiteral("alpha")).toDouble(), 80.0);
+        QVERIFY(!updates[1].toObject().value(QStringLiteral("applied")).toBool());
     }
 
     void sigintHoldsTheControllersLoop() {

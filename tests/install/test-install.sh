@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # test_install: `cmake --install` into a fresh prefix, then the installed programs run from
-# there: `hsmu run paper-condition-3`, `hsmu-controller --config paper-condition-3` (a preset
+# there: `hsmu run paper-condition-3` (in hsmu-cli) and of its file (in hsmu itself, no Qt
+# loaded, the same steps.csv), `hsmu-controller --config paper-condition-3` (a preset
 # name, found under PREFIX/share/hsmu/presets). With dpkg-deb, the .deb made by
 # `cpack -G DEB` is unpacked into a fresh root and its hsmu runs the same test. When the build
 # has the Python module (python/), `import hsmu` works from both in a fresh environment
@@ -16,7 +17,7 @@ export HOME="$work/home" XDG_CONFIG_HOME="$work/home/.config" XDG_DATA_HOME="$wo
 export QT_QPA_PLATFORM=offscreen
 
 check_tree() { # PREFIX
-    for f in bin/hsmu bin/hsmu-console bin/hsmu-controller share/hsmu/presets/paper-condition-3.json \
+    for f in bin/hsmu bin/hsmu-cli bin/hsmu-console bin/hsmu-controller share/hsmu/presets/paper-condition-3.json \
              share/hsmu/translations/hsmu_es.qm share/hsmu/translations/hsmu_zh_CN.qm \
              share/applications/hsmu.desktop share/icons/hicolor/scalable/apps/hsmu.svg \
              share/doc/hsmu/console.md; do
@@ -28,6 +29,15 @@ run_test() { # PREFIX
     (cd "$work" && "$1/bin/hsmu" run paper-condition-3 --out "$work/out-$(basename "$(dirname "$1")")" > "$work/run.log" 2>&1) ||
         { cat "$work/run.log"; echo "FAIL: $1/bin/hsmu run paper-condition-3"; exit 1; }
     echo "ok: $1/bin/hsmu run paper-condition-3: $(tail -1 "$work/run.log")"
+    # a file runs in hsmu itself, without Qt (gui/cli/FastRun.h); the preset above in hsmu-cli
+    local file="$1/share/hsmu/presets/paper-condition-3.json"
+    (cd "$work" && LD_DEBUG=files "$1/bin/hsmu" run "$file" --out "$work/file-out" > "$work/run.log" 2>&1) ||
+        { cat "$work/run.log"; echo "FAIL: $1/bin/hsmu run $file"; exit 1; }
+    if grep -q libQt6 "$work/run.log"; then echo "FAIL: $1/bin/hsmu run FILE loaded Qt"; exit 1; fi
+    cmp "$work/file-out/steps.csv" "$work/out-$(basename "$(dirname "$1")")/steps.csv" ||
+        { echo "FAIL: $1/bin/hsmu run FILE and PRESET wrote different steps.csv"; exit 1; }
+    rm -rf "$work/file-out"
+    echo "ok: $1/bin/hsmu run $file without Qt, the same steps.csv"
 }
 
 python_module=$(ls "$build"/python/hsmu.*.so 2> /dev/null | head -1 || true)

@@ -197,3 +197,44 @@ def test_identify_record_equals_hsmu_replay_identify(cli, tmp_path):
     assert r["calibration"]["nrmse"] == pytest.approx(summary["calibration"]["nrmse"], rel=1e-12)
     with pytest.raises(ValueError):
         hsmu.identify_record(record, specimen="no such element")
+
+
+def synthetic_with_offsets():
+    """The specimen of test_identification_calibrationoffsets: a Bouc-Wen law (m, kN) along 6
+    growing cycles, measured with a deformation offset of 3 mm and a force offset of 5 % of its
+    peak force (the plain law's force along the true deformation, plus the offset)."""
+    k = np.arange(1, 6 * 400 + 1)
+    c = k / 400.0
+    u_true = 0.05 * c / 6 * np.sin(2 * np.pi * c)
+    law = hsmu.Law("boucWen", k0=1.5, alpha=0.05, n=2.0, beta=0.6, gamma=0.2, deltaNu=0.002,
+                   deltaEta=0.002, uRef=0.01, fRef=100.0)
+    f_true = law.drive(u_true)
+    u0, f0 = 0.003, 0.05 * np.max(np.abs(f_true))
+    return 0.01 * k, u_true + u0, f_true + f0, u0, f0
+
+
+def test_calibrate_offsets_recovers_known_offsets_with_intervals():
+    t, u, f, u0, f0 = synthetic_with_offsets()
+    cal = hsmu.calibrate(t, u * 1000, f, units="s,mm,kN")  # offsets "auto", as the command
+    off = cal["offsets"]
+    assert off["used"] and off["criterion"] < 0 and off["nrmseWith"] < off["nrmseWithout"]
+    d, F = off["deformationOffset"], off["forceOffset"]
+    assert d["value"] == pytest.approx(u0, rel=0.01)  # in m: the console's units
+    assert F["value"] == pytest.approx(f0, rel=0.01)
+    assert (d["unit"], F["unit"]) == ("m", "kN")
+    for p in (d, F):
+        lo, hi = p["ci95"]
+        assert lo < p["value"] < hi and hi - lo == pytest.approx(2 * 1.96 * p["stddev"])
+    assert cal["parameters"]["forceOffset"]["value"] == F["value"]
+    assert cal["model"]["forceOffset"] == F["value"]
+    on = hsmu.calibrate(t, u, f, offsets="on")
+    assert on["offsets"]["used"] and "forceOffset" in on["model"]
+
+
+def test_calibrate_offsets_off_and_a_bad_value():
+    t, u, f, _, _ = synthetic_with_offsets()
+    off = hsmu.calibrate(t, u, f, offsets="off")
+    assert "offsets" not in off
+    assert "forceOffset" not in off["model"] and "forceOffset" not in off["parameters"]
+    with pytest.raises(ValueError, match="offsets: expected auto, on or off, found 'sometimes'"):
+        hsmu.calibrate(t, u, f, offsets="sometimes")

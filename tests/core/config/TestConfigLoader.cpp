@@ -106,6 +106,15 @@ const std::vector<BrokenCase>& brokenCases() {
         {"bad DOF name",
          [](json& d) { d["structure"]["elements"][0]["dof"] = "DOF 9"; },
          {"structure.elements[0].dof", "DOF 9"}},
+        {"duplicate element name, not next to its twin",
+         [](json& d) {
+             json& e = d["structure"]["elements"];
+             json other = e[0];
+             other["name"] = "Spring 2";
+             e.push_back(other);
+             e.push_back(e[0]);
+         },
+         {"structure.elements[2].name", "duplicate element name 'Spring'"}},
         {"DOF index out of range",
          [](json& d) { d["structure"]["elements"][0]["dof"] = 7; },
          {"structure.elements[0].dof", "7"}},

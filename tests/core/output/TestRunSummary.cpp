@@ -97,6 +97,26 @@ private slots:
         QVERIFY(!j.contains("updating")); // no updater
     }
 
+    void summaryFileIsTheSummaryDumped() {
+        // writeSummaryJson streams the per-DOF / per-element objects (core/output/PrettyJson):
+        // the file holds the bytes of makeRunSummary(...).dump(2), for a run with a specimen,
+        // with updating (condition 3) and a held one (null peaks, alarms).
+        Run frame{smallFrame(2.0), nullptr, {}}, updating{buildHybridTest(condition3(0.5)), nullptr, {}},
+            held{smallFrame(2.0, 1e-4), nullptr, {}};
+        for (Run* run : {&frame, &updating, &held}) {
+            runToEnd(*run);
+            QTemporaryDir dir;
+            const std::string path = dir.filePath(QStringLiteral("summary.json")).toStdString();
+            const RunInfo info{"frame \"ü\"", "inline.json", 0.25, {{"controller", "builtin"}}};
+            writeSummaryJson(path, *run->test, *run->stats, info);
+            std::ifstream in(path, std::ios::binary);
+            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            const nlohmann::json dom = makeRunSummary(*run->test, *run->stats, info);
+            QVERIFY(dom.at("peak_force").size() == run->stats->layout().elements.size());
+            QCOMPARE(QString::fromStdString(text), QString::fromStdString(dom.dump(2) + "\n"));
+        }
+    }
+
     void linkSecurityFollowsTheSites() {
         // Order of the sites, the last entry naming a site wins, a site not named: "" / null.
         const SiteSecurity given{{"Lab B", "tls"}, {"controller", "builtin"}, {"Lab B", "insecure-plaintext"}};
@@ -108,7 +128,7 @@ private slots:
         QCOMPARE(j.at("controller").get<std::string>(), std::string("builtin"));
         QCOMPARE(j.at("Lab B").get<std::string>(), std::string("insecure-plaintext"));
         QVERIFY(j.at("Lab C").is_null());
-        QCOMPARE(builtinSiteSecurity(RunLayout{{}, {}, {}, {"controller", "Lab C"}}),
+        QCOMPARE(builtinSiteSecurity(RunLayout{{}, {}, {}, {"controller", "Lab C"}, {}}),
                  (SiteSecurity{{"controller", "builtin"}, {"Lab C", "builtin"}}));
 
         // summary.json: the run's sites (the small frame's specimen: the default site).

@@ -309,6 +309,7 @@ void TestRecordCsvExport::everyDatasetReachesTheCsv() {
         {"/elements/actuator/measured", {"actuators.csv", " actuator measured"}},
         {"/elements/actuator/held_ticks", {"actuators.csv", " held ticks"}},
         {"/elements/actuator/flags", {"actuators.csv", " flags"}},
+        {"/elements/channels", {"channels.csv", " force ["}},
         {"/updating/parameters", {"updating.csv", param + " ["}},
         {"/updating/stddev", {"updating.csv", "stddev " + param}},
         {"/updating/auxiliary_force", {"updating.csv", "auxiliary_force"}},

@@ -1,11 +1,19 @@
 // The live tracking estimates (docs/rths.md, "Live tracking", M1, M2, M7) and their thresholds
 // on signals whose answers are known in closed form: y = A sin(2 pi f t), xm = g y(t - d h).
+// The signal gate: a window whose command is too quiet (below its absolute floor or a fraction
+// of the run's largest window RMS) gives no estimate and raises no alarm; every other estimate
+// equals the ungated window's bit for bit. On the benchmark's own quiet start (case 1, El
+// Centro x 0.4, sensor noise on, sampled as the console samples it), where the ungated window
+// wanders, the console's gate (gatedWindowSettings) holds every estimate back.
+#include "core/groundmotion/GroundMotionReader.h"
+#include "core/rths/RthsBenchmark.h"
 #include "core/rths/TrackingAlarms.h"
 #include "core/rths/TrackingWindow.h"
 
 #include <QtTest>
 
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -29,6 +37,15 @@ std::vector<TrackingEstimate> feed(TrackingWindow& w, long from, long to, double
     }
     return out;
 }
+
+/// Every field of two estimates equal, bit for bit.
+bool same(const TrackingEstimate& a, const TrackingEstimate& b)
+{
+    return a.tick == b.tick && a.time == b.time && a.delay == b.delay && a.j2 == b.j2 &&
+           a.amplitude == b.amplitude && a.amplitudeError == b.amplitudeError && a.valid == b.valid;
+}
+
+const std::string kRecord = std::string(HSMU_SHARED_DATA_DIR) + "/rths-benchmark/elcentro_benchmark.txt";
 
 TrackingEstimate at(double delay, double j2)
 {
@@ -99,6 +116,117 @@ private slots:
         QCOMPARE(more.front().time, 4095 * kH);
     }
 
+    void aQuietCommandGivesNoEstimateAndNoAlarm()
+    {
+        // A 2 Hz sine 19 ticks late whose amplitude is 0.02 mm for 2 s (RMS 14 um), then
+        // 2 mm: with a 0.1 mm floor the quiet windows (every one ending before 2 s + 1 s, the
+        // window still holding quiet ticks with RMS below 0.1 mm) give no estimate (NaN, valid
+        // false) and, with thresholds any estimate would pass, no alarm; the loud ones equal
+        // the ungated window's bit for bit.
+        TrackingWindowSettings gated{1.0, 0.1, 0.05, 1e-4, 0.0};
+        TrackingWindow w(kH, gated), plain(kH, {1.0, 0.1, 0.05});
+        TrackingAlarms alarms({0.0, 0.0, 0.0, 0.0});
+        std::vector<Alarm> raised;
+        int quiet = 0, loud = 0;
+        for (long k = 0; k < 5 * 4096; ++k) {
+            const double amp = k < 2 * 4096 ? 0.01 : 1.0;
+            const double yk = amp * y(k), xk = amp * y(k - 19);
+            const bool a = w.add(k, yk, xk), b = plain.add(k, yk, xk);
+            QCOMPARE(a, b);
+            if (!a)
+                continue;
+            const TrackingEstimate& e = w.last();
+            if (!e.valid) {
+                ++quiet;
+                QVERIFY(std::isnan(e.delay) && std::isnan(e.j2) && std::isnan(e.amplitudeError));
+                QVERIFY(e.commandRms < 1e-4);
+                QCOMPARE(e.gate, 1e-4);
+                alarms.judge(e, raised);
+                QVERIFY(raised.empty());
+                QCOMPARE(alarms.j1Level(), 0);
+            } else {
+                ++loud;
+                QVERIFY2(same(e, plain.last()), qPrintable(QString::number(k)));
+                QVERIFY(e.commandRms >= 1e-4);
+            }
+        }
+        QVERIFY(quiet >= 10); // 1 s .. 2 s at least
+        QVERIFY(loud >= 20);  // the last 2 s at least
+    }
+
+    void aQuietTailUnderTheRunsPeakGivesNoEstimate()
+    {
+        // 2 mm for 3 s, then 0.1 mm (1/20): with peakFraction 0.1 and no absolute floor, the
+        // windows wholly in the tail give none; before, every estimate is made.
+        TrackingWindow w(kH, {1.0, 0.1, 0.05, 0.0, 0.1});
+        int tail = 0;
+        for (long k = 0; k < 6 * 4096; ++k) {
+            const double amp = k < 3 * 4096 ? 1.0 : 0.05;
+            if (!w.add(k, amp * y(k), amp * y(k - 10)))
+                continue;
+            if (k < 3 * 4096)
+                QVERIFY(w.last().valid);
+            if (k >= 4 * 4096) {
+                QVERIFY(!w.last().valid);
+                QVERIFY(std::abs(w.last().gate - 0.1 * 0.002 / std::sqrt(2.0)) < 1e-6);
+                ++tail;
+            }
+        }
+        QVERIFY(tail >= 10);
+    }
+
+    void elCentrosQuietStartIsGated()
+    {
+        if (!std::filesystem::exists(kRecord))
+            QSKIP("the RTHS benchmark's El Centro record is not in HSMU_SHARED_DATA_DIR/rths-benchmark: "
+                  "this check needs the shared data folder");
+        // Case 1, the sample controller, noise on, 4096 Hz; every 4th tick as the console's
+        // view receives them (about 1024 samples a second), its window and its gate.
+        RthsSettings s = benchmarkSampleController();
+        const GroundMotion ag = readGroundMotion(kRecord, GroundMotionFormat::Auto, AccelerationUnit::MetersPerSecond2).scaled(0.4);
+        const RthsRun run = runRths(benchmarkPartition(1, s.plant), ag, s, nullptr, 12.0);
+        const double hs = 4.0 / s.rate;
+        const TrackingWindowSettings console = gatedWindowSettings({1.0, 0.1, 0.05}, s.sensors);
+        QVERIFY(std::abs(console.minimumRms - 10.0 * std::hypot(1.6e-5, 3.81e-6 / std::sqrt(12.0))) < 1e-12);
+        TrackingWindow w(hs, console), plain(hs, {1.0, 0.1, 0.05});
+        TrackingAlarms alarms; // the console's default thresholds
+        std::vector<Alarm> raised;
+        double firstValid = -1.0, worstQuietDelay = 0.0, worstQuietAmplitude = 0.0, worstDelayError = 0.0;
+        int gated = 0;
+        for (std::size_t k = 0; k < run.time.size(); k += 4) {
+            const long i = long(k / 4);
+            const bool a = w.add(i, run.desired[k], run.measured[k]);
+            plain.add(i, run.desired[k], run.measured[k]);
+            if (!a)
+                continue;
+            const TrackingEstimate& e = w.last();
+            const double t = run.time[k];
+            if (!e.valid) {
+                QVERIFY2(firstValid < 0.0, qPrintable(QString("gated at %1 s after the first estimate").arg(t)));
+                ++gated;
+                worstQuietDelay = std::max(worstQuietDelay, plain.last().delay);
+                worstQuietAmplitude = std::max(worstQuietAmplitude, std::abs(plain.last().amplitudeError));
+                alarms.judge(e, raised);
+                QVERIFY(raised.empty());
+                continue;
+            }
+            if (firstValid < 0.0)
+                firstValid = t;
+            QVERIFY2(same(e, plain.last()), qPrintable(QString::number(t)));
+            worstDelayError = std::max(worstDelayError, std::abs(e.delay - 4.6));
+        }
+        qInfo("gated %d estimates to t = %.2f s; there the ungated delay reached %.1f ms, |amplitude error| %.0f %%; "
+              "after, the delay within %.2f ms of 4.6 ms", gated, firstValid, worstQuietDelay, worstQuietAmplitude,
+              worstDelayError);
+        // Measured: 49 estimates gated, the first one made at t = 5.88 s; the ungated window read
+        // up to 49.8 ms and 91 % there; after, within 0.11 ms of 4.6 ms.
+        QVERIFY(gated >= 30);
+        QVERIFY(firstValid > 0.0 && firstValid < 7.0);
+        // What the gate holds back: the ungated window wanders there.
+        QVERIFY(worstQuietDelay > 10.0 || worstQuietAmplitude > 50.0);
+        QVERIFY(worstDelayError < 0.5);
+    }
+
     void badSettingsAreRefused()
     {
         QVERIFY(checkTrackingWindow({1.0, 0.1, 0.05}, kH).empty());
@@ -107,6 +235,8 @@ private slots:
         QVERIFY(checkTrackingWindow({1.0, -1.0, 0.05}, kH).find("interval") != std::string::npos);
         QVERIFY(checkTrackingWindow({1.0, 0.1, 0.6}, kH).find("maxDelay") != std::string::npos);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, TrackingWindow(kH, {1.0, 0.1, NAN}));
+        QVERIFY(checkTrackingWindow({1.0, 0.1, 0.05, -1e-4, 0.0}, kH).find("minimumRms") != std::string::npos);
+        QVERIFY(checkTrackingWindow({1.0, 0.1, 0.05, 0.0, 1.0}, kH).find("peakFraction") != std::string::npos);
     }
 
     void amplitudeRatioOfWholeHistories()

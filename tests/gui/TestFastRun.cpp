@@ -1,0 +1,140 @@
+// The Qt-free `hsmu` (gui/cli/FastRun.h): a plain `hsmu run FILE` runs without mapping Qt (the
+// dynamic loader's own list of what it loaded, LD_DEBUG=files), prints and writes the same
+// bytes as hsmu-cli (the Qt Core front end) on the same run, and leaves to hsmu-cli what it
+// does not read exactly (a preset name, a language other than English).
+#include "CliTestSupport.h"
+
+#include <QDir>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+const QString kConfig = QStringLiteral(HSMU_SOURCE_DIR "/benchmarks/sdof-opensees.json");
+
+/// hsmu-cli, the Qt Core front end, on the same arguments.
+clitest::Result hsmuCli(const QStringList& args) {
+    QProcess p;
+    p.start(QStringLiteral(HSMU_CLI_EXE), args);
+    clitest::Result r;
+    if (!p.waitForFinished(120000)) {
+        p.kill();
+        p.waitForFinished();
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QByteArray bytes(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+/// The text with the measured times (wall time, steps/s) blanked.
+QString withoutTimes(QString s) {
+    s.replace(QRegularExpression(QStringLiteral("wall time: [0-9.e+-]+ s")),
+              QStringLiteral("wall time: * s"));
+    s.replace(QRegularExpression(QStringLiteral("  [0-9]+ steps/s")),
+              QStringLiteral("  * steps/s"));
+    return s;
+}
+
+} // namespace
+
+class TestFastRun : public QObject {
+    Q_OBJECT
+private slots:
+    void plainRunLoadsNoQt() {
+        QTemporaryDir dir;
+        const auto r =
+            clitest::hsmu({QStringLiteral("run"), kConfig, QStringLiteral("--out"),
+                           dir.filePath(QStringLiteral("out")), QStringLiteral("--duration"),
+                           QStringLiteral("2")},
+                          120000, {{QStringLiteral("LD_DEBUG"), QStringLiteral("files")}});
+        QVERIFY2(r.exitCode == 0, qPrintable(clitest::report(r)));
+        QVERIFY2(r.err.contains(QStringLiteral("file=libstdc++")), "LD_DEBUG listed no library");
+        QVERIFY2(!r.err.contains(QStringLiteral("libQt6")), qPrintable(r.err.left(4000)));
+        QVERIFY(r.out.contains(QStringLiteral("state: finished, steps: 2000 of 2000")));
+        // what it hands on does load Qt Core: the check above can fail
+        const auto preset =
+            clitest::hsmu({QStringLiteral("run"), QStringLiteral("paper-condition-3"),
+                           QStringLiteral("--out"), dir.filePath(QStringLiteral("preset")),
+                           QStringLiteral("--duration"), QStringLiteral("0.2")},
+                          120000, {{QStringLiteral("LD_DEBUG"), QStringLiteral("files")}});
+        QVERIFY2(preset.exitCode == 0, qPrintable(clitest::report(preset)));
+        QVERIFY(preset.err.contains(QStringLiteral("file=libQt6Core")));
+    }
+
+    void sameOutputsAsTheQtFrontEnd() {
+        QTemporaryDir dir;
+        const QStringList common{QStringLiteral("--duration"), QStringLiteral("3"),
+                                 QStringLiteral("--scale=0.5"), QStringLiteral("--csv"),
+                                 QStringLiteral("all")};
+        const QString fast = dir.filePath(QStringLiteral("fast/"));
+        const QString qt = dir.filePath(QStringLiteral("qt/"));
+        const auto a = clitest::hsmu(
+            QStringList{QStringLiteral("run"), kConfig, QStringLiteral("--out"), fast} + common);
+        const auto b = hsmuCli(
+            QStringList{QStringLiteral("run"), kConfig, QStringLiteral("--out"), qt} + common);
+        QVERIFY2(a.exitCode == 0, qPrintable(clitest::report(a)));
+        QVERIFY2(b.exitCode == 0, qPrintable(clitest::report(b)));
+        QCOMPARE(withoutTimes(a.out).replace(fast.chopped(1), QStringLiteral("DIR")),
+                 withoutTimes(b.out).replace(qt.chopped(1), QStringLiteral("DIR")));
+        QCOMPARE(withoutTimes(a.err), withoutTimes(b.err));
+        QCOMPARE(a.err.count(QLatin1Char('\n')), 20); // every 5 %
+        const QByteArray csv = bytes(fast + QStringLiteral("steps.csv"));
+        QVERIFY(csv.size() > 3000 * 10);
+        QCOMPARE(csv, bytes(qt + QStringLiteral("steps.csv")));
+        QJsonObject sa = clitest::readJson(fast + QStringLiteral("summary.json"));
+        QJsonObject sb = clitest::readJson(qt + QStringLiteral("summary.json"));
+        QVERIFY(sa.contains(QStringLiteral("wall_time_s")));
+        for (const QString& measured : {QStringLiteral("wall_time_s"), QStringLiteral("timing")}) {
+            sa.remove(measured);
+            sb.remove(measured);
+        }
+        QCOMPARE(sa, sb);
+    }
+
+    void otherLanguagesGoToTheCatalogues() {
+        QTemporaryDir dir;
+        QDir(dir.path()).mkpath(QStringLiteral("config/HSMU"));
+        QFile settings(dir.filePath(QStringLiteral("config/HSMU/hsmu.conf")));
+        QVERIFY(settings.open(QIODevice::WriteOnly));
+        settings.write("[General]\nlanguage=es\n");
+        settings.close();
+        const QStringList args{QStringLiteral("run"),        kConfig,
+                               QStringLiteral("--out"),      dir.filePath(QStringLiteral("out")),
+                               QStringLiteral("--duration"), QStringLiteral("0.1")};
+        const auto bySettings = clitest::hsmu(
+            args, 120000,
+            {{QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config"))}});
+        QVERIFY2(bySettings.exitCode == 0, qPrintable(clitest::report(bySettings)));
+        QVERIFY2(bySettings.out.contains(QStringLiteral("  desplazamiento máximo:")),
+                 qPrintable(bySettings.out));
+        QVERIFY(bySettings.err.contains(QStringLiteral("pasos/s")));
+        const auto byLocale = clitest::hsmu(
+            args, 120000,
+            {{QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("none"))},
+             {QStringLiteral("LC_ALL"), QString()},
+             {QStringLiteral("LANGUAGE"), QStringLiteral("es")},
+             {QStringLiteral("LANG"), QStringLiteral("es_ES.UTF-8")}});
+        QVERIFY2(byLocale.exitCode == 0, qPrintable(clitest::report(byLocale)));
+        QVERIFY2(byLocale.out.contains(QStringLiteral("  desplazamiento máximo:")),
+                 qPrintable(byLocale.out));
+        const auto english = clitest::hsmu(
+            args, 120000,
+            {{QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("none"))},
+             {QStringLiteral("LC_ALL"), QString()},
+             {QStringLiteral("LANGUAGE"), QString()},
+             {QStringLiteral("LANG"), QStringLiteral("en_GB.UTF-8")}});
+        QVERIFY2(english.out.contains(QStringLiteral("  peak displacement:")),
+                 qPrintable(english.out));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFastRun)
+#include "TestFastRun.moc"
