@@ -55,6 +55,11 @@ enum class CalibrationOffsets { Off, On, Auto };
 std::optional<CalibrationOffsets> calibrationOffsetsFromName(const std::string& name);
 const char* calibrationOffsetsName(CalibrationOffsets offsets);
 
+/// The pinching law's search (PinchingSearch.h): Global, offline (the wide box and the
+/// space-filling screening), or Anchor, the online anchors' and refits' cheaper search (p's box
+/// [0, 20/max(E,1)], scattered starts only).
+enum class PinchingSearch { Global, Anchor };
+
 struct CalibrationRequest {
     std::string law = "boucWen";
     CalibrationOffsets offsets = CalibrationOffsets::Off; ///< fit u0 and F0 (see above)
@@ -63,7 +68,10 @@ struct CalibrationRequest {
     std::vector<std::string> fitted;     ///< the parameters to fit ("": the law's default set)
     std::size_t window = 0;              ///< score the last `window` samples (0 = all)
     std::size_t reducedSamples = 800;    ///< the global phase's history (Calibration.h)
-    int pinchingStarts = 40;             ///< scattered starts of the pinching search
+    PinchingSearch pinchingSearch = PinchingSearch::Global; ///< (boucWenPinching)
+    int pinchingStarts = 40;             ///< scattered starts of the pinching search (Anchor)
+    int pinchingScreen = 2048;           ///< screened points of the pinching search (Global)
+    int pinchingKept = 12;               ///< ... the best of them minimized (Global)
     std::size_t polishSamples = 0;       ///< CalibrationSpec::polishSamples (0: whole history)
     int localIterations = 0;             ///< the local phase's iteration budget (0: default)
     const std::atomic<bool>* cancel = nullptr; ///< CalibrationSpec::cancel

@@ -264,12 +264,12 @@ private slots:
         QVERIFY2(r.ok, r.reason.c_str());
         qInfo("%s: pinching calibration NRMSE %.4f (reference %.3f, %.3fx), %d starts, %d "
               "replays, %.2f s wall, %.2f s CPU; zetaS %.3f p %.4g q %.3f psi %.4g deltaPsi "
-              "%.4g lambda %.4g n %.3f",
+              "%.4g lambda %.4g n %.3f k0 %.4g uRef %.4g",
               qPrintable(QFileInfo(file).fileName()), r.nrmse, reference, r.nrmse / reference,
               r.startsTried, r.residualEvaluations, r.computeSeconds, cpu,
               r.parameters.at("zetaS"), r.parameters.at("p"), r.parameters.at("q"),
               r.parameters.at("psi"), r.parameters.at("deltaPsi"), r.parameters.at("lambda"),
-              r.parameters.at("n"));
+              r.parameters.at("n"), r.parameters.at("k0"), r.parameters.at("uRef"));
         QVERIFY2(r.nrmse <= 1.05 * reference,
                  qPrintable(QString("pinching NRMSE %1 > 1.05 x %2").arg(r.nrmse).arg(reference)));
         QVERIFY(r.nrmse < 0.9 * plainReference);
