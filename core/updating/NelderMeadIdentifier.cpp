@@ -244,6 +244,7 @@ bool NelderMeadIdentifier::fittedBox(const HistoryScales& scales,
 {
     CalibrationRequest request;
     request.law = m_law;
+    request.pinchingSearch = PinchingSearch::Anchor; // the online box (PinchingSearch.h)
     for (const auto& name : m_s.parameters)
         if (!m_s.bounds.count(name))
             request.fitted.push_back(name);

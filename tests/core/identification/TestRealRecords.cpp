@@ -235,7 +235,8 @@ private slots:
     }
 
     /// The pinching law (boucWenPinching) with no user input: within 5 % of the independent
-    /// Baber-Noori / Foliente fit on the five shared records (issue 29), and better than the
+    /// Baber-Noori / Foliente fit on the five shared records (issue 29; the MR damper's row is
+    /// not registered in CTest: not met yet, docs/validation.md), and better than the
     /// plain law's own optimum by a margin no plain fit can reach (so the search did leave
     /// the Bouc-Wen basin).
     void calibratesPinching_data() {
