@@ -408,4 +408,28 @@ double BoucWen::tangentOf(const BoucWenState& s, double dir) const {
     return m_p.k0 * (m_p.alpha + (1.0 - m_p.alpha) * dzdx) * m_p.fRef / m_p.uRef;
 }
 
+BoucWenParameters rescaled(const BoucWenParameters& p, double uRef, double fRef) {
+    const double s = p.uRef / uRef, c = p.fRef / fRef;
+    BoucWenParameters q = p;
+    q.k0 = p.k0 * c / s;
+    const double sn = std::pow(s, -p.n);
+    q.beta = p.beta * sn;
+    q.gamma = p.gamma * sn;
+    q.deltaA = p.deltaA / (c * s);
+    q.deltaNu = p.deltaNu / (c * s);
+    q.deltaEta = p.deltaEta / (c * s);
+    q.uRef = uRef;
+    q.fRef = fRef;
+    return q;
+}
+
+BoucWenState rescaledState(const BoucWenState& st, const BoucWenParameters& from,
+                           const BoucWenParameters& to) {
+    const double s = from.uRef / to.uRef, c = from.fRef / to.fRef;
+    BoucWenState out = st;
+    out.z = st.z * s;
+    out.e = st.e * c * s;
+    return out;
+}
+
 } // namespace hsmu

@@ -189,4 +189,12 @@ private:
     double m_dirCommitted = 1.0, m_dirTrial = 1.0;
 };
 
+/// The same physical Bouc-Wen model in the scales (uRef, fRef) (both > 0): with s = p.uRef /
+/// uRef and c = p.fRef / fRef, k0 c / s, beta and gamma s^-n, deltaA, deltaNu, deltaEta
+/// 1 / (c s); alpha, n, A0 unchanged (the law's equations, docs/method.md). The state maps as
+/// z s, e c s (rescaledState).
+BoucWenParameters rescaled(const BoucWenParameters& p, double uRef, double fRef);
+BoucWenState rescaledState(const BoucWenState& s, const BoucWenParameters& from,
+                           const BoucWenParameters& to);
+
 } // namespace hsmu

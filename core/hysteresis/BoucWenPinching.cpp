@@ -365,4 +365,15 @@ double BoucWenPinching::tangentOf(const BoucWenState& s, double dir) const {
     return b.k0 * (b.alpha + (1.0 - b.alpha) * dzdx) * b.fRef / b.uRef;
 }
 
+BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uRef,
+                                   double fRef) {
+    const double s = p.boucWen.uRef / uRef, c = p.boucWen.fRef / fRef;
+    BoucWenPinchingParameters q = p;
+    q.boucWen = rescaled(p.boucWen, uRef, fRef);
+    q.pinching.p = p.pinching.p / (c * s);
+    q.pinching.psi = p.pinching.psi * s;
+    q.pinching.deltaPsi = p.pinching.deltaPsi / c;
+    return q;
+}
+
 } // namespace hsmu

@@ -106,4 +106,10 @@ private:
     double m_dirCommitted = 1.0, m_dirTrial = 1.0;
 };
 
+/// The same physical pinching model in the scales (uRef, fRef): the Bouc-Wen part as
+/// rescaled(); with s = p.uRef / uRef and c = p.fRef / fRef, z scales by s and e by c s, so
+/// the pinched zone's width psi s, deltaPsi / c, the energy rate p / (c s); zetaS, q, lambda
+/// unchanged (Eqs P2-P4, docs/hysteresis-laws.md).
+BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uRef, double fRef);
+
 } // namespace hsmu

@@ -214,6 +214,36 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
     const auto cancelled = [&] {
         return spec.cancel && spec.cancel->load(std::memory_order_relaxed);
     };
+    if (!spec.screened.empty()) {
+        // 0. Screening: one replay per point on a shorter reduced history, the best kept.
+        const Replay screen(*law, indices, u, f,
+                            reducedHistory(u, rate ? u.size() : spec.screenSamples), rmsF, 0,
+                            time);
+        std::vector<Candidate> screenedBest;
+        Eigen::VectorXd r;
+        for (const std::vector<double>& s : spec.screened) {
+            if (s.size() != spec.fitted.size())
+                return done("a screened point has the wrong number of values");
+            if (cancelled()) {
+                out.cancelled = true;
+                return done("cancelled");
+            }
+            Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(s.data(), p)
+                                    .cwiseMax(searchLower)
+                                    .cwiseMin(searchUpper);
+            project(x);
+            ++out.residualEvaluations;
+            if (screen(x, r))
+                screenedBest.push_back({x, 0.5 * r.squaredNorm()});
+        }
+        const std::size_t kept =
+            std::min(screenedBest.size(), std::size_t(std::max(spec.screenKept, 0)));
+        std::partial_sort(screenedBest.begin(), screenedBest.begin() + std::ptrdiff_t(kept),
+                          screenedBest.end(),
+                          [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+        for (std::size_t k = 0; k < kept; ++k)
+            starts.push_back(screenedBest[k].x);
+    }
     LevenbergMarquardtSettings globalSettings = spec.global, localSettings = spec.local;
     globalSettings.cancel = localSettings.cancel = spec.cancel;
     const int minimizations =

@@ -58,6 +58,13 @@ struct CalibrationSpec {
     /// the box and made admissible.
     std::vector<std::vector<double>> starts;
     std::size_t reducedSamples = 800; ///< target size of the reduced history (global phase)
+    /// A screening before the global phase (empty: none): each point (values of the fitted
+    /// parameters, clamped into the search range and made admissible) costs one replay of a
+    /// reduced history of screenSamples samples, and the screenKept best join the starts
+    /// (e.g. a space-filling design over a box too wide for a minimization per point).
+    std::vector<std::vector<double>> screened;
+    std::size_t screenSamples = 300;
+    int screenKept = 8;
     /// Score only the last `window` samples (0 = all): the law is still replayed from the
     /// first sample (its force depends on the whole path), J and the NRMSE sum over the last
     /// `window` samples and are scaled by their RMS force (the online refits of

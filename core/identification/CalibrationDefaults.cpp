@@ -1,12 +1,12 @@
 #include "core/identification/CalibrationDefaults.h"
 
 #include "core/hysteresis/OffsetLaw.h"
+#include "core/identification/PinchingSearch.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
-#include <random>
 #include <stdexcept>
 
 namespace hsmu {
@@ -28,64 +28,15 @@ std::vector<Box> boucWenBox(const HistoryScales& s) {
             {"deltaEta", 0.0, 20.0 / e, 0.1 / e}};
 }
 
-std::vector<Box> pinchingBox(const HistoryScales& s) {
+std::vector<Box> pinchingBox(const HistoryScales& s, PinchingSearch search) {
     const double e = std::max(s.energy, 1.0);
-    return {{"zetaS", 0.0, 0.99, 0.1}, {"p", 0.0, 20.0 / e, 0.1 / e},
+    // p up to 200 / E offline: the severity may saturate within the first 0.5 % of the
+    // history's work (the CLT connection's fit sat on 20 / E at 0.1493); the online anchors
+    // keep 20 / E (their UKF's box: a wider one cost Soesianawati's online fit 0.1404 -> 0.1516).
+    const double pMax = search == PinchingSearch::Global ? 200.0 : 20.0;
+    return {{"zetaS", 0.0, 0.99, 0.1}, {"p", 0.0, pMax / e, 0.1 / e},
             {"q", 0.0, 0.9, 0.05},     {"psi", 0.01, 5.0, 0.1},
             {"deltaPsi", 0.0, 20.0 / e, 0.1 / e}, {"lambda", 0.01, 10.0, 0.1}};
-}
-
-bool isPinchingParameter(const std::string& name) {
-    return name == "zetaS" || name == "p" || name == "q" || name == "psi" ||
-           name == "deltaPsi" || name == "lambda";
-}
-
-bool isRate(const std::string& name) {
-    return name == "p" || name == "deltaPsi" || name == "deltaNu" || name == "deltaEta";
-}
-
-/// Starts scattered over the pinching law's box around the Bouc-Wen optimum `base`: each
-/// pinching parameter uniform over its box (the energy rates skewed toward 0 as u^3, most
-/// specimens degrade slowly), each Bouc-Wen shape parameter the optimum's value times
-/// exp(+-0.25), the Bouc-Wen degradation rates skewed as the pinching rates. Pinching moves
-/// the loop's shape enough that the plain law's optimum is not inside the pinched law's
-/// basin (measured on the shared RC columns and bearing: docs/validation.md), so the search
-/// has to leave it. Deterministic (a fixed seed): the same history gives the same fit.
-std::vector<std::vector<double>> scatteredPinchingStarts(
-    const std::vector<Box>& fitted, const std::map<std::string, double>& base, int count) {
-    std::mt19937 rng(20261124u);
-    const auto uniform = [&rng] { return double(rng()) / 4294967296.0; };
-    const auto logUniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, uniform()); };
-    std::vector<std::vector<double>> starts;
-    for (int k = 0; k < count; ++k) {
-        std::map<std::string, double> v;
-        for (const Box& b : fitted) {
-            const auto at = base.find(b.name);
-            const double u = uniform();
-            if (isRate(b.name))
-                v[b.name] = b.lower + (b.upper - b.lower) * u * u * u;
-            else if (b.name == "n")
-                v[b.name] = logUniform(0.7, 6.0);
-            else if (isPinchingParameter(b.name) || at == base.end())
-                v[b.name] = b.lower + (b.upper - b.lower) * u;
-            else
-                v[b.name] = at->second * std::exp(0.5 * (u - 0.5));
-        }
-        // The width of the pinched zone zeta2 = psi (lambda + zeta1) matters more than psi
-        // and lambda apart: zeta2 log-uniform over [0.05, 1] (in z, whose ultimate value is
-        // about 1 with the derived scales), lambda log-uniform over its box.
-        if (v.count("lambda") && v.count("psi")) {
-            const Box& lb = *std::find_if(fitted.begin(), fitted.end(),
-                                          [](const Box& x) { return x.name == "lambda"; });
-            v["lambda"] = logUniform(std::max(lb.lower, 1e-3), lb.upper);
-            v["psi"] = logUniform(0.05, 1.0) / (v["lambda"] + 0.5 * v["zetaS"]);
-        }
-        std::vector<double> s;
-        for (const Box& b : fitted)
-            s.push_back(v[b.name]);
-        starts.push_back(std::move(s));
-    }
-    return starts;
 }
 
 std::vector<std::vector<double>> boucWenStarts() {
@@ -227,7 +178,7 @@ CalibrationSpec defaultCalibrationSpec(const CalibrationRequest& request,
         defaults = boucWenBox(scales);
         starts = boucWenStarts();
         if (request.law == "boucWenPinching") {
-            const std::vector<Box> pin = pinchingBox(scales);
+            const std::vector<Box> pin = pinchingBox(scales, request.pinchingSearch);
             defaults.insert(defaults.end(), pin.begin(), pin.end());
             for (auto& s : starts) // no pinching: the starts of the plain law
                 s.insert(s.end(), {0.0, 0.0, 0.1, 0.2, 0.0, 0.5});
@@ -310,41 +261,17 @@ CalibrationResult calibrateLaw(const std::vector<double>& u, const std::vector<d
     }
     if (request.law != "boucWenPinching")
         return calibrate(u, f, defaultCalibrationSpec(request, scales));
-    // Pinching: the plain law's optimum first, then the pinching law from it.
+    // Pinching: the plain law's optimum first, then the pinching search from it
+    // (PinchingSearch.h).
     CalibrationRequest plain = request;
     plain.law = "boucWen";
     plain.fitted.clear();
-    const CalibrationResult base = calibrate(u, f, defaultCalibrationSpec(plain, scales));
+    const bool offline = request.pinchingSearch == PinchingSearch::Global;
+    const CalibrationResult base = offline ? calibrateLaw(u, f, plain)
+                                           : calibrate(u, f, defaultCalibrationSpec(plain, scales));
     if (base.cancelled)
         return base;
-    CalibrationSpec spec = defaultCalibrationSpec(request, scales);
-    if (base.ok) {
-        spec.starts.clear();
-        std::vector<double> plainStart;
-        for (const Box& b : spec.fitted) {
-            const auto it = base.parameters.find(b.name);
-            plainStart.push_back(isPinchingParameter(b.name) || it == base.parameters.end()
-                                     ? b.lower
-                                     : it->second);
-        }
-        spec.starts.push_back(std::move(plainStart));
-        for (auto& s : scatteredPinchingStarts(spec.fitted, base.parameters,
-                                               std::max(0, request.pinchingStarts)))
-            spec.starts.push_back(std::move(s));
-        // The global phase keeps the pinching on (zetaS >= 0.5, and zeta1 near zetaS once a
-        // fifth of the history's work is done): from random starts with the whole box, most
-        // minimizations switch the pinching off and fall back to the plain law's optimum.
-        // The polish frees the whole box, so a specimen without pinching still gets zetaS 0.
-        const double e = std::max(scales.energy, 1.0);
-        for (Box& b : spec.fitted) {
-            if (b.name == "zetaS")
-                b.searchLower = 0.5;
-            if (b.name == "p")
-                b.searchLower = 5.0 / e;
-        }
-        spec.polished = 2;
-    }
-    CalibrationResult pinched = calibrate(u, f, spec);
+    CalibrationResult pinched = searchPinching(u, f, request, scales, base);
     pinched.residualEvaluations += base.residualEvaluations;
     pinched.computeSeconds += base.computeSeconds;
     return pinched;

@@ -8,13 +8,13 @@
 //   deltaNu, deltaEta [0, 20 / max(E, 1)]   (E: the history's normalized path work, so that
 //                                            nu and eta stay below 21 over the history)
 //   A0 = 1, deltaA = 0 fixed (as the paper; A and k0 are not separately identifiable)
-// and, for boucWenPinching, on top: zetaS [0, 0.99], p [0, 20/max(E,1)], q [0, 0.9],
-// psi [0.01, 5], deltaPsi [0, 20/max(E,1)], lambda [0.01, 10].
+// and, for boucWenPinching, on top: zetaS [0, 0.99], p [0, 200/max(E,1)] (the online
+// anchors', PinchingSearch::Anchor: [0, 20/max(E,1)]), q [0, 0.9], psi [0.01, 5],
+// deltaPsi [0, 20/max(E,1)], lambda [0.01, 10].
 // Starts: k0 = 1 with alpha in {0.02, 0.15}, n in {1, 2, 5} and three loop shapes
 // beta / (beta + gamma) in {0.5, 0.9, 1.4} at beta + gamma = 0.8^-n (ultimate z 0.8),
-// no degradation. The pinching law starts from the Bouc-Wen optimum without pinching and from
-// 24 starts scattered around it (pinching parameters over their whole box, the Bouc-Wen
-// shape within +-25 % of the optimum; a fixed seed), the two best polished. Bilinear: k0 [0.05 K, 20 K], fy [0.02, 2] x the peak force, b [0, 0.9].
+// no degradation. The pinching law's search from the Bouc-Wen optimum: PinchingSearch.h.
+// Bilinear: k0 [0.05 K, 20 K], fy [0.02, 2] x the peak force, b [0, 0.9].
 // mrDamper (rate-dependent; the history's times are needed): normalized like the Bouc-Wen
 // laws, A = 1 fixed (A and alpha are not separately identifiable), and with v the history's
 // typical normalized velocity (pi reversals / duration x half the deformation range / uRef)
@@ -54,6 +54,11 @@ enum class CalibrationOffsets { Off, On, Auto };
 std::optional<CalibrationOffsets> calibrationOffsetsFromName(const std::string& name);
 const char* calibrationOffsetsName(CalibrationOffsets offsets);
 
+/// The pinching law's search (PinchingSearch.h): Global, offline (the wide box and the
+/// space-filling screening), or Anchor, the online anchors' and refits' cheaper search (p's box
+/// [0, 20/max(E,1)], scattered starts only).
+enum class PinchingSearch { Global, Anchor };
+
 struct CalibrationRequest {
     std::string law = "boucWen";
     CalibrationOffsets offsets = CalibrationOffsets::Off; ///< fit u0 and F0 (see above)
@@ -62,7 +67,10 @@ struct CalibrationRequest {
     std::vector<std::string> fitted;     ///< the parameters to fit ("": the law's default set)
     std::size_t window = 0;              ///< score the last `window` samples (0 = all)
     std::size_t reducedSamples = 800;    ///< the global phase's history (Calibration.h)
-    int pinchingStarts = 40;             ///< scattered starts of the pinching search
+    PinchingSearch pinchingSearch = PinchingSearch::Global; ///< (boucWenPinching)
+    int pinchingStarts = 40;             ///< scattered starts of the pinching search (Anchor)
+    int pinchingScreen = 2048;           ///< screened points of the pinching search (Global)
+    int pinchingKept = 12;               ///< ... the best of them minimized (Global)
     std::size_t polishSamples = 0;       ///< CalibrationSpec::polishSamples (0: whole history)
     int localIterations = 0;             ///< the local phase's iteration budget (0: default)
     const std::atomic<bool>* cancel = nullptr; ///< CalibrationSpec::cancel

@@ -244,6 +244,7 @@ bool NelderMeadIdentifier::fittedBox(const HistoryScales& scales,
 {
     CalibrationRequest request;
     request.law = m_law;
+    request.pinchingSearch = PinchingSearch::Anchor; // the online box (PinchingSearch.h)
     for (const auto& name : m_s.parameters)
         if (!m_s.bounds.count(name))
             request.fitted.push_back(name);
@@ -341,6 +342,7 @@ CalibrationRequest NelderMeadIdentifier::refitRequest(bool final) const
     request.fitted = m_s.parameters;
     request.window = final ? 0 : static_cast<std::size_t>(std::max(0, m_s.windowSteps));
     request.time = m_t;
+    request.pinchingSearch = PinchingSearch::Anchor; // the online search (PinchingSearch.h)
     if (isBoucWenFamily(m_law) || m_law == "mrDamper") {
         // the estimate's normalization: the fit's values are in its units
         request.uRef = m_all.at("uRef");

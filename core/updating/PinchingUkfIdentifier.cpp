@@ -42,6 +42,7 @@ PinchingUkfIdentifier::PinchingUkfIdentifier(const BoucWenPinchingParameters& in
     // Until the first anchor: the default box at unit scales, the user's bounds on top.
     CalibrationRequest request;
     request.law = "boucWenPinching";
+    request.pinchingSearch = PinchingSearch::Anchor; // the anchors' box (PinchingUkfJobs.h)
     request.bounds = bounds;
     m_bounds.fill({NAN, NAN});
     for (const auto& b : defaultCalibrationSpec(request, HistoryScales{true, "", 1, 1, 1, 1}).fitted)

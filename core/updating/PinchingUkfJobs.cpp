@@ -58,6 +58,7 @@ PinchingAnchorJobResult pinchingAnchorJob(const PinchingAnchorJobInput& in,
         request.uRef = in.uRef;
         request.fRef = in.fRef;
         request.reducedSamples = in.budget.reducedSamples;
+        request.pinchingSearch = PinchingSearch::Anchor;
         request.pinchingStarts = in.budget.pinchingStarts;
         request.polishSamples = in.budget.polishSamples;
         request.localIterations = in.budget.localIterations;

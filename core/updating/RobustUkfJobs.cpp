@@ -140,30 +140,6 @@ bool insideBox(const CalibrationSpec& spec, const BoucWenPinchingParameters& p) 
     });
 }
 
-BoucWenParameters rescaled(const BoucWenParameters& p, double uRef, double fRef) {
-    const double s = p.uRef / uRef, c = p.fRef / fRef;
-    BoucWenParameters q = p;
-    q.k0 = p.k0 * c / s;
-    const double sn = std::pow(s, -p.n);
-    q.beta = p.beta * sn;
-    q.gamma = p.gamma * sn;
-    q.deltaA = p.deltaA / (c * s);
-    q.deltaNu = p.deltaNu / (c * s);
-    q.deltaEta = p.deltaEta / (c * s);
-    q.uRef = uRef;
-    q.fRef = fRef;
-    return q;
-}
-
-BoucWenState rescaledState(const BoucWenState& st, const BoucWenParameters& from,
-                           const BoucWenParameters& to) {
-    const double s = from.uRef / to.uRef, c = from.fRef / to.fRef;
-    BoucWenState out = st;
-    out.z = st.z * s;
-    out.e = st.e * c * s;
-    return out;
-}
-
 bool laterAnchorScales(CalibrationRequest& request, const HistoryScales& scales, double uRef,
                        double fRef, double factor) {
     const bool move = scales.ok && (movedBy(scales.uRef, uRef, factor) ||
@@ -216,17 +192,6 @@ VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double
 VerifyJobResult verifyJob(const std::vector<double>& u, const std::vector<double>& f,
                           const BoucWenPinchingParameters& p) {
     return verifyLaw(u, f, p);
-}
-
-BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uRef,
-                                   double fRef) {
-    const double s = p.boucWen.uRef / uRef, c = p.boucWen.fRef / fRef;
-    BoucWenPinchingParameters q = p;
-    q.boucWen = rescaled(p.boucWen, uRef, fRef);
-    q.pinching.p = p.pinching.p / (c * s);
-    q.pinching.psi = p.pinching.psi * s;
-    q.pinching.deltaPsi = p.pinching.deltaPsi / c;
-    return q;
 }
 
 AnchorJobResult anchorJob(const AnchorJobInput& in, const std::atomic<bool>* cancel) {

@@ -40,13 +40,6 @@ inline constexpr BoucWenUkfIndex kRobustUkfParameters[] = {
 /// The field of p that i names (i one of kRobustUkfParameters).
 double& robustUkfField(BoucWenParameters& p, BoucWenUkfIndex i);
 
-/// The same physical Bouc-Wen model in the scales (uRef, fRef) (both > 0): with s = p.uRef /
-/// uRef and c = p.fRef / fRef, k0 c / s, beta and gamma s^-n, deltaA, deltaNu, deltaEta
-/// 1 / (c s); alpha, n, A0 unchanged (the law's equations, docs/method.md). The state maps as
-/// z s, e c s (rescaledState).
-BoucWenParameters rescaled(const BoucWenParameters& p, double uRef, double fRef);
-BoucWenState rescaledState(const BoucWenState& s, const BoucWenParameters& from,
-                           const BoucWenParameters& to);
 
 struct AnchorJobInput {
     std::vector<double> u, f;              ///< the history so far (physical units)
@@ -109,11 +102,6 @@ bool replayHistory(const std::vector<double>& u, const std::vector<double>& f,
 bool insideBox(const CalibrationSpec& spec, const BoucWenParameters& p);
 bool insideBox(const CalibrationSpec& spec, const BoucWenPinchingParameters& p);
 
-/// The same physical pinching model in the scales (uRef, fRef): the Bouc-Wen part as
-/// rescaled(); with s = p.uRef / uRef and c = p.fRef / fRef, z scales by s and e by c s, so
-/// the pinched zone's width psi s, deltaPsi / c, the energy rate p / (c s); zetaS, q, lambda
-/// unchanged (Eqs P2-P4, docs/hysteresis-laws.md).
-BoucWenPinchingParameters rescaled(const BoucWenPinchingParameters& p, double uRef, double fRef);
 
 // The anchor jobs' shared steps (the robust, pinching and MR damper UKFs' anchorJob()s).
 

@@ -11,12 +11,15 @@
 #include "core/identification/CalibrationDefaults.h"
 #include "core/identification/HistoryScales.h"
 #include "core/identification/LevenbergMarquardt.h"
+#include "core/identification/PinchingSearch.h"
 
 #include "SyntheticHistory.h"
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 using namespace hsmu;
@@ -143,6 +146,56 @@ private slots:
             f2 += f[k] * f[k];
         }
         QVERIFY(std::abs(std::sqrt(e2 / f2) - r.nrmse) < 1e-9);
+    }
+
+    void screenedPointsJoinTheStarts() {
+        // A start in the wrong place and no minimization at all (0 iterations): the result is
+        // the best screened point, replayed once each on the reduced history.
+        BoucWenParameters p;
+        p.k0 = 1.2;
+        p.alpha = 0.1;
+        p.n = 2.0;
+        p.beta = 0.9;
+        p.gamma = 0.3;
+        BoucWen truth(p);
+        const std::vector<double> u = cyclic(3.0, 4, 200);
+        const std::vector<double> f = forcesOf(truth, u);
+        CalibrationSpec spec;
+        spec.fixed = {{"A0", 1.0}, {"deltaA", 0.0}, {"uRef", 1.0}, {"fRef", 1.0},
+                      {"n", 2.0}, {"deltaNu", 0.0}, {"deltaEta", 0.0}};
+        spec.fitted = {{"k0", 0.1, 10.0, 1.0}, {"alpha", 0.0, 0.9, 0.05},
+                       {"beta", -5.0, 5.0, 1.0}, {"gamma", -5.0, 5.0, 1.0}};
+        spec.starts = {{5.0, 0.6, 3.0, -1.0}};
+        spec.global.maxIterations = 0;
+        spec.local.maxIterations = 0;
+        const CalibrationResult far = calibrate(u, f, spec);
+        QVERIFY2(far.ok && far.nrmse > 0.1, qPrintable(QString::number(far.nrmse)));
+        spec.screened = {{3.0, 0.5, 1.0, 1.0}, {1.2, 0.1, 0.9, 0.3}, {0.5, 0.2, 2.0, -1.0}};
+        spec.screenSamples = 100;
+        spec.screenKept = 1;
+        const CalibrationResult r = calibrate(u, f, spec);
+        QVERIFY2(r.ok && r.nrmse < 1e-12, qPrintable(QString::number(r.nrmse)));
+        QCOMPARE(r.parameters.at("beta"), 0.9);
+        QVERIFY(r.residualEvaluations >= far.residualEvaluations + 1 + 3); // a start, 3 screened
+    }
+
+    void scrambledHaltonIsStratified() {
+        // The first b^k points of a base-b coordinate fall one in each interval of 1 / b^k.
+        const auto x = scrambledHalton(3, 125, 7u);
+        QCOMPARE(int(x.size()), 125);
+        for (const auto& [dim, base, count] : {std::tuple{0, 2, 64}, std::tuple{1, 3, 81},
+                                               std::tuple{2, 5, 125}}) {
+            std::vector<int> hits(std::size_t(count), 0);
+            for (int i = 0; i < count; ++i) {
+                const double v = x[std::size_t(i)][std::size_t(dim)];
+                QVERIFY(v >= 0.0 && v < 1.0);
+                ++hits[std::size_t(v * count + 1e-9)]; // (1/3 and 1/5 are not exact)
+            }
+            QVERIFY2(std::all_of(hits.begin(), hits.end(), [](int h) { return h == 1; }),
+                     qPrintable(QString("base %1").arg(base)));
+        }
+        QCOMPARE(scrambledHalton(3, 125, 7u), x); // deterministic
+        QVERIFY(scrambledHalton(3, 125, 8u) != x);
     }
 
     void wideBetaGammaBoxesAreProjected() {

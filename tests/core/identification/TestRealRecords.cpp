@@ -235,7 +235,8 @@ private slots:
     }
 
     /// The pinching law (boucWenPinching) with no user input: within 5 % of the independent
-    /// Baber-Noori / Foliente fit on the three records that have one, and better than the
+    /// Baber-Noori / Foliente fit on the five shared records (issue 29; the MR damper's row is
+    /// not registered in CTest: not met yet, docs/validation.md), and better than the
     /// plain law's own optimum by a margin no plain fit can reach (so the search did leave
     /// the Bouc-Wen basin).
     void calibratesPinching_data() {
@@ -245,6 +246,8 @@ private slots:
         QTest::newRow("gill") << QString::fromStdString(kData + "/rc-column-gill1979/rc_column_force_disp.txt") << 0.105 << 0.138;
         QTest::newRow("soesianawati") << QString::fromStdString(kData + "/hysteresis/rc-column-soesianawati-unit1/soesianawati_unit1.txt") << 0.126 << 0.170;
         QTest::newRow("hdrb") << QString::fromStdString(kData + "/hysteresis/isolator-hdrb-gallardo2023/hdrb_test.txt") << 0.110 << 0.144;
+        QTest::newRow("mr-damper") << QString::fromStdString(kData + "/hysteresis/mr-damper-labcontrol-utfpr/mr_damper_4p1_0V.txt") << 0.184 << 0.222;
+        QTest::newRow("clt") << QString::fromStdString(kData + "/hysteresis/clt-steel-plate-connection-tannert-spc1/spc1.txt") << 0.141 << 0.173;
     }
 
     void calibratesPinching() {
@@ -256,13 +259,18 @@ private slots:
             QSKIP(qPrintable("shared record absent (a fresh machine has no ../shared/data): " + file));
         CalibrationRequest request;
         request.law = "boucWenPinching";
+        const std::clock_t cpu0 = std::clock();
         const CalibrationResult r = calibrateHistory(h.deformation, h.force, request);
+        const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
         QVERIFY2(r.ok, r.reason.c_str());
         qInfo("%s: pinching calibration NRMSE %.4f (reference %.3f, %.3fx), %d starts, %d "
-              "replays, %.2f s; zetaS %.3f q %.3f",
+              "replays, %.2f s wall, %.2f s CPU; zetaS %.3f p %.4g q %.3f psi %.4g deltaPsi "
+              "%.4g lambda %.4g n %.3f k0 %.4g uRef %.4g",
               qPrintable(QFileInfo(file).fileName()), r.nrmse, reference, r.nrmse / reference,
-              r.startsTried, r.residualEvaluations, r.computeSeconds, r.parameters.at("zetaS"),
-              r.parameters.at("q"));
+              r.startsTried, r.residualEvaluations, r.computeSeconds, cpu,
+              r.parameters.at("zetaS"), r.parameters.at("p"), r.parameters.at("q"),
+              r.parameters.at("psi"), r.parameters.at("deltaPsi"), r.parameters.at("lambda"),
+              r.parameters.at("n"), r.parameters.at("k0"), r.parameters.at("uRef"));
         QVERIFY2(r.nrmse <= 1.05 * reference,
                  qPrintable(QString("pinching NRMSE %1 > 1.05 x %2").arg(r.nrmse).arg(reference)));
         QVERIFY(r.nrmse < 0.9 * plainReference);
