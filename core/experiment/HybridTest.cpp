@@ -312,7 +312,8 @@ HybridTest::StepResult HybridTest::step()
     }
     m_state = State::Running;
     const double agNext = m_groundMotion.acceleration[m_step + 1];
-    const Eigen::VectorXd uTrial = m_integrator->predict();
+    m_integrator->predictInto(m_uTrial);
+    const Eigen::VectorXd& uTrial = m_uTrial;
     if (!uTrial.allFinite()) {
         enterHold(AlarmKind::IntegratorFault, "predicted displacement is not finite");
         return StepResult::Held;
@@ -334,8 +335,10 @@ HybridTest::StepResult HybridTest::step()
         enterHold(s.limit ? AlarmKind::LimitExceeded : AlarmKind::ControlFault, s.message);
         return StepResult::Held;
     }
-    const Eigen::VectorXd r = m_structure->restoringForce();
-    const Integrator::Snapshot before = m_integrator->snapshot();
+    m_structure->restoringForce(m_r);
+    const Eigen::VectorXd& r = m_r;
+    m_integrator->snapshot(m_before);
+    const Integrator::Snapshot& before = m_before;
     if (!r.allFinite() || !m_integrator->correct(r, agNext)) {
         enterHold(AlarmKind::IntegratorFault, "restoring force or response is not finite");
         return StepResult::Held;
@@ -384,10 +387,18 @@ void HybridTest::publish()
     m_structure->toFull(m_integrator->acceleration(), rec.a);
     const auto& elements = m_structure->elements();
     rec.elements.resize(elements.size());
+    if (m_step == 0 || !m_channelElementsFound) {
+        m_channelElements.clear();
+        for (const auto& e : elements)
+            if (!elementChannels(*e).empty())
+                m_channelElements.push_back(e.get());
+        m_channelElementsFound = true;
+    }
     rec.channels.clear();
+    for (const Element* e : m_channelElements)
+        appendChannelValues(*e, rec.channels);
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const Element& e = *elements[i];
-        appendChannelValues(e, rec.channels);
         ElementSample& s = rec.elements[i];
         if (m_step == 0) {
             s = ElementSample{};

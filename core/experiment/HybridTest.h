@@ -25,6 +25,7 @@
 // The test is not held for it: the step's own checks hold it if the response diverges.
 
 #include "core/groundmotion/GroundMotion.h"
+#include "core/integration/Integrator.h"
 #include "core/integration/StabilityCheck.h"
 #include "core/experimental/SiteStatus.h"
 #include "core/util/Alarm.h"
@@ -150,6 +151,13 @@ private:
     std::unique_ptr<ModelUpdater> m_updater;
     StepRecord m_record;
     Eigen::VectorXd m_uFull; // step()'s trial at every DOF (storage reused)
+    // step()'s trial, restoring force and undo state, kept so that a step allocates nothing.
+    Eigen::VectorXd m_uTrial, m_r;
+    Integrator::Snapshot m_before;
+    // The elements with channels (ElementChannels.h), in structure order: found once (step
+    // 0) rather than asked of every element every step.
+    std::vector<const Element*> m_channelElements;
+    bool m_channelElementsFound = false;
     std::shared_ptr<SiteMonitor> m_siteMonitor = std::make_shared<SiteMonitor>();
     std::vector<SiteStatus> m_sites; // rebuilt at prepare, hold and resume; refreshed per step
     void updateSites();

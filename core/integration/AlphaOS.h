@@ -35,7 +35,11 @@ public:
     Eigen::VectorXd predict() const override;
     bool correct(const Eigen::VectorXd& rTrial, double agNext) override;
     double alpha() const { return m_alpha; }
-    Snapshot snapshot() const override { return {m_u, m_v, m_a, m_fPrev}; }
+    void snapshot(Snapshot& into) const override
+    {
+        Integrator::snapshot(into);
+        into.extra = m_fPrev;
+    }
     void restore(const Snapshot& s) override
     {
         Integrator::restore(s);

@@ -14,19 +14,27 @@ void ExplicitNewmark::initialize(const Structure& s, double dt, const Eigen::Vec
 
 Eigen::VectorXd ExplicitNewmark::predict() const
 {
-    return m_u + m_dt * m_v + 0.5 * m_dt * m_dt * m_a;
+    Eigen::VectorXd u;
+    predictInto(u);
+    return u;
+}
+
+void ExplicitNewmark::predictInto(Eigen::VectorXd& out) const
+{
+    out = m_u + m_dt * m_v + 0.5 * m_dt * m_dt * m_a;
 }
 
 bool ExplicitNewmark::correct(const Eigen::VectorXd& rTrial, double agNext)
 {
-    const Eigen::VectorXd vHalf = m_v + (1.0 - kGamma) * m_dt * m_a;
-    const Eigen::VectorXd rhs = -m_s->influence() * agNext - rTrial - m_c * vHalf;
-    const Eigen::VectorXd aNext = m_lhs.solve(rhs);
-    if (!aNext.allFinite())
+    m_vHalf = m_v + (1.0 - kGamma) * m_dt * m_a;
+    m_c.multiply(m_vHalf, m_cv);
+    m_rhs = -m_s->influence() * agNext - rTrial - m_cv;
+    m_lhs.solve(m_rhs, m_aNext);
+    if (!m_aNext.allFinite())
         return false;
     m_u = m_u + m_dt * m_v + 0.5 * m_dt * m_dt * m_a; // predict(), in place
-    m_v = vHalf + kGamma * m_dt * aNext;
-    m_a = aNext;
+    m_v = m_vHalf + kGamma * m_dt * m_aNext;
+    m_a.swap(m_aNext); // m_aNext's old storage is overwritten by the next solve
     return true;
 }
 

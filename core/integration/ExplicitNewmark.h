@@ -26,12 +26,15 @@ public:
     void initialize(const Structure& s, double dt, const Eigen::VectorXd& u0,
                     const Eigen::VectorXd& v0, double ag0, const Eigen::VectorXd& r0) override;
     Eigen::VectorXd predict() const override;
+    void predictInto(Eigen::VectorXd& out) const override;
     bool correct(const Eigen::VectorXd& rTrial, double agNext) override;
 
 private:
     static constexpr double kGamma = 0.5;
     LeftHandSide m_lhs; // M + gamma dt C, factored once
     StepMatrix m_c;     // C
+    // correct()'s intermediate vectors, kept so that a step allocates nothing (issue 27).
+    Eigen::VectorXd m_vHalf, m_cv, m_rhs, m_aNext;
 };
 
 } // namespace hsmu

@@ -31,6 +31,9 @@ public:
                             const Eigen::VectorXd& v0, double ag0, const Eigen::VectorXd& r0);
     /// The displacement at which the elements are evaluated for step n+1.
     virtual Eigen::VectorXd predict() const = 0;
+    /// predict() into out; a scheme that overrides it reuses out's storage (no allocation
+    /// once sized: the stepping loop calls it every step, issue 27).
+    virtual void predictInto(Eigen::VectorXd& out) const { out = predict(); }
     /// Complete step n+1 from the restoring force measured at predict() and ag[n+1].
     /// Returns false (state unchanged) if the result is not finite.
     virtual bool correct(const Eigen::VectorXd& rTrial, double agNext) = 0;
@@ -39,7 +42,15 @@ public:
     struct Snapshot {
         Eigen::VectorXd u, v, a, extra;
     };
-    virtual Snapshot snapshot() const { return {m_u, m_v, m_a, {}}; }
+    /// Copies the state into `into`, reusing its storage (no allocation once sized: taken
+    /// every step, issue 27).
+    virtual void snapshot(Snapshot& into) const
+    {
+        into.u = m_u;
+        into.v = m_v;
+        into.a = m_a;
+        into.extra.resize(0);
+    }
     virtual void restore(const Snapshot& s)
     {
         m_u = s.u;

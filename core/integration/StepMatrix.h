@@ -30,9 +30,17 @@ public:
     /// y = A x.
     Eigen::VectorXd operator*(const Eigen::VectorXd& x) const
     {
+        Eigen::VectorXd y;
+        multiply(x, y);
+        return y;
+    }
+    /// y = A x into y, reusing its storage (no allocation once sized); y must not be x.
+    void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const
+    {
         if (m_dense)
-            return m_d * x;
-        return m_s * x;
+            y.noalias() = m_d * x;
+        else
+            y.noalias() = m_s * x;
     }
 
 private:

@@ -8,16 +8,6 @@
 
 namespace hsmu {
 
-namespace {
-
-void appendValue(std::string& line, double value) {
-    char buf[1 + kTenDigitsMaxChars];
-    buf[0] = ',';
-    line.append(buf, writeTenDigits(buf + 1, value));
-}
-
-} // namespace
-
 std::size_t StepCsvWriter::columnCount(const RunLayout& layout) {
     std::size_t n = 2 + 3 * layout.dofNames.size();
     for (const auto& e : layout.elements)
@@ -108,6 +98,7 @@ StepCsvWriter::StepCsvWriter(const std::string& path, const RunLayout& layout)
     if (!m_out)
         throw std::runtime_error(path + ": cannot be opened for writing");
     m_out << header(m_layout) << '\n';
+    m_buffer.resize(kBufferBytes + columnCount(m_layout) * (kTenDigitsMaxChars + 1) + 1);
 }
 
 StepCsvWriter::~StepCsvWriter() {
@@ -118,13 +109,27 @@ void StepCsvWriter::onStep(const StepRecord& record) {
     if (!m_out.is_open())
         return;
     rowValues(m_layout, record, m_values);
-    m_line.clear();
-    for (double v : m_values)
-        appendValue(m_line, v);
-    m_line.erase(0, 1); // no leading comma
-    m_line.push_back('\n');
-    m_out.write(m_line.data(), std::streamsize(m_line.size()));
-    if (++m_rows % kFlushInterval == 0)
+    // Room for the row: each value and its separator within kTenDigitsMaxChars + 1 bytes.
+    const std::size_t room = m_values.size() * (kTenDigitsMaxChars + 1) + 1;
+    if (m_buffer.size() - m_used < room)
+        m_buffer.resize(m_used + room);
+    char* const row = m_buffer.data() + m_used;
+    char* p = row;
+    for (double v : m_values) {
+        p = writeTenDigits(p, v);
+        *p++ = ',';
+    }
+    p[-1] = '\n'; // the last separator ends the row
+    m_used += std::size_t(p - row);
+    const bool flush = ++m_rows % kFlushInterval == 0;
+    if (flush || m_used >= kBufferBytes)
+        writeBuffered(flush);
+}
+
+void StepCsvWriter::writeBuffered(bool flush) {
+    m_out.write(m_buffer.data(), std::streamsize(m_used));
+    m_used = 0;
+    if (flush)
         m_out.flush();
     if (!m_out)
         m_failed = true;
@@ -132,9 +137,7 @@ void StepCsvWriter::onStep(const StepRecord& record) {
 
 bool StepCsvWriter::finish() {
     if (m_out.is_open()) {
-        m_out.flush();
-        if (!m_out)
-            m_failed = true;
+        writeBuffered(true);
         m_out.close();
     }
     return !m_failed;

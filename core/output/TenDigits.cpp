@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstring>
 
+static_assert(std::endian::native == std::endian::little, "eightDigits() lays digits out little-endian");
+
 namespace hsmu {
 
 namespace {
@@ -61,6 +63,19 @@ bool significand(double ax, std::uint64_t& n, int& e) {
     return false;
 }
 
+/// The eight decimal digits of x < 10^8 as byte values 0..9, the first digit in the lowest
+/// byte (its first byte in memory on this little-endian target): x split into 4 + 4, 2 + 2
+/// and 1 + 1 digits in the lanes of one 64-bit word, each division by 100 or 10 a multiply
+/// and shift that is exact for the lane's range (x * 10486 >> 20 = x / 100 for x < 10^4,
+/// x * 103 >> 10 = x / 10 for x < 100).
+std::uint64_t eightDigits(std::uint32_t x) {
+    std::uint64_t v = std::uint64_t(x / 10000) | (std::uint64_t(x % 10000) << 32);
+    std::uint64_t hi = ((v * 10486) >> 20) & 0x0000007F0000007FULL;
+    v = hi | ((v - hi * 100) << 16);
+    hi = ((v * 103) >> 10) & 0x000F000F000F000FULL;
+    return hi | ((v - hi * 10) << 8);
+}
+
 } // namespace
 
 char* writeTenDigits(char* first, double x) {
@@ -71,47 +86,47 @@ char* writeTenDigits(char* first, double x) {
     int e = 0;
     if (!significand(ax, n, e))
         return exact(first, x);
-    char digits[10];
-    for (int i = 8; i >= 0; i -= 2) { // two digits at a time
-        std::memcpy(digits + i, kPairs + 2 * (n % 100), 2);
-        n /= 100;
-    }
-    int used = 10; // significant digits left once trailing zeros are dropped
-    while (used > 1 && digits[used - 1] == '0')
-        --used;
+    // The ten digits at digits[0..9]; the rest is room for the fixed-size copies below.
+    char digits[24] = {};
+    const std::uint32_t head = std::uint32_t(n / 100000000); // 10..99
+    const std::uint64_t tail = eightDigits(std::uint32_t(n % 100000000));
+    std::memcpy(digits, kPairs + 2 * head, 2);
+    const std::uint64_t ascii = tail + 0x3030303030303030ULL;
+    std::memcpy(digits + 2, &ascii, 8);
+    // Significant digits once trailing zeros are dropped: the last digits are tail's high bytes.
+    const int used = tail != 0 ? 10 - std::countl_zero(tail) / 8 : (head % 10 != 0 ? 2 : 1);
     char* p = first;
     if (std::signbit(x))
         *p++ = '-';
+    // Fixed-size copies (single stores) may write past the text's end, never past
+    // first + kTenDigitsMaxChars; the end returned is what counts.
     if (e < -4 || e >= 10) { // exponential: d[.ddd]e+XX
-        *p++ = digits[0];
-        if (used > 1) {
-            *p++ = '.';
-            std::memcpy(p, digits + 1, std::size_t(used - 1));
-            p += used - 1;
-        }
+        p[0] = digits[0];
+        p[1] = '.';
+        std::memcpy(p + 2, digits + 1, 9);
+        p += used > 1 ? used + 1 : 1;
         *p++ = 'e';
         *p++ = e < 0 ? '-' : '+';
         const int a = e < 0 ? -e : e;
         if (a >= 100)
             *p++ = char('0' + a / 100);
-        *p++ = char('0' + a / 10 % 10);
-        *p++ = char('0' + a % 10);
+        std::memcpy(p, kPairs + 2 * (a % 100), 2);
+        p += 2;
     } else if (e >= 0) { // ddd[.ddd]
         const int whole = e + 1;
-        std::memcpy(p, digits, std::size_t(whole));
-        p += whole;
+        std::memcpy(p, digits, 10);
         if (used > whole) {
-            *p++ = '.';
-            std::memcpy(p, digits + whole, std::size_t(used - whole));
-            p += used - whole;
+            p[whole] = '.';
+            std::memcpy(p + whole + 1, digits + whole, 9);
+            p += used + 1;
+        } else {
+            p += whole;
         }
     } else { // 0.000ddd
-        *p++ = '0';
-        *p++ = '.';
-        for (int i = 0; i < -e - 1; ++i)
-            *p++ = '0';
-        std::memcpy(p, digits, std::size_t(used));
-        p += used;
+        const int zeros = -e - 1; // 0..3
+        std::memcpy(p, "0.000", 5);
+        std::memcpy(p + 2 + zeros, digits, 10);
+        p += 2 + zeros + used;
     }
     return p;
 }

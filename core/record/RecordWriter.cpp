@@ -11,6 +11,7 @@
 #include "core/record/RecordError.h"
 #include "core/record/RecordSchema.h"
 #include "core/record/RecordThread.h"
+#include "core/util/CoarseClock.h"
 
 #include <algorithm>
 #include <atomic>
@@ -23,7 +24,7 @@ namespace hsmu {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = CoarseClock; // the flush interval is checked once a row
 const double kNaN = std::nan("");
 
 /// Copies text into a fixed field of `chars` bytes, cut at a UTF-8 character boundary.
@@ -299,7 +300,10 @@ void RecordWriter::onStep(const StepRecord& r) {
                 for (const UpdateEvent& ev : *events)
                     d.bufferEvent(ev);
     }
-    if (d.fill.bTime.size() >= std::size_t(d.batchRows) ||
+    // A batch ends where a chunk does (row counts that are multiples of batchRows), also after
+    // a flush by time cut the previous one short: otherwise every later chunk would be
+    // written (and checksummed) twice, once partly filled.
+    if (d.received % d.batchRows == 0 ||
         Clock::now() - d.lastFlush >= std::chrono::duration<double>(kFlushInterval))
         d.flush(false);
 }

@@ -19,9 +19,10 @@
 // The file is created with the latest format and switched to SWMR write mode, so another
 // process can read it (RecordReader, h5py with swmr=True) while the run goes on. Rows are
 // buffered in memory and appended (extend + write + H5Fflush) at least every kFlushInterval
-// seconds of wall time, every batchRowsFor() rows (whole chunks; kMaxBufferedRows at most), and by
-// flush() / finish() / the destructor: a process killed mid-run leaves a file holding every
-// step flushed before.
+// seconds of wall time (on CoarseClock), whenever the rows received reach a multiple of
+// batchRowsFor() (whole chunks, also after a flush by time cut a batch short;
+// kMaxBufferedRows at most), and by flush() / finish() / the destructor: a process killed
+// mid-run leaves a file holding every step flushed before.
 // Off the stepping thread (issue 27): onStep() only copies the row into a batch whose
 // capacity was reserved up front (no allocation per row); a flush hands the batch to the
 // writer's own thread (RecordThread), which writes it while the next batch fills. A flush

@@ -14,6 +14,7 @@
 #include "core/record/RecordError.h"
 #include "core/record/RecordSchema.h"
 #include "core/record/RecordThread.h"
+#include "core/util/CoarseClock.h"
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -72,7 +73,7 @@ struct RecordWriter::Impl {
     std::atomic<bool> failed{false}; // set by the record thread once `error` is written
     bool closed = false;
     std::string error;
-    std::chrono::steady_clock::time_point lastFlush = std::chrono::steady_clock::now();
+    CoarseClock::time_point lastFlush = CoarseClock::now(); // read once a row: coarse
 
     void create(const RecordStart& start);
     void createUpdating(hid_t root);

@@ -3,6 +3,7 @@
 #include "core/output/RunLayout.h"
 #include "core/output/RunSummary.h"
 #include "core/updating/ModelUpdater.h"
+#include "core/util/CoarseClock.h"
 
 #include <nlohmann/json.hpp>
 
@@ -212,7 +213,8 @@ HybridTest::StepResult TestSession::stepOnce() {
 }
 
 TestSession::Progress TestSession::advance(double budgetSeconds) {
-    const Clock::time_point start = Clock::now();
+    // The budget on the coarse clock (a tick's resolution): read once a step (CoarseClock.h).
+    const CoarseClock::time_point start = CoarseClock::now();
     Progress out{Status::Advanced, 0.0};
     for (;;) {
         if (takeEmergency()) {
@@ -247,7 +249,7 @@ TestSession::Progress TestSession::advance(double budgetSeconds) {
         }
         if (r == HybridTest::StepResult::Held)
             continue; // the policy decides (above): wait, resume or stand
-        if (seconds(Clock::now() - start) >= budgetSeconds)
+        if (std::chrono::duration<double>(CoarseClock::now() - start).count() >= budgetSeconds)
             break;
     }
     tick();

@@ -76,7 +76,9 @@ public:
     void addObserver(StepObserver* o) { m_test->addObserver(o); }
     void removeObserver(StepObserver* o) { m_test->removeObserver(o); }
 
-    /// Step for at most budget seconds of wall time (at least one step unless paced or held).
+    /// Step for at most budget seconds of wall time (at least one step unless paced or held),
+    /// measured on the coarse clock (core/util/CoarseClock.h: up to one kernel tick, 1-10 ms,
+    /// more).
     /// Honours a pending emergency hold before every step, the pace, and the reconnect policy.
     Progress advance(double budgetSeconds);
     /// Exactly one step, ignoring the pace (the console's single step).

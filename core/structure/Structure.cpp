@@ -241,13 +241,19 @@ ElementStatus Structure::setTrial(const Eigen::VectorXd& uFree)
 
 Eigen::VectorXd Structure::restoringForce() const
 {
+    Eigen::VectorXd r;
+    restoringForce(r);
+    return r;
+}
+
+void Structure::restoringForce(Eigen::VectorXd& r) const
+{
     m_rFull.setZero(fullDofCount());
     for (const auto& e : m_elements)
         e->addNodalForces(m_rFull);
-    Eigen::VectorXd r = Eigen::VectorXd::Zero(freeDofCount());
+    r.setZero(freeDofCount());
     for (std::size_t i = 0; i < m_freeOf.size(); ++i) // T^T r_full
         r[m_freeOf[i]] += m_rFull[Eigen::Index(i)];
-    return r;
 }
 
 ElementStatus Structure::commit()

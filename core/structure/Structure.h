@@ -102,6 +102,8 @@ public:
     ElementStatus setTrial(const Eigen::VectorXd& uFree);
     /// Restoring force over the free DOFs at the current trial state.
     Eigen::VectorXd restoringForce() const;
+    /// restoringForce() into r, reusing its storage (no allocation once sized; issue 27).
+    void restoringForce(Eigen::VectorXd& r) const;
     /// Commit every element, specimens first; returns the first failure.
     ElementStatus commit();
     void revert();

@@ -137,7 +137,10 @@ public:
         m_fPrev = -m_s->influence() * agNext - m_d.c * m_v - rNext;
         return true;
     }
-    Snapshot snapshot() const override { return {m_u, m_v, m_a, m_fPrev}; }
+    void snapshot(Snapshot& into) const override {
+        Integrator::snapshot(into);
+        into.extra = m_fPrev;
+    }
     void restore(const Snapshot& s) override {
         Integrator::restore(s);
         m_fPrev = s.extra;
