@@ -4,21 +4,23 @@
 
 namespace hsmu {
 
-const char* actuatorModelName(const ActuatorModel& m)
-{
+const char* actuatorModelName(const ActuatorModel& m) {
     switch (m.type) {
-    case ActuatorModel::Type::Lag: return "lag";
-    case ActuatorModel::Type::Delay: return "delay";
-    case ActuatorModel::Type::ServoHydraulic: return "servoHydraulic";
-    case ActuatorModel::Type::Ideal: break;
+    case ActuatorModel::Type::Lag:
+        return "lag";
+    case ActuatorModel::Type::Delay:
+        return "delay";
+    case ActuatorModel::Type::ServoHydraulic:
+        return "servoHydraulic";
+    case ActuatorModel::Type::Ideal:
+        break;
     }
     return "ideal";
 }
 
 ActuatorTracker::ActuatorTracker(const ActuatorModel& model) : m_model(model) {}
 
-std::string ActuatorTracker::prepare(double dt)
-{
+std::string ActuatorTracker::prepare(double dt) {
     if (!(dt > 0.0))
         return "dt must be > 0";
     m_dt = dt;
@@ -37,16 +39,15 @@ std::string ActuatorTracker::prepare(double dt)
     return {};
 }
 
-double ActuatorTracker::trial(double command, std::string& why)
-{
+double ActuatorTracker::trial(double command, std::string& why) {
     why.clear();
     m_trialCommand = command;
     m_hasTrial = true;
     switch (m_model.type) {
     case ActuatorModel::Type::Lag:
         m_trial = m_model.timeConstant > 0.0 && m_dt > 0.0
-                      ? m_committed + (command - m_committed) *
-                                          (1.0 - std::exp(-m_dt / m_model.timeConstant))
+                      ? m_committed +
+                            (command - m_committed) * (1.0 - std::exp(-m_dt / m_model.timeConstant))
                       : command;
         break;
     case ActuatorModel::Type::Delay:
@@ -68,8 +69,7 @@ double ActuatorTracker::trial(double command, std::string& why)
     return m_trial;
 }
 
-void ActuatorTracker::commit()
-{
+void ActuatorTracker::commit() {
     if (!m_hasTrial)
         return;
     m_committed = m_trial;
@@ -82,8 +82,7 @@ void ActuatorTracker::commit()
     m_hasTrial = false;
 }
 
-void ActuatorTracker::revert()
-{
+void ActuatorTracker::revert() {
     m_hasTrial = false;
     m_trial = m_committed;
     m_servoTrial.reset();

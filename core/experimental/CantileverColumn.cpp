@@ -7,8 +7,7 @@ namespace hsmu {
 
 CantileverColumn::CantileverColumn(std::unique_ptr<HysteresisLaw> axial,
                                    std::unique_ptr<HysteresisLaw> hinge, double length, double ei)
-    : m_axial(std::move(axial)), m_hinge(std::move(hinge)), m_l(length), m_ei(ei)
-{
+    : m_axial(std::move(axial)), m_hinge(std::move(hinge)), m_l(length), m_ei(ei) {
     if (!m_axial || !m_hinge)
         throw std::invalid_argument("cantileverColumn: needs an axial and a hinge material");
     if (!(m_l > 0.0) || !std::isfinite(m_l))
@@ -19,20 +18,17 @@ CantileverColumn::CantileverColumn(std::unique_ptr<HysteresisLaw> axial,
     m_k = initialTangent();
 }
 
-std::string CantileverColumn::description() const
-{
+std::string CantileverColumn::description() const {
     return "cantilever column (hinge " + m_hinge->lawName() + ", axial " + m_axial->lawName() +
            ", P-Delta)";
 }
 
-void CantileverColumn::setTimeIncrement(double dt)
-{
+void CantileverColumn::setTimeIncrement(double dt) {
     m_axial->setTimeIncrement(dt);
     m_hinge->setTimeIncrement(dt);
 }
 
-Eigen::Matrix3d CantileverColumn::tangent(double ka, double kh, double n, double lateral) const
-{
+Eigen::Matrix3d CantileverColumn::tangent(double ka, double kh, double n, double lateral) const {
     const double l = m_l, c = m_ei / (l * l * l);
     Eigen::Matrix2d ke;
     ke << 12.0 * c, -6.0 * l * c, -6.0 * l * c, 4.0 * l * l * c; // eq. W1
@@ -42,18 +38,16 @@ Eigen::Matrix3d CantileverColumn::tangent(double ka, double kh, double n, double
     Eigen::Matrix3d k = Eigen::Matrix3d::Zero();
     k(0, 0) = ka;
     k.bottomRightCorner<2, 2>() = ke * b;
-    k(1, 1) += n / l;           // eq. W3
+    k(1, 1) += n / l; // eq. W3
     k(1, 0) += ka * lateral / l;
     return k;
 }
 
-Eigen::Matrix3d CantileverColumn::initialTangent() const
-{
+Eigen::Matrix3d CantileverColumn::initialTangent() const {
     return tangent(m_axial->initialTangent(), m_hinge->initialTangent(), 0.0, 0.0);
 }
 
-std::string CantileverColumn::setTrial(const Eigen::Vector3d& d)
-{
+std::string CantileverColumn::setTrial(const Eigen::Vector3d& d) {
     if (m_axial->setTrialDeformation(d[0]) != LawStatus::Ok)
         return "cantileverColumn: the axial material refused d_a = " + std::to_string(d[0]);
     const double l = m_l, ei = m_ei;
@@ -83,14 +77,12 @@ std::string CantileverColumn::setTrial(const Eigen::Vector3d& d)
     return {};
 }
 
-void CantileverColumn::commit()
-{
+void CantileverColumn::commit() {
     m_axial->commit();
     m_hinge->commit();
 }
 
-void CantileverColumn::revert()
-{
+void CantileverColumn::revert() {
     m_axial->revert();
     m_hinge->revert();
 }

@@ -42,7 +42,7 @@ public:
     /// The tangent at rest (initial tangents of both laws, N = 0).
     Eigen::Matrix3d initialTangent() const;
     double hingeRotation() const { return m_hinge->trialDeformation(); } ///< theta_h [rad]
-    double hingeMoment() const { return m_hinge->trialForce(); }          ///< M_h [kN m]
+    double hingeMoment() const { return m_hinge->trialForce(); }         ///< M_h [kN m]
     void commit();
     void revert();
     std::string description() const;

@@ -8,8 +8,7 @@ namespace hsmu {
 SpecimenBehindSetup::SpecimenBehindSetup(std::unique_ptr<ExperimentalSetup> setup,
                                          std::unique_ptr<CantileverColumn> specimen,
                                          std::vector<ActuatorMode> modes)
-    : m_setup(std::move(setup)), m_specimen(std::move(specimen)), m_modes(std::move(modes))
-{
+    : m_setup(std::move(setup)), m_specimen(std::move(specimen)), m_modes(std::move(modes)) {
     if (!m_setup || !m_specimen)
         throw std::invalid_argument("specimen behind setup: needs a setup and a specimen");
     if (m_setup->basicSize() != 3)
@@ -23,13 +22,11 @@ SpecimenBehindSetup::SpecimenBehindSetup(std::unique_ptr<ExperimentalSetup> setu
     m_s = m_f = m_cs = m_cf = Eigen::VectorXd::Zero(actuatorCount());
 }
 
-std::string SpecimenBehindSetup::description() const
-{
+std::string SpecimenBehindSetup::description() const {
     return m_specimen->description() + " behind " + m_setup->typeName();
 }
 
-std::string SpecimenBehindSetup::solve(const Eigen::VectorXd& a)
-{
+std::string SpecimenBehindSetup::solve(const Eigen::VectorXd& a) {
     const int m = actuatorCount(), n = 3 + m;
     Eigen::Vector3d d = m_cd;
     Eigen::VectorXd f = m_cf, s, r(n), step;
@@ -93,8 +90,7 @@ std::string SpecimenBehindSetup::solve(const Eigen::VectorXd& a)
     return why;
 }
 
-double SpecimenBehindSetup::channelStiffness(int i, bool initial) const
-{
+double SpecimenBehindSetup::channelStiffness(int i, bool initial) const {
     Eigen::MatrixXd j;
     if (!m_setup->jacobian(initial ? Eigen::Vector3d::Zero().eval() : m_d, j).ok)
         return 0.0;
@@ -106,16 +102,14 @@ double SpecimenBehindSetup::channelStiffness(int i, bool initial) const
     return c > 0.0 && std::isfinite(c) ? 1.0 / c : 0.0;
 }
 
-void SpecimenBehindSetup::commit()
-{
+void SpecimenBehindSetup::commit() {
     m_specimen->commit();
     m_cd = m_d;
     m_cs = m_s;
     m_cf = m_f;
 }
 
-void SpecimenBehindSetup::revert()
-{
+void SpecimenBehindSetup::revert() {
     m_specimen->revert();
     m_d = m_cd;
     m_s = m_cs;

@@ -36,8 +36,8 @@ public:
     void setTimeIncrement(double dt) { m_specimen->setTimeIncrement(dt); }
     /// Solve eq. W4 for the achieved commands a; "" or why not (nothing changes then).
     std::string solve(const Eigen::VectorXd& a);
-    const Eigen::VectorXd& strokes() const { return m_s; } ///< trial [m]
-    const Eigen::VectorXd& forces() const { return m_f; }  ///< trial [kN]
+    const Eigen::VectorXd& strokes() const { return m_s; }            ///< trial [m]
+    const Eigen::VectorXd& forces() const { return m_f; }             ///< trial [kN]
     const Eigen::Vector3d& basicDisplacements() const { return m_d; } ///< trial d
     double committedStroke(int i) const { return m_cs[i]; }
     double committedForce(int i) const { return m_cf[i]; }

@@ -2,7 +2,8 @@
 // simulated as a whole behind its setup (a cantilever column: Bouc-Wen moment-rotation hinge,
 // elastic axial, P-Delta from the held 500 kN; docs/setups.md "The specimen as a whole"), its
 // lateral actuator lagging and its vertical one delayed (per-channel actuator models), runs
-// over the native protocol equal to the in-process virtual lab to 1e-9; the controller still
+// over the native protocol and over OpenFresco's SimApp and GenericTCP (hsmu-controller
+// --protocol simapp|generictcp) equal to the in-process virtual lab to 1e-9; the controller still
 // checks each channel's limits (a tighter lateral stroke limit in its file trips there, naming
 // the channel, and the test holds with every step recorded once).
 #include "comms/link/ControlFactory.h"
@@ -10,6 +11,7 @@
 #include "ControllerProcess.h"
 #include "LinkFixture.h"
 #include "MultiActuatorFixture.h"
+#include "OfRawPeer.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -18,27 +20,20 @@ using namespace hsmu;
 using namespace hsmu::comms;
 using namespace linkfixture;
 using namespace multiactuator;
+using namespace ofpeer;
 
 namespace {
-
-TcpControlOptions patient() {
-    TcpControlOptions o; // generous: a loaded 2-core CI machine
-    o.connectTimeout = 20.0;
-    o.stepDeadline = 30.0;
-    o.silenceTimeout = 30.0;
-    return o;
-}
 
 /// The preset with its left column as a whole: Bouc-Wen hinge (1.6e5 kN m/rad, yield near
 /// 150 kN m), elastic axial 2e5 kN/m, EI 2e5 kN m^2; lateral lag 5 ms, vertical delay 20 ms.
 nlohmann::json wholeFrame(double duration) {
     nlohmann::json doc = preset(duration);
     nlohmann::json& col = doc["structure"]["elements"][0];
-    col["specimen"] = {{"type", "cantileverColumn"},
-                       {"hinge",
-                        {{"law", "boucWen"}, {"alpha", 0.05}, {"uRef", 0.001875}, {"fRef", 300.0}}},
-                       {"axial", {{"law", "elastic"}, {"k", 2e5}}},
-                       {"ei", 2e5}};
+    col["specimen"] = {
+        {"type", "cantileverColumn"},
+        {"hinge", {{"law", "boucWen"}, {"alpha", 0.05}, {"uRef", 0.001875}, {"fRef", 300.0}}},
+        {"axial", {{"law", "elastic"}, {"k", 2e5}}},
+        {"ei", 2e5}};
     for (auto& a : col["actuators"])
         a.erase("material");
     col["actuators"][0]["actuator"] = {{"type", "delay"}, {"delay", 0.02}};
@@ -59,14 +54,24 @@ private slots:
         m_config = writeConfig(m_dir.path(), "whole.json", wholeFrame(5.0));
     }
 
-    void nativeRunEqualsInProcessLab() {
-        ControllerProcess ctl(
-            {"--config", QString::fromStdString(m_config), "--pace", "fast", "--quiet"});
+    void runEqualsInProcessLab_data() {
+        QTest::addColumn<QString>("protocol");
+        QTest::newRow("native") << "native";
+        QTest::newRow("simapp") << "simapp";
+        QTest::newRow("generictcp") << "generictcp";
+    }
+
+    void runEqualsInProcessLab() {
+        QFETCH(QString, protocol);
+        ControllerProcess ctl({"--config", QString::fromStdString(m_config), "--protocol", protocol,
+                               "--pace", "fast", "--quiet"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(m_config);
-        const Run linked = runTest(
-            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::Tcp, "127.0.0.1", ctl.port()},
-                                    patient()));
+        const auto kind = protocol == "simapp"       ? LinkAddress::Kind::SimApp
+                          : protocol == "generictcp" ? LinkAddress::Kind::GenericTcp
+                                                     : LinkAddress::Kind::Tcp;
+        const Run linked =
+            runTest(cfg, makeControlFactory(LinkAddress{kind, "127.0.0.1", ctl.port()}, patientOptions()));
         QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
         QCOMPARE(linked.records.size(), std::size_t(501));
         QVERIFY(everyStepOnce(linked));
@@ -76,8 +81,8 @@ private slots:
         for (const auto& r : inProcess.records)
             peak = std::max(peak, std::abs(r.elements[0].force));
         const double diff = maxDifference(inProcess, linked);
-        qInfo("whole specimen over the native protocol: peak shear %.6g kN, max |diff| to the "
-              "in-process lab %.3g", peak, diff);
+        qInfo("whole specimen over %s: peak shear %.6g kN, max |diff| to the in-process lab %.3g",
+              qPrintable(protocol), peak, diff);
         QVERIFY(peak > 40.0); // the hinge yielded (M_y / L near 50 kN)
         QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
     }
@@ -88,10 +93,10 @@ private slots:
         const std::string path = writeConfig(m_dir.path(), "tight.json", tight);
         ControllerProcess ctl({"--config", QString::fromStdString(path), "--pace", "fast"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
-        const Run run = runTest(
-            loadConfigFile(m_config),
-            makeControlFactory(LinkAddress{LinkAddress::Kind::Tcp, "127.0.0.1", ctl.port()},
-                               patient()));
+        const Run run =
+            runTest(loadConfigFile(m_config),
+                    makeControlFactory(LinkAddress{LinkAddress::Kind::Tcp, "127.0.0.1", ctl.port()},
+                                       patientOptions()));
         QCOMPARE(run.state, HybridTest::State::Holding);
         QVERIFY(run.records.size() > 10);
         QVERIFY(everyStepOnce(run));

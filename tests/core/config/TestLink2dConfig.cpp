@@ -16,22 +16,12 @@
 #include <cmath>
 #include <fstream>
 
+#include "Link2dFrameFixture.h"
+
 using namespace hsmu;
+using namespace link2dframe;
 
 namespace {
-
-const std::string kPreset = HSMU_SOURCE_DIR "/resources/presets/two-actuator-column-frame.json";
-
-struct Recorder final : StepObserver {
-    std::vector<StepRecord> records;
-    void onStep(const StepRecord& r) override { records.push_back(r); }
-};
-
-nlohmann::json presetJson()
-{
-    std::ifstream in(kPreset);
-    return nlohmann::json::parse(in);
-}
 
 // The left column as the numerical twin: held axial load, the lateral actuator's law on the
 // shear DOF, a free rotation (no actuator on it).
@@ -45,36 +35,6 @@ nlohmann::json numericalTwin(nlohmann::json doc)
     col["basic"] = nlohmann::json::array({{{"heldForce", axial}}, {{"material", shear}},
                                           nlohmann::json::object()});
     return doc;
-}
-
-std::vector<StepRecord> run(const nlohmann::json& doc, double duration,
-                            std::unique_ptr<HybridTest>* keep = nullptr)
-{
-    TestConfig cfg = parseConfig(doc, "frame.json");
-    cfg.analysis.duration = duration;
-    auto test = buildHybridTest(cfg);
-    Recorder rec;
-    test->addObserver(&rec);
-    if (!test->prepare())
-        qFatal("%s", test->lastError().c_str());
-    while (test->step() == HybridTest::StepResult::Advanced) {
-    }
-    if (test->state() != HybridTest::State::Finished)
-        qFatal("not finished: %s", test->alarms().empty() ? "" : test->alarms().back().message.c_str());
-    test->removeObserver(&rec);
-    if (keep)
-        *keep = std::move(test);
-    return rec.records;
-}
-
-QString errorOf(const nlohmann::json& doc)
-{
-    try {
-        parseConfig(doc, "frame.json");
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    }
-    return {};
 }
 
 } // namespace

@@ -14,29 +14,19 @@
 #include <QtTest>
 
 #include <cmath>
-#include <fstream>
+
+#include "Link2dFrameFixture.h"
 
 using namespace hsmu;
+using namespace link2dframe;
 
 namespace {
 
 constexpr double kL = 3.0, kEI = 2e5, kHinge = 1.6e5, kP = 500.0;
 
-struct Recorder final : StepObserver {
-    std::vector<StepRecord> records;
-    void onStep(const StepRecord& r) override { records.push_back(r); }
-};
-
-nlohmann::json presetJson()
-{
-    std::ifstream in(HSMU_SOURCE_DIR "/resources/presets/two-actuator-column-frame.json");
-    return nlohmann::json::parse(in);
-}
-
 // The preset's left column simulated as a whole: the hinge law given, elastic axial 2e5 kN/m,
 // EI 2e5 kN m^2; the actuators without materials.
-nlohmann::json wholeColumn(nlohmann::json hinge)
-{
+nlohmann::json wholeColumn(nlohmann::json hinge) {
     nlohmann::json doc = presetJson();
     nlohmann::json& col = doc["structure"]["elements"][0];
     col["specimen"] = {{"type", "cantileverColumn"},
@@ -48,43 +38,8 @@ nlohmann::json wholeColumn(nlohmann::json hinge)
     return doc;
 }
 
-double freeTopStiffness() { return 1.0 / (kL * kL / kHinge + kL * kL * kL / (3.0 * kEI)); }
-
-std::vector<StepRecord> run(const nlohmann::json& doc, double duration,
-                            std::unique_ptr<HybridTest>* keep = nullptr)
-{
-    TestConfig cfg;
-    std::unique_ptr<HybridTest> test;
-    try {
-        cfg = parseConfig(doc, "frame.json");
-        cfg.analysis.duration = duration;
-        test = buildHybridTest(cfg);
-    } catch (const std::exception& e) {
-        qFatal("%s", e.what());
-    }
-    Recorder rec;
-    test->addObserver(&rec);
-    if (!test->prepare())
-        qFatal("%s", test->lastError().c_str());
-    while (test->step() == HybridTest::StepResult::Advanced) {
-    }
-    if (test->state() != HybridTest::State::Finished)
-        qFatal("not finished: %s",
-               test->alarms().empty() ? "" : test->alarms().back().message.c_str());
-    test->removeObserver(&rec);
-    if (keep)
-        *keep = std::move(test);
-    return rec.records;
-}
-
-QString errorOf(const nlohmann::json& doc)
-{
-    try {
-        parseConfig(doc, "frame.json");
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    }
-    return {};
+double freeTopStiffness() {
+    return 1.0 / (kL * kL / kHinge + kL * kL * kL / (3.0 * kEI));
 }
 
 } // namespace
@@ -97,8 +52,7 @@ private slots:
     // 500 kN (P-Delta), a free top. So the frame equals the frame whose left column is
     // numerical with that shear stiffness, the axial load held and a free rotation (K0 the
     // same: the lateral actuator's initialStiffness set to k - P / L).
-    void elasticHingeFrameEqualsClosedFormTwin()
-    {
+    void elasticHingeFrameEqualsClosedFormTwin() {
         auto whole = wholeColumn({{"law", "elastic"}, {"k", kHinge}});
         whole["structure"]["elements"][0]["actuators"][1]["initialStiffness"] =
             freeTopStiffness() - kP / kL;
@@ -136,13 +90,18 @@ private slots:
     // A Bouc-Wen moment-rotation hinge (yield near 150 kN m) and a lagging lateral actuator
     // (tau 5 ms): the run finishes, the column yields, the axial load is held, the measured
     // lateral stroke trails the command, and the lab's default K0 is the column's k.
-    void boucWenHingeWithLagRuns()
-    {
-        auto doc = wholeColumn({{"law", "boucWen"}, {"k0", 1.0}, {"alpha", 0.05}, {"n", 2.0},
-                                {"beta", 3.0}, {"gamma", 1.0}, {"A0", 1.0},
-                                {"uRef", 0.001875}, {"fRef", 300.0}});
+    void boucWenHingeWithLagRuns() {
+        auto doc = wholeColumn({{"law", "boucWen"},
+                                {"k0", 1.0},
+                                {"alpha", 0.05},
+                                {"n", 2.0},
+                                {"beta", 3.0},
+                                {"gamma", 1.0},
+                                {"A0", 1.0},
+                                {"uRef", 0.001875},
+                                {"fRef", 300.0}});
         doc["structure"]["elements"][0]["actuators"][1]["actuator"] = {{"type", "lag"},
-                                                                      {"timeConstant", 0.005}};
+                                                                       {"timeConstant", 0.005}};
         const TestConfig cfg = parseConfig(doc, "frame.json");
         QVERIFY(std::abs(cfg.elements[0].link2d->actuators[1].channel.initialStiffness -
                          freeTopStiffness()) <= 1e-9 * freeTopStiffness());
@@ -160,8 +119,7 @@ private slots:
         QVERIFY(std::abs(x->strokes()[1] - x->commands()[1]) > 0.0); // the lag trails
     }
 
-    void errorsNameTheField()
-    {
+    void errorsNameTheField() {
         const nlohmann::json hinge = {{"law", "elastic"}, {"k", kHinge}};
         auto doc = wholeColumn(hinge);
         doc["structure"]["elements"][0]["specimen"]["type"] = "column";
@@ -192,7 +150,7 @@ private slots:
 
         doc = wholeColumn(hinge);
         doc["structure"]["elements"][0]["actuators"][1]["actuator"] = {{"type", "lag"},
-                                                                      {"timeConstant", -1.0}};
+                                                                       {"timeConstant", -1.0}};
         e = errorOf(doc);
         QVERIFY2(e.contains("actuators[1].actuator.timeConstant"), qPrintable(e));
 

@@ -19,8 +19,7 @@ namespace {
 
 constexpr double kL = 3.0, kEI = 2e5, kHinge = 1.6e5, kAxial = 2e5;
 
-std::unique_ptr<HysteresisLaw> boucWenHinge()
-{
+std::unique_ptr<HysteresisLaw> boucWenHinge() {
     BoucWenParameters p;
     p.alpha = 0.05;
     p.uRef = 0.001875; // [rad]
@@ -28,8 +27,7 @@ std::unique_ptr<HysteresisLaw> boucWenHinge()
     return std::make_unique<BoucWen>(p);
 }
 
-std::unique_ptr<CantileverColumn> column(std::unique_ptr<HysteresisLaw> hinge)
-{
+std::unique_ptr<CantileverColumn> column(std::unique_ptr<HysteresisLaw> hinge) {
     return std::make_unique<CantileverColumn>(std::make_unique<LinearElastic>(kAxial),
                                               std::move(hinge), kL, kEI);
 }
@@ -37,8 +35,7 @@ std::unique_ptr<CantileverColumn> column(std::unique_ptr<HysteresisLaw> hinge)
 // Vertical actuator (force) on the axial DOF, lateral (displacement) on the shear DOF; the
 // top rotation carries no actuator: a free top.
 std::unique_ptr<VirtualActuatorLab> columnLab(std::unique_ptr<HysteresisLaw> hinge,
-                                              ActuatorModel lateral = {})
-{
+                                              ActuatorModel lateral = {}) {
     std::string error;
     auto setup = NoTransformation::create({1, 2}, 3, error);
     auto whole = std::make_unique<SpecimenBehindSetup>(
@@ -50,7 +47,9 @@ std::unique_ptr<VirtualActuatorLab> columnLab(std::unique_ptr<HysteresisLaw> hin
     return std::make_unique<VirtualActuatorLab>(std::move(acts), std::move(whole));
 }
 
-double freeTopStiffness() { return 1.0 / (kL * kL / kHinge + kL * kL * kL / (3.0 * kEI)); }
+double freeTopStiffness() {
+    return 1.0 / (kL * kL / kHinge + kL * kL * kL / (3.0 * kEI));
+}
 
 } // namespace
 
@@ -60,8 +59,7 @@ class TestWholeSpecimen : public QObject {
 private slots:
     // A cantilever with an elastic hinge and a free top under a constant axial load P: the
     // lateral stiffness is k - P / L (P-Delta), k = 1 / (L^2 / k_h + L^3 / (3 EI)).
-    void pDeltaLateralStiffnessClosedForm()
-    {
+    void pDeltaLateralStiffnessClosedForm() {
         double worst = 0.0;
         for (double p : {0.0, 500.0, 2000.0, -800.0}) { // compression > 0; -800: tension
             auto lab = columnLab(std::make_unique<LinearElastic>(kHinge));
@@ -73,7 +71,8 @@ private slots:
                 const double expected = (freeTopStiffness() - p / kL) * d;
                 worst = std::max(worst, std::abs(f[1] - expected) / std::abs(expected));
                 QVERIFY2(std::abs(f[1] - expected) <= 1e-9 * std::abs(expected),
-                         qPrintable(QString("P %1 d %2: %3 vs %4").arg(p).arg(d).arg(f[1]).arg(expected)));
+                         qPrintable(
+                             QString("P %1 d %2: %3 vs %4").arg(p).arg(d).arg(f[1]).arg(expected)));
                 QVERIFY(std::abs(f[0] + p) <= 1e-12 * std::max(1.0, p));
                 QVERIFY(std::abs(s[0] + p / kAxial) <= 1e-15 + 1e-12 * std::abs(p / kAxial));
                 QVERIFY(std::abs(s[1] - d) <= 1e-15);
@@ -88,8 +87,7 @@ private slots:
 
     // The stiffness an actuator sees (OpenFresco's element server, the lab's K0): k for the
     // lateral actuator at rest.
-    void channelStiffnessAtRest()
-    {
+    void channelStiffnessAtRest() {
         auto lab = columnLab(std::make_unique<LinearElastic>(kHinge));
         QVERIFY(std::abs(lab->channelStiffness(1, true) - freeTopStiffness()) <=
                 1e-12 * freeTopStiffness());
@@ -100,8 +98,7 @@ private slots:
     // lateral at the top and on an arm, both displacement-controlled; the axial DOF free): the
     // strokes are the commands and the specimen's basic forces balance the actuators'
     // (q = J(d)^T f) along a cyclic history to large rotations.
-    void boucWenHingeBehindExactSetupIsInEquilibrium()
-    {
+    void boucWenHingeBehindExactSetupIsInEquilibrium() {
         std::string error;
         TwoActuators2dParams tp;
         tp.La1 = 1.5;
@@ -128,7 +125,8 @@ private slots:
             QVERIFY(probe->jacobian(d, j).ok);
             const Eigen::Vector3d q = whole.specimen().trialForces();
             const Eigen::Vector3d jtf = j.transpose() * whole.forces();
-            const double eq = (q - jtf).cwiseAbs().maxCoeff() / std::max(1.0, q.cwiseAbs().maxCoeff());
+            const double eq =
+                (q - jtf).cwiseAbs().maxCoeff() / std::max(1.0, q.cwiseAbs().maxCoeff());
             QVERIFY(eq <= 1e-9);
             QVERIFY((whole.strokes() - a).cwiseAbs().maxCoeff() <= 1e-14);
             worstEq = std::max(worstEq, eq);
@@ -142,8 +140,7 @@ private slots:
     // A lag per channel: a step command c from rest reaches c (1 - exp(-n dt / tau)) after n
     // steps (the exact first-order response), on the whole-specimen lab and on a lab of one
     // material per actuator; a hold keeps the committed position.
-    void lagChannelFirstOrderResponse()
-    {
+    void lagChannelFirstOrderResponse() {
         ActuatorModel lag;
         lag.type = ActuatorModel::Type::Lag;
         lag.timeConstant = 0.05;
@@ -151,7 +148,8 @@ private slots:
         auto whole = columnLab(std::make_unique<LinearElastic>(kHinge), lag);
         std::vector<VirtualActuator> acts;
         acts.push_back({"vertical", ActuatorMode::Force, std::make_unique<LinearElastic>(kAxial)});
-        acts.push_back({"lateral", ActuatorMode::Displacement, std::make_unique<LinearElastic>(1e4), lag});
+        acts.push_back(
+            {"lateral", ActuatorMode::Displacement, std::make_unique<LinearElastic>(1e4), lag});
         VirtualActuatorLab perMaterial(std::move(acts));
         for (VirtualActuatorLab* lab : {whole.get(), &perMaterial}) {
             QVERIFY(lab->prepare(dt).ok);
@@ -176,8 +174,7 @@ private slots:
     }
 
     // A delay per channel: the stroke is the command of round(delay / dt) steps before.
-    void delayChannel()
-    {
+    void delayChannel() {
         ActuatorModel delay;
         delay.type = ActuatorModel::Type::Delay;
         delay.delay = 0.03;
@@ -192,8 +189,7 @@ private slots:
         }
     }
 
-    void errorsNameThePart()
-    {
+    void errorsNameThePart() {
         auto message = [](auto&& make) {
             try {
                 make();
@@ -202,13 +198,14 @@ private slots:
             }
             return QString();
         };
-        QVERIFY(message([] { CantileverColumn(std::make_unique<LinearElastic>(1.0),
-                                              std::make_unique<LinearElastic>(1.0), kL,
-                                              INFINITY); })
-                    .contains("ei"));
-        QVERIFY(message([] { CantileverColumn(std::make_unique<LinearElastic>(1.0),
-                                              std::make_unique<LinearElastic>(1.0), 0.0, kEI); })
-                    .contains("length"));
+        QVERIFY(message([] {
+                    CantileverColumn(std::make_unique<LinearElastic>(1.0),
+                                     std::make_unique<LinearElastic>(1.0), kL, INFINITY);
+                }).contains("ei"));
+        QVERIFY(message([] {
+                    CantileverColumn(std::make_unique<LinearElastic>(1.0),
+                                     std::make_unique<LinearElastic>(1.0), 0.0, kEI);
+                }).contains("length"));
         QString e = message([] {
             std::string error;
             SpecimenBehindSetup(NoTransformation::create({1, 2}, 2, error),
@@ -220,7 +217,8 @@ private slots:
             ActuatorModel servo;
             servo.type = ActuatorModel::Type::ServoHydraulic;
             std::vector<VirtualActuator> acts;
-            acts.push_back({"vertical", ActuatorMode::Force, std::make_unique<LinearElastic>(1.0), servo});
+            acts.push_back(
+                {"vertical", ActuatorMode::Force, std::make_unique<LinearElastic>(1.0), servo});
             VirtualActuatorLab lab(std::move(acts));
         });
         QVERIFY2(e.contains("'vertical'") && e.contains("servoHydraulic"), qPrintable(e));
