@@ -189,6 +189,35 @@ private slots:
         }
     }
 
+    // A servo-hydraulic actuator per channel: the lateral stroke is the servo-controlled plant's
+    // position after dt of its loop toward the command (rths::ServoActuator, a standalone copy
+    // advanced with the same commands as the reference), also across a hold and resume.
+    void servoHydraulicChannel()
+    {
+        ActuatorModel servo;
+        servo.type = ActuatorModel::Type::ServoHydraulic;
+        auto lab = columnLab(std::make_unique<LinearElastic>(kHinge), servo);
+        QVERIFY(lab->prepare(0.01).ok);
+        rths::ServoActuator reference(servo.servo);
+        reference.reset(0.0);
+        double worstLag = 0.0;
+        for (int n = 1; n <= 50; ++n) {
+            const double c = 1e-4 * n;
+            if (n == 20) { // a hold drops the trial: the servo starts the step again
+                QVERIFY(lab->setTargets(Eigen::Vector2d(-500.0, c)).ok);
+                lab->hold("test");
+                lab->resume();
+            }
+            QVERIFY(lab->setTargets(Eigen::Vector2d(-500.0, c)).ok);
+            Eigen::VectorXd s, f;
+            lab->measureChannels(s, f);
+            QCOMPARE(s[1], reference.advance(c, 0.01));
+            worstLag = std::max(worstLag, std::abs(s[1] - c));
+            QVERIFY(lab->commit().ok);
+        }
+        QVERIFY(worstLag > 0.0 && worstLag < 1e-3); // it tracks, with a tracking error
+    }
+
     void errorsNameThePart() {
         auto message = [](auto&& make) {
             try {
