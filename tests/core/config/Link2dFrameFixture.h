@@ -8,6 +8,8 @@
 
 #include <QtTest>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -48,6 +50,26 @@ inline std::vector<StepRecord> run(const nlohmann::json& doc, double duration,
     if (keep)
         *keep = std::move(test);
     return rec.records;
+}
+
+/// Two runs of the frame side by side: the peak |x3| [m] and largest |difference| of any DOF
+/// displacement, the peak primary force of the left column [kN] and its largest |difference|.
+struct RunDifference {
+    double peak = 0, du = 0, peakF = 0, dF = 0;
+};
+
+inline RunDifference compareRuns(const std::vector<StepRecord>& a, const std::vector<StepRecord>& b)
+{
+    RunDifference r;
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        r.peak = std::max(r.peak, std::abs(a[i].u[0]));
+        r.du = std::max(r.du, (a[i].u - b[i].u).cwiseAbs().maxCoeff());
+        r.peakF = std::max(r.peakF, std::abs(a[i].elements[0].force));
+        r.dF = std::max(r.dF, std::abs(a[i].elements[0].force - b[i].elements[0].force));
+    }
+    qInfo("peak |x3| %.6g m, max |du| %.3g m; peak shear %.6g kN, max |dF| %.3g kN", r.peak, r.du,
+          r.peakF, r.dF);
+    return r;
 }
 
 inline QString errorOf(const nlohmann::json& doc)

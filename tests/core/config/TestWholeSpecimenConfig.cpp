@@ -68,15 +68,7 @@ private slots:
         const auto b = run(whole, 4.0, &hybrid);
         const auto a = run(twin, 4.0);
         QCOMPARE(a.size(), b.size());
-        double peak = 0, du = 0, peakF = 0, dF = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            peak = std::max(peak, std::abs(a[i].u[0]));
-            du = std::max(du, (a[i].u - b[i].u).cwiseAbs().maxCoeff());
-            peakF = std::max(peakF, std::abs(a[i].elements[0].force));
-            dF = std::max(dF, std::abs(a[i].elements[0].force - b[i].elements[0].force));
-        }
-        qInfo("peak |x3| %.6g m, max |du| %.3g m; peak shear %.6g kN, max |dF| %.3g kN", peak, du,
-              peakF, dF);
+        const auto [peak, du, peakF, dF] = compareRuns(a, b);
         QVERIFY(peak > 0.005);
         QVERIFY(du <= 1e-9 * peak);
         QVERIFY(dF <= 1e-9 * peakF);
