@@ -1,11 +1,14 @@
 #pragma once
 // ChannelRig: a specimen of N actuator channels on hsmu-controller (a link2d element's
-// actuators, docs/setups.md "hsmu-controller"): core's VirtualActuatorLab, each actuator a
-// uniaxial material (as OpenFresco's expControl SimUniaxialMaterials; its stroke is the
-// material's deformation, its force the material's force), behind the native protocol's
-// Targets / Measurements frames (docs/protocol.md, "Several actuator channels").
-// The actuators are ideal: a displacement-controlled channel's stroke is its command, a
-// force-controlled channel finds the stroke that gives its commanded force (the lab's Newton).
+// actuators, docs/setups.md "hsmu-controller"): core's VirtualActuatorLab, built as the
+// console builds its in-process lab (buildVirtualSpecimen): each actuator a uniaxial material
+// (as OpenFresco's expControl SimUniaxialMaterials), or the specimen as a whole behind its
+// setup (SpecimenBehindSetup), behind the native protocol's Targets / Measurements frames
+// (docs/protocol.md, "Several actuator channels").
+// Each channel tracks its command with its configured actuator model (ActuatorTracker: ideal,
+// lag, delay, servoHydraulic), evaluated once per step as in the console's lab, so both give
+// the same measurements; a force-controlled channel finds the stroke that gives its (tracked)
+// force.
 // Each channel's limits (its ActuatorChannelSpec, units: stroke [m], force [kN]) are checked
 // here too, whatever the console checked: a displacement command past maxDeformation or
 // maxIncrement from the channel's committed stroke, a force command past maxForce, a measured

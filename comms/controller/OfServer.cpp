@@ -376,8 +376,7 @@ std::vector<double> OfServer::matrix(int action) const {
     if (const ChannelRig* rig = channelRig()) { // diag of the actuators' tangents
         std::vector<double> K(n * n, 0.0);
         for (std::size_t i = 0; i < n; ++i) {
-            const HysteresisLaw& law = *rig->lab().actuator(static_cast<int>(i)).law;
-            K[i * n + i] = initial ? law.initialTangent() : law.algorithmicTangent();
+            K[i * n + i] = rig->lab().channelStiffness(static_cast<int>(i), initial);
         }
         return K;
     }

@@ -67,12 +67,12 @@ void SpecimenStation::makeSpecimen() {
 }
 
 double SpecimenStation::initialStiffness() const {
-    return m_rig ? m_rig->lab().actuator(0).law->initialTangent()
+    return m_rig ? m_rig->lab().channelStiffness(0, true)
                  : m_specimen->trueLaw().initialTangent();
 }
 
 double SpecimenStation::tangentStiffness() const {
-    return m_rig ? m_rig->lab().actuator(0).law->algorithmicTangent()
+    return m_rig ? m_rig->lab().channelStiffness(0, false)
                  : m_specimen->trueLaw().algorithmicTangent();
 }
 

@@ -28,8 +28,9 @@
 // actuators' uniaxial materials, each channel's limits) and its steps come as Targets and go
 // as Measurements; commit, hold, resume, reset, the hello-ack and the step indices are the
 // same as one channel's (a one-channel frame to it, or an N-channel one to a one-channel
-// station, is a protocol violation). Its steps are evaluated at once (ideal actuators, no
-// ticks) and not journaled: pass a null journal.
+// station, is a protocol violation). Its steps are evaluated at once (no ticks: each
+// channel's actuator model runs once per step in the rig, ChannelRig.h) and not journaled:
+// pass a null journal.
 // Thread rules: one thread (the controller's io thread).
 
 #include "comms/controller/ActuatorDynamics.h"

@@ -82,6 +82,37 @@ std::string fmt(double x)
     return buf;
 }
 
+} // namespace
+
+ActuatorModel parseActuatorModel(const JsonCursor& a)
+{
+    ActuatorModel m;
+    const std::string type = a.string("type", "ideal");
+    if (type != "servoHydraulic")
+        a.allowOnly({"type", "timeConstant", "delay"});
+    if (type == "servoHydraulic") {
+        m.type = ActuatorModel::Type::ServoHydraulic;
+        parseServoActuator(a, m.servo); // SI units, docs/rths.md
+    } else if (type == "ideal")
+        m.type = ActuatorModel::Type::Ideal;
+    else if (type == "lag") {
+        m.type = ActuatorModel::Type::Lag;
+        m.timeConstant = a.number("timeConstant");
+        if (!(m.timeConstant > 0.0) || m.timeConstant > limits::kMaxActuatorTimeConstant)
+            a.fail("timeConstant", "expected a time constant in (0, " +
+                                       fmt(limits::kMaxActuatorTimeConstant) + "] s");
+    } else if (type == "delay") {
+        m.type = ActuatorModel::Type::Delay;
+        m.delay = a.number("delay");
+        if (m.delay < 0.0 || m.delay > limits::kMaxActuatorDelay)
+            a.fail("delay", "expected a delay in [0, " + fmt(limits::kMaxActuatorDelay) + "] s");
+    } else
+        a.fail("type", "expected 'ideal', 'lag', 'delay' or 'servoHydraulic', found '" + type + "'");
+    return m;
+}
+
+namespace {
+
 SpecimenSpec parseSpecimen(const JsonCursor& c)
 {
     c.allowOnly({"material", "forceNoiseStd", "deformationNoiseStd", "seed", "actuator",
@@ -96,32 +127,8 @@ SpecimenSpec parseSpecimen(const JsonCursor& c)
     if (o.deformationNoiseStd < 0.0)
         c.fail("deformationNoiseStd", "expected a standard deviation >= 0");
     o.seed = static_cast<std::uint64_t>(c.integer("seed", 1, 0, std::numeric_limits<int>::max()));
-    if (c.has("actuator")) {
-        const JsonCursor a = c.child("actuator");
-        const std::string type = a.string("type", "ideal");
-        if (type != "servoHydraulic")
-            a.allowOnly({"type", "timeConstant", "delay"});
-        if (type == "servoHydraulic") {
-            o.actuator.type = ActuatorModel::Type::ServoHydraulic;
-            parseServoActuator(a, o.actuator.servo); // SI units, docs/rths.md
-        } else if (type == "ideal")
-            o.actuator.type = ActuatorModel::Type::Ideal;
-        else if (type == "lag") {
-            o.actuator.type = ActuatorModel::Type::Lag;
-            o.actuator.timeConstant = a.number("timeConstant");
-            if (!(o.actuator.timeConstant > 0.0) ||
-                o.actuator.timeConstant > limits::kMaxActuatorTimeConstant)
-                a.fail("timeConstant", "expected a time constant in (0, " +
-                                           fmt(limits::kMaxActuatorTimeConstant) + "] s");
-        } else if (type == "delay") {
-            o.actuator.type = ActuatorModel::Type::Delay;
-            o.actuator.delay = a.number("delay");
-            if (o.actuator.delay < 0.0 || o.actuator.delay > limits::kMaxActuatorDelay)
-                a.fail("delay",
-                       "expected a delay in [0, " + fmt(limits::kMaxActuatorDelay) + "] s");
-        } else
-            a.fail("type", "expected 'ideal', 'lag', 'delay' or 'servoHydraulic', found '" + type + "'");
-    }
+    if (c.has("actuator"))
+        o.actuator = parseActuatorModel(c.child("actuator"));
     if (c.has("fracture")) {
         const JsonCursor f = c.child("fracture");
         f.allowOnly({"atCumulativeDeformation", "atTime", "strengthLoss"});

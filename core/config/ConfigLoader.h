@@ -14,6 +14,9 @@ namespace hsmu {
 MaterialSpec parseMaterial(const JsonCursor& c);
 /// A "limits" object (deformation, force, increment; each > 0 when given).
 SafetyLimits parseLimits(const JsonCursor& c);
+/// An "actuator" block: {"type": "ideal" | "lag" (timeConstant [s]) | "delay" (delay [s]) |
+/// "servoHydraulic" (docs/rths.md)}; ConfigErrors name the field.
+ActuatorModel parseActuatorModel(const JsonCursor& c);
 /// A DOF given by name or index v (the field `key` of c), checked against dofs.
 int parseDof(const JsonCursor& c, const nlohmann::json& v, const std::vector<DofSpec>& dofs,
              const std::string& key);

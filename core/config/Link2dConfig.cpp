@@ -3,6 +3,7 @@
 #include "core/config/ConfigLoader.h"
 #include "core/config/SetupConfig.h"
 #include "core/experimental/setup/SetupScript.h"
+#include "core/experimental/CantileverColumn.h"
 #include "core/hysteresis/LawFactory.h"
 
 #include <cmath>
@@ -52,10 +53,27 @@ Link2dBasicSpec parseBasic(const JsonCursor& c)
     return b;
 }
 
-ActuatorSpec parseActuator(const JsonCursor& c)
+// "specimen": {"type": "cantileverColumn", "hinge": {...}, "axial": {...}, "ei": EI}.
+WholeSpecimenSpec parseWholeSpecimen(const JsonCursor& c)
+{
+    c.allowOnly({"type", "hinge", "axial", "ei"});
+    const std::string type = c.string("type");
+    if (type != "cantileverColumn")
+        c.fail("type", "expected 'cantileverColumn', found '" + type + "'");
+    WholeSpecimenSpec w;
+    w.hinge = parseMaterial(c.child("hinge"));
+    w.axial = parseMaterial(c.child("axial"));
+    w.ei = c.number("ei");
+    if (!(w.ei > 0.0) || !std::isfinite(w.ei))
+        c.fail("ei", "expected the column's EI > 0 kN m^2 (finite: a rigid column would fix the "
+                     "top rotation to the hinge's)");
+    return w;
+}
+
+ActuatorSpec parseActuator(const JsonCursor& c, bool whole)
 {
     c.allowOnly({"name", "control", "force", "forceSchedule", "limits", "material",
-                 "initialStiffness"});
+                 "initialStiffness", "actuator"});
     ActuatorSpec a;
     a.channel.name = c.string("name");
     const std::string mode = c.string("control", "displacement");
@@ -82,15 +100,72 @@ ActuatorSpec parseActuator(const JsonCursor& c)
         if (auto why = a.channel.limits.violationOfForce(f))
             c.fail("forceSchedule", "actuator '" + a.channel.name + "' at t = " +
                                         std::to_string(t) + " s: " + *why);
-    a.material = parseMaterial(c.child("material"));
+    if (c.has("actuator")) {
+        a.model = parseActuatorModel(c.child("actuator"));
+        if (a.channel.mode == ActuatorMode::Force &&
+            a.model.type == ActuatorModel::Type::ServoHydraulic)
+            c.child("actuator").fail("type", "a force-controlled actuator takes 'ideal', 'lag' "
+                                             "or 'delay' (servoHydraulic is a displacement servo)");
+    }
+    if (whole) {
+        if (c.has("material"))
+            c.fail("material", "the lab simulates the whole specimen (\"specimen\"): an "
+                               "actuator takes no material");
+    } else {
+        a.material = parseMaterial(c.child("material"));
+    }
     if (c.has("initialStiffness")) {
         a.channel.initialStiffness = c.number("initialStiffness");
         if (!(a.channel.initialStiffness >= 0.0) || !std::isfinite(a.channel.initialStiffness))
             c.fail("initialStiffness", "expected a stiffness >= 0 kN/m");
-    } else if (a.channel.mode == ActuatorMode::Displacement) {
+    } else if (a.channel.mode == ActuatorMode::Displacement && !whole) {
+        // with a whole specimen: from the specimen, setWholeSpecimenStiffness
         a.channel.initialStiffness = makeLaw(a.material.law, a.material.params)->initialTangent();
     }
     return a;
+}
+
+} // namespace
+
+std::unique_ptr<SpecimenBehindSetup> buildWholeSpecimen(const std::string& element,
+                                                        const Link2dSpec& s)
+{
+    const WholeSpecimenSpec& w = *s.wholeSpecimen;
+    std::string error;
+    auto setup = buildLink2dSetup(s, error);
+    if (!setup)
+        throw ConfigError("element '" + element + "': setup: " + error);
+    std::vector<ActuatorMode> modes;
+    for (const ActuatorSpec& a : s.actuators)
+        modes.push_back(a.channel.mode);
+    const std::string where = "element '" + element + "' specimen";
+    try {
+        auto column = std::make_unique<CantileverColumn>(
+            makeLaw(w.axial.law, w.axial.params), makeLaw(w.hinge.law, w.hinge.params), s.length,
+            w.ei);
+        return std::make_unique<SpecimenBehindSetup>(std::move(setup), std::move(column),
+                                                     std::move(modes));
+    } catch (const std::exception& x) {
+        throw ConfigError(where + ": " + x.what());
+    }
+}
+
+namespace {
+
+void setWholeSpecimenStiffness(const JsonCursor& c, const std::string& element, Link2dSpec& s,
+                               const JsonCursor& acts)
+{
+    try {
+        const auto whole = buildWholeSpecimen(element, s);
+        for (std::size_t i = 0; i < s.actuators.size(); ++i) {
+            ActuatorChannelSpec& ch = s.actuators[i].channel;
+            if (acts.at(i).has("initialStiffness") || ch.mode != ActuatorMode::Displacement)
+                continue;
+            ch.initialStiffness = whole->channelStiffness(static_cast<int>(i), true);
+        }
+    } catch (const ConfigError& x) {
+        c.fail("specimen", x.what());
+    }
 }
 
 } // namespace
@@ -111,7 +186,7 @@ std::unique_ptr<ExperimentalSetup> buildLink2dSetup(const Link2dSpec& s, std::st
 ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 {
     c.allowOnly({"name", "type", "dofs", "length", "angle", "basic", "primary", "experimental",
-                 "setup", "actuators"});
+                 "setup", "actuators", "specimen"});
     ElementSpec e;
     e.name = c.string("name");
     e.type = "link2d";
@@ -155,17 +230,22 @@ ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& 
             st.fail(field, setup->typeName() + " serves " + std::to_string(setup->basicSize()) +
                                   " basic DOFs, a link2d element has 3 (axial, shear, rotation): "
                                   "-sizeTrialOut 3 3");
+        if (c.has("specimen"))
+            s.wholeSpecimen = parseWholeSpecimen(c.child("specimen"));
         const JsonCursor acts = c.child("actuators");
         acts.requireArray();
         for (std::size_t i = 0; i < acts.size(); ++i)
-            s.actuators.push_back(parseActuator(acts.at(i)));
+            s.actuators.push_back(parseActuator(acts.at(i), s.wholeSpecimen.has_value()));
         if (int(s.actuators.size()) != setup->actuatorCount())
             c.fail("actuators", setup->typeName() + " has " +
                                     std::to_string(setup->actuatorCount()) + " actuators, " +
                                     std::to_string(s.actuators.size()) + " given");
+        if (s.wholeSpecimen) // K0: the stiffness each actuator sees of the specimen at rest
+            setWholeSpecimenStiffness(c, e.name, s, acts);
     } else {
-        if (c.has("setup") || c.has("actuators"))
-            c.fail(c.has("setup") ? "setup" : "actuators", "only with \"experimental\": true");
+        for (const char* k : {"setup", "actuators", "specimen"})
+            if (c.has(k))
+                c.fail(k, "only with \"experimental\": true");
         const JsonCursor b = c.child("basic");
         if (!b.node().is_array() || b.size() != 3)
             c.fail("basic", "expected three basic DOFs [axial, shear, rotation]");

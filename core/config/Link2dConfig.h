@@ -7,6 +7,7 @@
 
 #include "core/config/JsonCursor.h"
 #include "core/config/TestConfig.h"
+#include "core/experimental/SpecimenBehindSetup.h"
 #include "core/experimental/setup/ExperimentalSetup.h"
 
 #include <memory>
@@ -19,5 +20,10 @@ ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& 
 /// The setup of a link2d specimen from its script: exactly one top-level setup. nullptr with
 /// `error` set otherwise.
 std::unique_ptr<ExperimentalSetup> buildLink2dSetup(const Link2dSpec& s, std::string& error);
+
+/// The specimen as a whole behind its setup (s.wholeSpecimen set; CantileverColumn of the
+/// element's length), for the virtual lab. Throws ConfigError naming the element.
+std::unique_ptr<SpecimenBehindSetup> buildWholeSpecimen(const std::string& element,
+                                                        const Link2dSpec& s);
 
 } // namespace hsmu

@@ -41,11 +41,21 @@ struct Link2dBasicSpec {
     ForceSchedule forceSchedule; ///< (t [s], F) points instead of heldForce (eq. F1)
 };
 
-/// One actuator of a link2d specimen: its channel (control mode, held force, limits, K0) and
-/// the uniaxial material the in-process virtual lab simulates it with.
+/// One actuator of a link2d specimen: its channel (control mode, held force, limits, K0), the
+/// uniaxial material the in-process virtual lab simulates it with (none when the lab simulates
+/// the whole specimen) and how it tracks its command (ActuatorTracker.h).
 struct ActuatorSpec {
     ActuatorChannelSpec channel;
-    MaterialSpec material;
+    MaterialSpec material; ///< unused with a WholeSpecimenSpec
+    ActuatorModel model;   ///< "actuator": ideal, lag, delay, servoHydraulic
+};
+
+/// A link2d specimen simulated as a whole in its basic system by the virtual lab
+/// (type "cantileverColumn", CantileverColumn.h; docs/setups.md "The specimen as a whole").
+struct WholeSpecimenSpec {
+    MaterialSpec hinge; ///< moment [kN m] - rotation [rad] law at the base
+    MaterialSpec axial; ///< axial force [kN] - deformation [m] law
+    double ei = 0.0;    ///< [kN m^2] the column above the hinge
 };
 
 /// A two-node 2D link / beam-column (type "link2d"; core/structure/Link2dKinematics.h).
@@ -57,6 +67,9 @@ struct Link2dSpec {
     int primary = 1;                                  ///< the basic DOF the record reports
     std::string setupScript; ///< experimental: one OpenFresco expSetup line (SetupScript.h)
     std::vector<ActuatorSpec> actuators; ///< experimental: one per setup actuator
+    /// experimental: the virtual lab simulates the specimen as a whole (else one material per
+    /// actuator).
+    std::optional<WholeSpecimenSpec> wholeSpecimen;
 };
 
 struct ElementSpec {

@@ -35,13 +35,20 @@ std::unique_ptr<HysteresisLaw> buildLaw(const MaterialSpec& m, const std::string
 
 std::unique_ptr<ExperimentalControl> buildVirtualSpecimen(const ElementSpec& spec)
 {
-    if (spec.link2d) { // N actuators, each its uniaxial material (VirtualActuatorLab.h)
+    if (spec.link2d) { // N actuators: each its uniaxial material, or the whole specimen
+        const Link2dSpec& s = *spec.link2d;
         std::vector<VirtualActuator> lab;
-        for (const ActuatorSpec& a : spec.link2d->actuators)
+        for (const ActuatorSpec& a : s.actuators) {
+            const std::string where = "element '" + spec.name + "' actuator '" + a.channel.name + "'";
             lab.push_back({a.channel.name, a.channel.mode,
-                           buildLaw(a.material, "element '" + spec.name + "' actuator '" +
-                                                    a.channel.name + "'")});
-        return std::make_unique<VirtualActuatorLab>(std::move(lab));
+                           s.wholeSpecimen ? nullptr : buildLaw(a.material, where), a.model});
+        }
+        try {
+            return std::make_unique<VirtualActuatorLab>(
+                std::move(lab), s.wholeSpecimen ? buildWholeSpecimen(spec.name, s) : nullptr);
+        } catch (const std::invalid_argument& x) {
+            throw ConfigError("element '" + spec.name + "': " + x.what());
+        }
     }
     auto law = buildLaw(spec.specimen.trueMaterial, "element '" + spec.name + "' specimen");
     return std::make_unique<VirtualSpecimen>(std::move(law), spec.specimen.options);

@@ -16,22 +16,12 @@
 #include <cmath>
 #include <fstream>
 
+#include "Link2dFrameFixture.h"
+
 using namespace hsmu;
+using namespace link2dframe;
 
 namespace {
-
-const std::string kPreset = HSMU_SOURCE_DIR "/resources/presets/two-actuator-column-frame.json";
-
-struct Recorder final : StepObserver {
-    std::vector<StepRecord> records;
-    void onStep(const StepRecord& r) override { records.push_back(r); }
-};
-
-nlohmann::json presetJson()
-{
-    std::ifstream in(kPreset);
-    return nlohmann::json::parse(in);
-}
 
 // The left column as the numerical twin: held axial load, the lateral actuator's law on the
 // shear DOF, a free rotation (no actuator on it).
@@ -47,36 +37,6 @@ nlohmann::json numericalTwin(nlohmann::json doc)
     return doc;
 }
 
-std::vector<StepRecord> run(const nlohmann::json& doc, double duration,
-                            std::unique_ptr<HybridTest>* keep = nullptr)
-{
-    TestConfig cfg = parseConfig(doc, "frame.json");
-    cfg.analysis.duration = duration;
-    auto test = buildHybridTest(cfg);
-    Recorder rec;
-    test->addObserver(&rec);
-    if (!test->prepare())
-        qFatal("%s", test->lastError().c_str());
-    while (test->step() == HybridTest::StepResult::Advanced) {
-    }
-    if (test->state() != HybridTest::State::Finished)
-        qFatal("not finished: %s", test->alarms().empty() ? "" : test->alarms().back().message.c_str());
-    test->removeObserver(&rec);
-    if (keep)
-        *keep = std::move(test);
-    return rec.records;
-}
-
-QString errorOf(const nlohmann::json& doc)
-{
-    try {
-        parseConfig(doc, "frame.json");
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    }
-    return {};
-}
-
 } // namespace
 
 class TestLink2dConfig : public QObject {
@@ -89,15 +49,7 @@ private slots:
         const auto b = run(presetJson(), 10.0, &hybrid);
         const auto a = run(numericalTwin(presetJson()), 10.0);
         QCOMPARE(a.size(), b.size());
-        double peak = 0, du = 0, peakF = 0, dF = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            peak = std::max(peak, std::abs(a[i].u[0]));
-            du = std::max(du, (a[i].u - b[i].u).cwiseAbs().maxCoeff());
-            peakF = std::max(peakF, std::abs(a[i].elements[0].force));
-            dF = std::max(dF, std::abs(a[i].elements[0].force - b[i].elements[0].force));
-        }
-        qInfo("peak |x3| %.6g m, max |du| %.3g m; peak shear %.6g kN, max |dF| %.3g kN", peak, du,
-              peakF, dF);
+        const auto [peak, du, peakF, dF] = compareRuns(a, b);
         QVERIFY(peak > 0.01); // twice the column's yield displacement (about 0.005 m: z_max fRef / k0)
         QVERIFY(du <= 1e-9 * peak);
         QVERIFY(dF <= 1e-9 * peakF);
