@@ -117,6 +117,19 @@ void RthsLoop::checkCommand(double command)
     o << "actuator command " << command * 1000.0 << " mm beyond the stroke limit +-"
       << stroke * 1000.0 << " mm";
     holdAt(o.str());
+    m_commandHold = true;
+}
+
+std::string RthsLoop::resume()
+{
+    if (!holding())
+        return {};
+    if (m_commandHold)
+        return m_hold + " (the state that gave this command has not moved: not resumed)";
+    if (const std::string why = plantLimitBreach(m_plant, m_s.limits); !why.empty())
+        return why + " (still; tick " + std::to_string(m_k) + "): not resumed";
+    m_hold.clear();
+    return {};
 }
 
 void RthsLoop::checkPlant()
