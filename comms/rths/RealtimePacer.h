@@ -61,6 +61,8 @@ public:
     long misses() const { return m_misses; }
     double worstLateness() const { return m_worst; } ///< [s]
     long firstMissTick() const { return m_firstMiss; } ///< -1: none
+    /// The policy holds the run (holdAfterMisses reached since the start or the last resume).
+    bool policyHolds() const { return m_holdAfter > 0 && m_misses - m_missesBeforeResume >= m_holdAfter; }
 
 private:
     PaceClock& m_clock;

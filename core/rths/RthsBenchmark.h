@@ -64,8 +64,9 @@ public:
                         const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) = 0;
     /// A twin update decided before tick k (applied or refused: the event says).
     virtual void onUpdate(long /*k*/, const UpdateEvent& /*event*/) {}
-    /// A held run goes on with tick k (RthsRunner::resume); note: "resumed before tick K ...".
-    virtual void onResume(long /*k*/, const std::string& /*note*/) {}
+    /// A held run goes on with tick k at time t [s] (RthsRunner::resume); note: "resumed before
+    /// tick K ...".
+    virtual void onResume(long /*k*/, double /*t*/, const std::string& /*note*/) {}
 };
 
 /// Hands every tick to each of several observers, in the order added (e.g. the controller's
@@ -85,10 +86,10 @@ public:
         for (TickObserver* o : m_observers)
             o->onUpdate(k, event);
     }
-    void onResume(long k, const std::string& note) override
+    void onResume(long k, double t, const std::string& note) override
     {
         for (TickObserver* o : m_observers)
-            o->onResume(k, note);
+            o->onResume(k, t, note);
     }
 
 private:

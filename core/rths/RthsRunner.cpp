@@ -84,7 +84,7 @@ std::string RthsRunner::resume()
     if (m_gate)
         m_gate->resume(m_next);
     if (m_observer)
-        m_observer->onResume(m_next, o.str());
+        m_observer->onResume(m_next, double(m_next) * m_loop.period(), o.str());
     return {};
 }
 

@@ -39,7 +39,7 @@ public:
     /// not held; or held by a limit whose channel is still past it (the plant's stroke, force
     /// or velocity, re-checked now; a command beyond the stroke is never resumed: the state
     /// that gave it has not moved). On success the gate's resume(next()) and the observer's
-    /// onResume(next(), ...) are told.
+    /// onResume(next(), its time, ...) are told.
     std::string resume();
     /// The run so far, evaluated (J1..J9, frequency index, tracking indicator over every tick);
     /// hold() as its hold.

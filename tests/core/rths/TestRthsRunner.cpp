@@ -82,7 +82,7 @@ public:
     {
         ticks.push_back(k);
     }
-    void onResume(long k, const std::string& note) override { notes.emplace_back(k, note); }
+    void onResume(long k, double, const std::string& note) override { notes.emplace_back(k, note); }
     std::vector<long> ticks;
     std::vector<std::pair<long, std::string>> notes;
 };
