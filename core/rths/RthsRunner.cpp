@@ -1,5 +1,7 @@
 #include "core/rths/RthsRunner.h"
 
+#include "core/rths/DamperReference.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -21,7 +23,10 @@ RthsRunner::RthsRunner(const Partition& partition, const GroundMotion& groundMot
     m_hybrid.reserve(std::size_t(m_n));
     // The reference before the loop (cheap: RK4 of the linear structure), so that each tick
     // can be recorded with it as it happens.
-    m_reference = referenceResponse(partition.reference, groundMotion, h, m_n);
+    // With a damper: the reference run of the same configuration with the damper in the
+    // numerical model (J4..J9 compare against it, docs/rths.md "A damper and its twin").
+    m_reference = referenceResponse(partition.reference, groundMotion, h, m_n,
+                                    referenceDampers(partition, settings.damper));
 }
 
 bool RthsRunner::run()
