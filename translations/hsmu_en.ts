@@ -1400,6 +1400,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>RthsCommand</name>
     <message>
+        <source>the controller did not resume the run: %1</source>
+        <translation>the controller did not resume the run: %1</translation>
+    </message>
+    <message>
+        <source>With --controller: resume the controller&apos;s held run from the tick where it held instead of starting one.</source>
+        <translation>With --controller: resume the controller&apos;s held run from the tick where it held instead of starting one.</translation>
+    </message>
+    <message>
+        <source>--resume needs --controller: it resumes the held run hsmu-controller keeps (a local run is resumed in the console&apos;s RTHS view)</source>
+        <translation>--resume needs --controller: it resumes the held run hsmu-controller keeps (a local run is resumed in the console&apos;s RTHS view)</translation>
+    </message>
+    <message>
         <source>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</source>
         <translation>Real-time hybrid simulation on the virtual lab's servo-hydraulic actuator.</translation>
     </message>
@@ -3282,6 +3294,26 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>Go on with the held run from the tick where it held (refused while a limit is still breached)</source>
+        <translation>Go on with the held run from the tick where it held (refused while a limit is still breached)</translation>
+    </message>
+    <message>
+        <source>Not resumed: %1</source>
+        <translation>Not resumed: %1</translation>
+    </message>
+    <message>
+        <source>RTHS run not resumed: %1</source>
+        <translation>RTHS run not resumed: %1</translation>
+    </message>
+    <message>
+        <source>RTHS resume</source>
+        <translation>RTHS resume</translation>
+    </message>
+    <message>
+        <source>Resumed</source>
+        <translation>Resumed</translation>
+    </message>
+    <message>
         <source>No RTHS run yet.</source>
         <translation>No RTHS run yet.</translation>
     </message>
@@ -3338,8 +3370,8 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>Hold</translation>
     </message>
     <message>
-        <source>Hold the loop before its next tick (a held RTHS run restarts from rest)</source>
-        <translation>Hold the loop before its next tick (a held RTHS run restarts from rest)</translation>
+        <source>Hold the loop before its next tick (Resume goes on from there)</source>
+        <translation>Hold the loop before its next tick (Resume goes on from there)</translation>
     </message>
     <message>
         <source>Emergency hold</source>
@@ -3516,6 +3548,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no held RTHS run to resume</source>
+        <translation>no held RTHS run to resume</translation>
+    </message>
     <message>
         <source>an RTHS run is already going</source>
         <translation>an RTHS run is already going</translation>

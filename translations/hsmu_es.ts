@@ -1400,6 +1400,18 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>RthsCommand</name>
     <message>
+        <source>the controller did not resume the run: %1</source>
+        <translation>el controlador no reanudó el ensayo: %1</translation>
+    </message>
+    <message>
+        <source>With --controller: resume the controller&apos;s held run from the tick where it held instead of starting one.</source>
+        <translation>Con --controller: reanudar el ensayo detenido del controlador desde el ciclo en que se detuvo en lugar de iniciar uno.</translation>
+    </message>
+    <message>
+        <source>--resume needs --controller: it resumes the held run hsmu-controller keeps (a local run is resumed in the console&apos;s RTHS view)</source>
+        <translation>--resume necesita --controller: reanuda el ensayo detenido que conserva hsmu-controller (un ensayo local se reanuda en la vista RTHS de la consola)</translation>
+    </message>
+    <message>
         <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
         <translation>Simulación híbrida en tiempo real con el actuador servohidráulico del laboratorio virtual.</translation>
     </message>
@@ -3282,6 +3294,26 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>Go on with the held run from the tick where it held (refused while a limit is still breached)</source>
+        <translation>Continuar el ensayo detenido desde el ciclo en que se detuvo (se rechaza mientras un límite siga superado)</translation>
+    </message>
+    <message>
+        <source>Not resumed: %1</source>
+        <translation>No reanudado: %1</translation>
+    </message>
+    <message>
+        <source>RTHS run not resumed: %1</source>
+        <translation>Ensayo RTHS no reanudado: %1</translation>
+    </message>
+    <message>
+        <source>RTHS resume</source>
+        <translation>Reanudación RTHS</translation>
+    </message>
+    <message>
+        <source>Resumed</source>
+        <translation>Reanudado</translation>
+    </message>
+    <message>
         <source>No RTHS run yet.</source>
         <translation>Aún no hay ningún ensayo RTHS.</translation>
     </message>
@@ -3338,8 +3370,8 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>Detener</translation>
     </message>
     <message>
-        <source>Hold the loop before its next tick (a held RTHS run restarts from rest)</source>
-        <translation>Detener el lazo antes de su siguiente ciclo (un ensayo RTHS detenido se reinicia desde el reposo)</translation>
+        <source>Hold the loop before its next tick (Resume goes on from there)</source>
+        <translation>Detener el lazo antes de su siguiente ciclo (Reanudar continúa desde ahí)</translation>
     </message>
     <message>
         <source>Emergency hold</source>
@@ -3516,6 +3548,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no held RTHS run to resume</source>
+        <translation>no hay ningún ensayo RTHS detenido que reanudar</translation>
+    </message>
     <message>
         <source>an RTHS run is already going</source>
         <translation>ya hay un ensayo RTHS en curso</translation>

@@ -1400,6 +1400,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
 <context>
     <name>RthsCommand</name>
     <message>
+        <source>the controller did not resume the run: %1</source>
+        <translation>控制器未继续该试验：%1</translation>
+    </message>
+    <message>
+        <source>With --controller: resume the controller&apos;s held run from the tick where it held instead of starting one.</source>
+        <translation>与 --controller 一起使用：从保持处的周期继续控制器上已保持的试验，而不是开始新的试验。</translation>
+    </message>
+    <message>
+        <source>--resume needs --controller: it resumes the held run hsmu-controller keeps (a local run is resumed in the console&apos;s RTHS view)</source>
+        <translation>--resume 需要 --controller：它继续 hsmu-controller 保留的已保持试验（本地试验在控制台的 RTHS 视图中继续）</translation>
+    </message>
+    <message>
         <source>Real-time hybrid simulation on the virtual lab&apos;s servo-hydraulic actuator.</source>
         <translation>在虚拟实验室的电液伺服作动器上进行实时混合试验。</translation>
     </message>
@@ -3279,6 +3291,26 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>Go on with the held run from the tick where it held (refused while a limit is still breached)</source>
+        <translation>从保持处的周期继续已保持的试验（限值仍被超出时拒绝）</translation>
+    </message>
+    <message>
+        <source>Not resumed: %1</source>
+        <translation>未继续：%1</translation>
+    </message>
+    <message>
+        <source>RTHS run not resumed: %1</source>
+        <translation>RTHS 试验未继续：%1</translation>
+    </message>
+    <message>
+        <source>RTHS resume</source>
+        <translation>RTHS 继续</translation>
+    </message>
+    <message>
+        <source>Resumed</source>
+        <translation>已继续</translation>
+    </message>
+    <message>
         <source>No RTHS run yet.</source>
         <translation>尚无 RTHS 试验。</translation>
     </message>
@@ -3335,8 +3367,8 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>保持</translation>
     </message>
     <message>
-        <source>Hold the loop before its next tick (a held RTHS run restarts from rest)</source>
-        <translation>在下一个周期前保持回路（已保持的 RTHS 试验须从静止重新开始）</translation>
+        <source>Hold the loop before its next tick (Resume goes on from there)</source>
+        <translation>在下一个周期前保持回路（“继续”从该处继续）</translation>
     </message>
     <message>
         <source>Emergency hold</source>
@@ -3513,6 +3545,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no held RTHS run to resume</source>
+        <translation>没有可继续的已保持 RTHS 试验</translation>
+    </message>
     <message>
         <source>an RTHS run is already going</source>
         <translation>已有 RTHS 试验在运行</translation>

@@ -5,9 +5,8 @@
 #include "comms/controller/SecretCompare.h"
 #include "comms/tls/ByteStream.h"
 #include "comms/rths/RthsMonitor.h"
-#include "core/record/RecordWriter.h"
 #include "core/record/RthsRecord.h"
-#include "core/rths/RthsBenchmark.h"
+#include "core/rths/RthsRunner.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
@@ -68,17 +67,17 @@ struct RthsServer::Impl final : SessionHost {
     std::unique_ptr<MonitorGate> gate;
     std::unique_ptr<FastPaceGate> fastGate; ///< the fast pace's: waits for the ring to drain
     std::unique_ptr<TelemetryFeed> feed;
-    std::unique_ptr<RecordWriter> record;             // --record: this run's record.h5
-    std::unique_ptr<rths::RthsRecordFeed> recordFeed; // its ticks, from the loop's thread
-    std::string recordPath;
-    rths::TickObservers observers;                    // feed, then recordFeed, then outbox
+    std::unique_ptr<rths::RthsRecording> record;      // --record: this run's record.h5
+    rths::TickObservers observers;                    // feed, then the record, then outbox
     UpdateOutbox outbox;                              // the twin's update decisions
     std::unique_ptr<rths::PostedTwinUpdates> posted;  // the monitor's rths-update
     std::unique_ptr<rths::TwinIdentification> identification; // the damper's, online
     rths::TwinUpdateSources sources;                  // identification, then posted
+    std::unique_ptr<rths::RthsRunner> runner;         // the run; kept while held (resume)
     std::thread loop;
     std::atomic<bool> finished{false};
     bool running = false;
+    bool held = false;      ///< the last run held and may resume (its runner kept)
     rths::RthsRun result;
     std::string loopError, priorityRefusal;
     std::string holdAsked;  ///< the hold's sentence as requested (io thread)
@@ -131,8 +130,8 @@ struct RthsServer::Impl final : SessionHost {
         monitor = &s;
         ack.element = job.name;
         ack.description = describe();
-        ack.holding = gate && gate->holdRequested();
-        ack.holdReason = holdAsked;
+        ack.holding = held || (gate && gate->holdRequested());
+        ack.holdReason = held ? result.hold : holdAsked;
         log("monitor " + s.peer() + (running ? " joins the running loop" : " connected"));
         return std::nullopt;
     }
@@ -152,8 +151,7 @@ struct RthsServer::Impl final : SessionHost {
             return update(*u);
         (void)s;
         if (std::holds_alternative<ResumeMsg>(m))
-            return ErrorMsg{ErrorCode::ProtocolViolation,
-                            "an RTHS run does not resume after a hold: start a new run (rths-start)"};
+            return resumeRun();
         return ErrorMsg{ErrorCode::ProtocolViolation, std::string("unexpected ") +
                                                           messageTypeName(messageTypeOf(m)) +
                                                           " on an RTHS controller"};
@@ -202,9 +200,65 @@ struct RthsServer::Impl final : SessionHost {
         log("dropped " + s.peer() + ": " + why);
     }
 
+    /// resume: the held run goes on from the tick where it held (RthsRunner::resume), or the
+    /// reason it does not (Error(holding), the run stays held).
+    std::optional<Message> resumeRun() {
+        if (running)
+            return ErrorMsg{ErrorCode::ProtocolViolation, "resume: the RTHS run is not held"};
+        if (!held || !runner)
+            return ErrorMsg{ErrorCode::ProtocolViolation,
+                            "resume: no held RTHS run to resume (rths-start runs from rest)"};
+        const std::string why = runner->resume();
+        if (!why.empty()) {
+            log("resume refused: " + why);
+            return ErrorMsg{ErrorCode::Holding, why};
+        }
+        held = false;
+        const long k = runner->next();
+        std::ostringstream o;
+        o.precision(6);
+        o << "RTHS run resumed before tick " << k << " (t = " << double(k) / job.settings.rate << " s)";
+        log(o.str());
+        startLoop();
+        return AckMsg{MessageType::Resume, 0};
+    }
+
+    /// The loop's thread: runner->run() until the end or a hold, then the run so far evaluated.
+    void startLoop() {
+        finished = false;
+        running = true;
+        holdAsked.clear();
+        loopError.clear();
+        priorityRefusal.clear();
+        loop = std::thread([this] {
+            if (opt.realTime && opt.realTimePriority > 0)
+                priorityRefusal = enterRealtimePriority(opt.realTimePriority);
+            try {
+                runner->run();
+                result = runner->result();
+            } catch (const std::exception& e) {
+                result = {};
+                loopError = e.what();
+            }
+            finished.store(true, std::memory_order_release);
+        });
+        armPoll();
+    }
+
+    /// A held run given up (a new rths-start, the controller's end): its record closed.
+    void discardHeld() {
+        if (!held)
+            return;
+        held = false;
+        identification.reset();
+        closeRecord();
+        runner.reset();
+    }
+
     std::optional<Message> startRun(const RthsStartMsg& m) {
         if (running)
             return ErrorMsg{ErrorCode::ProtocolViolation, "an RTHS run is in progress"};
+        discardHeld();
         if (!(m.duration >= 0.0 && std::isfinite(m.duration)))
             return ErrorMsg{ErrorCode::ProtocolViolation, "rths-start: the duration must be >= 0 s"};
         const double h = 1.0 / job.settings.rate;
@@ -224,7 +278,7 @@ struct RthsServer::Impl final : SessionHost {
         fastGate = opt.realTime ? nullptr : std::make_unique<FastPaceGate>(*gate, *feed);
         observers = {};
         observers.add(feed.get());
-        observers.add(recordFeed.get());
+        observers.add(record ? record->feed() : nullptr);
         observers.add(&outbox);
         outbox.take();
         sources = {};
@@ -241,65 +295,56 @@ struct RthsServer::Impl final : SessionHost {
             posted = std::make_unique<rths::PostedTwinUpdates>(!opt.realTime);
             sources.add(posted.get());
         }
-        finished = false;
-        running = true;
-        holdAsked.clear();
-        loopError.clear();
-        priorityRefusal.clear();
         undelivered = sent = 0;
-        const double duration = m.duration;
-        loop = std::thread([this, duration] {
-            if (opt.realTime && opt.realTimePriority > 0)
-                priorityRefusal = enterRealtimePriority(opt.realTimePriority);
-            try {
-                rths::TickGate* g = fastGate ? static_cast<rths::TickGate*>(fastGate.get()) : gate.get();
-                result = rths::runRths(job.partition, job.groundMotion, job.settings, g,
-                                       duration, &observers, sources.empty() ? nullptr : &sources);
-            } catch (const std::exception& e) {
-                result = {};
-                loopError = e.what();
-            }
-            finished.store(true, std::memory_order_release);
-        });
+        rths::TickGate* g = fastGate ? static_cast<rths::TickGate*>(fastGate.get()) : gate.get();
+        runner = std::make_unique<rths::RthsRunner>(job.partition, job.groundMotion, job.settings, g,
+                                                    m.duration, &observers,
+                                                    sources.empty() ? nullptr : &sources);
+        startLoop();
         std::ostringstream o;
         o << "RTHS run started: " << job.settings.rate << " Hz, "
           << (opt.realTime ? "real-time" : "fast") << " pace, telemetry every " << every
           << " ticks";
         log(o.str());
-        armPoll();
         return AckMsg{MessageType::RthsStart, 0};
     }
 
     /// The first free DIR/record.h5, DIR/record-2.h5, ... (an earlier run's record is never
     /// overwritten), opened for this run; false with the reason.
     bool openRecord(double h, std::string& error) {
-        const auto floors = int(job.partition.reference.m.rows());
         try {
-            recordPath = rths::firstFreeRecordPath(opt.recordDirectory);
-            record = std::make_unique<RecordWriter>(recordPath, rths::rthsLayout(floors),
-                                                    RecordStart{job.configuration, job.name, {}, h});
+            record = std::make_unique<rths::RthsRecording>(
+                opt.recordDirectory, RecordStart{job.configuration, job.name, {}, h}, job.groundMotion,
+                int(job.partition.reference.m.rows()));
         } catch (const std::exception& e) {
             error = e.what();
             return false;
         }
-        recordFeed = std::make_unique<rths::RthsRecordFeed>(*record, job.groundMotion, floors, record.get());
         return true;
     }
+
+    bool deadlineHold() const { return pacer && pacer->policyHolds(); }
 
     /// The run's record: its hold as a critical alarm, then closed (after the loop's join).
     void closeRecord() {
         if (!record)
             return;
-        if (!result.hold.empty()) {
-            const bool deadline = pacer && job.holdAfterMisses > 0 && pacer->misses() >= job.holdAfterMisses;
-            record->writeAlarms({rths::rthsHoldAlarm(result, deadline)});
-        }
-        if (record->finish())
-            log("record: " + recordPath + " (" + std::to_string(result.time.size()) + " ticks)");
+        if (record->finish(result, deadlineHold()))
+            log("record: " + record->path() + " (" + std::to_string(result.time.size()) + " ticks)");
         else
-            log("record: " + recordPath + ": " + record->error());
-        recordFeed.reset();
+            log("record: " + record->path() + ": " + record->error());
         record.reset();
+    }
+
+    /// A held run's record: the hold's alarm written and flushed, the file kept open for a resume.
+    void holdRecord() {
+        if (!record)
+            return;
+        if (record->held(result, deadlineHold()))
+            log("record: " + record->path() + " (" + std::to_string(result.time.size()) +
+                " ticks; held: the ticks after a resume follow)");
+        else
+            log("record: " + record->path() + ": " + record->error());
     }
 
     void armPoll() {
@@ -351,12 +396,17 @@ struct RthsServer::Impl final : SessionHost {
                 e.decision = UpdateDecision::Refused;
                 outbox.onUpdate(0, e);
             }
+        held = loopError.empty() && !result.hold.empty() && !stopping && runner && runner->held();
         if (identification) {
             if (!identification->failure().empty())
                 log(identification->failure());
-            identification.reset(); // its worker stops
+            if (!held)
+                identification.reset(); // its worker stops
         }
-        closeRecord();
+        if (held)
+            holdRecord();
+        else
+            closeRecord();
         drain();
         running = false;
         if (!priorityRefusal.empty())
@@ -400,6 +450,7 @@ RthsServer::~RthsServer() {
             d->gate->requestHold("controller shutting down");
         d->loop.join();
     }
+    d->discardHeld();
 }
 
 bool RthsServer::listen(std::string& error) {

@@ -8,8 +8,9 @@
 //
 //   - one monitor at a time (hello, token as ControllerServer; another gets Error(Busy));
 //   - rths-start starts a run (one at a time; a new run after the last one ended);
-//   - hold and emergency-hold hold the loop before its next tick (ack'ed); the run ends there
-//     and its summary says so (no resume: a held RTHS run restarts from rest);
+//   - hold and emergency-hold hold the loop before its next tick (ack'ed); the run's rths-end
+//     says so; resume goes on from the held tick (RthsRunner; a limit still breached refuses
+//     it: Error(holding), the run stays held); a new rths-start gives the held run up;
 //   - telemetry: one frame every `decimation` ticks (TelemetryFeed's bounded ring, drained by
 //     the io thread every kPoll; a slow or absent monitor loses frames, counted, never the
 //     loop's time); rths-end with the summary when the run ends;

@@ -62,7 +62,7 @@ bool RealtimePacer::admit(long k, std::string& why)
         prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL); // timer slack 1 ns (default 50 us) for this thread
         m_start = m_clock.now();
     }
-    if (m_holdAfter > 0 && m_misses >= m_holdAfter) {
+    if (policyHolds()) {
         std::ostringstream o;
         o.precision(3);
         o << m_misses << " deadline misses (the last at tick " << m_lastMiss << ", "
@@ -73,6 +73,12 @@ bool RealtimePacer::admit(long k, std::string& why)
     }
     m_clock.sleepUntil(m_start + k * m_period);
     return true;
+}
+
+void RealtimePacer::resume(long k)
+{
+    m_start = m_clock.now() - k * m_period;
+    m_missesBeforeResume = m_misses;
 }
 
 void RealtimePacer::done(long k)

@@ -54,10 +54,15 @@ public:
 
     bool admit(long k, std::string& why) override;
     void done(long k) override;
+    /// A held run goes on with tick k: k is released now (the schedule restarts, the time held
+    /// is no lateness) and the policy counts the misses from here (misses() keeps them all).
+    void resume(long k) override;
 
     long misses() const { return m_misses; }
     double worstLateness() const { return m_worst; } ///< [s]
     long firstMissTick() const { return m_firstMiss; } ///< -1: none
+    /// The policy holds the run (holdAfterMisses reached since the start or the last resume).
+    bool policyHolds() const { return m_holdAfter > 0 && m_misses - m_missesBeforeResume >= m_holdAfter; }
 
 private:
     PaceClock& m_clock;
@@ -65,6 +70,7 @@ private:
     int m_holdAfter;
     std::chrono::nanoseconds m_start{0};
     long m_misses = 0, m_firstMiss = -1, m_lastMiss = -1;
+    long m_missesBeforeResume = 0; // not counted by the policy
     double m_worst = 0.0, m_lastLateness = 0.0;
 };
 

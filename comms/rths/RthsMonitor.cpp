@@ -30,6 +30,17 @@ void MonitorGate::done(long k)
     m_worst.store(m_pacer->worstLateness(), std::memory_order_relaxed);
 }
 
+void MonitorGate::resume(long k)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_reason.clear();
+        m_requested.store(false, std::memory_order_release);
+    }
+    if (m_pacer)
+        m_pacer->resume(k);
+}
+
 void MonitorGate::requestHold(const std::string& reason)
 {
     std::lock_guard lock(m_mutex);

@@ -35,6 +35,9 @@ public:
 
     bool admit(long k, std::string& why) override;
     void done(long k) override;
+    /// The held run goes on with tick k: the hold asked is forgotten (a new one may come), the
+    /// pacer's schedule restarts.
+    void resume(long k) override;
 
     /// Hold before the next tick; the first request's reason is kept ("console hold: ...").
     void requestHold(const std::string& reason);
@@ -88,6 +91,7 @@ public:
     FastPaceGate(MonitorGate& gate, const TelemetryFeed& feed) : m_gate(gate), m_feed(feed) {}
     bool admit(long k, std::string& why) override;
     void done(long k) override { m_gate.done(k); }
+    void resume(long k) override { m_gate.resume(k); }
 
 private:
     MonitorGate& m_gate;

@@ -50,6 +50,12 @@ void RthsRecordFeed::onUpdate(long k, const UpdateEvent& event)
         m_notes->addNote(event.time, int(k), describeTwinUpdate(event));
 }
 
+void RthsRecordFeed::onResume(long k, double t, const std::string& note)
+{
+    if (m_notes)
+        m_notes->addNote(t, int(k), note);
+}
+
 void RthsRecordFeed::onTick(long k, const RthsTick& tick,
                             const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference)
 {
@@ -84,14 +90,26 @@ std::string firstFreeRecordPath(const std::string& dir)
 RthsRecording::RthsRecording(const std::string& dir, const RecordStart& start, const GroundMotion& groundMotion,
                              int floors)
     : m_path(firstFreeRecordPath(dir)), m_writer(m_path, rthsLayout(floors), start),
-      m_feed(m_writer, groundMotion, floors)
+      m_feed(m_writer, groundMotion, floors, &m_writer)
 {
+}
+
+bool RthsRecording::held(const RthsRun& run, bool deadlineMiss)
+{
+    if (run.hold.empty() || run.hold == m_holdWritten)
+        return m_writer.flush();
+    m_holds.push_back(rthsHoldAlarm(run, deadlineMiss)); // writeAlarms takes a growing vector
+    m_writer.writeAlarms(m_holds);
+    m_holdWritten = run.hold;
+    return m_writer.flush();
 }
 
 bool RthsRecording::finish(const RthsRun& run, bool deadlineMiss)
 {
-    if (!run.hold.empty())
-        m_writer.writeAlarms({rthsHoldAlarm(run, deadlineMiss)});
+    if (!run.hold.empty() && run.hold != m_holdWritten) {
+        m_holds.push_back(rthsHoldAlarm(run, deadlineMiss));
+        m_writer.writeAlarms(m_holds);
+    }
     return m_writer.finish();
 }
 

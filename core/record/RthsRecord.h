@@ -40,6 +40,8 @@ public:
     void onTick(long k, const RthsTick& tick,
                 const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) override;
     void onUpdate(long k, const UpdateEvent& event) override;
+    /// The resume of a held run, as a note at tick k (docs/rths.md, "Hold and resume").
+    void onResume(long k, double t, const std::string& note) override;
 
 private:
     StepObserver& m_sink;
@@ -57,7 +59,9 @@ std::string firstFreeRecordPath(const std::string& dir);
 /// One RTHS run's record in folder DIR, at firstFreeRecordPath(DIR): the RecordWriter (batched
 /// on its own thread) and the RthsRecordFeed the loop hands its ticks to (feed(), from the
 /// loop's thread); finish() after the loop: a held run's rthsHoldAlarm at its last tick, then
-/// the file closed. The console's RTHS view records through it (docs/rths.md).
+/// the file closed; held() between a hold and a resume. The console's RTHS view and
+/// hsmu-controller --rths --record record through it (docs/rths.md); twin updates and resumes
+/// are notes at their tick.
 class RthsRecording {
 public:
     /// Throws (RecordError, std::runtime_error) when the folder or the file cannot be created.
@@ -65,7 +69,11 @@ public:
                   int floors);
     const std::string& path() const { return m_path; }
     TickObserver* feed() { return &m_feed; }
-    /// false with error() when the file could not be completed (every flushed tick stays).
+    /// The run held and may resume (RthsRunner): its rthsHoldAlarm at its last tick, flushed;
+    /// the file stays open for the ticks after a resume. False with error() when not written.
+    bool held(const RthsRun& run, bool deadlineMiss);
+    /// false with error() when the file could not be completed (every flushed tick stays). A
+    /// held run's alarm is written here unless held() wrote it for the same hold.
     bool finish(const RthsRun& run, bool deadlineMiss);
     const std::string& error() const { return m_writer.error(); }
 
@@ -73,6 +81,8 @@ private:
     std::string m_path;
     RecordWriter m_writer;
     RthsRecordFeed m_feed;
+    std::string m_holdWritten; // the hold whose alarm held() wrote
+    std::vector<Alarm> m_holds; // every hold's alarm so far
 };
 
 } // namespace hsmu::rths

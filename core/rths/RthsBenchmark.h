@@ -50,6 +50,8 @@ public:
     virtual bool admit(long k, std::string& why) = 0;
     /// Tick k's work is done (its lateness is judged here).
     virtual void done(long k) = 0;
+    /// A held run goes on with tick k (RthsRunner::resume): forget the hold, restart the pace.
+    virtual void resume(long /*k*/) {}
 };
 
 /// Receives every tick of runRths as it is sampled (the run's HDF5 record: RthsRecord.h), on
@@ -62,6 +64,9 @@ public:
                         const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>& reference) = 0;
     /// A twin update decided before tick k (applied or refused: the event says).
     virtual void onUpdate(long /*k*/, const UpdateEvent& /*event*/) {}
+    /// A held run goes on with tick k at time t [s] (RthsRunner::resume); note: "resumed before
+    /// tick K ...".
+    virtual void onResume(long /*k*/, double /*t*/, const std::string& /*note*/) {}
 };
 
 /// Hands every tick to each of several observers, in the order added (e.g. the controller's
@@ -81,6 +86,11 @@ public:
         for (TickObserver* o : m_observers)
             o->onUpdate(k, event);
     }
+    void onResume(long k, double t, const std::string& note) override
+    {
+        for (TickObserver* o : m_observers)
+            o->onResume(k, t, note);
+    }
 
 private:
     std::vector<TickObserver*> m_observers;
@@ -92,7 +102,7 @@ private:
 /// With updates (a damper twin: DamperTwin.h), before each tick (after the gate admitted it)
 /// every update it has due is applied to the twin (RthsLoop::updateTwin; the events in
 /// RthsRun::updates, and to the observer), and after the tick it observes the damper's
-/// measured deformation and force.
+/// measured deformation and force. A hold ends it (RthsRunner holds and resumes).
 RthsRun runRths(const Partition& partition, const GroundMotion& groundMotion,
                 const RthsSettings& settings, TickGate* gate = nullptr, double duration = 0.0,
                 TickObserver* observer = nullptr, TwinUpdateSource* updates = nullptr);

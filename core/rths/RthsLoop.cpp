@@ -1,5 +1,8 @@
 #include "core/rths/RthsLoop.h"
 
+#include "core/rths/DamperReference.h"
+#include "core/rths/Rk4.h"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -8,23 +11,6 @@
 
 namespace hsmu::rths {
 
-namespace {
-
-/// One classical Runge-Kutta step of x'' = acc(x, v, s) over h (docs/rths.md, "The loop"),
-/// s the stage's time as a fraction of h (0, 1/2 or 1); a0 = acc(x, v, 0), already known.
-template <class Acceleration>
-void rk4Step(Eigen::VectorXd& x, Eigen::VectorXd& v, double h, const Eigen::VectorXd& a0,
-             const Acceleration& acc)
-{
-    const Eigen::VectorXd k1x = v, k1v = a0;
-    const Eigen::VectorXd k2x = v + 0.5 * h * k1v, k2v = acc(x + 0.5 * h * k1x, k2x, 0.5);
-    const Eigen::VectorXd k3x = v + 0.5 * h * k2v, k3v = acc(x + 0.5 * h * k2x, k3x, 0.5);
-    const Eigen::VectorXd k4x = v + h * k3v, k4v = acc(x + h * k3x, k4x, 1.0);
-    x += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-    v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-}
-
-} // namespace
 
 RthsLoop::RthsLoop(const Partition& partition, const GroundMotion& groundMotion,
                    const RthsSettings& settings)
@@ -117,6 +103,19 @@ void RthsLoop::checkCommand(double command)
     o << "actuator command " << command * 1000.0 << " mm beyond the stroke limit +-"
       << stroke * 1000.0 << " mm";
     holdAt(o.str());
+    m_commandHold = true;
+}
+
+std::string RthsLoop::resume()
+{
+    if (!holding())
+        return {};
+    if (m_commandHold)
+        return m_hold + " (the state that gave this command has not moved: not resumed)";
+    if (const std::string why = plantLimitBreach(m_plant, m_s.limits); !why.empty())
+        return why + " (still; tick " + std::to_string(m_k) + "): not resumed";
+    m_hold.clear();
+    return {};
 }
 
 void RthsLoop::checkPlant()
@@ -197,24 +196,7 @@ UpdateEvent RthsLoop::updateTwin(const TwinUpdate& u)
 Eigen::MatrixXd referenceResponse(const LinearStructure& r, const GroundMotion& ag, double h,
                                   long n)
 {
-    const Eigen::MatrixXd mInv = r.m.inverse();
-    const Eigen::VectorXd load = r.m * r.iota;
-    const auto acc = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& v, double a) {
-        return Eigen::VectorXd(mInv * (-load * a - r.c * v - r.k * x));
-    };
-    const auto dofs = r.m.rows();
-    Eigen::MatrixXd out(n, dofs);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(dofs), v = x;
-    for (long k = 0; k < n; ++k) {
-        out.row(k) = x.transpose();
-        const double t = double(k) * h;
-        const double a0 = ag.at(t), am = ag.at(t + 0.5 * h), a1 = ag.at(t + h);
-        rk4Step(x, v, h, acc(x, v, a0),
-                [&](const Eigen::VectorXd& xs, const Eigen::VectorXd& vs, double s) {
-                    return acc(xs, vs, s < 1.0 ? am : a1);
-                });
-    }
-    return out;
+    return referenceResponse(r, ag, h, n, ReferenceDampers{});
 }
 
 } // namespace hsmu::rths

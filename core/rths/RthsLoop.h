@@ -77,6 +77,11 @@ public:
     /// One tick (L1-L5); false once holding (nothing advanced).
     bool tick();
     bool holding() const { return !m_hold.empty(); }
+    /// Clear the loop's own hold (a limit) when its channel is back inside the limits; "" when
+    /// the next tick may run (also when not holding), else why not (docs/rths.md, "Hold and
+    /// resume"): the plant's stroke, force and velocity re-checked now; a command beyond the
+    /// stroke is never cleared (the state that gave it has not moved since).
+    std::string resume();
     const std::string& holdReason() const { return m_hold; }
     const RthsTick& last() const { return m_last; }
     long ticks() const { return m_k; }
@@ -115,6 +120,7 @@ private:
     long m_k = 0;
     RthsTick m_last;
     std::string m_hold;
+    bool m_commandHold = false; // the hold is the command's stroke (before the plant moved)
 };
 
 /// The first limit the plant is past, as a sentence naming the channel and its value; "".

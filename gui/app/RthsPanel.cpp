@@ -106,6 +106,7 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_start = new QPushButton(this);
     m_hold = new QPushButton(this);
     m_emergency = new QPushButton(this);
+    m_resume = new QPushButton(this);
     m_emergency->setStyleSheet(QStringLiteral("QPushButton { color: white; background: #b00000; font-weight: bold; }"
                                               "QPushButton:disabled { color: #f0e0e0; background: #d8a8a8; }"));
     m_source->setObjectName(QStringLiteral("rthsSource"));
@@ -115,8 +116,10 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_start->setObjectName(QStringLiteral("rthsStart"));
     m_hold->setObjectName(QStringLiteral("rthsHold"));
     m_emergency->setObjectName(QStringLiteral("rthsEmergencyHold"));
+    m_resume->setObjectName(QStringLiteral("rthsResume"));
     buttons->addWidget(m_start);
     buttons->addWidget(m_hold);
+    buttons->addWidget(m_resume);
     buttons->addWidget(m_emergency);
     v->addLayout(buttons);
 
@@ -167,6 +170,7 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     connect(m_start, &QPushButton::clicked, this, &RthsPanel::start);
     connect(m_hold, &QPushButton::clicked, this, &RthsPanel::hold);
     connect(m_emergency, &QPushButton::clicked, this, &RthsPanel::emergencyHold);
+    connect(m_resume, &QPushButton::clicked, this, &RthsPanel::resume);
     connect(m_browse, &QToolButton::clicked, this, &RthsPanel::browse);
     connect(m_source, &QComboBox::currentIndexChanged, this, &RthsPanel::updateButtons);
     for (QDoubleSpinBox* b : {m_j1Warning, m_j1Critical, m_j2Warning, m_j2Critical})
@@ -207,7 +211,9 @@ void RthsPanel::retranslateUi()
     m_duration->setToolTip(tr("Stop the run after this many seconds of test time (0: the whole record)"));
     m_start->setText(tr("Start RTHS"));
     m_hold->setText(tr("Hold"));
-    m_hold->setToolTip(tr("Hold the loop before its next tick (a held RTHS run restarts from rest)"));
+    m_hold->setToolTip(tr("Hold the loop before its next tick (Resume goes on from there)"));
+    m_resume->setText(tr("Resume"));
+    m_resume->setToolTip(tr("Go on with the held run from the tick where it held (refused while a limit is still breached)"));
     m_emergency->setText(tr("Emergency hold"));
     m_thresholdHeader->setText(tr("Live tracking"));
     m_warningHeader->setText(tr("Warning above"));
@@ -274,6 +280,7 @@ void RthsPanel::updateButtons()
     m_start->setEnabled(!going);
     m_hold->setEnabled(going);
     m_emergency->setEnabled(going);
+    m_resume->setEnabled(m_session->resumable());
     m_source->setEnabled(!going);
     m_file->setEnabled(!going && file);
     m_browse->setEnabled(!going && file);
@@ -391,6 +398,21 @@ void RthsPanel::emergencyHold()
         return;
     m_session->emergencyHold();
     m_alarms->addEvent(m_lastTime, int(m_lastTick), tr("RTHS emergency hold"));
+}
+
+void RthsPanel::resume()
+{
+    QString why;
+    if (!m_session->resume(&why)) {
+        setStatus([why] { return tr("Not resumed: %1").arg(why); }, true);
+        m_alarms->addMessage(m_lastTime, int(m_lastTick), [why] { return tr("RTHS run not resumed: %1").arg(why); },
+                             AlarmSeverity::Warning);
+        updateButtons();
+        return;
+    }
+    m_alarms->addEvent(m_lastTime, int(m_lastTick), tr("RTHS resume"));
+    setStatus([] { return tr("Resumed"); }, false);
+    updateButtons();
 }
 
 void RthsPanel::setLimits(const rths::TrackingLimits& l)

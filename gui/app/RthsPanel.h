@@ -7,7 +7,8 @@
 //   - the moving window's delay [ms] and amplitude error [%] over time [s];
 //   - live J1 [ms] and J2 [%] with their warning and critical thresholds (editable during the
 //     run, effective at the next estimate): crossing one raises an alarm in the alarm panel;
-//   - Hold and Emergency hold, which hold the running loop before its next tick; a run held by
+//   - Hold and Emergency hold, which hold the running loop before its next tick, and Resume,
+//     which lets a held run go on from there (a limit still breached refuses it); a run held by
 //     the loop itself (a limit of the plant or command, deadline misses) is named in the panel
 //     and as a critical alarm with its channel, value and tick;
 //   - the record folder (default: the console's record folder + "/rths"; empty: not recorded)
@@ -62,6 +63,9 @@ public:
     void start();
     void hold();
     void emergencyHold();
+    /// Go on with the held run from the tick where it held (docs/rths.md, "Hold and resume");
+    /// a refusal (a limit still breached) is shown and listed with its reason.
+    void resume();
     bool running() const { return m_session->running(); }
 
     /// The console's record folder (ConsoleSettings::recordDirectory()) + "/rths"; "" when the
@@ -127,6 +131,7 @@ private:
     QPushButton* m_start = nullptr;
     QPushButton* m_hold = nullptr;
     QPushButton* m_emergency = nullptr;
+    QPushButton* m_resume = nullptr;
     QLabel* m_j1Label = nullptr;
     QLabel* m_j2Label = nullptr;
     QDoubleSpinBox* m_j1Warning = nullptr;

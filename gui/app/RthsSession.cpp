@@ -78,20 +78,35 @@ bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace
     m_observers.add(m_recording ? m_recording->feed() : nullptr);
     m_backpressure = std::make_unique<comms::FastPaceGate>(*m_gate, *m_feed);
     rths::TickGate* gate = pace == Pace::Fast ? static_cast<rths::TickGate*>(m_backpressure.get()) : m_gate.get();
-    m_done = false;
     m_run = {};
     m_link.reset();
     m_failure.clear();
-    m_thread = std::thread([this, part, s, gate, duration, misses = cfg.holdAfterMisses] {
+    m_holdAfterMisses = cfg.holdAfterMisses;
+    m_runner = std::make_unique<rths::RthsRunner>(part, m_ag, s, gate, duration, &m_observers);
+    launchLocal();
+    return true;
+}
+
+void RthsSession::launchLocal()
+{
+    m_done = false;
+    m_resumable = false;
+    m_thread = std::thread([this] {
+        bool failed = false;
         try {
-            m_run = rths::runRths(part, m_ag, s, gate, duration, &m_observers);
+            m_runner->run();
+            m_run = m_runner->result();
         } catch (const std::exception& e) {
             m_run.hold = std::string("the loop failed: ") + e.what();
+            failed = true;
         }
-        // The record is closed here, off the GUI thread: a hold is its last tick's alarm.
+        m_resumable = !failed && m_runner->held();
+        // The record is written here, off the GUI thread: a hold is its last tick's alarm; the
+        // file stays open while the run may resume.
         if (m_recording) {
-            const bool deadline = m_pacer && misses > 0 && m_pacer->misses() >= misses;
-            if (!m_recording->finish(m_run, deadline))
+            const bool deadline = m_pacer && m_pacer->policyHolds();
+            const bool ok = m_resumable ? m_recording->held(m_run, deadline) : m_recording->finish(m_run, deadline);
+            if (!ok)
                 m_recordError = m_recording->error();
         }
         m_ticks = long(m_run.time.size());
@@ -99,6 +114,25 @@ bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace
     });
     m_active = true;
     m_poll.start();
+}
+
+bool RthsSession::resume(QString* why)
+{
+    const auto refuse = [why](const QString& text) {
+        if (why)
+            *why = text;
+        return false;
+    };
+    if (!resumable())
+        return refuse(tr("no held RTHS run to resume"));
+    join();
+    if (m_link) {
+        launchRemote(true);
+        return true;
+    }
+    if (const std::string no = m_runner->resume(); !no.empty())
+        return refuse(QString::fromStdString(no));
+    launchLocal();
     return true;
 }
 
@@ -122,6 +156,7 @@ bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint1
     m_recording.reset();
     m_recordPath.clear();
     m_recordError.clear();
+    m_runner.reset();
     m_link = std::make_unique<RthsLink>();
     m_remoteSamples.clear();
     m_description.clear();
@@ -129,11 +164,27 @@ bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint1
     m_failure.clear();
     m_run = {};
     m_ticks = 0;
+    m_host = host.toStdString();
+    m_port = port;
+    m_token = token.toStdString();
+    m_decimation = decimation;
+    m_duration = duration;
+    launchRemote(false);
+    return true;
+}
+
+void RthsSession::launchRemote(bool resume)
+{
     m_done = false;
-    m_thread = std::thread([this, h = host.toStdString(), port, t = token.toStdString(), decimation, duration] {
+    m_resumable = false;
+    m_failure.clear();
+    if (resume)
+        m_link = std::make_unique<RthsLink>(); // the held run's link said goodbye at its end
+    m_thread = std::thread([this, resume] {
         std::string description, why;
-        if (!m_link->open(h, port, t, unsigned(decimation), duration, description, why)) {
+        if (!m_link->open(m_host, m_port, m_token, unsigned(m_decimation), m_duration, description, why, resume)) {
             m_failure = why;
+            m_resumable = resume; // a refused resume leaves the controller's run held
             m_done = true;
             return;
         }
@@ -155,7 +206,8 @@ bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint1
                 for (int i = 0; i < 9; ++i)
                     m_run.criteria.j[i] = ev.end.j[i];
                 m_ticks = long(ev.end.ticks);
-                m_link->bye("run ended");
+                m_resumable = !ev.end.hold.empty();
+                m_link->bye(m_resumable ? "run held" : "run ended");
             } else {
                 m_failure = ev.lost ? tr("the link to the controller was lost: %1 (the controller holds the loop per its --monitor-loss policy)")
                                           .arg(QString::fromStdString(ev.error)).toStdString()
@@ -167,7 +219,6 @@ bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint1
     });
     m_active = true;
     m_poll.start();
-    return true;
 }
 
 void RthsSession::hold()

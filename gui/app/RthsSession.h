@@ -6,17 +6,20 @@
 // and a monitored `hsmu-controller --rths` run reach the view as the same samples.
 // The GUI thread drains the samples every kPollMs and emits them in order; at the fast pace the
 // loop waits while half the feed's ring is undrained (nothing dropped, the simulated time does
-// not care). hold() / emergencyHold() hold the loop before its next tick (no resume: a held
-// RTHS run restarts from rest). The destructor holds a running loop and joins it.
+// not care). hold() / emergencyHold() hold the loop before its next tick; resume() lets a held
+// run go on from the tick where it held (core's RthsRunner locally; on a controller, a new
+// connection that sends resume: docs/rths.md, "Hold and resume"). The destructor holds a
+// running loop and joins it.
 // A local run with a record folder writes every tick to the first free record.h5 /
 // record-N.h5 there (core's RthsRecording: the same RthsRecordFeed and RecordWriter as
-// `hsmu rths`, batched on the writer's thread), a hold as the last tick's alarm; the loop's
-// thread closes it.
+// `hsmu rths`, batched on the writer's thread), a hold as the last tick's alarm (the file stays
+// open while the run may resume, the resume a note); the loop's thread closes it.
 // Thread rules: GUI thread, except the loop's own thread inside.
 
 #include "comms/rths/RthsMonitor.h"
 #include "core/config/RthsConfig.h"
 #include "core/record/RthsRecord.h"
+#include "core/rths/RthsRunner.h"
 #include "gui/cli/RthsLink.h"
 
 #include <QObject>
@@ -63,6 +66,13 @@ public:
     QString recordError() const { return m_done ? QString::fromStdString(m_recordError) : QString(); }
     void hold();
     void emergencyHold();
+    /// The last run held (and was not given up by a new start): it may be resumed.
+    bool resumable() const { return !m_active && m_resumable; }
+    /// Go on with the held run from the tick where it held (its samples, then finished() again
+    /// with the whole run's criteria). False with *why (not held; a limit still breached, with
+    /// the channel) and the run stays held. Monitoring a controller, the refusal comes from the
+    /// controller and arrives as failed().
+    bool resume(QString* why);
 
 signals:
     /// Every sample since the last batch, oldest first (GUI thread).
@@ -78,6 +88,8 @@ signals:
 private:
     void poll();
     void join();
+    void launchLocal(); ///< the loop's thread: m_runner->run() until the end or a hold
+    void launchRemote(bool resume); ///< the link's thread: open (rths-start or resume), follow
 
     QTimer m_poll;
     comms::MonotonicClock m_clock;
@@ -85,6 +97,13 @@ private:
     std::unique_ptr<comms::MonitorGate> m_gate;
     std::unique_ptr<comms::TelemetryFeed> m_feed;
     std::unique_ptr<comms::FastPaceGate> m_backpressure;
+    std::unique_ptr<rths::RthsRunner> m_runner; // the local run; kept while held
+    bool m_resumable = false;
+    int m_holdAfterMisses = 0;
+    std::string m_host, m_token; // the monitored controller (startRemote)
+    quint16 m_port = 0;
+    long m_decimation = 1;
+    double m_duration = 0.0;
     std::thread m_thread;
     std::atomic<bool> m_done{false};
     bool m_active = false;

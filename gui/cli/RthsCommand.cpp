@@ -64,7 +64,7 @@ bool applyCompensation(const QString& name, rths::RthsSettings& s)
 int monitorController(const QCommandLineParser& p, const RthsConfig& cfg, const rths::RthsSettings& s,
                       double duration, const QCommandLineOption& controllerOpt,
                       const QCommandLineOption& tokenFileOpt, const QCommandLineOption& everyOpt,
-                      const QCommandLineOption& outOpt, const QCommandLineOption& updateOpt)
+                      const QCommandLineOption& outOpt, const QCommandLineOption& updateOpt, bool resume)
 {
     std::string error;
     const auto address = comms::LinkAddress::parse(p.value(controllerOpt).toStdString(), &error);
@@ -77,6 +77,7 @@ int monitorController(const QCommandLineParser& p, const RthsConfig& cfg, const 
     o.port = address->port;
     o.duration = duration;
     o.out = p.value(outOpt);
+    o.resume = resume;
     if (p.isSet(tokenFileOpt)) {
         const auto secret = readSecretFile(p.value(tokenFileOpt).toStdString(), error);
         if (!secret)
@@ -128,7 +129,8 @@ int RthsCommand::exec(const QStringList& arguments)
     const QCommandLineOption tokenFileOpt(QStringLiteral("token-file"), tr("File whose first line is the controller's shared secret."), QStringLiteral("file"));
     const QCommandLineOption everyOpt(QStringLiteral("telemetry-every"), tr("With --controller: one telemetry frame every N ticks (default: about 128 per second)."), QStringLiteral("n"));
     const QCommandLineOption updateOpt(QStringLiteral("update"), tr("With --controller: at T seconds of the run, send new values of the damper twin's parameters (repeatable)."), QStringLiteral("T:name=value,..."));
-    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, spinOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt, updateOpt});
+    const QCommandLineOption resumeOpt(QStringLiteral("resume"), tr("With --controller: resume the controller's held run from the tick where it held instead of starting one."));
+    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, spinOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt, updateOpt, resumeOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed->isEmpty() ? 0 : fail(*parsed);
     const QStringList pos = p.positionalArguments();
@@ -147,6 +149,8 @@ int RthsCommand::exec(const QStringList& arguments)
     };
     if (!p.isSet(controllerOpt) && p.isSet(updateOpt))
         return fail(tr("--update needs --controller: it sends the update to the loop hsmu-controller runs"));
+    if (!p.isSet(controllerOpt) && p.isSet(resumeOpt))
+        return fail(tr("--resume needs --controller: it resumes the held run hsmu-controller keeps (a local run is resumed in the console's RTHS view)"));
     if (p.isSet(controllerOpt))
         for (const QCommandLineOption* o : {&gmOpt, &scaleOpt, &paceOpt, &prioOpt, &spinOpt, &compOpt, &perturbOpt, &seedOpt, &noNoiseOpt})
             if (p.isSet(*o))
@@ -175,7 +179,8 @@ int RthsCommand::exec(const QStringList& arguments)
             s.plant = rths::perturbedPlant(s.plant, random);
         }
         if (p.isSet(controllerOpt))
-            return monitorController(p, cfg, s, duration, controllerOpt, tokenFileOpt, everyOpt, outOpt, updateOpt);
+            return monitorController(p, cfg, s, duration, controllerOpt, tokenFileOpt, everyOpt, outOpt, updateOpt,
+                                     p.isSet(resumeOpt));
         const QString gmFile = p.isSet(gmOpt) ? p.value(gmOpt) : QString::fromStdString(cfg.groundMotionFile);
         if (gmFile.isEmpty())
             return fail(tr("no ground motion: give --ground-motion FILE"));

@@ -8,7 +8,8 @@
 namespace hsmu::gui {
 
 bool RthsLink::open(const std::string& host, std::uint16_t port, const std::string& token,
-                    unsigned decimation, double duration, std::string& description, std::string& error)
+                    unsigned decimation, double duration, std::string& description, std::string& error,
+                    bool resume)
 {
     if (!m_link.connect(host, port, kConnectTimeout, error)) {
         error = RthsCommand::tr("cannot reach the controller %1:%2: %3")
@@ -25,7 +26,22 @@ bool RthsLink::open(const std::string& host, std::uint16_t port, const std::stri
         return false;
     }
     description = std::get<comms::HelloAckMsg>(*ack).description;
-    return m_link.send(comms::RthsStartMsg{decimation, duration}, error);
+    if (!resume)
+        return m_link.send(comms::RthsStartMsg{decimation, duration}, error);
+    if (!m_link.send(comms::ResumeMsg{}, error))
+        return false;
+    for (;;) { // its answer comes before the resumed run's telemetry
+        const auto answer = m_link.receive(kConnectTimeout, error);
+        if (!answer)
+            return false;
+        if (const auto* a = std::get_if<comms::AckMsg>(&*answer); a && a->acked == comms::MessageType::Resume)
+            return true;
+        if (const auto* e = std::get_if<comms::ErrorMsg>(&*answer)) {
+            error = RthsCommand::tr("the controller did not resume the run: %1")
+                        .arg(QString::fromStdString(e->reason)).toStdString();
+            return false;
+        }
+    }
 }
 
 RthsLink::Event RthsLink::next()

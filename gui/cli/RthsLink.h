@@ -24,8 +24,12 @@ public:
 
     /// Connect, hello with token, rths-start (decimation 0: the controller's default; duration
     /// 0: the whole record). False with *error; description: the controller's hello-ack text.
+    /// resume: instead of rths-start, resume the controller's held run from the tick where it
+    /// held (docs/protocol.md, "RTHS monitoring"), its decimation and duration kept; false with
+    /// the controller's reason when it refuses (not held, a limit still breached).
     bool open(const std::string& host, std::uint16_t port, const std::string& token,
-              unsigned decimation, double duration, std::string& description, std::string& error);
+              unsigned decimation, double duration, std::string& description, std::string& error,
+              bool resume = false);
 
     struct Event {
         enum class Kind { Telemetry, End, Failed } kind = Kind::Failed;

@@ -76,7 +76,8 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
     csv << "tick,time_s,desired_m,command_m,measured_m,force_N,misses,worstLateness_us,dropped,holding\n";
     RthsLink link;
     std::string error, description;
-    if (!link.open(o.host.toStdString(), o.port, o.token.toStdString(), o.decimation, o.duration, description, error))
+    if (!link.open(o.host.toStdString(), o.port, o.token.toStdString(), o.decimation, o.duration, description, error,
+                   o.resume))
         return fail(QString::fromStdString(error));
     auto& out = ConsoleStreams::out();
     out << RthsCommand::tr("controller: %1").arg(QString::fromStdString(description)) << Qt::endl;

@@ -10,6 +10,9 @@
 // With --update T:NAME=VALUE[,...] it sends rths-update (the damper twin's parameters) when the
 // telemetry first reaches T s, prints what the controller made of each (applied before tick K,
 // or refused with the reason) and lists them in summary.json ("twin": {"updates"}).
+// With --resume it sends resume instead of rths-start: the controller's held run goes on from
+// the tick where it held (telemetry.csv from there; summary.json the whole run's); a refusal
+// (no held run, a limit still breached) is an error naming the controller's reason.
 // Exit codes as `hsmu rths`: 0 ran out, 2 held, 1 failed (link, refusal).
 
 #include "core/config/RthsConfig.h"
@@ -40,6 +43,7 @@ struct RthsRemoteOptions {
     unsigned decimation = 0; ///< 0: the controller's default
     double duration = 0.0;   ///< [s] 0: the whole record
     std::vector<RthsTimedUpdate> updates; ///< in the order given
+    bool resume = false; ///< --resume: the controller's held run goes on (no rths-start)
 };
 
 int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& settings,

@@ -3,6 +3,7 @@
 // the tick; then a whole paced run on the benchmark loop that holds on its misses and keeps
 // every tick before the hold. No sleeping, no wall time: the clock is simulated.
 #include "comms/rths/RealtimePacer.h"
+#include "core/rths/RthsRunner.h"
 
 #include <QtTest>
 
@@ -41,6 +42,7 @@ public:
         m_clock.work(k % m_slowEvery == m_slowEvery - 1 ? microseconds(400) : microseconds(20));
         m_pacer.done(k);
     }
+    void resume(long k) override { m_pacer.resume(k); }
 
 private:
     comms::RealtimePacer& m_pacer;
@@ -152,6 +154,51 @@ private slots:
         QCOMPARE(pacer.misses(), 10L);
         QCOMPARE(run.time.size(), std::size_t(500));
         QVERIFY2(run.hold.find("before tick 500") != std::string::npos, run.hold.c_str());
+    }
+
+    void aDeadlineMissHoldResumesOnANewSchedule()
+    {
+        // The same run held by its 10th miss before tick 500, held 2 s, resumed: tick 500 is
+        // released at the resume (the time held is no lateness), the policy counts the misses
+        // from there (held again by the 10th after the resume, before tick 1000: misses() 20),
+        // and every tick equals the unpaced run's bit for bit.
+        FakeClock clock;
+        comms::RealtimePacer pacer(clock, 1.0 / 4096.0, 10);
+        CostlyGate gate(pacer, clock, 50);
+        GroundMotion ag;
+        ag.dt = 0.01;
+        for (int i = 0; i <= 100; ++i)
+            ag.acceleration.push_back(0.5 * std::sin(2 * M_PI * 2.0 * i * 0.01));
+        const rths::RthsSettings s = rths::benchmarkSampleController();
+        const rths::Partition p = rths::benchmarkPartition(1, s.plant);
+        rths::RthsRunner runner(p, ag, s, &gate);
+        QVERIFY(!runner.run());
+        QCOMPARE(runner.next(), 500L);
+        QCOMPARE(pacer.misses(), 10L);
+        clock.work(seconds(2));
+        const nanoseconds resumedAt = clock.now();
+        QCOMPARE(runner.resume(), std::string());
+        std::string why;
+        QVERIFY(!runner.run());
+        QCOMPARE(pacer.misses(), 20L);
+        QCOMPARE(runner.next(), 1000L);
+        QVERIFY2(runner.hold().find("before tick 1000") != std::string::npos, runner.hold().c_str());
+        // Ticks 500..999 ran on the schedule restarted at the resume: 500 releases after it,
+        // 20 us of work each and 400 us every 50th, the last (999) one of those.
+        const nanoseconds expected = resumedAt + 499 * nanoseconds(244141) + microseconds(400);
+        QVERIFY2(std::abs((clock.now() - expected).count()) <= 500,
+                 qPrintable(QString::number(double((clock.now() - expected).count()))));
+        int holds = 2;
+        while (runner.resume().empty() && !runner.run())
+            ++holds; // each further 10 misses (every 500 ticks) hold it again
+        QVERIFY(runner.finished() && !runner.held());
+        QCOMPARE(holds, 8); // before ticks 500, 1000, ..., 4000
+        const rths::RthsRun paced = runner.result();
+        const rths::RthsRun fast = rths::runRths(p, ag, s);
+        QCOMPARE(paced.time.size(), fast.time.size());
+        QVERIFY(paced.measured == fast.measured && paced.command == fast.command &&
+                paced.force == fast.force && paced.hybrid == fast.hybrid);
+        QCOMPARE(pacer.misses(), long(fast.time.size()) / 50); // ticks 49, 99, ..., 4049
     }
 };
 

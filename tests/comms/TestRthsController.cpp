@@ -13,6 +13,12 @@
 // the last tick; --record without --rths is refused.
 // A 2 s real-time run reports its deadline misses (printed, not asserted: the machine is
 // shared).
+// Resume (docs/rths.md, "Hold and resume"): a fast run held by the monitor before tick K and
+// resumed goes on from K: every tick's telemetry once (0..K-1 before the hold, K.. after), the
+// second end's J1..J9 equal the unheld local run's bit for bit, its record every tick once
+// with the hold's alarm at K-1 and the resume's note at K; a stroke-limit hold's resume is
+// refused (Error(holding), the channel named) and the run stays held; resume with no held run
+// is a protocol violation.
 #include "ControllerProcess.h"
 #include "RawClient.h"
 
@@ -44,7 +50,8 @@ QString writeSine(const QString& dir, double seconds) {
     return path;
 }
 
-QString writeConfig(const QString& dir, double seconds) {
+/// limits: "" or the configuration's "limits" object's members (e.g. "\"stroke\": 1e-4").
+QString writeConfig(const QString& dir, double seconds, const QString& limits = {}) {
     const QString path = dir + QStringLiteral("/rths.json");
     QFile f(path);
     f.open(QIODevice::WriteOnly | QIODevice::Text);
@@ -53,9 +60,11 @@ QString writeConfig(const QString& dir, double seconds) {
       "sensors": {"noise": true, "seed": 3},
       "controller": {"kp": 2.0, "ki": 95.0},
       "compensation": {"type": "ats", "lead": {"enabled": true}, "fitToLoop": true},
-      "holdAfterMisses": 0,
+      "holdAfterMisses": 0,%2
       "groundMotion": {"file": "%1", "scale": 1.0, "unit": "m/s^2"}}})")
-                .arg(writeSine(dir, seconds)).toUtf8());
+                .arg(writeSine(dir, seconds))
+                .arg(limits.isEmpty() ? QString() : QStringLiteral(" \"limits\": {%1},").arg(limits))
+                .toUtf8());
     return path;
 }
 
@@ -296,6 +305,106 @@ private slots:
         for (int k = 0; k < d.rows(); ++k)
             QVERIFY(d.deformation(k, 0) == local30.measured[std::size_t(k)]);
         QCOMPARE(RecordReader((out + QStringLiteral("/record.h5")).toStdString()).data().rows(), 3073);
+    }
+
+    void aHeldRunResumesWhereItHeld() {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 10.0);
+        const QString out = dir.path() + QStringLiteral("/records");
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("fast"),
+                               QStringLiteral("--record"), out});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY(c.hello(7));
+        QVERIFY(c.send(ResumeMsg{}));
+        const auto none = c.expect<ErrorMsg>();
+        QVERIFY(none.has_value());
+        QCOMPARE(none->code, ErrorCode::ProtocolViolation);
+        QVERIFY2(none->reason.find("no held RTHS run") != std::string::npos, none->reason.c_str());
+        // Every tick a frame: the fast pace waits for this monitor once half the ring is full,
+        // so the hold sent after the first frame comes within the run.
+        QVERIFY(c.send(RthsStartMsg{1, 0.0}));
+        const Monitored first = monitor(c, [&] { c.send(HoldMsg{"operator"}); });
+        QVERIFY2(first.end.has_value(), qPrintable(ctl.log()));
+        const long held = long(first.end->ticks);
+        QVERIFY2(first.end->hold.rfind("console hold (operator) before tick " + std::to_string(held), 0) == 0,
+                 first.end->hold.c_str());
+        QVERIFY(held > 0 && held < 10241);
+        QVERIFY2(ctl.waitForLog(QStringLiteral("held: the ticks after a resume follow")), qPrintable(ctl.log()));
+        QVERIFY(c.send(ResumeMsg{}));
+        Monitored second;
+        for (int i = 0; i < 1000000 && !second.end; ++i) { // the ack, telemetry, the end
+            const auto msg = c.receive();
+            QVERIFY2(msg.has_value(), qPrintable(ctl.log()));
+            if (const auto* a = std::get_if<AckMsg>(&*msg))
+                QCOMPARE(a->acked, MessageType::Resume);
+            else if (const auto* t = std::get_if<TelemetryMsg>(&*msg))
+                second.telemetry.push_back(*t);
+            else if (const auto* e = std::get_if<RthsEndMsg>(&*msg))
+                second.end = *e;
+            else
+                QFAIL("unexpected message after resume");
+        }
+        QVERIFY2(second.end.has_value(), qPrintable(ctl.log()));
+        QCOMPARE(second.end->hold, std::string());
+        QCOMPARE(second.end->ticks, std::uint64_t(10241));
+        QVERIFY2(ctl.waitForLog(QStringLiteral("RTHS run resumed before tick %1").arg(held)), qPrintable(ctl.log()));
+        // Every tick once, in order, across the hold.
+        std::vector<TelemetryMsg> all = first.telemetry;
+        all.insert(all.end(), second.telemetry.begin(), second.telemetry.end());
+        QCOMPARE(all.size(), std::size_t(10241));
+        for (std::size_t i = 0; i < all.size(); ++i)
+            QCOMPARE(all[i].tick, std::uint64_t(i));
+        const rths::RthsRun local = localRun(cfg);
+        sameTicks(all, local);
+        for (int i = 0; i < 9; ++i)
+            QVERIFY2(second.end->j[i] == local.criteria.j[std::size_t(i)], qPrintable(QStringLiteral("J%1").arg(i + 1)));
+        QVERIFY(second.end->peakStroke == local.peakStroke && second.end->trackingIndicator == local.trackingIndicator);
+        QVERIFY2(ctl.waitForLog(QStringLiteral("record.h5 (10241 ticks)")), qPrintable(ctl.log()));
+        const RecordReader reader((out + QStringLiteral("/record.h5")).toStdString());
+        const RecordData& d = reader.data();
+        QCOMPARE(d.rows(), 10241);
+        for (int k = 0; k < d.rows(); ++k) {
+            QCOMPARE(d.steps[std::size_t(k)], k);
+            QVERIFY(d.deformation(k, 0) == local.measured[std::size_t(k)]);
+        }
+        QCOMPARE(d.alarms.size(), std::size_t(1));
+        QCOMPARE(d.alarms.front().kind, AlarmKind::OperatorHold);
+        QCOMPARE(d.alarms.front().step, int(held - 1));
+        QCOMPARE(d.notes.size(), std::size_t(1));
+        QCOMPARE(d.notes.front().step, int(held));
+        QVERIFY2(d.notes.front().text.rfind("resumed before tick " + std::to_string(held), 0) == 0,
+                 d.notes.front().text.c_str());
+    }
+
+    void aLimitHoldDoesNotResumeIntoTheBreach() {
+        QTemporaryDir dir;
+        const QString cfg = writeConfig(dir.path(), 3.0, QStringLiteral("\"stroke\": 1e-4"));
+        ControllerProcess ctl({QStringLiteral("--rths"), cfg, QStringLiteral("--pace"), QStringLiteral("fast")});
+        QVERIFY2(ctl.start(), qPrintable(ctl.log()));
+        RawClient c;
+        QVERIFY(c.connect(ctl.port()));
+        QVERIFY(startRun(c, 8));
+        const Monitored m = monitor(c, [] {});
+        QVERIFY2(m.end.has_value(), qPrintable(ctl.log()));
+        QVERIFY2(m.end->hold.find("stroke limit") != std::string::npos, m.end->hold.c_str());
+        QVERIFY(c.send(ResumeMsg{}));
+        const auto refused = c.expect<ErrorMsg>();
+        QVERIFY2(refused.has_value(), qPrintable(ctl.log()));
+        QCOMPARE(refused->code, ErrorCode::Holding);
+        QVERIFY2(refused->reason.rfind("resume refused: ", 0) == 0 &&
+                     refused->reason.find("stroke limit") != std::string::npos,
+                 refused->reason.c_str());
+        // Still held: refused again; a new run starts from rest.
+        QVERIFY(c.send(ResumeMsg{}));
+        QCOMPARE(c.expect<ErrorMsg>()->code, ErrorCode::Holding);
+        QVERIFY(c.send(RthsStartMsg{8, 0.0}));
+        QVERIFY(c.expect<AckMsg>().has_value());
+        const Monitored again = monitor(c, [] {});
+        QVERIFY(again.end.has_value());
+        QCOMPARE(again.end->ticks, m.end->ticks);
+        QCOMPARE(again.end->hold, m.end->hold);
     }
 
     void recordWithoutRthsIsRefused() {

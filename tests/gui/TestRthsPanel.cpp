@@ -13,6 +13,10 @@
 // (bit for bit: one loop, one RthsRecordFeed, one writer), readable by `hsmu export`; the next
 // run to record-2.h5 (nothing overwritten); a held run keeps every tick before the hold (equal
 // to the local runRths' ticks) with the hold as its last row's critical alarm.
+// Resume (docs/rths.md, "Hold and resume"): a fast run held by Hold and resumed by Resume ends
+// as the unheld runRths (J1..J9 bit for bit), every sample on the plot once, its record every
+// tick once (bit for bit) with the hold's alarm and the resume's note; a stroke-limit hold's
+// Resume is refused with the channel named and the run stays held.
 #include "../comms/ControllerProcess.h"
 #include "CliTestSupport.h"
 #include "core/record/RecordReader.h"
@@ -246,6 +250,58 @@ private slots:
         QVERIFY(!QFile::exists(folder + QStringLiteral("/record-3.h5")));
     }
 
+    void resumeGoesOnFromTheHeldTick()
+    {
+        QTemporaryDir dir;
+        const RthsConfig cfg = sineConfig(dir.path(), 10.0);
+        rths::RthsSettings s = cfg.settings;
+        rths::fitToNominalLoop(s);
+        const rths::RthsRun whole = rths::runRths(cfg.partition(), motionOf(cfg), s);
+        AlarmList alarms;
+        RthsPanel panel(&alarms);
+        panel.setRecordFolder(dir.path() + QStringLiteral("/resume"));
+        QSignalSpy criteria(panel.session(), &RthsSession::finished);
+        QSignalSpy batches(panel.session(), &RthsSession::samples);
+        QSignalSpy ended(&panel, &RthsPanel::runFinished);
+        auto* resume = panel.findChild<QPushButton*>(QStringLiteral("rthsResume"));
+        QVERIFY(!resume->isEnabled());
+        QVERIFY(panel.startRun(cfg, motionOf(cfg), RthsSession::Pace::Fast, 0.0));
+        QVERIFY(batches.wait(60000));
+        QTest::mouseClick(panel.findChild<QPushButton*>(QStringLiteral("rthsHold")), Qt::LeftButton);
+        QVERIFY(ended.wait(60000));
+        QVERIFY2(ended.at(0).at(0).toString().startsWith(QStringLiteral("console hold")), qPrintable(ended.at(0).at(0).toString()));
+        const long held = criteria.at(0).at(2).value<long>();
+        QVERIFY(held > 0 && held < long(whole.time.size()));
+        QVERIFY(resume->isEnabled());
+        QTest::mouseClick(resume, Qt::LeftButton);
+        QVERIFY(panel.running());
+        QVERIFY(!resume->isEnabled());
+        QVERIFY(ended.wait(60000));
+        QCOMPARE(ended.at(1).at(0).toString(), QString());
+        QCOMPARE(criteria.at(1).at(2).value<long>(), long(whole.time.size())); // 10241
+        QCOMPARE(panel.synchronizationPlot()->points(), int(whole.time.size()));
+        QVERIFY(!resume->isEnabled());
+        const RecordReader reader(panel.session()->recordPath().toStdString());
+        const RecordData& d = reader.data();
+        QCOMPARE(d.rows(), int(whole.time.size()));
+        for (int k = 0; k < d.rows(); ++k) {
+            const auto i = std::size_t(k);
+            QVERIFY2(d.steps[i] == k && d.time(k) == whole.time[i] && d.deformation(k, 0) == whole.measured[i] &&
+                         d.actuatorCommanded(k, 0) == whole.command[i] && d.u(k, 1) == whole.hybrid(k, 1),
+                     qPrintable(QStringLiteral("tick %1").arg(k)));
+        }
+        QCOMPARE(d.alarms.size(), std::size_t(1));
+        QCOMPARE(d.alarms.front().kind, AlarmKind::OperatorHold);
+        QCOMPARE(d.alarms.front().step, int(held - 1));
+        QCOMPARE(d.notes.size(), std::size_t(1));
+        QCOMPARE(d.notes.front().step, int(held));
+        QVERIFY(QString::fromStdString(d.notes.front().text).startsWith(QStringLiteral("resumed before tick %1").arg(held)));
+        const rths::BenchmarkCriteria c = criteria.at(1).at(1).value<rths::BenchmarkCriteria>();
+        const auto& j = c.j;
+        for (int i = 0; i < 9; ++i)
+            QVERIFY2(j[std::size_t(i)] == whole.criteria.j[std::size_t(i)], qPrintable(QStringLiteral("J%1: %2 vs %3").arg(i + 1).arg(j[std::size_t(i)], 0, 'g', 17).arg(whole.criteria.j[std::size_t(i)], 0, 'g', 17)));
+    }
+
     void aLimitHoldNamesTheChannelValueAndTick()
     {
         // A 0.1 mm stroke limit: the loop holds at the first tick the command passes it.
@@ -265,6 +321,16 @@ private slots:
         QCOMPARE(reader.data().alarms.front().step, reader.rows() - 1);
         QVERIFY(panel.statusText().contains(hold));
         QCOMPARE(rows(alarms, AlarmKind::LimitExceeded, AlarmSeverity::Critical), 1);
+        // Resume does not go on into the breach: refused, the channel named, still held.
+        auto* resume = panel.findChild<QPushButton*>(QStringLiteral("rthsResume"));
+        QVERIFY(resume->isEnabled());
+        QTest::mouseClick(resume, Qt::LeftButton);
+        QVERIFY(!panel.running());
+        QVERIFY2(panel.statusText().startsWith(QStringLiteral("Not resumed: resume refused: ")) &&
+                     panel.statusText().contains(QStringLiteral("stroke")),
+                 qPrintable(panel.statusText()));
+        QVERIFY(resume->isEnabled());
+        QCOMPARE(ended.size(), 1);
     }
 
     void monitorsTheControllersLoop()
