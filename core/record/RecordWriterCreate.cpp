@@ -33,8 +33,9 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     // 27). Set on the file: H5Fstart_swmr_write() reopens the datasets with the file's cache.
     const long widest = long(std::max({nDof, nElem, nPar, nSite, nChan,
                                        std::size_t(recordschema::kTrackingColumns)}));
-    const std::size_t chunkBytes = std::size_t(
-        long(recordschema::chunkRowsFor(int(widest), int(sizeof(double)))) * widest * 8);
+    const recordschema::ChunkShape widestChunk =
+        recordschema::chunkShapeFor(int(widest), int(sizeof(double)), batchRows);
+    const std::size_t chunkBytes = std::size_t(widestChunk.rows) * std::size_t(widestChunk.cols) * 8;
     h5::check(H5Pset_cache(fapl.get(), 0, 521, chunkBytes * 3 / 2 + 1, 1.0), w,
               "cannot size the chunk cache");
     // Created under a temporary name in the same folder and renamed (atomically) once its
@@ -88,7 +89,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         const h5::Id g = group("dofs");
         h5::writeAttr(g.get(), "names", layout.dofNames, w);
         const int n = int(nDof);
-        const int rows = recordschema::kChunkRows, z = start.deflate;
+        const int rows = batchRows, z = start.deflate; // chunkShapeFor
         u = h5::Extendible(g.get(), "u", f64, n, w, rows, z);
         v = h5::Extendible(g.get(), "v", f64, n, w, rows, z);
         a = h5::Extendible(g.get(), "a", f64, n, w, rows, z);
@@ -115,7 +116,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(g.get(), "experimental", experimental, w);
         h5::writeAttr(g.get(), "nonlinear", nonlinear, w);
         const int n = int(nElem);
-        const int rows = recordschema::kChunkRows, z = start.deflate;
+        const int rows = batchRows, z = start.deflate; // chunkShapeFor
         def = h5::Extendible(g.get(), "deformation", f64, n, w, rows, z);
         force = h5::Extendible(g.get(), "force", f64, n, w, rows, z);
         cmd = h5::Extendible(g.get(), "commanded", f64, n, w, rows, z);
@@ -124,7 +125,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(def.id(), "units", defUnits, w);
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
-        actuator.create(g.get(), names, defUnits, w, start.deflate);
+        actuator.create(g.get(), names, defUnits, w, rows, start.deflate);
         if (nChan > 0) { // the multi-DOF elements' basic DOFs and actuators
             std::vector<std::string> owner, channel, unit;
             for (const ElementChannel& c : layout.channels) {
