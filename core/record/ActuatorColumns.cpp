@@ -14,14 +14,14 @@ double channel(std::int64_t v) {
 
 void ActuatorColumns::create(hid_t elementsGroup, const std::vector<std::string>& names,
                              const std::vector<std::string>& deformationUnits,
-                             const std::string& where, int chunkRows, int deflate) {
+                             const std::string& where, int deflate) {
     m_nElem = names.size();
     const h5::Id g =
         h5::check(H5Gcreate2(elementsGroup, "actuator", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                   where, "cannot create group /elements/actuator");
     const hid_t f64 = H5T_NATIVE_DOUBLE;
     const int n = int(m_nElem);
-    const int rows = chunkRows;
+    const int rows = recordschema::kChunkRows;
     m_cmd = h5::Extendible(g.get(), "commanded", f64, n, where, rows, deflate);
     m_measured = h5::Extendible(g.get(), "measured", f64, n, where, rows, deflate);
     m_ticks = h5::Extendible(g.get(), "held_ticks", f64, n, where, rows, deflate);

@@ -17,11 +17,10 @@ namespace hsmu {
 
 class ActuatorColumns {
 public:
-    /// Create the group "actuator" under elementsGroup, its matrices chunked for rows
-    /// appended chunkRows at a time (h5::Extendible). Throws RecordError naming `where`.
+    /// Create the group "actuator" under elementsGroup. Throws RecordError naming `where`.
     void create(hid_t elementsGroup, const std::vector<std::string>& names,
                 const std::vector<std::string>& deformationUnits, const std::string& where,
-                int chunkRows, int deflate = 0);
+                int deflate = 0);
     /// Buffered rows (RecordWriter fills one batch while its thread writes another).
     struct Rows {
         std::vector<double> cmd, measured, ticks, flags;

@@ -79,8 +79,8 @@ std::vector<int> readIntsAttr(hid_t obj, const char* name, const std::string& wh
 Id fixedStringType(int chars);
 
 /// A per-step dataset: rows x cols (cols < 0: one-dimensional [rows]) of `type`, unlimited
-/// rows, chunked by chunkRows rows (one-dimensional) or, a matrix, by
-/// recordschema::chunkShapeFor(cols, size, chunkRows) (rows appended chunkRows at a time). append() extends it and writes `rows` rows from a
+/// rows, chunked by recordschema::chunkShapeFor(cols, size) (2-D chunks: rows x a part of
+/// the columns), at most chunkRows rows. append() extends it and writes `rows` rows from a
 /// row-major buffer in memory type `type`. deflate 1-9: each chunk is byte-shuffled and
 /// deflated at that level (HDF5's shuffle and deflate filters, before the checksum); 0 none.
 class Extendible {

@@ -233,10 +233,9 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
 int RecordWriter::batchRowsFor(std::size_t nDof, std::size_t nElem) {
     const long width = long(std::max<std::size_t>(3 * (nDof + nElem), 1));
     const long byValues = std::max(kMaxBufferedValues / width, 1L);
-    long rows = std::min<long>(kMaxBufferedRows, byValues);
-    while (rows > 1 && recordschema::kChunkRows % rows != 0)
-        --rows;
-    return int(rows);
+    const long rows = std::min<long>(kMaxBufferedRows, byValues);
+    const long chunk = recordschema::chunkRowsFor(int(std::max(nDof, nElem)), int(sizeof(double)));
+    return int(rows >= chunk ? rows / chunk * chunk : rows);
 }
 
 RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
@@ -250,8 +249,8 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->nSite = layout.sites.size();
     m_d->nChan = layout.channels.size();
     const h5::QuietErrors quiet;
-    m_d->batchRows = batchRowsFor(m_d->nDof, m_d->nElem); // also the matrices' chunk rows
     m_d->create(start); // on a throw, Impl's handles close the partial file
+    m_d->batchRows = batchRowsFor(m_d->nDof, m_d->nElem);
     const std::size_t rows = std::size_t(m_d->batchRows);
     for (Impl::Batch* b : {&m_d->fill, &m_d->out})
         b->reserve(rows, m_d->nDof, m_d->nElem, m_d->nPar, m_d->nSite, m_d->nChan);

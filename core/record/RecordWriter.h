@@ -75,15 +75,14 @@ public:
     static constexpr double kFlushInterval = 0.5; ///< [s] of wall time
     static constexpr int kMaxBufferedRows = recordschema::kChunkRows; // crash safety: <= 1,000 rows behind steps.csv
     /// Also flush once the buffered per-step values (DOF and element columns) reach this
-    /// many doubles (32 MiB): a 10,000-DOF model flushes every 50 rows, bounding memory (two
-    /// batches, one filling and one being written). The batch's rows are also the rows of the
-    /// wide matrices' 2-D chunks (recordschema::chunkShapeFor): the more rows, the narrower a
-    /// chunk and the less a one-column read reads (issue 27; 2^20 before: 10-row chunks).
-    static constexpr long kMaxBufferedValues = 1L << 22;
+    /// many doubles (8 MiB): a 10,000-DOF model flushes every 18 rows, bounding memory (two
+    /// batches, one filling and one being written, hold what one batch of 16 MiB did).
+    static constexpr long kMaxBufferedValues = 1L << 20;
     /// Rows of one batch (a flush when the batch is full) for a layout of nDof DOFs and nElem
-    /// elements: the largest divisor of kMaxBufferedRows within kMaxBufferedValues / (3 (nDof
-    /// + nElem)) rows (at least 1), so that batches fill whole chunks of every per-step dataset
-    /// (each chunk written once): 500 for models up to 1,398 DOFs, 50 at 10,000 DOFs (issue 27).
+    /// elements: at most kMaxBufferedRows and kMaxBufferedValues / (3 (nDof + nElem)) rows,
+    /// rounded down to a whole number of the widest per-step matrix's chunks
+    /// (recordschema::chunkRowsFor), so that each chunk is written once: 500 for small models,
+    /// 10 at 10,000 DOFs (issue 27).
     static int batchRowsFor(std::size_t nDof, std::size_t nElem);
 
     /// Creates (truncates) path. Throws RecordError naming the file on failure.

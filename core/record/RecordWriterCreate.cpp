@@ -27,15 +27,15 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     const h5::Id fapl = h5::check(H5Pcreate(H5P_FILE_ACCESS), w, "cannot make a property list");
     h5::check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST), w,
               "cannot select the latest file format");
-    // Each dataset's chunk cache holds one and a half of the largest chunk (the chunk being
-    // filled), not HDF5's default 1 MiB: rows are only appended, so a written chunk is never
+    // Each dataset's chunk cache holds one and a half of the widest matrix's row band (its
+    // chunks being filled: every column part of chunkShapeFor's 2-D chunks, so that a partial
+    // batch's chunks are not read back), not HDF5's default 1 MiB: rows are only appended, so a written chunk is never
     // read back, and with 1 MiB a 31,160-step SDOF run kept 3.2 MB of written chunks (issue
     // 27). Set on the file: H5Fstart_swmr_write() reopens the datasets with the file's cache.
     const long widest = long(std::max({nDof, nElem, nPar, nSite, nChan,
                                        std::size_t(recordschema::kTrackingColumns)}));
-    const recordschema::ChunkShape widestChunk =
-        recordschema::chunkShapeFor(int(widest), int(sizeof(double)), batchRows);
-    const std::size_t chunkBytes = std::size_t(widestChunk.rows) * std::size_t(widestChunk.cols) * 8;
+    const std::size_t chunkBytes = std::size_t(
+        long(recordschema::chunkRowsFor(int(widest), int(sizeof(double)))) * widest * 8);
     h5::check(H5Pset_cache(fapl.get(), 0, 521, chunkBytes * 3 / 2 + 1, 1.0), w,
               "cannot size the chunk cache");
     // Created under a temporary name in the same folder and renamed (atomically) once its
@@ -89,7 +89,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         const h5::Id g = group("dofs");
         h5::writeAttr(g.get(), "names", layout.dofNames, w);
         const int n = int(nDof);
-        const int rows = batchRows, z = start.deflate; // chunkShapeFor
+        const int rows = recordschema::kChunkRows, z = start.deflate;
         u = h5::Extendible(g.get(), "u", f64, n, w, rows, z);
         v = h5::Extendible(g.get(), "v", f64, n, w, rows, z);
         a = h5::Extendible(g.get(), "a", f64, n, w, rows, z);
@@ -116,7 +116,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(g.get(), "experimental", experimental, w);
         h5::writeAttr(g.get(), "nonlinear", nonlinear, w);
         const int n = int(nElem);
-        const int rows = batchRows, z = start.deflate; // chunkShapeFor
+        const int rows = recordschema::kChunkRows, z = start.deflate;
         def = h5::Extendible(g.get(), "deformation", f64, n, w, rows, z);
         force = h5::Extendible(g.get(), "force", f64, n, w, rows, z);
         cmd = h5::Extendible(g.get(), "commanded", f64, n, w, rows, z);
@@ -125,7 +125,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
         h5::writeAttr(def.id(), "units", defUnits, w);
         h5::writeAttr(force.id(), "units", forceUnits, w);
         h5::writeAttr(cmd.id(), "units", defUnits, w);
-        actuator.create(g.get(), names, defUnits, w, rows, start.deflate);
+        actuator.create(g.get(), names, defUnits, w, start.deflate);
         if (nChan > 0) { // the multi-DOF elements' basic DOFs and actuators
             std::vector<std::string> owner, channel, unit;
             for (const ElementChannel& c : layout.channels) {

@@ -127,8 +127,8 @@ class TestRecordChunks : public QObject {
 
 private slots:
     // 300 DOFs and elements, 1,201 rows (two whole 500-row batches and a partial one): the
-    // matrices are chunked 500 x 150 (two column parts), the 1-D datasets 500 rows; every
-    // value reads back exactly through RecordReader and through a one-column hyperslab.
+    // matrices are chunked 250 x 100 (three column parts); every value reads back exactly
+    // through RecordReader and through a one-column hyperslab.
     void wideRecordsHaveTwoDimensionalChunks() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
@@ -163,15 +163,14 @@ private slots:
             }
             QVERIFY2(writer.finish(), writer.error().c_str());
         }
-        const int batch = RecordWriter::batchRowsFor(n, n);
-        QCOMPARE(batch, 500);
-        const recordschema::ChunkShape shape = recordschema::chunkShapeFor(n, 8, batch);
-        QCOMPARE(shape.rows, 500);
-        QCOMPARE(shape.cols, 150);
+        QCOMPARE(RecordWriter::batchRowsFor(n, n), 500); // two chunks' rows
+        const recordschema::ChunkShape shape = recordschema::chunkShapeFor(n, 8);
+        QCOMPARE(shape.rows, 250);
+        QCOMPARE(shape.cols, 100);
         for (const char* d : {"/dofs/u", "/dofs/v", "/dofs/a", "/elements/deformation",
                               "/elements/force", "/elements/commanded",
                               "/elements/actuator/commanded", "/elements/actuator/flags"})
-            QCOMPARE(chunkOf(path, d), std::make_pair(500, 150));
+            QCOMPARE(chunkOf(path, d), std::make_pair(250, 100));
 
         const RecordReader reader(path);
         const RecordData& d = reader.data();
@@ -187,8 +186,8 @@ private slots:
                 QVERIFY(std::isnan(d.commanded(k, j)));
             }
         }
-        // One DOF's whole history alone, in either column part.
-        for (int col : {0, 149, 150, 299}) {
+        // One DOF's whole history alone, in each column part.
+        for (int col : {0, 99, 100, 199, 200, 299}) {
             const std::vector<double> c = columnOf(path, "/dofs/u", col, rows);
             QCOMPARE(int(c.size()), rows);
             for (int k = 0; k < rows; ++k)
@@ -227,7 +226,7 @@ private slots:
                 writer.onStep(rowOf(o, i));
             QVERIFY2(writer.finish(), writer.error().c_str());
         }
-        QCOMPARE(chunkOf(path, "/dofs/u"), std::make_pair(500, 150)); // the new layout
+        QCOMPARE(chunkOf(path, "/dofs/u"), std::make_pair(250, 100)); // the new layout
         const RecordReader fresh(path);
         const RecordData& n = fresh.data();
         QCOMPARE(n.steps, o.steps);
