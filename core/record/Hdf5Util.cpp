@@ -232,9 +232,11 @@ Extendible::Extendible(hid_t parent, const char* name, hid_t type, int cols,
     const hsize_t dims[2] = {0, width};
     // A zero-width matrix still needs a positive chunk, hence an unlimited second dimension.
     const hsize_t maxDims[2] = {H5S_UNLIMITED, cols > 0 ? width : H5S_UNLIMITED};
-    const int rowsPerChunk = std::min(chunkRows > 0 ? chunkRows : 1,
-                                      recordschema::chunkRowsFor(cols, int(H5Tget_size(type))));
-    const hsize_t chunk[2] = {hsize_t(rowsPerChunk), cols > 0 ? width : 1};
+    // At most chunkRows rows; a matrix's columns cut as chunkShapeFor does (2-D chunks).
+    const recordschema::ChunkShape shape =
+        recordschema::chunkShapeFor(cols, int(H5Tget_size(type)));
+    const int rowsPerChunk = std::min(chunkRows > 0 ? chunkRows : 1, shape.rows);
+    const hsize_t chunk[2] = {hsize_t(rowsPerChunk), cols > 0 ? hsize_t(shape.cols) : 1};
     const Id space = check(H5Screate_simple(rank, dims, maxDims), where, "cannot make a dataspace");
     const Id dcpl = check(H5Pcreate(H5P_DATASET_CREATE), where, "cannot make a property list");
     check(H5Pset_chunk(dcpl.get(), rank, chunk), where, "cannot set chunking");

@@ -78,8 +78,9 @@ std::vector<int> readIntsAttr(hid_t obj, const char* name, const std::string& wh
 /// A fixed-length, null-padded UTF-8 string type of `chars` bytes.
 Id fixedStringType(int chars);
 
-/// A per-step dataset: rows x cols (cols < 0: one-dimensional [rows]) of `type`, chunked by
-/// chunkRows rows, unlimited rows. append() extends it and writes `rows` rows from a
+/// A per-step dataset: rows x cols (cols < 0: one-dimensional [rows]) of `type`, unlimited
+/// rows, chunked by recordschema::chunkShapeFor(cols, size) (2-D chunks: rows x a part of
+/// the columns), at most chunkRows rows. append() extends it and writes `rows` rows from a
 /// row-major buffer in memory type `type`. deflate 1-9: each chunk is byte-shuffled and
 /// deflated at that level (HDF5's shuffle and deflate filters, before the checksum); 0 none.
 class Extendible {

@@ -27,8 +27,9 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     const h5::Id fapl = h5::check(H5Pcreate(H5P_FILE_ACCESS), w, "cannot make a property list");
     h5::check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST), w,
               "cannot select the latest file format");
-    // Each dataset's chunk cache holds one and a half of the largest chunk (the chunk being
-    // filled), not HDF5's default 1 MiB: rows are only appended, so a written chunk is never
+    // Each dataset's chunk cache holds one and a half of the widest matrix's row band (its
+    // chunks being filled: every column part of chunkShapeFor's 2-D chunks, so that a partial
+    // batch's chunks are not read back), not HDF5's default 1 MiB: rows are only appended, so a written chunk is never
     // read back, and with 1 MiB a 31,160-step SDOF run kept 3.2 MB of written chunks (issue
     // 27). Set on the file: H5Fstart_swmr_write() reopens the datasets with the file's cache.
     const long widest = long(std::max({nDof, nElem, nPar, nSite, nChan,

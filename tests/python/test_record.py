@@ -2,6 +2,7 @@
 import csv
 import json
 import shutil
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -103,3 +104,26 @@ def test_bad_files_raise_oserror_with_the_programs_message(cli, run, tmp_path, d
         hsmu.Record(path)
     assert str(error.value) in done.stderr
     assert str(path) in str(error.value)
+
+
+@pytest.mark.parametrize("layout", ["row chunks (older)", "2-D chunks"])
+def test_records_of_either_chunk_layout_read_as_their_export(cli, tmp_path, layout):
+    """A wide record (300 DOFs and elements) in the older whole-row-chunk layout (the committed
+    fixture, written before issue 27's 2-D chunks) and one written now by the program: every
+    exported column equals hsmu.Record's (docs/recording.md "Chunks")."""
+    if layout.startswith("row"):
+        path = Path(__file__).resolve().parents[1] / "core/record/fixtures/record-row-chunks-300.h5"
+    else:
+        cli("run", "shear-building-300", "--duration", "0.003", "--csv", "none",
+            "--out", tmp_path / "run", cwd=tmp_path)
+        path = tmp_path / "run" / "record.h5"
+    cli("export", path, "--csv", tmp_path / "csv")
+    rec = hsmu.Record(path)
+    assert rec.rows == 4
+    for table in ("dofs", "elements"):
+        header, rows = read_csv(tmp_path / "csv" / f"{table}.csv")
+        values = np.array([[float(x) for x in row] for row in rows])
+        assert values.shape == (4, 2 + 3 * 300)
+        for j, field in enumerate(header):
+            name, _ = split_header(field)
+            np.testing.assert_array_equal(rec[name], values[:, j], err_msg=name)
