@@ -130,6 +130,12 @@ struct AnalysisSpec {
 struct UpdatingSpec {
     bool enabled = false;
     std::string specimen;            ///< the experimental element identified
+    /// The specimen's basic DOF identified (updating.basicDof: 0 axial, 1 shear, 2 rotation of
+    /// a link2d, default its primary); -1 for a one-DOF specimen (its one DOF).
+    int basicDof = -1;
+    /// The identified DOF's initial model: a one-DOF specimen's material, or a link2d
+    /// specimen's updating.model (its basic DOFs carry no material).
+    MaterialSpec model;
     std::string method = "ukf";      ///< "ukf" (Bouc-Wen) or "nelderMead" (Bouc-Wen, bilinear)
     ParameterBoundsMap bounds;       ///< per parameter; ukf default: Table III
     std::vector<std::string> parameters; ///< nelderMead: the fitted parameters

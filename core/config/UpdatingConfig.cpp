@@ -1,10 +1,13 @@
 #include "core/config/UpdatingConfig.h"
 
+#include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
 #include "core/hysteresis/BoucWen.h"
 #include "core/hysteresis/BoucWenPinching.h"
 #include "core/hysteresis/MrDamper.h"
 #include "core/record/RecordReader.h"
+#include "core/record/SpecimenColumns.h"
+#include "core/structure/Link2dKinematics.h"
 #include "core/updating/ModelUpdater.h"
 #include "core/updating/MrDamperUkfIdentifier.h"
 #include "core/updating/NelderMeadIdentifier.h"
@@ -53,29 +56,48 @@ std::vector<std::string> defaultTargetParameters(const std::string& law)
     return {"k"};
 }
 
+/// A basic DOF as configured ("basicDof": an index or a link2d DOF's name) of an element of
+/// `count` basic DOFs of type `type`; fails naming the field when it is out of range.
+int parseBasicDof(const JsonCursor& c, int count, const std::string& type)
+{
+    const auto& v = c.node().at("basicDof");
+    int k = -1;
+    if (v.is_string()) {
+        k = count == 3 ? link2dBasicDofIndex(v.get<std::string>()) : -1;
+        if (k < 0)
+            c.fail("basicDof", count == 3 ? "expected 0 .. 2 or axial, shear, rotation, found '" +
+                                                v.get<std::string>() + "'"
+                                          : "a " + type + " has one basic DOF (0), found '" +
+                                                v.get<std::string>() + "'");
+    } else if (v.is_number_integer()) {
+        k = v.get<int>();
+    } else {
+        c.fail("basicDof", "expected a basic DOF index or name");
+    }
+    if (k < 0 || k >= count)
+        c.fail("basicDof", "basic DOF " + std::to_string(k) + " is out of range: a " + type +
+                               " has " + std::to_string(count) + " (0 .. " +
+                               std::to_string(count - 1) + ")");
+    return k;
+}
+
 /// Seeds the robust UKF with the specimen's measured response in a previous run's record
 /// (rows 1 .. N-1: row 0 is the state at rest). Throws ConfigError naming the file and field.
+/// basicDof >= 0: that basic DOF's channels (SpecimenColumns.h), else the specimen's columns.
 void seedFromRecord(RobustUkfIdentifier& id, const std::string& path, const std::string& specimen,
-                    const std::string& where)
+                    int basicDof, const std::string& where)
 {
     const std::string field = where + ": ukf.seedRecord '" + path + "': ";
     std::vector<double> u, f;
     try {
         const RecordReader reader(path);
         const RecordData& r = reader.data();
-        int j = -1;
-        for (std::size_t i = 0; i < r.layout.elements.size(); ++i)
-            if (r.layout.elements[i].name == specimen && r.layout.elements[i].experimental)
-                j = int(i);
-        if (j < 0)
-            throw ConfigError(field + "no specimen (experimental element) named '" + specimen +
-                              "' in the record");
+        const SpecimenColumns c = specimenColumns(
+            r, specimen, "", basicDof >= 0 ? link2dBasicDofName(basicDof) : "");
         for (int row = 1; row < r.rows(); ++row) {
-            u.push_back(r.deformation(row, j));
-            f.push_back(r.force(row, j));
+            u.push_back(c.deformation(r, row));
+            f.push_back(c.force(r, row));
         }
-    } catch (const ConfigError&) {
-        throw;
     } catch (const std::exception& e) {
         throw ConfigError(field + e.what());
     }
@@ -88,25 +110,44 @@ void seedFromRecord(RobustUkfIdentifier& id, const std::string& path, const std:
 
 UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
 {
-    c.allowOnly({"enabled", "specimen", "method", "bounds", "ukf", "nelderMead", "inspector",
-                 "reporter", "approval", "maxConsecutiveRejections", "offsets"});
+    c.allowOnly({"enabled", "specimen", "basicDof", "model", "method", "bounds", "ukf",
+                 "nelderMead", "inspector", "reporter", "approval", "maxConsecutiveRejections",
+                 "offsets"});
     UpdatingSpec u;
     u.enabled = c.boolean("enabled", true);
     u.specimen = c.string("specimen");
     const ElementSpec* sp = findElement(cfg, u.specimen);
     if (!sp || !sp->experimental)
         c.fail("specimen", "expected the name of an experimental element, found '" + u.specimen + "'");
+    // The identified basic DOF and its initial model (docs/configuration.md, updating).
+    if (sp->link2d) {
+        u.basicDof = c.has("basicDof") ? parseBasicDof(c, 3, "link2d") : sp->link2d->primary;
+        if (!c.has("model"))
+            c.fail("model", "a link2d specimen's basic DOFs carry no material (their forces come "
+                            "from its actuators): give the identified basic DOF's (" +
+                                std::string(link2dBasicDofName(u.basicDof)) +
+                                ") initial model, e.g. { \"law\": \"boucWen\", ... }");
+        u.model = parseMaterial(c.child("model"));
+    } else {
+        if (c.has("basicDof"))
+            parseBasicDof(c, 1, sp->type); // 0 or refused: the one DOF is today's path (-1)
+        if (c.has("model"))
+            c.fail("model", "only for a link2d specimen: '" + u.specimen +
+                                "' is identified from its own material");
+        u.model = sp->material;
+    }
+    const MaterialSpec& model = u.model;
     u.method = c.string("method", "ukf");
     if (u.method != "ukf" && u.method != "nelderMead")
         c.fail("method", "expected 'ukf' or 'nelderMead'");
-    if (u.method == "ukf" && sp->material.law != "boucWen" &&
-        sp->material.law != "boucWenPinching" && sp->material.law != "mrDamper")
+    if (u.method == "ukf" && model.law != "boucWen" &&
+        model.law != "boucWenPinching" && model.law != "mrDamper")
         c.fail("method", "the UKF identifies a boucWen model, a boucWenPinching model or an "
-                         "mrDamper model; the specimen's model is '" + sp->material.law +
+                         "mrDamper model; the specimen's model is '" + model.law +
                              "' (use nelderMead)");
-    if (auto it = sp->material.params.find("uRef"); it != sp->material.params.end())
+    if (auto it = model.params.find("uRef"); it != model.params.end())
         u.modelURef = it->second;
-    if (auto it = sp->material.params.find("fRef"); it != sp->material.params.end())
+    if (auto it = model.params.find("fRef"); it != model.params.end())
         u.modelFRef = it->second;
     if (c.has("bounds")) {
         const JsonCursor b = c.child("bounds");
@@ -164,11 +205,11 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
             n.fail("maxEvaluations", "expected at least 1");
     }
     if (u.method == "nelderMead" && u.parameters.empty())
-        u.parameters = defaultTargetParameters(sp->material.law);
+        u.parameters = defaultTargetParameters(model.law);
     // No fracture is judged before the specimen carried a tenth of its reference force.
     {
-        const auto& mp = sp->material.params;
-        const std::string& law = sp->material.law;
+        const auto& mp = model.params;
+        const std::string& law = model.law;
         const char* key = law == "boucWen" || law == "boucWenPinching" || law == "mrDamper"
                               ? "fRef"
                               : (law == "bilinear" ? "fy" : "");
@@ -209,18 +250,36 @@ UpdatingSpec parseUpdating(const JsonCursor& c, const TestConfig& cfg)
             const JsonCursor ts = r.child("targets");
             for (std::size_t k = 0; k < ts.size(); ++k) {
                 const JsonCursor t = ts.at(k);
-                t.allowOnly({"element", "parameters", "scale"});
+                t.allowOnly({"element", "basicDof", "parameters", "scale"});
                 ReporterTarget target;
                 target.element = t.string("element");
                 const ElementSpec* te = findElement(cfg, target.element);
                 if (!te || te->experimental)
                     t.fail("element", "expected a numerical element, found '" + target.element + "'");
-                if (te->material.law != sp->material.law)
-                    t.fail("element", "its law '" + te->material.law +
+                // A link2d twin: its basic DOF matching the specimen's (or its own basicDof).
+                const MaterialSpec* law = &te->material;
+                if (te->link2d) {
+                    target.basicDof = t.has("basicDof") ? parseBasicDof(t, 3, "link2d")
+                                      : u.basicDof >= 0 ? u.basicDof
+                                                        : te->link2d->primary;
+                    const Link2dBasicSpec& b = te->link2d->basic[std::size_t(target.basicDof)];
+                    if (!b.hasMaterial)
+                        t.fail(t.has("basicDof") ? "basicDof" : "element",
+                               "basic DOF " + std::to_string(target.basicDof) + " (" +
+                                   link2dBasicDofName(target.basicDof) + ") of '" +
+                                   target.element + "' carries no hysteretic law (" +
+                                   (b.heldForce != 0.0 ? "a held force" : "a free DOF") +
+                                   "): nothing to update");
+                    law = &b.material;
+                } else if (t.has("basicDof")) {
+                    parseBasicDof(t, 1, te->type);
+                }
+                if (law->law != model.law)
+                    t.fail("element", "its law '" + law->law +
                                           "' differs from the specimen model's '" +
-                                          sp->material.law + "'");
+                                          model.law + "'");
                 target.parameters = t.has("parameters") ? stringList(t, "parameters")
-                                                        : defaultTargetParameters(te->material.law);
+                                                        : defaultTargetParameters(law->law);
                 if (t.has("scale")) {
                     const JsonCursor s = t.child("scale");
                     s.requireObject();
@@ -279,7 +338,7 @@ std::unique_ptr<Identifier> buildIdentifier(const UpdatingSpec& u, const Hystere
                 auto id = std::make_unique<RobustUkfIdentifier>(bw->parameters(), u.modelURef,
                                                                 u.modelFRef, u.bounds);
                 if (!u.seedRecord.empty())
-                    seedFromRecord(*id, u.seedRecord, u.specimen, where);
+                    seedFromRecord(*id, u.seedRecord, u.specimen, u.basicDof, where);
                 return id;
             }
             BoucWenUkfSettings s;
@@ -318,13 +377,14 @@ std::unique_ptr<ModelUpdater> buildModelUpdater(const TestConfig& cfg)
     const std::string where = cfg.sourcePath + ": updating";
     if (!sp)
         throw ConfigError(where + ": no element '" + u.specimen + "'");
-    auto aux = buildLaw(sp->material, where);
+    auto aux = buildLaw(u.model, where);
     aux->setTimeIncrement(cfg.analysis.dt); // a rate-dependent model: the identifier's too
     std::unique_ptr<Identifier> identifier = buildIdentifier(u, *aux, cfg.analysis.dt, where);
     auto reporter = std::make_unique<Reporter>(u.targets, u.policy, u.everyN);
     reporter->setProposalInterval(u.proposalInterval);
     auto updater = std::make_unique<ModelUpdater>(u.specimen, std::move(aux), std::move(identifier),
                                                   u.inspector, std::move(reporter));
+    updater->setBasicDof(u.basicDof);
     if (u.approval == "approveAll")
         updater->setAutoResolve(true);
     else if (u.approval == "rejectAll")

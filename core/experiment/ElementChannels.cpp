@@ -5,22 +5,15 @@
 
 namespace hsmu {
 
-namespace {
-
-constexpr const char* kBasic[3] = {"axial", "shear", "rotation"};
-constexpr const char* kBasicDeformationUnit[3] = {"m", "m", "rad"};
-constexpr const char* kBasicForceUnit[3] = {"kN", "kN", "kN m"};
-
-} // namespace
-
 std::vector<ElementChannel> elementChannels(const Element& e) {
     std::vector<ElementChannel> out;
     const std::string& n = e.name();
     if (const auto* x = dynamic_cast<const ExperimentalLink2d*>(&e)) {
         for (int k = 0; k < 3; ++k) {
-            out.push_back({n, std::string(kBasic[k]) + " commanded", kBasicDeformationUnit[k]});
-            out.push_back({n, std::string(kBasic[k]) + " deformation", kBasicDeformationUnit[k]});
-            out.push_back({n, std::string(kBasic[k]) + " force", kBasicForceUnit[k]});
+            const std::string b = link2dBasicDofName(k);
+            out.push_back({n, b + " commanded", link2dBasicDeformationUnit(k)});
+            out.push_back({n, b + " deformation", link2dBasicDeformationUnit(k)});
+            out.push_back({n, b + " force", link2dBasicForceUnit(k)});
         }
         for (const ActuatorChannelSpec& c : x->channels()) {
             out.push_back({n, c.name + " command", c.mode == ActuatorMode::Force ? "kN" : "m"});
@@ -29,8 +22,9 @@ std::vector<ElementChannel> elementChannels(const Element& e) {
         }
     } else if (dynamic_cast<const Link2dElement*>(&e)) {
         for (int k = 0; k < 3; ++k) {
-            out.push_back({n, std::string(kBasic[k]) + " deformation", kBasicDeformationUnit[k]});
-            out.push_back({n, std::string(kBasic[k]) + " force", kBasicForceUnit[k]});
+            const std::string b = link2dBasicDofName(k);
+            out.push_back({n, b + " deformation", link2dBasicDeformationUnit(k)});
+            out.push_back({n, b + " force", link2dBasicForceUnit(k)});
         }
     }
     return out;

@@ -53,17 +53,30 @@ bool HybridTest::approveUpdate(int proposalId)
     return true;
 }
 
+namespace {
+
+// Each element's initial generalized stiffness and, for a multi-DOF one, each basic DOF law's
+// initial tangent: what an update may change of K0 (any basic DOF's law may be a target).
+std::vector<double> initialStiffnesses(const Structure& structure)
+{
+    std::vector<double> out;
+    for (const auto& e : structure.elements()) {
+        out.push_back(e->initialGeneralizedStiffness());
+        for (int k = 0; e->basicDofCount() > 1 && k < e->basicDofCount(); ++k)
+            if (const HysteresisLaw* law = e->basicLaw(k))
+                out.push_back(law->initialTangent());
+    }
+    return out;
+}
+
+} // namespace
+
 void HybridTest::revisitUpdatedModel()
 {
     // Only an update that changed an element's initial stiffness changes omega_max.
-    bool changed = false;
-    const auto& elements = m_structure->elements();
-    for (std::size_t i = 0; i < elements.size() && i < m_initialStiffness.size(); ++i) {
-        const double k = elements[i]->initialGeneralizedStiffness();
-        changed = changed || k != m_initialStiffness[i];
-        m_initialStiffness[i] = k;
-    }
-    if (!changed)
+    const std::vector<double> before = std::move(m_initialStiffness);
+    m_initialStiffness = initialStiffnesses(*m_structure);
+    if (m_initialStiffness == before)
         return;
     const bool wasStable = m_updatedStability.stable;
     StabilityReport r = m_stability;
@@ -178,13 +191,12 @@ bool HybridTest::prepare()
     m_totalSteps = std::min<int>(m_totalSteps, int(m_groundMotion.acceleration.size()) - 1);
 
     for (const auto& e : m_structure->elements()) // rate-dependent laws step with the test
-        if (HysteresisLaw* law = e->law())
-            law->setTimeIncrement(m_options.dt);
+        for (int k = 0; k < e->basicDofCount(); ++k)
+            if (HysteresisLaw* law = e->basicLaw(k))
+                law->setTimeIncrement(m_options.dt);
     m_stability = checkStability(*m_structure, *m_integrator, m_options.dt);
     m_updatedStability = m_stability;
-    m_initialStiffness.clear();
-    for (const auto& e : m_structure->elements())
-        m_initialStiffness.push_back(e->initialGeneralizedStiffness());
+    m_initialStiffness = initialStiffnesses(*m_structure);
     if (!m_stability.stable) {
         if (!m_options.allowUnstable)
             return fail(m_stability.message);

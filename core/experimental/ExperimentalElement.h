@@ -56,6 +56,12 @@ public:
 
     double commandedDeformation() const { return m_commanded; }
     const ControlMeasurement& measurement() const { return m_measured; }
+    /// Basic DOF k's measured deformation and force (0 <= k < basicDofCount(); for a
+    /// multi-DOF element recovered through its setup, docs/setups.md eq. S3-S4) and its
+    /// commanded deformation: what online updating identifies on a chosen basic DOF
+    /// (docs/configuration.md, updating.basicDof). One-DOF: measurement(), commandedDeformation().
+    virtual ControlMeasurement basicMeasurement(int /*k*/) const { return m_measured; }
+    virtual double commandedBasicDeformation(int /*k*/) const { return m_commanded; }
     ExperimentalControl& control() { return *m_control; }
     const ExperimentalControl& control() const { return *m_control; }
 

@@ -53,6 +53,10 @@ public:
     void addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
                              const std::vector<int>& freeOf) const override;
 
+    int basicDofCount() const override { return 3; }
+    ControlMeasurement basicMeasurement(int k) const override { return {m_dMeas[k], m_q[k]}; }
+    double commandedBasicDeformation(int k) const override { return m_dTrial[k]; }
+
     const ExperimentalSetup& setup() const { return *m_setup; }
     const std::vector<ActuatorChannelSpec>& channels() const { return m_channels; }
     const Eigen::Vector3d& commandedBasic() const { return m_dTrial; } ///< trial d [m, m, rad]

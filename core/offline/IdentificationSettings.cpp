@@ -12,7 +12,8 @@ namespace {
 /// configuration holding only the specimen, experimental, with that model.
 IdentificationSettings reparse(const IdentificationSettings& base, nlohmann::json section,
                                const std::string& sourceName) {
-    for (const char* unused : {"specimen", "enabled", "reporter", "approval"})
+    // basicDof and model: the base's (the identified DOF and its model, taken apart below).
+    for (const char* unused : {"specimen", "enabled", "reporter", "approval", "basicDof", "model"})
         section.erase(unused);
     TestConfig cfg;
     cfg.sourcePath = sourceName;
@@ -25,6 +26,7 @@ IdentificationSettings reparse(const IdentificationSettings& base, nlohmann::jso
     full["specimen"] = base.specimen;
     IdentificationSettings s = base;
     s.updating = parseUpdating(JsonCursor(full, sourceName, "updating"), cfg);
+    s.updating.basicDof = base.updating.basicDof;
     // Nelder-Mead's missing bounds (and, without the model's uRef / fRef, its scales) come
     // from the data as the calibration's (NelderMeadIdentifier.h): Table III only where the
     // configuration names it (the paper's presets).
@@ -58,9 +60,16 @@ IdentificationSettings identificationSettingsFrom(const TestConfig& cfg,
                           "'");
     IdentificationSettings s;
     s.specimen = name;
-    s.model = spec->material;
+    // The identified DOF's model: a link2d specimen's is the updating section's (its basic
+    // DOFs carry no material).
+    const bool updated = cfg.updating.enabled && cfg.updating.specimen == name;
+    s.model = updated ? cfg.updating.model : spec->material;
     s.dt = cfg.analysis.dt;
-    if (cfg.updating.enabled && cfg.updating.specimen == name) {
+    if (spec->link2d && !updated)
+        throw ConfigError(cfg.sourcePath + ": '" + name + "' is a link2d specimen: its basic "
+                          "DOF and that DOF's model come from an updating section naming it "
+                          "(updating.basicDof, updating.model)");
+    if (updated) {
         s.updating = cfg.updating;
         if (cfg.raw.contains("updating"))
             s.updatingDocument = cfg.raw["updating"];

@@ -1,6 +1,6 @@
 #include "core/offline/SpecimenHistory.h"
 
-#include "core/record/RecordData.h"
+#include "core/record/SpecimenColumns.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -27,22 +27,15 @@ std::string SpecimenHistory::problem() const {
 
 SpecimenHistory historyFromRecord(const RecordData& record, const std::string& element,
                                   const std::string& source) {
-    const auto& elements = record.layout.elements;
-    int j = -1;
-    for (std::size_t i = 0; i < elements.size(); ++i)
-        if (elements[i].name == element && elements[i].experimental)
-            j = int(i);
-    if (j < 0)
-        throw std::invalid_argument(source + ": no specimen (experimental element) named '" +
-                                    element + "' in the record");
+    const SpecimenColumns c = specimenColumns(record, element, source);
     SpecimenHistory h;
     h.source = source + " (" + element + ")";
-    h.deformationUnits = elements[std::size_t(j)].units.deformation;
-    h.forceUnits = elements[std::size_t(j)].units.force;
+    h.deformationUnits = c.units.deformation;
+    h.forceUnits = c.units.force;
     for (int r = 1; r < record.rows(); ++r) {
         h.time.push_back(record.time[r]);
-        h.deformation.push_back(record.deformation(r, j));
-        h.force.push_back(record.force(r, j));
+        h.deformation.push_back(c.deformation(record, r));
+        h.force.push_back(c.force(record, r));
     }
     return h;
 }

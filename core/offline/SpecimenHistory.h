@@ -34,7 +34,9 @@ struct SpecimenHistory {
 
 /// The measured deformation and force of the experimental element `element` of a record
 /// (rows 1 .. N-1: every committed step; row 0, the initial state at rest, is not a
-/// measurement). Throws std::invalid_argument if the record has no such specimen.
+/// measurement): of the basic DOF the record's updating identified on it, if any
+/// (core/record/SpecimenColumns.h). Throws std::invalid_argument if the record has no such
+/// specimen.
 SpecimenHistory historyFromRecord(const RecordData& record, const std::string& element,
                                   const std::string& source);
 

@@ -1,6 +1,7 @@
 #include "core/output/RunLayout.h"
 
 #include "core/experimental/SiteStatus.h"
+#include "core/structure/Link2dKinematics.h"
 #include "core/structure/Structure.h"
 #include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
@@ -37,6 +38,10 @@ RunLayout RunLayout::of(const HybridTest& test) {
         for (const ElementInfo& e : layout.elements)
             if (e.name == u.specimen)
                 u.units = e.units;
+        if (const int k = updater->basicDof(); k >= 0) { // a link2d's basic DOF
+            u.basicDof = link2dBasicDofName(k);
+            u.units = {link2dBasicDeformationUnit(k), link2dBasicForceUnit(k)};
+        }
         layout.updating = std::move(u);
     }
     return layout;

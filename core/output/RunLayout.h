@@ -34,7 +34,11 @@ struct UpdatingInfo {
     std::string specimen;                ///< the identified experimental element
     std::string method;                  ///< the identifier's name, e.g. "UKF"
     std::vector<std::string> parameters; ///< identified parameters, record order
-    ElementUnits units;                  ///< the specimen's units (auxiliary force)
+    ElementUnits units;                  ///< the identified DOF's units (auxiliary force)
+    /// The specimen's identified basic DOF (updating.basicDof) by its channel name ("axial",
+    /// "shear", "rotation": its measured history is the specimen's channels "<name>
+    /// deformation" and "<name> force"); "" for the specimen's own (reported) column.
+    std::string basicDof;
 };
 
 struct RunLayout {

@@ -55,6 +55,8 @@ std::string recordMetadataChecksum(const RecordMetadata& m, const RunLayout& l) 
             f.text(p);
         f.text(l.updating->units.deformation);
         f.text(l.updating->units.force);
+        if (!l.updating->basicDof.empty()) // records without it keep their checksum
+            f.text(l.updating->basicDof);
     }
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));

@@ -264,6 +264,8 @@ void RecordReader::Impl::readMetadata() {
         info.parameters = h5::readStringsAttr(g.get(), "names", w);
         info.units.deformation = h5::readStringAttr(g.get(), "deformation_units", w);
         info.units.force = h5::readStringAttr(g.get(), "force_units", w);
+        if (h5::hasAttr(g.get(), "basic_dof"))
+            info.basicDof = h5::readStringAttr(g.get(), "basic_dof", w);
         const int nPar = int(info.parameters.size());
         layout.updating = std::move(info);
         par = column("/updating/parameters", nPar);

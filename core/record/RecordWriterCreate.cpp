@@ -172,6 +172,8 @@ void RecordWriter::Impl::createUpdating(hid_t root) {
     h5::writeAttr(g.get(), "names", info.parameters, w);
     h5::writeAttr(g.get(), "deformation_units", info.units.deformation, w);
     h5::writeAttr(g.get(), "force_units", info.units.force, w);
+    if (!info.basicDof.empty()) // a link2d's basic DOF (docs/recording.md, /updating)
+        h5::writeAttr(g.get(), "basic_dof", info.basicDof, w);
     par = h5::Extendible(g.get(), "parameters", f64, int(nPar), w);
     sd = h5::Extendible(g.get(), "stddev", f64, int(nPar), w);
     h5::writeAttr(par.id(), "names", info.parameters, w);

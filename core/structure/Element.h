@@ -89,6 +89,18 @@ public:
     /// next trial on. False (nothing swapped) if the element has no law to change.
     virtual bool swapLaw(std::unique_ptr<HysteresisLaw>& /*law*/) { return false; }
 
+    /// Basic DOFs (docs/setups.md, "Multi-DOF elements"): 1 for a one-DOF element, whose one
+    /// law is law(); 3 for a link2d (0 axial, 1 shear, 2 rotation).
+    virtual int basicDofCount() const { return 1; }
+    /// The law carried by basic DOF k (0 <= k < basicDofCount()); nullptr if that DOF has
+    /// none (a held force, a free DOF, an experimental element). One-DOF: law() for k = 0.
+    virtual HysteresisLaw* basicLaw(int k) { return k == 0 ? law() : nullptr; }
+    /// swapLaw() for basic DOF k's law. One-DOF: swapLaw() for k = 0.
+    virtual bool swapBasicLaw(int k, std::unique_ptr<HysteresisLaw>& law)
+    {
+        return k == 0 && swapLaw(law);
+    }
+
     /// Add c_k P to R[dof_k] (full DOFs). A multi-DOF element (Link2d, ExperimentalLink2d)
     /// adds A^T q instead, q its basic forces (docs/setups.md, "Multi-DOF elements", eq. L1-L2).
     virtual void addNodalForces(Eigen::VectorXd& rFull) const;

@@ -41,9 +41,19 @@ public:
     const HysteresisLaw* law() const override { return m_dofs[m_primary].law.get(); }
     bool swapLaw(std::unique_ptr<HysteresisLaw>& law) override
     {
-        if (!law)
+        return swapBasicLaw(m_primary, law);
+    }
+    int basicDofCount() const override { return 3; }
+    HysteresisLaw* basicLaw(int k) override
+    {
+        return k >= 0 && k < 3 ? m_dofs[std::size_t(k)].law.get() : nullptr;
+    }
+    /// Only a DOF that carries a law takes another (a held force stays one).
+    bool swapBasicLaw(int k, std::unique_ptr<HysteresisLaw>& law) override
+    {
+        if (!law || !basicLaw(k))
             return false;
-        m_dofs[m_primary].law.swap(law);
+        m_dofs[std::size_t(k)].law.swap(law);
         return true;
     }
 

@@ -6,6 +6,35 @@
 
 namespace hsmu {
 
+namespace {
+constexpr const char* kBasicDofNames[3] = {"axial", "shear", "rotation"};
+constexpr const char* kBasicDeformationUnits[3] = {"m", "m", "rad"};
+constexpr const char* kBasicForceUnits[3] = {"kN", "kN", "kN m"};
+} // namespace
+
+const char* link2dBasicDofName(int k)
+{
+    return k >= 0 && k < 3 ? kBasicDofNames[k] : "";
+}
+
+const char* link2dBasicDeformationUnit(int k)
+{
+    return k >= 0 && k < 3 ? kBasicDeformationUnits[k] : "";
+}
+
+const char* link2dBasicForceUnit(int k)
+{
+    return k >= 0 && k < 3 ? kBasicForceUnits[k] : "";
+}
+
+int link2dBasicDofIndex(const std::string& name)
+{
+    for (int k = 0; k < 3; ++k)
+        if (name == kBasicDofNames[k])
+            return k;
+    return -1;
+}
+
 Link2dKinematics::Link2dKinematics(const std::string& element, const Link2dGeometry& g) : m_g(g)
 {
     if (!std::isfinite(g.length) || g.length <= 0.0)

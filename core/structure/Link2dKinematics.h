@@ -25,6 +25,15 @@
 
 namespace hsmu {
 
+/// The name of basic DOF k (0 "axial", 1 "shear", 2 "rotation"); "" outside 0..2.
+const char* link2dBasicDofName(int k);
+/// Basic DOF k's deformation unit ("m", "m", "rad") and force unit ("kN", "kN", "kN m") in
+/// the presets' units; "" outside 0..2.
+const char* link2dBasicDeformationUnit(int k);
+const char* link2dBasicForceUnit(int k);
+/// The index of a basic DOF's name ("axial", "shear", "rotation"); -1 for any other text.
+int link2dBasicDofIndex(const std::string& name);
+
 struct Link2dGeometry {
     /// Full-DOF indices: (x_i, y_i, theta_i, x_j, y_j, theta_j); < 0: a support.
     std::array<int, 6> dofs{-1, -1, -1, -1, -1, -1};

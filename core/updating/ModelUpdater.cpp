@@ -32,6 +32,14 @@ bool ModelUpdater::attach(Structure& structure, double dt, std::string* error)
             *error = "updating: '" + m_specimen + "' is not an experimental element";
         return false;
     }
+    if (m_basicDof >= m_element->basicDofCount()) {
+        if (error)
+            *error = "updating: basic DOF " + std::to_string(m_basicDof) + " of '" + m_specimen +
+                     "' is out of range: a " + m_element->typeName() + " has " +
+                     std::to_string(m_element->basicDofCount()) + " (0 .. " +
+                     std::to_string(m_element->basicDofCount() - 1) + ")";
+        return false;
+    }
     const ParameterLayout& layout = m_identifier->layout();
     if (!m_reporter->bind(structure, layout, error))
         return false;
@@ -114,7 +122,8 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
         out.parameters = std::move(parameters);
         out.stddev = std::move(stddev);
     }
-    const ControlMeasurement& m = m_element->measurement();
+    const ControlMeasurement m = m_basicDof < 0 ? m_element->measurement()
+                                                : m_element->basicMeasurement(m_basicDof);
     const double dm = m.deformation;
     const double fm = m.force;
 
@@ -149,7 +158,8 @@ std::optional<std::string> ModelUpdater::afterCommit(int step, double time, Stru
     in.measuredForce = fm;
     in.auxiliaryForce = out.auxiliaryForce;
     in.measuredDeformation = dm;
-    in.commandedDeformation = m_element->commandedDeformation();
+    in.commandedDeformation = m_basicDof < 0 ? m_element->commandedDeformation()
+                                             : m_element->commandedBasicDeformation(m_basicDof);
     in.estimatorOk = st.ok;
     in.estimatorMessage = st.message;
     in.parameters = &m_identifier->layout();
@@ -228,19 +238,20 @@ std::optional<OffsetProposal> ModelUpdater::approveOffsets(int id, Structure& st
             *error = "offsets #" + std::to_string(id) + " are not pending";
         return std::nullopt;
     }
-    std::vector<Element*> targets;
+    std::vector<std::pair<Element*, int>> targets; // (element, basic DOF)
     for (const ReporterTarget& t : m_reporter->targets()) {
         Element* e = structure.element(t.element);
-        if (!e || !e->law()) {
+        if (!reporterTargetLaw(e, t.basicDof)) {
             if (error)
                 *error = "offsets not applied: target '" + t.element +
                          "' is not a numerical element with a law";
             return std::nullopt;
         }
-        targets.push_back(e);
+        targets.emplace_back(e, t.basicDof);
     }
-    for (Element* e : targets) {
-        if (auto* law = dynamic_cast<OffsetLaw*>(e->law())) {
+    for (auto [e, dof] : targets) {
+        HysteresisLaw* current = reporterTargetLaw(e, dof);
+        if (auto* law = dynamic_cast<OffsetLaw*>(current)) {
             const int idx[] = {law->parameterIndex(OffsetLaw::kDeformationOffset),
                                law->parameterIndex(OffsetLaw::kForceOffset)};
             const double values[] = {p->deformationOffset, p->forceOffset};
@@ -248,11 +259,11 @@ std::optional<OffsetProposal> ModelUpdater::approveOffsets(int id, Structure& st
         } else {
             // The element's own law (its state, and an OpenSees twin its connection) goes
             // inside the offsets: a copy holds its place while it is taken out.
-            std::unique_ptr<HysteresisLaw> own = e->law()->clone();
-            e->swapLaw(own); // own: the element's own law
+            std::unique_ptr<HysteresisLaw> own = current->clone();
+            swapReporterTargetLaw(*e, dof, own); // own: the element's own law
             std::unique_ptr<HysteresisLaw> wrapped = std::make_unique<OffsetLaw>(
                 std::move(own), p->deformationOffset, p->forceOffset);
-            e->swapLaw(wrapped); // wrapped: the copy (released here)
+            swapReporterTargetLaw(*e, dof, wrapped); // wrapped: the copy (released here)
         }
     }
     // The targets' laws changed objects: the reporter resolves them again.

@@ -68,6 +68,12 @@ public:
                      UpdatingSample& out);
 
     const std::string& specimenElement() const { return m_specimen; }
+    /// The specimen's basic DOF identified (docs/configuration.md, updating.basicDof): its
+    /// measured deformation and force (ExperimentalElement::basicMeasurement) feed the
+    /// auxiliary model, the identifier and the inspector. -1 (the default): the element's
+    /// reported one (measurement(): a one-DOF specimen's, a link2d's primary). Before attach().
+    void setBasicDof(int k) { m_basicDof = k < 0 ? -1 : k; }
+    int basicDof() const { return m_basicDof; }
     /// The identifier's layout: the order of UpdatingSample's parameters and stddev.
     const ParameterLayout& layout() const { return m_identifier->layout(); }
     const std::vector<std::string>& parameterNames() const { return layout().names(); }
@@ -125,6 +131,7 @@ private:
     std::unique_ptr<Reporter> m_reporter;
     std::unique_ptr<OffsetCheck> m_offsets;
     ExperimentalElement* m_element = nullptr;
+    int m_basicDof = -1;
     std::vector<double> m_history; // measured deformations, for replays of the auxiliary model
     double m_dt = 0.0;             // the step (a rate-dependent auxiliary law's time increment)
     std::optional<bool> m_autoResolve;

@@ -1,6 +1,7 @@
 #include "core/updating/Reporter.h"
 
 #include "core/hysteresis/HysteresisLaw.h"
+#include "core/structure/Link2dKinematics.h"
 #include "core/structure/Structure.h"
 
 #include <algorithm>
@@ -29,6 +30,45 @@ std::optional<ReporterPolicy> parseReporterPolicy(const std::string& text)
     return std::nullopt;
 }
 
+HysteresisLaw* reporterTargetLaw(Element* e, int basicDof)
+{
+    if (!e)
+        return nullptr;
+    if (basicDof < 0)
+        return e->law();
+    return basicDof < e->basicDofCount() ? e->basicLaw(basicDof) : nullptr;
+}
+
+const HysteresisLaw* reporterTargetLaw(const Element* e, int basicDof)
+{
+    return reporterTargetLaw(const_cast<Element*>(e), basicDof);
+}
+
+bool swapReporterTargetLaw(Element& e, int basicDof, std::unique_ptr<HysteresisLaw>& law)
+{
+    return basicDof < 0 ? e.swapLaw(law) : e.swapBasicLaw(basicDof, law);
+}
+
+namespace {
+
+// Why target `t` has no law to update in `e` (null: no such element).
+std::string noTargetLaw(const ReporterTarget& t, Element* e)
+{
+    const std::string what = "updating: target '" + t.element + "'";
+    if (!e || t.basicDof < 0 || e->isExperimental())
+        return what + " is not a numerical element with a law";
+    const int n = e->basicDofCount();
+    if (t.basicDof >= n)
+        return what + ": basic DOF " + std::to_string(t.basicDof) + " is out of range: a " +
+               e->typeName() + " has " + std::to_string(n) + " (0 .. " + std::to_string(n - 1) +
+               ")";
+    const std::string name = n == 3 ? std::string(" (") + link2dBasicDofName(t.basicDof) + ")" : "";
+    return what + ": basic DOF " + std::to_string(t.basicDof) + name +
+           " carries no hysteretic law (a held force or a free DOF): nothing to update";
+}
+
+} // namespace
+
 Reporter::Reporter(std::vector<ReporterTarget> targets, ReporterPolicy policy, int everyN)
     : m_targets(std::move(targets)), m_policy(policy), m_everyN(everyN < 1 ? 1 : everyN),
       m_lastForce(m_targets.size(), 0.0),
@@ -49,11 +89,11 @@ bool Reporter::bind(Structure& structure, const ParameterLayout& identified, std
     for (const ReporterTarget& t : m_targets) {
         Element* e = structure.element(t.element);
         BoundTarget& b = m_bound.emplace_back();
-        b.law = e ? e->law() : nullptr;
+        b.law = reporterTargetLaw(e, t.basicDof);
         if (!b.law && ok) {
             ok = false;
             if (error)
-                *error = "updating: target '" + t.element + "' is not a numerical element with a law";
+                *error = noTargetLaw(t, e);
         }
         if (b.law && ok) { // a name the target's law does not have: refused with the name
             const ParameterLayout lawNames(b.law->parameterNames());
@@ -144,7 +184,8 @@ void Reporter::queueProposal(std::size_t i, int step, double time, std::vector<U
                      " proposals pending): not queued";
         return;
     }
-    UpdateProposal p{m_nextId++, step, time, element, b.names, b.values, {}, m_fitError};
+    UpdateProposal p{m_nextId++, step, time, element, b.names, b.values, {}, m_fitError,
+                     m_targets[i].basicDof};
     if (b.law)
         for (std::size_t k = 0; k < b.values.size(); ++k)
             p.current.push_back(b.lawIndex[k] >= 0 ? b.law->parameterValue(b.lawIndex[k])
@@ -235,7 +276,7 @@ std::optional<UpdateEvent> Reporter::approve(int id, Structure& structure, int s
             // The target as it is now, its parameters resolved by name (an operator's
             // decision, not a step: no need for the bound positions).
             Element* e = structure.element(p.element);
-            HysteresisLaw* law = e ? e->law() : nullptr;
+            HysteresisLaw* law = reporterTargetLaw(e, p.basicDof);
             std::vector<int> lawIndex;
             for (const std::string& name : p.parameters.names())
                 lawIndex.push_back(law ? law->parameterIndex(name) : -1);

@@ -30,6 +30,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -37,6 +38,7 @@
 
 namespace hsmu {
 
+class Element;
 class HysteresisLaw;
 class Structure;
 
@@ -49,7 +51,17 @@ struct ReporterTarget {
     std::vector<std::string> parameters; ///< names sent to it (as configured)
     /// Per-parameter factor by name, as configured (category-2 conversion; default 1).
     std::map<std::string, double> scale;
+    /// The twin's basic DOF whose law is updated (Element::basicLaw; docs/configuration.md,
+    /// updating.basicDof): -1 (default) its law() (a one-DOF element's, a link2d's primary).
+    int basicDof = -1;
 };
+
+/// The law target `basicDof` names in `e` (ReporterTarget::basicDof): e->law() for -1, else
+/// e->basicLaw(basicDof); nullptr when there is none (or e is null, or the DOF out of range).
+HysteresisLaw* reporterTargetLaw(Element* e, int basicDof);
+const HysteresisLaw* reporterTargetLaw(const Element* e, int basicDof);
+/// swapLaw() / swapBasicLaw() on the same law reporterTargetLaw() names.
+bool swapReporterTargetLaw(Element& e, int basicDof, std::unique_ptr<HysteresisLaw>& law);
 
 struct UpdateProposal {
     int id = 0;
@@ -60,6 +72,7 @@ struct UpdateProposal {
     std::vector<double> proposed; ///< after scaling, in `parameters` order
     std::vector<double> current;  ///< the target's values when proposed (same order)
     double fitError = std::numeric_limits<double>::quiet_NaN(); ///< [-] when proposed (NaN: unknown)
+    int basicDof = -1; ///< the target's basic DOF (ReporterTarget::basicDof)
 };
 
 class Reporter {

@@ -3,6 +3,7 @@
 #include "core/hysteresis/HysteresisLaw.h"
 #include "core/output/ElementUnits.h"
 #include "core/structure/Element.h"
+#include "core/structure/Link2dKinematics.h"
 #include "core/structure/Structure.h"
 #include "core/experiment/HybridTest.h"
 #include "core/updating/ModelUpdater.h"
@@ -52,7 +53,7 @@ UpdatingSnapshot snapshotOf(const HybridTest& test) {
             s.latest[t.element].assign(v.begin(), v.end());
     for (const ReporterTarget& t : r.targets()) {
         const Element* e = test.structure().element(t.element);
-        const HysteresisLaw* law = e ? e->law() : nullptr;
+        const HysteresisLaw* law = reporterTargetLaw(e, t.basicDof);
         ParameterValues& values = s.targets[t.element];
         if (law)
             for (const std::string& name : t.parameters)
@@ -72,6 +73,10 @@ UpdatingSnapshot snapshotOf(const HybridTest& test) {
         const ElementUnits units = elementUnits(e->typeName());
         s.deformationUnit = units.deformation;
         s.forceUnit = units.force;
+    }
+    if (const int k = u->basicDof(); k >= 0) { // a link2d's identified basic DOF
+        s.deformationUnit = link2dBasicDeformationUnit(k);
+        s.forceUnit = link2dBasicForceUnit(k);
     }
     return s;
 }

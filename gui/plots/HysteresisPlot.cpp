@@ -102,9 +102,39 @@ void HysteresisPlot::showElements(const RunLayout& layout, const std::vector<int
 void HysteresisPlot::addAuxiliaryModel(const RunLayout& layout) {
     if (!layout.updating)
         return;
-    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
-        if (layout.elements[i].name != layout.updating->specimen)
+    // A link2d's identified basic DOF: its channels, for the specimen's curve and the overlay.
+    const UpdatingInfo& u = *layout.updating;
+    int deformationChannel = -1, forceChannel = -1;
+    for (std::size_t c = 0; c < layout.channels.size() && !u.basicDof.empty(); ++c) {
+        if (layout.channels[c].element != u.specimen)
             continue;
+        if (layout.channels[c].name == u.basicDof + " deformation")
+            deformationChannel = int(c);
+        if (layout.channels[c].name == u.basicDof + " force")
+            forceChannel = int(c);
+    }
+    for (std::size_t i = 0; i < layout.elements.size(); ++i) {
+        if (layout.elements[i].name != u.specimen)
+            continue;
+        if (deformationChannel >= 0 && forceChannel >= 0) {
+            for (Series& s : m_series) {
+                if (s.element != int(i))
+                    continue;
+                s.deformationChannel = deformationChannel;
+                s.forceChannel = forceChannel;
+                const QString name = QString::fromStdString(u.specimen + " " + u.basicDof);
+                QCPCurve* curve = s.curve;
+                m_texts.push_back([this, curve, name] {
+                    curve->setName(tr("%1 (specimen, measured)").arg(name));
+                });
+            }
+            const QString name = QString::fromStdString(u.specimen + " " + u.basicDof);
+            const QString deformation = QString::fromStdString(u.units.deformation);
+            const QString force = QString::fromStdString(u.units.force);
+            m_texts.push_back([this, name, deformation, force] {
+                setAxes(tr("Hysteresis of %1").arg(name), deformation, force);
+            });
+        }
         auto* curve = new QCPCurve(xAxis, yAxis);
         const QString method = QString::fromStdString(layout.updating->method);
         m_texts.push_back(
@@ -114,8 +144,10 @@ void HysteresisPlot::addAuxiliaryModel(const RunLayout& layout) {
         pen.setStyle(Qt::DashLine);
         curve->setPen(pen);
         curve->setAntialiased(false);
-        m_series.push_back({int(i), curve, true});
+        m_series.push_back({int(i), curve, true, deformationChannel, -1});
         legend->setVisible(true);
+        if (deformationChannel >= 0)
+            retranslate(); // the specimen's curve and the axes: the identified DOF's
         return;
     }
 }
@@ -152,10 +184,15 @@ void HysteresisPlot::appendRecords(const std::vector<StepRecord>& records) {
         for (const StepRecord& r : records) {
             if (std::size_t(s.element) >= r.elements.size() || (s.auxiliary && !r.hasUpdating))
                 continue;
+            if (std::max(s.deformationChannel, s.forceChannel) >= int(r.channels.size()))
+                continue; // a record without the channels (they are drawn live)
             const ElementSample& e = r.elements[std::size_t(s.element)];
             t.push_back(r.time);
-            x.push_back(e.deformation);
-            y.push_back(s.auxiliary ? r.updating.auxiliaryForce : e.force);
+            x.push_back(s.deformationChannel >= 0 ? r.channels[std::size_t(s.deformationChannel)]
+                                                  : e.deformation);
+            y.push_back(s.auxiliary          ? r.updating.auxiliaryForce
+                        : s.forceChannel >= 0 ? r.channels[std::size_t(s.forceChannel)]
+                                              : e.force);
         }
         s.curve->addData(t, x, y, true);
     }

@@ -37,6 +37,8 @@ public:
     void showElements(const RunLayout& layout, const std::vector<int>& elements);
     /// Overlay the auxiliary model (docs/method.md, The four modules): its force
     /// (StepRecord::updating.auxiliaryForce) against the specimen's measured deformation.
+    /// When the updating identifies a link2d specimen's basic DOF (UpdatingInfo::basicDof),
+    /// the specimen's curve and the overlay are that DOF's channels (StepRecord::channels).
     /// Nothing if layout has no updating or its specimen is unknown. Call after showElements().
     void addAuxiliaryModel(const RunLayout& layout);
     /// Title and axis labels for loops in these units ("rad" labels rotation and moment).
@@ -61,6 +63,8 @@ private:
         int element = 0;
         QCPCurve* curve = nullptr;
         bool auxiliary = false; ///< force from StepRecord::updating.auxiliaryForce
+        /// StepRecord::channels of the deformation and force shown (-1: the element's own)
+        int deformationChannel = -1, forceChannel = -1;
     };
     std::vector<Series> m_series;
 };

@@ -30,9 +30,8 @@ StepRecord RecordPlayback::rowAt(const RecordData& d, int i) {
                 std::isnan(d.actuatorFlags(i, j)) ? -1 : std::int64_t(d.actuatorFlags(i, j));
         }
     }
-    // the multi-DOF elements' channels (/elements/channels; none in older records)
-    for (Eigen::Index j = 0; i < d.channels.rows() && j < d.channels.cols(); ++j)
-        r.channels.push_back(d.channels(i, j));
+    if (i < d.channels.rows()) // the multi-DOF elements' channels (/elements/channels)
+        r.channels.assign(d.channels.row(i).begin(), d.channels.row(i).end());
     r.hasUpdating = d.layout.updating.has_value() && d.parameters.rows() > i;
     if (r.hasUpdating) {
         UpdatingSample& u = r.updating;
