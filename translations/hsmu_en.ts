@@ -3310,6 +3310,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>RTHS resume</translation>
     </message>
     <message>
+        <source>Resume</source>
+        <translation>Resume</translation>
+    </message>
+    <message>
         <source>Resumed</source>
         <translation>Resumed</translation>
     </message>

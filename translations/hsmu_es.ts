@@ -3310,6 +3310,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
         <translation>Reanudación RTHS</translation>
     </message>
     <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
         <source>Resumed</source>
         <translation>Reanudado</translation>
     </message>

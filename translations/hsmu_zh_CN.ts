@@ -3307,6 +3307,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
         <translation>RTHS 继续</translation>
     </message>
     <message>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
         <source>Resumed</source>
         <translation>已继续</translation>
     </message>
