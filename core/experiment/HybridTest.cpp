@@ -205,11 +205,15 @@ bool HybridTest::prepare()
     }
     m_specimens.clear();
     m_timed.clear();
-    for (const auto& e : m_structure->elements())
+    m_channelElements.clear();
+    for (const auto& e : m_structure->elements()) {
         if (auto* x = dynamic_cast<ExperimentalElement*>(e.get()))
             m_specimens.push_back(x);
         else if (e->timeDependent())
             m_timed.push_back(e.get()); // e.g. a twin's scheduled axial load
+        if (!elementChannels(*e).empty())
+            m_channelElements.push_back(e.get());
+    }
     for (ExperimentalElement* x : m_specimens)
         if (ControlResult r = x->control().prepare(m_options.dt); !r.ok)
             return fail(x->name() + ": " + r.reason);
@@ -399,13 +403,6 @@ void HybridTest::publish()
     m_structure->toFull(m_integrator->acceleration(), rec.a);
     const auto& elements = m_structure->elements();
     rec.elements.resize(elements.size());
-    if (m_step == 0 || !m_channelElementsFound) {
-        m_channelElements.clear();
-        for (const auto& e : elements)
-            if (!elementChannels(*e).empty())
-                m_channelElements.push_back(e.get());
-        m_channelElementsFound = true;
-    }
     rec.channels.clear();
     for (const Element* e : m_channelElements)
         appendChannelValues(*e, rec.channels);

@@ -154,10 +154,9 @@ private:
     // step()'s trial, restoring force and undo state, kept so that a step allocates nothing.
     Eigen::VectorXd m_uTrial, m_r;
     Integrator::Snapshot m_before;
-    // The elements with channels (ElementChannels.h), in structure order: found once (step
-    // 0) rather than asked of every element every step.
+    // The elements with channels (ElementChannels.h), in structure order: found once at
+    // prepare() rather than asked of every element every step.
     std::vector<const Element*> m_channelElements;
-    bool m_channelElementsFound = false;
     std::shared_ptr<SiteMonitor> m_siteMonitor = std::make_shared<SiteMonitor>();
     std::vector<SiteStatus> m_sites; // rebuilt at prepare, hold and resume; refreshed per step
     void updateSites();
