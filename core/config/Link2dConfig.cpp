@@ -185,8 +185,8 @@ std::unique_ptr<ExperimentalSetup> buildLink2dSetup(const Link2dSpec& s, std::st
 
 ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 {
-    c.allowOnly({"name", "type", "dofs", "length", "angle", "basic", "primary", "experimental",
-                 "setup", "actuators", "specimen"});
+    c.allowOnly({"name", "type", "dofs", "length", "angle", "geometry", "basic", "primary",
+                 "experimental", "setup", "actuators", "specimen"});
     ElementSpec e;
     e.name = c.string("name");
     e.type = "link2d";
@@ -208,6 +208,10 @@ ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& 
     s.angle = c.number("angle", 90.0);
     if (!std::isfinite(s.angle))
         c.fail("angle", "expected an angle in degrees");
+    const std::string geometry = c.string("geometry", "linear");
+    if (!link2dTransformationFromName(geometry, s.transformation))
+        c.fail("geometry", "expected 'linear' (small displacements) or 'corotational' (large "
+                           "displacements), found '" + geometry + "'");
     s.primary = c.integer("primary", 1, 0, 2);
     e.experimental = c.boolean("experimental", false);
     if (e.experimental) {

@@ -8,6 +8,7 @@
 #include "core/experimental/ActuatorChannel.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
+#include "core/structure/Link2dKinematics.h"
 #include "core/updating/Inspector.h"
 #include "core/identification/ParameterSet.h"
 #include "core/updating/Reporter.h"
@@ -63,6 +64,8 @@ struct Link2dSpec {
     std::array<int, 6> dofs{-1, -1, -1, -1, -1, -1}; ///< node i (x, y, theta), node j; -1: support
     double length = 0.0;                              ///< [m]
     double angle = 90.0;                              ///< [deg] of i -> j from x
+    /// "geometry": linear (eq. L1) or corotational (eq. L3, large displacements)
+    Link2dTransformation transformation = Link2dTransformation::Linear;
     std::array<Link2dBasicSpec, 3> basic;             ///< axial, shear, rotation
     int primary = 1;                                  ///< the basic DOF the record reports
     std::string setupScript; ///< experimental: one OpenFresco expSetup line (SetupScript.h)
