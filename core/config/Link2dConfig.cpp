@@ -5,6 +5,7 @@
 #include "core/experimental/setup/SetupScript.h"
 #include "core/experimental/CantileverColumn.h"
 #include "core/hysteresis/LawFactory.h"
+#include "core/structure/Link2dKinematics.h"
 
 #include <cmath>
 

@@ -8,7 +8,6 @@
 #include "core/experimental/ActuatorChannel.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
-#include "core/structure/Link2dKinematics.h"
 #include "core/updating/Inspector.h"
 #include "core/identification/ParameterSet.h"
 #include "core/updating/Reporter.h"
@@ -23,6 +22,8 @@
 #include <vector>
 
 namespace hsmu {
+
+enum class Link2dTransformation; // core/structure/Link2dKinematics.h
 
 struct MaterialSpec {
     std::string law = "elastic";          ///< "boucWen", "bilinear", "elastic"
@@ -65,7 +66,7 @@ struct Link2dSpec {
     double length = 0.0;                              ///< [m]
     double angle = 90.0;                              ///< [deg] of i -> j from x
     /// "geometry": linear (eq. L1) or corotational (eq. L3, large displacements)
-    Link2dTransformation transformation = Link2dTransformation::Linear;
+    Link2dTransformation transformation{}; // Linear
     std::array<Link2dBasicSpec, 3> basic;             ///< axial, shear, rotation
     int primary = 1;                                  ///< the basic DOF the record reports
     std::string setupScript; ///< experimental: one OpenFresco expSetup line (SetupScript.h)

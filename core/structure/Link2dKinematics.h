@@ -49,8 +49,9 @@ const char* link2dBasicForceUnit(int k);
 /// The index of a basic DOF's name ("axial", "shear", "rotation"); -1 for any other text.
 int link2dBasicDofIndex(const std::string& name);
 
-/// Small displacements (eq. L1-L2) or exact large displacements (eq. L3-L5).
-enum class Link2dTransformation { Linear, Corotational };
+/// Small displacements (eq. L1-L2) or exact large displacements (eq. L3-L5). Linear is 0: a
+/// value-initialized one (TestConfig.h declares the type without its enumerators) is linear.
+enum class Link2dTransformation { Linear = 0, Corotational };
 
 /// "linear" / "corotational" (the configuration's "geometry").
 const char* link2dTransformationName(Link2dTransformation t);
