@@ -283,6 +283,22 @@ private slots:
         e = errorOf(b);
         QVERIFY2(e.contains("setup.setups[0].L: TwoActuators2d: L = 0"), qPrintable(e));
 
+        // FourActuators3d's axial-load rods: a rod of zero length, named
+        const json four{{"type", "FourActuators3d"}, {"L1", 1.5}, {"L2", 1.5}, {"L3", 1.4},
+                        {"L4", 1.4}, {"a1", 0.1}, {"a2", 0.1}, {"a3", 0.12}, {"a4", 0.12},
+                        {"h", 0.8}, {"h1", 0.3}, {"h2", 0.3}, {"arlN", 0.2}, {"arlS", 0.2},
+                        {"LrodN", 1.0}, {"LrodS", 1.0}, {"Hbeam", 0.4}};
+        b = four;
+        b["LrodN"] = 0.0;
+        e = errorOf(b);
+        QVERIFY2(e.contains("setup.LrodN: FourActuators3d: LrodN = 0 must be a positive finite "
+                            "length (an axial-load rod's pin-to-pin length)"),
+                 qPrintable(e));
+        b = four;
+        b["h1"] = "high";
+        e = errorOf(b);
+        QVERIFY2(e.contains("setup.h1") && e.contains("number"), qPrintable(e));
+
         // In a configuration: the link2d element's setup field, with the 3-DOF check.
         std::ifstream in(kPreset);
         json doc = json::parse(in);
@@ -295,6 +311,15 @@ private slots:
             e = x.what();
         }
         QVERIFY2(e.contains("setup.type") && e.contains("NoTransformation serves 2 basic DOFs"),
+                 qPrintable(e));
+        doc["structure"]["elements"][0]["setup"] = four; // six basic DOFs on a 3-DOF link2d
+        try {
+            parseConfig(doc, "frame.json");
+            QFAIL("accepted a 6-DOF setup on a link2d");
+        } catch (const std::exception& x) {
+            e = x.what();
+        }
+        QVERIFY2(e.contains("setup.type") && e.contains("FourActuators3d serves 6 basic DOFs"),
                  qPrintable(e));
     }
 
