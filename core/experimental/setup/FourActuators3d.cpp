@@ -223,7 +223,7 @@ void FourActuators3d::rodInternal(const Vec5& x, Eigen::Vector2d& len,
     const double h1 = m_p.h1;
     const double Lrod[2] = {m_p.LrodN, m_p.LrodS};
     if (m_p.geometry == SetupGeometry::Linear) {
-        // eq. F3: l = Lrod + uz - h1 |phi|^2 / 2 + ((ux + h1 phiy)^2 + (uy - h1 phix)^2) / (2 Lrod)
+        // eq. S8: l = Lrod + uz - h1 |phi|^2 / 2 + ((ux + h1 phiy)^2 + (uy - h1 phix)^2) / (2 Lrod)
         const double ex = x(0) + h1 * x(4), ey = x(1) - h1 * x(3);
         for (int k = 0; k < 2; ++k) {
             len(k) = Lrod[k] + x(2) - 0.5 * h1 * (x(3) * x(3) + x(4) * x(4)) +
@@ -233,7 +233,7 @@ void FourActuators3d::rodInternal(const Vec5& x, Eigen::Vector2d& len,
         }
         return;
     }
-    // eq. F1: l = |(ux, uy, uz) + R(phi) p - b|, p = (0, 0, h1), b = (0, 0, h1 - Lrod)
+    // eq. S6: l = |(ux, uy, uz) + R(phi) p - b|, p = (0, 0, h1), b = (0, 0, h1 - Lrod)
     const Eigen::Vector3d w(x(3), x(4), 0.0);
     const Eigen::Vector3d pin(0.0, 0.0, h1);
     const Eigen::Matrix3d R = rotation(w);
@@ -288,7 +288,7 @@ SetupResult FourActuators3d::basicForces(const Eigen::VectorXd& d, const Eigen::
     Eigen::MatrixXd Jrod;
     if (SetupResult r = rodJacobian(d, Jrod); !r.ok)
         return r;
-    q.noalias() += Jrod.transpose() * f.head<2>(); // eq. F2
+    q.noalias() += Jrod.transpose() * f.head<2>(); // eq. S7
     return SetupResult::success();
 }
 

@@ -20,15 +20,15 @@
 //   linear:           s_i = e_i . (u + phi x a_i)   (OpenFresco has no linear version)
 // Jacobian: ds_i/d(Ra) = n_i; d(R a)/dphi = -R [a]x J_r(phi) (J_r the right Jacobian of SO(3)).
 //
-// Axial-load rods (docs/setups.md, "FourActuators3d", eqs. F1-F4): two rods, north and south,
+// Axial-load rods (docs/setups.md, "FourActuators3d", eqs. S6-S9): two rods, north and south,
 // each a straight pin-ended link from a floor anchor to a pin on the platform on the column
 // axis at height h1, LrodN / LrodS long (pin to pin), vertical at rest: anchor k at
 // (0, 0, h1 - Lrod_k). Their forces come from two load cells (OpenFresco's daq forces 1 and 2)
-// and enter the basic forces by virtual work like the actuators', q += Jrod^T frod (eq. F2),
+// and enter the basic forces by virtual work like the actuators', q += Jrod^T frod (eq. S7),
 // with Jrod = d(rod length)/dd: the axial load in d(0) and, through the rods' inclination under
 // the platform's motion, their P-Delta in the lateral forces and moments. The rods see the
 // platform's vertical translation uz = d(0) (the actuators do not: their strokes are OpenFresco's,
-// eq. S1). Linear formulation: the rods' length to second order in d (eq. F3), so the P-Delta
+// eq. S1). Linear formulation: the rods' length to second order in d (eq. S8), so the P-Delta
 // stays, linear in d. h2, arlN, arlS and Hbeam are OpenFresco's (its rods' force in the y-z plane
 // follows the spreader beam); kept for a script's numbers, not used (docs/setups.md).
 // Force sign: as the actuators' (ExperimentalSetup.h), positive when it does positive work on a
@@ -69,15 +69,15 @@ public:
     SetupResult basicDisplacements(const Eigen::VectorXd& s, const Eigen::VectorXd& given,
                                    Eigen::VectorXd& d) const override;
     /// f: the 4 actuator forces (rods unloaded), or OpenFresco's 6 daq forces (fN, fS, f1..f4):
-    /// q = J^T f_act + Jrod^T (fN, fS) (eqs. S3, F2) [N, N m].
+    /// q = J^T f_act + Jrod^T (fN, fS) (eqs. S3, S7) [N, N m].
     SetupResult basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
                             Eigen::VectorXd& q) const override;
     /// Load cells besides the actuators: the two rods.
     int loadCellCount() const override { return 2; }
 
-    /// The rods' lengths (north, south) at d [m] (eq. F1; linear: F3).
+    /// The rods' lengths (north, south) at d [m] (eq. S6; linear: S8).
     SetupResult rodLengths(const Eigen::VectorXd& d, Eigen::Vector2d& lengths) const;
-    /// d(rod length)/dd (2 x 6) at d (eq. F1's gradient; linear: F3's).
+    /// d(rod length)/dd (2 x 6) at d (eq. S6's gradient; linear: S8's).
     SetupResult rodJacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& Jrod) const;
 
 private:

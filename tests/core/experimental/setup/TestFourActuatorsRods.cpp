@@ -1,5 +1,5 @@
-// FourActuators3d's axial-load rods (docs/setups.md, "FourActuators3d", eqs. F1-F4): their share
-// of the basic forces against the hand-derived statics (linear: eq. F4 written out; exact: the
+// FourActuators3d's axial-load rods (docs/setups.md, "FourActuators3d", eqs. S6-S9): their share
+// of the basic forces against the hand-derived statics (linear: eq. S9 written out; exact: the
 // rod force at the deformed pin and its moment about the control point, by cross products, for
 // motions in the x-z and y-z planes, rotations to 0.3 rad), the rods' Jacobian against central
 // differences of their lengths, and the refusals naming the setup and the parameter.
@@ -67,8 +67,8 @@ void TestFourActuatorsRods::atRestTheRodsCarryTheAxialLoadOnly() {
     }
 }
 
-// eq. F3's length l_k = Lrod_k + uz - h1 |phi|^2 / 2 + (ex^2 + ey^2) / (2 Lrod_k), ex = ux + h1 phiy,
-// ey = uy - h1 phix; its gradient times f_k (eq. F4) written out here, in the element's DOFs
+// eq. S8's length l_k = Lrod_k + uz - h1 |phi|^2 / 2 + (ex^2 + ey^2) / (2 Lrod_k), ex = ux + h1 phiy,
+// ey = uy - h1 phix; its gradient times f_k (eq. S9) written out here, in the element's DOFs
 void TestFourActuatorsRods::linearMatchesTheSecondOrderClosedForm() {
     const double fN = -420.0, fS = -380.0;
     for (double phi : {0.0, 25.0}) {
