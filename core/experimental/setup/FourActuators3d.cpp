@@ -45,6 +45,13 @@ Eigen::Matrix3d rightJacobian(const Eigen::Vector3d& w) {
 
 constexpr double kRankTolerance = 1e-9;
 
+SetupResult sixBasic(const Eigen::VectorXd& d) {
+    if (d.size() != 6)
+        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
+                                  std::to_string(d.size()));
+    return SetupResult::success();
+}
+
 } // namespace
 
 FourActuators3d::FourActuators3d(const FourActuators3dParams& p) : m_p(p) {
@@ -160,9 +167,8 @@ bool FourActuators3d::jacobianInternal(const Eigen::Vector4d& x, Eigen::Matrix4d
 }
 
 SetupResult FourActuators3d::strokes(const Eigen::VectorXd& d, Eigen::VectorXd& s) const {
-    if (d.size() != 6)
-        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
-                                  std::to_string(d.size()));
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
     Eigen::Vector4d s4;
     if (!strokesInternal(internal(d), s4))
         return SetupResult::fault(
@@ -172,9 +178,8 @@ SetupResult FourActuators3d::strokes(const Eigen::VectorXd& d, Eigen::VectorXd& 
 }
 
 SetupResult FourActuators3d::jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const {
-    if (d.size() != 6)
-        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
-                                  std::to_string(d.size()));
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
     Eigen::Matrix4d Ji;
     if (!jacobianInternal(internal(d), Ji))
         return SetupResult::fault("FourActuators3d: an actuator has zero length at the motion");
@@ -248,18 +253,16 @@ void FourActuators3d::rodInternal(const Vec5& x, Eigen::Vector2d& len,
 }
 
 SetupResult FourActuators3d::rodLengths(const Eigen::VectorXd& d, Eigen::Vector2d& lengths) const {
-    if (d.size() != 6)
-        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
-                                  std::to_string(d.size()));
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
     Eigen::Matrix<double, 2, 5> G;
     rodInternal(m_T5 * d, lengths, G);
     return SetupResult::success();
 }
 
 SetupResult FourActuators3d::rodJacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& Jrod) const {
-    if (d.size() != 6)
-        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
-                                  std::to_string(d.size()));
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
     Eigen::Vector2d len;
     Eigen::Matrix<double, 2, 5> G;
     rodInternal(m_T5 * d, len, G);

@@ -301,24 +301,21 @@ private slots:
 
         // In a configuration: the link2d element's setup field, with the 3-DOF check.
         std::ifstream in(kPreset);
-        json doc = json::parse(in);
-        doc["structure"]["elements"][0]["setup"] = {
-            {"type", "NoTransformation"}, {"dir", {1, 2}}, {"sizeTrial", 2}};
-        try {
-            parseConfig(doc, "frame.json");
-            QFAIL("accepted a 2-DOF setup");
-        } catch (const std::exception& x) {
-            e = x.what();
-        }
+        const json preset = json::parse(in);
+        auto configError = [&](const json& setup) {
+            json doc = preset;
+            doc["structure"]["elements"][0]["setup"] = setup;
+            try {
+                parseConfig(doc, "frame.json");
+            } catch (const std::exception& x) {
+                return QString(x.what());
+            }
+            return QString("accepted");
+        };
+        e = configError({{"type", "NoTransformation"}, {"dir", {1, 2}}, {"sizeTrial", 2}});
         QVERIFY2(e.contains("setup.type") && e.contains("NoTransformation serves 2 basic DOFs"),
                  qPrintable(e));
-        doc["structure"]["elements"][0]["setup"] = four; // six basic DOFs on a 3-DOF link2d
-        try {
-            parseConfig(doc, "frame.json");
-            QFAIL("accepted a 6-DOF setup on a link2d");
-        } catch (const std::exception& x) {
-            e = x.what();
-        }
+        e = configError(four); // six basic DOFs on a 3-DOF link2d
         QVERIFY2(e.contains("setup.type") && e.contains("FourActuators3d serves 6 basic DOFs"),
                  qPrintable(e));
     }
