@@ -6,15 +6,17 @@
 // rods' load cells (given per step) and four elastic actuators k_i s_i. OpenSees drives a
 // zero-length 3-D `expElement twoNodeLink` (-dir 1..6) through a basic-displacement history
 // (lateral to 0.12 m, rotations to 0.25 rad), one static step per row, and records the
-// element's ctrlDisp and daqForce and the control's ctrlDisp. Checked (docs/setups.md):
+// element's ctrlDisp and daqForce and the control's ctrlDisp and daqForce. Checked
+// (docs/setups.md, "Checked against OpenFresco" and "Differences" items 8-9):
 // - strokes: HSMU's exact strokes(d) against OpenFresco's commands to 1e-10 of the peak, with and
-//   without -nlGeom (OpenFresco has no linear version: item 8);
-// - the actuators' share of the basic forces (rods unloaded) to 1e-10 of the peak in the shears
-//   and the axial and twist entries; the moments differ by OpenFresco's moment-arm term (item
-//   9d), measured and bounded here;
+//   without -nlGeom (OpenFresco has no linear version);
+// - the actuators' share of the basic forces (rods unloaded): the shears, axial and twist
+//   entries to 1e-10 of the peak; OpenFresco's moments against its own form (moments about the
+//   axes of actuators 3 and 4, arms shifted by the translation) computed here from the deformed
+//   geometry, to 1e-10; HSMU's moments are J^T f (test_experimental_setups) and differ, measured;
 // - the rods' share (a second run with the rods loaded, minus the first): OpenFresco reports no
-//   axial force (item 9a, exactly 0); the x-z shear agrees with HSMU's exact one to second order
-//   (item 9b); the y-z entries follow OpenFresco's other idealization (item 9c), measured.
+//   axial force (exactly 0) and its lateral entries equal its small-angle forms to 1e-10;
+//   HSMU's rods are checked against the exact statics in test_experimental_setup_rods.
 
 #include "OpenFrescoSetupRun.h"
 #include "SetupCatalog.h"
