@@ -84,9 +84,9 @@ FourActuators3d::FourActuators3d(const FourActuators3dParams& p) : m_p(p) {
 std::unique_ptr<FourActuators3d> FourActuators3d::create(const FourActuators3dParams& p,
                                                          std::string& error) {
     const std::string type = "FourActuators3d";
-    const std::pair<const char*, double> lengths[] = {
-        {"L1", p.L1}, {"L2", p.L2}, {"L3", p.L3}, {"L4", p.L4}, {"LrodN", p.LrodN},
-        {"LrodS", p.LrodS}};
+    const std::pair<const char*, double> lengths[] = {{"L1", p.L1},       {"L2", p.L2},
+                                                      {"L3", p.L3},       {"L4", p.L4},
+                                                      {"LrodN", p.LrodN}, {"LrodS", p.LrodS}};
     for (const auto& [name, v] : lengths)
         if (!(std::isfinite(v) && v > 0.0)) {
             std::ostringstream os;
@@ -98,9 +98,9 @@ std::unique_ptr<FourActuators3d> FourActuators3d::create(const FourActuators3dPa
             return nullptr;
         }
     const std::pair<const char*, double> others[] = {
-        {"a1", p.a1}, {"a2", p.a2}, {"a3", p.a3}, {"a4", p.a4}, {"h", p.h},
-        {"h1", p.h1}, {"h2", p.h2}, {"arlN", p.arlN}, {"arlS", p.arlS}, {"Hbeam", p.Hbeam},
-        {"phiLocX", p.phiLocX}};
+        {"a1", p.a1},     {"a2", p.a2},       {"a3", p.a3},          {"a4", p.a4},
+        {"h", p.h},       {"h1", p.h1},       {"h2", p.h2},          {"arlN", p.arlN},
+        {"arlS", p.arlS}, {"Hbeam", p.Hbeam}, {"phiLocX", p.phiLocX}};
     for (const auto& [name, v] : others)
         if (!std::isfinite(v)) {
             error = type + ": " + name + " must be finite";

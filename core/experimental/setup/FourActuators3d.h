@@ -46,9 +46,9 @@ struct FourActuators3dParams {
     double L1 = 0, L2 = 0, L3 = 0, L4 = 0; ///< actuator lengths at rest [m]
     double a1 = 0, a2 = 0, a3 = 0, a4 = 0; ///< attachment offsets from the column axis [m]
     double h = 0;                          ///< height of the upper actuator level [m]
-    double h1 = 0;                 ///< height of the rods' top pins above the lower level [m]
+    double h1 = 0; ///< height of the rods' top pins above the lower level [m]
     double h2 = 0, arlN = 0, arlS = 0, Hbeam = 0; ///< OpenFresco's, unused here [m]
-    double LrodN = 0, LrodS = 0;   ///< the rods' pin-to-pin lengths [m]
+    double LrodN = 0, LrodS = 0;                  ///< the rods' pin-to-pin lengths [m]
     SetupGeometry geometry = SetupGeometry::Linear;
     double phiLocX = 0.0; ///< [deg]
 };
@@ -93,7 +93,7 @@ private:
     FourActuators3dParams m_p;
     std::array<Eigen::Vector3d, 4> m_attach, m_base;
     std::array<double, 4> m_La;
-    Mat4x6 m_T; // internal (ux, uy, phix, phiy) = T d
+    Mat4x6 m_T;                       // internal (ux, uy, phix, phiy) = T d
     Eigen::Matrix<double, 5, 6> m_T5; // rods' internal (ux, uy, uz, phix, phiy) = T5 d
 };
 

@@ -284,10 +284,11 @@ private slots:
         QVERIFY2(e.contains("setup.setups[0].L: TwoActuators2d: L = 0"), qPrintable(e));
 
         // FourActuators3d's axial-load rods: a rod of zero length, named
-        const json four{{"type", "FourActuators3d"}, {"L1", 1.5}, {"L2", 1.5}, {"L3", 1.4},
-                        {"L4", 1.4}, {"a1", 0.1}, {"a2", 0.1}, {"a3", 0.12}, {"a4", 0.12},
-                        {"h", 0.8}, {"h1", 0.3}, {"h2", 0.3}, {"arlN", 0.2}, {"arlS", 0.2},
-                        {"LrodN", 1.0}, {"LrodS", 1.0}, {"Hbeam", 0.4}};
+        json four;
+        for (const Case& c : cases())
+            if (std::string(c.name) == "FourActuators3d")
+                four = c.block; // the rods 1 m long
+        QVERIFY(!four.is_null());
         b = four;
         b["LrodN"] = 0.0;
         e = errorOf(b);

@@ -20,14 +20,13 @@
 
 #include "OpenFrescoSetupRun.h"
 #include "SetupCatalog.h"
-#include "core/experimental/setup/SetupScript.h"
 #include "comms/openfresco/OfSocket.h"
+#include "core/experimental/setup/SetupScript.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <thread>
@@ -84,8 +83,8 @@ void serve(comms::of::OfListener& listener, bool rodsLoaded, Lab& lab) {
         return;
     }
     if (hdr[0] != 4 || hdr[8] != 6) {
-        lab.error = "sizes: ctrl disp " + std::to_string(hdr[0]) + ", daq force " +
-                    std::to_string(hdr[8]);
+        lab.error =
+            "sizes: ctrl disp " + std::to_string(hdr[0]) + ", daq force " + std::to_string(hdr[8]);
         return;
     }
     const int n = hdr[10];
@@ -168,8 +167,7 @@ Run runOpenFresco(const QString& dir, bool nlGeom, bool rodsLoaded) {
     out.strokes = ofsetup::recorded(dir, "act_cmd.out", n, true);
     out.forces = ofsetup::recorded(dir, "act_force.out", n, true);
     out.ran = r.finished && r.output.contains("FOUR_RUN_DONE") && lab.error.empty();
-    for (const Table* t : {&out.trial, &out.daqDisp, &out.daqForce, &out.strokes,
-                                   &out.forces})
+    for (const Table* t : {&out.trial, &out.daqDisp, &out.daqForce, &out.strokes, &out.forces})
         out.ran = out.ran && static_cast<int>(t->size()) == n;
     return out;
 }
@@ -221,6 +219,39 @@ Eigen::Vector2d openFrescoActuatorMoments(const Eigen::VectorXd& d, const Eigen:
     return {-(M.y() + p.ux * Fz), -(M.x() - p.uy * Fz)};
 }
 
+// HSMU's moments by exact statics: all four actuators' moment M about the control point at the
+// deformed position, made conjugate to the rotation vector: q_w = J_r(w)^T R(w)^T M, with
+// J_r's columns from central differences of R (vee of R^T dR), independent of HSMU's code.
+Eigen::Vector2d exactMoments(const Eigen::VectorXd& d, const Eigen::VectorXd& f6) {
+    const Pose p = poseOf(d);
+    const double a[4] = {0.3, 0.35, 0.25, 0.4}, L[4] = {1.2, 1.3, 1.1, 1.4}, h = 0.8;
+    Eigen::Vector3d M = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 4; ++i) {
+        const bool x = i % 2 == 0;
+        const Eigen::Vector3d att(x ? -a[i] : 0, x ? 0 : -a[i], i < 2 ? 0 : h);
+        const Eigen::Vector3d base =
+            att - L[i] * (x ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY());
+        const Eigen::Vector3d Ra = p.R * att;
+        M += Ra.cross(f6(2 + i) * (Eigen::Vector3d(p.ux, p.uy, 0) + Ra - base).normalized());
+    }
+    auto rot = [](const Eigen::Vector3d& w) -> Eigen::Matrix3d {
+        return w.norm() > 0 ? Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix()
+                            : Eigen::Matrix3d::Identity();
+    };
+    const Eigen::Vector3d w(p.phix, p.phiy, 0.0);
+    Eigen::Matrix<double, 3, 2> Jr;
+    for (int k = 0; k < 2; ++k) {
+        const double e = 1e-6;
+        const Eigen::Matrix3d dR =
+            p.R.transpose() *
+            (rot(w + e * Eigen::Vector3d::Unit(k)) - rot(w - e * Eigen::Vector3d::Unit(k))) /
+            (2 * e);
+        Jr.col(k) << dR(2, 1), dR(0, 2), dR(1, 0);
+    }
+    const Eigen::Vector2d qw = Jr.transpose() * p.R.transpose() * M; // (phix, phiy)
+    return {-qw(1), -qw(0)};                                         // q(2), q(4)
+}
+
 } // namespace
 
 class TestFourActuatorsOpenFresco : public QObject {
@@ -252,7 +283,7 @@ void TestFourActuatorsOpenFresco::againstOpenFresco() {
     double sPeak = 0, sErr = 0, linErr = 0;
     Eigen::VectorXd qPeak = Eigen::VectorXd::Zero(6), actErr = Eigen::VectorXd::Zero(6);
     Eigen::VectorXd rodPeak = Eigen::VectorXd::Zero(6), rodErr = Eigen::VectorXd::Zero(6);
-    double momentModelErr = 0, rodModelErr = 0;
+    double momentModelErr = 0, rodModelErr = 0, exactMomentErr = 0;
     for (int k = 0; k < n; ++k) {
         const Eigen::VectorXd d = row(a.trial, k);
         QVERIFY((row(b.trial, k) - d).cwiseAbs().maxCoeff() == 0.0);
@@ -275,8 +306,11 @@ void TestFourActuatorsOpenFresco::againstOpenFresco() {
         qPeak = qPeak.cwiseMax(qh.cwiseAbs());
         actErr = actErr.cwiseMax((qh - qo).cwiseAbs());
         const Eigen::Vector2d mo = openFrescoActuatorMoments(d, fA);
-        momentModelErr = std::max(momentModelErr, std::max(std::abs(mo(0) - qo(2)),
-                                                           std::abs(mo(1) - qo(4))));
+        const Eigen::Vector2d me = exactMoments(d, fA);
+        exactMomentErr =
+            std::max(exactMomentErr, std::max(std::abs(me(0) - qh(2)), std::abs(me(1) - qh(4))));
+        momentModelErr =
+            std::max(momentModelErr, std::max(std::abs(mo(0) - qo(2)), std::abs(mo(1) - qo(4))));
         // the rods' share: run B minus run A on each side (the same strokes and actuator forces)
         QVERIFY((fB.tail<4>() - fA.tail<4>()).cwiseAbs().maxCoeff() == 0.0);
         Eigen::VectorXd qhB;
@@ -291,8 +325,8 @@ void TestFourActuatorsOpenFresco::againstOpenFresco() {
         const double uxPin = p.ux + (p.R * Eigen::Vector3d(0, 0, 0.45)).x();
         const double rodX = (fB(0) / 1.6 + fB(1) / 1.9) * uxPin * std::cos(p.phix);
         const double rodY = (fB(0) + fB(1)) * std::sin(p.phix);
-        rodModelErr = std::max(rodModelErr, std::max(std::abs(rodO(1) - (-rodX)),
-                                                     std::abs(rodO(3) - rodY)));
+        rodModelErr =
+            std::max(rodModelErr, std::max(std::abs(rodO(1) - (-rodX)), std::abs(rodO(3) - rodY)));
     }
     qInfo("strokes: worst %.3g m of a %.3g m peak; without -nlGeom %.3g m", sErr, sPeak, linErr);
     QVERIFY2(sErr <= 1e-10 * sPeak, "strokes differ from OpenFresco's");
@@ -308,6 +342,8 @@ void TestFourActuatorsOpenFresco::againstOpenFresco() {
     for (int j : {0, 1, 3, 5})
         QVERIFY2(actErr(j) <= 1e-10 * qPeak.maxCoeff(),
                  qPrintable(QString("actuators' share, DOF %1: %2").arg(j).arg(actErr(j))));
+    qInfo("HSMU's moments against the exact statics (J_r^T R^T M): %.3g", exactMomentErr);
+    QVERIFY2(exactMomentErr <= 1e-8 * qPeak.maxCoeff(), "HSMU's moments: not the exact statics");
     // moments: OpenFresco's equal its departure (item 9d) to 1e-10 of the peak
     QVERIFY2(momentModelErr <= 1e-10 * qPeak.maxCoeff(), "OpenFresco's moments: another form");
     // rods: OpenFresco's lateral forces equal its small-angle forms (items 9b, 9c)

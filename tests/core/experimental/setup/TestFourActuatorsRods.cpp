@@ -15,8 +15,8 @@ using namespace hsmu;
 
 namespace {
 
-constexpr double kH1 = 0.45;                          // SetupCatalog's four(): rods' top pins
-constexpr std::array<double, 2> kLrod = {1.6, 1.9};   // north, south
+constexpr double kH1 = 0.45;                        // SetupCatalog's four(): rods' top pins
+constexpr std::array<double, 2> kLrod = {1.6, 1.9}; // north, south
 
 std::unique_ptr<FourActuators3d> make(SetupGeometry g, double phi = 0.0) {
     std::string e;
@@ -27,8 +27,7 @@ std::unique_ptr<FourActuators3d> make(SetupGeometry g, double phi = 0.0) {
 }
 
 // q of the rods alone: basicForces with OpenFresco's six daq forces minus the actuators' share
-Eigen::VectorXd rodShare(const FourActuators3d& s, const Eigen::VectorXd& d, double fN,
-                         double fS) {
+Eigen::VectorXd rodShare(const FourActuators3d& s, const Eigen::VectorXd& d, double fN, double fS) {
     Eigen::VectorXd f6(6), f4(4), q6, q4;
     f4 << 310.0, -120.0, 95.0, 40.0; // any actuator forces: their share cancels
     f6 << fN, fS, f4;
@@ -60,15 +59,16 @@ private slots:
 
 void TestFourActuatorsRods::atRestTheRodsCarryTheAxialLoadOnly() {
     for (SetupGeometry g : {SetupGeometry::Linear, SetupGeometry::Exact}) {
-        const Eigen::VectorXd q = rodShare(*make(g, 25.0), Eigen::VectorXd::Zero(6), -400.0, -350.0);
+        const Eigen::VectorXd q =
+            rodShare(*make(g, 25.0), Eigen::VectorXd::Zero(6), -400.0, -350.0);
         Eigen::VectorXd expected = Eigen::VectorXd::Zero(6);
         expected(0) = -750.0; // both rods in tension pull the platform down: axial load
         QVERIFY2((q - expected).cwiseAbs().maxCoeff() == 0.0, "rods at rest: axial load only");
     }
 }
 
-// eq. S8's length l_k = Lrod_k + uz - h1 |phi|^2 / 2 + (ex^2 + ey^2) / (2 Lrod_k), ex = ux + h1 phiy,
-// ey = uy - h1 phix; its gradient times f_k (eq. S9) written out here, in the element's DOFs
+// eq. S8's length l_k = Lrod_k + uz - h1 |phi|^2 / 2 + (ex^2 + ey^2) / (2 Lrod_k), ex = ux + h1
+// phiy, ey = uy - h1 phix; its gradient times f_k (eq. S9) written out here, in the element's DOFs
 void TestFourActuatorsRods::linearMatchesTheSecondOrderClosedForm() {
     const double fN = -420.0, fS = -380.0;
     for (double phi : {0.0, 25.0}) {
@@ -124,9 +124,11 @@ void TestFourActuatorsRods::exactMatchesTheStaticsInTheXzPlane() {
             Eigen::VectorXd expected(6);
             expected << F.z(), -F.x(), -M.y(), -F.y(), -M.x(), 0.0;
             const Eigen::VectorXd q = rodShare(*s, basicOf(ux, 0.0, uz, 0.0, phi), fN, fS);
-            const double err = (q - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
+            const double err =
+                (q - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
             worst = std::max(worst, err);
-            QVERIFY2(err <= 1e-12, qPrintable(QString("ux %1 phiy %2: %3").arg(ux).arg(phi).arg(err)));
+            QVERIFY2(err <= 1e-12,
+                     qPrintable(QString("ux %1 phiy %2: %3").arg(ux).arg(phi).arg(err)));
             // the P-Delta of the inclined rods: in tension they pull the pin back toward the
             // anchors' line (q_ux of the sign of the pin's x)
             QVERIFY(F.x() * (ux + Rp.x()) < 0.0);
@@ -154,9 +156,11 @@ void TestFourActuatorsRods::exactMatchesTheStaticsInTheYzPlane() {
             Eigen::VectorXd expected(6);
             expected << F.z(), -F.x(), -M.y(), -F.y(), -M.x(), 0.0;
             const Eigen::VectorXd q = rodShare(*s, basicOf(0.0, uy, uz, phi, 0.0), fN, fS);
-            const double err = (q - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
+            const double err =
+                (q - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
             worst = std::max(worst, err);
-            QVERIFY2(err <= 1e-12, qPrintable(QString("uy %1 phix %2: %3").arg(uy).arg(phi).arg(err)));
+            QVERIFY2(err <= 1e-12,
+                     qPrintable(QString("uy %1 phix %2: %3").arg(uy).arg(phi).arg(err)));
         }
     qInfo("y-z plane: worst relative difference %.2e", worst);
 }

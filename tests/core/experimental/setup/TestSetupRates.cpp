@@ -100,7 +100,7 @@ void TestSetupRates::planarClosedFormMatchesTheGenericJdot() {
                                         (sa - ga).cwiseAbs().maxCoeff() / sa.cwiseAbs().maxCoeff());
             worst = std::max(worst, err);
             QVERIFY2(err <= 1e-8, qPrintable(QString::fromStdString(c.label) +
-                                            QString(" t %1: %2").arg(t).arg(err)));
+                                             QString(" t %1: %2").arg(t).arg(err)));
         }
     }
     qInfo("planar closed form against the generic Jdot v: worst %.2e", worst);

@@ -63,7 +63,8 @@ void TestSetupScript::linesBuildTheFactoriesSetups() {
         "expSetup InvertedVBrace2d 4 1.6 1.1 1.3 0.7 0.5 -posAct1 right\n"
         "expSetup ChevronBrace2d 5 1.6 1.1 1.3 0.7 0.5 -posAct1 right\n"
         "expSetup InvertedVBraceJntOff2d 6 1.6 1.1 1.3 0.2 0.7 0.5 0.25 0.3 0.35 -nlGeom\n"
-        "expSetup FourActuators3d 7 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0.45 0 0 0 1.6 1.9 0 -nlGeom "
+        "expSetup FourActuators3d 7 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0.45 0 0 0 1.6 1.9 0 "
+        "-nlGeom "
         "-phiLocX 25\n"
         "expSetup OneActuator 8 -control 2 2 -sizeTrialOut 3 3\n"
         "expSetup NoTransformation 9 -dir 3 1 -sizeTrialOut 3 3\n";
@@ -120,8 +121,9 @@ void TestSetupScript::everyUnknownWordIsRefused() {
     // FourActuators3d's axial-load rods: a rod of zero length is refused naming it
     e = parseError("expSetup FourActuators3d 3 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0.45 0 0 0 "
                    "1.6 0 0 -nlGeom\n");
-    QVERIFY2(refused(e, "line 1: FourActuators3d", "LrodS = 0 must be a positive finite length "
-                                                   "(an axial-load rod's pin-to-pin length)"),
+    QVERIFY2(refused(e, "line 1: FourActuators3d",
+                     "LrodS = 0 must be a positive finite length "
+                     "(an axial-load rod's pin-to-pin length)"),
              qPrintable(e));
     e = parseError("expSetup FourActuators3d 3 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0.45 0 0 0 "
                    "1.6\n");
