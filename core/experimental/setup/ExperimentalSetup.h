@@ -54,6 +54,18 @@ public:
     /// q = J(d)^T f (n) (eq. S3). Setups may override it with a faster form of the same.
     virtual SetupResult basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
                                     Eigen::VectorXd& q) const;
+    /// Load cells the setup reads besides the actuators (OpenFresco's extra daq forces, e.g.
+    /// FourActuators3d's two axial-load rods); basicForces then also takes m + this many forces.
+    virtual int loadCellCount() const { return 0; }
+
+    /// Trial rates (eq. S5): basic velocities v and accelerations a (n) at d -> actuator
+    /// velocities sv = J(d) v [m/s] and accelerations sa = J(d) a + Jdot(d, v) v [m/s^2].
+    /// Here Jdot v = (J(d + h v) - J(d - h v)) v / (2 h) with h |v|_inf = 1e-5 (m or rad): exact
+    /// for the linear formulations (J constant), O(1e-10) relative otherwise; the planar family
+    /// overrides it with the closed form.
+    virtual SetupResult actuatorRates(const Eigen::VectorXd& d, const Eigen::VectorXd& v,
+                                      const Eigen::VectorXd& a, Eigen::VectorXd& sv,
+                                      Eigen::VectorXd& sa) const;
 };
 
 } // namespace hsmu

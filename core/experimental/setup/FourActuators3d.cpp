@@ -1,5 +1,6 @@
 #include "core/experimental/setup/FourActuators3d.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -44,6 +45,13 @@ Eigen::Matrix3d rightJacobian(const Eigen::Vector3d& w) {
 
 constexpr double kRankTolerance = 1e-9;
 
+SetupResult sixBasic(const Eigen::VectorXd& d) {
+    if (d.size() != 6)
+        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
+                                  std::to_string(d.size()));
+    return SetupResult::success();
+}
+
 } // namespace
 
 FourActuators3d::FourActuators3d(const FourActuators3dParams& p) : m_p(p) {
@@ -64,23 +72,35 @@ FourActuators3d::FourActuators3d(const FourActuators3dParams& p) : m_p(p) {
     turn.block<2, 2>(0, 0) << c, s, -s, c;
     turn.block<2, 2>(2, 2) << c, s, -s, c;
     m_T = turn * select;
+    // rods: (ux, uy) and (phix, phiy) as the actuators', uz = d(0) (the axial DOF)
+    m_T5.setZero();
+    m_T5.row(0) = m_T.row(0);
+    m_T5.row(1) = m_T.row(1);
+    m_T5(2, 0) = 1.0;
+    m_T5.row(3) = m_T.row(2);
+    m_T5.row(4) = m_T.row(3);
 }
 
 std::unique_ptr<FourActuators3d> FourActuators3d::create(const FourActuators3dParams& p,
                                                          std::string& error) {
     const std::string type = "FourActuators3d";
-    const std::pair<const char*, double> lengths[] = {
-        {"L1", p.L1}, {"L2", p.L2}, {"L3", p.L3}, {"L4", p.L4}};
+    const std::pair<const char*, double> lengths[] = {{"L1", p.L1},       {"L2", p.L2},
+                                                      {"L3", p.L3},       {"L4", p.L4},
+                                                      {"LrodN", p.LrodN}, {"LrodS", p.LrodS}};
     for (const auto& [name, v] : lengths)
         if (!(std::isfinite(v) && v > 0.0)) {
             std::ostringstream os;
-            os << type << ": " << name << " = " << v
-               << " must be a positive finite length (an actuator's length at rest)";
+            os << type << ": " << name << " = " << v << " must be a positive finite length ("
+               << (name[1] == 'r' ? "an axial-load rod's pin-to-pin length"
+                                  : "an actuator's length at rest")
+               << ")";
             error = os.str();
             return nullptr;
         }
     const std::pair<const char*, double> others[] = {
-        {"a1", p.a1}, {"a2", p.a2}, {"a3", p.a3}, {"a4", p.a4}, {"h", p.h}, {"phiLocX", p.phiLocX}};
+        {"a1", p.a1},     {"a2", p.a2},       {"a3", p.a3},          {"a4", p.a4},
+        {"h", p.h},       {"h1", p.h1},       {"h2", p.h2},          {"arlN", p.arlN},
+        {"arlS", p.arlS}, {"Hbeam", p.Hbeam}, {"phiLocX", p.phiLocX}};
     for (const auto& [name, v] : others)
         if (!std::isfinite(v)) {
             error = type + ": " + name + " must be finite";
@@ -147,9 +167,8 @@ bool FourActuators3d::jacobianInternal(const Eigen::Vector4d& x, Eigen::Matrix4d
 }
 
 SetupResult FourActuators3d::strokes(const Eigen::VectorXd& d, Eigen::VectorXd& s) const {
-    if (d.size() != 6)
-        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
-                                  std::to_string(d.size()));
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
     Eigen::Vector4d s4;
     if (!strokesInternal(internal(d), s4))
         return SetupResult::fault(
@@ -159,9 +178,8 @@ SetupResult FourActuators3d::strokes(const Eigen::VectorXd& d, Eigen::VectorXd& 
 }
 
 SetupResult FourActuators3d::jacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& J) const {
-    if (d.size() != 6)
-        return SetupResult::fault("FourActuators3d: 6 basic displacements wanted, got " +
-                                  std::to_string(d.size()));
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
     Eigen::Matrix4d Ji;
     if (!jacobianInternal(internal(d), Ji))
         return SetupResult::fault("FourActuators3d: an actuator has zero length at the motion");
@@ -202,6 +220,78 @@ SetupResult FourActuators3d::basicDisplacements(const Eigen::VectorXd& s,
     d = given;
     const Eigen::Vector4d dx = x - internal(given);
     d += m_T.transpose() * dx;
+    return SetupResult::success();
+}
+
+void FourActuators3d::rodInternal(const Vec5& x, Eigen::Vector2d& len,
+                                  Eigen::Matrix<double, 2, 5>& G) const {
+    const double h1 = m_p.h1;
+    const double Lrod[2] = {m_p.LrodN, m_p.LrodS};
+    if (m_p.geometry == SetupGeometry::Linear) {
+        // eq. S8: l = Lrod + uz - h1 |phi|^2 / 2 + ((ux + h1 phiy)^2 + (uy - h1 phix)^2) / (2 Lrod)
+        const double ex = x(0) + h1 * x(4), ey = x(1) - h1 * x(3);
+        for (int k = 0; k < 2; ++k) {
+            len(k) = Lrod[k] + x(2) - 0.5 * h1 * (x(3) * x(3) + x(4) * x(4)) +
+                     (ex * ex + ey * ey) / (2.0 * Lrod[k]);
+            G.row(k) << ex / Lrod[k], ey / Lrod[k], 1.0, -h1 * ey / Lrod[k] - h1 * x(3),
+                h1 * ex / Lrod[k] - h1 * x(4);
+        }
+        return;
+    }
+    // eq. S6: l = |(ux, uy, uz) + R(phi) p - b|, p = (0, 0, h1), b = (0, 0, h1 - Lrod)
+    const Eigen::Vector3d w(x(3), x(4), 0.0);
+    const Eigen::Vector3d pin(0.0, 0.0, h1);
+    const Eigen::Matrix3d R = rotation(w);
+    const Eigen::Matrix3d dRp = -R * skew(pin) * rightJacobian(w); // d(R p)/dw
+    const Eigen::Vector3d top = Eigen::Vector3d(x(0), x(1), x(2)) + R * pin;
+    for (int k = 0; k < 2; ++k) {
+        const Eigen::Vector3d r = top - Eigen::Vector3d(0.0, 0.0, h1 - Lrod[k]);
+        len(k) = r.norm();
+        const Eigen::Vector3d n = r / len(k);
+        G.row(k) << n.x(), n.y(), n.z(), n.dot(dRp.col(0)), n.dot(dRp.col(1));
+    }
+}
+
+SetupResult FourActuators3d::rodLengths(const Eigen::VectorXd& d, Eigen::Vector2d& lengths) const {
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
+    Eigen::Matrix<double, 2, 5> G;
+    rodInternal(m_T5 * d, lengths, G);
+    return SetupResult::success();
+}
+
+SetupResult FourActuators3d::rodJacobian(const Eigen::VectorXd& d, Eigen::MatrixXd& Jrod) const {
+    if (SetupResult r = sixBasic(d); !r.ok)
+        return r;
+    Eigen::Vector2d len;
+    Eigen::Matrix<double, 2, 5> G;
+    rodInternal(m_T5 * d, len, G);
+    if (!(len.minCoeff() > 1e-9 * std::min(m_p.LrodN, m_p.LrodS)))
+        return SetupResult::fault("FourActuators3d: an axial-load rod has zero length at the "
+                                  "motion");
+    Jrod = G * m_T5;
+    return SetupResult::success();
+}
+
+SetupResult FourActuators3d::basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
+                                         Eigen::VectorXd& q) const {
+    if (d.size() != 6 || (f.size() != 4 && f.size() != 6))
+        return SetupResult::fault(
+            "FourActuators3d: basicForces wants 6 basic displacements and 4 actuator forces or "
+            "OpenFresco's 6 daq forces (rod N, rod S, actuators 1-4), got " +
+            std::to_string(d.size()) + " and " + std::to_string(f.size()));
+    Eigen::MatrixXd J;
+    if (SetupResult r = jacobian(d, J); !r.ok)
+        return r;
+    if (f.size() == 4) {
+        q.noalias() = J.transpose() * f;
+        return SetupResult::success();
+    }
+    q.noalias() = J.transpose() * f.tail<4>();
+    Eigen::MatrixXd Jrod;
+    if (SetupResult r = rodJacobian(d, Jrod); !r.ok)
+        return r;
+    q.noalias() += Jrod.transpose() * f.head<2>(); // eq. S7
     return SetupResult::success();
 }
 

@@ -288,4 +288,39 @@ SetupResult PlanarActuatorSetup::basicForces(const Eigen::VectorXd& d, const Eig
     return SetupResult::success();
 }
 
+SetupResult PlanarActuatorSetup::actuatorRates(const Eigen::VectorXd& d, const Eigen::VectorXd& v,
+                                               const Eigen::VectorXd& a, Eigen::VectorXd& sv,
+                                               Eigen::VectorXd& sa) const {
+    if (d.size() != 3 || v.size() != 3 || a.size() != 3)
+        return SetupResult::fault(m_typeName + ": 3 basic displacements, velocities and "
+                                               "accelerations (u, v, theta) wanted");
+    const Eigen::Vector3d dl = toSetupFrame(d), vl = toSetupFrame(v), al = toSetupFrame(a);
+    const int m = actuatorCount();
+    sv.resize(m);
+    sa.resize(m);
+    if (m_geometry == SetupGeometry::Linear) {
+        sv = m_J0 * vl;
+        sa = m_J0 * al;
+        return SetupResult::success();
+    }
+    const Pose p = pose(dl);
+    for (int i = 0; i < m; ++i) {
+        const Eigen::Vector2d at = m_actuators[i].attach;
+        const Eigen::Vector2d Ra(p.c * at.x() - p.s * at.y(), p.s * at.x() + p.c * at.y());
+        const Eigen::Vector2d dRa(-Ra.y(), Ra.x()); // R'(theta) a
+        const Eigen::Vector2d r = Eigen::Vector2d(p.u, p.v) + Ra - m_actuators[i].base;
+        const double len = r.norm();
+        if (!(len > kLengthTolerance * m_La[i]))
+            return SetupResult::fault(m_typeName + ": actuator " + std::to_string(i + 1) +
+                                      " has zero length at the commanded motion");
+        const Eigen::Vector2d n = r / len;
+        const Eigen::Vector2d rd = vl.head<2>() + dRa * vl(2);
+        const Eigen::Vector2d rdd = al.head<2>() + dRa * al(2) - Ra * (vl(2) * vl(2));
+        const double nrd = n.dot(rd);
+        sv(i) = nrd;
+        sa(i) = n.dot(rdd) + (rd.squaredNorm() - nrd * nrd) / len;
+    }
+    return SetupResult::success();
+}
+
 } // namespace hsmu

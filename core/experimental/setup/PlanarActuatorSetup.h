@@ -66,6 +66,11 @@ public:
     /// q = J(d)^T f without heap allocation (the measured path runs every step).
     SetupResult basicForces(const Eigen::VectorXd& d, const Eigen::VectorXd& f,
                             Eigen::VectorXd& q) const override;
+    /// Closed form of eq. S5: with r = (u, v) + R(theta) a - b, n = r / |r|,
+    /// sdot = n . rdot, sddot = n . rddot + (|rdot|^2 - (n . rdot)^2) / |r|; linear: J0 v, J0 a.
+    SetupResult actuatorRates(const Eigen::VectorXd& d, const Eigen::VectorXd& v,
+                              const Eigen::VectorXd& a, Eigen::VectorXd& sv,
+                              Eigen::VectorXd& sa) const override;
 
     /// "" when the controlled DOFs are fixed by the actuators at rest, else why not (used by
     /// the setups' create() after their own parameter checks).

@@ -283,18 +283,41 @@ private slots:
         e = errorOf(b);
         QVERIFY2(e.contains("setup.setups[0].L: TwoActuators2d: L = 0"), qPrintable(e));
 
+        // FourActuators3d's axial-load rods: a rod of zero length, named
+        json four;
+        for (const Case& c : cases())
+            if (std::string(c.name) == "FourActuators3d")
+                four = c.block; // the rods 1 m long
+        QVERIFY(!four.is_null());
+        b = four;
+        b["LrodN"] = 0.0;
+        e = errorOf(b);
+        QVERIFY2(e.contains("setup.LrodN: FourActuators3d: LrodN = 0 must be a positive finite "
+                            "length (an axial-load rod's pin-to-pin length)"),
+                 qPrintable(e));
+        b = four;
+        b["h1"] = "high";
+        e = errorOf(b);
+        QVERIFY2(e.contains("setup.h1") && e.contains("number"), qPrintable(e));
+
         // In a configuration: the link2d element's setup field, with the 3-DOF check.
         std::ifstream in(kPreset);
-        json doc = json::parse(in);
-        doc["structure"]["elements"][0]["setup"] = {
-            {"type", "NoTransformation"}, {"dir", {1, 2}}, {"sizeTrial", 2}};
-        try {
-            parseConfig(doc, "frame.json");
-            QFAIL("accepted a 2-DOF setup");
-        } catch (const std::exception& x) {
-            e = x.what();
-        }
+        const json preset = json::parse(in);
+        auto configError = [&](const json& setup) {
+            json doc = preset;
+            doc["structure"]["elements"][0]["setup"] = setup;
+            try {
+                parseConfig(doc, "frame.json");
+            } catch (const std::exception& x) {
+                return QString(x.what());
+            }
+            return QString("accepted");
+        };
+        e = configError({{"type", "NoTransformation"}, {"dir", {1, 2}}, {"sizeTrial", 2}});
         QVERIFY2(e.contains("setup.type") && e.contains("NoTransformation serves 2 basic DOFs"),
+                 qPrintable(e));
+        e = configError(four); // six basic DOFs on a 3-DOF link2d
+        QVERIFY2(e.contains("setup.type") && e.contains("FourActuators3d serves 6 basic DOFs"),
                  qPrintable(e));
     }
 

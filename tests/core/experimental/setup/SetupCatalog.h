@@ -71,6 +71,9 @@ inline hsmu::FourActuators3dParams four(hsmu::SetupGeometry g, double phi = 0.0)
     p.a3 = 0.25;
     p.a4 = 0.4;
     p.h = 0.8;
+    p.h1 = 0.45; // the axial-load rods: top pins 0.45 m up, 1.6 and 1.9 m long
+    p.LrodN = 1.6;
+    p.LrodS = 1.9;
     p.geometry = g;
     p.phiLocX = phi;
     return p;

@@ -63,7 +63,8 @@ void TestSetupScript::linesBuildTheFactoriesSetups() {
         "expSetup InvertedVBrace2d 4 1.6 1.1 1.3 0.7 0.5 -posAct1 right\n"
         "expSetup ChevronBrace2d 5 1.6 1.1 1.3 0.7 0.5 -posAct1 right\n"
         "expSetup InvertedVBraceJntOff2d 6 1.6 1.1 1.3 0.2 0.7 0.5 0.25 0.3 0.35 -nlGeom\n"
-        "expSetup FourActuators3d 7 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0 0 0 0 0 0 0 -nlGeom "
+        "expSetup FourActuators3d 7 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0.45 0 0 0 1.6 1.9 0 "
+        "-nlGeom "
         "-phiLocX 25\n"
         "expSetup OneActuator 8 -control 2 2 -sizeTrialOut 3 3\n"
         "expSetup NoTransformation 9 -dir 3 1 -sizeTrialOut 3 3\n";
@@ -117,6 +118,16 @@ void TestSetupScript::everyUnknownWordIsRefused() {
     QVERIFY2(refused(e, "TwoActuators2d", "La2: 'abc' is not a number"), qPrintable(e));
     e = parseError("expSetup TwoActuators2d 1 1.5 1.2 0\n");
     QVERIFY2(refused(e, "TwoActuators2d", "L = 0"), qPrintable(e));
+    // FourActuators3d's axial-load rods: a rod of zero length is refused naming it
+    e = parseError("expSetup FourActuators3d 3 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0.45 0 0 0 "
+                   "1.6 0 0 -nlGeom\n");
+    QVERIFY2(refused(e, "line 1: FourActuators3d",
+                     "LrodS = 0 must be a positive finite length "
+                     "(an axial-load rod's pin-to-pin length)"),
+             qPrintable(e));
+    e = parseError("expSetup FourActuators3d 3 1.2 1.3 1.1 1.4 0.3 0.35 0.25 0.4 0.8 0.45 0 0 0 "
+                   "1.6\n");
+    QVERIFY2(refused(e, "FourActuators3d", "LrodS missing"), qPrintable(e));
     e = parseError("expSetup FiveActuators 1 1 2 3\n");
     QVERIFY2(refused(e, "FiveActuators", "unknown experimental setup type"), qPrintable(e));
     e = parseError(three + "\n" + three + "\n");
