@@ -34,7 +34,15 @@ struct Pinch {
     double zeta1 = 0.0, zeta2 = 1.0, qzu = 0.0;
 };
 
-Pinch pinchAt(const BoucWenPinchingParameters& p, double e) {
+// The last (A / (nu (beta + gamma)))^(1/n) of an integration (P4): without nu or A degrading
+// (deltaNu = deltaA = 0, as the calibration's optima often are) every sub-step has the same
+// ratio, and the std::pow is taken once per increment instead of once per sub-step.
+struct RootCache {
+    double ratio = std::numeric_limits<double>::quiet_NaN();
+    double root = 0.0;
+};
+
+Pinch pinchAt(const BoucWenPinchingParameters& p, double e, RootCache* cache = nullptr) {
     const PinchingParameters& c = p.pinching;
     Pinch pinch;
     if (c.zetaS == 0.0 || c.p == 0.0 || !(e > 0.0)) {
@@ -44,7 +52,17 @@ Pinch pinchAt(const BoucWenPinchingParameters& p, double e) {
     pinch.zeta2 = (c.psi + c.deltaPsi * e) * (c.lambda + pinch.zeta1);
     const Degradation d = degradationAt(p.boucWen, e);
     const double ratio = d.a / (d.nu * (p.boucWen.beta + p.boucWen.gamma));
-    pinch.qzu = ratio > 0.0 ? c.q * std::pow(ratio, 1.0 / p.boucWen.n) : 0.0;
+    if (!(ratio > 0.0)) {
+        pinch.qzu = 0.0;
+    } else if (cache && ratio == cache->ratio) {
+        pinch.qzu = c.q * cache->root;
+    } else {
+        const double root = std::pow(ratio, 1.0 / p.boucWen.n);
+        if (cache) {
+            *cache = {ratio, root};
+        }
+        pinch.qzu = c.q * root;
+    }
     return pinch;
 }
 
@@ -114,9 +132,10 @@ struct AtState {
     double absZn = 0.0, rate = 0.0, stiffness = 0.0;
 };
 
-AtState atState(const BoucWenPinchingParameters& p, const BoucWenState& state, double dx) {
+AtState atState(const BoucWenPinchingParameters& p, const BoucWenState& state, double dx,
+                RootCache& cache) {
     AtState q;
-    q.pinch = pinchAt(p, state.e);
+    q.pinch = pinchAt(p, state.e, &cache);
     if (q.pinch.zeta1 > 0.0) {
         q.d = degradationAt(p.boucWen, state.e);
         const double psi = p.boucWen.gamma + p.boucWen.beta * signOf(dx * state.z);
@@ -134,9 +153,9 @@ AtState atState(const BoucWenPinchingParameters& p, const BoucWenState& state, d
 // step (halved by the same rules, withinUnloadingStep included); with zeta1 > 0 it is also
 // halved while |dx| A / eta > zeta2. `known`: atState() at this state, when the caller has it.
 bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, double dx,
-                    int levelsLeft, StepLimits& limits, int& subSteps,
+                    int levelsLeft, StepLimits& limits, RootCache& cache, int& subSteps,
                     const AtState* known = nullptr) {
-    const AtState q = known ? *known : atState(p, state, dx);
+    const AtState q = known ? *known : atState(p, state, dx, cache);
     const Pinch& pinch = q.pinch;
     bool withinPinchStep = true;
     if (pinch.zeta1 > 0.0) {
@@ -182,8 +201,8 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
     }
     // The first half starts from this (unchanged) state: it reuses q.
     const double half = 0.5 * dx;
-    return integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps, &q) &&
-           integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps);
+    return integrateSplit(p, state, half, levelsLeft - 1, limits, cache, subSteps, &q) &&
+           integrateSplit(p, state, half, levelsLeft - 1, limits, cache, subSteps);
 }
 
 BoucWenIncrement integrateAdmissible(const BoucWenPinchingParameters& p, const BoucWenState& from,
@@ -194,7 +213,8 @@ BoucWenIncrement integrateAdmissible(const BoucWenPinchingParameters& p, const B
     StepLimits limits(p.boucWen, from);
     BoucWenState end = from;
     int subSteps = 0;
-    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, subSteps)) {
+    RootCache cache;
+    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, cache, subSteps)) {
         return {LawStatus::NoConvergence, from, 0.0, 0};
     }
     return {LawStatus::Ok, end, 0.0, subSteps};
