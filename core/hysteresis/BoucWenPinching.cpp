@@ -34,7 +34,15 @@ struct Pinch {
     double zeta1 = 0.0, zeta2 = 1.0, qzu = 0.0;
 };
 
-Pinch pinchAt(const BoucWenPinchingParameters& p, double e) {
+// The last (A / (nu (beta + gamma)))^(1/n) of an integration (P4): without nu or A degrading
+// (deltaNu = deltaA = 0, as the calibration's optima often are) every sub-step has the same
+// ratio, and the std::pow is taken once per increment instead of once per sub-step.
+struct RootCache {
+    double ratio = std::numeric_limits<double>::quiet_NaN();
+    double root = 0.0;
+};
+
+Pinch pinchAt(const BoucWenPinchingParameters& p, double e, RootCache* cache = nullptr) {
     const PinchingParameters& c = p.pinching;
     Pinch pinch;
     if (c.zetaS == 0.0 || c.p == 0.0 || !(e > 0.0)) {
@@ -44,7 +52,17 @@ Pinch pinchAt(const BoucWenPinchingParameters& p, double e) {
     pinch.zeta2 = (c.psi + c.deltaPsi * e) * (c.lambda + pinch.zeta1);
     const Degradation d = degradationAt(p.boucWen, e);
     const double ratio = d.a / (d.nu * (p.boucWen.beta + p.boucWen.gamma));
-    pinch.qzu = ratio > 0.0 ? c.q * std::pow(ratio, 1.0 / p.boucWen.n) : 0.0;
+    if (!(ratio > 0.0)) {
+        pinch.qzu = 0.0;
+    } else if (cache && ratio == cache->ratio) {
+        pinch.qzu = c.q * cache->root;
+    } else {
+        const double root = std::pow(ratio, 1.0 / p.boucWen.n);
+        if (cache) {
+            *cache = {ratio, root};
+        }
+        pinch.qzu = c.q * root;
+    }
     return pinch;
 }
 
@@ -102,14 +120,44 @@ bool pinchedStep(const BoucWenParameters& p, const Pinch& pinch, BoucWenState& s
     return false;
 }
 
+// What the step limits of integrateSplit need at a state: the pinching quantities at its
+// energy and, when pinched, |z0|^n, the largest rate max(|A|, |Phi(z0)|) and the unloading
+// stiffness n |z0|^(n-1) max(Psi, 0) nu. The same for every halving of an increment from that
+// state (Psi depends on dx only through its sign), so the first half of a split increment
+// takes them from its parent instead of recomputing them (the pinched law's sub-stepping
+// spends most of its time in these std::pow and std::expm1 calls).
+struct AtState {
+    Pinch pinch;
+    Degradation d{0.0, 0.0, 0.0};
+    double absZn = 0.0, rate = 0.0, stiffness = 0.0;
+};
+
+AtState atState(const BoucWenPinchingParameters& p, const BoucWenState& state, double dx,
+                RootCache& cache) {
+    AtState q;
+    q.pinch = pinchAt(p, state.e, &cache);
+    if (q.pinch.zeta1 > 0.0) {
+        q.d = degradationAt(p.boucWen, state.e);
+        const double psi = p.boucWen.gamma + p.boucWen.beta * signOf(dx * state.z);
+        const double absZ = std::abs(state.z);
+        q.absZn = std::pow(absZ, p.boucWen.n);
+        const double phi0 = q.d.a - q.absZn * psi * q.d.nu;
+        q.rate = std::max(std::abs(q.d.a), std::abs(phi0));
+        q.stiffness =
+            absZ > 0.0 ? p.boucWen.n * q.absZn / absZ * std::max(psi, 0.0) * q.d.nu : 0.0;
+    }
+    return q;
+}
+
 // BoucWen.cpp's integrateSplit with the pinched step: a sub-step with zeta1 = 0 is BoucWen's
 // step (halved by the same rules, withinUnloadingStep included); with zeta1 > 0 it is also
-// halved while |dx| A / eta > zeta2.
+// halved while |dx| A / eta > zeta2. `known`: atState() at this state, when the caller has it.
 bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, double dx,
-                    int levelsLeft, StepLimits& limits, int& subSteps) {
-    const Pinch pinch = pinchAt(p, state.e);
+                    int levelsLeft, StepLimits& limits, RootCache& cache, int& subSteps,
+                    const AtState* known = nullptr) {
+    const AtState q = known ? *known : atState(p, state, dx, cache);
+    const Pinch& pinch = q.pinch;
     bool withinPinchStep = true;
-    double absZn = 0.0; // |z0|^n, when pinched (the Newton's first iterate needs it too)
     if (pinch.zeta1 > 0.0) {
         // The backward-Euler equation r(z) = 0 has one root near z0 only while its derivative
         // dr/dz = 1 - dx (h Phi' + h' Phi) / eta stays positive there. Two limits keep it so:
@@ -123,23 +171,15 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
         //    |dx| n |z0|^(n-1) max(Psi, 0) nu / eta <= 0.5;
         //  - the pinching term: z moves at most |dx| max(|A|, |Phi(z0)|) / eta <= zeta2, one
         //    width of the pinched zone (|h'| <= 0.86 zeta1 / zeta2).
-        const Degradation d = degradationAt(p.boucWen, state.e);
-        const double psi = p.boucWen.gamma + p.boucWen.beta * signOf(dx * state.z);
-        const double absZ = std::abs(state.z);
-        absZn = std::pow(absZ, p.boucWen.n);
-        const double phi0 = d.a - absZn * psi * d.nu;
-        const double stiffness =
-            absZ > 0.0 ? p.boucWen.n * absZn / absZ * std::max(psi, 0.0) * d.nu : 0.0;
-        withinPinchStep =
-            std::abs(dx) * std::max(std::abs(d.a), std::abs(phi0)) <= pinch.zeta2 * d.eta &&
-            std::abs(dx) * stiffness <= 0.5 * d.eta;
+        withinPinchStep = std::abs(dx) * q.rate <= pinch.zeta2 * q.d.eta &&
+                          std::abs(dx) * q.stiffness <= 0.5 * q.d.eta;
     } else {
         withinPinchStep = withinUnloadingStep(p.boucWen, state, dx); // as BoucWen.cpp's step
     }
     if (levelsLeft <= 0 || (limits.withinMaxStep(std::abs(dx)) && withinPinchStep)) {
         bool converged = false;
         if (pinch.zeta1 > 0.0) {
-            converged = pinchedStep(p.boucWen, pinch, state, dx, limits, absZn);
+            converged = pinchedStep(p.boucWen, pinch, state, dx, limits, q.absZn);
         } else {
             BackwardEuler newton(p.boucWen, state, dx);
             auto progress = BackwardEuler::Progress::Iterating;
@@ -159,9 +199,10 @@ bool integrateSplit(const BoucWenPinchingParameters& p, BoucWenState& state, dou
             return false;
         }
     }
+    // The first half starts from this (unchanged) state: it reuses q.
     const double half = 0.5 * dx;
-    return integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps) &&
-           integrateSplit(p, state, half, levelsLeft - 1, limits, subSteps);
+    return integrateSplit(p, state, half, levelsLeft - 1, limits, cache, subSteps, &q) &&
+           integrateSplit(p, state, half, levelsLeft - 1, limits, cache, subSteps);
 }
 
 BoucWenIncrement integrateAdmissible(const BoucWenPinchingParameters& p, const BoucWenState& from,
@@ -172,7 +213,8 @@ BoucWenIncrement integrateAdmissible(const BoucWenPinchingParameters& p, const B
     StepLimits limits(p.boucWen, from);
     BoucWenState end = from;
     int subSteps = 0;
-    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, subSteps)) {
+    RootCache cache;
+    if (!integrateSplit(p, end, dx, std::max(maxSubdivisions, 0), limits, cache, subSteps)) {
         return {LawStatus::NoConvergence, from, 0.0, 0};
     }
     return {LawStatus::Ok, end, 0.0, subSteps};

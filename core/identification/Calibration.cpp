@@ -35,10 +35,28 @@ public:
     }
 
     bool operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+        return run(x, std::numeric_limits<double>::infinity(), r);
+    }
+
+    /// 1/2 ||r(x)||^2 as operator() gives it (the same residuals, the same sum), or false when
+    /// the replay fails or when the running sum of the squared residuals passes 2 `above`
+    /// (with a margin far above the two sums' roundings): the replay stops there, since the
+    /// cost only grows with more samples.
+    bool costUpTo(const Eigen::VectorXd& x, double above, Eigen::VectorXd& r, double& cost) const {
+        if (!run(x, 2.0 * above * (1.0 + 1e-9), r))
+            return false;
+        cost = 0.5 * r.squaredNorm();
+        return true;
+    }
+
+private:
+    /// The replay, stopped (false) once the running sum of squared residuals passes limit.
+    bool run(const Eigen::VectorXd& x, double limit, Eigen::VectorXd& r) const {
         if (m_law.setParameterValues(m_indices, {x.data(), std::size_t(x.size())}, true) != -1)
             return false;
         m_law.revertToStart();
         r.resize(Eigen::Index(m_scored));
+        double running = 0.0;
         Eigen::Index j = 0;
         for (const std::size_t k : m_keep) {
             if (!m_time.empty())
@@ -46,13 +64,17 @@ public:
             if (m_law.setTrialDeformation(m_u[k]) != LawStatus::Ok)
                 return false;
             m_law.commit();
-            if (k >= m_firstScored)
-                r[j++] = (m_law.committedForce() - m_f[k]) / m_scale;
+            if (k >= m_firstScored) {
+                const double e = (m_law.committedForce() - m_f[k]) / m_scale;
+                r[j++] = e;
+                running += e * e;
+                if (running > limit) // (a NaN never passes: allFinite() below)
+                    return false;
+            }
         }
         return r.allFinite();
     }
 
-private:
     HysteresisLaw& m_law;
     std::vector<int> m_indices;
     const std::vector<double>& m_u;
@@ -220,6 +242,10 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
                             reducedHistory(u, rate ? u.size() : spec.screenSamples), rmsF, 0,
                             time);
         std::vector<Candidate> screenedBest;
+        const std::size_t keep = std::size_t(std::max(spec.screenKept, 0));
+        // the keep best costs so far (a max-heap): a point whose replay passes the worst of
+        // them cannot be kept, and its replay stops there (the same points are kept)
+        std::vector<double> bestCosts;
         Eigen::VectorXd r;
         for (const std::vector<double>& s : spec.screened) {
             if (s.size() != spec.fitted.size())
@@ -233,8 +259,18 @@ CalibrationResult calibrate(const std::vector<double>& u, const std::vector<doub
                                     .cwiseMin(searchUpper);
             project(x);
             ++out.residualEvaluations;
-            if (screen(x, r))
-                screenedBest.push_back({x, 0.5 * r.squaredNorm()});
+            const double above = bestCosts.size() < keep ? std::numeric_limits<double>::infinity()
+                                                         : bestCosts.front();
+            double cost = 0.0;
+            if (keep == 0 || !screen.costUpTo(x, above, r, cost))
+                continue;
+            screenedBest.push_back({x, cost});
+            bestCosts.push_back(cost);
+            std::push_heap(bestCosts.begin(), bestCosts.end());
+            if (bestCosts.size() > keep) {
+                std::pop_heap(bestCosts.begin(), bestCosts.end());
+                bestCosts.pop_back();
+            }
         }
         const std::size_t kept =
             std::min(screenedBest.size(), std::size_t(std::max(spec.screenKept, 0)));

@@ -61,7 +61,9 @@ struct CalibrationSpec {
     /// A screening before the global phase (empty: none): each point (values of the fitted
     /// parameters, clamped into the search range and made admissible) costs one replay of a
     /// reduced history of screenSamples samples, and the screenKept best join the starts
-    /// (e.g. a space-filling design over a box too wide for a minimization per point).
+    /// (e.g. a space-filling design over a box too wide for a minimization per point). A
+    /// point's replay stops as soon as its running squared error passes the worst of the
+    /// screenKept best so far (it cannot be kept then): the same points are kept.
     std::vector<std::vector<double>> screened;
     std::size_t screenSamples = 300;
     int screenKept = 8;
