@@ -34,6 +34,38 @@ nlohmann::json lastOf(const std::vector<std::string>& names,
     return out;
 }
 
+nlohmann::json basicDofsJson(const std::vector<BasicDofComparison>& dofs) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const BasicDofComparison& b : dofs)
+        out.push_back({{"element", b.element},
+                       {"dof", b.dof},
+                       {"deformation_unit", b.deformationUnit},
+                       {"force_unit", b.forceUnit},
+                       {"deformation_nrmse", number(b.deformationNrmse)},
+                       {"deformation_peak_error", number(b.deformationPeakError)},
+                       {"force_nrmse", number(b.forceNrmse)},
+                       {"force_peak_error", number(b.forcePeakError)}});
+    return out;
+}
+
+nlohmann::json actuatorsJson(const std::vector<ActuatorComparison>& actuators) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const ActuatorComparison& a : actuators) {
+        nlohmann::json j = {{"element", a.element},
+                            {"actuator", a.actuator},
+                            {"control", a.control},
+                            {"command_unit", a.commandUnit},
+                            {"force_unit", a.forceUnit},
+                            {"tracking", trackingJson(a.tracking, a.commandUnit)}};
+        if (a.compared) {
+            j["force_nrmse"] = number(a.forceNrmse);
+            j["force_peak_error"] = number(a.forcePeakError);
+        }
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
 } // namespace
 
 ParameterValues trueParameters(const TestConfig& cfg, const std::vector<std::string>& names) {
@@ -71,6 +103,11 @@ nlohmann::json makeComparisonSummary(const ComparisonResult& r, const TestConfig
         nlohmann::json& block = run == &r.reference ? j["reference"] : j["runs"][run->name];
         block["tracking"] = tracking;
         block["link_security"] = linkSecurityJson(run->sites, run->linkSecurity);
+        if (!run->channels.layout.empty()) { // multi-DOF elements: per basic DOF and actuator
+            if (run != &r.reference)
+                block["basic_dofs"] = basicDofsJson(run->basicDofs);
+            block["actuators"] = actuatorsJson(run->actuators);
+        }
     }
     j["parameters"] = u.parameterNames;
     j["final_parameters"] = lastOf(u.parameterNames, u.parameters);
