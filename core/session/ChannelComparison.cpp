@@ -2,6 +2,9 @@
 
 #include "core/session/ComparisonProtocol.h"
 
+#include <cmath>
+#include <limits>
+
 namespace hsmu {
 
 namespace {
@@ -34,6 +37,21 @@ std::vector<double> measured(const ChannelHistory& h, const std::string& element
     return x;
 }
 
+/// compareSeries, with NRMSE NaN where the reference is zero to round-off beside the run
+/// (RMS(x_ref) <= 1e-9 RMS(x)): a ratio to a round-off is no measure; the peak error is.
+void compare(const std::vector<double>& x, const std::vector<double>& ref, double& nrmse,
+             double& peak)
+{
+    compareSeries(x, ref, nrmse, peak);
+    double sx = 0.0, sr = 0.0;
+    for (std::size_t i = 0; i < x.size() && i < ref.size(); ++i) {
+        sx += x[i] * x[i];
+        sr += ref[i] * ref[i];
+    }
+    if (sx > 0.0 && std::sqrt(sr) <= 1e-9 * std::sqrt(sx))
+        nrmse = std::numeric_limits<double>::quiet_NaN();
+}
+
 } // namespace
 
 std::vector<double> channelSeries(const ChannelHistory& h, const std::string& element,
@@ -64,10 +82,10 @@ std::vector<BasicDofComparison> compareBasicDofs(const ChannelHistory& run,
         b.dof = dof;
         b.deformationUnit = c.unit;
         b.forceUnit = run.layout[std::size_t(indexOf(run, c.element, dof + " force"))].unit;
-        compareSeries(measured(run, c.element, c.name),
+        compare(measured(run, c.element, c.name),
                       measured(reference, c.element, c.name), b.deformationNrmse,
                       b.deformationPeakError);
-        compareSeries(measured(run, c.element, dof + " force"),
+        compare(measured(run, c.element, dof + " force"),
                       measured(reference, c.element, dof + " force"), b.forceNrmse,
                       b.forcePeakError);
         out.push_back(std::move(b));
@@ -97,7 +115,7 @@ std::vector<ActuatorComparison> compareActuators(const ChannelHistory& run,
             dt);
         if (reference && indexOf(*reference, c.element, actuator + " force") >= 0) {
             a.compared = true;
-            compareSeries(measured(run, c.element, actuator + " force"),
+            compare(measured(run, c.element, actuator + " force"),
                           measured(*reference, c.element, actuator + " force"),
                           a.forceNrmse, a.forcePeakError);
         }

@@ -6,6 +6,7 @@
 //     against the reference run's same element, NRMSE = RMS(x - x_ref) / RMS(x_ref) and
 //     peak error = max |x - x_ref| over the common steps from step 1 (step 0 holds a specimen's
 //     initial state, all zero, not a measurement), in the DOF's units (m | rad, kN | kN m);
+//     NRMSE NaN (not a measure) where RMS(x_ref) <= 1e-9 RMS(x): a reference zero to round-off;
 //   actuator a of a specimen: its tracking (rths::trackingReport, docs/rths.md M1-M6) of the
 //     measured stroke against the command (displacement control) or of the measured force
 //     against the commanded force (force control) from step 1, and its measured force against the

@@ -213,6 +213,12 @@ ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o
     if (!e)
         throw ConfigError(cfg.sourcePath + ": compare: no element '" + r.element + "'");
     r.dof = o.dof.empty() ? cfg.dofs.at(e->dofs.back()).name : o.dof;
+    if (o.dof.empty() && e->link2d) // a link2d: node j's first free DOF (its top's sway)
+        for (int k = 3; k < 6; ++k)
+            if (const int d = e->link2d->dofs[std::size_t(k)]; d >= 0) {
+                r.dof = cfg.dofs.at(std::size_t(d)).name;
+                break;
+            }
     const bool rotational = e->type == "rotationalBaseSpring";
     r.forceUnit = rotational ? "kN m" : "kN";
     r.deformationUnit = rotational ? "rad" : "m";
