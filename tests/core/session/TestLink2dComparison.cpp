@@ -27,25 +27,16 @@
 #include <cmath>
 #include <fstream>
 
+#include "../config/Link2dFrameFixture.h"
+
 using namespace hsmu;
 
 namespace {
 
 const std::string kPreset = HSMU_SOURCE_DIR "/resources/presets/two-actuator-column-frame.json";
 
-const nlohmann::json kTrueLaw = {{"law", "boucWen"}, {"k0", 1.0},   {"alpha", 0.05},
-                                 {"n", 2.0},         {"beta", 3.0}, {"gamma", 1.0},
-                                 {"A0", 1.0},        {"uRef", 0.01}, {"fRef", 100.0}};
-
-nlohmann::json wrongLaw()
-{
-    nlohmann::json m = kTrueLaw;
-    m["alpha"] = 0.15;
-    m["beta"] = 1.5;
-    m["gamma"] = 2.0;
-    m["n"] = 1.5;
-    return m;
-}
+const nlohmann::json& kTrueLaw = link2dframe::kLateralLaw;
+nlohmann::json wrongLaw() { return link2dframe::wrongLateralLaw(); }
 
 TestConfig frame(const nlohmann::json& twinShear, const nlohmann::json& lateralModel = nullptr)
 {
