@@ -16,7 +16,8 @@
 //  - with the lateral actuator delayed 30 ms (three steps) its tracking J1 is 30 ms (within
 //    1 ms: the correlation's parabola) and its J2 the hand-computed RMS error of stroke against
 //    command (1e-9 relative).
-// compare.json carries both lists with their units. Units: kN, m, rad, s.
+// compare.json carries both lists with their units, and the specimen's true shear law (the
+// lateral actuator's material). Units: kN, m, rad, s.
 
 #include "core/config/ConfigLoader.h"
 #include "core/session/ComparisonProtocol.h"
@@ -171,6 +172,13 @@ private slots:
         QCOMPARE(a["command_unit"].get<std::string>(), std::string("m"));
         QVERIFY(a.contains("force_nrmse") && a["tracking"].contains("J2_percent"));
         QVERIFY(!j["reference"].contains("basic_dofs"));
+        // The true law: the lateral actuator's material (NoTransformation -dir 1 2: actuator 2
+        // drives the shear DOF alone); the updated estimate close to it.
+        const nlohmann::json& truth = j["true_parameters"];
+        QCOMPARE(truth["alpha"].get<double>(), 0.05);
+        QCOMPARE(truth["beta"].get<double>(), 3.0);
+        QCOMPARE(truth["n"].get<double>(), 2.0);
+        QVERIFY(std::abs(j["final_parameters"]["alpha"].get<double>() - 0.05) <= 0.01);
     }
 
     void delayedActuatorTracking()
