@@ -121,6 +121,17 @@ BENCHMARK(bmTwoActuatorFrameStep);
 void bmOneActuatorFrameStep(benchmark::State& state) { frameSteps(state, actuatorFrame(1)); }
 BENCHMARK(bmOneActuatorFrameStep);
 
+// The preset cantilever-column-lab: the same frame whose left column the virtual lab simulates
+// as a whole (cantileverColumn: Bouc-Wen base hinge solved by Newton inside the lab's Newton on
+// the strokes, forces and equilibrium, eq. W1-W4 of docs/setups.md; a lagging lateral
+// actuator).
+void bmCantileverColumnLabStep(benchmark::State& state)
+{
+    frameSteps(state, loadConfigFile(std::string(HSMU_SOURCE_DIR) +
+                                     "/resources/presets/cantilever-column-lab.json"));
+}
+BENCHMARK(bmCantileverColumnLabStep);
+
 void bmWholeElCentroRun(benchmark::State& state)
 {
     const bool have = std::filesystem::exists(kElCentro);

@@ -719,6 +719,54 @@
         <source>true</source>
         <translation>true</translation>
     </message>
+    <message>
+        <source>reference</source>
+        <translation>reference</translation>
+    </message>
+    <message>
+        <source>element</source>
+        <translation>element</translation>
+    </message>
+    <message>
+        <source>basic DOF</source>
+        <translation>basic DOF</translation>
+    </message>
+    <message>
+        <source>deformation NRMSE</source>
+        <translation>deformation NRMSE</translation>
+    </message>
+    <message>
+        <source>deformation peak error</source>
+        <translation>deformation peak error</translation>
+    </message>
+    <message>
+        <source>force peak error</source>
+        <translation>force peak error</translation>
+    </message>
+    <message>
+        <source>Per basic DOF against the reference run:</source>
+        <translation>Per basic DOF against the reference run:</translation>
+    </message>
+    <message>
+        <source>actuator</source>
+        <translation>actuator</translation>
+    </message>
+    <message>
+        <source>control</source>
+        <translation>control</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>force</translation>
+    </message>
+    <message>
+        <source>displacement</source>
+        <translation>displacement</translation>
+    </message>
+    <message>
+        <source>Per actuator: tracking against its command, force against the reference run:</source>
+        <translation>Per actuator: tracking against its command, force against the reference run:</translation>
+    </message>
 </context>
 <context>
     <name>ConsoleCommand</name>

@@ -719,6 +719,54 @@
         <source>true</source>
         <translation>verdadero</translation>
     </message>
+    <message>
+        <source>reference</source>
+        <translation>referencia</translation>
+    </message>
+    <message>
+        <source>element</source>
+        <translation>elemento</translation>
+    </message>
+    <message>
+        <source>basic DOF</source>
+        <translation>GDL básico</translation>
+    </message>
+    <message>
+        <source>deformation NRMSE</source>
+        <translation>NRMSE de deformación</translation>
+    </message>
+    <message>
+        <source>deformation peak error</source>
+        <translation>error de pico de deformación</translation>
+    </message>
+    <message>
+        <source>force peak error</source>
+        <translation>error de pico de fuerza</translation>
+    </message>
+    <message>
+        <source>Per basic DOF against the reference run:</source>
+        <translation>Por GDL básico, frente al ensayo de referencia:</translation>
+    </message>
+    <message>
+        <source>actuator</source>
+        <translation>actuador</translation>
+    </message>
+    <message>
+        <source>control</source>
+        <translation>control</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>fuerza</translation>
+    </message>
+    <message>
+        <source>displacement</source>
+        <translation>desplazamiento</translation>
+    </message>
+    <message>
+        <source>Per actuator: tracking against its command, force against the reference run:</source>
+        <translation>Por actuador: seguimiento de su consigna, fuerza frente al ensayo de referencia:</translation>
+    </message>
 </context>
 <context>
     <name>ConsoleCommand</name>

@@ -719,6 +719,54 @@
         <source>true</source>
         <translation>真值</translation>
     </message>
+    <message>
+        <source>reference</source>
+        <translation>参考</translation>
+    </message>
+    <message>
+        <source>element</source>
+        <translation>单元</translation>
+    </message>
+    <message>
+        <source>basic DOF</source>
+        <translation>基本自由度</translation>
+    </message>
+    <message>
+        <source>deformation NRMSE</source>
+        <translation>变形 NRMSE</translation>
+    </message>
+    <message>
+        <source>deformation peak error</source>
+        <translation>变形峰值误差</translation>
+    </message>
+    <message>
+        <source>force peak error</source>
+        <translation>力峰值误差</translation>
+    </message>
+    <message>
+        <source>Per basic DOF against the reference run:</source>
+        <translation>各基本自由度与参考试验的对比：</translation>
+    </message>
+    <message>
+        <source>actuator</source>
+        <translation>作动器</translation>
+    </message>
+    <message>
+        <source>control</source>
+        <translation>控制</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>力</translation>
+    </message>
+    <message>
+        <source>displacement</source>
+        <translation>位移</translation>
+    </message>
+    <message>
+        <source>Per actuator: tracking against its command, force against the reference run:</source>
+        <translation>各作动器：对其指令的跟踪，力与参考试验的对比：</translation>
+    </message>
 </context>
 <context>
     <name>ConsoleCommand</name>

@@ -11,8 +11,9 @@
 // by Newton on x = (d, f) from the committed state, the Jacobian [[J_c, 0], [0, I_f],
 // [K - G, -J^T]] with G = d(J^T f)/dd by central differences (h = 1e-7; 0 for a linear setup)
 // and K the specimen's tangent, to |s_i - a_i| <= 1e-15 + 1e-12 |a_i| m,
-// |f_i - a_i| <= 1e-12 max(1, |a_i|) kN and |q - J^T f| <= 1e-12 max(1, |q|) per row, at most 50
-// iterations; else a fault naming the setup. The measured strokes are s(d), the forces f.
+// |f_i - a_i| <= 1e-12 max(1, |a_i|) kN and |q - J^T f| <= 1e-12 max(1, |q|) per row (once the
+// residual stops falling: 1e-12 max(1, |q|_inf, |f|_inf), the round-off floor of a small shear
+// beside a large axial force), at most 50 iterations; else a fault naming the setup. The measured strokes are s(d), the forces f.
 // Units: the setup's (m, rad) and the specimen's (kN, kN m).
 
 #include "core/experimental/ActuatorChannel.h"

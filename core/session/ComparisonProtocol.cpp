@@ -6,6 +6,7 @@
 #include "core/experiment/HybridTest.h"
 #include "core/output/RunStatistics.h"
 #include "core/session/TestSession.h"
+#include "core/structure/Link2dKinematics.h"
 #include "core/updating/ModelUpdater.h"
 
 #include <algorithm>
@@ -45,6 +46,8 @@ public:
         m_run.deformation.push_back(r.elements[m_e].deformation);
         m_run.force.push_back(r.elements[m_e].force);
         m_run.displacement.push_back(r.u[m_d]);
+        if (!r.channels.empty())
+            m_run.channels.steps.push_back(r.channels);
         if (r.hasUpdating) {
             m_run.parameters.push_back(r.updating.parameters);
             m_run.stddev.push_back(r.updating.stddev);
@@ -77,6 +80,7 @@ ComparisonRun runOne(int index, const std::string& name, const TestConfig& cfg,
     const RunLayout layout = RunLayout::of(test->structure());
     run.sites = layout.sites;
     run.linkSecurity = builtinSiteSecurity(layout);
+    run.channels.layout = layout.channels;
     SessionOptions options; // as fast as possible, no automatic resume
     if (!recordDir.empty()) {
         options.recordPath = recordDir + "/" + name + "/record.h5";
@@ -174,6 +178,12 @@ TestConfig referenceConfig(const TestConfig& cfg, const ComparisonOptions& o)
                               "' must have the specimen's element type (and a rigid column) to "
                               "be replaced by a copy of the true specimen");
         target->experimental = true;
+        if (truth.link2d && target->link2d) { // the specimen's setup, actuators and lab
+            target->link2d->basic = truth.link2d->basic;
+            target->link2d->setupScript = truth.link2d->setupScript;
+            target->link2d->actuators = truth.link2d->actuators;
+            target->link2d->wholeSpecimen = truth.link2d->wholeSpecimen;
+        }
         target->specimen = truth.specimen;
         target->specimen.options.forceNoiseStd = 0.0;
         target->specimen.options.deformationNoiseStd = 0.0;
@@ -203,9 +213,19 @@ ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o
     if (!e)
         throw ConfigError(cfg.sourcePath + ": compare: no element '" + r.element + "'");
     r.dof = o.dof.empty() ? cfg.dofs.at(e->dofs.back()).name : o.dof;
+    if (o.dof.empty() && e->link2d) // a link2d: node j's first free DOF (its top's sway)
+        for (int k = 3; k < 6; ++k)
+            if (const int d = e->link2d->dofs[std::size_t(k)]; d >= 0) {
+                r.dof = cfg.dofs.at(std::size_t(d)).name;
+                break;
+            }
     const bool rotational = e->type == "rotationalBaseSpring";
     r.forceUnit = rotational ? "kN m" : "kN";
     r.deformationUnit = rotational ? "rad" : "m";
+    if (e->link2d) { // its reported (primary) basic DOF
+        r.forceUnit = link2dBasicForceUnit(e->link2d->primary);
+        r.deformationUnit = link2dBasicDeformationUnit(e->link2d->primary);
+    }
     auto p = [&](int i) {
         return [&, i](double f) {
             if (progress)
@@ -217,6 +237,12 @@ ComparisonResult runComparison(const TestConfig& cfg, const ComparisonOptions& o
     r.updated = runOne(2, "updated", cfg, r.element, r.dof, p(2), o.recordDir);
     r.initialMetric = metric(r.initial, r.reference);
     r.updatedMetric = metric(r.updated, r.reference);
+    const double dt = cfg.analysis.dt;
+    r.reference.actuators = compareActuators(r.reference.channels, nullptr, dt);
+    for (ComparisonRun* run : {&r.initial, &r.updated}) {
+        run->basicDofs = compareBasicDofs(run->channels, r.reference.channels);
+        run->actuators = compareActuators(run->channels, &r.reference.channels, dt);
+    }
     return r;
 }
 

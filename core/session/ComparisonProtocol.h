@@ -9,9 +9,13 @@
 //   updated    the same initial parameters, updated online as the configuration says.
 // Metrics against the reference, for the compared element's force and the compared DOF's
 // displacement:  NRMSE = RMS(x - x_ref) / RMS(x_ref),  peak error = max |x - x_ref|.
+// With multi-DOF (link2d) elements also per basic DOF and per actuator (ChannelComparison.h);
+// a link2d compared element becomes, in the reference run, a copy of the link2d specimen
+// (its setup, actuators and lab) on the compared element's own nodes and geometry.
 
 #include "core/config/TestConfig.h"
 #include "core/output/RunLayout.h"
+#include "core/session/ChannelComparison.h"
 #include "core/rths/TrackingMetrics.h"
 
 #include <functional>
@@ -50,6 +54,12 @@ struct ComparisonRun {
     /// runs are in-process); its record's /sites `security` and compare.json's link_security.
     SiteSecurity linkSecurity;
     std::vector<std::string> sites; ///< RunLayout::sites of the run
+    /// The multi-DOF elements' channels (empty without them), and from them: every basic DOF
+    /// against the reference run's (initial and updated runs) and every actuator's tracking
+    /// and force against the reference's (ChannelComparison.h).
+    ChannelHistory channels;
+    std::vector<BasicDofComparison> basicDofs;
+    std::vector<ActuatorComparison> actuators;
 };
 
 struct ComparisonMetric {

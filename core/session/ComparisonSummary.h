@@ -13,7 +13,8 @@
 //   final_parameters {name: value}, final_standard_deviations {name: value}
 //     (the updated run's last estimate, the law's own units: normalized for Bouc-Wen),
 //   true_parameters {name: value} (the updating specimen's own law, where it has the name and
-//     is the identified model's law; empty otherwise),
+//     is the identified model's law; a link2d specimen's: the material of the actuator that
+//     alone drives the identified basic DOF, e.g. behind NoTransformation; empty otherwise),
 //   applied_updates, steps (the updated run's committed steps),
 //   alarms {reference, initial, updated: ["t = ... s: message", ...]}.
 // NRMSE = RMS(x - x_ref) / RMS(x_ref) and peak error = max |x - x_ref| against the reference
@@ -32,7 +33,8 @@ namespace hsmu {
 nlohmann::json makeComparisonSummary(const ComparisonResult& result, const TestConfig& cfg);
 
 /// The updating specimen's true law parameters for the identified names; empty if its true
-/// law is not the law of its model (the one identified).
+/// law is not the law of its model (the one identified). A link2d specimen (updating.basicDof):
+/// the material of the actuator that alone drives that basic DOF at rest.
 ParameterValues trueParameters(const TestConfig& cfg, const std::vector<std::string>& names);
 
 /// makeComparisonSummary written with 2-space indentation. Throws std::runtime_error naming

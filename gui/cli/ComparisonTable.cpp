@@ -41,7 +41,48 @@ QString aligned(const std::vector<QStringList>& rows) {
     return out;
 }
 
+QString withUnit(double x, const std::string& unit) {
+    return num(x, 4) + QLatin1Char(' ') + QString::fromStdString(unit);
+}
+
 } // namespace
+
+QString ComparisonTable::channelTables(const ComparisonResult& r) {
+    QString out;
+    const std::pair<QString, const ComparisonRun*> runs[] = {
+        {tr("reference"), &r.reference}, {tr("initial"), &r.initial}, {tr("updated"), &r.updated}};
+    std::vector<QStringList> dofs;
+    dofs.push_back({tr("run"), tr("element"), tr("basic DOF"), tr("deformation NRMSE"),
+                    tr("deformation peak error"), tr("force NRMSE"), tr("force peak error")});
+    for (const auto& [name, run] : runs)
+        for (const BasicDofComparison& b : run->basicDofs)
+            dofs.push_back({name, QString::fromStdString(b.element),
+                            QString::fromStdString(b.dof), percent(b.deformationNrmse),
+                            withUnit(b.deformationPeakError, b.deformationUnit),
+                            percent(b.forceNrmse), withUnit(b.forcePeakError, b.forceUnit)});
+    if (dofs.size() > 1)
+        out += tr("Per basic DOF against the reference run:") + QLatin1Char('\n') +
+               aligned(dofs);
+    std::vector<QStringList> acts;
+    acts.push_back({tr("run"), tr("element"), tr("actuator"), tr("control"),
+                    QStringLiteral("J1 [ms]"), QStringLiteral("J2"), QStringLiteral("J3"),
+                    tr("force NRMSE"), tr("force peak error")});
+    for (const auto& [name, run] : runs)
+        for (const ActuatorComparison& a : run->actuators)
+            acts.push_back({name, QString::fromStdString(a.element),
+                            QString::fromStdString(a.actuator),
+                            a.control == "force" ? tr("force") : tr("displacement"),
+                            num(a.tracking.j1, 3), percent(a.tracking.j2 / 100.0),
+                            percent(a.tracking.j3 / 100.0),
+                            a.compared ? percent(a.forceNrmse) : QStringLiteral("-"),
+                            a.compared ? withUnit(a.forcePeakError, a.forceUnit)
+                                       : QStringLiteral("-")});
+    if (acts.size() > 1)
+        out += tr("Per actuator: tracking against its command, force against the reference "
+                  "run:") +
+               QLatin1Char('\n') + aligned(acts);
+    return out;
+}
 
 QString ComparisonTable::format(const ComparisonResult& r, const ParameterValues& truth) {
     const QString element = QString::fromStdString(r.element);
@@ -67,6 +108,8 @@ QString ComparisonTable::format(const ComparisonResult& r, const ParameterValues
         out += tr("  initial / updated NRMSE: force %1x, displacement %2x")
                    .arg(num(fRatio, 3), num(dRatio, 3)) +
                QLatin1Char('\n');
+
+    out += channelTables(r);
 
     const ComparisonRun& u = r.updated;
     if (!u.parameterNames.empty() && !u.parameters.empty()) {

@@ -5,7 +5,10 @@
 #include "CliTestSupport.h"
 
 #include <QDir>
+#include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -87,6 +90,52 @@ private slots:
             const QString why = blankReason(out + QLatin1Char('/') + png);
             QVERIFY2(why.isEmpty(), qPrintable(why));
         }
+    }
+
+    // Issue 24: a link2d specimen (two-actuator-column-frame with its shear DOF identified and
+    // Column R's updated): the table and compare.json carry each basic DOF and actuator with
+    // their units (the metrics themselves: test_session_link2d_comparison).
+    void link2dSpecimenPerBasicDofAndActuator() {
+        QTemporaryDir dir;
+        QFile preset(QStringLiteral(HSMU_SOURCE_DIR "/resources/presets/two-actuator-column-frame.json"));
+        QVERIFY(preset.open(QIODevice::ReadOnly));
+        QJsonObject doc = QJsonDocument::fromJson(preset.readAll()).object();
+        QJsonObject law{{QStringLiteral("law"), QStringLiteral("boucWen")}, {QStringLiteral("k0"), 1.0},
+                        {QStringLiteral("alpha"), 0.15}, {QStringLiteral("n"), 1.5},
+                        {QStringLiteral("beta"), 1.5}, {QStringLiteral("gamma"), 2.0},
+                        {QStringLiteral("A0"), 1.0}, {QStringLiteral("uRef"), 0.01},
+                        {QStringLiteral("fRef"), 100.0}};
+        doc.insert(QStringLiteral("updating"),
+                   QJsonObject{{QStringLiteral("specimen"), QStringLiteral("Column L")},
+                               {QStringLiteral("basicDof"), QStringLiteral("shear")},
+                               {QStringLiteral("model"), law},
+                               {QStringLiteral("reporter"),
+                                QJsonObject{{QStringLiteral("targets"),
+                                             QJsonArray{QJsonObject{{QStringLiteral("element"),
+                                                                     QStringLiteral("Column R")}}}}}}});
+        const QString config = dir.filePath(QStringLiteral("frame.json"));
+        QFile f(config);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QJsonDocument(doc).toJson());
+        f.close();
+        const QString out = dir.filePath(QStringLiteral("cmp"));
+        const Result r = hsmu({QStringLiteral("compare"), config, QStringLiteral("--out"), out,
+                               QStringLiteral("--duration"), QStringLiteral("3")});
+        QVERIFY2(r.exitCode == 0, qPrintable(report(r)));
+        QVERIFY2(r.out.contains(QStringLiteral("Per basic DOF against the reference run:")),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("updated +Column R +rotation .* rad .* kN m"))),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("initial +Column L +lateral +displacement "))),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QRegularExpression(QStringLiteral("reference +Column R +vertical +force "))),
+                 qPrintable(r.out));
+        const QJsonObject j = readJson(out + QStringLiteral("/compare.json"));
+        QCOMPARE(j.value(QStringLiteral("force_unit")).toString(), QStringLiteral("kN"));
+        const QJsonObject updated = j.value(QStringLiteral("runs")).toObject().value(QStringLiteral("updated")).toObject();
+        QCOMPARE(updated.value(QStringLiteral("basic_dofs")).toArray().size(), 9);
+        QCOMPARE(updated.value(QStringLiteral("actuators")).toArray().size(), 2);
+        QCOMPARE(j.value(QStringLiteral("reference")).toObject().value(QStringLiteral("actuators")).toArray().size(), 4);
     }
 
     void configWithoutUpdatingIsAnError() {

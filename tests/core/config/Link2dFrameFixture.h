@@ -1,6 +1,7 @@
 #pragma once
 // Shared by the tests of the link2d element's configuration (TestLink2dConfig,
-// TestWholeSpecimenConfig): the preset two-actuator-column-frame.json, a run of a configuration
+// TestWholeSpecimenConfig, TestCantileverColumnLabPreset; the updating and comparison tests
+// take its laws): the preset two-actuator-column-frame.json, its lateral law, a run of a configuration
 // to its end (every step recorded) and the error a configuration is refused with.
 #include "core/config/ConfigLoader.h"
 #include "core/config/TestFactory.h"
@@ -25,6 +26,21 @@ struct Recorder final : StepObserver {
     std::vector<StepRecord> records;
     void onStep(const StepRecord& r) override { records.push_back(r); }
 };
+
+/// The preset's lateral actuator's Bouc-Wen law (the specimen's true shear law) and a wrong
+/// initial model of it (alpha, beta, gamma, n off), as the updating tests use them.
+inline const nlohmann::json kLateralLaw = {{"law", "boucWen"}, {"k0", 1.0},   {"alpha", 0.05},
+                                           {"n", 2.0},         {"beta", 3.0}, {"gamma", 1.0},
+                                           {"A0", 1.0},        {"uRef", 0.01}, {"fRef", 100.0}};
+inline nlohmann::json wrongLateralLaw()
+{
+    nlohmann::json m = kLateralLaw;
+    m["alpha"] = 0.15;
+    m["beta"] = 1.5;
+    m["gamma"] = 2.0;
+    m["n"] = 1.5;
+    return m;
+}
 
 inline nlohmann::json presetJson()
 {

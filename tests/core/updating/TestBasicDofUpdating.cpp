@@ -35,6 +35,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "../config/Link2dFrameFixture.h"
+
 using namespace hsmu;
 
 namespace {
@@ -42,18 +44,8 @@ namespace {
 const std::string kPreset = HSMU_SOURCE_DIR "/resources/presets/two-actuator-column-frame.json";
 
 // The specimen's true shear law (the lateral actuator's material) and a wrong initial model.
-const nlohmann::json kTrueLaw = {{"law", "boucWen"}, {"k0", 1.0},   {"alpha", 0.05},
-                                 {"n", 2.0},         {"beta", 3.0}, {"gamma", 1.0},
-                                 {"A0", 1.0},        {"uRef", 0.01}, {"fRef", 100.0}};
-nlohmann::json wrongModel()
-{
-    nlohmann::json m = kTrueLaw;
-    m["alpha"] = 0.15;
-    m["beta"] = 1.5;
-    m["gamma"] = 2.0;
-    m["n"] = 1.5;
-    return m;
-}
+const nlohmann::json& kTrueLaw = link2dframe::kLateralLaw;
+nlohmann::json wrongModel() { return link2dframe::wrongLateralLaw(); }
 
 nlohmann::json presetJson()
 {
