@@ -273,7 +273,8 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->nChan = layout.channels.size();
     const h5::QuietErrors quiet;
     m_d->create(start); // on a throw, Impl's handles close the partial file
-    m_d->batchRows = batchRowsFor(m_d->nKept, m_d->nElem);
+    // The full record's batch (chosen DOFs: no more memory, the element chunks as before).
+    m_d->batchRows = batchRowsFor(m_d->nDof, m_d->nElem);
     const std::size_t rows = std::size_t(m_d->batchRows);
     for (Impl::Batch* b : {&m_d->fill, &m_d->out})
         b->reserve(rows, m_d->nKept, m_d->nElem, m_d->nPar, m_d->nSite, m_d->nChan);
