@@ -70,8 +70,8 @@ public:
             if (name.rfind(kind, 0) == 0)
                 if (const auto it = std::find(dofs.begin(), dofs.end(), name.substr(2));
                     it != dofs.end())
-                    throw py::key_error(m_reader->path() + ": '" + name + "': " +
-                                        d().dofNotRecorded(int(it - dofs.begin())));
+                    throw py::key_error(m_reader->path() + ": '" + name +
+                                        "': " + d().dofNotRecorded(int(it - dofs.begin())));
         throw py::key_error(m_reader->path() + ": no dataset '" + name +
                             "' (Record.names lists them)");
     }

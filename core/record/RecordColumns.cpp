@@ -20,8 +20,8 @@ RecordTable dofs(const RecordData& r) {
     const std::tuple<const char*, const char*, Matrix> kinds[] = {
         {"u", "m", &RecordData::u}, {"v", "m/s", &RecordData::v}, {"a", "m/s^2", &RecordData::a}};
     t.dofRows = !r.meta.dofRecording.full();
-    const std::size_t kept =
-        r.meta.dofRecording.dofs.empty() ? r.layout.dofNames.size() : r.meta.dofRecording.dofs.size();
+    const std::size_t kept = r.meta.dofRecording.dofs.empty() ? r.layout.dofNames.size()
+                                                              : r.meta.dofRecording.dofs.size();
     for (const auto& [kind, unit, m] : kinds)
         for (std::size_t j = 0; j < kept; ++j) {
             const std::string& dof = r.layout.dofNames[std::size_t(r.dofIndex(int(j)))];

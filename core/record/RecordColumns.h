@@ -47,7 +47,7 @@ struct RecordColumn {
 struct RecordTable {
     std::string file;                  ///< "steps.csv", "dofs.csv", ...
     std::vector<RecordColumn> columns; ///< after step and time
-    bool dofRows = false; ///< its rows are the DOF rows (dofStepColumn, dofTimeColumn)
+    bool dofRows = false;              ///< its rows are the DOF rows (dofStepColumn, dofTimeColumn)
 };
 
 /// "step" ("", integer) and "time" [s].

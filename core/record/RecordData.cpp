@@ -27,8 +27,8 @@ int RecordData::dofRowOf(int row) const {
 std::string RecordData::dofNotRecorded(int dof) const {
     const bool named = dof >= 0 && std::size_t(dof) < layout.dofNames.size();
     const DofRecording& r = meta.dofRecording;
-    return "DOF '" + (named ? layout.dofNames[std::size_t(dof)] : std::string("?")) +
-           "' (index " + std::to_string(dof) + ") was not recorded: the run kept DOFs " +
+    return "DOF '" + (named ? layout.dofNames[std::size_t(dof)] : std::string("?")) + "' (index " +
+           std::to_string(dof) + ") was not recorded: the run kept DOFs " +
            describeDofList(r.dofs) + " every " + std::to_string(r.every) +
            " step(s) (hsmu run --record-dofs / --record-every, the configuration's record.dofs "
            "/ record.every)";

@@ -6,8 +6,8 @@
 // layout.elements[j].units; identified parameters in the law's own units (normalized by
 // uRef / fRef for Bouc-Wen).
 
-#include "core/output/RunLayout.h"
 #include "core/output/DofRecording.h"
+#include "core/output/RunLayout.h"
 #include "core/util/Alarm.h"
 
 #include <Eigen/Core>
@@ -111,7 +111,9 @@ struct RecordData {
 
     // The numerical DOFs' rows and columns (docs/recording.md "Chosen and decimated DOFs").
     int dofRows() const { return dofSteps.empty() ? rows() : int(dofSteps.size()); }
-    int dofStep(int k) const { return dofSteps.empty() ? steps[std::size_t(k)] : dofSteps[std::size_t(k)]; }
+    int dofStep(int k) const {
+        return dofSteps.empty() ? steps[std::size_t(k)] : dofSteps[std::size_t(k)];
+    }
     double dofTime(int k) const { return dofSteps.empty() ? time(k) : dofTimes(k); }
     /// The DOF (index into layout.dofNames) of column j of u, v, a.
     int dofIndex(int j) const {

@@ -228,9 +228,8 @@ void RecordReader::Impl::readMetadata() {
                 r.dofs.clear(); // every DOF, decimated
         }
     }
-    const int nDof = dofsChosen && !m.dofRecording.dofs.empty()
-                         ? int(m.dofRecording.dofs.size())
-                         : int(layout.dofNames.size());
+    const int nDof = dofsChosen && !m.dofRecording.dofs.empty() ? int(m.dofRecording.dofs.size())
+                                                                : int(layout.dofNames.size());
     {
         const h5::Id g = h5::check(H5Gopen2(root, "elements", H5P_DEFAULT), w,
                                    "damaged record (no group /elements)");

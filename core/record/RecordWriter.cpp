@@ -54,8 +54,9 @@ void RecordWriter::Impl::Batch::clear() {
     for (auto* b : {&bStep, &bDofStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep,
                     &bEventElement, &bEventDecision, &bEventProposal})
         b->clear();
-    for (auto* b : {&bTime, &bDofTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
-                    &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip, &bChannels})
+    for (auto* b :
+         {&bTime, &bDofTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
+          &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip, &bChannels})
         b->clear();
     bAlarms.clear();
     bNotes.clear();
@@ -260,8 +261,9 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     for (std::size_t j = 0; j < m_d->keptDofs.size(); ++j)
         if (const int k = m_d->keptDofs[j];
             k < 0 || std::size_t(k) >= m_d->nDof || (j > 0 && k <= m_d->keptDofs[j - 1]))
-            throw RecordError(path + ": cannot be created (the DOFs to record must be "
-                                     "ascending indices below " +
+            throw RecordError(path +
+                              ": cannot be created (the DOFs to record must be "
+                              "ascending indices below " +
                               std::to_string(m_d->nDof) + ")");
     if (m_d->keptDofs.size() == m_d->nDof)
         m_d->keptDofs.clear(); // every DOF

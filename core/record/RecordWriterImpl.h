@@ -56,8 +56,8 @@ struct RecordWriter::Impl {
     struct Batch {
         std::vector<int> bStep, bDofStep, bApplied, bThisStep, bPending, bRequested, bEventStep,
             bEventElement, bEventDecision, bEventProposal;
-        std::vector<double> bTime, bDofTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
-            bTracking, bEventTime, bEventValues, bSiteRoundTrip, bChannels;
+        std::vector<double> bTime, bDofTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux,
+            bFit, bTracking, bEventTime, bEventValues, bSiteRoundTrip, bChannels;
         ActuatorColumns::Rows actuator;
         std::vector<Alarm> bAlarms;
         std::vector<RecordNote> bNotes;

@@ -129,8 +129,8 @@ bool FastRun::englishOnly() {
 std::optional<RunRequest> FastRun::request(int argc, char** argv) {
     if (argc < 2 || std::strcmp(argv[1], "run") != 0 || std::getenv("HSMU_CONTROLLER_TOKEN"))
         return std::nullopt;
-    static const char* const kValued[] = {"out",      "scale",     "dt",          "duration",
-                                          "record-dt", "csv",      "compress",    "reconnect",
+    static const char* const kValued[] = {"out",         "scale",       "dt",       "duration",
+                                          "record-dt",   "csv",         "compress", "reconnect",
                                           "record-dofs", "record-every"};
     std::map<std::string, std::string> values;
     bool allowUnstable = false;

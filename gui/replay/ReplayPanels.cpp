@@ -8,10 +8,10 @@
 #include "gui/plots/PlotExporter.h"
 
 #include <QDir>
-#include <cmath>
 #include <QFile>
 #include <QHeaderView>
 #include <QTextStream>
+#include <cmath>
 
 #include <qcustomplot.h>
 

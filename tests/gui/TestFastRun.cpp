@@ -113,7 +113,8 @@ private slots:
     // DOFs, print and write the same, and refuse a specimen's channels with the same words.
     void recordDofOptionsAsTheQtFrontEnd() {
         QTemporaryDir dir;
-        const QString config = QStringLiteral(HSMU_SOURCE_DIR "/resources/presets/paper-condition-3.json");
+        const QString config =
+            QStringLiteral(HSMU_SOURCE_DIR "/resources/presets/paper-condition-3.json");
         const QStringList common{QStringLiteral("--duration"), QStringLiteral("2"),
                                  QStringLiteral("--record-dofs"), QStringLiteral("DOF 2"),
                                  QStringLiteral("--record-every=4")};
@@ -137,8 +138,9 @@ private slots:
         // The two records' exports: every file the same bytes; dofs.csv of steps 0, 4, ... 200
         // (dt 0.01 s).
         for (const QString& out : {fast, qt}) {
-            const auto e = clitest::hsmu({QStringLiteral("export"), out + QStringLiteral("/record.h5"),
-                                          QStringLiteral("--csv"), out + QStringLiteral("/csv")});
+            const auto e =
+                clitest::hsmu({QStringLiteral("export"), out + QStringLiteral("/record.h5"),
+                               QStringLiteral("--csv"), out + QStringLiteral("/csv")});
             QVERIFY2(e.exitCode == 0, qPrintable(clitest::report(e)));
         }
         for (const QString& file : QDir(fast + QStringLiteral("/csv")).entryList(QDir::Files))

@@ -85,25 +85,29 @@ void TestRecordDofChoice::chosenRecordEqualsTheFullRecordsRowsAndColumns_data() 
     QTest::addColumn<int>("every");
     // A specimen with UKF updating (2 DOFs): one DOF every 7 steps; a 12-storey building:
     // indices, a range and a name, every 5 steps; every DOF every 3 steps; a choice alone.
-    QTest::newRow("condition-3, DOF 1 every 7") << "paper-condition-3" << "1" << 7;
-    QTest::newRow("shear-building-12, 0-3,S9,11 every 5") << "shear-building-12" << "0-3,S9,11" << 5;
-    QTest::newRow("shear-building-12, every DOF every 3") << "shear-building-12" << "0-11" << 3;
-    QTest::newRow("shear-building-12, 2,5 every step") << "shear-building-12" << "2, 5" << 1;
+    QTest::newRow("condition-3, DOF 1 every 7") << "paper-condition-3"
+                                                << "1" << 7;
+    QTest::newRow("shear-building-12, 0-3,S9,11 every 5") << "shear-building-12"
+                                                          << "0-3,S9,11" << 5;
+    QTest::newRow("shear-building-12, every DOF every 3") << "shear-building-12"
+                                                          << "0-11" << 3;
+    QTest::newRow("shear-building-12, 2,5 every step") << "shear-building-12"
+                                                       << "2, 5" << 1;
 }
 
 void TestRecordDofChoice::chosenRecordEqualsTheFullRecordsRowsAndColumns() {
     QFETCH(QString, preset);
     QFETCH(QString, list);
     QFETCH(int, every);
-    const TestConfig cfg =
-        preset.startsWith("shear")
-            ? parseConfig([] {
-                  nlohmann::json j = shearBuildingConfig({12, true, false});
-                  j["analysis"]["duration"] = 0.4; // 401 rows
-                  return j;
-              }(),
-                          "shear-building-12")
-            : condition3(2.0);
+    const TestConfig cfg = preset.startsWith("shear")
+                               ? parseConfig(
+                                     [] {
+                                         nlohmann::json j = shearBuildingConfig({12, true, false});
+                                         j["analysis"]["duration"] = 0.4; // 401 rows
+                                         return j;
+                                     }(),
+                                     "shear-building-12")
+                               : condition3(2.0);
     DofRecording choice{configDofList(cfg, list.toStdString()), every};
     QTemporaryDir dir;
     const std::string full = dir.filePath("full.h5").toStdString();
@@ -211,18 +215,15 @@ void TestRecordDofChoice::parserReadsIndicesRangesAndNames() {
     QCOMPARE(parseDofList("3, 0-1", names, {}), (std::vector<int>{0, 1, 3}));
     QCOMPARE(parseDofList("Roof,First,1", names, {}), (std::vector<int>{1, 3}));
     QCOMPARE(parseDofList("2", names, {}), (std::vector<int>{2})); // digits: an index
-    QVERIFY(parseDofList("0-3", names, {}).empty());                // every DOF
+    QVERIFY(parseDofList("0-3", names, {}).empty());               // every DOF
     QCOMPARE(describeDofList({0, 1, 2, 5, 7, 8}), std::string("0-2,5,7-8"));
     QCOMPARE(describeDofList({}), std::string("all"));
     const struct {
         const char* list;
         const char* says;
-    } bad[] = {{"", "empty DOF list"},
-               {"1,,2", "empty item"},
-               {"4", "out of range 0..3"},
-               {"2-9", "out of range 0..3"},
-               {"3-1", "runs backwards"},
-               {"Attic", "no DOF named 'Attic'"},
+    } bad[] = {{"", "empty DOF list"},     {"1,,2", "empty item"},
+               {"4", "out of range 0..3"}, {"2-9", "out of range 0..3"},
+               {"3-1", "runs backwards"},  {"Attic", "no DOF named 'Attic'"},
                {"-1", "no DOF named '-1'"}};
     for (const auto& b : bad) {
         try {
@@ -248,7 +249,8 @@ void TestRecordDofChoice::specimenChannelsCannotBeChosen() {
 }
 
 void TestRecordDofChoice::configurationBlock() {
-    const std::string path = std::string(HSMU_SOURCE_DIR) + "/resources/presets/paper-condition-3.json";
+    const std::string path =
+        std::string(HSMU_SOURCE_DIR) + "/resources/presets/paper-condition-3.json";
     std::ifstream in(path);
     const nlohmann::json base = nlohmann::json::parse(in);
     nlohmann::json j = base;
