@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -56,7 +57,7 @@ public:
         for (const RecordColumn& c : m_columns) {
             if (c.name != name)
                 continue;
-            const auto n = std::size_t(d().rows());
+            const auto n = std::size_t(c.dofRows ? d().dofRows() : d().rows());
             RealArray a = newVector(n);
             double* out = a.mutable_data();
             py::gil_scoped_release release; // the values are the reader's, not Python's
@@ -64,8 +65,32 @@ public:
                 out[i] = c.value(d(), Eigen::Index(i));
             return a;
         }
+        const auto& dofs = d().layout.dofNames; // a DOF the run chose not to record
+        for (const char* kind : {"u ", "v ", "a "})
+            if (name.rfind(kind, 0) == 0)
+                if (const auto it = std::find(dofs.begin(), dofs.end(), name.substr(2));
+                    it != dofs.end())
+                    throw py::key_error(m_reader->path() + ": '" + name +
+                                        "': " + d().dofNotRecorded(int(it - dofs.begin())));
         throw py::key_error(m_reader->path() + ": no dataset '" + name +
                             "' (Record.names lists them)");
+    }
+
+    /// The step or time of each row of the DOF datasets (those of every row unless the run
+    /// chose or decimated its DOFs).
+    RealArray dofRowValues(bool time) const {
+        RealArray a = newVector(std::size_t(d().dofRows()));
+        double* out = a.mutable_data();
+        for (int k = 0; k < d().dofRows(); ++k)
+            out[k] = time ? d().dofTime(k) : double(d().dofStep(k));
+        return a;
+    }
+
+    std::vector<std::string> recordedDofs() const {
+        std::vector<std::string> out;
+        for (Eigen::Index j = 0; j < d().u.cols(); ++j)
+            out.push_back(d().layout.dofNames[std::size_t(d().dofIndex(int(j)))]);
+        return out;
     }
 
     py::dict data() const {
@@ -218,7 +243,11 @@ deformation", "<element> force", "<element> commanded", "<specimen> actuator com
 "<site> round trip", and with online updating "<parameter>", "stddev <parameter>",
 "auxiliary_force", "fit_error", ... Record.names lists them, Record.units gives each one's
 unit ("[-]" dimensionless: "-"; "" for counts), record[name] returns one, record.data all.
-Raises OSError with the program's message for a missing, foreign or damaged file.
+Raises OSError with the program's message for a missing, foreign or damaged file. A run
+that chose or decimated its numerical DOFs (hsmu run --record-dofs / --record-every, the
+configuration's "record" block) has "u/v/a <dof>" datasets of the DOFs it kept only, one
+value per row of dof_steps / dof_time; a DOF it did not keep raises KeyError naming the DOF
+and the option.
 
 Example:
     rec = hsmu.Record("out/paper-condition-3/record.h5")
@@ -262,6 +291,19 @@ Example:
                                "None for a site of a record written before it was kept "
                                "(docs/security.md).")
         .def_property_readonly("dofs", &Record::dofs, "The DOF names.")
+        .def_property_readonly("recorded_dofs", &Record::recordedDofs,
+                               "The DOFs whose u, v, a the record holds (all of `dofs` unless "
+                               "the run chose some: hsmu run --record-dofs, record.dofs).")
+        .def_property_readonly(
+            "record_every", [](const Record& r) { return r.d().meta.dofRecording.every; },
+            "The stride of the DOF datasets' rows (1: every step; hsmu run --record-every).")
+        .def_property_readonly(
+            "dof_steps", [](const Record& r) { return r.dofRowValues(false); },
+            "The step of each row of the \"u/v/a <dof>\" datasets (float64; the \"step\" "
+            "dataset's unless the run decimated its DOFs).")
+        .def_property_readonly(
+            "dof_time", [](const Record& r) { return r.dofRowValues(true); },
+            "The test time [s] of each row of the \"u/v/a <dof>\" datasets.")
         .def_property_readonly("updating", &Record::updating,
                                "None, or {specimen, method, parameters} of online updating.")
         .def("refresh", &Record::refresh,

@@ -1841,6 +1841,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>--compress: expected a whole number from 0 to 9, found '%1'</source>
         <translation>--compress: expected a whole number from 0 to 9, found '%1'</translation>
     </message>
+    <message>
+        <source>Numerical DOFs the record keeps: indices, ranges and names, e.g. 0-9,100,Roof (default: every DOF). A specimen's channels are always recorded in full.</source>
+        <translation>Numerical DOFs the record keeps: indices, ranges and names, e.g. 0-9,100,Roof (default: every DOF). A specimen's channels are always recorded in full.</translation>
+    </message>
+    <message>
+        <source>Keep the numerical DOFs' rows of every N-th step only (default 1). A specimen's channels are always recorded at every step.</source>
+        <translation>Keep the numerical DOFs' rows of every N-th step only (default 1). A specimen's channels are always recorded at every step.</translation>
+    </message>
+    <message>
+        <source>--record-every: expected a whole number from 1 to %1, found '%2'</source>
+        <translation>--record-every: expected a whole number from 1 to %1, found '%2'</translation>
+    </message>
 </context>
 <context>
     <name>RunReport</name>
@@ -1883,6 +1895,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  outputs: %1</source>
         <translation>  outputs: %1</translation>
+    </message>
+    <message>
+        <source>  record: DOFs %1 (%2 of %3), every %4 steps; elements, specimens and updating at every step</source>
+        <translation>  record: DOFs %1 (%2 of %3), every %4 steps; elements, specimens and updating at every step</translation>
     </message>
     <message>
         <source>... %1 more in summary.json</source>

@@ -1841,6 +1841,18 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>--compress: expected a whole number from 0 to 9, found &apos;%1&apos;</source>
         <translation>--compress: se esperaba un número entero de 0 a 9, se encontró &apos;%1&apos;</translation>
     </message>
+    <message>
+        <source>Numerical DOFs the record keeps: indices, ranges and names, e.g. 0-9,100,Roof (default: every DOF). A specimen&apos;s channels are always recorded in full.</source>
+        <translation>DOF numéricos que guarda el registro: índices, rangos y nombres, p. ej. 0-9,100,Roof (por defecto: todos los DOF). Los canales de un espécimen se registran siempre completos.</translation>
+    </message>
+    <message>
+        <source>Keep the numerical DOFs&apos; rows of every N-th step only (default 1). A specimen&apos;s channels are always recorded at every step.</source>
+        <translation>Guarda las filas de los DOF numéricos solo cada N pasos (por defecto 1). Los canales de un espécimen se registran siempre en cada paso.</translation>
+    </message>
+    <message>
+        <source>--record-every: expected a whole number from 1 to %1, found &apos;%2&apos;</source>
+        <translation>--record-every: se esperaba un número entero de 1 a %1, se encontró &apos;%2&apos;</translation>
+    </message>
 </context>
 <context>
     <name>RunReport</name>
@@ -1883,6 +1895,10 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  outputs: %1</source>
         <translation>  salidas: %1</translation>
+    </message>
+    <message>
+        <source>  record: DOFs %1 (%2 of %3), every %4 steps; elements, specimens and updating at every step</source>
+        <translation>  registro: DOF %1 (%2 de %3), cada %4 pasos; elementos, especímenes y actualización en cada paso</translation>
     </message>
     <message>
         <source>... %1 more in summary.json</source>

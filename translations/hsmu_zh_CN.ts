@@ -1841,6 +1841,18 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <source>--compress: expected a whole number from 0 to 9, found &apos;%1&apos;</source>
         <translation>--compress：应为 0 到 9 的整数，实际为“%1”</translation>
     </message>
+    <message>
+        <source>Numerical DOFs the record keeps: indices, ranges and names, e.g. 0-9,100,Roof (default: every DOF). A specimen&apos;s channels are always recorded in full.</source>
+        <translation>记录保存的数值自由度：索引、范围和名称，例如 0-9,100,Roof（默认：全部自由度）。试件的通道总是完整记录。</translation>
+    </message>
+    <message>
+        <source>Keep the numerical DOFs&apos; rows of every N-th step only (default 1). A specimen&apos;s channels are always recorded at every step.</source>
+        <translation>数值自由度的行仅每 N 步保存一次（默认 1）。试件的通道总是每步记录。</translation>
+    </message>
+    <message>
+        <source>--record-every: expected a whole number from 1 to %1, found &apos;%2&apos;</source>
+        <translation>--record-every：应为 1 到 %1 的整数，实际为“%2”</translation>
+    </message>
 </context>
 <context>
     <name>RunReport</name>
@@ -1883,6 +1895,10 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
     <message>
         <source>  outputs: %1</source>
         <translation>  输出：%1</translation>
+    </message>
+    <message>
+        <source>  record: DOFs %1 (%2 of %3), every %4 steps; elements, specimens and updating at every step</source>
+        <translation>  记录：自由度 %1（%3 个中的 %2 个），每 %4 步；单元、试件和更新每步记录</translation>
     </message>
     <message>
         <source>... %1 more in summary.json</source>

@@ -3,6 +3,7 @@
 #include "core/config/JsonNesting.h"
 #include "core/config/Link2dConfig.h"
 #include "core/config/NumericalSite.h"
+#include "core/config/RecordConfig.h"
 #include "core/config/RthsConfig.h"
 #include "core/config/UpdatingConfig.h"
 
@@ -213,7 +214,7 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
     // "controller": the link fields here (LinkConfig); the rest is hsmu-controller's
     // (comms/controller/ControllerSettings.h).
     root.allowOnly({"name", "description", "units", "structure", "groundMotion", "analysis",
-                    "controller", "sites", "updating", "tls"});
+                    "controller", "sites", "updating", "tls", "record"});
     TestConfig cfg;
     cfg.sourcePath = sourceName;
     cfg.raw = document;
@@ -333,6 +334,7 @@ TestConfig parseConfig(const nlohmann::json& document, const std::string& source
     }
     if (root.has("updating"))
         cfg.updating = parseUpdating(root.child("updating"), cfg);
+    cfg.record = parseRecordSection(root, cfg);
     return cfg;
 }
 

@@ -8,6 +8,7 @@
 #include "core/experimental/ActuatorChannel.h"
 #include "core/experimental/SafetyLimits.h"
 #include "core/experimental/VirtualSpecimen.h"
+#include "core/output/DofRecording.h"
 #include "core/updating/Inspector.h"
 #include "core/identification/ParameterSet.h"
 #include "core/updating/Reporter.h"
@@ -196,6 +197,9 @@ struct TestConfig {
     UpdatingSpec updating;
     LinkSpec link; ///< the console's link protocol (the "controller" section)
     std::vector<SiteSpec> sites; ///< the "sites" section (empty: one site, "controller")
+    /// The "record" block: the numerical DOFs the record keeps and how often
+    /// (core/config/RecordConfig.h); every DOF at every step by default.
+    DofRecording record;
     nlohmann::json raw; ///< the document as read (for records and reports)
 };
 

@@ -103,6 +103,11 @@ nlohmann::json summaryWithoutNamedBlocks(const HybridTest& test, const RunStatis
     const auto reason = holdReason(test);
     j["hold_reason"] = reason ? nlohmann::json(*reason) : nlohmann::json(nullptr);
     j["link_security"] = linkSecurityJson(layout.sites, info.siteSecurity);
+    if (const DofRecording& r = info.dofRecording; !r.full())
+        j["record_dofs"] = {{"dofs", describeDofList(r.dofs)},
+                            {"recorded", r.dofs.empty() ? layout.dofNames.size() : r.dofs.size()},
+                            {"of", layout.dofNames.size()},
+                            {"every", r.every}};
     nlohmann::json tracking = nlohmann::json::object();
     for (std::size_t i = 0; i < layout.elements.size(); ++i)
         if (const rths::TrackingReport* t = stats.tracking(i, test.dt()))

@@ -13,6 +13,8 @@
 //   link_security {site: "tls", "plaintext-loopback", "insecure-plaintext", "builtin", or null
 //     where the run did not say}: how the console reached each site of the experimental
 //     elements (the record's /sites `security`, docs/security.md),
+//   record_dofs {dofs ("0-99,200" or "all"), recorded, of, every} (only when the record chose
+//     or decimated its numerical DOFs: docs/recording.md "Chosen and decimated DOFs"),
 //   tracking {specimen: {J1_ms, J2_percent, J3_percent, frequency_evaluation {amplitude,
 //     delay_ms, frequency_Hz}, tracking_indicator {value, unit}}}: each specimen's commanded
 //     against measured deformation over the committed steps (docs/rths.md, "Tracking
@@ -27,6 +29,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/output/DofRecording.h"
 #include "core/output/RunLayout.h"
 
 #include <optional>
@@ -46,6 +49,9 @@ struct RunInfo {
     std::string configFile; ///< path or "preset <name>"
     double wallTimeS = 0.0; ///< wall-clock time spent stepping [s]
     SiteSecurity siteSecurity;  ///< how each site was reached (summary.json "link_security")
+    /// The numerical DOFs the record kept and how often (summary.json "record_dofs", only
+    /// when not full(): docs/recording.md "Chosen and decimated DOFs").
+    DofRecording dofRecording;
 };
 
 /// {site: security} of the sites (securityOfSites; a site `given` does not name: null).

@@ -58,6 +58,12 @@ std::string recordMetadataChecksum(const RecordMetadata& m, const RunLayout& l) 
         if (!l.updating->basicDof.empty()) // records without it keep their checksum
             f.text(l.updating->basicDof);
     }
+    if (!m.dofRecording.full()) { // records of every DOF at every step keep their checksum
+        f.text("dofs");
+        for (const int k : m.dofRecording.dofs)
+            f.number(double(k));
+        f.number(double(m.dofRecording.every));
+    }
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(f.h));
     return buf;

@@ -19,10 +19,16 @@ RecordTable dofs(const RecordData& r) {
     RecordTable t{"dofs.csv", {}};
     const std::tuple<const char*, const char*, Matrix> kinds[] = {
         {"u", "m", &RecordData::u}, {"v", "m/s", &RecordData::v}, {"a", "m/s^2", &RecordData::a}};
+    t.dofRows = !r.meta.dofRecording.full();
+    const std::size_t kept = r.meta.dofRecording.dofs.empty() ? r.layout.dofNames.size()
+                                                              : r.meta.dofRecording.dofs.size();
     for (const auto& [kind, unit, m] : kinds)
-        for (std::size_t j = 0; j < r.layout.dofNames.size(); ++j)
-            t.columns.push_back(matrixColumn(std::string(kind) + " " + r.layout.dofNames[j], unit,
-                                             m, Eigen::Index(j)));
+        for (std::size_t j = 0; j < kept; ++j) {
+            const std::string& dof = r.layout.dofNames[std::size_t(r.dofIndex(int(j)))];
+            t.columns.push_back(
+                matrixColumn(std::string(kind) + " " + dof, unit, m, Eigen::Index(j)));
+            t.columns.back().dofRows = t.dofRows;
+        }
     return t;
 }
 
@@ -129,6 +135,16 @@ RecordColumn stepColumn() {
 
 RecordColumn timeColumn() {
     return {"time", "s", false, [](const RecordData& d, Eigen::Index i) { return d.time[i]; }};
+}
+
+RecordColumn dofStepColumn() {
+    return {"step", "", true,
+            [](const RecordData& d, Eigen::Index i) { return double(d.dofStep(int(i))); }, true};
+}
+
+RecordColumn dofTimeColumn() {
+    return {"time", "s", false,
+            [](const RecordData& d, Eigen::Index i) { return d.dofTime(int(i)); }, true};
 }
 
 std::vector<RecordTable> recordTables(const RecordData& r) {

@@ -5,7 +5,9 @@
 // (python/PyRecord, docs/python.md): the one list of names, units and values for both.
 //
 //   steps.csv      ground_acceleration [m/s^2]
-//   dofs.csv       u <dof> [m] ..., v <dof> [m/s] ..., a <dof> [m/s^2] ...
+//   dofs.csv       u <dof> [m] ..., v <dof> [m/s] ..., a <dof> [m/s^2] ... (the DOFs the
+//                  record kept; a record that chose or decimated its DOFs has its own rows:
+//                  RecordTable::dofRows, docs/recording.md "Chosen and decimated DOFs")
 //   elements.csv   per element: <name> deformation, <name> force, <name> commanded [its units]
 //   actuators.csv  per specimen: <name> actuator commanded, <name> actuator measured [its
 //                  deformation unit], <name> held ticks [-], <name> flags [-] (records with
@@ -35,18 +37,25 @@ struct RecordColumn {
     std::string name;     ///< as the CSV header names it, without the unit
     std::string unit;     ///< the console unit (above)
     bool integer = false; ///< a whole number (written without a decimal point)
-    /// The value at row i (0 <= i < RecordData::rows()).
+    /// The value at row i (0 <= i < RecordData::rows(), or < dofRows() with dofRows).
     std::function<double(const RecordData&, Eigen::Index i)> value;
+    /// A column of a record's chosen or decimated DOFs: its rows are RecordData's DOF rows
+    /// (steps dofStep(i)), not every step.
+    bool dofRows = false;
 };
 
 struct RecordTable {
     std::string file;                  ///< "steps.csv", "dofs.csv", ...
     std::vector<RecordColumn> columns; ///< after step and time
+    bool dofRows = false;              ///< its rows are the DOF rows (dofStepColumn, dofTimeColumn)
 };
 
 /// "step" ("", integer) and "time" [s].
 RecordColumn stepColumn();
 RecordColumn timeColumn();
+/// The same for the rows of a record's chosen or decimated DOFs (dofStep(i), dofTime(i)).
+RecordColumn dofStepColumn();
+RecordColumn dofTimeColumn();
 
 /// The tables above that the record has, in that order.
 std::vector<RecordTable> recordTables(const RecordData& r);

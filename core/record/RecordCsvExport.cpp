@@ -73,7 +73,8 @@ std::string number(double v) {
 void writeTable(const RecordData& r, const RecordTable& table, const std::filesystem::path& dir,
                 std::vector<std::string>& written, const UnitMap& u) {
     CsvFile f((dir / table.file).string(), written);
-    const RecordColumn step = stepColumn(), time = timeColumn();
+    const RecordColumn step = table.dofRows ? dofStepColumn() : stepColumn();
+    const RecordColumn time = table.dofRows ? dofTimeColumn() : timeColumn();
     std::vector<const RecordColumn*> columns{&step, &time};
     for (const RecordColumn& c : table.columns)
         columns.push_back(&c);
@@ -81,7 +82,8 @@ void writeTable(const RecordData& r, const RecordTable& table, const std::filesy
         f.column(c->name, u.symbol(c->unit));
     f.endHeader();
     std::vector<std::string> row;
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
+    const Eigen::Index rows = table.dofRows ? r.dofRows() : r.rows();
+    for (Eigen::Index i = 0; i < rows; ++i) {
         row.clear();
         for (const RecordColumn* c : columns) {
             const double v = c->value(r, i);

@@ -4,6 +4,8 @@
 //
 //   steps.csv          step, time [s], ground_acceleration [m/s^2]
 //   dofs.csv           step, time [s], u <dof> [m] ..., v <dof> [m/s] ..., a <dof> [m/s^2] ...
+//                      (the DOFs recorded; a record of chosen or decimated DOFs: one row per
+//                      step kept, with its true step and time)
 //   elements.csv       step, time [s], then per element: <name> deformation [unit],
 //                      <name> force [unit], <name> commanded [unit]
 //   actuators.csv      step, time [s], then per specimen: <name> actuator commanded [unit],

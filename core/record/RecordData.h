@@ -6,6 +6,7 @@
 // layout.elements[j].units; identified parameters in the law's own units (normalized by
 // uRef / fRef for Bouc-Wen).
 
+#include "core/output/DofRecording.h"
 #include "core/output/RunLayout.h"
 #include "core/util/Alarm.h"
 
@@ -32,6 +33,10 @@ struct RecordMetadata {
     /// /sites' `security`, one per layout.sites ("tls", "plaintext-loopback",
     /// "insecure-plaintext", "builtin"); empty in records written before it was kept.
     std::vector<std::string> siteSecurity;
+    /// /dofs' `dof_indices` and `every` (docs/recording.md "Chosen and decimated DOFs"): the
+    /// DOFs the columns of u, v, a are and the stride of their rows; full() in a record of
+    /// every DOF at every step (the default, and every record written before the option).
+    DofRecording dofRecording;
 };
 
 /// A parameter update applied to a target element (/updating/events).
@@ -60,7 +65,15 @@ struct RecordData {
     std::vector<int> steps;             ///< [N] step index
     Eigen::VectorXd time;               ///< [N] [s]
     Eigen::VectorXd groundAcceleration; ///< [N] [m/s^2]
-    Eigen::MatrixXd u, v, a;            ///< [N x nDof] [m], [m/s], [m/s^2]
+    /// [Nd x nKept] [m], [m/s], [m/s^2]: the numerical DOFs' matrices. Column j is DOF
+    /// dofIndex(j) (every DOF, in layout.dofNames order, unless meta.dofRecording chose some);
+    /// row k is step dofStep(k) (Nd = N unless decimated: then the steps that are multiples
+    /// of meta.dofRecording.every).
+    Eigen::MatrixXd u, v, a;
+    /// [Nd] the step and test time [s] of each row of u, v, a when the record chose or
+    /// decimated its DOFs (/dofs/step, /dofs/time); empty otherwise (those of steps, time).
+    std::vector<int> dofSteps;
+    Eigen::VectorXd dofTimes;
     Eigen::MatrixXd deformation;        ///< [N x nElem] element units (measured for specimens)
     Eigen::MatrixXd force;              ///< [N x nElem] element units (measured for specimens)
     Eigen::MatrixXd commanded;          ///< [N x nElem] NaN for numerical elements
@@ -95,6 +108,26 @@ struct RecordData {
     std::vector<Alarm> alarms; ///< in the order raised
 
     int rows() const { return int(steps.size()); }
+
+    // The numerical DOFs' rows and columns (docs/recording.md "Chosen and decimated DOFs").
+    int dofRows() const { return dofSteps.empty() ? rows() : int(dofSteps.size()); }
+    int dofStep(int k) const {
+        return dofSteps.empty() ? steps[std::size_t(k)] : dofSteps[std::size_t(k)];
+    }
+    double dofTime(int k) const { return dofSteps.empty() ? time(k) : dofTimes(k); }
+    /// The DOF (index into layout.dofNames) of column j of u, v, a.
+    int dofIndex(int j) const {
+        const auto& kept = meta.dofRecording.dofs;
+        return kept.empty() ? j : kept[std::size_t(j)];
+    }
+    /// The column of u, v, a holding DOF `dof`; -1 when the record did not keep it.
+    int dofColumn(int dof) const;
+    /// The row of u, v, a holding the step of row `row` (of steps); -1 when decimated away.
+    int dofRowOf(int row) const;
+    /// Why DOF `dof` has no column: "DOF 'NAME' (index I) was not recorded: the run kept DOFs
+    /// LIST every N steps (hsmu run --record-dofs / --record-every, the configuration's
+    /// record.dofs / record.every)".
+    std::string dofNotRecorded(int dof) const;
 };
 
 } // namespace hsmu

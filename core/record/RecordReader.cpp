@@ -74,6 +74,8 @@ struct RecordReader::Impl {
     Column actCmd, actMeasured, actTicks, actFlags; // /elements/actuator, when present
     bool actuator = false;
     Column channels; // /elements/channels, when the run had multi-DOF elements
+    Column dofStep, dofTime; // /dofs/step, /dofs/time: the record chose or decimated its DOFs
+    bool dofsChosen = false;
     bool v2 = false;                        // schema 2 datasets present
     std::vector<std::string> decisionCodes; // /updating/events/decision "codes" (if present)
 
@@ -81,7 +83,10 @@ struct RecordReader::Impl {
     void readMetadata();
     Column column(const char* name, int cols);
     std::vector<Column*> stepColumns();
+    /// The rows of /dofs when they are chosen or decimated (their own row count), else none.
+    std::vector<Column*> dofColumns();
     int readNewRows();
+    void readNewDofRows();
     void readNewAlarms();
     void readNewEvents();
     void readNewNotes();
@@ -123,7 +128,10 @@ Column RecordReader::Impl::column(const char* name, int cols) {
 }
 
 std::vector<Column*> RecordReader::Impl::stepColumns() {
-    std::vector<Column*> c = {&step, &time, &ag, &u, &v, &a, &def, &force, &cmd};
+    std::vector<Column*> c = {&step, &time, &ag, &def, &force, &cmd};
+    if (!dofsChosen)
+        for (Column* x : {&u, &v, &a})
+            c.push_back(x);
     if (actuator)
         for (Column* x : {&actCmd, &actMeasured, &actTicks, &actFlags})
             c.push_back(x);
@@ -140,11 +148,19 @@ std::vector<Column*> RecordReader::Impl::stepColumns() {
     return c;
 }
 
+std::vector<Column*> RecordReader::Impl::dofColumns() {
+    if (!dofsChosen)
+        return {};
+    return {&dofStep, &dofTime, &u, &v, &a};
+}
+
 void RecordReader::Impl::refreshDatasets() {
     if (!swmr)
         return;
     auto columns = stepColumns();
     for (Column* c : logColumns())
+        columns.push_back(c);
+    for (Column* c : dofColumns())
         columns.push_back(c);
     for (Column* c : columns)
         h5::check(H5Drefresh(c->dset.get()), path,
@@ -196,8 +212,24 @@ void RecordReader::Impl::readMetadata() {
         const h5::Id g =
             h5::check(H5Gopen2(root, "dofs", H5P_DEFAULT), w, "damaged record (no group /dofs)");
         layout.dofNames = h5::readStringsAttr(g.get(), "names", w);
+        // Chosen or decimated DOFs (docs/recording.md): absent in a record of every DOF.
+        dofsChosen = h5::hasAttr(g.get(), "dof_indices");
+        if (dofsChosen) {
+            DofRecording& r = m.dofRecording;
+            r.dofs = h5::readIntsAttr(g.get(), "dof_indices", w);
+            r.every = h5::readIntAttr(g.get(), "every", w);
+            for (std::size_t j = 0; j < r.dofs.size(); ++j)
+                if (r.dofs[j] < 0 || std::size_t(r.dofs[j]) >= layout.dofNames.size() ||
+                    (j > 0 && r.dofs[j] <= r.dofs[j - 1]))
+                    throw RecordError(path + ": damaged record (/dofs dof_indices)");
+            if (r.every < 1 || r.dofs.empty())
+                throw RecordError(path + ": damaged record (/dofs every or dof_indices)");
+            if (r.dofs.size() == layout.dofNames.size())
+                r.dofs.clear(); // every DOF, decimated
+        }
     }
-    const int nDof = int(layout.dofNames.size());
+    const int nDof = dofsChosen && !m.dofRecording.dofs.empty() ? int(m.dofRecording.dofs.size())
+                                                                : int(layout.dofNames.size());
     {
         const h5::Id g = h5::check(H5Gopen2(root, "elements", H5P_DEFAULT), w,
                                    "damaged record (no group /elements)");
@@ -227,6 +259,10 @@ void RecordReader::Impl::readMetadata() {
     u = column("/dofs/u", nDof);
     v = column("/dofs/v", nDof);
     a = column("/dofs/a", nDof);
+    if (dofsChosen) {
+        dofStep = column("/dofs/step", -1);
+        dofTime = column("/dofs/time", -1);
+    }
     cmd = column("/elements/commanded", nElem);
     if (H5Lexists(root, "sites", H5P_DEFAULT) > 0) {
         const h5::Id g =
@@ -358,15 +394,18 @@ int RecordReader::Impl::readNewRows() {
     for (const Column* c : columns)
         n = std::min(n, c->rows());
     const hsize_t r0 = hsize_t(data.rows());
+    readNewDofRows();
     if (n <= r0)
         return 0;
     const std::string& w = path;
     appendRows(data.steps, step, r0, n, w);
     appendRows(data.time, time, r0, n, w);
     appendRows(data.groundAcceleration, ag, r0, n, w);
-    appendRows(data.u, u, r0, n, w);
-    appendRows(data.v, v, r0, n, w);
-    appendRows(data.a, a, r0, n, w);
+    if (!dofsChosen) {
+        appendRows(data.u, u, r0, n, w);
+        appendRows(data.v, v, r0, n, w);
+        appendRows(data.a, a, r0, n, w);
+    }
     appendRows(data.deformation, def, r0, n, w);
     appendRows(data.force, force, r0, n, w);
     appendRows(data.commanded, cmd, r0, n, w);
@@ -394,6 +433,24 @@ int RecordReader::Impl::readNewRows() {
         }
     }
     return int(n - r0);
+}
+
+void RecordReader::Impl::readNewDofRows() {
+    const auto columns = dofColumns();
+    if (columns.empty())
+        return;
+    hsize_t n = columns.front()->rows();
+    for (const Column* c : columns)
+        n = std::min(n, c->rows());
+    const hsize_t r0 = hsize_t(data.dofSteps.size());
+    if (n <= r0)
+        return;
+    const std::string& w = path;
+    appendRows(data.dofSteps, dofStep, r0, n, w);
+    appendRows(data.dofTimes, dofTime, r0, n, w);
+    appendRows(data.u, u, r0, n, w);
+    appendRows(data.v, v, r0, n, w);
+    appendRows(data.a, a, r0, n, w);
 }
 
 void RecordReader::Impl::readNewAlarms() {
@@ -477,6 +534,8 @@ void RecordReader::Impl::readNewNotes() {
 void RecordReader::Impl::walkChunkIndexes() {
     std::vector<Column*> all = stepColumns();
     for (Column* c : logColumns())
+        all.push_back(c);
+    for (Column* c : dofColumns())
         all.push_back(c);
     for (Column* c : all) {
         const std::string what = "damaged or truncated record (the chunk index of " + c->name;

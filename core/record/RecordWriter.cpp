@@ -51,11 +51,12 @@ void pushValues(std::vector<double>& out, const std::vector<double>& x, std::siz
 } // namespace
 
 void RecordWriter::Impl::Batch::clear() {
-    for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep,
+    for (auto* b : {&bStep, &bDofStep, &bApplied, &bThisStep, &bPending, &bRequested, &bEventStep,
                     &bEventElement, &bEventDecision, &bEventProposal})
         b->clear();
-    for (auto* b : {&bTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
-                    &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip, &bChannels})
+    for (auto* b :
+         {&bTime, &bDofTime, &bAg, &bU, &bV, &bA, &bDef, &bForce, &bCmd, &bPar, &bSd, &bAux, &bFit,
+          &bTracking, &bEventTime, &bEventValues, &bSiteRoundTrip, &bChannels})
         b->clear();
     bAlarms.clear();
     bNotes.clear();
@@ -65,9 +66,9 @@ void RecordWriter::Impl::Batch::clear() {
 void RecordWriter::Impl::Batch::reserve(std::size_t rows, std::size_t nDof, std::size_t nElem,
                                         std::size_t nPar, std::size_t nSite,
                                         std::size_t nChan) {
-    for (auto* b : {&bStep, &bApplied, &bThisStep, &bPending, &bRequested})
+    for (auto* b : {&bStep, &bDofStep, &bApplied, &bThisStep, &bPending, &bRequested})
         b->reserve(rows);
-    for (auto* b : {&bTime, &bAg, &bAux, &bFit})
+    for (auto* b : {&bTime, &bDofTime, &bAg, &bAux, &bFit})
         b->reserve(rows);
     for (auto* b : {&bU, &bV, &bA})
         b->reserve(rows * nDof);
@@ -87,9 +88,17 @@ void RecordWriter::Impl::writeBuffers(const Batch& b) {
         step.append(b.bStep.data(), n);
         time.append(b.bTime.data(), n);
         ag.append(b.bAg.data(), n);
-        u.append(b.bU.data(), n);
-        v.append(b.bV.data(), n);
-        a.append(b.bA.data(), n);
+        if (!dofsChosen) {
+            u.append(b.bU.data(), n);
+            v.append(b.bV.data(), n);
+            a.append(b.bA.data(), n);
+        } else if (const hsize_t kept = b.bDofStep.size(); kept > 0) {
+            dofStep.append(b.bDofStep.data(), kept);
+            dofTime.append(b.bDofTime.data(), kept);
+            u.append(b.bU.data(), kept);
+            v.append(b.bV.data(), kept);
+            a.append(b.bA.data(), kept);
+        }
         def.append(b.bDef.data(), n);
         force.append(b.bForce.data(), n);
         cmd.append(b.bCmd.data(), n);
@@ -228,7 +237,9 @@ std::vector<h5::Extendible*> RecordWriter::Impl::datasets() {
             &noteStep,
             &noteText,
             &siteRoundTrip,
-            &channels};
+            &channels,
+            &dofStep,
+            &dofTime};
 }
 
 int RecordWriter::batchRowsFor(std::size_t nDof, std::size_t nElem) {
@@ -245,16 +256,30 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->path = path;
     m_d->layout = layout;
     m_d->nDof = layout.dofNames.size();
+    m_d->keptDofs = start.dofRecording.dofs;
+    m_d->every = std::max(1, start.dofRecording.every);
+    for (std::size_t j = 0; j < m_d->keptDofs.size(); ++j)
+        if (const int k = m_d->keptDofs[j];
+            k < 0 || std::size_t(k) >= m_d->nDof || (j > 0 && k <= m_d->keptDofs[j - 1]))
+            throw RecordError(path +
+                              ": cannot be created (the DOFs to record must be "
+                              "ascending indices below " +
+                              std::to_string(m_d->nDof) + ")");
+    if (m_d->keptDofs.size() == m_d->nDof)
+        m_d->keptDofs.clear(); // every DOF
+    m_d->dofsChosen = !m_d->keptDofs.empty() || m_d->every > 1;
+    m_d->nKept = m_d->keptDofs.empty() ? m_d->nDof : m_d->keptDofs.size();
     m_d->nElem = layout.elements.size();
     m_d->nPar = layout.updating ? layout.updating->parameters.size() : 0;
     m_d->nSite = layout.sites.size();
     m_d->nChan = layout.channels.size();
     const h5::QuietErrors quiet;
     m_d->create(start); // on a throw, Impl's handles close the partial file
+    // The full record's batch (chosen DOFs: no more memory, the element chunks as before).
     m_d->batchRows = batchRowsFor(m_d->nDof, m_d->nElem);
     const std::size_t rows = std::size_t(m_d->batchRows);
     for (Impl::Batch* b : {&m_d->fill, &m_d->out})
-        b->reserve(rows, m_d->nDof, m_d->nElem, m_d->nPar, m_d->nSite, m_d->nChan);
+        b->reserve(rows, m_d->nKept, m_d->nElem, m_d->nPar, m_d->nSite, m_d->nChan);
     m_d->thread = std::make_unique<RecordThread>([d = m_d.get()] { d->writeOut(); });
 }
 
@@ -270,9 +295,13 @@ void RecordWriter::onStep(const StepRecord& r) {
     d.fill.bStep.push_back(r.step);
     d.fill.bTime.push_back(r.time);
     d.fill.bAg.push_back(r.groundAcceleration);
-    pushVector(d.fill.bU, r.u, d.nDof);
-    pushVector(d.fill.bV, r.v, d.nDof);
-    pushVector(d.fill.bA, r.a, d.nDof);
+    if (!d.dofsChosen) {
+        pushVector(d.fill.bU, r.u, d.nDof);
+        pushVector(d.fill.bV, r.v, d.nDof);
+        pushVector(d.fill.bA, r.a, d.nDof);
+    } else if (r.step % d.every == 0) {
+        d.bufferChosenDofs(r);
+    }
     for (std::size_t i = 0; i < d.nElem; ++i) {
         const ElementSample s = i < r.elements.size() ? r.elements[i] : ElementSample{};
         d.fill.bDef.push_back(s.deformation);
@@ -320,6 +349,19 @@ void RecordWriter::writeAlarms(const std::vector<Alarm>& alarms) {
 
 void RecordWriter::trackAlarms(const std::vector<Alarm>* alarms) {
     m_d->tracked = alarms;
+}
+
+void RecordWriter::Impl::bufferChosenDofs(const StepRecord& r) {
+    fill.bDofStep.push_back(r.step);
+    fill.bDofTime.push_back(r.time);
+    const auto at = [](const Eigen::VectorXd& x, int k) { return k < x.size() ? x[k] : kNaN; };
+    const bool all = keptDofs.empty();
+    for (std::size_t j = 0; j < nKept; ++j)
+        fill.bU.push_back(at(r.u, all ? int(j) : keptDofs[j]));
+    for (std::size_t j = 0; j < nKept; ++j)
+        fill.bV.push_back(at(r.v, all ? int(j) : keptDofs[j]));
+    for (std::size_t j = 0; j < nKept; ++j)
+        fill.bA.push_back(at(r.a, all ? int(j) : keptDofs[j]));
 }
 
 void RecordWriter::Impl::bufferEvent(const UpdateEvent& ev) {

@@ -43,6 +43,7 @@
 // been joined; core uses HDF5 from no other thread.
 
 #include "core/output/RunLayout.h"
+#include "core/output/DofRecording.h"
 #include "core/record/RecordSchema.h"
 #include "core/util/Alarm.h"
 #include "core/experiment/StepRecord.h"
@@ -69,6 +70,12 @@ struct RecordStart {
     /// attribute `security` in the order of RunLayout::sites (securityOfSites,
     /// docs/recording.md); empty: not written.
     SiteSecurity siteSecurity{};
+    /// The numerical DOFs /dofs/u, v, a keep and the stride of their rows (issue 27,
+    /// docs/recording.md "Chosen and decimated DOFs"); full() (the default): every DOF at
+    /// every step, the record unchanged. Otherwise /dofs gets the attributes `dof_indices`
+    /// and `every` and the datasets /dofs/step and /dofs/time of the rows kept. Nothing else
+    /// is ever decimated. Indices must be ascending, unique and < the layout's DOFs.
+    DofRecording dofRecording{};
 };
 
 class RecordWriter final : public StepObserver {

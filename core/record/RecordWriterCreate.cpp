@@ -6,6 +6,7 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
+#include <numeric>
 
 namespace hsmu {
 
@@ -32,7 +33,7 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     // batch's chunks are not read back), not HDF5's default 1 MiB: rows are only appended, so a written chunk is never
     // read back, and with 1 MiB a 31,160-step SDOF run kept 3.2 MB of written chunks (issue
     // 27). Set on the file: H5Fstart_swmr_write() reopens the datasets with the file's cache.
-    const long widest = long(std::max({nDof, nElem, nPar, nSite, nChan,
+    const long widest = long(std::max({nKept, nElem, nPar, nSite, nChan,
                                        std::size_t(recordschema::kTrackingColumns)}));
     const std::size_t chunkBytes = std::size_t(
         long(recordschema::chunkRowsFor(int(widest), int(sizeof(double)))) * widest * 8);
@@ -56,6 +57,8 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     meta.dt = start.dt;
     meta.run = start.run;
     meta.numerics = std::string("UKF sigma points: ") + BoucWen::fastBatchMathName();
+    if (dofsChosen)
+        meta.dofRecording = {keptDofs, every};
     h5::writeAttr(root, "program", meta.program, w);
     h5::writeAttr(root, "program_version", meta.programVersion, w);
     h5::writeAttr(root, "start_time", meta.startTime, w);
@@ -88,13 +91,31 @@ void RecordWriter::Impl::create(const RecordStart& start) {
     {
         const h5::Id g = group("dofs");
         h5::writeAttr(g.get(), "names", layout.dofNames, w);
-        const int n = int(nDof);
+        const int n = int(nKept);
         const int rows = recordschema::kChunkRows, z = start.deflate;
+        std::vector<std::string> kept = layout.dofNames;
+        if (dofsChosen) { // docs/recording.md "Chosen and decimated DOFs"
+            if (!keptDofs.empty()) {
+                kept.clear();
+                for (const int k : keptDofs)
+                    kept.push_back(layout.dofNames[std::size_t(k)]);
+            }
+            std::vector<int> indices = keptDofs;
+            if (indices.empty()) { // every DOF, decimated
+                indices.resize(nDof);
+                std::iota(indices.begin(), indices.end(), 0);
+            }
+            h5::writeAttr(g.get(), "dof_indices", indices, w);
+            h5::writeAttr(g.get(), "every", every, w);
+            dofStep = h5::Extendible(g.get(), "step", i32, -1, w);
+            dofTime = h5::Extendible(g.get(), "time", f64, -1, w);
+            units(dofTime, "s");
+        }
         u = h5::Extendible(g.get(), "u", f64, n, w, rows, z);
         v = h5::Extendible(g.get(), "v", f64, n, w, rows, z);
         a = h5::Extendible(g.get(), "a", f64, n, w, rows, z);
         for (auto* d : {&u, &v, &a})
-            h5::writeAttr(d->id(), "names", layout.dofNames, w);
+            h5::writeAttr(d->id(), "names", kept, w);
         units(u, "m");
         units(v, "m/s");
         units(a, "m/s^2");

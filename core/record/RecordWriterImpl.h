@@ -34,9 +34,16 @@ struct RecordWriter::Impl {
     std::string path;
     RunLayout layout;
     std::size_t nDof = 0, nElem = 0, nPar = 0, nSite = 0, nChan = 0;
+    // The DOFs chosen or decimated (RecordStart::dofRecording not full): nKept columns of
+    // /dofs/u, v, a (nDof otherwise), rows of the steps that are multiples of `every`.
+    bool dofsChosen = false;
+    std::vector<int> keptDofs; // indices into the layout's DOFs (every DOF when !dofsChosen)
+    int every = 1;
+    std::size_t nKept = 0;
     h5::Id file;
     h5::Id severityType, kindType, messageType, noteType;
     h5::Extendible step, time, ag, u, v, a, def, force, cmd;
+    h5::Extendible dofStep, dofTime; // /dofs/step, /dofs/time (dofsChosen only)
     h5::Extendible par, sd, aux, fit, applied, thisStep, pending, tracking, requested;
     h5::Extendible eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal;
     h5::Extendible alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
@@ -47,10 +54,10 @@ struct RecordWriter::Impl {
 
     /// Rows, alarms and notes buffered between two flushes.
     struct Batch {
-        std::vector<int> bStep, bApplied, bThisStep, bPending, bRequested, bEventStep,
+        std::vector<int> bStep, bDofStep, bApplied, bThisStep, bPending, bRequested, bEventStep,
             bEventElement, bEventDecision, bEventProposal;
-        std::vector<double> bTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux, bFit,
-            bTracking, bEventTime, bEventValues, bSiteRoundTrip, bChannels;
+        std::vector<double> bTime, bDofTime, bAg, bU, bV, bA, bDef, bForce, bCmd, bPar, bSd, bAux,
+            bFit, bTracking, bEventTime, bEventValues, bSiteRoundTrip, bChannels;
         ActuatorColumns::Rows actuator;
         std::vector<Alarm> bAlarms;
         std::vector<RecordNote> bNotes;
@@ -83,6 +90,7 @@ struct RecordWriter::Impl {
     void writeOut(); // the record thread's job: writes and clears `out`
     bool hasBuffered() const;
     void bufferEvent(const UpdateEvent& ev);
+    void bufferChosenDofs(const StepRecord& r); // a kept row of the chosen DOFs
     /// Hands the buffered rows to the record thread; with `synchronous`, waits until they
     /// are on disk.
     bool flush(bool synchronous);

@@ -35,6 +35,7 @@ SessionOptions sessionOptions(const TestConfig& cfg, const HeadlessOptions& o) {
     s.recordStart = RecordStart{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
     s.recordStart.deflate = o.deflate;
     s.recordStart.siteSecurity = o.siteSecurity;
+    s.recordStart.dofRecording = cfg.record; // the "record" block, or hsmu run's options
     return s;
 }
 
@@ -47,6 +48,7 @@ HeadlessRun::HeadlessRun(const TestConfig& cfg, std::unique_ptr<HybridTest> test
     m_info.configName = cfg.name;
     m_info.configFile = cfg.sourcePath;
     m_info.siteSecurity = m_options.siteSecurity;
+    m_info.dofRecording = cfg.record;
     const std::size_t columns = StepCsvWriter::columnCount(m_layout);
     if (!m_options.outDir.empty() && m_options.csv != HeadlessOptions::Csv::None) {
         if (m_options.csv == HeadlessOptions::Csv::Auto && columns > StepCsvWriter::kMaxColumns)

@@ -81,6 +81,7 @@ void TestController::load(const TestConfig& cfg, const comms::LinkAddress& contr
         ", controller = " + controller.toString() +
         ", updating = " + (cfg.updating.enabled ? reporterPolicyName(cfg.updating.policy) : "off");
     RecordStart start{cfg.raw.dump(), cfg.name, notes, cfg.analysis.dt};
+    start.dofRecording = cfg.record; // the configuration's "record" block
     start.siteSecurity = comms::siteSecurity(controller, cfg);
     m_test = test.get();
     m_worker =

@@ -1,6 +1,7 @@
 #include "gui/cli/FastRun.h"
 
 #include "core/config/PresetCatalog.h"
+#include "core/config/RecordConfig.h"
 #include "gui/NumberOverrides.h"
 
 #include <cerrno>
@@ -128,8 +129,9 @@ bool FastRun::englishOnly() {
 std::optional<RunRequest> FastRun::request(int argc, char** argv) {
     if (argc < 2 || std::strcmp(argv[1], "run") != 0 || std::getenv("HSMU_CONTROLLER_TOKEN"))
         return std::nullopt;
-    static const char* const kValued[] = {"out",       "scale", "dt",       "duration",
-                                          "record-dt", "csv",   "compress", "reconnect"};
+    static const char* const kValued[] = {"out",         "scale",       "dt",       "duration",
+                                          "record-dt",   "csv",         "compress", "reconnect",
+                                          "record-dofs", "record-every"};
     std::map<std::string, std::string> values;
     bool allowUnstable = false;
     std::string config;
@@ -197,6 +199,14 @@ std::optional<RunRequest> FastRun::request(int argc, char** argv) {
         return std::nullopt;
     r.deflate = *deflate;
     r.reconnect = *reconnect;
+    if (values.count("record-dofs")) // checked against the configuration by RunFlow
+        r.recordDofs = values["record-dofs"];
+    if (values.count("record-every")) { // a bad value: hsmu-cli says what is wrong
+        const auto every = whole(values["record-every"]);
+        if (!every || *every < 1 || *every > kMaxRecordEvery)
+            return std::nullopt;
+        r.recordEvery = *every;
+    }
     if (!englishOnly())
         return std::nullopt;
     return r; // controller: builtin (LinkAddress's default), no token, no approval

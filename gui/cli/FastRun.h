@@ -5,6 +5,7 @@
 // command line is one it reads exactly as RunOptions would and the output is English:
 //   hsmu run FILE --out DIR [--scale S] [--dt DT] [--duration T] [--record-dt DT]
 //            [--allow-unstable] [--csv auto|all|none] [--compress LEVEL] [--reconnect N]
+//            [--record-dofs LIST] [--record-every N]
 // (FILE an existing file, each option once, "--name value" or "--name=value", numbers in
 // their plain form), no language setting or locale other than English (the settings files
 // of QSettings for HSMU/hsmu and LANGUAGE, LC_ALL, LC_MESSAGES, LANG: C, POSIX or en*) and

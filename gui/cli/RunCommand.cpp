@@ -34,6 +34,9 @@ int RunCommand::exec(const QStringList& arguments) {
                                                   : HeadlessOptions::Csv::Auto;
     r.reconnect = options.reconnect;
     r.deflate = options.deflate;
+    if (options.recordDofs)
+        r.recordDofs = options.recordDofs->toStdString();
+    r.recordEvery = options.recordEvery;
     RecordCollector records;
     if (options.plots) {
         r.observe = [&records](TestSession& session) { session.addObserver(&records); };

@@ -1,6 +1,7 @@
 #include "gui/cli/RunFlow.h"
 
 #include "comms/link/ControlFactory.h"
+#include "core/config/RecordConfig.h"
 #include "core/config/TestFactory.h"
 #include "core/experiment/HybridTest.h"
 #include "gui/cli/CliText.h"
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <system_error>
 
 namespace hsmu::gui {
@@ -90,6 +92,15 @@ int RunFlow::exec(const RunRequest& r) {
                               "hsmu run: --approval ignored: the configuration has no updating"));
             cfg.updating.approval = r.approval;
         }
+        if (r.recordDofs) { // the same parser as the configuration's record.dofs
+            try {
+                cfg.record.dofs = configDofList(cfg, *r.recordDofs);
+            } catch (const std::invalid_argument& e) {
+                throw std::runtime_error(std::string("--record-dofs: ") + e.what());
+            }
+        }
+        if (r.recordEvery > 0)
+            cfg.record.every = r.recordEvery;
         comms::TcpControlOptions link; // the session's timeouts (LinkTimeouts), the token
         link.token = r.token;
         test = buildHybridTest(cfg, comms::makeControlFactory(r.controller, link, cfg));

@@ -15,6 +15,7 @@
 #include "core/session/HeadlessRun.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace hsmu::gui {
@@ -31,6 +32,10 @@ struct RunRequest {
     HeadlessOptions::Csv csv = HeadlessOptions::Csv::Auto;
     int reconnect = 0;
     int deflate = 0;
+    /// --record-dofs LIST (over the configuration's record.dofs) and --record-every N (> 0;
+    /// 0: the configuration's record.every): core/config/RecordConfig.h.
+    std::optional<std::string> recordDofs;
+    int recordEvery = 0;
     /// Optional: called once the session exists, before the test starts (observers).
     std::function<void(TestSession&)> observe;
     /// Optional: after the outputs are closed, before the summary; returns 1 if it failed

@@ -1,5 +1,6 @@
 #include "gui/cli/RunOptions.h"
 
+#include "core/config/RecordConfig.h"
 #include "core/util/SecretFile.h"
 #include "gui/cli/ConsoleStreams.h"
 #include "gui/cli/OverrideOptions.h"
@@ -57,10 +58,20 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
         tr("Compress the record's per-step matrices: deflate level 1-9 with shuffle (default 0: "
            "uncompressed)."),
         QStringLiteral("level"), QStringLiteral("0"));
+    const QCommandLineOption recordDofsOpt(
+        QStringLiteral("record-dofs"),
+        tr("Numerical DOFs the record keeps: indices, ranges and names, e.g. 0-9,100,Roof "
+           "(default: every DOF). A specimen's channels are always recorded in full."),
+        QStringLiteral("list"));
+    const QCommandLineOption recordEveryOpt(
+        QStringLiteral("record-every"),
+        tr("Keep the numerical DOFs' rows of every N-th step only (default 1). A specimen's "
+           "channels are always recorded at every step."),
+        QStringLiteral("n"));
     p.addOption(outOpt);
     overrides.addTo(p);
     p.addOptions({unstableOpt, plotsOpt, controllerOpt, tokenOpt, tokenFileOpt, reconnectOpt,
-                  approvalOpt, csvOpt, compressOpt});
+                  approvalOpt, csvOpt, compressOpt, recordDofsOpt, recordEveryOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed;
     const QStringList pos = p.positionalArguments();
@@ -100,6 +111,15 @@ std::optional<QString> RunOptions::parse(const QStringList& arguments, RunOption
     if (!ok || options.deflate < 0 || options.deflate > 9)
         return tr("--compress: expected a whole number from 0 to 9, found '%1'")
             .arg(p.value(compressOpt));
+    if (p.isSet(recordDofsOpt))
+        options.recordDofs = p.value(recordDofsOpt);
+    if (p.isSet(recordEveryOpt)) {
+        options.recordEvery = p.value(recordEveryOpt).toInt(&ok);
+        if (!ok || options.recordEvery < 1 || options.recordEvery > kMaxRecordEvery)
+            return tr("--record-every: expected a whole number from 1 to %1, found '%2'")
+                .arg(kMaxRecordEvery)
+                .arg(p.value(recordEveryOpt));
+    }
     if (p.isSet(approvalOpt)) {
         options.approval = p.value(approvalOpt);
         const QStringList modes{QStringLiteral("manual"), QStringLiteral("approveAll"),

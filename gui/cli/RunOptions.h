@@ -3,7 +3,7 @@
 //   CONFIG --out DIR [--ground-motion FILE] [--scale S] [--dt DT] [--duration T]
 //   [--allow-unstable] [--plots] [--controller builtin|tcp://|simapp://|generictcp://HOST:PORT]
 //   [--token-file F] [--reconnect N] [--approval manual|approveAll|rejectAll]
-//   [--csv auto|all|none] [--compress LEVEL]
+//   [--csv auto|all|none] [--compress LEVEL] [--record-dofs LIST] [--record-every N]
 // Thread rules: plain data; parse() on the main thread.
 
 #include "comms/LinkAddress.h"
@@ -32,6 +32,10 @@ public:
     /// or "none"; record.h5 always holds every column (hsmu export writes CSV from it).
     QString csv = QStringLiteral("auto");
     int deflate = 0; ///< the record's deflate level (RecordStart::deflate), 0: uncompressed
+    /// --record-dofs: the numerical DOFs the record keeps (checked against the
+    /// configuration by RunFlow); unset: the configuration's record.dofs.
+    std::optional<QString> recordDofs;
+    int recordEvery = 0; ///< --record-every N (>= 1); 0: the configuration's record.every
 
     /// Parse the process arguments (program, "run", ...). nullopt: options filled; an empty
     /// string: --help was printed; otherwise the message of what is wrong.

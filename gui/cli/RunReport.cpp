@@ -113,6 +113,15 @@ std::string RunReport::text(const HybridTest& test, const RunStatistics& stats, 
         out << "    t = " << num(a.time, 6) << " s (step " << a.step << ") "
             << alarmSeverityName(a.severity) << ", " << alarmKindName(a.kind) << ": " << a.message
             << '\n';
+    if (const DofRecording& r = info.dofRecording; !r.full()) // the record's choice
+        out << Text(translate("RunReport", "  record: DOFs %1 (%2 of %3), every %4 steps; "
+                                           "elements, specimens and updating at every step"))
+                   .arg(describeDofList(r.dofs))
+                   .arg(int(r.dofs.empty() ? layout.dofNames.size() : r.dofs.size()))
+                   .arg(int(layout.dofNames.size()))
+                   .arg(r.every)
+                   .str()
+            << '\n';
     out << Text(translate("RunReport", "  outputs: %1")).arg(outDir).str() << '\n';
     return out.str();
 }

@@ -12,9 +12,23 @@ StepRecord RecordPlayback::rowAt(const RecordData& d, int i) {
     r.step = d.steps[std::size_t(i)];
     r.time = d.time(i);
     r.groundAcceleration = d.groundAcceleration(i);
-    r.u = d.u.row(i).transpose();
-    r.v = d.v.row(i).transpose();
-    r.a = d.a.row(i).transpose();
+    if (d.meta.dofRecording.full()) {
+        r.u = d.u.row(i).transpose();
+        r.v = d.v.row(i).transpose();
+        r.a = d.a.row(i).transpose();
+    } else { // chosen or decimated DOFs: NaN where the record has no value
+        const auto n = Eigen::Index(d.layout.dofNames.size());
+        r.u = Eigen::VectorXd::Constant(n, std::nan(""));
+        r.v = r.u;
+        r.a = r.u;
+        if (const int k = d.dofRowOf(i); k >= 0)
+            for (Eigen::Index j = 0; j < d.u.cols(); ++j) {
+                const Eigen::Index dof = d.dofIndex(int(j));
+                r.u[dof] = d.u(k, j);
+                r.v[dof] = d.v(k, j);
+                r.a[dof] = d.a(k, j);
+            }
+    }
     r.elements.resize(std::size_t(d.deformation.cols()));
     for (Eigen::Index j = 0; j < d.deformation.cols(); ++j) {
         ElementSample& e = r.elements[std::size_t(j)];

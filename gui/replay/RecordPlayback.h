@@ -21,7 +21,9 @@ public:
     explicit RecordPlayback(std::shared_ptr<const RecordData> data);
 
     /// Row i of the record as the StepRecord the live test produced (updating and the multi-DOF
-    /// elements' channels filled when the record has them). Precondition: 0 <= i < rows().
+    /// elements' channels filled when the record has them; u, v, a of every DOF, NaN for a DOF
+    /// or a step the record did not keep: docs/recording.md "Chosen and decimated DOFs").
+    /// Precondition: 0 <= i < rows().
     static StepRecord rowAt(const RecordData& data, int i);
 
     const RecordData& data() const { return *m_data; }

@@ -11,6 +11,7 @@
 #include <QFile>
 #include <QHeaderView>
 #include <QTextStream>
+#include <cmath>
 
 #include <qcustomplot.h>
 
@@ -94,8 +95,8 @@ int ReplayEventList::rowsThrough(const RecordData& data, int step) {
 
 QStringList ReplayExport::columns(const RecordData& d) {
     QStringList c{QStringLiteral("step"), QStringLiteral("t [s]"), QStringLiteral("ag [m/s^2]")};
-    for (const std::string& dof : d.layout.dofNames)
-        c << QStringLiteral("u %1 [m]").arg(q(dof));
+    for (Eigen::Index j = 0; j < d.u.cols(); ++j) // the DOFs recorded
+        c << QStringLiteral("u %1 [m]").arg(q(d.layout.dofNames[std::size_t(d.dofIndex(int(j)))]));
     for (const ElementInfo& e : d.layout.elements) {
         c << QStringLiteral("d %1 [%2]").arg(q(e.name), q(e.units.deformation));
         c << QStringLiteral("F %1 [%2]").arg(q(e.name), q(e.units.force));
@@ -113,8 +114,9 @@ std::vector<double> ReplayExport::values(const RecordData& d, int row) {
     v.push_back(d.steps[std::size_t(row)]);
     v.push_back(d.time(row));
     v.push_back(d.groundAcceleration(row));
+    const int k = d.dofRowOf(row); // -1: a step whose DOFs were decimated away
     for (Eigen::Index j = 0; j < d.u.cols(); ++j)
-        v.push_back(d.u(row, j));
+        v.push_back(k >= 0 ? d.u(k, j) : std::nan(""));
     for (Eigen::Index j = 0; j < d.deformation.cols(); ++j) {
         v.push_back(d.deformation(row, j));
         v.push_back(d.force(row, j));

@@ -43,6 +43,23 @@ QString withoutTimes(QString s) {
     return s;
 }
 
+/// `hsmu run CONFIG --out OUT ARGS` by both front ends: the Qt-free hsmu (into fast), hsmu-cli
+/// (into qt).
+std::pair<clitest::Result, clitest::Result> bothFrontEnds(const QString& config,
+                                                          const QString& fast, const QString& qt,
+                                                          const QStringList& args) {
+    const QStringList run{QStringLiteral("run"), config, QStringLiteral("--out")};
+    return {clitest::hsmu(run + QStringList{fast} + args), hsmuCli(run + QStringList{qt} + args)};
+}
+
+/// summary.json without what is measured (wall time, timing).
+QJsonObject summaryOf(const QString& path) {
+    QJsonObject s = clitest::readJson(path);
+    for (const QString& measured : {QStringLiteral("wall_time_s"), QStringLiteral("timing")})
+        s.remove(measured);
+    return s;
+}
+
 } // namespace
 
 class TestFastRun : public QObject {
@@ -76,10 +93,7 @@ private slots:
                                  QStringLiteral("all")};
         const QString fast = dir.filePath(QStringLiteral("fast/"));
         const QString qt = dir.filePath(QStringLiteral("qt/"));
-        const auto a = clitest::hsmu(
-            QStringList{QStringLiteral("run"), kConfig, QStringLiteral("--out"), fast} + common);
-        const auto b = hsmuCli(
-            QStringList{QStringLiteral("run"), kConfig, QStringLiteral("--out"), qt} + common);
+        const auto [a, b] = bothFrontEnds(kConfig, fast, qt, common);
         QVERIFY2(a.exitCode == 0, qPrintable(clitest::report(a)));
         QVERIFY2(b.exitCode == 0, qPrintable(clitest::report(b)));
         QCOMPARE(withoutTimes(a.out).replace(fast.chopped(1), QStringLiteral("DIR")),
@@ -89,14 +103,79 @@ private slots:
         const QByteArray csv = bytes(fast + QStringLiteral("steps.csv"));
         QVERIFY(csv.size() > 3000 * 10);
         QCOMPARE(csv, bytes(qt + QStringLiteral("steps.csv")));
-        QJsonObject sa = clitest::readJson(fast + QStringLiteral("summary.json"));
-        QJsonObject sb = clitest::readJson(qt + QStringLiteral("summary.json"));
-        QVERIFY(sa.contains(QStringLiteral("wall_time_s")));
-        for (const QString& measured : {QStringLiteral("wall_time_s"), QStringLiteral("timing")}) {
-            sa.remove(measured);
-            sb.remove(measured);
+        QVERIFY(clitest::readJson(fast + QStringLiteral("summary.json"))
+                    .contains(QStringLiteral("wall_time_s")));
+        QCOMPARE(summaryOf(fast + QStringLiteral("summary.json")),
+                 summaryOf(qt + QStringLiteral("summary.json")));
+    }
+
+    // --record-dofs / --record-every (issue 27): both front ends choose and decimate the same
+    // DOFs, print and write the same, and refuse a specimen's channels with the same words.
+    void recordDofOptionsAsTheQtFrontEnd() {
+        QTemporaryDir dir;
+        const QString config =
+            QStringLiteral(HSMU_SOURCE_DIR "/resources/presets/paper-condition-3.json");
+        const QStringList common{QStringLiteral("--duration"), QStringLiteral("2"),
+                                 QStringLiteral("--record-dofs"), QStringLiteral("DOF 2"),
+                                 QStringLiteral("--record-every=4")};
+        const QString fast = dir.filePath(QStringLiteral("fast"));
+        const QString qt = dir.filePath(QStringLiteral("qt"));
+        const auto [a, b] = bothFrontEnds(config, fast, qt, common);
+        QVERIFY2(a.exitCode == 0, qPrintable(clitest::report(a)));
+        QVERIFY2(b.exitCode == 0, qPrintable(clitest::report(b)));
+        QCOMPARE(withoutTimes(a.out).replace(fast, QStringLiteral("DIR")),
+                 withoutTimes(b.out).replace(qt, QStringLiteral("DIR")));
+        QVERIFY2(a.out.contains(QStringLiteral("  record: DOFs 1 (1 of 2), every 4 steps; "
+                                               "elements, specimens and updating at every step")),
+                 qPrintable(a.out));
+        const QJsonObject sa = summaryOf(fast + QStringLiteral("/summary.json"));
+        QCOMPARE(sa, summaryOf(qt + QStringLiteral("/summary.json")));
+        const QJsonObject chosen = sa.value(QStringLiteral("record_dofs")).toObject();
+        QCOMPARE(chosen.value(QStringLiteral("dofs")).toString(), QStringLiteral("1"));
+        QCOMPARE(chosen.value(QStringLiteral("recorded")).toInt(), 1);
+        QCOMPARE(chosen.value(QStringLiteral("of")).toInt(), 2);
+        QCOMPARE(chosen.value(QStringLiteral("every")).toInt(), 4);
+        // The two records' exports: every file the same bytes; dofs.csv of steps 0, 4, ... 200
+        // (dt 0.01 s).
+        for (const QString& out : {fast, qt}) {
+            const auto e =
+                clitest::hsmu({QStringLiteral("export"), out + QStringLiteral("/record.h5"),
+                               QStringLiteral("--csv"), out + QStringLiteral("/csv")});
+            QVERIFY2(e.exitCode == 0, qPrintable(clitest::report(e)));
         }
-        QCOMPARE(sa, sb);
+        for (const QString& file : QDir(fast + QStringLiteral("/csv")).entryList(QDir::Files))
+            if (file != QLatin1String("sites.csv")) // measured round trips
+                QCOMPARE(bytes(fast + QStringLiteral("/csv/") + file),
+                         bytes(qt + QStringLiteral("/csv/") + file));
+        const QList<QByteArray> dofs =
+            bytes(fast + QStringLiteral("/csv/dofs.csv")).trimmed().split('\n');
+        QCOMPARE(dofs.size(), 1 + 51);
+        QCOMPARE(dofs[0], QByteArray("step,time [s],u DOF 2 [m],v DOF 2 [m/s],a DOF 2 [m/s^2]"));
+        QVERIFY2(dofs[1].startsWith("0,0,") && dofs[2].startsWith("4,0.04") &&
+                     dofs[51].startsWith("200,2"),
+                 dofs[51].constData());
+        QCOMPARE(bytes(fast + QStringLiteral("/csv/elements.csv")).count('\n'), 1 + 201);
+
+        // A specimen's channels are never dropped: the same refusal from both.
+        const QStringList specimen{QStringLiteral("--duration"), QStringLiteral("0.1"),
+                                   QStringLiteral("--record-dofs"), QStringLiteral("0,Element 1")};
+        const auto [c, d] =
+            bothFrontEnds(config, fast + QStringLiteral("2"), qt + QStringLiteral("2"), specimen);
+        QCOMPARE(c.exitCode, 1);
+        QCOMPARE(d.exitCode, 1);
+        QCOMPARE(c.err, d.err);
+        QVERIFY2(c.err.contains(QStringLiteral("hsmu run: --record-dofs: 'Element 1' is a "
+                                               "specimen (an experimental element): its channels "
+                                               "(commanded, measured, force, actuators, basic "
+                                               "DOFs) are always recorded in full at every step")),
+                 qPrintable(c.err));
+        const auto e = clitest::hsmu({QStringLiteral("run"), config, QStringLiteral("--out"),
+                                      fast + QStringLiteral("3"), QStringLiteral("--record-every"),
+                                      QStringLiteral("0")});
+        QCOMPARE(e.exitCode, 1);
+        QVERIFY2(e.err.contains(QStringLiteral(
+                     "--record-every: expected a whole number from 1 to 1000000, found '0'")),
+                 qPrintable(e.err));
     }
 
     void otherLanguagesGoToTheCatalogues() {

@@ -151,6 +151,52 @@ private slots:
         QCOMPARE(moved.last().at(0).toInt(), n);
     }
 
+    // A record of DOF 2 every 4 steps (issue 27, docs/recording.md "Chosen and decimated
+    // DOFs") replays: every row of the elements, the kept DOF at its kept steps, a gap (NaN)
+    // elsewhere; the window's CSV lists the kept DOF only.
+    void decimatedRecordReplays() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("decimated.h5"));
+        {
+            TestConfig cfg = PresetLibrary::load(QStringLiteral("paper-condition-3"));
+            cfg.analysis.duration = kDuration;
+            std::unique_ptr<HybridTest> test = buildHybridTest(cfg);
+            RecordStart start{cfg.raw.dump(), cfg.name, {}, cfg.analysis.dt};
+            start.dofRecording = DofRecording{{1}, 4};
+            RecordWriter writer(path.toStdString(), RunLayout::of(*test), start);
+            test->addObserver(&writer);
+            QVERIFY(test->prepare());
+            while (test->step() == HybridTest::StepResult::Advanced) {
+            }
+            test->removeObserver(&writer);
+            QVERIFY(writer.finish());
+        }
+        QString error;
+        std::unique_ptr<ReplayWindow> w(ReplayWindow::open(path, nullptr, &error));
+        QVERIFY2(w, qPrintable(error));
+        w->show();
+        const int n = w->rowCount();
+        QCOMPARE(n, 201);
+        w->seek(n);
+        QCOMPARE(w->rowsShown(), n);
+        const QCPGraph& dof1 = *w->panel().displacementHistory().graph(0);
+        const QCPGraph& dof2 = *w->panel().displacementHistory().graph(1);
+        QCOMPARE(dof2.dataCount(), n);
+        for (int i : {0, 4, 8, 196, 200})
+            QCOMPARE(dof2.data()->at(i)->value, m_run.records[std::size_t(i)].u(1));
+        for (int i : {1, 5, 199})
+            QVERIFY(std::isnan(dof2.data()->at(i)->value));
+        QVERIFY(std::isnan(dof1.data()->at(8)->value)); // DOF 1 was not kept
+        const QString csv = dir.filePath(QStringLiteral("window.csv"));
+        int rows = 0;
+        QVERIFY2(w->exportWindowCsv(csv, &error, &rows), qPrintable(error));
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
+        const QString header = QString::fromUtf8(f.readLine());
+        QVERIFY2(header.startsWith(QStringLiteral("step,t [s],ag [m/s^2],u DOF 2 [m],d ")),
+                 qPrintable(header));
+    }
+
     void playbackPacesRowsBySpeed() {
         auto data = std::make_shared<const RecordData>(RecordReader(m_record.toStdString()).data());
         RecordPlayback pb(data);

@@ -127,3 +127,39 @@ def test_records_of_either_chunk_layout_read_as_their_export(cli, tmp_path, layo
         for j, field in enumerate(header):
             name, _ = split_header(field)
             np.testing.assert_array_equal(rec[name], values[:, j], err_msg=name)
+
+
+def test_chosen_and_decimated_dofs_read_as_their_export(cli, tmp_path):
+    """A record of DOF 2 every 4 steps (hsmu run --record-dofs / --record-every, issue 27):
+    its DOF datasets hold the kept rows with their true steps, equal to the full record's
+    rows; every other dataset equals the full record's; a DOF not kept is a KeyError naming
+    it and the option."""
+    common = ("--duration", "2", "--csv", "none")
+    cli("run", "paper-condition-3", "--out", tmp_path / "full", *common)
+    cli("run", "paper-condition-3", "--out", tmp_path / "chosen", *common,
+        "--record-dofs", "DOF 2", "--record-every", "4")
+    cli("export", tmp_path / "chosen" / "record.h5", "--csv", tmp_path / "csv")
+    full = hsmu.Record(tmp_path / "full" / "record.h5")
+    rec = hsmu.Record(tmp_path / "chosen" / "record.h5")
+    assert rec.dofs == full.dofs == ["DOF 1", "DOF 2"]
+    assert rec.recorded_dofs == ["DOF 2"] and rec.record_every == 4
+    assert full.recorded_dofs == full.dofs and full.record_every == 1
+    np.testing.assert_array_equal(full.dof_steps, full["step"])
+    np.testing.assert_array_equal(rec.dof_steps, np.arange(0, 201, 4))
+    np.testing.assert_array_equal(rec.dof_time, full["time"][::4])
+    for kind in ("u", "v", "a"):
+        np.testing.assert_array_equal(rec[f"{kind} DOF 2"], full[f"{kind} DOF 2"][::4])
+        with pytest.raises(KeyError, match=r"DOF 'DOF 1' \(index 0\) was not recorded.*"
+                                           r"--record-dofs"):
+            rec[f"{kind} DOF 1"]
+    for name in rec.names:  # the specimens, elements, updating: complete, every step
+        if not name.startswith(("u ", "v ", "a ")) and "round trip" not in name:
+            np.testing.assert_array_equal(rec[name], full[name], err_msg=name)
+    header, rows = read_csv(tmp_path / "csv" / "dofs.csv")
+    assert header == ["step", "time [s]", "u DOF 2 [m]", "v DOF 2 [m/s]", "a DOF 2 [m/s^2]"]
+    values = np.array([[float(x) for x in row] for row in rows])
+    np.testing.assert_array_equal(values[:, 0], rec.dof_steps)
+    np.testing.assert_array_equal(values[:, 2], rec["u DOF 2"])
+    summary = json.loads((tmp_path / "chosen" / "summary.json").read_text())
+    assert summary["record_dofs"] == {"dofs": "1", "recorded": 1, "of": 2, "every": 4}
+    assert "record_dofs" not in json.loads((tmp_path / "full" / "summary.json").read_text())

@@ -65,6 +65,20 @@ void fillRow(StepRecord& r, int k) {
     }
 }
 
+/// Hands `rows` rows of `dofs` DOFs and elements (fillRow) to writer; returns the
+/// allocations the stepping thread made meanwhile, and the last row in *last.
+long allocationsWhileStepping(RecordWriter& writer, int dofs, int rows, StepRecord* last) {
+    StepRecord& r = *last;
+    r.u = r.v = r.a = Eigen::VectorXd::Zero(dofs);
+    r.elements.resize(std::size_t(dofs));
+    const long before = t_allocations;
+    for (int k = 0; k < rows; ++k) {
+        fillRow(r, k);
+        writer.onStep(r);
+    }
+    return t_allocations - before;
+}
+
 } // namespace
 
 class TestRecordThread : public QObject {
@@ -120,14 +134,7 @@ private slots:
         const int dofs = 300, rows = 3000; // 6 flushes of 500 rows (kMaxBufferedRows)
         RecordWriter writer(path, layout(dofs), RecordStart{"{}", "rows", {}, 0.001});
         StepRecord r;
-        r.u = r.v = r.a = Eigen::VectorXd::Zero(dofs);
-        r.elements.resize(std::size_t(dofs));
-        const long before = t_allocations;
-        for (int k = 0; k < rows; ++k) {
-            fillRow(r, k);
-            writer.onStep(r);
-        }
-        const long allocations = t_allocations - before;
+        const long allocations = allocationsWhileStepping(writer, dofs, rows, &r);
         QVERIFY2(allocations == 0, qPrintable(QString::number(allocations)));
         QVERIFY(writer.rowsFlushed() >= 2000); // flushes were handed over meanwhile
         QVERIFY2(writer.finish(), writer.error().c_str());
@@ -144,6 +151,34 @@ private slots:
             QVERIFY(d.u.row(k).transpose() == expected.u);
             QVERIFY(d.a.row(k).transpose() == expected.a);
             QCOMPARE(d.force(k, dofs - 1), expected.elements.back().force);
+        }
+    }
+
+    // Chosen and decimated DOFs (issue 27): the stepping thread still allocates nothing, and
+    // the kept values are those given.
+    void chosenDofsAllocateNothingPerRow() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const std::string path = dir.filePath("chosen.h5").toStdString();
+        const int dofs = 300, rows = 3000, every = 7;
+        RecordStart start{"{}", "rows", {}, 0.001};
+        start.dofRecording = DofRecording{{0, 17, 299}, every};
+        RecordWriter writer(path, layout(dofs), start);
+        StepRecord r;
+        const long allocations = allocationsWhileStepping(writer, dofs, rows, &r);
+        QVERIFY2(allocations == 0, qPrintable(QString::number(allocations)));
+        QVERIFY2(writer.finish(), writer.error().c_str());
+        const RecordReader reader(path);
+        const RecordData& d = reader.data();
+        QCOMPARE(d.rows(), rows);
+        QCOMPARE(d.dofRows(), (rows - 1) / every + 1);
+        StepRecord expected = r;
+        for (int k = 0; k < d.dofRows(); ++k) {
+            fillRow(expected, every * k);
+            QCOMPARE(d.dofStep(k), every * k);
+            QCOMPARE(d.dofTime(k), expected.time);
+            for (const int j : {0, 1, 2})
+                QCOMPARE(d.v(k, j), expected.v[d.dofIndex(j)]);
         }
     }
 };
