@@ -109,8 +109,8 @@ std::optional<ActuatorChannels> TcpControl::actuatorChannels() const {
         return std::nullopt;
     ActuatorChannels c;
     if (multiChannel()) {
-        c.commanded = m_lastN.channels.at(0).command;
-        c.measured = m_lastN.channels.at(0).stroke;
+        // N actuators have no one command for the element: each is in the record's channels
+        // (docs/recording.md), as with the built-in lab (VirtualActuatorLab reports none).
         c.flags = m_lastN.flags;
         return c;
     }

@@ -19,6 +19,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
+
 using namespace hsmu;
 using namespace hsmu::comms;
 using namespace linkfixture;
@@ -88,6 +90,14 @@ private slots:
               "numerical frame %.3g", vsLab, vsNumerical);
         QVERIFY2(vsLab <= 1e-9, qPrintable(QString::number(vsLab)));
         QVERIFY2(vsNumerical <= 1e-9, qPrintable(QString::number(vsNumerical)));
+        // Two actuators give the element no one actuator command or position: none over the
+        // link, as in process (each is in the channels; before, the link reported channel 0's
+        // -500 kN force command, drawn in the element's tracking plot in metres).
+        for (std::size_t k = 1; k < linked.records.size(); ++k)
+            for (const ElementSample& e : linked.records[k].elements) {
+                QVERIFY2(std::isnan(e.actuator.commanded) && std::isnan(e.actuator.measured),
+                         qPrintable(QString("step %1: actuator command %2").arg(k).arg(e.actuator.commanded)));
+            }
     }
 
     void channelCountMismatchIsRefused() {
