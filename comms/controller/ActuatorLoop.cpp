@@ -49,7 +49,7 @@ void ActuatorLoop::restore(double position, double h0, double h1, double h2) {
     m_h1 = h1;
     m_h2 = h2;
     m_actuator.reset(position);
-    m_pc.beginStep(position, h0, h1, h2);
+    m_pc.beginStep(h0, h0, h1, h2);
 }
 
 } // namespace hsmu::comms

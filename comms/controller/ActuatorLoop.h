@@ -39,10 +39,12 @@ public:
     std::optional<std::string> tick();
     /// The step's target is committed: the history shifts and the next step begins.
     void commit(double target);
-    /// At rest at `position` with committed targets h0, h1, h2 (a reset).
+    /// The actuator at rest at `position`, the command at h0 (where a committed step's command
+    /// ends), committed targets h0, h1, h2 (a reset).
     void restore(double position, double h0, double h1, double h2);
     /// A journaled step replayed at a restart: target committed, the actuator at rest at
-    /// `position` (a delay line filled with it, a servo at rest there).
+    /// `position` (a lag's whole state, so a restart continues it exactly; a delay line is
+    /// filled with it and a servo rests there: their inner state is not journaled).
     void replayCommit(double target, double position) { restore(position, target, m_h0, m_h1); }
     /// Back at rest at `position` with the committed history kept (a hold of an N-channel rig).
     void holdAt(double position) { restore(position, m_h0, m_h1, m_h2); }
