@@ -26,8 +26,8 @@ void ActuatorLoop::beginStep() {
 
 std::optional<std::string> ActuatorLoop::tick() {
     const double c = m_pc.tick();
-    m_peak = std::isfinite(c) ? std::max(m_peak, std::abs(c))
-                              : std::numeric_limits<double>::infinity();
+    m_peak =
+        std::isfinite(c) ? std::max(m_peak, std::abs(c)) : std::numeric_limits<double>::infinity();
     const double a = m_actuator.tick(c);
     if (std::isfinite(a) && !(m_bound > 0.0 && std::abs(a) > m_bound))
         return std::nullopt;

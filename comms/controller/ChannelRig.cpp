@@ -63,10 +63,10 @@ std::vector<double> ChannelRig::committedAchieved() const {
 
 std::optional<ErrorMsg> ChannelRig::refusal(const TargetsMsg& m) const {
     if (m.channels.size() != m_spec.size())
-        return ErrorMsg{ErrorCode::ProtocolViolation,
-                        "specimen '" + m_name + "' has " + std::to_string(m_spec.size()) +
-                            " actuator channels, the targets carry " +
-                            std::to_string(m.channels.size())};
+        return ErrorMsg{ErrorCode::ProtocolViolation, "specimen '" + m_name + "' has " +
+                                                          std::to_string(m_spec.size()) +
+                                                          " actuator channels, the targets carry " +
+                                                          std::to_string(m.channels.size())};
     for (std::size_t i = 0; i < m_spec.size(); ++i) {
         const ChannelTarget& t = m.channels[i];
         const ActuatorChannelSpec& c = m_spec[i];
@@ -80,8 +80,8 @@ std::optional<ErrorMsg> ChannelRig::refusal(const TargetsMsg& m) const {
         else if (c.mode == ActuatorMode::Force)
             why = c.limits.violationOfForce(t.command);
         else
-            why = c.limits.violationOfTarget(
-                t.command, m_lab->committedStroke(static_cast<int>(i)));
+            why =
+                c.limits.violationOfTarget(t.command, m_lab->committedStroke(static_cast<int>(i)));
         if (why)
             return ErrorMsg{ErrorCode::Interlock, channelName(i) + ": " + *why};
     }
@@ -101,20 +101,20 @@ std::optional<ErrorMsg> ChannelRig::measuredViolation(const Eigen::VectorXd& s,
     return std::nullopt;
 }
 
-std::variant<std::monostate, MeasurementsMsg, ErrorMsg>
-ChannelRig::admit(const TargetsMsg& m, std::uint64_t committed) {
+std::variant<std::monostate, MeasurementsMsg, ErrorMsg> ChannelRig::admit(const TargetsMsg& m,
+                                                                          std::uint64_t committed) {
     if (m.step == committed && m_last.valid) {
         if (!sameTargets(m.channels, m_last.targets))
-            return ErrorMsg{ErrorCode::StateMismatch, "step " + std::to_string(m.step) +
-                                                          " is committed with other targets"};
+            return ErrorMsg{ErrorCode::StateMismatch,
+                            "step " + std::to_string(m.step) + " is committed with other targets"};
         MeasurementsMsg mm = m_last.measurement;
         mm.flags |= kFlagReplayed;
         return mm;
     }
     if (m.step != committed + 1)
-        return ErrorMsg{ErrorCode::ProtocolViolation,
-                        "targets for step " + std::to_string(m.step) + ", expected step " +
-                            std::to_string(committed + 1)};
+        return ErrorMsg{ErrorCode::ProtocolViolation, "targets for step " + std::to_string(m.step) +
+                                                          ", expected step " +
+                                                          std::to_string(committed + 1)};
     if (m_trial.valid && m_trial.step == m.step && sameTargets(m.channels, m_trial.targets)) {
         MeasurementsMsg mm = m_trial.measurement;
         mm.flags |= kFlagReplayed;
@@ -156,8 +156,8 @@ std::string ChannelRig::replay(std::uint64_t step, const std::vector<double>& ta
                                const std::vector<double>& forces) {
     const std::size_t n = m_spec.size();
     if (targets.size() != n || achieved.size() != n || strokes.size() != n || forces.size() != n)
-        return "journaled step " + std::to_string(step) + " has " +
-               std::to_string(targets.size()) + " channels, the specimen " + std::to_string(n);
+        return "journaled step " + std::to_string(step) + " has " + std::to_string(targets.size()) +
+               " channels, the specimen " + std::to_string(n);
     m_pending = Step{};
     m_pending.step = step;
     for (std::size_t i = 0; i < n; ++i)

@@ -90,7 +90,8 @@ private:
         MeasurementsMsg measurement;
     };
     std::optional<ErrorMsg> refusal(const TargetsMsg& m) const;
-    std::optional<ErrorMsg> measuredViolation(const Eigen::VectorXd& s, const Eigen::VectorXd& f) const;
+    std::optional<ErrorMsg> measuredViolation(const Eigen::VectorXd& s,
+                                              const Eigen::VectorXd& f) const;
 
     std::string m_name;
     std::vector<ActuatorChannelSpec> m_spec;

@@ -82,8 +82,7 @@ void SpecimenStation::makeLoops() {
 }
 
 double SpecimenStation::initialStiffness() const {
-    return m_rig ? m_rig->lab().channelStiffness(0, true)
-                 : m_specimen->trueLaw().initialTangent();
+    return m_rig ? m_rig->lab().channelStiffness(0, true) : m_specimen->trueLaw().initialTangent();
 }
 
 double SpecimenStation::tangentStiffness() const {
@@ -108,9 +107,9 @@ HelloAckMsg SpecimenStation::status() const {
                 break;
             }
         a.description = "specimen '" + m_spec.name + "' on hsmu-controller (" +
-                        std::to_string(m_rig->channels()) + " actuator channels: " +
-                        m_rig->lab().description() + "), " + std::to_string(m_committed) +
-                        " committed steps";
+                        std::to_string(m_rig->channels()) +
+                        " actuator channels: " + m_rig->lab().description() + "), " +
+                        std::to_string(m_committed) + " committed steps";
         return a;
     }
     const auto& o = m_spec.specimen.options;
@@ -127,55 +126,6 @@ HelloAckMsg SpecimenStation::status() const {
                   static_cast<unsigned long long>(m_committed));
     a.description = buf;
     return a;
-}
-
-bool SpecimenStation::replay(const JournalRecord& r, std::string& error) {
-    const std::string where = "specimen '" + m_spec.name + "': ";
-    switch (r.kind) {
-    case JournalRecord::Kind::Configure:
-        m_dt = r.dt;
-        if (m_rig)
-            m_rig->prepare(m_dt);
-        else
-            m_specimen->prepare(m_dt);
-        return true;
-    case JournalRecord::Kind::Reset:
-        makeSpecimen();
-        m_committed = 0;
-        m_last = m_trial = Trial{};
-        for (ActuatorLoop& l : m_loops)
-            l.restore(0.0, 0.0, 0.0, 0.0);
-        return true;
-    case JournalRecord::Kind::Commit:
-        break;
-    }
-    if (!(m_dt > 0.0) || r.step != m_committed + 1) {
-        error = where + "journaled step " + std::to_string(r.step) + " does not follow step " +
-                std::to_string(m_committed);
-        return false;
-    }
-    if (m_rig)
-        return replayChannels(r, error);
-    if (!r.channels.empty()) {
-        error = where + "journaled step " + std::to_string(r.step) +
-                " has several actuator channels, the specimen one";
-        return false;
-    }
-    ControlMeasurement cm;
-    if (!m_specimen->setTarget(r.achieved).ok || !m_specimen->measure(cm).ok ||
-        !m_specimen->commit().ok || cm.deformation != r.deformation || cm.force != r.force) {
-        error = where + "replaying step " + std::to_string(r.step) +
-                " does not give the recorded measurement (was the configuration changed?)";
-        return false;
-    }
-    m_last.valid = true;
-    m_last.step = r.step;
-    m_last.target = r.target;
-    m_last.achieved = r.achieved;
-    m_last.measurement = MeasurementMsg{r.step, r.deformation, r.force, r.target, 0, 0};
-    m_committed = r.step;
-    m_loops.front().replayCommit(r.target, r.achieved); // a restarted rig rests where it stopped
-    return true;
 }
 
 Message SpecimenStation::configure(const ConfigureMsg& m) {
@@ -379,14 +329,6 @@ Message SpecimenStation::commit(const CommitMsg& m) {
             return e;
     }
     return AckMsg{MessageType::Commit, m_committed};
-}
-
-Message SpecimenStation::journal(const JournalRecord& r) {
-    std::string why;
-    if (m_journal->append(r, why))
-        return AckMsg{};
-    // The step stands, but a restart would forget it: stop until the operator looks.
-    return trip(ErrorCode::Internal, why);
 }
 
 Message SpecimenStation::hold(const std::string& reason) {

@@ -20,11 +20,11 @@
 // Interlock (SafetyLimits): the element's `limits` and the specimen's `interlock` (the
 // tighter of each), which no client can loosen: Configure may only tighten them (a limit of
 // 0, negative, NaN or infinite leaves the configuration's). The predictor-corrector's command
-// saturates at the deformation limit, so no command ever leaves it. A target past the deformation or increment limit (increment from the
-// last committed target), an actuator position past the deformation limit at any tick, or a
-// measured force past the force limit -> the station holds and answers Error(Interlock)
-// whose text names the limit. Targets are refused (Error(Holding)) until Resume.
-// N actuator channels (a link2d specimen): the station's specimen is a ChannelRig (its
+// saturates at the deformation limit, so no command ever leaves it. A target past the deformation
+// or increment limit (increment from the last committed target), an actuator position past the
+// deformation limit at any tick, or a measured force past the force limit -> the station holds and
+// answers Error(Interlock) whose text names the limit. Targets are refused (Error(Holding)) until
+// Resume. N actuator channels (a link2d specimen): the station's specimen is a ChannelRig (its
 // actuators' uniaxial materials or the whole specimen, each channel's limits) and its steps
 // come as Targets and go as Measurements; commit, hold, resume, reset, the hello-ack, the
 // step indices and the journal are the same as one channel's (a one-channel frame to it, or
@@ -33,12 +33,11 @@
 // its bound checked every tick: stroke on a displacement channel, force on a force channel),
 // all on the one step clock: the targets arrive together, so a late Targets frame holds every
 // channel for the same held ticks (each channel's loop counts its own: loop(i).heldTicks();
-// totalHeldTicks() adds each step's held ticks once, as for one channel; the Measurements frame has no
-// field for them), and the rig's lab is evaluated once per step at the values
-// the actuators reached. A trip names the channel and puts every actuator back at its
-// committed stroke and force (the rig's lab and each loop). The journal's `commits` line
-// holds every channel's target, reached value and measurement (StateJournal.h).
-// Thread rules: one thread (the controller's io thread).
+// totalHeldTicks() adds each step's held ticks once, as for one channel; the Measurements frame has
+// no field for them), and the rig's lab is evaluated once per step at the values the actuators
+// reached. A trip names the channel and puts every actuator back at its committed stroke and force
+// (the rig's lab and each loop). The journal's `commits` line holds every channel's target, reached
+// value and measurement (StateJournal.h). Thread rules: one thread (the controller's io thread).
 
 #include "comms/controller/ActuatorLoop.h"
 #include "comms/controller/ChannelRig.h"
@@ -147,12 +146,12 @@ private:
     StateJournal* m_journal;
     std::unique_ptr<VirtualSpecimen> m_specimen; // one channel
     std::unique_ptr<ChannelRig> m_rig;           // N channels
-    std::vector<ActuatorLoop> m_loops; // one per actuator channel
+    std::vector<ActuatorLoop> m_loops;           // one per actuator channel
     SafetyLimits m_limits;
     double m_dt = 0.0;
     bool m_configured = false;
     std::uint64_t m_committed = 0;
-    Trial m_trial, m_last;                     // uncommitted measured trial; last committed step
+    Trial m_trial, m_last; // uncommitted measured trial; last committed step
     bool m_pending = false;
     std::uint64_t m_pendingStep = 0;
     bool m_holding = false;

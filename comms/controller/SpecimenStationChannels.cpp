@@ -78,24 +78,6 @@ Message SpecimenStation::commitChannels(const CommitMsg& m) {
     return AckMsg{MessageType::Commit, m_committed};
 }
 
-bool SpecimenStation::replayChannels(const JournalRecord& r, std::string& error) {
-    std::vector<double> t, a, s, f;
-    for (const JournalChannel& c : r.channels) {
-        t.push_back(c.target);
-        a.push_back(c.achieved);
-        s.push_back(c.stroke);
-        f.push_back(c.force);
-    }
-    if (std::string why = m_rig->replay(r.step, t, a, s, f); !why.empty()) {
-        error = "specimen '" + m_spec.name + "': " + why;
-        return false;
-    }
-    m_committed = r.step;
-    for (std::size_t i = 0; i < m_loops.size(); ++i)
-        m_loops[i].replayCommit(t[i], a[i]); // a restarted rig rests where it stopped
-    return true;
-}
-
 void SpecimenStation::holdLoops() {
     m_rig->hold(m_holdReason);
     const std::vector<double> at = m_rig->committedAchieved();

@@ -75,8 +75,8 @@ private slots:
         const auto kind = protocol == "simapp"       ? LinkAddress::Kind::SimApp
                           : protocol == "generictcp" ? LinkAddress::Kind::GenericTcp
                                                      : LinkAddress::Kind::Tcp;
-        const Run linked =
-            runTest(cfg, makeControlFactory(LinkAddress{kind, "127.0.0.1", ctl.port()}, patientOptions()));
+        const Run linked = runTest(
+            cfg, makeControlFactory(LinkAddress{kind, "127.0.0.1", ctl.port()}, patientOptions()));
         QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
         QCOMPARE(linked.records.size(), std::size_t(501));
         QVERIFY(everyStepOnce(linked));

@@ -14,8 +14,8 @@ namespace channelloops {
 /// The preset with both actuators elastic (vertical 2e5 kN/m, lateral 1000 kN/m), lateral
 /// lag tauLateral, vertical (force loop) lag tauVertical ([s]; 0: ideal), the controller's
 /// loop at `rate` [Hz] with predictFraction `predict`.
-inline nlohmann::json lagColumn(double tauLateral, double tauVertical, double rate,
-                                double predict, double duration = 1.0) {
+inline nlohmann::json lagColumn(double tauLateral, double tauVertical, double rate, double predict,
+                                double duration = 1.0) {
     nlohmann::json j = multiactuator::preset(duration);
     nlohmann::json& col = j["structure"]["elements"][0];
     col["actuators"][1]["material"] = {{"law", "elastic"}, {"k", 1000.0}};

@@ -50,8 +50,9 @@ nlohmann::json frame(bool lagging) {
 }
 
 TargetsMsg targets(std::uint64_t n) {
-    return TargetsMsg{n, {{kChannelForce, -500.0 + 10.0 * std::sin(0.3 * double(n))},
-                          {kChannelDisplacement, 0.004 * std::sin(0.2 * double(n))}}};
+    return TargetsMsg{n,
+                      {{kChannelForce, -500.0 + 10.0 * std::sin(0.3 * double(n))},
+                       {kChannelDisplacement, 0.004 * std::sin(0.2 * double(n))}}};
 }
 
 } // namespace
@@ -76,15 +77,15 @@ private slots:
         const TestConfig cfg = loadConfigFile(path);
         Run reference;
         {
-            ControllerProcess ctl({"--config", QString::fromStdString(path), "--pace", "fast",
-                                   "--quiet"});
+            ControllerProcess ctl(
+                {"--config", QString::fromStdString(path), "--pace", "fast", "--quiet"});
             QVERIFY2(ctl.start(), qPrintable(ctl.log()));
             reference = runTest(cfg, at(ctl.port()));
             QVERIFY2(reference.state == HybridTest::State::Finished, reference.error.c_str());
         }
         const QString state = m_dir.filePath(name + ".state");
-        ControllerProcess ctl({"--config", QString::fromStdString(path), "--pace", "fast",
-                               "--state-file", state});
+        ControllerProcess ctl(
+            {"--config", QString::fromStdString(path), "--pace", "fast", "--state-file", state});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const quint16 port = ctl.port();
         bool restarted = false;
@@ -104,11 +105,11 @@ private slots:
                  qPrintable(ctl.log()));
         const double diff = maxDifference(reference, run);
         qInfo("%s actuators: killed at step 120 and restarted with the journal, max |diff| to "
-              "the uninterrupted controller run %.3g", qPrintable(name), diff);
+              "the uninterrupted controller run %.3g",
+              qPrintable(name), diff);
         QVERIFY2(diff <= 1e-9, qPrintable(QString::number(diff)));
         if (!lagging) {
-            const Run numerical =
-                runTest(parseConfig(numericalTwin(preset(3.0)), "twin.json"), {});
+            const Run numerical = runTest(parseConfig(numericalTwin(preset(3.0)), "twin.json"), {});
             const double vsNumerical = relativeDifference(numerical, run);
             QVERIFY2(vsNumerical <= 1e-9, qPrintable(QString::number(vsNumerical)));
         }

@@ -61,8 +61,8 @@ private slots:
 
     void idealChannelsEqualTheOncePerStepLabAndTheNumericalFrame() {
         const std::string path = writeConfig(m_dir.path(), "frame.json", preset(5.0));
-        ControllerProcess ctl({"--config", QString::fromStdString(path), "--pace", "fast",
-                               "--quiet"});
+        ControllerProcess ctl(
+            {"--config", QString::fromStdString(path), "--pace", "fast", "--quiet"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(path);
         const Run linked = runTest(
@@ -76,7 +76,8 @@ private slots:
         const double vsLab = maxDifference(inProcess, linked);
         const double vsNumerical = relativeDifference(numerical, linked);
         qInfo("ideal channels at 1024 Hz: max |diff| to the once-per-step lab %.3g, relative to "
-              "the numerical frame %.3g", vsLab, vsNumerical);
+              "the numerical frame %.3g",
+              vsLab, vsNumerical);
         QVERIFY2(vsLab <= 1e-9, qPrintable(QString::number(vsLab)));
         QVERIFY2(vsNumerical <= 1e-9, qPrintable(QString::number(vsNumerical)));
     }
@@ -86,8 +87,8 @@ private slots:
         const int K = 10; // dt 0.01 s at 1000 Hz
         const std::string path =
             writeConfig(m_dir.path(), "lag.json", lagColumn(tauL, tauV, rate, 0.0));
-        ControllerProcess ctl({"--config", QString::fromStdString(path), "--pace", "fast",
-                               "--quiet"});
+        ControllerProcess ctl(
+            {"--config", QString::fromStdString(path), "--pace", "fast", "--quiet"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         RawClient c;
         QVERIFY(c.connect(ctl.port()));
@@ -117,7 +118,8 @@ private slots:
             QVERIFY(c.expect<AckMsg>());
         }
         qInfo("lag over %d ticks: lateral max |diff| %.3g m (peak 0.004), vertical %.3g kN "
-              "(peak 500)", K, worstL, worstV);
+              "(peak 500)",
+              K, worstL, worstV);
         QVERIFY2(worstL <= 1e-12 * 0.004, qPrintable(QString::number(worstL)));
         QVERIFY2(worstV <= 1e-12 * 500.0, qPrintable(QString::number(worstV)));
         QVERIFY(std::abs(aL - 0.003) > 1e-4); // the lag is visible: not the ideal actuator
@@ -130,8 +132,8 @@ private slots:
         const auto step = [&](std::uint64_t n, double lateral, int late) {
             for (int i = 0; i < 5 + late; ++i)
                 QVERIFY(!st.tick()); // predicted, then late: no measurement
-            QVERIFY(!st.targets(TargetsMsg{n, {{kChannelForce, -500.0},
-                                               {kChannelDisplacement, lateral}}}));
+            QVERIFY(!st.targets(
+                TargetsMsg{n, {{kChannelForce, -500.0}, {kChannelDisplacement, lateral}}}));
             std::optional<Message> m;
             for (int i = 0; i < 100 && !m; ++i)
                 m = st.tick();

@@ -121,8 +121,8 @@ private slots:
         if (!opensees::available())
             QSKIP(qPrintable(opensees::reason()));
         const std::string path = writeConfig(m_dir.path(), "kit.json", delayAndLag());
-        const QStringList args{"--config", QString::fromStdString(path), "--protocol",
-                               "generictcp", "--pace", "fast"};
+        const QStringList args{
+            "--config", QString::fromStdString(path), "--protocol", "generictcp", "--pace", "fast"};
         // OpenSees + OpenFresco against one controller.
         ControllerProcess kitCtl(args);
         QVERIFY2(kitCtl.start(), qPrintable(kitCtl.log()));
@@ -166,8 +166,8 @@ private slots:
         own.hold("end of the comparison");
         double worst = 0.0;
         for (std::size_t col = 0; col < 2; ++col)
-            worst = std::max({worst, relativeGap(disp, ownDisp, col),
-                              relativeGap(force, ownForce, col)});
+            worst = std::max(
+                {worst, relativeGap(disp, ownDisp, col), relativeGap(force, ownForce, col)});
         qInfo("OpenSees/OpenFresco vs HSMU's client, delay and lag channels: largest gap %.3g "
               "of the peak (lateral stroke at step 12: kit %.17g, HSMU %.17g, commanded %.17g)",
               worst, disp.back()[2], ownDisp.back()[1], lateralAt(kSteps));
