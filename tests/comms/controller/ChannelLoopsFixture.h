@@ -5,11 +5,30 @@
 // settings, and the discrete first-order lag's closed form over a linear command ramp.
 #include "../MultiActuatorFixture.h"
 
+#include "comms/link/ControlFactory.h"
 #include "core/config/ConfigLoader.h"
 
 #include <cmath>
 
 namespace channelloops {
+
+/// Link options generous enough for a loaded 2-core CI machine, reconnecting after a drop.
+inline hsmu::comms::TcpControlOptions patient() {
+    hsmu::comms::TcpControlOptions o;
+    o.connectTimeout = 20.0;
+    o.stepDeadline = 30.0;
+    o.silenceTimeout = 30.0;
+    o.reconnectAttempts = 3;
+    o.reconnectDelay = 0.2;
+    return o;
+}
+
+/// The native protocol's controls for a controller on 127.0.0.1:port.
+inline hsmu::ControlFactory nativeAt(quint16 port) {
+    return hsmu::comms::makeControlFactory(
+        hsmu::comms::LinkAddress{hsmu::comms::LinkAddress::Kind::Tcp, "127.0.0.1", port},
+        patient());
+}
 
 /// The preset with both actuators elastic (vertical 2e5 kN/m, lateral 1000 kN/m), lateral
 /// lag tauLateral, vertical (force loop) lag tauVertical ([s]; 0: ideal), the controller's

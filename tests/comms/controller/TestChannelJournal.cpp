@@ -24,20 +24,6 @@ using namespace channelloops;
 
 namespace {
 
-TcpControlOptions patient() {
-    TcpControlOptions o; // generous: a loaded 2-core CI machine
-    o.connectTimeout = 20.0;
-    o.stepDeadline = 30.0;
-    o.silenceTimeout = 30.0;
-    o.reconnectAttempts = 3;
-    o.reconnectDelay = 0.2;
-    return o;
-}
-
-ControlFactory at(quint16 port) {
-    return makeControlFactory(LinkAddress{LinkAddress::Kind::Tcp, "127.0.0.1", port}, patient());
-}
-
 /// The frame for 3 s; lagging: lateral tau 5 ms, vertical force loop tau 3 ms at 1024 Hz.
 nlohmann::json frame(bool lagging) {
     if (!lagging)
@@ -80,7 +66,7 @@ private slots:
             ControllerProcess ctl(
                 {"--config", QString::fromStdString(path), "--pace", "fast", "--quiet"});
             QVERIFY2(ctl.start(), qPrintable(ctl.log()));
-            reference = runTest(cfg, at(ctl.port()));
+            reference = runTest(cfg, nativeAt(ctl.port()));
             QVERIFY2(reference.state == HybridTest::State::Finished, reference.error.c_str());
         }
         const QString state = m_dir.filePath(name + ".state");
@@ -90,7 +76,7 @@ private slots:
         const quint16 port = ctl.port();
         bool restarted = false;
         const Run run = runTest(
-            cfg, at(port),
+            cfg, nativeAt(port),
             [&](int step) {
                 if (step == 120)
                     ctl.kill(); // SIGKILL between steps 120 and 121

@@ -30,14 +30,6 @@ using namespace channelloops;
 
 namespace {
 
-TcpControlOptions patient() {
-    TcpControlOptions o; // generous: a loaded 2-core CI machine
-    o.connectTimeout = 20.0;
-    o.stepDeadline = 30.0;
-    o.silenceTimeout = 30.0;
-    return o;
-}
-
 ElementSpec column(const nlohmann::json& j) {
     return parseConfig(j, "memory.json").elements[0];
 }
@@ -65,9 +57,7 @@ private slots:
             {"--config", QString::fromStdString(path), "--pace", "fast", "--quiet"});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
         const TestConfig cfg = loadConfigFile(path);
-        const Run linked = runTest(
-            cfg, makeControlFactory(LinkAddress{LinkAddress::Kind::Tcp, "127.0.0.1", ctl.port()},
-                                    patient()));
+        const Run linked = runTest(cfg, nativeAt(ctl.port()));
         QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
         QCOMPARE(linked.records.size(), std::size_t(501));
         QVERIFY(everyStepOnce(linked));
