@@ -1464,6 +1464,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--spin-us: expected 0 up to the loop period (%1 us), got &apos;%2&apos;</translation>
     </message>
     <message>
+        <source>Check this computer instead of running: release S seconds of empty ticks at the configuration&apos;s loop rate (with --realtime-priority and --spin-us as a run would) and report how late they come.</source>
+        <translation>Check this computer instead of running: release S seconds of empty ticks at the configuration&apos;s loop rate (with --realtime-priority and --spin-us as a run would) and report how late they come.</translation>
+    </message>
+    <message>
+        <source>--probe-host checks this computer: run it on the controller&apos;s computer without --controller</source>
+        <translation>--probe-host checks this computer: run it on the controller&apos;s computer without --controller</translation>
+    </message>
+    <message>
+        <source>--probe-host: expected seconds in (0, 3600], got &apos;%1&apos;</source>
+        <translation>--probe-host: expected seconds in (0, 3600], got &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the probe ran at normal priority</source>
+        <translation>hsmu rths: real-time priority not taken (%1); the probe ran at normal priority</translation>
+    </message>
+    <message>
+        <source>host probe at %1 Hz (spin %2 us%3): %4</source>
+        <translation>host probe at %1 Hz (spin %2 us%3): %4</translation>
+    </message>
+    <message>
+        <source>, SCHED_FIFO 80</source>
+        <translation>, SCHED_FIFO 80</translation>
+    </message>
+    <message>
         <source>Sensor noise seed.</source>
         <translation>Sensor noise seed.</translation>
     </message>

@@ -1464,6 +1464,30 @@ Subcomandos: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--spin-us: se esperaba de 0 hasta el periodo del lazo (%1 us), se obtuvo &apos;%2&apos;</translation>
     </message>
     <message>
+        <source>Check this computer instead of running: release S seconds of empty ticks at the configuration&apos;s loop rate (with --realtime-priority and --spin-us as a run would) and report how late they come.</source>
+        <translation>Comprobar este ordenador en lugar de ejecutar: liberar S segundos de ticks vacíos a la frecuencia del lazo de la configuración (con --realtime-priority y --spin-us como lo haría una ejecución) e informar de su retraso.</translation>
+    </message>
+    <message>
+        <source>--probe-host checks this computer: run it on the controller&apos;s computer without --controller</source>
+        <translation>--probe-host comprueba este ordenador: ejecútelo en el ordenador del controlador sin --controller</translation>
+    </message>
+    <message>
+        <source>--probe-host: expected seconds in (0, 3600], got &apos;%1&apos;</source>
+        <translation>--probe-host: se esperaban segundos en (0, 3600], se obtuvo &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the probe ran at normal priority</source>
+        <translation>hsmu rths: no se obtuvo la prioridad de tiempo real (%1); la prueba se ejecutó con prioridad normal</translation>
+    </message>
+    <message>
+        <source>host probe at %1 Hz (spin %2 us%3): %4</source>
+        <translation>prueba del ordenador a %1 Hz (espera activa %2 us%3): %4</translation>
+    </message>
+    <message>
+        <source>, SCHED_FIFO 80</source>
+        <translation>, SCHED_FIFO 80</translation>
+    </message>
+    <message>
         <source>Sensor noise seed.</source>
         <translation>Semilla del ruido de los sensores.</translation>
     </message>

@@ -1464,6 +1464,30 @@ Subcommands: run CONFIG --out DIR ..., compare CONFIG --out DIR ..., material --
         <translation>--spin-us：应为 0 到环路周期（%1 us）之间，实际为 &apos;%2&apos;</translation>
     </message>
     <message>
+        <source>Check this computer instead of running: release S seconds of empty ticks at the configuration&apos;s loop rate (with --realtime-priority and --spin-us as a run would) and report how late they come.</source>
+        <translation>检查本机而不运行：以配置的环路频率释放 S 秒的空节拍（与运行时相同地使用 --realtime-priority 和 --spin-us），并报告它们的延迟。</translation>
+    </message>
+    <message>
+        <source>--probe-host checks this computer: run it on the controller&apos;s computer without --controller</source>
+        <translation>--probe-host 检查的是本机：请在控制器所在的计算机上不带 --controller 运行</translation>
+    </message>
+    <message>
+        <source>--probe-host: expected seconds in (0, 3600], got &apos;%1&apos;</source>
+        <translation>--probe-host：应为 (0, 3600] 内的秒数，实际为 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>hsmu rths: real-time priority not taken (%1); the probe ran at normal priority</source>
+        <translation>hsmu rths：未获得实时优先级（%1）；探测以普通优先级运行</translation>
+    </message>
+    <message>
+        <source>host probe at %1 Hz (spin %2 us%3): %4</source>
+        <translation>主机探测，%1 Hz（忙等 %2 us%3）：%4</translation>
+    </message>
+    <message>
+        <source>, SCHED_FIFO 80</source>
+        <translation>，SCHED_FIFO 80</translation>
+    </message>
+    <message>
         <source>Sensor noise seed.</source>
         <translation>传感器噪声种子。</translation>
     </message>

@@ -5,6 +5,7 @@
 #include "core/experimental/setup/SetupScript.h"
 #include "core/experimental/CantileverColumn.h"
 #include "core/hysteresis/LawFactory.h"
+#include "core/structure/Link2dKinematics.h"
 
 #include <cmath>
 
@@ -185,8 +186,8 @@ std::unique_ptr<ExperimentalSetup> buildLink2dSetup(const Link2dSpec& s, std::st
 
 ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& dofs)
 {
-    c.allowOnly({"name", "type", "dofs", "length", "angle", "basic", "primary", "experimental",
-                 "setup", "actuators", "specimen"});
+    c.allowOnly({"name", "type", "dofs", "length", "angle", "geometry", "basic", "primary",
+                 "experimental", "setup", "actuators", "specimen"});
     ElementSpec e;
     e.name = c.string("name");
     e.type = "link2d";
@@ -208,6 +209,10 @@ ElementSpec parseLink2dElement(const JsonCursor& c, const std::vector<DofSpec>& 
     s.angle = c.number("angle", 90.0);
     if (!std::isfinite(s.angle))
         c.fail("angle", "expected an angle in degrees");
+    const std::string geometry = c.string("geometry", "linear");
+    if (!link2dTransformationFromName(geometry, s.transformation))
+        c.fail("geometry", "expected 'linear' (small displacements) or 'corotational' (large "
+                           "displacements), found '" + geometry + "'");
     s.primary = c.integer("primary", 1, 0, 2);
     e.experimental = c.boolean("experimental", false);
     if (e.experimental) {

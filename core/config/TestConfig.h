@@ -23,6 +23,8 @@
 
 namespace hsmu {
 
+enum class Link2dTransformation; // core/structure/Link2dKinematics.h
+
 struct MaterialSpec {
     std::string law = "elastic";          ///< "boucWen", "bilinear", "elastic"
     std::map<std::string, double> params; ///< law parameters by name
@@ -63,6 +65,8 @@ struct Link2dSpec {
     std::array<int, 6> dofs{-1, -1, -1, -1, -1, -1}; ///< node i (x, y, theta), node j; -1: support
     double length = 0.0;                              ///< [m]
     double angle = 90.0;                              ///< [deg] of i -> j from x
+    /// "geometry": linear (eq. L1) or corotational (eq. L3, large displacements)
+    Link2dTransformation transformation{}; // Linear
     std::array<Link2dBasicSpec, 3> basic;             ///< axial, shear, rotation
     int primary = 1;                                  ///< the basic DOF the record reports
     std::string setupScript; ///< experimental: one OpenFresco expSetup line (SetupScript.h)

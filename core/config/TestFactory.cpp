@@ -84,7 +84,7 @@ std::unique_ptr<Element> buildLink2d(const ElementSpec& e, const ControlFactory&
                                      const std::string& where)
 {
     const Link2dSpec& s = *e.link2d;
-    const Link2dGeometry g{s.dofs, s.length, s.angle};
+    const Link2dGeometry g{s.dofs, s.length, s.angle, s.transformation};
     try {
         if (!e.experimental) {
             std::array<Link2dBasicDof, 3> dofs;

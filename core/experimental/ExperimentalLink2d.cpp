@@ -63,6 +63,12 @@ ExperimentalLink2d::ExperimentalLink2d(std::string name, const Link2dGeometry& g
         if (m_channels[i].mode == ActuatorMode::Displacement)
             k[i] = m_channels[i].initialStiffness;
     m_kb0 = j0.transpose() * k.asDiagonal() * j0;
+    // the basic forces at rest: the force channels' loads at t = 0 (eq. S3 at d = 0)
+    Eigen::VectorXd f0 = Eigen::VectorXd::Zero(m);
+    for (int i = 0; i < m; ++i)
+        if (m_channels[i].mode == ActuatorMode::Force)
+            f0[i] = commandedForce(m_channels[i], 0.0);
+    m_q0 = j0.transpose() * f0;
     m_cmd = m_sMeas = m_fMeas = m_lastStroke = m_cSMeas = m_cFMeas = Eigen::VectorXd::Zero(m);
     m_dMeas = m_q = m_cDMeas = m_cQ = Eigen::VectorXd::Zero(3);
 }
@@ -90,8 +96,17 @@ std::optional<std::string> ExperimentalLink2d::commandsFor(const Eigen::Vector3d
     return std::nullopt;
 }
 
+std::optional<std::string> ExperimentalLink2d::chordFault(const Eigen::VectorXd& uFull) const
+{
+    if (const std::string why = m_kin.chordFault(m_kin.local(uFull)); !why.empty())
+        return name() + ": " + why;
+    return std::nullopt;
+}
+
 std::optional<std::string> ExperimentalLink2d::targetViolation(const Eigen::VectorXd& uFull) const
 {
+    if (auto why = chordFault(uFull))
+        return why;
     Eigen::VectorXd cmd;
     return commandsFor(m_kin.basic(uFull), cmd);
 }
@@ -99,7 +114,9 @@ std::optional<std::string> ExperimentalLink2d::targetViolation(const Eigen::Vect
 ElementStatus ExperimentalLink2d::sendTrial(const Eigen::VectorXd& uFull)
 {
     m_linkSent = false;
-    const Eigen::Vector3d d = m_kin.basic(uFull);
+    if (auto why = chordFault(uFull))
+        return ElementStatus::limitReached(*why);
+    const Eigen::Vector3d d = m_kin.basic(uFull); // eq. L1 or L3
     Eigen::VectorXd cmd;
     if (auto why = commandsFor(d, cmd)) // defence in depth: the test checked already
         return ElementStatus::limitReached(*why);
@@ -107,6 +124,7 @@ ElementStatus ExperimentalLink2d::sendTrial(const Eigen::VectorXd& uFull)
     if (ControlResult r = control().setTargets(cmd); !r.ok)
         return fault(r);
     m_dTrial = d;
+    m_ue = m_kin.local(uFull);
     m_cmd = cmd;
     m_linkSent = true;
     return ElementStatus::success();
@@ -153,6 +171,7 @@ ElementStatus ExperimentalLink2d::commit()
     m_cFMeas = m_fMeas;
     m_cDMeas = m_dMeas;
     m_cQ = m_q;
+    m_cUe = m_ue;
     return ElementStatus::success();
 }
 
@@ -164,17 +183,22 @@ void ExperimentalLink2d::revert()
     m_fMeas = m_cFMeas;
     m_dMeas = m_cDMeas;
     m_q = m_cQ;
+    m_ue = m_cUe;
 }
 
 void ExperimentalLink2d::addNodalForces(Eigen::VectorXd& rFull) const
 {
-    m_kin.addNodalForces(Eigen::Vector3d(m_q[0], m_q[1], m_q[2]), rFull);
+    m_kin.addNodalForces(m_ue, Eigen::Vector3d(m_q[0], m_q[1], m_q[2]), rFull); // L2 or L4
 }
 
 void ExperimentalLink2d::addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
                                              const std::vector<int>& freeOf) const
 {
-    m_kin.addStiffness(m_kb0, k, freeOf);
+    if (!m_kin.corotational()) {
+        m_kin.addStiffness(m_kb0, k, freeOf);
+        return;
+    }
+    m_kin.addMatrix(m_kin.tangent(Link2dVector6::Zero(), m_kb0, m_q0), k, freeOf); // eq. L5
 }
 
 } // namespace hsmu

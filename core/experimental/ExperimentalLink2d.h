@@ -17,6 +17,10 @@
 // OpenFresco. The record's one column per element reports the primary basic DOF (commanded,
 // measured deformation and basic force); basicDeformations()/basicForces()/actuator strokes
 // and forces give all of them.
+// Geometry (Link2dGeometry::transformation): linear (L1-L2) or corotational (eq. L3-L5 of
+// Link2dKinematics.h): d from the exact chord, nodal forces B(u)^T q, K0 the tangent at rest
+// (its geometric part from the force channels' loads at t = 0, q0 = J0^T f0); a collapsed chord
+// holds the test before any command leaves.
 // Faults: a setup whose basic size is not 3, a channel count different from the setup's
 // actuators or the control's channels, a Jacobian at rest that fails: std::invalid_argument at
 // construction naming the element, the setup and the count; a setup fault at run time (e.g. an
@@ -69,6 +73,8 @@ public:
     const Eigen::Matrix3d& basicInitialStiffness() const { return m_kb0; }
 
 private:
+    /// Why u cannot be evaluated (a corotational element's collapsed chord), naming the element.
+    std::optional<std::string> chordFault(const Eigen::VectorXd& uFull) const;
     /// The commands for basic displacements d (strokes of displacement channels, held forces
     /// of force channels), or why they must not leave.
     std::optional<std::string> commandsFor(const Eigen::Vector3d& d, Eigen::VectorXd& cmd) const;
@@ -78,6 +84,8 @@ private:
     std::vector<ActuatorChannelSpec> m_channels;
     int m_primary;
     Eigen::Matrix3d m_kb0;
+    Eigen::Vector3d m_q0 = Eigen::Vector3d::Zero(); // basic forces held at rest (corotational K0)
+    Link2dVector6 m_ue = Link2dVector6::Zero(), m_cUe = Link2dVector6::Zero(); // trial, committed
     bool m_linkSent = false;
     double m_targetTime = 0.0; // [s] the next target's test time (scheduled forces)
     Eigen::Vector3d m_dTrial = Eigen::Vector3d::Zero();

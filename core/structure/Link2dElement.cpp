@@ -39,7 +39,14 @@ bool Link2dElement::timeDependent() const
 
 ElementStatus Link2dElement::setTrial(const Eigen::VectorXd& uFull)
 {
-    m_d = m_kin.basic(uFull);
+    m_ue = m_kin.local(uFull);
+    if (m_kin.corotational()) {
+        if (const std::string why = m_kin.chordFault(m_ue); !why.empty())
+            return ElementStatus::failure(name() + ": " + why);
+        m_d = m_kin.basicAt(m_ue); // eq. L3
+    } else {
+        m_d = m_kin.basic(uFull); // eq. L1
+    }
     for (int i = 0; i < 3; ++i) {
         HysteresisLaw* law = m_dofs[i].law.get();
         if (!law) {
@@ -65,12 +72,14 @@ ElementStatus Link2dElement::commit()
         if (dof.law)
             dof.law->commit();
     m_committedTime = m_time;
+    m_committedUe = m_ue;
     return ElementStatus::success();
 }
 
 void Link2dElement::revert()
 {
     m_time = m_committedTime;
+    m_ue = m_committedUe;
     for (int i = 0; i < 3; ++i)
         if (HysteresisLaw* law = m_dofs[i].law.get()) {
             law->revert();
@@ -83,7 +92,16 @@ void Link2dElement::revert()
 
 void Link2dElement::addNodalForces(Eigen::VectorXd& rFull) const
 {
-    m_kin.addNodalForces(m_q, rFull);
+    m_kin.addNodalForces(m_ue, m_q, rFull); // eq. L2 or L4
+}
+
+Link2dMatrix66 Link2dElement::tangentStiffness() const
+{
+    Eigen::Matrix3d kb = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 3; ++i)
+        if (m_dofs[i].law)
+            kb(i, i) = m_dofs[i].law->trialTangent();
+    return m_kin.tangent(m_ue, kb, m_q);
 }
 
 void Link2dElement::addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
@@ -93,7 +111,16 @@ void Link2dElement::addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
     for (int i = 0; i < 3; ++i)
         if (m_dofs[i].law)
             kb(i, i) = m_dofs[i].law->initialTangent();
-    m_kin.addStiffness(kb, k, freeOf);
+    if (!m_kin.corotational()) {
+        m_kin.addStiffness(kb, k, freeOf);
+        return;
+    }
+    // the tangent at rest: the laws' forces are 0 there, the held ones act (eq. L5)
+    Eigen::Vector3d q0 = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 3; ++i)
+        if (!m_dofs[i].law)
+            q0[i] = scheduledForce(m_dofs[i].forceSchedule, m_dofs[i].heldForce, 0.0);
+    m_kin.addMatrix(m_kin.tangent(Link2dVector6::Zero(), kb, q0), k, freeOf);
 }
 
 } // namespace hsmu

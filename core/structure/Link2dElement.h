@@ -6,6 +6,9 @@
 // force-controlled actuator), or by nothing (q = 0). The all-numerical twin of an ExperimentalLink2d (docs/setups.md,
 // "Multi-DOF elements"). Units: basic forces [kN], [kN m] with deformations [m], [rad].
 // deformation() / force() report the primary basic DOF (the record's one column per element).
+// Geometry: linear (eq. L1-L2, the default) or corotational (Link2dGeometry::transformation,
+// eq. L3-L5: exact large displacements; the nodal forces B(u)^T q, K0 the tangent at rest,
+// geometric stiffness of the forces held at t = 0 included).
 
 #include "core/structure/ForceSchedule.h"
 #include "core/structure/Link2dKinematics.h"
@@ -61,6 +64,9 @@ public:
     void addInitialStiffness(std::vector<Eigen::Triplet<double>>& k,
                              const std::vector<int>& freeOf) const override;
 
+    /// The element's 6 x 6 tangent at the trial state (eq. L2 / L5): B^T Kb B with the laws'
+    /// trial tangents (0 on a held or free DOF), plus the geometric stiffness of q.
+    Link2dMatrix66 tangentStiffness() const;
     const Eigen::Vector3d& basicDeformations() const { return m_d; } ///< trial d
     const Eigen::Vector3d& basicForces() const { return m_q; }       ///< trial q
     const Link2dKinematics& kinematics() const { return m_kin; }
@@ -73,6 +79,7 @@ private:
     int m_primary;
     double m_time = 0.0, m_committedTime = 0.0; // [s] of the trial / the committed state
     Eigen::Vector3d m_d = Eigen::Vector3d::Zero(), m_q = Eigen::Vector3d::Zero();
+    Link2dVector6 m_ue = Link2dVector6::Zero(), m_committedUe = Link2dVector6::Zero(); // u_e
 };
 
 } // namespace hsmu

@@ -1,5 +1,6 @@
 #include "gui/cli/RthsCommand.h"
 
+#include "comms/rths/HostProbe.h"
 #include "comms/rths/RealtimePacer.h"
 #include "core/config/RthsConfig.h"
 #include "core/groundmotion/AccelerationUnit.h"
@@ -105,6 +106,33 @@ int monitorController(const QCommandLineParser& p, const RthsConfig& cfg, const 
     return runRthsOnController(cfg, s, pre, o);
 }
 
+// --probe-host: the pacer alone on this computer (comms/rths/HostProbe.h). Exit 0 with no
+// deadline miss, 3 with misses (a script can gate a real-time test on it).
+int probeHost(const QCommandLineParser& p, const QCommandLineOption& probeOpt, bool priority, double rate, double spinUs)
+{
+    bool ok = false;
+    const double seconds = p.value(probeOpt).toDouble(&ok);
+    if (!ok || !(seconds > 0.0) || seconds > 3600.0)
+        return fail(RthsCommand::tr("--probe-host: expected seconds in (0, 3600], got '%1'").arg(p.value(probeOpt)));
+    comms::MonotonicClock monotonic;
+    comms::SpinningClock clock(monotonic, std::chrono::nanoseconds(std::int64_t(spinUs * 1e3)));
+    comms::HostProbeResult r;
+    std::string refused;
+    std::thread loop([&] {
+        if (priority)
+            refused = comms::enterRealtimePriority(80);
+        r = comms::probeHost(clock, 1.0 / rate, long(seconds * rate + 0.5));
+    });
+    loop.join();
+    if (!refused.empty())
+        ConsoleStreams::err() << RthsCommand::tr("hsmu rths: real-time priority not taken (%1); the probe ran at normal priority").arg(QString::fromStdString(refused)) << Qt::endl;
+    ConsoleStreams::out() << RthsCommand::tr("host probe at %1 Hz (spin %2 us%3): %4")
+                                 .arg(rate).arg(spinUs, 0, 'f', 0)
+                                 .arg(priority && refused.empty() ? RthsCommand::tr(", SCHED_FIFO 80") : QString())
+                                 .arg(QString::fromStdString(comms::describeHostProbe(r, 1.0 / rate))) << Qt::endl;
+    return r.misses == 0 ? 0 : 3;
+}
+
 } // namespace
 
 int RthsCommand::exec(const QStringList& arguments)
@@ -130,14 +158,17 @@ int RthsCommand::exec(const QStringList& arguments)
     const QCommandLineOption everyOpt(QStringLiteral("telemetry-every"), tr("With --controller: one telemetry frame every N ticks (default: about 128 per second)."), QStringLiteral("n"));
     const QCommandLineOption updateOpt(QStringLiteral("update"), tr("With --controller: at T seconds of the run, send new values of the damper twin's parameters (repeatable)."), QStringLiteral("T:name=value,..."));
     const QCommandLineOption resumeOpt(QStringLiteral("resume"), tr("With --controller: resume the controller's held run from the tick where it held instead of starting one."));
-    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, spinOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt, updateOpt, resumeOpt});
+    const QCommandLineOption probeOpt(QStringLiteral("probe-host"), tr("Check this computer instead of running: release S seconds of empty ticks at the configuration's loop rate (with --realtime-priority and --spin-us as a run would) and report how late they come."), QStringLiteral("seconds"));
+    p.addOptions({outOpt, gmOpt, scaleOpt, durationOpt, paceOpt, prioOpt, spinOpt, compOpt, perturbOpt, seedOpt, noNoiseOpt, controllerOpt, tokenFileOpt, everyOpt, updateOpt, resumeOpt, probeOpt});
     if (auto parsed = ConsoleStreams::parse(p, arguments))
         return parsed->isEmpty() ? 0 : fail(*parsed);
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2)
         return fail(tr("expected one CONFIG (a file or rths-benchmark-case-1 .. -4)"));
-    if (!p.isSet(outOpt))
+    if (!p.isSet(outOpt) && !p.isSet(probeOpt))
         return fail(tr("missing --out DIR"));
+    if (p.isSet(probeOpt) && p.isSet(controllerOpt))
+        return fail(tr("--probe-host checks this computer: run it on the controller's computer without --controller"));
     const QString pace = p.value(paceOpt).isEmpty() ? QStringLiteral("fast") : p.value(paceOpt);
     if (pace != QLatin1String("fast") && pace != QLatin1String("realtime"))
         return fail(tr("--pace: expected fast or realtime, got '%1'").arg(pace));
@@ -169,6 +200,8 @@ int RthsCommand::exec(const QStringList& arguments)
         if (!number(spinOpt, spin) || spin < 0.0 || spin >= 1e6 / s.rate)
             return fail(tr("--spin-us: expected 0 up to the loop period (%1 us), got '%2'").arg(1e6 / s.rate, 0, 'f', 1).arg(p.value(spinOpt)));
         s.sensors.seed = std::uint64_t(seed);
+        if (p.isSet(probeOpt))
+            return probeHost(p, probeOpt, p.isSet(prioOpt), s.rate, spin);
         // The feedforward is fitted to the nominal plant (a lab knows only its model of it).
         rths::fitToNominalLoop(s);
         if (p.isSet(perturbOpt)) {

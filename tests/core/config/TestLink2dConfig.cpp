@@ -61,6 +61,32 @@ private slots:
         QVERIFY(std::abs(x->basicForces()[0] + 500.0) <= 1e-9);
     }
 
+    // "geometry": "corotational" on every link2d (eq. L3-L5): the preset still equals its
+    // numerical twin to 1e-9, and K0 carries the held axial loads' geometric stiffness: each
+    // column's -500 kN takes 500 / 3 kN/m off the sway DOF's diagonal (P / L).
+    void corotationalPresetEqualsNumericalTwin()
+    {
+        auto doc = presetJson();
+        for (auto& e : doc["structure"]["elements"])
+            e["geometry"] = "corotational";
+        std::unique_ptr<HybridTest> hybrid, linear;
+        const auto b = run(doc, 10.0, &hybrid);
+        const auto a = run(numericalTwin(doc), 10.0);
+        const auto c = run(presetJson(), 10.0, &linear);
+        QCOMPARE(a.size(), b.size());
+        const auto [peak, du, peakF, dF] = compareRuns(a, b);
+        QVERIFY(peak > 0.01);
+        QVERIFY(du <= 1e-9 * peak);
+        QVERIFY(dF <= 1e-9 * peakF);
+        const auto diff = compareRuns(b, c); // corotational against linear: they differ
+        QVERIFY(diff.du > 1e-6 * peak);
+        const auto& k = hybrid->structure().initialStiffness();
+        const auto& k0 = linear->structure().initialStiffness();
+        qInfo("K0(x3, x3): linear %.12g, corotational %.12g kN/m", k0.coeff(0, 0), k.coeff(0, 0));
+        QVERIFY(std::abs(k.coeff(0, 0) - (k0.coeff(0, 0) - 500.0 / 3.0)) <= 1e-9 * k0.coeff(0, 0));
+        QVERIFY(std::abs(k.coeff(1, 1) - (k0.coeff(1, 1) - 500.0 / 3.0)) <= 1e-9 * k0.coeff(1, 1));
+    }
+
     void errorsNameTheSetupAndParameter()
     {
         auto doc = presetJson();
@@ -91,6 +117,19 @@ private slots:
         doc["structure"]["elements"][0]["dofs"] = nlohmann::json::array({nullptr, "x3"});
         e = errorOf(doc);
         QVERIFY2(e.contains("dofs") && e.contains("six DOFs"), qPrintable(e));
+
+        doc = presetJson();
+        doc["structure"]["elements"][0]["geometry"] = "Corotational";
+        e = errorOf(doc);
+        QVERIFY2(e.contains("geometry") && e.contains("'linear'") && e.contains("'corotational'") &&
+                     e.contains("'Corotational'"),
+                 qPrintable(e));
+
+        doc = presetJson(); // a zero-length element has no chord to turn
+        doc["structure"]["elements"][2]["length"] = 0.0;
+        doc["structure"]["elements"][2]["geometry"] = "corotational";
+        e = errorOf(doc);
+        QVERIFY2(e.contains("length") && e.contains("> 0"), qPrintable(e));
 
         doc = presetJson(); // the primary basic DOF of a numerical link needs a law
         doc["structure"]["elements"][1]["basic"][1] = {{"heldForce", 3.0}};
