@@ -122,9 +122,8 @@ bool ControllerApp::start(std::string& error) {
             if (e.link2d && protocol != "native" && !protocol.empty())
                 linkOverOpenFresco = e.name;
             const int index = static_cast<int>(stations.size());
-            // A specimen of several channels keeps no journal (SpecimenStation.h).
-            stations.push_back(std::make_unique<SpecimenStation>(
-                index, e, settings, pace, e.link2d ? nullptr : m_journal.get()));
+            stations.push_back(
+                std::make_unique<SpecimenStation>(index, e, settings, pace, m_journal.get()));
             const auto& raw = rawElements.at(i);
             identities.push_back(
                 {e.name, StateJournal::fingerprint(

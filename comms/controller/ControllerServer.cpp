@@ -236,10 +236,11 @@ struct ControllerServer::Impl final : SessionHost {
         std::optional<Message> reply;
         if (const auto* c = std::get_if<ConfigureMsg>(&m))
             reply = st.configure(*c);
-        else if (const auto* t = std::get_if<TargetMsg>(&m)) {
+        else if (std::holds_alternative<TargetMsg>(m) || std::holds_alternative<TargetsMsg>(m)) {
             if (opt.realTime)
                 catchUp(); // the ticks due before this target arrived come first
-            reply = st.target(*t);
+            const auto* t = std::get_if<TargetMsg>(&m);
+            reply = t ? st.target(*t) : st.targets(std::get<TargetsMsg>(m));
             if (opt.replyDelay > 0.0 && reply) {
                 // Test setting: the measurement leaves replyDelay after the target came.
                 auto timer = std::make_shared<asio::steady_timer>(
@@ -252,9 +253,7 @@ struct ControllerServer::Impl final : SessionHost {
                 });
                 reply.reset();
             }
-        } else if (const auto* ts = std::get_if<TargetsMsg>(&m))
-            reply = st.targets(*ts);
-        else if (const auto* c = std::get_if<CommitMsg>(&m))
+        } else if (const auto* c = std::get_if<CommitMsg>(&m))
             reply = st.commit(*c);
         else if (const auto* h = std::get_if<HoldMsg>(&m)) {
             reply = st.hold(h->reason);

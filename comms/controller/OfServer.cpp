@@ -287,7 +287,23 @@ bool OfServer::trial(const std::vector<double>& frame, std::string& why) {
     for (std::size_t i = 0; i < n; ++i)
         result[i] =
             m_stations[i]->target(TargetMsg{m_stations[i]->committedSteps() + 1, m_commanded[i]});
-    // Real time: the step's ticks at the loop rate until every station has its measurement.
+    if (!tickUntilMeasured(result, why))
+        return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto* mm = result[i] ? std::get_if<MeasurementMsg>(&*result[i]) : nullptr;
+        if (!mm) {
+            why = result[i] ? reasonOf(*result[i])
+                            : "specimen '" + m_stations[i]->name() + "' gave no measurement";
+            return false;
+        }
+        m_measured[i] = *mm;
+    }
+    m_haveTrial = true;
+    return true;
+}
+
+bool OfServer::tickUntilMeasured(std::vector<std::optional<Message>>& result, std::string& why) {
+    const std::size_t n = result.size();
     const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
         std::chrono::duration<double>(1.0 / m_opt.rate));
     auto next = std::chrono::steady_clock::now();
@@ -314,16 +330,6 @@ bool OfServer::trial(const std::vector<double>& frame, std::string& why) {
             if (!result[i])
                 result[i] = m_stations[i]->tick();
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto* mm = result[i] ? std::get_if<MeasurementMsg>(&*result[i]) : nullptr;
-        if (!mm) {
-            why = result[i] ? reasonOf(*result[i])
-                            : "specimen '" + m_stations[i]->name() + "' gave no measurement";
-            return false;
-        }
-        m_measured[i] = *mm;
-    }
-    m_haveTrial = true;
     return true;
 }
 

@@ -108,6 +108,9 @@ private:
     /// Answer a refused client's requests with NaN until it ends (see the header).
     void refuse(of::OfSocket& socket);
     bool trial(const std::vector<double>& frame, std::string& why);
+    /// Real time: the step's ticks at the loop rate until every station whose result is
+    /// still empty has its measurement(s) (fast pace: nothing to do). False if one never came.
+    bool tickUntilMeasured(std::vector<std::optional<Message>>& result, std::string& why);
     bool commitAll(std::string& why);
     std::vector<double> daqReply(int first, int last) const;
     std::vector<double> matrix(int action) const;

@@ -63,10 +63,12 @@ bool OfServer::trialChannels(const std::vector<double>& frame, std::string& why)
             return false;
         }
     }
-    const Message m = st.targets(t);
-    const auto* mm = std::get_if<MeasurementsMsg>(&m);
+    std::vector<std::optional<Message>> result{st.targets(t)};
+    if (!tickUntilMeasured(result, why)) // real time: each channel's loop at the loop rate
+        return false;
+    const auto* mm = result[0] ? std::get_if<MeasurementsMsg>(&*result[0]) : nullptr;
     if (!mm) {
-        const auto* e = std::get_if<ErrorMsg>(&m);
+        const auto* e = result[0] ? std::get_if<ErrorMsg>(&*result[0]) : nullptr;
         why = e ? e->reason : "specimen '" + st.name() + "' gave no measurements";
         return false;
     }

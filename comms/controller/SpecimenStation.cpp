@@ -39,11 +39,9 @@ SpecimenStation::SpecimenStation(int index, const ElementSpec& spec,
                                  const ControllerSettings& settings, Pace pace,
                                  StateJournal* journal)
     : m_index(index), m_spec(spec), m_settings(settings), m_pace(pace), m_journal(journal),
-      m_actuator(spec.specimen.options.actuator, settings.rate),
       m_limits(ownLimits(spec)) {
-    m_pc.setDeformationLimit(m_limits.maxDeformation);
-    m_pc.setIncrementLimit(m_limits.maxIncrement);
     makeSpecimen();
+    makeLoops();
 }
 
 SpecimenStation::~SpecimenStation() = default;
@@ -66,9 +64,25 @@ void SpecimenStation::makeSpecimen() {
         m_specimen->prepare(m_dt);
 }
 
+void SpecimenStation::makeLoops() {
+    if (!m_rig) {
+        m_loops.emplace_back(m_spec.specimen.options.actuator, m_settings.rate);
+        m_loops.back().setLimits(m_limits.maxDeformation, m_limits.maxIncrement);
+        return;
+    }
+    for (int i = 0; i < m_rig->channels(); ++i) {
+        const bool force = m_rig->channel(i).mode == ActuatorMode::Force;
+        m_loops.emplace_back(m_spec.link2d->actuators[static_cast<std::size_t>(i)].model,
+                             m_settings.rate,
+                             m_rig->channelName(static_cast<std::size_t>(i)) +
+                                 (force ? ": actuator force |F|" : ": actuator stroke |d|"));
+        const auto [bound, increment] = m_rig->bounds(i);
+        m_loops.back().setLimits(bound, increment);
+    }
+}
+
 double SpecimenStation::initialStiffness() const {
-    return m_rig ? m_rig->lab().channelStiffness(0, true)
-                 : m_specimen->trueLaw().initialTangent();
+    return m_rig ? m_rig->lab().channelStiffness(0, true) : m_specimen->trueLaw().initialTangent();
 }
 
 double SpecimenStation::tangentStiffness() const {
@@ -79,7 +93,7 @@ double SpecimenStation::tangentStiffness() const {
 HelloAckMsg SpecimenStation::status() const {
     HelloAckMsg a;
     a.committedSteps = m_committed;
-    a.lastCommittedTarget = m_h0;
+    a.lastCommittedTarget = m_loops.front().committedTarget();
     a.holding = m_holding;
     a.element = m_spec.name;
     a.holdReason = m_holdReason;
@@ -93,9 +107,9 @@ HelloAckMsg SpecimenStation::status() const {
                 break;
             }
         a.description = "specimen '" + m_spec.name + "' on hsmu-controller (" +
-                        std::to_string(m_rig->channels()) + " actuator channels: " +
-                        m_rig->lab().description() + "), " + std::to_string(m_committed) +
-                        " committed steps";
+                        std::to_string(m_rig->channels()) +
+                        " actuator channels: " + m_rig->lab().description() + "), " +
+                        std::to_string(m_committed) + " committed steps";
         return a;
     }
     const auto& o = m_spec.specimen.options;
@@ -112,54 +126,6 @@ HelloAckMsg SpecimenStation::status() const {
                   static_cast<unsigned long long>(m_committed));
     a.description = buf;
     return a;
-}
-
-bool SpecimenStation::replay(const JournalRecord& r, std::string& error) {
-    const std::string where = "specimen '" + m_spec.name + "': ";
-    if (m_rig) {
-        error = where + "a specimen of several actuator channels keeps no journal";
-        return false;
-    }
-    switch (r.kind) {
-    case JournalRecord::Kind::Configure:
-        m_dt = r.dt;
-        m_specimen->prepare(m_dt);
-        return true;
-    case JournalRecord::Kind::Reset:
-        makeSpecimen();
-        m_committed = 0;
-        m_h0 = m_h1 = m_h2 = 0.0;
-        m_last = m_trial = Trial{};
-        m_actuator.reset(0.0);
-        m_pc.beginStep(0.0, 0.0, 0.0, 0.0);
-        return true;
-    case JournalRecord::Kind::Commit:
-        break;
-    }
-    if (!(m_dt > 0.0) || r.step != m_committed + 1) {
-        error = where + "journaled step " + std::to_string(r.step) + " does not follow step " +
-                std::to_string(m_committed);
-        return false;
-    }
-    ControlMeasurement cm;
-    if (!m_specimen->setTarget(r.achieved).ok || !m_specimen->measure(cm).ok ||
-        !m_specimen->commit().ok || cm.deformation != r.deformation || cm.force != r.force) {
-        error = where + "replaying step " + std::to_string(r.step) +
-                " does not give the recorded measurement (was the configuration changed?)";
-        return false;
-    }
-    m_last.valid = true;
-    m_last.step = r.step;
-    m_last.target = r.target;
-    m_last.achieved = r.achieved;
-    m_last.measurement = MeasurementMsg{r.step, r.deformation, r.force, r.target, 0, 0};
-    m_h2 = m_h1;
-    m_h1 = m_h0;
-    m_h0 = r.target;
-    m_committed = r.step;
-    m_actuator.reset(r.achieved);
-    m_pc.beginStep(r.achieved, m_h0, m_h1, m_h2); // a restarted rig rests where it stopped
-    return true;
 }
 
 Message SpecimenStation::configure(const ConfigureMsg& m) {
@@ -186,10 +152,11 @@ Message SpecimenStation::configure(const ConfigureMsg& m) {
                 return e;
         }
     }
-    m_pc.setTiming(m_settings.ticksPerStep(m_dt), m_settings.predictTicks(m_dt));
-    m_pc.setHoldRamp(m_settings.holdRampTicks());
-    m_pc.setIncrementLimit(m_limits.maxIncrement);
-    m_pc.setDeformationLimit(m_limits.maxDeformation);
+    for (ActuatorLoop& l : m_loops)
+        l.setTiming(m_settings.ticksPerStep(m_dt), m_settings.predictTicks(m_dt),
+                    m_settings.holdRampTicks());
+    if (!m_rig) // the rig's channels keep their own limits (ChannelRig::bounds)
+        m_loops.front().setLimits(m_limits.maxDeformation, m_limits.maxIncrement);
     if (!m_configured) {
         m_configured = true;
         if (!m_trial.valid)
@@ -199,22 +166,42 @@ Message SpecimenStation::configure(const ConfigureMsg& m) {
 }
 
 void SpecimenStation::beginStep() {
-    m_pc.beginStep(m_pc.command(), m_h0, m_h1, m_h2);
+    for (ActuatorLoop& l : m_loops)
+        l.beginStep();
 }
 
 std::optional<Message> SpecimenStation::advance() {
-    const double c = m_pc.tick();
-    m_peakCommand = std::isfinite(c) ? std::max(m_peakCommand, std::abs(c))
-                                     : std::numeric_limits<double>::infinity();
-    const double a = m_actuator.tick(c);
-    const double limit = m_limits.maxDeformation;
-    if (!std::isfinite(a) || (limit > 0.0 && std::isfinite(limit) && std::abs(a) > limit)) {
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "actuator position |d| = %.6g exceeds the limit %.6g",
-                      std::abs(a), limit);
-        return trip(ErrorCode::Interlock, buf);
-    }
+    std::optional<std::string> why;
+    for (ActuatorLoop& l : m_loops)
+        if (auto w = l.tick(); w && !why)
+            why = std::move(w);
+    if (why)
+        return trip(ErrorCode::Interlock, *why);
     return std::nullopt;
+}
+
+std::optional<Message> SpecimenStation::startStep(std::uint64_t step,
+                                                  const std::vector<double>& targets) {
+    using P = PredictorCorrector::Phase;
+    m_trial.valid = false;
+    m_pendingStep = step;
+    ActuatorLoop& clock = m_loops.front(); // every loop keeps the same step clock
+    if (m_pace == Pace::RealTime) {
+        for (std::size_t i = 0; i < m_loops.size(); ++i)
+            m_loops[i].setTarget(targets[i]);
+        m_pending = true;
+        return std::nullopt;
+    }
+    // Fast pace, simulated clock: the targets are taken to arrive when prediction ends.
+    while (clock.phase() == P::Predicting)
+        if (auto e = advance())
+            return e;
+    for (std::size_t i = 0; i < m_loops.size(); ++i)
+        m_loops[i].setTarget(targets[i]);
+    while (clock.phase() == P::Correcting)
+        if (auto e = advance())
+            return e;
+    return finishStep();
 }
 
 Message SpecimenStation::trip(ErrorCode code, const std::string& reason) {
@@ -224,16 +211,20 @@ Message SpecimenStation::trip(ErrorCode code, const std::string& reason) {
                     : code == ErrorCode::SpecimenFault ? "specimen fault: "
                                                        : "controller fault: ") +
                    reason;
-    m_pc.stop();
     m_pending = false;
     if (m_rig) // every actuator back at its committed stroke and force
-        m_rig->hold(m_holdReason);
+        holdLoops();
+    else
+        m_loops.front().stop();
     ++m_trips;
     return error(code, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
 }
 
 Message SpecimenStation::finishStep() {
-    const double achieved = m_actuator.position();
+    if (m_rig)
+        return finishChannels();
+    const ActuatorLoop& loop = m_loops.front();
+    const double achieved = loop.achieved();
     if (ControlResult r = m_specimen->setTarget(achieved); !r.ok) {
         m_specimen->resume();
         return trip(ErrorCode::SpecimenFault, r.reason);
@@ -245,16 +236,16 @@ Message SpecimenStation::finishStep() {
         return trip(ErrorCode::Interlock, *why);
     m_trial.valid = true;
     m_trial.step = m_pendingStep;
-    m_trial.target = m_pc.target();
+    m_trial.target = loop.target();
     m_trial.achieved = achieved;
     MeasurementMsg& mm = m_trial.measurement;
     mm.step = m_pendingStep;
     mm.deformation = cm.deformation;
     mm.force = cm.force;
-    mm.commanded = m_pc.command();
-    mm.heldTicks = static_cast<std::uint32_t>(m_pc.heldTicks());
+    mm.commanded = loop.command();
+    mm.heldTicks = static_cast<std::uint32_t>(loop.heldTicks());
     mm.flags = m_specimen->fractured() ? kFlagFractured : 0u;
-    m_totalHeld += m_pc.heldTicks();
+    m_totalHeld += loop.heldTicks();
     m_pending = false;
     return mm;
 }
@@ -286,43 +277,11 @@ std::optional<Message> SpecimenStation::target(const TargetMsg& m) {
         mm.flags |= kFlagReplayed;
         return mm;
     }
-    if (m_pending && m_pendingStep == m.step && m_pc.target() == d)
+    if (m_pending && m_pendingStep == m.step && m_loops.front().target() == d)
         return std::nullopt; // already on its way
-    if (auto why = m_limits.violationOfTarget(d, m_h0))
+    if (auto why = m_limits.violationOfTarget(d, m_loops.front().committedTarget()))
         return trip(ErrorCode::Interlock, *why);
-    m_trial.valid = false;
-    m_pendingStep = m.step;
-    if (m_pace == Pace::RealTime) {
-        m_pc.setTarget(d);
-        m_pending = true;
-        return std::nullopt;
-    }
-    // Fast pace, simulated clock: the target is taken to arrive when prediction ends.
-    while (m_pc.phase() == PredictorCorrector::Phase::Predicting)
-        if (auto e = advance())
-            return e;
-    m_pc.setTarget(d);
-    while (m_pc.phase() == PredictorCorrector::Phase::Correcting)
-        if (auto e = advance())
-            return e;
-    return finishStep();
-}
-
-Message SpecimenStation::targets(const TargetsMsg& m) {
-    if (!m_rig)
-        return error(ErrorCode::ProtocolViolation,
-                     "specimen '" + m_spec.name + "' has one actuator channel: send target");
-    if (!m_configured)
-        return error(ErrorCode::NotConfigured, "targets before configure");
-    if (m_holding)
-        return error(ErrorCode::Holding, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
-    auto r = m_rig->target(m, m_committed);
-    if (auto* e = std::get_if<ErrorMsg>(&r)) {
-        if (e->code == ErrorCode::Interlock || e->code == ErrorCode::SpecimenFault)
-            return trip(e->code, e->reason);
-        return *e;
-    }
-    return std::get<MeasurementsMsg>(r);
+    return startStep(m.step, {d});
 }
 
 std::optional<Message> SpecimenStation::tick() {
@@ -330,14 +289,14 @@ std::optional<Message> SpecimenStation::tick() {
         return std::nullopt;
     if (auto e = advance())
         return e;
-    if (m_pending && m_pc.phase() == PredictorCorrector::Phase::Arrived)
+    if (m_pending && m_loops.front().phase() == PredictorCorrector::Phase::Arrived)
         return finishStep();
     return std::nullopt;
 }
 
 bool SpecimenStation::needsTicks() const {
     using P = PredictorCorrector::Phase;
-    const P p = m_pc.phase();
+    const P p = m_loops.front().phase();
     return m_pace == Pace::RealTime && m_configured && !m_holding &&
            (p == P::Predicting || p == P::Late || p == P::Correcting);
 }
@@ -347,17 +306,8 @@ Message SpecimenStation::commit(const CommitMsg& m) {
         return error(ErrorCode::Holding, "specimen '" + m_spec.name + "' holds: " + m_holdReason);
     if (m.step == m_committed && m_last.valid)
         return AckMsg{MessageType::Commit, m_committed};
-    if (m_rig) {
-        if (m.step == m_committed && m_committed > 0)
-            return AckMsg{MessageType::Commit, m_committed};
-        if (m.step != m_committed + 1 || !m_rig->hasTrial(m.step))
-            return error(ErrorCode::ProtocolViolation,
-                         "commit of step " + std::to_string(m.step) + " without its measurement");
-        if (ControlResult r = m_rig->commit(); !r.ok)
-            return trip(ErrorCode::SpecimenFault, r.reason);
-        m_committed = m.step;
-        return AckMsg{MessageType::Commit, m_committed};
-    }
+    if (m_rig)
+        return commitChannels(m);
     if (m.step != m_committed + 1 || !m_trial.valid || m_trial.step != m.step)
         return error(ErrorCode::ProtocolViolation,
                      "commit of step " + std::to_string(m.step) + " without its measurement");
@@ -365,11 +315,8 @@ Message SpecimenStation::commit(const CommitMsg& m) {
         return trip(ErrorCode::SpecimenFault, r.reason);
     m_last = m_trial;
     m_trial = Trial{};
-    m_h2 = m_h1;
-    m_h1 = m_h0;
-    m_h0 = m_last.target;
     m_committed = m.step;
-    beginStep();
+    m_loops.front().commit(m_last.target);
     if (m_journal) {
         JournalRecord r;
         r.element = m_index;
@@ -384,24 +331,17 @@ Message SpecimenStation::commit(const CommitMsg& m) {
     return AckMsg{MessageType::Commit, m_committed};
 }
 
-Message SpecimenStation::journal(const JournalRecord& r) {
-    std::string why;
-    if (m_journal->append(r, why))
-        return AckMsg{};
-    // The step stands, but a restart would forget it: stop until the operator looks.
-    return trip(ErrorCode::Internal, why);
-}
-
 Message SpecimenStation::hold(const std::string& reason) {
     if (!m_holding || m_consoleHold) { // a trip's reason is kept: it is the reason to look
         m_consoleHold = true;
         m_holdReason = reason.empty() ? "console hold" : reason;
     }
     m_holding = true;
-    m_pc.stop();
     m_pending = false;
     if (m_rig)
-        m_rig->hold(m_holdReason);
+        holdLoops();
+    else
+        m_loops.front().stop();
     return AckMsg{MessageType::Hold, m_committed};
 }
 
@@ -426,14 +366,13 @@ bool SpecimenStation::releaseConsoleHold() {
 Message SpecimenStation::reset() {
     makeSpecimen();
     m_committed = 0;
-    m_h0 = m_h1 = m_h2 = 0.0;
     m_last = m_trial = Trial{};
     m_pending = false;
     m_holding = false;
     m_consoleHold = false;
     m_holdReason.clear();
-    m_actuator.reset(0.0);
-    m_pc.beginStep(0.0, 0.0, 0.0, 0.0);
+    for (ActuatorLoop& l : m_loops)
+        l.restore(0.0, 0.0, 0.0, 0.0);
     if (m_journal) {
         JournalRecord r;
         r.kind = JournalRecord::Kind::Reset;

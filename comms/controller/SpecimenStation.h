@@ -20,23 +20,28 @@
 // Interlock (SafetyLimits): the element's `limits` and the specimen's `interlock` (the
 // tighter of each), which no client can loosen: Configure may only tighten them (a limit of
 // 0, negative, NaN or infinite leaves the configuration's). The predictor-corrector's command
-// saturates at the deformation limit, so no command ever leaves it. A target past the deformation or increment limit (increment from the
-// last committed target), an actuator position past the deformation limit at any tick, or a
-// measured force past the force limit -> the station holds and answers Error(Interlock)
-// whose text names the limit. Targets are refused (Error(Holding)) until Resume.
-// N actuator channels (a link2d specimen): the station's specimen is a ChannelRig (its
-// actuators' uniaxial materials, each channel's limits) and its steps come as Targets and go
-// as Measurements; commit, hold, resume, reset, the hello-ack and the step indices are the
-// same as one channel's (a one-channel frame to it, or an N-channel one to a one-channel
-// station, is a protocol violation). Its steps are evaluated at once (no ticks: each
-// channel's actuator model runs once per step in the rig, ChannelRig.h) and not journaled:
-// pass a null journal.
-// Thread rules: one thread (the controller's io thread).
+// saturates at the deformation limit, so no command ever leaves it. A target past the deformation
+// or increment limit (increment from the last committed target), an actuator position past the
+// deformation limit at any tick, or a measured force past the force limit -> the station holds and
+// answers Error(Interlock) whose text names the limit. Targets are refused (Error(Holding)) until
+// Resume. N actuator channels (a link2d specimen): the station's specimen is a ChannelRig (its
+// actuators' uniaxial materials or the whole specimen, each channel's limits) and its steps
+// come as Targets and go as Measurements; commit, hold, resume, reset, the hello-ack, the
+// step indices and the journal are the same as one channel's (a one-channel frame to it, or
+// an N-channel one to a one-channel station, is a protocol violation). Each channel is an
+// ActuatorLoop of its own (its predictor-corrector and its actuator model at the loop rate,
+// its bound checked every tick: stroke on a displacement channel, force on a force channel),
+// all on the one step clock: the targets arrive together, so a late Targets frame holds every
+// channel for the same held ticks (each channel's loop counts its own: loop(i).heldTicks();
+// totalHeldTicks() adds each step's held ticks once, as for one channel; the Measurements frame has
+// no field for them), and the rig's lab is evaluated once per step at the values the actuators
+// reached. A trip names the channel and puts every actuator back at its committed stroke and force
+// (the rig's lab and each loop). The journal's `commits` line holds every channel's target, reached
+// value and measurement (StateJournal.h). Thread rules: one thread (the controller's io thread).
 
-#include "comms/controller/ActuatorDynamics.h"
+#include "comms/controller/ActuatorLoop.h"
 #include "comms/controller/ChannelRig.h"
 #include "comms/controller/ControllerSettings.h"
-#include "comms/controller/PredictorCorrector.h"
 #include "comms/controller/StateJournal.h"
 #include "comms/protocol/Messages.h"
 #include "core/config/TestConfig.h"
@@ -69,11 +74,12 @@ public:
     /// A measurement or an error now, or nullopt: the step is under way (real time), tick()
     /// delivers its measurement.
     std::optional<Message> target(const TargetMsg& m);
-    /// The step of an N-channel specimen: its Measurements or an error (at once).
-    Message targets(const TargetsMsg& m);
+    /// The step of an N-channel specimen: its Measurements or an error now, or nullopt: the
+    /// step is under way (real time), tick() delivers its Measurements.
+    std::optional<Message> targets(const TargetsMsg& m);
     /// The N-channel specimen (nullptr for one channel).
     const ChannelRig* rig() const { return m_rig.get(); }
-    /// One tick of the loop (real time). A Measurement when a step ends, an Error when the
+    /// One tick of the loop (real time). A Measurement(s) when a step ends, an Error when the
     /// interlock trips, else nullopt.
     std::optional<Message> tick();
     /// True when tick() has work (a step is being predicted, waited for or corrected).
@@ -101,7 +107,9 @@ public:
     int interlockTrips() const { return m_trips; }
     /// The largest |command| ever given to the actuator (NaN counts as infinite): what the
     /// limits property test checks against limits().maxDeformation.
-    double peakCommand() const { return m_peakCommand; }
+    double peakCommand() const { return m_loops.front().peakCommand(); }
+    /// Channel i's loop (0 for one channel).
+    const ActuatorLoop& loop(int i) const { return m_loops.at(static_cast<std::size_t>(i)); }
     /// The limits in force: the configuration's (element `limits`, specimen `interlock`, the
     /// tighter), tightened by the last Configure.
     const SafetyLimits& limits() const { return m_limits; }
@@ -114,10 +122,20 @@ private:
         MeasurementMsg measurement;
     };
     void makeSpecimen();
+    void makeLoops();
     void beginStep();
-    /// One tick of predictor + actuator with the deformation interlock; an error on a trip.
+    /// The admitted step's targets, one per loop: corrected at once (fast pace, simulated
+    /// clock) and measured, or under way (real time: nullopt).
+    std::optional<Message> startStep(std::uint64_t step, const std::vector<double>& targets);
+    /// One tick of every loop with its bound; an error on a trip (naming the channel).
     std::optional<Message> advance();
     Message finishStep();
+    // The N-channel parts (SpecimenStationChannels.cpp).
+    Message finishChannels();
+    Message commitChannels(const CommitMsg& m);
+    bool replayChannels(const JournalRecord& r, std::string& error);
+    /// Every loop back at its committed value (a hold of the rig).
+    void holdLoops();
     Message trip(ErrorCode code, const std::string& reason);
     Message journal(const JournalRecord& r);
 
@@ -128,14 +146,12 @@ private:
     StateJournal* m_journal;
     std::unique_ptr<VirtualSpecimen> m_specimen; // one channel
     std::unique_ptr<ChannelRig> m_rig;           // N channels
-    ActuatorDynamics m_actuator;
-    PredictorCorrector m_pc;
+    std::vector<ActuatorLoop> m_loops;           // one per actuator channel
     SafetyLimits m_limits;
     double m_dt = 0.0;
     bool m_configured = false;
     std::uint64_t m_committed = 0;
-    double m_h0 = 0.0, m_h1 = 0.0, m_h2 = 0.0; // last committed targets, newest first
-    Trial m_trial, m_last;                     // uncommitted measured trial; last committed step
+    Trial m_trial, m_last; // uncommitted measured trial; last committed step
     bool m_pending = false;
     std::uint64_t m_pendingStep = 0;
     bool m_holding = false;
@@ -143,7 +159,6 @@ private:
     std::string m_holdReason;
     long m_totalHeld = 0;
     int m_trips = 0;
-    double m_peakCommand = 0.0;
 };
 
 } // namespace hsmu::comms

@@ -42,6 +42,18 @@ bool parseRecord(const std::string& line, JournalRecord& r) {
                parseDouble(in, r.achieved) && parseDouble(in, r.deformation) &&
                parseDouble(in, r.force);
     }
+    if (kind == "commits") {
+        r.kind = JournalRecord::Kind::Commit;
+        std::size_t n = 0;
+        if (!(in >> r.step >> n) || n < 2 || n > 1000)
+            return false;
+        r.channels.resize(n);
+        for (JournalChannel& c : r.channels)
+            if (!parseDouble(in, c.target) || !parseDouble(in, c.achieved) ||
+                !parseDouble(in, c.stroke) || !parseDouble(in, c.force))
+                return false;
+        return true;
+    }
     if (kind == "reset") {
         r.kind = JournalRecord::Kind::Reset;
         return true;
@@ -148,8 +160,19 @@ bool StateJournal::append(const JournalRecord& r, std::string& error) {
         written = std::fprintf(m_file, "configure %d %.17g\n", r.element, r.dt);
         break;
     case JournalRecord::Kind::Commit:
-        written = std::fprintf(m_file, "commit %d %" PRIu64 " %.17g %.17g %.17g %.17g\n", r.element,
-                               r.step, r.target, r.achieved, r.deformation, r.force);
+        if (r.channels.empty()) {
+            written = std::fprintf(m_file, "commit %d %" PRIu64 " %.17g %.17g %.17g %.17g\n",
+                                   r.element, r.step, r.target, r.achieved, r.deformation, r.force);
+            break;
+        }
+        written = std::fprintf(m_file, "commits %d %" PRIu64 " %zu", r.element, r.step,
+                               r.channels.size());
+        for (const JournalChannel& c : r.channels)
+            if (written >= 0)
+                written = std::fprintf(m_file, " %.17g %.17g %.17g %.17g", c.target, c.achieved,
+                                       c.stroke, c.force);
+        if (written >= 0)
+            written = std::fprintf(m_file, "\n");
         break;
     case JournalRecord::Kind::Reset:
         written = std::fprintf(m_file, "reset %d\n", r.element);

@@ -9,6 +9,8 @@
 //   element <index> <fingerprint, 16 hex digits> <name>      one per specimen, in order
 //   configure <index> <dt [s]>
 //   commit <index> <step> <target> <achieved> <measured deformation> <measured force>
+//   commits <index> <step> <n> n x (<target> <achieved> <measured stroke> <measured force>)
+//                                                  a specimen of n >= 2 actuator channels
 //   reset <index>
 //
 // Numbers are written with 17 significant digits (exact round trip of binary64). The
@@ -24,6 +26,11 @@
 
 namespace hsmu::comms {
 
+/// One actuator channel of a journaled step (units: the channel's; stroke [m], force [kN]).
+struct JournalChannel {
+    double target = 0.0, achieved = 0.0, stroke = 0.0, force = 0.0;
+};
+
 struct JournalRecord {
     enum class Kind { Configure, Commit, Reset };
     Kind kind = Kind::Commit;
@@ -31,6 +38,7 @@ struct JournalRecord {
     double dt = 0.0;                                                     ///< Configure
     std::uint64_t step = 0;                                              ///< Commit
     double target = 0.0, achieved = 0.0, deformation = 0.0, force = 0.0; ///< Commit
+    std::vector<JournalChannel> channels; ///< Commit of N >= 2 channels (then the above are 0)
 };
 
 struct JournalElement {

@@ -36,9 +36,9 @@ private slots:
         SpecimenStation st(0, columnSpec(), ControllerSettings{}, SpecimenStation::Pace::Fast,
                            nullptr);
         QCOMPARE(st.status().channelCommands, (std::vector<double>{0.0, 0.0}));
-        QVERIFY(std::holds_alternative<ErrorMsg>(st.targets(targets(1, 0.001)))); // unconfigured
+        QVERIFY(std::holds_alternative<ErrorMsg>(*st.targets(targets(1, 0.001)))); // unconfigured
         QVERIFY(std::holds_alternative<AckMsg>(st.configure(ConfigureMsg{0.01})));
-        const Message m = st.targets(targets(1, 0.001));
+        const Message m = *st.targets(targets(1, 0.001));
         QVERIFY(std::holds_alternative<MeasurementsMsg>(m));
         const auto& mm = std::get<MeasurementsMsg>(m);
         QCOMPARE(mm.channels.size(), std::size_t(2));
@@ -47,7 +47,7 @@ private slots:
         QCOMPARE(mm.channels[1].stroke, 0.001);
         QVERIFY(mm.channels[1].force > 0.0);
         // The same targets again: the same answer, flagged as repeated, no new trial.
-        const auto again = std::get<MeasurementsMsg>(st.targets(targets(1, 0.001)));
+        const auto again = std::get<MeasurementsMsg>(*st.targets(targets(1, 0.001)));
         QCOMPARE(again.flags, kFlagReplayed);
         QCOMPARE(again.channels[1].force, mm.channels[1].force);
         QVERIFY(std::holds_alternative<AckMsg>(st.commit(CommitMsg{1})));
@@ -56,7 +56,7 @@ private slots:
         QVERIFY(std::holds_alternative<AckMsg>(st.commit(CommitMsg{1}))); // repeated commit
         QCOMPARE(st.committedSteps(), std::uint64_t(1));
         // The committed step re-sent with other targets: a state mismatch.
-        const Message other = st.targets(targets(1, 0.002));
+        const Message other = *st.targets(targets(1, 0.002));
         const auto* e = std::get_if<ErrorMsg>(&other);
         QVERIFY(e && e->code == ErrorCode::StateMismatch);
     }
@@ -65,11 +65,11 @@ private slots:
         SpecimenStation st(0, columnSpec(), ControllerSettings{}, SpecimenStation::Pace::Fast,
                            nullptr);
         st.configure(ConfigureMsg{0.01});
-        QVERIFY(std::holds_alternative<MeasurementsMsg>(st.targets(targets(1, 0.01))));
+        QVERIFY(std::holds_alternative<MeasurementsMsg>(*st.targets(targets(1, 0.01))));
         QVERIFY(std::holds_alternative<AckMsg>(st.commit(CommitMsg{1})));
         const double f1 = st.rig()->lab().committedForce(1);
         // Lateral: increment limit 0.05 m per step (the preset's), stroke limit 0.2 m.
-        const Message m = st.targets(targets(2, 0.07));
+        const Message m = *st.targets(targets(2, 0.07));
         const auto* e = std::get_if<ErrorMsg>(&m);
         QVERIFY(e && e->code == ErrorCode::Interlock);
         QVERIFY2(e->reason.find("channel 2 'lateral': ") != std::string::npos, e->reason.c_str());
@@ -77,10 +77,10 @@ private slots:
         QCOMPARE(st.rig()->lab().committedStroke(1), 0.01);
         QCOMPARE(st.rig()->lab().committedForce(1), f1);
         QCOMPARE(st.rig()->lab().actuator(1).law->trialDeformation(), 0.01);
-        QVERIFY(std::holds_alternative<ErrorMsg>(st.targets(targets(2, 0.02)))); // holding
+        QVERIFY(std::holds_alternative<ErrorMsg>(*st.targets(targets(2, 0.02)))); // holding
         st.resume();
         // Vertical: a force past its 1000 kN limit is never applied.
-        const Message f = st.targets(targets(2, 0.02, -1200.0));
+        const Message f = *st.targets(targets(2, 0.02, -1200.0));
         e = std::get_if<ErrorMsg>(&f);
         QVERIFY(e && e->code == ErrorCode::Interlock);
         QVERIFY2(e->reason.find("channel 1 'vertical': ") != std::string::npos, e->reason.c_str());
@@ -97,7 +97,7 @@ private slots:
         SpecimenStation st(0, columnSpec(0.002), ControllerSettings{}, SpecimenStation::Pace::Fast,
                            nullptr);
         st.configure(ConfigureMsg{0.01});
-        const Message m = st.targets(targets(1, 0.001));
+        const Message m = *st.targets(targets(1, 0.001));
         const auto* e = std::get_if<ErrorMsg>(&m);
         QVERIFY(e && e->code == ErrorCode::Interlock);
         QVERIFY2(e->reason.find("channel 1 'vertical': measured") != std::string::npos,

@@ -7,7 +7,7 @@
 // controller and an emergency hold each leave every actuator holding (the hello-ack's
 // per-channel committed commands are the test's last committed ones) and the record keeps
 // every step exactly once; a lost commit acknowledgement is settled without a hold; a
-// controller killed mid-run leaves the test held.
+// controller killed mid-run and restarted without a state file leaves the test held.
 #include "comms/link/ControlFactory.h"
 
 #include "ControllerProcess.h"
@@ -252,10 +252,11 @@ private slots:
                 if (step == 120)
                     ctl->kill();
             },
-            [&] { // restarted without its journal: a virgin specimen, step 0
+            [&] { // restarted without a journal: a virgin specimen, step 0 (with its journal
+                  // it continues: test_comms_controller_channel_journal)
                 ctl = std::make_unique<ControllerProcess>(
                     QStringList{"--config", QString::fromStdString(m_config), "--pace", "fast",
-                                "--quiet"});
+                                "--quiet", "--no-state-file"});
                 QVERIFY(ctl->start(port));
             },
             1);

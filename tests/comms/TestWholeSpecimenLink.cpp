@@ -26,6 +26,10 @@ namespace {
 
 /// The preset with its left column as a whole: Bouc-Wen hinge (1.6e5 kN m/rad, yield near
 /// 150 kN m), elastic axial 2e5 kN/m, EI 2e5 kN m^2; lateral lag 5 ms, vertical delay 20 ms.
+/// The controller's loop at 100 Hz, one tick per 10 ms step: each channel's actuator model,
+/// run at the loop rate with its command reaching the target at the step's one tick, is then
+/// the in-process lab's once-per-step model (lag exp(-h/tau) with h = dt; delay 2 ticks = 2
+/// steps), so both runs must agree (TestChannelLoops checks the loop rate's own closed form).
 nlohmann::json wholeFrame(double duration) {
     nlohmann::json doc = preset(duration);
     nlohmann::json& col = doc["structure"]["elements"][0];
@@ -38,6 +42,7 @@ nlohmann::json wholeFrame(double duration) {
         a.erase("material");
     col["actuators"][0]["actuator"] = {{"type", "delay"}, {"delay", 0.02}};
     col["actuators"][1]["actuator"] = {{"type", "lag"}, {"timeConstant", 0.005}};
+    doc["controller"]["rate"] = 100.0;
     return doc;
 }
 
@@ -70,8 +75,8 @@ private slots:
         const auto kind = protocol == "simapp"       ? LinkAddress::Kind::SimApp
                           : protocol == "generictcp" ? LinkAddress::Kind::GenericTcp
                                                      : LinkAddress::Kind::Tcp;
-        const Run linked =
-            runTest(cfg, makeControlFactory(LinkAddress{kind, "127.0.0.1", ctl.port()}, patientOptions()));
+        const Run linked = runTest(
+            cfg, makeControlFactory(LinkAddress{kind, "127.0.0.1", ctl.port()}, patientOptions()));
         QVERIFY2(linked.state == HybridTest::State::Finished, linked.error.c_str());
         QCOMPARE(linked.records.size(), std::size_t(501));
         QVERIFY(everyStepOnce(linked));
