@@ -3294,6 +3294,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>RTHS proposal #%1 rejected</source>
+        <translation>RTHS proposal #%1 rejected</translation>
+    </message>
+    <message>
+        <source>RTHS proposal #%1 approved</source>
+        <translation>RTHS proposal #%1 approved</translation>
+    </message>
+    <message>
         <source>Damper twin</source>
         <translation>Damper twin</translation>
     </message>
@@ -3560,6 +3568,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no controller&apos;s RTHS run is going</source>
+        <translation>no controller&apos;s RTHS run is going</translation>
+    </message>
     <message>
         <source>this RTHS run has no damper twin</source>
         <translation>this RTHS run has no damper twin</translation>
@@ -4096,6 +4108,58 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsTwinPanel</name>
+    <message>
+        <source>Proposal #%1 refused: %2</source>
+        <translation>Proposal #%1 refused: %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 applied before tick %2</source>
+        <translation>Proposal #%1 applied before tick %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 rejected before tick %2: nothing applied</source>
+        <translation>Proposal #%1 rejected before tick %2: nothing applied</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 %2</source>
+        <translation>Proposal #%1 %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 before tick %2: waiting for your approval</source>
+        <translation>Proposal #%1 before tick %2: waiting for your approval</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>Reject</translation>
+    </message>
+    <message>
+        <source>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</source>
+        <translation>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation>Approve</translation>
+    </message>
+    <message>
+        <source>Proposals waiting for approval (the controller&apos;s identification)</source>
+        <translation>Proposals waiting for approval (the controller&apos;s identification)</translation>
+    </message>
+    <message>
+        <source>Proposed values</source>
+        <translation>Proposed values</translation>
+    </message>
+    <message>
+        <source>Fit error</source>
+        <translation>Fit error</translation>
+    </message>
+    <message>
+        <source>Tick (time)</source>
+        <translation>Tick (time)</translation>
+    </message>
+    <message>
+        <source>Proposal</source>
+        <translation>Proposal</translation>
+    </message>
     <message>
         <source>Applied before tick %1 (t = %2 s; %3): %4</source>
         <translation>Applied before tick %1 (t = %2 s; %3): %4</translation>

@@ -3294,6 +3294,14 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>RTHS proposal #%1 rejected</source>
+        <translation>Propuesta RTHS n.º %1 rechazada</translation>
+    </message>
+    <message>
+        <source>RTHS proposal #%1 approved</source>
+        <translation>Propuesta RTHS n.º %1 aprobada</translation>
+    </message>
+    <message>
         <source>Damper twin</source>
         <translation>Gemelo del amortiguador</translation>
     </message>
@@ -3560,6 +3568,10 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no controller&apos;s RTHS run is going</source>
+        <translation>no hay ningún ensayo RTHS de un controlador en curso</translation>
+    </message>
     <message>
         <source>this RTHS run has no damper twin</source>
         <translation>este ensayo RTHS no tiene gemelo del amortiguador</translation>
@@ -4096,6 +4108,58 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 </context>
 <context>
     <name>hsmu::gui::RthsTwinPanel</name>
+    <message>
+        <source>Proposal #%1 refused: %2</source>
+        <translation>Propuesta n.º %1 rechazada por el lazo: %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 applied before tick %2</source>
+        <translation>Propuesta n.º %1 aplicada antes del tick %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 rejected before tick %2: nothing applied</source>
+        <translation>Propuesta n.º %1 rechazada antes del tick %2: no se aplica nada</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 %2</source>
+        <translation>Propuesta n.º %1: %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 before tick %2: waiting for your approval</source>
+        <translation>Propuesta n.º %1 antes del tick %2: pendiente de su aprobación</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>Rechazar</translation>
+    </message>
+    <message>
+        <source>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</source>
+        <translation>Aplica la propuesta seleccionada antes del siguiente tick del lazo (rechazada si está fuera de los límites)</translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation>Aprobar</translation>
+    </message>
+    <message>
+        <source>Proposals waiting for approval (the controller&apos;s identification)</source>
+        <translation>Propuestas pendientes de aprobación (la identificación del controlador)</translation>
+    </message>
+    <message>
+        <source>Proposed values</source>
+        <translation>Valores propuestos</translation>
+    </message>
+    <message>
+        <source>Fit error</source>
+        <translation>Error de ajuste</translation>
+    </message>
+    <message>
+        <source>Tick (time)</source>
+        <translation>Tick (tiempo)</translation>
+    </message>
+    <message>
+        <source>Proposal</source>
+        <translation>Propuesta</translation>
+    </message>
     <message>
         <source>Applied before tick %1 (t = %2 s; %3): %4</source>
         <translation>Aplicado antes del tick %1 (t = %2 s; %3): %4</translation>

@@ -3291,6 +3291,14 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>RTHS proposal #%1 rejected</source>
+        <translation>RTHS 提议 #%1 已拒绝</translation>
+    </message>
+    <message>
+        <source>RTHS proposal #%1 approved</source>
+        <translation>RTHS 提议 #%1 已批准</translation>
+    </message>
+    <message>
         <source>Damper twin</source>
         <translation>阻尼器孪生模型</translation>
     </message>
@@ -3557,6 +3565,10 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no controller&apos;s RTHS run is going</source>
+        <translation>没有正在进行的控制器 RTHS 试验</translation>
+    </message>
     <message>
         <source>this RTHS run has no damper twin</source>
         <translation>此 RTHS 试验没有阻尼器孪生模型</translation>
@@ -4093,6 +4105,58 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsTwinPanel</name>
+    <message>
+        <source>Proposal #%1 refused: %2</source>
+        <translation>提议 #%1 被拒绝：%2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 applied before tick %2</source>
+        <translation>提议 #%1 已在节拍 %2 之前应用</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 rejected before tick %2: nothing applied</source>
+        <translation>提议 #%1 在节拍 %2 之前被拒绝：未应用任何内容</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 %2</source>
+        <translation>提议 #%1：%2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 before tick %2: waiting for your approval</source>
+        <translation>节拍 %2 之前的提议 #%1：等待您的批准</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>拒绝</translation>
+    </message>
+    <message>
+        <source>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</source>
+        <translation>在回路的下一个节拍之前应用所选提议（超出界限则被拒绝）</translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation>批准</translation>
+    </message>
+    <message>
+        <source>Proposals waiting for approval (the controller&apos;s identification)</source>
+        <translation>等待批准的提议（控制器的识别）</translation>
+    </message>
+    <message>
+        <source>Proposed values</source>
+        <translation>提议值</translation>
+    </message>
+    <message>
+        <source>Fit error</source>
+        <translation>拟合误差</translation>
+    </message>
+    <message>
+        <source>Tick (time)</source>
+        <translation>节拍（时间）</translation>
+    </message>
+    <message>
+        <source>Proposal</source>
+        <translation>提议</translation>
+    </message>
     <message>
         <source>Applied before tick %1 (t = %2 s; %3): %4</source>
         <translation>已在节拍 %1 之前应用（t = %2 s；%3）：%4</translation>
