@@ -31,7 +31,8 @@ using namespace hsmu::gui;
 namespace {
 
 /// The damper configuration over `seconds` of a 1.5 Hz sine (1 m/s^2); its path. approve: the
-/// online identification on, its estimates waiting for the operator's approval.
+/// online identification on, its estimates waiting for the operator's approval, and the sine
+/// swelling and fading.
 QString writeDamperConfig(const QString& dir, double seconds, bool approve = false)
 {
     const QString motion = dir + QStringLiteral("/sine.txt");
@@ -40,7 +41,10 @@ QString writeDamperConfig(const QString& dir, double seconds, bool approve = fal
     QString text;
     for (int i = 0; i <= int(std::lround(seconds * 100)); ++i) {
         const double t = 0.01 * i;
-        text += QStringLiteral("%1 %2\n").arg(t, 0, 'g', 17).arg(std::sin(2 * M_PI * 1.5 * t), 0, 'g', 17);
+        // With the identification: a sine swelling and fading (period 4 s), as its estimates
+        // stay usable there (test_comms_rths_twin_updates).
+        const double a = approve ? 1.2 * (0.6 - 0.4 * std::cos(2 * M_PI * t / 4.0)) : 1.0;
+        text += QStringLiteral("%1 %2\n").arg(t, 0, 'g', 17).arg(a * std::sin(2 * M_PI * 1.5 * t), 0, 'g', 17);
     }
     m.write(text.toUtf8());
     m.close();
@@ -205,7 +209,7 @@ private slots:
     void proposalsAreApprovedOrRejectedFromTheView()
     {
         QTemporaryDir dir;
-        const QString path = writeDamperConfig(dir.path(), 6.0, true);
+        const QString path = writeDamperConfig(dir.path(), 8.0, true);
         const RthsConfig cfg = loadRthsConfig(path.toStdString());
         ControllerProcess ctl({QStringLiteral("--rths"), path, QStringLiteral("--pace"), QStringLiteral("realtime")});
         QVERIFY2(ctl.start(), qPrintable(ctl.log()));
@@ -221,15 +225,22 @@ private slots:
         QTest::mouseClick(twin.findChild<QPushButton*>(QStringLiteral("rthsTwinReject")), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(twin.decisionText().startsWith(QStringLiteral("Proposal #1 rejected before tick")), 30000);
         QCOMPARE(twin.value("alpha"), alpha0); // nothing applied
-        // The next one: approved; then approving #1 again is refused with the controller's reason.
+        // Approving #1 now is refused with the controller's reason; the next one: approved.
+        QSignalSpy decided(panel.session(), &RthsSession::twinUpdates);
+        twin.decide(1, true);
+        const auto refusedAgain = [&decided] {
+            for (const QList<QVariant>& batch : decided)
+                for (const UpdateEvent& e : batch.at(0).value<std::vector<UpdateEvent>>())
+                    if (!e.ok && e.message.find("no pending proposal #1") != std::string::npos)
+                        return true;
+            return false;
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(refusedAgain(), qPrintable(twin.decisionText()), 30000);
         QTRY_VERIFY_WITH_TIMEOUT(twin.pendingIds() == std::vector<int>{2}, 60000);
         QTest::mouseClick(twin.findChild<QPushButton*>(QStringLiteral("rthsTwinApprove")), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(twin.decisionText().startsWith(QStringLiteral("Proposal #2 applied before tick")), 30000);
         const QString applied = twin.decisionText();
-        twin.decide(1, true);
-        QTRY_VERIFY_WITH_TIMEOUT(twin.decisionText().contains(QStringLiteral("no pending proposal #1")), 30000);
-        QVERIFY(ended.wait(120000));
-        QCOMPARE(ended.at(0).at(0).toString(), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(ended.size() == 1, 120000); // it may have ended already
         QVERIFY2(ctl.waitForLog(QStringLiteral("damper twin proposal #1 proposed before tick")), qPrintable(ctl.log()));
         QVERIFY(ctl.waitForLog(QStringLiteral("damper twin proposal #1 rejected before tick")));
         QVERIFY(ctl.waitForLog(QStringLiteral("approved proposal #2)")));
@@ -249,6 +260,10 @@ private slots:
         const auto j = ended.at(0).at(1).value<rths::BenchmarkCriteria>();
         for (int i = 0; i < 9; ++i)
             QVERIFY2(j.j[std::size_t(i)] == local.criteria.j[std::size_t(i)], qPrintable(QString::number(i)));
+        // This early estimate drives the command past the stroke limit a second later (docs/rths.md,
+        // "Not yet done": box the twin's parameters): the same hold at the same tick, both ways.
+        QCOMPARE(ended.at(0).at(0).toString(), QString::fromStdString(local.hold));
+        QCOMPARE(ended.at(0).at(2).value<long>(), long(local.time.size()));
     }
 
     void anUpdateFromTheViewReachesALocalRun()
