@@ -3382,6 +3382,22 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>RTHS proposal #%1 rejected</source>
+        <translation>RTHS proposal #%1 rejected</translation>
+    </message>
+    <message>
+        <source>RTHS proposal #%1 approved</source>
+        <translation>RTHS proposal #%1 approved</translation>
+    </message>
+    <message>
+        <source>Damper twin</source>
+        <translation>Damper twin</translation>
+    </message>
+    <message>
+        <source>Tracking</source>
+        <translation>Tracking</translation>
+    </message>
+    <message>
         <source>Go on with the held run from the tick where it held (refused while a limit is still breached)</source>
         <translation>Go on with the held run from the tick where it held (refused while a limit is still breached)</translation>
     </message>
@@ -3640,6 +3656,22 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no controller&apos;s RTHS run is going</source>
+        <translation>no controller&apos;s RTHS run is going</translation>
+    </message>
+    <message>
+        <source>this RTHS run has no damper twin</source>
+        <translation>this RTHS run has no damper twin</translation>
+    </message>
+    <message>
+        <source>the link to the controller is closed</source>
+        <translation>the link to the controller is closed</translation>
+    </message>
+    <message>
+        <source>no RTHS run is going</source>
+        <translation>no RTHS run is going</translation>
+    </message>
     <message>
         <source>no held RTHS run to resume</source>
         <translation>no held RTHS run to resume</translation>
@@ -4160,6 +4192,125 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>amplitude error [%]</source>
         <translation>amplitude error [%]</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsTwinPanel</name>
+    <message>
+        <source>Proposal #%1 refused: %2</source>
+        <translation>Proposal #%1 refused: %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 applied before tick %2</source>
+        <translation>Proposal #%1 applied before tick %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 rejected before tick %2: nothing applied</source>
+        <translation>Proposal #%1 rejected before tick %2: nothing applied</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 %2</source>
+        <translation>Proposal #%1 %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 before tick %2: waiting for your approval</source>
+        <translation>Proposal #%1 before tick %2: waiting for your approval</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>Reject</translation>
+    </message>
+    <message>
+        <source>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</source>
+        <translation>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation>Approve</translation>
+    </message>
+    <message>
+        <source>Proposals waiting for approval (the controller&apos;s identification)</source>
+        <translation>Proposals waiting for approval (the controller&apos;s identification)</translation>
+    </message>
+    <message>
+        <source>Proposed values</source>
+        <translation>Proposed values</translation>
+    </message>
+    <message>
+        <source>Fit error</source>
+        <translation>Fit error</translation>
+    </message>
+    <message>
+        <source>Tick (time)</source>
+        <translation>Tick (time)</translation>
+    </message>
+    <message>
+        <source>Proposal</source>
+        <translation>Proposal</translation>
+    </message>
+    <message>
+        <source>Applied before tick %1 (t = %2 s; %3): %4</source>
+        <translation>Applied before tick %1 (t = %2 s; %3): %4</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>Refused: %1</translation>
+    </message>
+    <message>
+        <source>Refused before tick %1: %2</source>
+        <translation>Refused before tick %1: %2</translation>
+    </message>
+    <message>
+        <source>Sent: applied before the loop&apos;s next tick, or refused with the reason</source>
+        <translation>Sent: applied before the loop&apos;s next tick, or refused with the reason</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Not sent: %1</translation>
+    </message>
+    <message>
+        <source>type at least one new value</source>
+        <translation>type at least one new value</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: &apos;%2&apos; is not a number</translation>
+    </message>
+    <message>
+        <source>Damper twin: none in this run</source>
+        <translation>Damper twin: none in this run</translation>
+    </message>
+    <message>
+        <source>Damper twin (storey of DOF %1), values in its scales uRef, fRef</source>
+        <translation>Damper twin (storey of DOF %1), values in its scales uRef, fRef</translation>
+    </message>
+    <message>
+        <source>Apply the new values to the twin before the loop&apos;s next tick (checked against the bounds first)</source>
+        <translation>Apply the new values to the twin before the loop&apos;s next tick (checked against the bounds first)</translation>
+    </message>
+    <message>
+        <source>Send update</source>
+        <translation>Send update</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>New value</translation>
+    </message>
+    <message>
+        <source>Bounds</source>
+        <translation>Bounds</translation>
+    </message>
+    <message>
+        <source>Physical value</source>
+        <translation>Physical value</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
     </message>
 </context>
 </TS>

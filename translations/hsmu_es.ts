@@ -3382,6 +3382,22 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>RTHS proposal #%1 rejected</source>
+        <translation>Propuesta RTHS n.º %1 rechazada</translation>
+    </message>
+    <message>
+        <source>RTHS proposal #%1 approved</source>
+        <translation>Propuesta RTHS n.º %1 aprobada</translation>
+    </message>
+    <message>
+        <source>Damper twin</source>
+        <translation>Gemelo del amortiguador</translation>
+    </message>
+    <message>
+        <source>Tracking</source>
+        <translation>Seguimiento</translation>
+    </message>
+    <message>
         <source>Go on with the held run from the tick where it held (refused while a limit is still breached)</source>
         <translation>Continuar el ensayo detenido desde el ciclo en que se detuvo (se rechaza mientras un límite siga superado)</translation>
     </message>
@@ -3640,6 +3656,22 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no controller&apos;s RTHS run is going</source>
+        <translation>no hay ningún ensayo RTHS de un controlador en curso</translation>
+    </message>
+    <message>
+        <source>this RTHS run has no damper twin</source>
+        <translation>este ensayo RTHS no tiene gemelo del amortiguador</translation>
+    </message>
+    <message>
+        <source>the link to the controller is closed</source>
+        <translation>el enlace con el controlador está cerrado</translation>
+    </message>
+    <message>
+        <source>no RTHS run is going</source>
+        <translation>no hay ningún ensayo RTHS en curso</translation>
+    </message>
     <message>
         <source>no held RTHS run to resume</source>
         <translation>no hay ningún ensayo RTHS detenido que reanudar</translation>
@@ -4160,6 +4192,125 @@ Simulación híbrida con actualización del modelo en línea (Hashemi, Masroor y
     <message>
         <source>amplitude error [%]</source>
         <translation>error de amplitud [%]</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsTwinPanel</name>
+    <message>
+        <source>Proposal #%1 refused: %2</source>
+        <translation>Propuesta n.º %1 rechazada por el lazo: %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 applied before tick %2</source>
+        <translation>Propuesta n.º %1 aplicada antes del tick %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 rejected before tick %2: nothing applied</source>
+        <translation>Propuesta n.º %1 rechazada antes del tick %2: no se aplica nada</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 %2</source>
+        <translation>Propuesta n.º %1: %2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 before tick %2: waiting for your approval</source>
+        <translation>Propuesta n.º %1 antes del tick %2: pendiente de su aprobación</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>Rechazar</translation>
+    </message>
+    <message>
+        <source>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</source>
+        <translation>Aplica la propuesta seleccionada antes del siguiente tick del lazo (rechazada si está fuera de los límites)</translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation>Aprobar</translation>
+    </message>
+    <message>
+        <source>Proposals waiting for approval (the controller&apos;s identification)</source>
+        <translation>Propuestas pendientes de aprobación (la identificación del controlador)</translation>
+    </message>
+    <message>
+        <source>Proposed values</source>
+        <translation>Valores propuestos</translation>
+    </message>
+    <message>
+        <source>Fit error</source>
+        <translation>Error de ajuste</translation>
+    </message>
+    <message>
+        <source>Tick (time)</source>
+        <translation>Tick (tiempo)</translation>
+    </message>
+    <message>
+        <source>Proposal</source>
+        <translation>Propuesta</translation>
+    </message>
+    <message>
+        <source>Applied before tick %1 (t = %2 s; %3): %4</source>
+        <translation>Aplicado antes del tick %1 (t = %2 s; %3): %4</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>Rechazado: %1</translation>
+    </message>
+    <message>
+        <source>Refused before tick %1: %2</source>
+        <translation>Rechazado antes del tick %1: %2</translation>
+    </message>
+    <message>
+        <source>Sent: applied before the loop&apos;s next tick, or refused with the reason</source>
+        <translation>Enviado: se aplica antes del siguiente tick del lazo, o se rechaza con el motivo</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
+    </message>
+    <message>
+        <source>type at least one new value</source>
+        <translation>escriba al menos un valor nuevo</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: «%2» no es un número</translation>
+    </message>
+    <message>
+        <source>Damper twin: none in this run</source>
+        <translation>Gemelo del amortiguador: ninguno en este ensayo</translation>
+    </message>
+    <message>
+        <source>Damper twin (storey of DOF %1), values in its scales uRef, fRef</source>
+        <translation>Gemelo del amortiguador (planta del GDL %1), valores en sus escalas uRef, fRef</translation>
+    </message>
+    <message>
+        <source>Apply the new values to the twin before the loop&apos;s next tick (checked against the bounds first)</source>
+        <translation>Aplica los valores nuevos al gemelo antes del siguiente tick del lazo (comprobados antes contra los límites)</translation>
+    </message>
+    <message>
+        <source>Send update</source>
+        <translation>Enviar actualización</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>Valor nuevo</translation>
+    </message>
+    <message>
+        <source>Bounds</source>
+        <translation>Límites</translation>
+    </message>
+    <message>
+        <source>Physical value</source>
+        <translation>Valor físico</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parámetro</translation>
     </message>
 </context>
 </TS>

@@ -3379,6 +3379,22 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 <context>
     <name>hsmu::gui::RthsPanel</name>
     <message>
+        <source>RTHS proposal #%1 rejected</source>
+        <translation>RTHS 提议 #%1 已拒绝</translation>
+    </message>
+    <message>
+        <source>RTHS proposal #%1 approved</source>
+        <translation>RTHS 提议 #%1 已批准</translation>
+    </message>
+    <message>
+        <source>Damper twin</source>
+        <translation>阻尼器孪生模型</translation>
+    </message>
+    <message>
+        <source>Tracking</source>
+        <translation>跟踪</translation>
+    </message>
+    <message>
         <source>Go on with the held run from the tick where it held (refused while a limit is still breached)</source>
         <translation>从保持处的周期继续已保持的试验（限值仍被超出时拒绝）</translation>
     </message>
@@ -3637,6 +3653,22 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
 </context>
 <context>
     <name>hsmu::gui::RthsSession</name>
+    <message>
+        <source>no controller&apos;s RTHS run is going</source>
+        <translation>没有正在进行的控制器 RTHS 试验</translation>
+    </message>
+    <message>
+        <source>this RTHS run has no damper twin</source>
+        <translation>此 RTHS 试验没有阻尼器孪生模型</translation>
+    </message>
+    <message>
+        <source>the link to the controller is closed</source>
+        <translation>与控制器的连接已关闭</translation>
+    </message>
+    <message>
+        <source>no RTHS run is going</source>
+        <translation>没有正在进行的 RTHS 试验</translation>
+    </message>
     <message>
         <source>no held RTHS run to resume</source>
         <translation>没有可继续的已保持 RTHS 试验</translation>
@@ -4157,6 +4189,125 @@ Hybrid simulation with online model updating (Hashemi, Masroor &amp; Mosqueda, E
     <message>
         <source>amplitude error [%]</source>
         <translation>幅值误差 [%]</translation>
+    </message>
+</context>
+<context>
+    <name>hsmu::gui::RthsTwinPanel</name>
+    <message>
+        <source>Proposal #%1 refused: %2</source>
+        <translation>提议 #%1 被拒绝：%2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 applied before tick %2</source>
+        <translation>提议 #%1 已在节拍 %2 之前应用</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 rejected before tick %2: nothing applied</source>
+        <translation>提议 #%1 在节拍 %2 之前被拒绝：未应用任何内容</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 %2</source>
+        <translation>提议 #%1：%2</translation>
+    </message>
+    <message>
+        <source>Proposal #%1 before tick %2: waiting for your approval</source>
+        <translation>节拍 %2 之前的提议 #%1：等待您的批准</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>拒绝</translation>
+    </message>
+    <message>
+        <source>Apply the selected proposal before the loop&apos;s next tick (refused if outside the bounds)</source>
+        <translation>在回路的下一个节拍之前应用所选提议（超出界限则被拒绝）</translation>
+    </message>
+    <message>
+        <source>Approve</source>
+        <translation>批准</translation>
+    </message>
+    <message>
+        <source>Proposals waiting for approval (the controller&apos;s identification)</source>
+        <translation>等待批准的提议（控制器的识别）</translation>
+    </message>
+    <message>
+        <source>Proposed values</source>
+        <translation>提议值</translation>
+    </message>
+    <message>
+        <source>Fit error</source>
+        <translation>拟合误差</translation>
+    </message>
+    <message>
+        <source>Tick (time)</source>
+        <translation>节拍（时间）</translation>
+    </message>
+    <message>
+        <source>Proposal</source>
+        <translation>提议</translation>
+    </message>
+    <message>
+        <source>Applied before tick %1 (t = %2 s; %3): %4</source>
+        <translation>已在节拍 %1 之前应用（t = %2 s；%3）：%4</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>被拒绝：%1</translation>
+    </message>
+    <message>
+        <source>Refused before tick %1: %2</source>
+        <translation>在节拍 %1 之前被拒绝：%2</translation>
+    </message>
+    <message>
+        <source>Sent: applied before the loop&apos;s next tick, or refused with the reason</source>
+        <translation>已发送：在回路的下一个节拍之前应用，或附原因被拒绝</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>未发送：%1</translation>
+    </message>
+    <message>
+        <source>type at least one new value</source>
+        <translation>请至少输入一个新值</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1：“%2”不是数字</translation>
+    </message>
+    <message>
+        <source>Damper twin: none in this run</source>
+        <translation>阻尼器孪生模型：本试验中没有</translation>
+    </message>
+    <message>
+        <source>Damper twin (storey of DOF %1), values in its scales uRef, fRef</source>
+        <translation>阻尼器孪生模型（自由度 %1 所在楼层），数值按其尺度 uRef、fRef</translation>
+    </message>
+    <message>
+        <source>Apply the new values to the twin before the loop&apos;s next tick (checked against the bounds first)</source>
+        <translation>在回路的下一个节拍之前将新值应用于孪生模型（先按界限检查）</translation>
+    </message>
+    <message>
+        <source>Send update</source>
+        <translation>发送更新</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>新值</translation>
+    </message>
+    <message>
+        <source>Bounds</source>
+        <translation>界限</translation>
+    </message>
+    <message>
+        <source>Physical value</source>
+        <translation>物理值</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
     </message>
 </context>
 </TS>

@@ -7,6 +7,7 @@
 #include "comms/rths/RthsMonitor.h"
 #include "core/record/RthsRecord.h"
 #include "core/rths/RthsRunner.h"
+#include "core/updating/TwinProposals.h"
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
@@ -29,25 +30,6 @@ namespace asio = boost::asio;
 namespace {
 /// How often the io thread drains the telemetry ring and looks for the run's end.
 constexpr auto kPoll = std::chrono::milliseconds(2);
-
-/// The twin update decisions of the loop, for the io thread (rare: a short lock each).
-class UpdateOutbox final : public rths::TickObserver {
-public:
-    void onTick(long, const rths::RthsTick&,
-                const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>&) override {}
-    void onUpdate(long, const UpdateEvent& e) override {
-        std::lock_guard lock(m_mutex);
-        m_events.push_back(e);
-    }
-    std::vector<UpdateEvent> take() {
-        std::lock_guard lock(m_mutex);
-        return std::exchange(m_events, {});
-    }
-
-private:
-    std::mutex m_mutex;
-    std::vector<UpdateEvent> m_events;
-};
 } // namespace
 
 struct RthsServer::Impl final : SessionHost {
@@ -72,6 +54,7 @@ struct RthsServer::Impl final : SessionHost {
     UpdateOutbox outbox;                              // the twin's update decisions
     std::unique_ptr<rths::PostedTwinUpdates> posted;  // the monitor's rths-update
     std::unique_ptr<rths::TwinIdentification> identification; // the damper's, online
+    std::unique_ptr<rths::TwinProposals> proposals;   // its offers for approval ("approve")
     rths::TwinUpdateSources sources;                  // identification, then posted
     std::unique_ptr<rths::RthsRunner> runner;         // the run; kept while held (resume)
     std::thread loop;
@@ -149,6 +132,8 @@ struct RthsServer::Impl final : SessionHost {
         }
         if (const auto* u = std::get_if<RthsUpdateMsg>(&m))
             return update(*u);
+        if (const auto* d = std::get_if<RthsDecisionMsg>(&m))
+            return decide(*d);
         (void)s;
         if (std::holds_alternative<ResumeMsg>(m))
             return resumeRun();
@@ -168,6 +153,23 @@ struct RthsServer::Impl final : SessionHost {
         }
         posted->post(std::move(u));
         return AckMsg{MessageType::RthsUpdate, 0};
+    }
+
+    /// rths-decision: the operator approves (applied before the next tick) or rejects a proposal.
+    std::optional<Message> decide(const RthsDecisionMsg& m) {
+        if (!proposals || !running)
+            return ErrorMsg{ErrorCode::UpdateRefused, "rths-decision refused: no run with proposals in progress"};
+        const int id = int(m.id);
+        const std::string why = m.approve ? proposals->approve(id) : proposals->reject(id);
+        if (!why.empty()) {
+            log("rths-decision refused: " + why);
+            return ErrorMsg{ErrorCode::UpdateRefused, "rths-decision refused: " + why};
+        }
+        std::string line = "proposal #";
+        line += std::to_string(id);
+        line += m.approve ? " approved: applied before the loop's next tick" : " rejected";
+        log(line);
+        return AckMsg{MessageType::RthsDecision, 0};
     }
 
     void requestHold(const std::string& why) {
@@ -250,6 +252,7 @@ struct RthsServer::Impl final : SessionHost {
         if (!held)
             return;
         held = false;
+        proposals.reset();
         identification.reset();
         closeRecord();
         runner.reset();
@@ -283,6 +286,7 @@ struct RthsServer::Impl final : SessionHost {
         outbox.take();
         sources = {};
         posted.reset();
+        proposals.reset();
         identification.reset();
         if (job.settings.damper.enabled) {
             if (job.identification.enabled) {
@@ -290,7 +294,11 @@ struct RthsServer::Impl final : SessionHost {
                 is.wait = !opt.realTime;
                 identification = std::make_unique<rths::TwinIdentification>(job.settings.damper, is,
                                                                             job.settings.rate);
-                sources.add(identification.get());
+                if (is.approve)
+                    proposals = std::make_unique<rths::TwinProposals>(*identification, job.settings.damper,
+                                                                      job.settings.rate, !opt.realTime);
+                sources.add(proposals ? static_cast<rths::TwinUpdateSource*>(proposals.get())
+                                      : identification.get());
             }
             posted = std::make_unique<rths::PostedTwinUpdates>(!opt.realTime);
             sources.add(posted.get());
@@ -364,9 +372,18 @@ struct RthsServer::Impl final : SessionHost {
     void drain() {
         for (const UpdateEvent& e : outbox.take()) {
             log(rths::describeTwinUpdate(e));
-            if (monitor)
+            if (!monitor)
+                continue;
+            const bool proposalOnly = e.decision == UpdateDecision::Proposed ||
+                                      e.decision == UpdateDecision::Superseded ||
+                                      e.decision == UpdateDecision::Rejected;
+            if (!proposalOnly)
                 monitor->send(RthsUpdateAppliedMsg{std::uint64_t(e.step), e.ok, e.message,
                                                    e.parameters.names(), e.applied});
+            if (e.proposal != 0)
+                monitor->send(RthsProposalMsg{std::uint32_t(e.proposal), std::uint64_t(e.step),
+                                              std::uint8_t(e.decision), std::nan(""), e.message,
+                                              e.parameters.names(), e.applied});
         }
         // Into the monitor's send queue only while it is below half its cap: a monitor that reads
         // slower than the loop makes (the fast pace) leaves the samples in the ring, where the
@@ -400,8 +417,10 @@ struct RthsServer::Impl final : SessionHost {
         if (identification) {
             if (!identification->failure().empty())
                 log(identification->failure());
-            if (!held)
+            if (!held) {
+                proposals.reset();
                 identification.reset(); // its worker stops
+            }
         }
         if (held)
             holdRecord();

@@ -23,7 +23,10 @@
 //     once (checkTwinUpdate: refused with Error(UpdateRefused), nothing applied) and applied
 //     before the loop's next tick; the online identification (job.identification) offers its
 //     estimates alike; every decision goes to the monitor (rths-update-applied), to stderr and
-//     to the record's notes, with its tick.
+//     to the record's notes, with its tick;
+//   - with the identification's "approve": its estimates are proposals (TwinProposals): each
+//     one's fate goes to the monitor (rths-proposal), which approves or rejects it
+//     (rths-decision: approved, checked and applied before the loop's next tick).
 // Thread rules: construct, listen() and run() on one thread; stop() from any thread.
 
 #include "core/groundmotion/GroundMotion.h"

@@ -133,6 +133,10 @@ Bounds boundsOf(MessageType t) {
         return {12, kMaxPayload};
     case MessageType::RthsUpdateApplied:
         return {13, kMaxPayload};
+    case MessageType::RthsProposal:
+        return {25, kMaxPayload};
+    case MessageType::RthsDecision:
+        return {5, 5};
     }
     return {0, 0};
 }
@@ -210,6 +214,18 @@ struct Encoder {
         w.u8(m.applied ? 1 : 0);
         w.str(m.message);
         namedValues(m.names, m.values);
+    }
+    void operator()(const RthsProposalMsg& m) {
+        w.u32(m.id);
+        w.u64(m.tick);
+        w.u8(m.decision);
+        w.f64(m.fitError);
+        w.str(m.message);
+        namedValues(m.names, m.values);
+    }
+    void operator()(const RthsDecisionMsg& m) {
+        w.u32(m.id);
+        w.u8(m.approve ? 1 : 0);
     }
     void operator()(const TelemetryMsg& m) {
         w.u64(m.tick);
@@ -407,6 +423,21 @@ bool decodeInto(MessageType t, Reader& r, Message& out) {
         RthsUpdateAppliedMsg m;
         if (!r.u64(m.tick) || !r.boolean(m.applied) || !r.str(m.message) ||
             !readNamedValues(r, m.names, m.values))
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::RthsProposal: {
+        RthsProposalMsg m;
+        if (!r.u32(m.id) || !r.u64(m.tick) || !r.u8(m.decision) || !r.f64(m.fitError) || !r.str(m.message) ||
+            !readNamedValues(r, m.names, m.values))
+            return false;
+        out = std::move(m);
+        return true;
+    }
+    case MessageType::RthsDecision: {
+        RthsDecisionMsg m;
+        if (!r.u32(m.id) || !r.boolean(m.approve))
             return false;
         out = std::move(m);
         return true;

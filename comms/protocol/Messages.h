@@ -174,11 +174,28 @@ struct RthsUpdateAppliedMsg {      // payload: u64 u8 str u16 count x (str f64)
     std::vector<double> values;
 };
 
+/// The approval queue of the twin's updates (docs/rths.md, "Proposals approved by the console").
+struct RthsProposalMsg {           // payload: u32 u64 u8 f64 str u16 count x (str f64)
+    std::uint32_t id = 0;          ///< the proposal's id (1, 2, ... per run)
+    std::uint64_t tick = 0;        ///< the tick before which the decision was taken
+    std::uint8_t decision = 0;     ///< UpdateDecision's index: proposed, superseded, rejected,
+                                   ///< refused (never applied) or applied
+    double fitError = 0.0;         ///< [-] of the estimate when proposed; NaN: none
+    std::string message;           ///< its source, or why (superseded by #N, the refusal)
+    std::vector<std::string> names;
+    std::vector<double> values;    ///< proposed, in the twin's scales
+};
+
+struct RthsDecisionMsg {           // payload: u32 id, u8 approve
+    std::uint32_t id = 0;
+    bool approve = false;          ///< false: reject
+};
+
 using Message =
     std::variant<HelloMsg, HelloAckMsg, ConfigureMsg, TargetMsg, MeasurementMsg, CommitMsg, AckMsg,
                  HoldMsg, ResumeMsg, ResetMsg, HeartbeatMsg, ErrorMsg, ByeMsg, RthsStartMsg,
                  EmergencyHoldMsg, TelemetryMsg, RthsEndMsg, TargetsMsg, MeasurementsMsg,
-                 RthsUpdateMsg, RthsUpdateAppliedMsg>;
+                 RthsUpdateMsg, RthsUpdateAppliedMsg, RthsProposalMsg, RthsDecisionMsg>;
 
 /// The header type of a message.
 MessageType messageTypeOf(const Message& m);

@@ -48,6 +48,10 @@ const char* messageTypeName(MessageType type) {
         return "rths-update";
     case MessageType::RthsUpdateApplied:
         return "rths-update-applied";
+    case MessageType::RthsProposal:
+        return "rths-proposal";
+    case MessageType::RthsDecision:
+        return "rths-decision";
     }
     return "unknown";
 }
@@ -88,16 +92,17 @@ const char* errorCodeName(ErrorCode code) {
 
 bool isKnownMessageType(std::uint16_t type) {
     return type >= static_cast<std::uint16_t>(MessageType::Hello) &&
-           type <= static_cast<std::uint16_t>(MessageType::RthsUpdateApplied);
+           type <= static_cast<std::uint16_t>(MessageType::RthsDecision);
 }
 
 MessageType messageTypeOf(const Message& m) {
-    // The variant's alternatives are in the order of the MessageType values 1..21.
-    static_assert(std::variant_size_v<Message> == 21);
+    // The variant's alternatives are in the order of the MessageType values 1..23.
+    static_assert(std::variant_size_v<Message> == 23);
     static_assert(std::is_same_v<std::variant_alternative_t<12, Message>, ByeMsg>);
     static_assert(std::is_same_v<std::variant_alternative_t<16, Message>, RthsEndMsg>);
     static_assert(std::is_same_v<std::variant_alternative_t<18, Message>, MeasurementsMsg>);
     static_assert(std::is_same_v<std::variant_alternative_t<20, Message>, RthsUpdateAppliedMsg>);
+    static_assert(std::is_same_v<std::variant_alternative_t<22, Message>, RthsDecisionMsg>);
     return static_cast<MessageType>(m.index() + 1);
 }
 

@@ -53,6 +53,8 @@ enum class MessageType : std::uint16_t {
     Measurements = 19, ///< controller -> console: step, each channel's stroke, force, command
     RthsUpdate = 20,        ///< monitor -> controller: new parameters for the damper's twin
     RthsUpdateApplied = 21, ///< controller -> monitor: a twin update decided at a tick
+    RthsProposal = 22,      ///< controller -> monitor: a twin update proposed / decided (approval)
+    RthsDecision = 23,      ///< monitor -> controller: approve or reject a proposal
 };
 
 /// Channels of one specimen a Targets / Measurements frame may carry (2..kMaxChannels; a

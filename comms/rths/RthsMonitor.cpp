@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <thread>
+#include <utility>
 #include <cmath>
 #include <sstream>
 
@@ -86,6 +87,18 @@ bool FastPaceGate::admit(long k, std::string& why)
 long defaultDecimation(double rate)
 {
     return std::max(1L, std::lround(rate / 128.0));
+}
+
+void UpdateOutbox::onUpdate(long, const UpdateEvent& e)
+{
+    std::lock_guard lock(m_mutex);
+    m_events.push_back(e);
+}
+
+std::vector<UpdateEvent> UpdateOutbox::take()
+{
+    std::lock_guard lock(m_mutex);
+    return std::exchange(m_events, {});
 }
 
 } // namespace hsmu::comms

@@ -13,6 +13,9 @@
 //   TelemetryFeed  the run's TickObserver: one sample every `decimation` ticks into a bounded
 //                  single-producer single-consumer ring (kCapacity samples); a full ring drops
 //                  the sample and counts it (the loop is never delayed).
+//   UpdateOutbox   the run's TickObserver of the damper twin's update decisions (applied or
+//                  refused, each with its tick), kept for another thread to take (rare: a short
+//                  lock each): the controller's io thread, the console's view.
 //
 // Thread rules: admit / done / onTick on the loop's thread; requestHold and pop on the io
 // thread; the counters from any thread.
@@ -25,6 +28,7 @@
 #include <cstdint>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace hsmu::comms {
 
@@ -96,6 +100,19 @@ public:
 private:
     MonitorGate& m_gate;
     const TelemetryFeed& m_feed;
+};
+
+class UpdateOutbox final : public rths::TickObserver {
+public:
+    void onTick(long, const rths::RthsTick&,
+                const Eigen::Ref<const Eigen::RowVectorXd, 0, Eigen::InnerStride<>>&) override {}
+    void onUpdate(long k, const UpdateEvent& e) override;
+    /// Every decision since the last take, oldest first (any thread).
+    std::vector<UpdateEvent> take();
+
+private:
+    std::mutex m_mutex;
+    std::vector<UpdateEvent> m_events;
 };
 
 /// The default decimation: about 128 telemetry frames per second at the loop's rate [Hz].

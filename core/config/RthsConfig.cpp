@@ -125,12 +125,13 @@ void parseDamper(const JsonCursor& c, RthsConfig& out)
     }
     if (c.has("identification")) {
         const JsonCursor i = c.child("identification");
-        i.allowOnly({"enabled", "decimation", "interval", "latency"});
+        i.allowOnly({"enabled", "decimation", "interval", "latency", "approve"});
         auto& s = out.identification;
         s.enabled = i.boolean("enabled", true);
         s.decimation = i.integer("decimation", s.decimation, 1, 1000);
         s.interval = i.number("interval", s.interval);
         s.latency = i.number("latency", s.latency);
+        s.approve = i.boolean("approve", false);
         if (!(s.interval > 0.0 && s.latency >= 0.0))
             i.fail("", "interval > 0 s and latency >= 0 s");
     }

@@ -14,6 +14,7 @@ const char* updateDecisionName(UpdateDecision d)
     case UpdateDecision::Rejected: return "rejected";
     case UpdateDecision::NotQueued: return "notQueued";
     case UpdateDecision::Superseded: return "superseded";
+    case UpdateDecision::Proposed: return "proposed";
     }
     return "?";
 }

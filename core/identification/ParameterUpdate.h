@@ -16,9 +16,10 @@ class HysteresisLaw;
 /// What became of an offer: applied to the target, refused by its law (or not finite), rejected
 /// by the operator, or not queued (the approval queue was full). The record keeps the code
 /// (updateDecisionName(), language-neutral).
-/// Superseded: a newer proposal for the same target replaced it (OnApproval). New codes are
+/// Superseded: a newer proposal for the same target replaced it (OnApproval). Proposed: an offer
+/// became a proposal waiting for the operator (the RTHS twin's, TwinProposals.h). New codes are
 /// appended: the record stores the index into the list of names.
-enum class UpdateDecision { Applied, Refused, Rejected, NotQueued, Superseded };
+enum class UpdateDecision { Applied, Refused, Rejected, NotQueued, Superseded, Proposed };
 const char* updateDecisionName(UpdateDecision d);
 
 struct UpdateEvent {

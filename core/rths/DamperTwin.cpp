@@ -61,6 +61,29 @@ std::string checkTwinUpdate(const DamperSettings& s, const TwinUpdate& u)
     return "";
 }
 
+TwinParameterUnit twinParameterUnit(const std::string& name)
+{
+    if (name == "c0" || name == "c1")
+        return TwinParameterUnit::NewtonSecondPerMetre;
+    if (name == "k0" || name == "k1" || name == "alpha")
+        return TwinParameterUnit::NewtonPerMetre;
+    if (name == "f0" || name == "fRef")
+        return TwinParameterUnit::Newton;
+    if (name == "uRef")
+        return TwinParameterUnit::Metre;
+    return TwinParameterUnit::Dimensionless;
+}
+
+double twinParameterFactor(const std::string& name, double uRef, double fRef)
+{
+    switch (twinParameterUnit(name)) {
+    case TwinParameterUnit::NewtonSecondPerMetre:
+    case TwinParameterUnit::NewtonPerMetre: return fRef / uRef;
+    case TwinParameterUnit::Newton: return name == "f0" ? fRef : 1.0;
+    default: return 1.0;
+    }
+}
+
 DamperTwin::DamperTwin(const DamperSettings& s, double h) : m_s(s), m_law(s.twin)
 {
     m_law.setTimeIncrement(h);
@@ -82,12 +105,14 @@ UpdateEvent DamperTwin::apply(const TwinUpdate& u, long tick, double t)
     if (const std::string why = checkTwinUpdate(m_s, u); !why.empty()) {
         UpdateEvent ev{int(tick), t, kTwin, names, u.values, false, u.source + ": " + why + "; nothing applied"};
         ev.decision = UpdateDecision::Refused;
+        ev.proposal = u.proposal;
         return ev;
     }
     const std::vector<int> index = lawIndices(m_law, u.names);
     UpdateEvent ev = applyParameterUpdate(&m_law, kTwin, names, index, u.values, int(tick), t);
     if (ev.ok)
         ev.message = u.source;
+    ev.proposal = u.proposal;
     return ev;
 }
 
@@ -149,6 +174,14 @@ std::string describeTwinUpdate(const UpdateEvent& e)
 {
     std::ostringstream o;
     o.precision(6);
+    if (e.decision == UpdateDecision::Proposed || e.decision == UpdateDecision::Rejected ||
+        e.decision == UpdateDecision::Superseded) {
+        o << "damper twin proposal #" << e.proposal << " " << updateDecisionName(e.decision)
+          << " before tick " << e.step << " (t = " << e.time << " s): " << e.message << ":";
+        for (std::size_t i = 0; i < e.parameters.size() && i < e.applied.size(); ++i)
+            o << (i ? ", " : " ") << e.parameters.name(i) << " = " << e.applied[i];
+        return o.str();
+    }
     if (!e.ok) {
         o << "damper twin update refused before tick " << e.step << " (t = " << e.time
           << " s): " << e.message;
@@ -165,6 +198,14 @@ bool TwinUpdateSources::next(long k, TwinUpdate& out)
 {
     for (TwinUpdateSource* s : m_sources)
         if (s->next(k, out))
+            return true;
+    return false;
+}
+
+bool TwinUpdateSources::nextEvent(long k, UpdateEvent& out)
+{
+    for (TwinUpdateSource* s : m_sources)
+        if (s->nextEvent(k, out))
             return true;
     return false;
 }

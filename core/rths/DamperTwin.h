@@ -41,11 +41,21 @@ struct TwinUpdate {
     std::vector<double> values;
     std::string source; ///< "identification", "operator", "replay": in the event's message
     long due = 0;       ///< the tick before which it is applied (sources that schedule)
+    int proposal = 0;   ///< the approved proposal it carries (TwinProposals; 0: none)
 };
 
 /// "" when `u` may be applied to a twin with `settings`, else the reason naming the parameter
 /// (unknown name, not finite, outside the box, a law refusing the set, counts differing).
 std::string checkTwinUpdate(const DamperSettings& settings, const TwinUpdate& u);
+
+/// The physical unit of an mrDamper parameter's value times twinParameterFactor() (the
+/// console's view shows both); Dimensionless for A, beta, gamma, n and an unknown name.
+enum class TwinParameterUnit { Dimensionless, NewtonSecondPerMetre, NewtonPerMetre, Newton, Metre };
+TwinParameterUnit twinParameterUnit(const std::string& name);
+/// The factor from a value in the twin's scales (uRef [m], fRef [N]: MrDamper.h) to the
+/// physical one: fRef / uRef for c0, c1 [N s/m] and k0, k1, alpha [N/m] (z scales as the
+/// deformation); fRef for f0 [N]; 1 for uRef [m], fRef [N] and the dimensionless ones.
+double twinParameterFactor(const std::string& name, double uRef, double fRef);
 
 /// The twin's law, updated between ticks.
 class DamperTwin {
@@ -72,6 +82,10 @@ public:
     virtual bool next(long k, TwinUpdate& out) = 0;
     /// After tick k: what it measured (xm [m]; the damper's load cell [N]).
     virtual void observe(long /*k*/, double /*deformation*/, double /*force*/) {}
+    /// Before tick k, before next(): a decision the source made itself (a proposal made,
+    /// superseded, rejected or refused: TwinProposals), for the run's events and observer;
+    /// called until false.
+    virtual bool nextEvent(long /*k*/, UpdateEvent& /*out*/) { return false; }
 };
 
 /// A fixed list of updates, each applied before its tick `due` (a run replayed from the
@@ -105,7 +119,9 @@ private:
 };
 
 /// "damper twin updated before tick K (t = T s; SOURCE): c0 = ..., ..." or "damper twin update
-/// refused before tick K (t = T s): WHY" (logs, the record's notes, summaries).
+/// refused before tick K (t = T s): WHY" (logs, the record's notes, summaries); a proposal's
+/// event (TwinProposals) "damper twin proposal #N proposed | rejected | superseded before tick K
+/// (t = T s): MESSAGE: c0 = ...".
 std::string describeTwinUpdate(const UpdateEvent& e);
 
 /// Several sources asked in the order added (e.g. the identification, then the operator's).
@@ -115,6 +131,7 @@ public:
     bool empty() const { return m_sources.empty(); }
     bool next(long k, TwinUpdate& out) override;
     void observe(long k, double deformation, double force) override;
+    bool nextEvent(long k, UpdateEvent& out) override;
 
 private:
     std::vector<TwinUpdateSource*> m_sources;

@@ -45,6 +45,11 @@ bool RthsRunner::run()
             if (m_observer)
                 m_observer->onUpdate(k, run.updates.back());
         }
+        for (UpdateEvent e; m_updates && m_updates->nextEvent(k, e);) {
+            run.updates.push_back(e);
+            if (m_observer)
+                m_observer->onUpdate(k, run.updates.back());
+        }
         const bool advanced = m_loop.tick();
         if (m_gate)
             m_gate->done(k);

@@ -34,6 +34,9 @@ struct TwinIdentificationSettings {
     double interval = 1.0; ///< [s] of test time between two offers (> 0)
     double latency = 0.25; ///< [s] from an offer's last sample to its tick (>= 0)
     bool wait = true;      ///< the simulated pace (see above); false at the real-time pace
+    /// The offers wait for the operator's approval (TwinProposals.h) instead of being applied
+    /// at their tick ("approve": true; hsmu-controller --rths).
+    bool approve = false;
 };
 
 class TwinIdentification final : public TwinUpdateSource {

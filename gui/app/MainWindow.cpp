@@ -98,8 +98,12 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     connect(m_alarms, &AlarmList::attentionChanged, this, &MainWindow::onAttention);
     // Real-time hybrid simulation: its own view (hidden until the View menu shows it); the
     // emergency hold (every window, always) holds its loop too.
+    // In a scroll area: opening the dock never grows the window past its 1280x720 design size.
     m_rths = new RthsPanel(m_alarms, this);
-    m_rthsDock = addDock(m_rths, QString(), QStringLiteral("rthsDock"), Qt::LeftDockWidgetArea);
+    auto* rthsScroll = new QScrollArea(this);
+    rthsScroll->setWidget(m_rths);
+    rthsScroll->setWidgetResizable(true);
+    m_rthsDock = addDock(rthsScroll, QString(), QStringLiteral("rthsDock"), Qt::LeftDockWidgetArea);
     m_rthsDock->hide();
     connect(m_controls->emergencyHoldAction(), &QAction::triggered, m_rths, &RthsPanel::emergencyHold);
 

@@ -3,6 +3,7 @@
 #include "comms/LinkAddress.h"
 #include "gui/app/AlarmList.h"
 #include "gui/app/ConsoleSettings.h"
+#include "gui/app/RthsTwinPanel.h"
 #include "gui/plots/RthsPlots.h"
 
 #include <QComboBox>
@@ -14,6 +15,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -161,11 +163,23 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     v->addWidget(m_status);
 
-    m_sync = new SynchronizationPlot(this);
-    m_history = new TrackingHistoryPlot(this);
+
+    // The plots and the damper twin share the height (one tab each): the view fits the
+    // console's 1280x720 design size (the main window puts the panel in a scroll area too).
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("rthsTabs"));
+    auto* plots = new QWidget(m_tabs);
+    auto* pv = new QVBoxLayout(plots);
+    pv->setContentsMargins(0, 0, 0, 0);
+    m_sync = new SynchronizationPlot(plots);
+    m_history = new TrackingHistoryPlot(plots);
     m_history->setDelayThresholds(l.j1Warning, l.j1Critical);
-    v->addWidget(m_sync, 3);
-    v->addWidget(m_history, 2);
+    pv->addWidget(m_sync, 3);
+    pv->addWidget(m_history, 2);
+    m_twin = new RthsTwinPanel(m_tabs);
+    m_tabs->addTab(plots, QString());
+    m_tabs->addTab(m_twin, QString());
+    v->addWidget(m_tabs, 1);
 
     connect(m_start, &QPushButton::clicked, this, &RthsPanel::start);
     connect(m_hold, &QPushButton::clicked, this, &RthsPanel::hold);
@@ -179,6 +193,9 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     connect(m_session, &RthsSession::finished, this, &RthsPanel::onFinished);
     connect(m_session, &RthsSession::failed, this, &RthsPanel::onFailed);
     connect(m_session, &RthsSession::controllerDescribed, this, &RthsPanel::onControllerDescribed);
+    connect(m_session, &RthsSession::twinUpdates, this, &RthsPanel::onTwinUpdates);
+    connect(m_twin, &RthsTwinPanel::updateRequested, this, &RthsPanel::onTwinUpdateRequested);
+    connect(m_twin, &RthsTwinPanel::decisionRequested, this, &RthsPanel::onProposalDecided);
     setStatus([] { return tr("No RTHS run yet."); }, false);
     retranslateUi();
     showEstimate();
@@ -220,6 +237,8 @@ void RthsPanel::retranslateUi()
     m_criticalHeader->setText(tr("Critical above"));
     m_j1Label->setText(tr("J1 delay"));
     m_j2Label->setText(tr("J2 tracking error"));
+    m_tabs->setTabText(0, tr("Tracking"));
+    m_tabs->setTabText(1, tr("Damper twin"));
     m_recordLabel->setText(tr("Record folder:"));
     m_recordFolder->setPlaceholderText(tr("not recorded"));
     m_recordFolder->setToolTip(tr("Every tick of a run from this view goes to record.h5 in this folder (record-2.h5, record-3.h5, ... when taken: nothing is overwritten); empty: not recorded"));
@@ -288,6 +307,7 @@ void RthsPanel::updateButtons()
     m_controller->setEnabled(!going);
     m_duration->setEnabled(!going);
     m_recordFolder->setEnabled(!going);
+    m_twin->setRunning(going);
 }
 
 void RthsPanel::browse()
@@ -369,6 +389,7 @@ void RthsPanel::began(const RthsConfig& cfg, const QString& where)
     m_lastTime = 0.0;
     m_lastTick = 0;
     m_rate = rate;
+    m_twin->setTwin(cfg.settings.damper, rate);
     setStatus([name, rate, where] { return tr("Running '%1' at %2 Hz (%3)").arg(name).arg(rate).arg(where); }, false);
     m_alarms->addMessage([name] { return tr("RTHS run '%1' started").arg(name); }, AlarmSeverity::Info);
     showEstimate();
@@ -382,6 +403,37 @@ void RthsPanel::onFailed(const QString& why)
                              "RTHS run not followed: " + why.toStdString(), "rths-not-followed", {why.toStdString()}));
     updateButtons();
     emit runFinished(why);
+}
+
+void RthsPanel::onTwinUpdateRequested(const rths::TwinUpdate& update)
+{
+    QString why;
+    if (!m_session->sendTwinUpdate(update, &why))
+        m_twin->showNotSent(why);
+}
+
+void RthsPanel::onProposalDecided(int id, bool approve)
+{
+    QString why;
+    if (!m_session->decideProposal(id, approve, &why))
+        m_twin->showNotSent(why);
+    else
+        m_alarms->addEvent(m_lastTime, int(m_lastTick),
+                           approve ? tr("RTHS proposal #%1 approved").arg(id) : tr("RTHS proposal #%1 rejected").arg(id));
+}
+
+void RthsPanel::onTwinUpdates(const std::vector<UpdateEvent>& events)
+{
+    m_twin->showDecisions(events);
+    for (UpdateEvent e : events) {
+        if (e.proposal != 0 && (e.decision == UpdateDecision::Applied || e.decision == UpdateDecision::Refused))
+            continue; // listed once, as the update's decision
+        e.time = double(e.step) / m_rate; // a controller's decision carries its tick only
+        const QString text = e.step > 0 || e.ok ? QString::fromStdString(rths::describeTwinUpdate(e))
+                                                : QStringLiteral("damper twin update refused: %1").arg(QString::fromStdString(e.message));
+        m_alarms->addMessage(double(e.step) / m_rate, e.step, [text] { return text; },
+                             e.ok ? AlarmSeverity::Info : AlarmSeverity::Warning);
+    }
 }
 
 void RthsPanel::hold()

@@ -11,6 +11,9 @@
 //     which lets a held run go on from there (a limit still breached refuses it); a run held by
 //     the loop itself (a limit of the plant or command, deadline misses) is named in the panel
 //     and as a critical alarm with its channel, value and tick;
+//   - the damper twin of a run with one (RthsTwinPanel): its parameters as the loop has them,
+//     with units and bounds, and new values the operator sends (checked against the bounds
+//     first), applied before the loop's next tick, locally or over the link (rths-update);
 //   - the record folder (default: the console's record folder + "/rths"; empty: not recorded)
 //     and where the run's record goes (the first free record.h5, record-N.h5 there), or, for a
 //     controller's run, where the controller records (its hello-ack) or that it does not.
@@ -32,11 +35,13 @@ class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QTabWidget;
 class QToolButton;
 
 namespace hsmu::gui {
 
 class AlarmList;
+class RthsTwinPanel;
 class SynchronizationPlot;
 class TrackingHistoryPlot;
 
@@ -83,6 +88,7 @@ public:
     RthsSession* session() const { return m_session; }
     SynchronizationPlot* synchronizationPlot() const { return m_sync; }
     TrackingHistoryPlot* historyPlot() const { return m_history; }
+    RthsTwinPanel* twinPanel() const { return m_twin; }
     /// The last live estimate (hasEstimate() false before the first).
     const rths::TrackingWindow& window() const { return *m_window; }
     QString statusText() const;
@@ -107,6 +113,9 @@ private:
     void setStatus(std::function<QString()> render, bool bad);
     void setRecordState(std::function<QString()> render);
     void onControllerDescribed(const QString& description);
+    void onTwinUpdateRequested(const rths::TwinUpdate& update);
+    void onTwinUpdates(const std::vector<UpdateEvent>& events);
+    void onProposalDecided(int id, bool approve);
     void updateButtons();
     void browse();
 
@@ -154,6 +163,8 @@ private:
     bool m_statusBad = false;
     SynchronizationPlot* m_sync = nullptr;
     TrackingHistoryPlot* m_history = nullptr;
+    RthsTwinPanel* m_twin = nullptr;
+    QTabWidget* m_tabs = nullptr;
 };
 
 } // namespace hsmu::gui

@@ -76,13 +76,16 @@ bool RthsSession::start(const RthsConfig& cfg, const GroundMotion& ag, Pace pace
     m_observers = {};
     m_observers.add(m_feed.get());
     m_observers.add(m_recording ? m_recording->feed() : nullptr);
+    m_observers.add(&m_outbox);
+    m_outbox.take();
+    m_posted = s.damper.enabled ? std::make_unique<rths::PostedTwinUpdates>(pace == Pace::Fast) : nullptr;
     m_backpressure = std::make_unique<comms::FastPaceGate>(*m_gate, *m_feed);
     rths::TickGate* gate = pace == Pace::Fast ? static_cast<rths::TickGate*>(m_backpressure.get()) : m_gate.get();
     m_run = {};
     m_link.reset();
     m_failure.clear();
     m_holdAfterMisses = cfg.holdAfterMisses;
-    m_runner = std::make_unique<rths::RthsRunner>(part, m_ag, s, gate, duration, &m_observers);
+    m_runner = std::make_unique<rths::RthsRunner>(part, m_ag, s, gate, duration, &m_observers, m_posted.get());
     launchLocal();
     return true;
 }
@@ -157,6 +160,7 @@ bool RthsSession::startRemote(const RthsConfig& cfg, const QString& host, quint1
     m_recordPath.clear();
     m_recordError.clear();
     m_runner.reset();
+    m_posted.reset();
     m_link = std::make_unique<RthsLink>();
     m_remoteSamples.clear();
     m_description.clear();
@@ -237,6 +241,38 @@ void RthsSession::emergencyHold()
         m_link->hold("operator at the console", true);
 }
 
+bool RthsSession::sendTwinUpdate(const rths::TwinUpdate& update, QString* why)
+{
+    if (!m_active) {
+        if (why)
+            *why = tr("no RTHS run is going");
+        return false;
+    }
+    if (m_link) {
+        if (m_link->update(update.names, update.values))
+            return true;
+        if (why)
+            *why = tr("the link to the controller is closed");
+        return false;
+    }
+    if (!m_posted) {
+        if (why)
+            *why = tr("this RTHS run has no damper twin");
+        return false;
+    }
+    m_posted->post(update);
+    return true;
+}
+
+bool RthsSession::decideProposal(int id, bool approve, QString* why)
+{
+    if (m_active && m_link && m_link->decide(std::uint32_t(id), approve))
+        return true;
+    if (why)
+        *why = tr("no controller's RTHS run is going");
+    return false;
+}
+
 void RthsSession::poll()
 {
     const bool done = m_done.load(); // before draining: every sample of a finished run is taken
@@ -261,6 +297,15 @@ void RthsSession::poll()
     }
     if (!m_batch.empty())
         emit samples(m_batch);
+    std::vector<UpdateEvent> decisions = m_outbox.take();
+    if (m_link) {
+        for (const comms::RthsUpdateAppliedMsg& u : m_link->takeUpdates())
+            decisions.push_back(RthsLink::eventOf(u));
+        for (UpdateEvent& e : m_link->takeProposals())
+            decisions.push_back(std::move(e));
+    }
+    if (!decisions.empty())
+        emit twinUpdates(decisions);
     if (!done)
         return;
     m_poll.stop();

@@ -14,6 +14,10 @@
 // record-N.h5 there (core's RthsRecording: the same RthsRecordFeed and RecordWriter as
 // `hsmu rths`, batched on the writer's thread), a hold as the last tick's alarm (the file stays
 // open while the run may resume, the resume a note); the loop's thread closes it.
+// The damper twin (docs/rths.md, "The console's RTHS view"): sendTwinUpdate() posts new values
+// of its parameters, applied before the loop's next tick (a local run's PostedTwinUpdates), or
+// sends them over the link (rths-update, as `hsmu rths --controller --update`); every decision,
+// applied or refused, comes back as twinUpdates() with its tick.
 // Thread rules: GUI thread, except the loop's own thread inside.
 
 #include "comms/rths/RthsMonitor.h"
@@ -73,6 +77,16 @@ public:
     /// the channel) and the run stays held. Monitoring a controller, the refusal comes from the
     /// controller and arrives as failed().
     bool resume(QString* why);
+    /// New values of the damper twin's parameters (by name, in the twin's scales), applied
+    /// before the next tick; what became of them comes as twinUpdates(). False with *why when
+    /// no run is going or it has no twin (nothing sent). The loop (local) or the controller
+    /// checks them (checkTwinUpdate: the box, the law) and refuses with the reason.
+    bool sendTwinUpdate(const rths::TwinUpdate& update, QString* why);
+    /// Approve or reject the controller's proposal `id` (a controller's run with
+    /// "identification": {"approve": true}: docs/rths.md, "Proposals approved by the console");
+    /// its fate comes as twinUpdates() (an event with the proposal's id). False with *why when
+    /// no controller's run is going.
+    bool decideProposal(int id, bool approve, QString* why);
 
 signals:
     /// Every sample since the last batch, oldest first (GUI thread).
@@ -84,6 +98,11 @@ signals:
     /// The monitored controller's hello-ack text (its loop, and where it records or that it
     /// does not), once connected.
     void controllerDescribed(const QString& description);
+    /// Decisions on the twin's updates since the last batch (applied or refused, each with its
+    /// tick as step; a controller's immediate refusal has step 0), oldest first (GUI thread);
+    /// then the controller's proposals' events (UpdateEvent::proposal their id, decision
+    /// Proposed, Superseded, Rejected, Refused or Applied).
+    void twinUpdates(const std::vector<hsmu::UpdateEvent>& events);
 
 private:
     void poll();
@@ -110,7 +129,9 @@ private:
     rths::RthsRun m_run; // written by the loop's thread until m_done
     GroundMotion m_ag;   // the run's record (the record feed reads it)
     std::unique_ptr<rths::RthsRecording> m_recording; // closed by the loop's thread
-    rths::TickObservers m_observers;                  // the feed, then the record
+    rths::TickObservers m_observers;                  // the feed, the record, the outbox
+    comms::UpdateOutbox m_outbox;                     // a local run's twin update decisions
+    std::unique_ptr<rths::PostedTwinUpdates> m_posted; // a local run's operator updates
     QString m_recordPath;
     std::string m_recordError;                        // written by the thread until m_done
     double m_samplePeriod = 0.0;

@@ -71,6 +71,15 @@ RthsLink::Event RthsLink::next()
             m_updates.push_back(*u);
             continue;
         }
+        if (const auto* p = std::get_if<comms::RthsProposalMsg>(&*m)) {
+            UpdateEvent e{int(p->tick), 0.0, "damper twin", ParameterLayout(p->names), p->values, false, p->message};
+            e.decision = static_cast<UpdateDecision>(p->decision);
+            e.ok = e.decision == UpdateDecision::Applied;
+            e.proposal = int(p->id);
+            std::lock_guard lock(m_updatesMutex);
+            m_proposals.push_back(std::move(e));
+            continue;
+        }
         if (const auto* e = std::get_if<comms::ErrorMsg>(&*m); e && e->code == comms::ErrorCode::UpdateRefused) {
             std::lock_guard lock(m_updatesMutex);
             m_updates.push_back(comms::RthsUpdateAppliedMsg{0, false, e->reason, {}, {}});
@@ -106,6 +115,25 @@ std::vector<comms::RthsUpdateAppliedMsg> RthsLink::takeUpdates()
 {
     std::lock_guard lock(m_updatesMutex);
     return std::exchange(m_updates, {});
+}
+
+UpdateEvent RthsLink::eventOf(const comms::RthsUpdateAppliedMsg& u)
+{
+    UpdateEvent e{int(u.tick), 0.0, "damper twin", ParameterLayout(u.names), u.values, u.applied, u.message};
+    e.decision = u.applied ? UpdateDecision::Applied : UpdateDecision::Refused;
+    return e;
+}
+
+bool RthsLink::decide(std::uint32_t id, bool approve)
+{
+    std::string error;
+    return m_link.send(comms::RthsDecisionMsg{id, approve}, error);
+}
+
+std::vector<UpdateEvent> RthsLink::takeProposals()
+{
+    std::lock_guard lock(m_updatesMutex);
+    return std::exchange(m_proposals, {});
 }
 
 void RthsLink::abandon()

@@ -8,6 +8,7 @@
 // Thread rules: open / next / bye on one thread; hold() from any thread (LinkClient::send).
 
 #include "comms/link/LinkClient.h"
+#include "core/identification/ParameterUpdate.h"
 
 #include <atomic>
 #include <cstdint>
@@ -48,6 +49,15 @@ public:
     /// What became of updates so far (applied or refused by the loop, each at its tick; refused
     /// by the controller at once: applied false, tick 0, the controller's reason); any thread.
     std::vector<comms::RthsUpdateAppliedMsg> takeUpdates();
+    /// The controller's decision on an update as the local run's event (its step the tick;
+    /// describeTwinUpdate() gives its sentence).
+    static UpdateEvent eventOf(const comms::RthsUpdateAppliedMsg& u);
+    /// Approve or reject the controller's proposal `id` (rths-decision; docs/rths.md,
+    /// "Proposals approved by the console"); any thread. A refusal comes as a refused update.
+    bool decide(std::uint32_t id, bool approve);
+    /// The proposals' events so far (rths-proposal: proposed, superseded, rejected, refused,
+    /// applied; each with its id and tick); any thread.
+    std::vector<UpdateEvent> takeProposals();
     /// Give up: a next() in progress (or the next one) returns Failed ("abandoned"); any thread.
     void abandon();
     /// Say goodbye (after the end).
@@ -58,6 +68,7 @@ private:
     std::atomic<bool> m_abandoned{false};
     std::mutex m_updatesMutex;
     std::vector<comms::RthsUpdateAppliedMsg> m_updates;
+    std::vector<UpdateEvent> m_proposals; // guarded by m_updatesMutex
 };
 
 } // namespace hsmu::gui

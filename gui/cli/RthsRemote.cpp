@@ -37,13 +37,6 @@ nlohmann::json summaryOf(const comms::RthsEndMsg& end, const rths::RthsSettings&
     return j;
 }
 
-/// The controller's decision on an update as the local run's event (its sentence, its summary).
-UpdateEvent eventOf(const comms::RthsUpdateAppliedMsg& u) {
-    UpdateEvent e{int(u.tick), 0.0, "damper twin", ParameterLayout(u.names), u.values, u.applied, u.message};
-    e.decision = u.applied ? UpdateDecision::Applied : UpdateDecision::Refused;
-    return e;
-}
-
 } // namespace
 
 bool parseTimedUpdate(const QString& text, RthsTimedUpdate& out) {
@@ -89,7 +82,7 @@ int runRthsOnController(const RthsConfig& cfg, const rths::RthsSettings& s,
     nlohmann::json updates = nlohmann::json::array();
     const auto reportUpdates = [&] {
         for (const comms::RthsUpdateAppliedMsg& u : link.takeUpdates()) {
-            const UpdateEvent e = eventOf(u);
+            const UpdateEvent e = RthsLink::eventOf(u);
             (u.applied ? out : ConsoleStreams::err()) << QString::fromStdString(rths::describeTwinUpdate(e)) << Qt::endl;
             nlohmann::json values = nlohmann::json::object();
             for (std::size_t i = 0; i < u.names.size() && i < u.values.size(); ++i)

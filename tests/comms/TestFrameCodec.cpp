@@ -39,7 +39,9 @@ std::vector<Message> samples() {
             TargetsMsg{8, {{kChannelDisplacement, 0.0125}, {kChannelForce, -1500.0}}},
             MeasurementsMsg{8, kFlagReplayed, {{0.0125, 310.5, 0.0125}, {-2.5e-4, -1500.0, -1500.0}}},
             RthsUpdateMsg{{"alpha", "c0"}, {80.0, 0.03}},
-            RthsUpdateAppliedMsg{4097, true, "operator", {"alpha", "c0"}, {80.0, 0.03}}};
+            RthsUpdateAppliedMsg{4097, true, "operator", {"alpha", "c0"}, {80.0, 0.03}},
+            RthsProposalMsg{3, 2304, 5, 0.125, "identification", {"alpha"}, {81.5}},
+            RthsDecisionMsg{3, true}};
 }
 
 RthsEndMsg rthsEnd() {
@@ -87,7 +89,7 @@ class TestFrameCodec : public QObject {
 private slots:
     void roundTripEveryMessage() {
         const auto msgs = samples();
-        QCOMPARE(msgs.size(), std::size_t(21)); // one of each type
+        QCOMPARE(msgs.size(), std::size_t(23)); // one of each type
         std::vector<std::uint8_t> stream;
         for (std::size_t i = 0; i < msgs.size(); ++i)
             encodeFrame(msgs[i], std::uint32_t(i + 1), stream);
@@ -127,6 +129,12 @@ private slots:
         QVERIFY(u.names == (std::vector<std::string>{"alpha", "c0"}));
         QCOMPARE(u.values[1], 0.03);
         QCOMPARE(std::get<RthsUpdateAppliedMsg>(frames[20].message).tick, std::uint64_t(4097));
+        // rths-proposal: 25 + the named values; rths-decision: u32 id, u8 approve.
+        QCOMPARE(payload(RthsProposalMsg{}), std::size_t(25));
+        QCOMPARE(payload(RthsDecisionMsg{}), std::size_t(5));
+        const auto& p = std::get<RthsProposalMsg>(frames[21].message);
+        QVERIFY(p.id == 3 && p.tick == 2304 && p.decision == 5 && p.fitError == 0.125 && p.values[0] == 81.5);
+        QVERIFY(std::get<RthsDecisionMsg>(frames[22].message).approve);
         // N channels (docs/protocol.md, "Several actuator channels"): targets 10 + 9 N bytes,
         // measurements 14 + 24 N, the hello-ack's tail 2 + 8 N (none for one channel).
         QCOMPARE(payload(msgs[17]), std::size_t(10 + 9 * 2));
@@ -258,7 +266,7 @@ private slots:
     }
 
     void unknownType() {
-        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(22), std::uint16_t(0xFFFF)}) {
+        for (std::uint16_t t : {std::uint16_t(0), std::uint16_t(24), std::uint16_t(0xFFFF)}) {
             FrameDecoder d;
             QCOMPARE(decodeAll(d, header(kFrameMagic, 1, t, 1, 0)), FrameDecoder::Status::Error);
             QCOMPARE(d.error().code, ErrorCode::Malformed);
