@@ -35,6 +35,7 @@
 #include <QMessageBox>
 #include <QScreen>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QShowEvent>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -105,6 +106,15 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     rthsScroll->setWidgetResizable(true);
     m_rthsDock = addDock(rthsScroll, QString(), QStringLiteral("rthsDock"), Qt::LeftDockWidgetArea);
     m_rthsDock->hide();
+    // Shown, it takes the width its form asks (at most half the window: the hybrid test's
+    // plots beside it are idle during an RTHS run), so its fields are not cut at the left.
+    connect(m_rthsDock, &QDockWidget::visibilityChanged, this, [this, rthsScroll](bool visible) {
+        if (!visible || m_rthsDock->isFloating())
+            return;
+        const int wanted = m_rths->sizeHint().width() + rthsScroll->verticalScrollBar()->sizeHint().width() + 8;
+        resizeDocks({m_rthsDock}, {std::min(wanted, width() / 2)}, Qt::Horizontal);
+        rthsScroll->horizontalScrollBar()->setValue(0);
+    });
     connect(m_controls->emergencyHoldAction(), &QAction::triggered, m_rths, &RthsPanel::emergencyHold);
 
     m_status = new TestStatusBar(this);
