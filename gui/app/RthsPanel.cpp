@@ -86,12 +86,13 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_controllerLabel = new QLabel(this);
     m_controller = new QLineEdit(this);
     m_controller->setObjectName(QStringLiteral("rthsController"));
-    form->addWidget(m_controllerLabel, 2, 0);
-    form->addWidget(m_controller, 2, 1, 1, 3);
+    // One field per row under the source (the dock stays narrow enough for 1280x720).
     form->addWidget(m_paceLabel, 1, 0);
     form->addWidget(m_pace, 1, 1);
-    form->addWidget(m_durationLabel, 1, 2);
-    form->addWidget(m_duration, 1, 3);
+    form->addWidget(m_durationLabel, 2, 0);
+    form->addWidget(m_duration, 2, 1);
+    form->addWidget(m_controllerLabel, 3, 0);
+    form->addWidget(m_controller, 3, 1, 1, 3);
     m_recordLabel = new QLabel(this);
     m_recordFolder = new QLineEdit(defaultRecordFolder(), this);
     m_recordFolder->setObjectName(QStringLiteral("rthsRecordFolder"));
@@ -99,12 +100,12 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_recordState->setObjectName(QStringLiteral("rthsRecordState"));
     m_recordState->setWordWrap(true);
     m_recordState->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    form->addWidget(m_recordLabel, 3, 0);
-    form->addWidget(m_recordFolder, 3, 1, 1, 3);
-    form->addWidget(m_recordState, 4, 0, 1, 4);
+    form->addWidget(m_recordLabel, 4, 0);
+    form->addWidget(m_recordFolder, 4, 1, 1, 3);
+    form->addWidget(m_recordState, 5, 0, 1, 4);
     v->addLayout(form);
 
-    auto* buttons = new QHBoxLayout;
+    auto* buttons = new QGridLayout; // two by two: Start, Hold / Resume, Emergency hold
     m_start = new QPushButton(this);
     m_hold = new QPushButton(this);
     m_emergency = new QPushButton(this);
@@ -119,10 +120,10 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_hold->setObjectName(QStringLiteral("rthsHold"));
     m_emergency->setObjectName(QStringLiteral("rthsEmergencyHold"));
     m_resume->setObjectName(QStringLiteral("rthsResume"));
-    buttons->addWidget(m_start);
-    buttons->addWidget(m_hold);
-    buttons->addWidget(m_resume);
-    buttons->addWidget(m_emergency);
+    buttons->addWidget(m_start, 0, 0);
+    buttons->addWidget(m_hold, 0, 1);
+    buttons->addWidget(m_resume, 1, 0);
+    buttons->addWidget(m_emergency, 1, 1);
     v->addLayout(buttons);
 
     // Live values and their thresholds: one row per index.
