@@ -143,7 +143,7 @@ std::vector<StepRecord> run(std::unique_ptr<Element> e)
     gm.name = "sine";
     gm.dt = 0.01;
     for (int i = 0; i <= 300; ++i)
-        gm.acceleration.push_back(5.0 * std::sin(2.0 * std::numbers::pi * 1.0 * i * gm.dt));
+        gm.acceleration.push_back(6.0 * std::sin(2.0 * std::numbers::pi * 1.0 * i * gm.dt));
     HybridTestOptions o;
     o.dt = 0.01;
     HybridTest t(std::move(s), std::make_unique<AlphaOS>(), gm, o);
