@@ -111,9 +111,12 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     connect(m_rthsDock, &QDockWidget::visibilityChanged, this, [this, rthsScroll](bool visible) {
         if (!visible || m_rthsDock->isFloating())
             return;
-        const int wanted = m_rths->sizeHint().width() + rthsScroll->verticalScrollBar()->sizeHint().width() + 8;
-        resizeDocks({m_rthsDock}, {std::min(wanted, width() / 2)}, Qt::Horizontal);
-        rthsScroll->horizontalScrollBar()->setValue(0);
+        QTimer::singleShot(0, this, [this, rthsScroll] { // once its layout is polished
+            const int form = std::max(m_rths->sizeHint().width(), m_rths->minimumSizeHint().width());
+            const int wanted = form + rthsScroll->verticalScrollBar()->sizeHint().width() + 2 * rthsScroll->frameWidth() + 8;
+            resizeDocks({m_rthsDock}, {std::min(wanted, width() / 2)}, Qt::Horizontal);
+            rthsScroll->horizontalScrollBar()->setValue(0);
+        });
     });
     connect(m_controls->emergencyHoldAction(), &QAction::triggered, m_rths, &RthsPanel::emergencyHold);
 

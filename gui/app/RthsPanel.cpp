@@ -138,6 +138,8 @@ RthsPanel::RthsPanel(AlarmList* alarms, QWidget* parent)
     m_j2Value = new QLabel(this);
     m_amplitudeValue = new QLabel(this);
     m_timeValue = new QLabel(this);
+    for (QLabel* header : {m_warningHeader, m_criticalHeader, m_j2Label})
+        header->setWordWrap(true); // long in some languages: wrap instead of widening the dock
     for (QLabel* value : {m_j1Value, m_j2Value})
         value->setStyleSheet(QStringLiteral("font-size: 14pt; font-weight: bold;"));
     m_j1Warning = thresholdBox(QStringLiteral(" ms"), l.j1Warning, this);

@@ -67,6 +67,7 @@ RthsTwinPanel::RthsTwinPanel(QWidget* parent) : QWidget(parent)
     v->addWidget(m_table, 1);
     v->addWidget(m_decision);
     m_pendingTitle = new QLabel(this);
+    m_pendingTitle->setWordWrap(true); // long in some languages: never widens the dock
     m_pending = new QTableWidget(0, 4, this);
     m_pending->setObjectName(QStringLiteral("rthsTwinProposals"));
     m_pending->verticalHeader()->setVisible(false);
