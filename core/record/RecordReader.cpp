@@ -3,6 +3,7 @@
 #include "core/record/Hdf5Util.h"
 #include "core/record/RecordChecksum.h"
 #include "core/record/RecordProbe.h"
+#include "core/record/RecordReaderImpl.h"
 #include "core/record/RecordSchema.h"
 
 #include <algorithm>
@@ -10,94 +11,34 @@
 
 namespace hsmu {
 
-namespace {
+namespace recordreader {
 
-AlarmSeverity severityFromName(const std::string& s) {
-    for (auto v : {AlarmSeverity::Info, AlarmSeverity::Warning, AlarmSeverity::Critical})
-        if (s == alarmSeverityName(v))
-            return v;
-    return AlarmSeverity::Warning;
+void appendRows(Eigen::VectorXd& out, const Column& c, hsize_t r0, hsize_t r1,
+                const std::string& w) {
+    out.conservativeResize(Eigen::Index(r1));
+    c.read(r0, r1, H5T_NATIVE_DOUBLE, out.data() + r0, w);
 }
 
-AlarmKind kindFromName(const std::string& s) {
-    for (int i = 0; i <= int(AlarmKind::ModelUpdate); ++i)
-        if (s == alarmKindName(AlarmKind(i)))
-            return AlarmKind(i);
-    return AlarmKind::ElementFault;
+void appendRows(std::vector<int>& out, const Column& c, hsize_t r0, hsize_t r1,
+                const std::string& w) {
+    out.resize(r1);
+    c.read(r0, r1, H5T_NATIVE_INT, out.data() + r0, w);
 }
 
-/// A per-step dataset opened for reading: rows x cols (cols < 0: one-dimensional).
-struct Column {
-    h5::Id dset;
-    int cols = -1;
-    std::string name;
+/// Rows [r0, r1) of out from file rows [r0 + offset, r1 + offset).
+void appendRows(Eigen::MatrixXd& out, const Column& c, hsize_t r0, hsize_t r1, const std::string& w,
+                hsize_t offset) {
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    RowMajor block(Eigen::Index(r1 - r0), c.cols);
+    c.read(r0 + offset, r1 + offset, H5T_NATIVE_DOUBLE, block.data(), w);
+    out.conservativeResize(Eigen::Index(r1), c.cols);
+    out.bottomRows(block.rows()) = block;
+}
 
-    hsize_t rows() const {
-        const h5::Id space(H5Dget_space(dset.get()));
-        hsize_t dims[2] = {0, 0};
-        if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0)
-            return 0;
-        return dims[0];
-    }
+} // namespace recordreader
 
-    /// Rows [r0, r1) into out (row-major), memory type mem.
-    void read(hsize_t r0, hsize_t r1, hid_t mem, void* out, const std::string& where) const {
-        if (r1 <= r0 || cols == 0)
-            return;
-        const int rank = cols >= 0 ? 2 : 1;
-        const h5::Id fileSpace = h5::check(H5Dget_space(dset.get()), where, "no dataspace");
-        const hsize_t start[2] = {r0, 0};
-        const hsize_t count[2] = {r1 - r0, hsize_t(cols > 0 ? cols : 0)};
-        h5::check(
-            H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
-            where, "damaged or truncated record (cannot select rows of " + name + ")");
-        const h5::Id memSpace =
-            h5::check(H5Screate_simple(rank, count, nullptr), where, "no dataspace");
-        h5::check(H5Dread(dset.get(), mem, memSpace.get(), fileSpace.get(), H5P_DEFAULT, out),
-                  where, "damaged or truncated record (cannot read " + name + ")");
-    }
-};
+using recordreader::appendRows;
 
-} // namespace
-
-struct RecordReader::Impl {
-    std::string path;
-    h5::Id file;
-    bool swmr = false;
-    RecordData data;
-    Column step, time, ag, u, v, a, def, force, cmd, par, sd, aux, fit, applied, thisStep, pending;
-    Column tracking, requested; // schema 2
-    Column siteRoundTrip;       // /sites, when the test had experimental elements
-    Column alarmTime, alarmStep, alarmSeverity, alarmKind, alarmMessage, alarmCode;
-    Column eventStep, eventTime, eventElement, eventValues, eventDecision, eventProposal, noteTime,
-        noteStep, noteText;
-    Column actCmd, actMeasured, actTicks, actFlags; // /elements/actuator, when present
-    bool actuator = false;
-    Column channels; // /elements/channels, when the run had multi-DOF elements
-    Column dofStep, dofTime; // /dofs/step, /dofs/time: the record chose or decimated its DOFs
-    bool dofsChosen = false;
-    bool v2 = false;                        // schema 2 datasets present
-    std::vector<std::string> decisionCodes; // /updating/events/decision "codes" (if present)
-
-    void open();
-    void readMetadata();
-    Column column(const char* name, int cols);
-    std::vector<Column*> stepColumns();
-    /// The rows of /dofs when they are chosen or decimated (their own row count), else none.
-    std::vector<Column*> dofColumns();
-    int readNewRows();
-    void readNewDofRows();
-    void readNewAlarms();
-    void readNewEvents();
-    void readNewNotes();
-    std::vector<Column*> logColumns();
-    /// SWMR: re-read every dataset's extent from the file (H5Drefresh).
-    void refreshDatasets();
-    /// Walk every dataset's chunk index (no chunk is read): the file's metadata a read
-    /// traverses (a chunk's address is not checked against the size on disk: a record being
-    /// written allocates chunks before their bytes reach the file).
-    void walkChunkIndexes();
-};
 
 void RecordReader::Impl::open() {
     std::error_code ec;
@@ -346,47 +287,6 @@ void RecordReader::Impl::readMetadata() {
                                  "attributes or names were altered)");
 }
 
-namespace {
-
-void appendRows(Eigen::VectorXd& out, const Column& c, hsize_t r0, hsize_t r1,
-                const std::string& w) {
-    out.conservativeResize(Eigen::Index(r1));
-    c.read(r0, r1, H5T_NATIVE_DOUBLE, out.data() + r0, w);
-}
-
-void appendRows(std::vector<int>& out, const Column& c, hsize_t r0, hsize_t r1,
-                const std::string& w) {
-    out.resize(r1);
-    c.read(r0, r1, H5T_NATIVE_INT, out.data() + r0, w);
-}
-
-/// Rows [r0, r1) of out from file rows [r0 + offset, r1 + offset).
-void appendRows(Eigen::MatrixXd& out, const Column& c, hsize_t r0, hsize_t r1, const std::string& w,
-                hsize_t offset = 0) {
-    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-    RowMajor block(Eigen::Index(r1 - r0), c.cols);
-    c.read(r0 + offset, r1 + offset, H5T_NATIVE_DOUBLE, block.data(), w);
-    out.conservativeResize(Eigen::Index(r1), c.cols);
-    out.bottomRows(block.rows()) = block;
-}
-
-std::vector<std::string> readFixedStrings(const Column& c, hsize_t r0, hsize_t r1,
-                                          const std::string& w) {
-    const h5::Id type = h5::check(H5Dget_type(c.dset.get()), w, "damaged record (alarm type)");
-    const std::size_t size = H5Tget_size(type.get());
-    if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0 || size == 0)
-        throw RecordError(w + ": damaged record (" + c.name + " is not a fixed string)");
-    std::vector<char> buf(size * (r1 - r0));
-    c.read(r0, r1, type.get(), buf.data(), w);
-    std::vector<std::string> out;
-    for (hsize_t i = 0; i < r1 - r0; ++i) {
-        const char* s = buf.data() + i * size;
-        out.emplace_back(s, std::find(s, s + size, '\0'));
-    }
-    return out;
-}
-
-} // namespace
 
 int RecordReader::Impl::readNewRows() {
     const auto columns = stepColumns();
@@ -453,83 +353,6 @@ void RecordReader::Impl::readNewDofRows() {
     appendRows(data.a, a, r0, n, w);
 }
 
-void RecordReader::Impl::readNewAlarms() {
-    hsize_t n = alarmTime.rows();
-    for (const Column* c : {&alarmStep, &alarmSeverity, &alarmKind, &alarmMessage})
-        n = std::min(n, c->rows());
-    if (alarmCode.dset.valid())
-        n = std::min(n, alarmCode.rows());
-    const hsize_t r0 = data.alarms.size();
-    if (n <= r0)
-        return;
-    std::vector<double> t(n - r0);
-    std::vector<int> s(n - r0);
-    alarmTime.read(r0, n, H5T_NATIVE_DOUBLE, t.data(), path);
-    alarmStep.read(r0, n, H5T_NATIVE_INT, s.data(), path);
-    const auto sev = readFixedStrings(alarmSeverity, r0, n, path);
-    const auto kind = readFixedStrings(alarmKind, r0, n, path);
-    const auto msg = readFixedStrings(alarmMessage, r0, n, path);
-    const auto code = alarmCode.dset.valid() ? readFixedStrings(alarmCode, r0, n, path)
-                                             : std::vector<std::string>(n - r0);
-    for (std::size_t i = 0; i < t.size(); ++i)
-        data.alarms.push_back(
-            {t[i], s[i], severityFromName(sev[i]), kindFromName(kind[i]), msg[i], code[i], {}});
-}
-
-void RecordReader::Impl::readNewEvents() {
-    if (!v2 || !data.layout.updating)
-        return;
-    hsize_t n = eventStep.rows();
-    const bool decisions = eventDecision.dset.valid();
-    for (const Column* c : {&eventTime, &eventElement, &eventValues})
-        n = std::min(n, c->rows());
-    if (decisions)
-        n = std::min({n, eventDecision.rows(), eventProposal.rows()});
-    const hsize_t r0 = data.updateEvents.size();
-    if (n <= r0)
-        return;
-    std::vector<int> s(n - r0);
-    std::vector<double> t(n - r0);
-    Eigen::MatrixXd values;
-    eventStep.read(r0, n, H5T_NATIVE_INT, s.data(), path);
-    eventTime.read(r0, n, H5T_NATIVE_DOUBLE, t.data(), path);
-    std::vector<int> element(n - r0);
-    eventElement.read(r0, n, H5T_NATIVE_INT, element.data(), path);
-    appendRows(values, eventValues, 0, n - r0, path, r0);
-    std::vector<int> decision(n - r0, 0), proposal(n - r0, 0);
-    if (decisions) {
-        eventDecision.read(r0, n, H5T_NATIVE_INT, decision.data(), path);
-        eventProposal.read(r0, n, H5T_NATIVE_INT, proposal.data(), path);
-    }
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        std::vector<double> row(std::size_t(values.cols()));
-        for (Eigen::Index j = 0; j < values.cols(); ++j)
-            row[std::size_t(j)] = values(Eigen::Index(i), j);
-        const auto& elements = data.layout.elements;
-        const bool known = element[i] >= 0 && std::size_t(element[i]) < elements.size();
-        const auto code = std::size_t(decision[i]);
-        data.updateEvents.push_back(
-            {s[i], t[i], known ? elements[std::size_t(element[i])].name : "", std::move(row),
-             code < decisionCodes.size() ? decisionCodes[code] : std::string("applied"),
-             proposal[i]});
-    }
-}
-
-void RecordReader::Impl::readNewNotes() {
-    if (!v2)
-        return;
-    hsize_t n = std::min({noteTime.rows(), noteStep.rows(), noteText.rows()});
-    const hsize_t r0 = data.notes.size();
-    if (n <= r0)
-        return;
-    std::vector<double> t(n - r0);
-    std::vector<int> s(n - r0);
-    noteTime.read(r0, n, H5T_NATIVE_DOUBLE, t.data(), path);
-    noteStep.read(r0, n, H5T_NATIVE_INT, s.data(), path);
-    const auto text = readFixedStrings(noteText, r0, n, path);
-    for (std::size_t i = 0; i < t.size(); ++i)
-        data.notes.push_back({t[i], s[i], text[i]});
-}
 
 void RecordReader::Impl::walkChunkIndexes() {
     std::vector<Column*> all = stepColumns();
