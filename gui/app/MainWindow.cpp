@@ -4,6 +4,7 @@
 #include "gui/app/AlarmList.h"
 #include "gui/app/AlarmText.h"
 #include "gui/app/AlarmPanel.h"
+#include "gui/app/DockFit.h"
 #include "gui/app/RthsPanel.h"
 #include "gui/app/AttentionBanner.h"
 #include "gui/app/ConsoleSettings.h"
@@ -35,7 +36,6 @@
 #include <QMessageBox>
 #include <QScreen>
 #include <QScrollArea>
-#include <QScrollBar>
 #include <QShowEvent>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -106,18 +106,8 @@ MainWindow::MainWindow(const ConfigOverrides& overrides, QWidget* parent)
     rthsScroll->setWidgetResizable(true);
     m_rthsDock = addDock(rthsScroll, QString(), QStringLiteral("rthsDock"), Qt::LeftDockWidgetArea);
     m_rthsDock->hide();
-    // Shown, it takes the width its form asks (at most half the window: the hybrid test's
-    // plots beside it are idle during an RTHS run), so its fields are not cut at the left.
-    connect(m_rthsDock, &QDockWidget::visibilityChanged, this, [this, rthsScroll](bool visible) {
-        if (!visible || m_rthsDock->isFloating())
-            return;
-        QTimer::singleShot(0, this, [this, rthsScroll] { // once its layout is polished
-            const int form = std::max(m_rths->sizeHint().width(), m_rths->minimumSizeHint().width());
-            const int wanted = form + rthsScroll->verticalScrollBar()->sizeHint().width() + 2 * rthsScroll->frameWidth() + 8;
-            resizeDocks({m_rthsDock}, {std::min(wanted, width() / 2)}, Qt::Horizontal);
-            rthsScroll->horizontalScrollBar()->setValue(0);
-        });
-    });
+    // Shown, it takes its form's width (the hybrid test's plots beside it are idle then).
+    fitDockToForm(*this, *m_rthsDock, *rthsScroll);
     connect(m_controls->emergencyHoldAction(), &QAction::triggered, m_rths, &RthsPanel::emergencyHold);
 
     m_status = new TestStatusBar(this);
