@@ -83,6 +83,13 @@ std::vector<int> parseDofList(const std::string& text, const std::vector<std::st
     return out;
 }
 
+bool DofRecording::validFor(std::size_t nDofs) const {
+    for (std::size_t j = 0; j < dofs.size(); ++j)
+        if (dofs[j] < 0 || std::size_t(dofs[j]) >= nDofs || (j > 0 && dofs[j] <= dofs[j - 1]))
+            return false;
+    return every >= 1;
+}
+
 std::string describeDofList(const std::vector<int>& dofs) {
     if (dofs.empty())
         return "all";

@@ -6,6 +6,7 @@
 // channel's, updating, alarm and note dataset is always recorded in full at every step.
 // Thread rules: none (plain data and functions of it).
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@ struct DofRecording {
 
     /// Every DOF at every step: the default record, byte for byte.
     bool full() const { return dofs.empty() && every == 1; }
+    /// The indices are ascending, unique and below `nDofs`, and `every` >= 1.
+    bool validFor(std::size_t nDofs) const;
 };
 
 /// Parses a DOF list "0-9,100,Roof" (comma-separated items: a 0-based index, a range A-B of

@@ -159,10 +159,8 @@ void RecordReader::Impl::readMetadata() {
             DofRecording& r = m.dofRecording;
             r.dofs = h5::readIntsAttr(g.get(), "dof_indices", w);
             r.every = h5::readIntAttr(g.get(), "every", w);
-            for (std::size_t j = 0; j < r.dofs.size(); ++j)
-                if (r.dofs[j] < 0 || std::size_t(r.dofs[j]) >= layout.dofNames.size() ||
-                    (j > 0 && r.dofs[j] <= r.dofs[j - 1]))
-                    throw RecordError(path + ": damaged record (/dofs dof_indices)");
+            if (!DofRecording{r.dofs, 1}.validFor(layout.dofNames.size()))
+                throw RecordError(path + ": damaged record (/dofs dof_indices)");
             if (r.every < 1 || r.dofs.empty())
                 throw RecordError(path + ": damaged record (/dofs every or dof_indices)");
             if (r.dofs.size() == layout.dofNames.size())

@@ -258,13 +258,11 @@ RecordWriter::RecordWriter(const std::string& path, const RunLayout& layout,
     m_d->nDof = layout.dofNames.size();
     m_d->keptDofs = start.dofRecording.dofs;
     m_d->every = std::max(1, start.dofRecording.every);
-    for (std::size_t j = 0; j < m_d->keptDofs.size(); ++j)
-        if (const int k = m_d->keptDofs[j];
-            k < 0 || std::size_t(k) >= m_d->nDof || (j > 0 && k <= m_d->keptDofs[j - 1]))
-            throw RecordError(path +
-                              ": cannot be created (the DOFs to record must be "
-                              "ascending indices below " +
-                              std::to_string(m_d->nDof) + ")");
+    if (!DofRecording{m_d->keptDofs, 1}.validFor(m_d->nDof))
+        throw RecordError(path +
+                          ": cannot be created (the DOFs to record must be "
+                          "ascending indices below " +
+                          std::to_string(m_d->nDof) + ")");
     if (m_d->keptDofs.size() == m_d->nDof)
         m_d->keptDofs.clear(); // every DOF
     m_d->dofsChosen = !m_d->keptDofs.empty() || m_d->every > 1;
