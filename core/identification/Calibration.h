@@ -110,6 +110,9 @@ struct CalibrationResult {
         double nrmseWithout = 0.0, nrmseWith = 0.0; ///< the two fits' NRMSE [-]
         int branches = 0;      ///< N_eff: the history's branches (reversals + 1)
         double criterion = 0.0; ///< N_eff ln(RSS_with / RSS_without) + 2 ln N_eff (< 0: kept)
+        /// The fit without offsets' parameters on a bound (the reference of an identifier that
+        /// fits none, e.g. the online filters, when the offsets are kept).
+        std::vector<std::string> onBoundWithout;
     } offsetTest;
 };
 
