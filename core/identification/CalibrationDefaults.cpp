@@ -253,7 +253,8 @@ CalibrationResult calibrateLaw(const std::vector<double>& u, const std::vector<d
             return r;
         CalibrationRequest moved = request;
         moved.uRef = scales.uRef / k0;
-        CalibrationResult again = calibrate(u, f, defaultCalibrationSpec(moved, scales));
+        CalibrationResult again =
+            calibrate(u, f, defaultCalibrationSpec(moved, withURef(scales, *moved.uRef)));
         again.residualEvaluations += r.residualEvaluations;
         again.computeSeconds += r.computeSeconds;
         again.startsTried += r.startsTried;
@@ -279,7 +280,7 @@ CalibrationResult calibrateLaw(const std::vector<double>& u, const std::vector<d
 /// The fit with offsets from the fit without them (`plain`), and the choice between them.
 CalibrationResult calibrateOffsets(const std::vector<double>& u, const std::vector<double>& f,
                                    const CalibrationRequest& request, CalibrationResult plain) {
-    const HistoryScales scales = deriveHistoryScales(u, f);
+    const HistoryScales derived = deriveHistoryScales(u, f);
     CalibrationRequest withOffsets = request;
     withOffsets.offsets = CalibrationOffsets::On;
     // the plain fit's scales and fitted set (for boucWen possibly a moved uRef)
@@ -288,6 +289,11 @@ CalibrationResult calibrateOffsets(const std::vector<double>& u, const std::vect
         if (it != plain.parameters.end())
             (std::string(name) == "uRef" ? withOffsets.uRef : withOffsets.fRef) = it->second;
     }
+    // the box of the scales the plain fit ran in (a search that moved uRef by its k0 set its
+    // E-dependent bounds in the moved scales)
+    const HistoryScales scales = !request.uRef && withOffsets.uRef
+                                     ? withURef(derived, *withOffsets.uRef)
+                                     : derived;
     withOffsets.fitted = plain.names;
     withOffsets.fitted.erase(std::remove_if(withOffsets.fitted.begin(), withOffsets.fitted.end(),
                                             isOffset),

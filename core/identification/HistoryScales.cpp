@@ -107,4 +107,13 @@ HistoryScales deriveHistoryScales(const std::vector<double>& u, const std::vecto
     return s;
 }
 
+HistoryScales withURef(HistoryScales scales, double uRef) {
+    if (uRef > 0.0 && std::isfinite(uRef)) {
+        scales.energy *= scales.uRef / uRef;
+        scales.uRef = uRef;
+        scales.stiffness = scales.fRef / uRef;
+    }
+    return scales;
+}
+
 } // namespace hsmu

@@ -37,6 +37,11 @@ struct HistoryScales {
 HistoryScales deriveHistoryScales(const std::vector<double>& deformation,
                                   const std::vector<double>& force);
 
+/// The same history's scales with uRef moved (a search that moves uRef by the k0 it found):
+/// the stiffness and the normalized path work E = work / (fRef uRef) follow, so the boxes
+/// that depend on E (CalibrationDefaults.h) are those of the scales the law runs in.
+HistoryScales withURef(HistoryScales scales, double uRef);
+
 /// Indices of the turning points of u (local extrema with a dead band `deadBand` in u), in
 /// order; the first and last samples are not included.
 std::vector<std::size_t> turningPoints(const std::vector<double>& u, double deadBand);

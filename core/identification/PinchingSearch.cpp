@@ -176,8 +176,7 @@ CalibrationResult globalSearch(const std::vector<double>& u, const std::vector<d
                                const std::vector<Values>& extra, bool screen) {
     CalibrationRequest moved = request;
     moved.uRef = uRef;
-    HistoryScales used = scales; // E in the scales the law runs in
-    used.energy = scales.energy * scales.uRef / uRef;
+    const HistoryScales used = withURef(scales, uRef); // E in the scales the law runs in
     CalibrationSpec spec = defaultCalibrationSpec(moved, used);
     spec.starts = {startOf(spec.fitted, plain, true)};
     for (const Values& v : extra)
