@@ -10,10 +10,13 @@
 #include "core/config/RecordConfig.h"
 #include "core/config/ShearBuilding.h"
 #include "core/record/RecordCsvExport.h"
+#include "core/record/RecordError.h"
 #include "core/record/RecordReader.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <hdf5.h>
 
 #include <fstream>
 #include <sstream>
@@ -47,6 +50,29 @@ std::vector<std::string> lines(const std::string& path) {
     return out;
 }
 
+/// Replaces the integer attribute `name` of the group /dofs in the record at `path` by
+/// `values` (a scalar when `scalar`): a record damaged by hand or by another program.
+bool rewriteDofsAttr(const std::string& path, const char* name, const std::vector<int>& values,
+                     bool scalar) {
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    if (f < 0)
+        return false;
+    const hid_t g = H5Gopen2(f, "dofs", H5P_DEFAULT);
+    bool ok = g >= 0 && H5Adelete(g, name) >= 0;
+    if (ok) {
+        const hsize_t n = values.size();
+        const hid_t space = scalar ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr);
+        const hid_t a = H5Acreate2(g, name, H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT);
+        ok = a >= 0 && H5Awrite(a, H5T_NATIVE_INT, values.data()) >= 0;
+        H5Aclose(a);
+        H5Sclose(space);
+    }
+    if (g >= 0)
+        H5Gclose(g);
+    H5Fclose(f);
+    return ok;
+}
+
 /// Runs cfg to its end with two writers: the full record and one with `choice`.
 void recordBoth(const TestConfig& cfg, const DofRecording& choice, const std::string& full,
                 const std::string& chosen) {
@@ -66,6 +92,14 @@ void recordBoth(const TestConfig& cfg, const DofRecording& choice, const std::st
     QVERIFY2(chosenWriter.finish(), chosenWriter.error().c_str());
 }
 
+/// A 12-storey building for 0.1 s (101 steps): the full record and one keeping DOFs 0 and 11
+/// every 10 steps.
+void recordTwelveStoreys(const std::string& full, const std::string& chosen) {
+    nlohmann::json j = shearBuildingConfig({12, true, false});
+    j["analysis"]["duration"] = 0.1;
+    recordBoth(parseConfig(j, "shear-building-12"), DofRecording{{0, 11}, 10}, full, chosen);
+}
+
 } // namespace
 
 class TestRecordDofChoice : public QObject {
@@ -77,6 +111,8 @@ private slots:
     void parserReadsIndicesRangesAndNames();
     void specimenChannelsCannotBeChosen();
     void configurationBlock();
+    void damagedChoiceIsRefused_data();
+    void damagedChoiceIsRefused();
 };
 
 void TestRecordDofChoice::chosenRecordEqualsTheFullRecordsRowsAndColumns_data() {
@@ -176,13 +212,10 @@ void TestRecordDofChoice::chosenRecordEqualsTheFullRecordsRowsAndColumns() {
 }
 
 void TestRecordDofChoice::exportWritesTheKeptRowsWithTheirTrueSteps() {
-    nlohmann::json j = shearBuildingConfig({12, true, false});
-    j["analysis"]["duration"] = 0.1;
-    const TestConfig cfg = parseConfig(j, "shear-building-12");
     QTemporaryDir dir;
     const std::string full = dir.filePath("full.h5").toStdString();
     const std::string chosen = dir.filePath("chosen.h5").toStdString();
-    recordBoth(cfg, DofRecording{{0, 11}, 10}, full, chosen);
+    recordTwelveStoreys(full, chosen);
     const RecordReader fr(full), cr(chosen);
     const std::string fullDir = dir.filePath("full").toStdString();
     const std::string chosenDir = dir.filePath("chosen").toStdString();
@@ -280,6 +313,53 @@ void TestRecordDofChoice::configurationBlock() {
         } catch (const ConfigError& e) {
             QVERIFY2(std::string(e.what()).find(b.says) != std::string::npos, e.what());
         }
+    }
+}
+
+void TestRecordDofChoice::damagedChoiceIsRefused_data() {
+    QTest::addColumn<QString>("attribute");
+    QTest::addColumn<QList<int>>("values");
+    QTest::addColumn<QString>("message"); // after "PATH: "
+    const QString indices = QStringLiteral("damaged record (/dofs dof_indices)");
+    QTest::newRow("indices descending") << "dof_indices" << QList<int>{11, 0} << indices;
+    QTest::newRow("index out of range") << "dof_indices" << QList<int>{0, 12} << indices;
+    QTest::newRow("index repeated") << "dof_indices" << QList<int>{0, 0} << indices;
+    QTest::newRow("index negative") << "dof_indices" << QList<int>{-1, 11} << indices;
+    QTest::newRow("every 0") << "every" << QList<int>{0}
+                             << "damaged record (/dofs every or dof_indices)";
+    QTest::newRow("every negative") << "every" << QList<int>{-10}
+                                    << "damaged record (/dofs every or dof_indices)";
+    // Valid choices that are not the record's: its columns or its metadata checksum disagree.
+    const QString checksum = QStringLiteral("damaged record (the metadata checksum does not "
+                                            "match: attributes or names were altered)");
+    QTest::newRow("other valid indices") << "dof_indices" << QList<int>{0, 5} << checksum;
+    QTest::newRow("three indices for two columns")
+        << "dof_indices" << QList<int>{0, 5, 11}
+        << "damaged record (/dofs/u has an unexpected shape)";
+    QTest::newRow("every 5 for every 10") << "every" << QList<int>{5} << checksum;
+}
+
+/// A record whose choice attributes were damaged after it was written is refused with the
+/// reason, never read with the wrong columns or steps (the chosen record of 12 DOFs keeps
+/// DOFs 0 and 11 every 10 steps).
+void TestRecordDofChoice::damagedChoiceIsRefused() {
+    QFETCH(QString, attribute);
+    QFETCH(QList<int>, values);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    const std::string full = dir.filePath("full.h5").toStdString();
+    const std::string chosen = dir.filePath("chosen.h5").toStdString();
+    recordTwelveStoreys(full, chosen);
+    QVERIFY(RecordReader(chosen).data().meta.dofRecording.every == 10); // readable as written
+    const std::vector<int> v(values.begin(), values.end());
+    QVERIFY(rewriteDofsAttr(chosen, attribute.toUtf8().constData(), v, attribute == "every"));
+    try {
+        const RecordReader damaged(chosen);
+        QFAIL("a damaged choice was read");
+    } catch (const RecordError& e) {
+        const QString what = QString::fromUtf8(e.what());
+        qInfo("%s", e.what());
+        QCOMPARE(what, QString::fromStdString(chosen) + ": " + message);
     }
 }
 
