@@ -4,6 +4,8 @@
 #include "gui/plots/PlotSelection.h"
 #include "gui/plots/PlotStyle.h"
 
+#include <cmath>
+
 namespace hsmu::gui {
 
 HistoryPlot::HistoryPlot(QWidget* parent) : QCustomPlot(parent) {
@@ -67,7 +69,8 @@ void HistoryPlot::showDisplacements(const RunLayout& layout) {
         const auto index = Eigen::Index(i);
         channels.push_back(
             {QString::fromStdString(layout.dofNames[i]),
-             [index](const StepRecord& r) { return index < r.u.size() ? r.u[index] : qQNaN(); }});
+             [index](const StepRecord& r) { return index < r.u.size() ? r.u[index] : qQNaN(); },
+             false, true});
     }
     setChannels(QString(), QString(), std::move(channels));
     setTexts([this] { relabel(tr("Displacement history"), tr("Displacement [m]"), {}); });
@@ -183,8 +186,11 @@ void HistoryPlot::appendRecords(const std::vector<StepRecord>& records) {
         t.reserve(qsizetype(records.size()));
         y.reserve(qsizetype(records.size()));
         for (const StepRecord& r : records) {
+            const double value = m_channels[i].value(r);
+            if (m_channels[i].skipGaps && std::isnan(value))
+                continue;
             t.push_back(r.time);
-            y.push_back(m_channels[i].value(r));
+            y.push_back(value);
         }
         m_graphs[i]->addData(t, y, true);
     }

@@ -25,6 +25,9 @@ public:
         QString name;
         std::function<double(const StepRecord&)> value;
         bool rightAxis = false; ///< plotted against the right y axis (rightLabel)
+        /// NaN samples are left out instead of breaking the line: a decimated record's DOF
+        /// (docs/recording.md) shows its kept rows joined, not isolated invisible points.
+        bool skipGaps = false;
     };
 
     explicit HistoryPlot(QWidget* parent = nullptr);
