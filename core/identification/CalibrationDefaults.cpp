@@ -311,11 +311,11 @@ CalibrationResult calibrateOffsets(const std::vector<double>& u, const std::vect
     // The first start the plain optimum with both offsets 0 (the same forces, bit for bit),
     // and every sample in both phases: Levenberg-Marquardt only accepts steps that lower the
     // cost, and the best minimization is polished, so the fit with offsets is never worse
-    // than the fit without them. A record that starts away from zero gets a second start: its first sample as the
-    // specimen's rest state (u0 = u_0, F0 = F_0: the inner law at its own zero there). The
-    // offsets that rest state asks for can lie in another basin than the plain optimum's
-    // (the MR damper at 0 V rests 12.6 mm off centre: from offsets 0 alone the fit stayed at
-    // NRMSE 0.2114 in m and kN and reached 0.161 in mm and N; docs/validation.md).
+    // than the fit without them. A record that starts away from zero gets a second start: its
+    // first sample as the specimen's rest state (u0 = u_0, F0 = F_0: the inner law at its own
+    // zero there). The offsets that rest state asks for can lie in another basin than the
+    // plain optimum's (the MR damper at 0 V rests 12.6 mm off centre: from offsets 0 alone the
+    // fit stayed at NRMSE 0.2114 in m and kN and reached 0.161 in mm and N; docs/validation.md).
     std::vector<double> start, atRest;
     for (const Box& b : spec.fitted) {
         start.push_back(isOffset(b.name) ? 0.0 : plain.parameters.at(b.name));

@@ -27,8 +27,10 @@
 // derived scales.
 // Offsets (OffsetLaw.h; docs/method.md, "Offsets"): with request.offsets On or Auto, after the
 // fit above, the law with a deformation offset u0 and a force offset F0 is fitted from that
-// optimum (offsets 0: the same forces; a record starting off zero also from its first sample as the rest state, u0 = u_0, F0 = F_0)
-// on the whole history, every other parameter free again (so never worse than without), in the physical box u0 [-0.5, 0.5] x the range, F0 [-0.5, 0.5] x the peak force.
+// optimum (offsets 0: the same forces; a record starting off zero also from its first sample
+// as the rest state, u0 = u_0, F0 = F_0) on the whole history, every other parameter free
+// again (so never worse than without), in the physical box u0 [-0.5, 0.5] x the deformation
+// range, F0 [-0.5, 0.5] x the peak force.
 // On keeps that fit; Auto keeps it only when the data ask for it, by an information
 // criterion on the history's branches (a hysteresis fit's residuals are correlated along a
 // branch, so the branches, not the samples, are the independent evidence):

@@ -4,10 +4,11 @@
 // calibrateHistory (CalibrationDefaults.h) runs it. Two searches (CalibrationRequest::
 // pinchingSearch):
 //  - Global (offline, `hsmu replay --method calibration`): in the history's scales, a
-//    screening of request.pinchingScreen points of a scrambled Halton design over the pinching parameters' whole box around the plain optimum (one
-//    replay each on a reduced history of 300 samples), then Levenberg-Marquardt from the plain
-//    optimum and the request.pinchingKept best points (800 samples, at most 30 iterations),
-//    the two best polished (at most 20 iterations, on at most 4,000 samples of the history,
+//    screening of request.pinchingScreen points of a scrambled Halton design over the
+//    pinching parameters' whole box around the plain optimum (one replay each on a reduced
+//    history of 300 samples), then Levenberg-Marquardt from the plain optimum and the
+//    request.pinchingKept best points (800 samples, at most 30 iterations), the two best
+//    polished (at most 20 iterations, on at most 4,000 samples of the history,
 //    then at most 8 more on the whole history when it is longer). When the result's k0 lies
 //    outside [0.5, 2] (its ultimate z far from 1, where the widths' box sits) the search is
 //    repeated once with uRef moved by that k0, without the screening: Levenberg-Marquardt

@@ -42,8 +42,10 @@ struct Column {
     }
 };
 
-void appendRows(Eigen::VectorXd& out, const Column& c, hsize_t r0, hsize_t r1, const std::string& w);
-void appendRows(std::vector<int>& out, const Column& c, hsize_t r0, hsize_t r1, const std::string& w);
+void appendRows(Eigen::VectorXd& out, const Column& c, hsize_t r0, hsize_t r1,
+                const std::string& w);
+void appendRows(std::vector<int>& out, const Column& c, hsize_t r0, hsize_t r1,
+                const std::string& w);
 /// Rows [r0, r1) of out from file rows [r0 + offset, r1 + offset).
 void appendRows(Eigen::MatrixXd& out, const Column& c, hsize_t r0, hsize_t r1, const std::string& w,
                 hsize_t offset = 0);
